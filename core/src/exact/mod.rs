@@ -1,0 +1,1 @@
+//! exact (work in progress).

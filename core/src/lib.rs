@@ -1,0 +1,12 @@
+//! precess-core: the symbolic engine, rigid-body mechanics, integrators and exact solutions
+//! behind `precess`.
+//!
+//! The `#[derive(RigidBody)]` macro in `precess-derive` calls into this crate while it expands,
+//! so everything the macro computes at compile time can also be computed at run time here.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod codegen;
+pub mod exact;
+pub mod ode;
+pub mod sym;

@@ -1,0 +1,1 @@
+//! ode (work in progress).
