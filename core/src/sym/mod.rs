@@ -1,1 +1,32 @@
-//! sym (work in progress).
+//! The symbolic engine: an arena of hash-consed expressions in a canonical form.
+//!
+//! - [`Arena`] holds every node once; an [`ExprId`] is a handle, and equal canonical
+//!   expressions have equal ids.
+//! - Constants are exact [`Rational`]s: a decimal literal such as `0.03` is 3/100.
+//! - Sums and products are n-ary, flat and sorted, with like terms and like factors collected
+//!   and constants folded; `sin² u` is rewritten `1 − cos² u`, so polynomials in the sines and
+//!   cosines of the angles have one expanded form ([`Arena::expand`]) and zero-equivalence of
+//!   such polynomials is exact.
+//! - Partial derivatives ([`Arena::diff`]) are memoised per node; [`Arena::dt`] is the total
+//!   time derivative over coordinates and their rates.
+//!
+//! See `docs/symbolic.md` for the canonical form in full.
+
+mod arena;
+mod build;
+mod diff;
+mod display;
+mod error;
+mod eval;
+mod expand;
+mod func;
+mod hash;
+mod literal;
+mod memo;
+mod rational;
+
+pub use arena::{Arena, ExprId, Node, Symbol, SymbolId, SymbolKind};
+pub use error::SymError;
+pub use hash::{IdHasher, IdMap};
+pub use literal::parse_decimal;
+pub use rational::Rational;

@@ -1,0 +1,11 @@
+//! Memo tables: nodes never change, so a transform's result for a node stays valid forever.
+
+use super::arena::{ExprId, SymbolId};
+use super::hash::IdMap;
+
+/// Per-node results of the arena's transforms.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Memo {
+    pub(crate) diff: IdMap<(ExprId, SymbolId), ExprId>,
+    pub(crate) expand: IdMap<ExprId, ExprId>,
+}
