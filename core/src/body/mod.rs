@@ -1,0 +1,1 @@
+//! body (work in progress).
