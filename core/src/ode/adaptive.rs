@@ -1,0 +1,359 @@
+//! The adaptive driver: PI step-size control, stop times, dense output, statistics.
+
+use core::marker::PhantomData;
+
+use super::error::{OdeError, check_finite, check_span};
+use super::pair::{DenseCoeffs, EmbeddedPair, Stages};
+use super::system::{Stats, System, all_finite};
+
+/// Settings of the adaptive driver. Every field has a documented default
+/// (`AdaptiveConfig::default()`), so callers override only what they mean.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdaptiveConfig {
+    /// Relative tolerance (default 1e-6). The local error of component i is held below
+    /// `atol + rtol · max(|yᵢ|, |yᵢ_new|)` in the root-mean-square sense.
+    pub rtol: f64,
+    /// Absolute tolerance (default 1e-9).
+    pub atol: f64,
+    /// First step; `None` (default) uses Hairer's estimate, which costs one evaluation.
+    pub h0: Option<f64>,
+    /// Largest step (default +∞).
+    pub h_max: f64,
+    /// Safety factor on the proposed step (default 0.9).
+    pub safety: f64,
+    /// Smallest ratio h_new/h after a step (default 0.2).
+    pub fac_min: f64,
+    /// Largest ratio h_new/h after a step (default 10).
+    pub fac_max: f64,
+    /// Integral gain of the PI controller, Hairer's β (default 0.04; 0 gives the I controller):
+    /// h_new = h · safety · err^(−α) · err_prev^β with α = 1/(q+1) − 0.75 β.
+    pub beta: f64,
+    /// Largest number of step attempts before [`OdeError::MaxStepsExceeded`] (default 100 000).
+    pub max_steps: u64,
+}
+
+impl Default for AdaptiveConfig {
+    fn default() -> Self {
+        Self {
+            rtol: 1e-6,
+            atol: 1e-9,
+            h0: None,
+            h_max: f64::INFINITY,
+            safety: 0.9,
+            fac_min: 0.2,
+            fac_max: 10.0,
+            beta: 0.04,
+            max_steps: 100_000,
+        }
+    }
+}
+
+impl AdaptiveConfig {
+    /// The default configuration with the given tolerances.
+    ///
+    /// ```
+    /// let c = precess_core::ode::AdaptiveConfig::with_tol(1e-10, 1e-12);
+    /// approx::assert_relative_eq!(c.rtol, 1e-10);
+    /// ```
+    pub fn with_tol(rtol: f64, atol: f64) -> Self {
+        Self {
+            rtol,
+            atol,
+            ..Self::default()
+        }
+    }
+
+    /// Checks every field.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidTolerance`], [`OdeError::InvalidStep`] or
+    /// [`OdeError::InvalidParameter`] for the first field out of range.
+    pub fn validate(&self) -> Result<(), OdeError> {
+        let pos = |v: f64| v.is_finite() && v > 0.0;
+        if !pos(self.rtol) || !pos(self.atol) {
+            return Err(OdeError::InvalidTolerance {
+                rtol: self.rtol,
+                atol: self.atol,
+            });
+        }
+        if let Some(h) = self.h0
+            && !pos(h)
+        {
+            return Err(OdeError::InvalidStep { h });
+        }
+        if !(self.h_max > 0.0) {
+            return Err(OdeError::InvalidStep { h: self.h_max });
+        }
+        let checks = [
+            ("safety", self.safety, self.safety > 0.0 && self.safety <= 1.0),
+            ("fac_min", self.fac_min, self.fac_min > 0.0 && self.fac_min < 1.0),
+            ("fac_max", self.fac_max, self.fac_max > 1.0 && self.fac_max.is_finite()),
+            ("beta", self.beta, (0.0..=0.2).contains(&self.beta)),
+        ];
+        for (name, value, ok) in checks {
+            if !ok {
+                return Err(OdeError::InvalidParameter { name, value });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// An adaptive integrator using the embedded pair `P` on a system `S` of dimension `N`.
+///
+/// Owns its stage storage, so stepping never allocates. Use [`super::Dopri5`] or
+/// [`super::Dop853`] for the concrete pairs.
+///
+/// ```
+/// use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem};
+/// let sys = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = -y[0]);
+/// let mut ode = Dop853::new(sys, 0.0, [1.0], AdaptiveConfig::with_tol(1e-12, 1e-14))?;
+/// ode.advance_to(1.0)?;
+/// approx::assert_relative_eq!(ode.y()[0], (-1.0f64).exp(), max_relative = 1e-11);
+/// # Ok::<(), precess_core::ode::OdeError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Adaptive<S, P, const N: usize> {
+    sys: S,
+    cfg: AdaptiveConfig,
+    t: f64,
+    y: [f64; N],
+    h: f64,
+    k: Stages<N>,
+    t_prev: f64,
+    y_prev: [f64; N],
+    dense: DenseCoeffs<N>,
+    dense_ready: bool,
+    err_prev: f64,
+    rejected_last: bool,
+    stats: Stats,
+    attempts: u64,
+    pair: PhantomData<P>,
+}
+
+impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
+    /// Starts at `(t0, y0)`; validates everything before any work.
+    ///
+    /// # Errors
+    /// Invalid configuration, a non-finite `t0` or a non-finite `y0`.
+    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: AdaptiveConfig) -> Result<Self, OdeError> {
+        cfg.validate()?;
+        check_span(t0, t0)?;
+        check_finite(&y0)?;
+        let mut k = [[0.0; N]; 16];
+        sys.rhs(t0, &y0, &mut k[0]);
+        let mut me = Self {
+            sys,
+            cfg,
+            t: t0,
+            y: y0,
+            h: 0.0,
+            k,
+            t_prev: t0,
+            y_prev: y0,
+            dense: [[0.0; N]; 8],
+            dense_ready: false,
+            err_prev: 1e-4,
+            rejected_last: false,
+            stats: Stats {
+                rhs_evals: 1,
+                ..Stats::default()
+            },
+            attempts: 0,
+            pair: PhantomData,
+        };
+        if !all_finite(&me.k[0]) {
+            return Err(OdeError::NonFiniteState { t: t0 });
+        }
+        me.h = match cfg.h0 {
+            Some(h) => h.min(cfg.h_max),
+            None => me.initial_step(),
+        };
+        Ok(me)
+    }
+
+    /// Hairer's starting-step heuristic (HNW I, §II.4): match h^(p+1)·‖f''‖ to 0.01.
+    fn initial_step(&mut self) -> f64 {
+        let (rtol, atol) = (self.cfg.rtol, self.cfg.atol);
+        let rms = |v: &dyn Fn(usize) -> f64| {
+            let s: f64 = (0..N).map(|i| v(i) * v(i)).sum();
+            (s / N.max(1) as f64).sqrt()
+        };
+        let sk = |i: usize| atol + rtol * self.y[i].abs();
+        let dnf = rms(&|i| self.k[0][i] / sk(i));
+        let dny = rms(&|i| self.y[i] / sk(i));
+        let mut h = if dnf <= 1e-5 || dny <= 1e-5 {
+            1e-6
+        } else {
+            0.01 * dny / dnf
+        };
+        h = h.min(self.cfg.h_max);
+        let mut y1 = [0.0; N];
+        for i in 0..N {
+            y1[i] = self.y[i] + h * self.k[0][i];
+        }
+        let mut f1 = [0.0; N];
+        self.sys.rhs(self.t + h, &y1, &mut f1);
+        self.stats.rhs_evals += 1;
+        let der2 = rms(&|i| (f1[i] - self.k[0][i]) / sk(i)) / h;
+        let der12 = der2.abs().max(dnf);
+        let h1 = if der12 <= 1e-15 || !der12.is_finite() {
+            (h * 1e-3).max(1e-6)
+        } else {
+            (0.01 / der12).powf(1.0 / P::ORDER as f64)
+        };
+        (100.0 * h).min(h1).min(self.cfg.h_max)
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    pub fn y(&self) -> &[f64; N] {
+        &self.y
+    }
+
+    /// Step size the controller will try next.
+    pub fn h(&self) -> f64 {
+        self.h
+    }
+
+    /// Work done so far.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// The system being integrated.
+    pub fn system(&self) -> &S {
+        &self.sys
+    }
+
+    /// Takes one accepted step that does not pass `t_limit` (it lands on it exactly when close).
+    ///
+    /// # Errors
+    /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::StepSizeUnderflow`],
+    /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`].
+    pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        if t_limit.is_nan() || t_limit < self.t {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_limit,
+                t: self.t,
+            });
+        }
+        if t_limit == self.t {
+            return Ok(());
+        }
+        if self.stats.steps > 0 {
+            self.k[0] = self.k[P::FSAL];
+        }
+        let mut y_new = [0.0; N];
+        loop {
+            self.attempts += 1;
+            if self.attempts > self.cfg.max_steps {
+                return Err(OdeError::MaxStepsExceeded {
+                    t: self.t,
+                    max_steps: self.cfg.max_steps,
+                });
+            }
+            // Land exactly on the limit when it is within 1 % of a step (as DOPRI5 does).
+            let clamped = self.t + 1.01 * self.h >= t_limit;
+            let h = if clamped { t_limit - self.t } else { self.h };
+            if self.t + h == self.t || h <= 4.0 * f64::EPSILON * self.t.abs() {
+                return Err(OdeError::StepSizeUnderflow { t: self.t, h });
+            }
+            let (err, evals) = P::try_step(
+                &self.sys,
+                self.t,
+                &self.y,
+                h,
+                &mut self.k,
+                &mut y_new,
+                self.cfg.rtol,
+                self.cfg.atol,
+            );
+            self.stats.rhs_evals += evals;
+            if err.is_nan() || !all_finite(&y_new) {
+                return Err(OdeError::NonFiniteState { t: self.t });
+            }
+            let alpha = P::ERR_EXPONENT - 0.75 * self.cfg.beta;
+            let fac11 = err.powf(alpha);
+            if err <= 1.0 {
+                let fac = (fac11 / self.err_prev.powf(self.cfg.beta) / self.cfg.safety)
+                    .clamp(1.0 / self.cfg.fac_max, 1.0 / self.cfg.fac_min);
+                let mut h_new = (h / fac).min(self.cfg.h_max);
+                if self.rejected_last {
+                    h_new = h_new.min(h);
+                }
+                if clamped {
+                    // A short landing step says little about the natural step size.
+                    h_new = h_new.max(self.h);
+                }
+                self.err_prev = err.max(1e-4);
+                self.stats.rhs_evals += P::finish(&self.sys, self.t, h, &y_new, &mut self.k);
+                self.stats.steps += 1;
+                self.t_prev = self.t;
+                self.y_prev = self.y;
+                self.t = if clamped { t_limit } else { self.t + h };
+                self.y = y_new;
+                self.h = h_new;
+                self.dense_ready = false;
+                self.rejected_last = false;
+                return Ok(());
+            }
+            self.stats.rejections += 1;
+            self.rejected_last = true;
+            self.h = h / (fac11 / self.cfg.safety).min(1.0 / self.cfg.fac_min);
+        }
+    }
+
+    /// Steps until `t == t_stop` exactly; no step crosses `t_stop`.
+    ///
+    /// # Errors
+    /// As [`Self::step`].
+    pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
+        if t_stop.is_nan() || t_stop < self.t {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_stop,
+                t: self.t,
+            });
+        }
+        while self.t < t_stop {
+            self.step(t_stop)?;
+        }
+        Ok(())
+    }
+
+    /// The dense output at `t` inside the last accepted step `[t_prev, t_now]`.
+    ///
+    /// The first call after a step builds the interpolant (DOP853: 3 evaluations).
+    ///
+    /// # Errors
+    /// [`OdeError::OutsideLastStep`].
+    pub fn dense_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        if !(t >= self.t_prev && t <= self.t) || self.stats.steps == 0 {
+            return Err(OdeError::OutsideLastStep {
+                t,
+                t_prev: self.t_prev,
+                t_now: self.t,
+            });
+        }
+        let h = self.t - self.t_prev;
+        if !self.dense_ready {
+            self.stats.rhs_evals += P::dense_prepare(
+                &self.sys,
+                self.t_prev,
+                h,
+                &self.y_prev,
+                &self.y,
+                &mut self.k,
+                &mut self.dense,
+            );
+            self.dense_ready = true;
+        }
+        let mut out = [0.0; N];
+        P::dense_eval(&self.dense, (t - self.t_prev) / h, &mut out);
+        Ok(out)
+    }
+}

@@ -1,0 +1,146 @@
+//! Typed errors of the time-stepping layer.
+
+use thiserror::Error;
+
+/// Why an integration could not start or could not finish.
+///
+/// Every variant carries the numbers that explain it, so a caller can report
+/// `t` and `h` without re-running anything.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum OdeError {
+    /// The controller asked for a step too small to change `t` in floating point.
+    #[error("step size underflow at t = {t}: h = {h:e} is below the resolution of t")]
+    StepSizeUnderflow {
+        /// Time at which the step failed.
+        t: f64,
+        /// The rejected step size.
+        h: f64,
+    },
+    /// A stage or the new state contained NaN or ±∞.
+    #[error("non-finite state at t = {t}")]
+    NonFiniteState {
+        /// Start of the step that produced the non-finite value.
+        t: f64,
+    },
+    /// The initial state holds NaN or ±∞ (component `index`).
+    #[error("non-finite initial state: component {index} is {value}")]
+    NonFiniteInitialState {
+        /// Index of the first offending component.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// A stop or output time lies before the current time.
+    #[error("stop time {stop} is before the current time {t}")]
+    StopBeforeCurrent {
+        /// The requested stop time.
+        stop: f64,
+        /// The integrator's current time.
+        t: f64,
+    },
+    /// `t_end` is before `t_start` (only forward integration is supported).
+    #[error("t_end = {t_end} is before t_start = {t_start}")]
+    EndBeforeStart {
+        /// Start time.
+        t_start: f64,
+        /// Requested end time.
+        t_end: f64,
+    },
+    /// A time value is NaN or infinite.
+    #[error("non-finite time {t}")]
+    NonFiniteTime {
+        /// The offending time.
+        t: f64,
+    },
+    /// Tolerances must be finite and positive.
+    #[error("tolerances must be finite and > 0: rtol = {rtol:e}, atol = {atol:e}")]
+    InvalidTolerance {
+        /// Relative tolerance given.
+        rtol: f64,
+        /// Absolute tolerance given.
+        atol: f64,
+    },
+    /// A step size (fixed step, initial step or maximum step) must be finite and positive.
+    #[error("step size must be finite and > 0, got {h}")]
+    InvalidStep {
+        /// The offending step size.
+        h: f64,
+    },
+    /// A controller parameter is out of its documented range.
+    #[error("controller parameter `{name}` = {value} is out of range")]
+    InvalidParameter {
+        /// Name of the configuration field.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The configured maximum number of steps was reached before the end time.
+    #[error("maximum of {max_steps} steps reached at t = {t}")]
+    MaxStepsExceeded {
+        /// Time reached.
+        t: f64,
+        /// The configured limit.
+        max_steps: u64,
+    },
+    /// Dense output was asked for a time outside the last accepted step.
+    #[error("dense output at t = {t} is outside the last step [{t_prev}, {t_now}]")]
+    OutsideLastStep {
+        /// Requested time.
+        t: f64,
+        /// Start of the last step.
+        t_prev: f64,
+        /// End of the last step (the current time).
+        t_now: f64,
+    },
+    /// Mass or a principal moment of inertia is not finite and positive.
+    #[error("mass and inertia must be finite and > 0: mass = {mass}, inertia = {inertia:?}")]
+    InvalidInertia {
+        /// Mass given (1 where only inertia matters).
+        mass: f64,
+        /// Principal moments given.
+        inertia: [f64; 3],
+    },
+}
+
+/// Checks that every component of `y` is finite.
+///
+/// # Errors
+/// [`OdeError::NonFiniteInitialState`] naming the first NaN or infinite component.
+pub fn check_finite(y: &[f64]) -> Result<(), OdeError> {
+    match y.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(OdeError::NonFiniteInitialState {
+            index,
+            value: y[index],
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Checks that `t_start ≤ t_end` and both are finite.
+///
+/// # Errors
+/// [`OdeError::NonFiniteTime`] or [`OdeError::EndBeforeStart`].
+pub fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
+    for t in [t_start, t_end] {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+    }
+    if t_end < t_start {
+        return Err(OdeError::EndBeforeStart { t_start, t_end });
+    }
+    Ok(())
+}
+
+/// Checks that mass and principal moments are finite and positive.
+///
+/// # Errors
+/// [`OdeError::InvalidInertia`].
+pub fn check_inertia(mass: f64, inertia: [f64; 3]) -> Result<(), OdeError> {
+    let ok = |v: f64| v.is_finite() && v > 0.0;
+    if ok(mass) && inertia.iter().all(|&v| ok(v)) {
+        Ok(())
+    } else {
+        Err(OdeError::InvalidInertia { mass, inertia })
+    }
+}

@@ -1,0 +1,271 @@
+//! Embedded Runge–Kutta pairs: one trial step, its error norm and its dense output.
+
+use super::system::System;
+use super::tableau::{
+    DOP853_A, DOP853_BHH, DOP853_C, DOP853_D, DOP853_E5, DP5_A, DP5_C, DP5_D, DP5_E,
+};
+
+/// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages).
+pub type Stages<const N: usize> = [[f64; N]; 16];
+
+/// Coefficients of the dense-output polynomial of the last step.
+pub type DenseCoeffs<const N: usize> = [[f64; N]; 8];
+
+/// An explicit embedded Runge–Kutta pair with FSAL and a continuous extension.
+///
+/// Implementations hold no data: the driver [`super::Adaptive`] owns the stages.
+pub trait EmbeddedPair {
+    /// Human-readable name, e.g. `"DOP853"`.
+    const NAME: &'static str;
+    /// Order of the propagated solution.
+    const ORDER: u32;
+    /// Exponent of the error in the step-size controller, 1/(q + 1) for an estimate of order q
+    /// (Hairer's choice: 1/5 for DOPRI5, 1/8 for DOP853).
+    const ERR_EXPONENT: f64;
+    /// Index of the stage that holds `f(t + h, y_new)` after an accepted step.
+    const FSAL: usize;
+
+    /// Computes stages 2… from `k[0] = f(t, y)`, writes the solution to `y_new` and returns
+    /// the scaled RMS error norm (≤ 1 means accept) and the number of `f` evaluations.
+    #[allow(clippy::too_many_arguments)]
+    fn try_step<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        h: f64,
+        k: &mut Stages<N>,
+        y_new: &mut [f64; N],
+        rtol: f64,
+        atol: f64,
+    ) -> (f64, u64);
+
+    /// Makes `k[FSAL] = f(t + h, y_new)` available after acceptance; returns evaluations.
+    fn finish<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        h: f64,
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+    ) -> u64;
+
+    /// Builds the dense-output coefficients of the accepted step `y → y_new`; returns evaluations.
+    fn dense_prepare<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        h: f64,
+        y: &[f64; N],
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+        d: &mut DenseCoeffs<N>,
+    ) -> u64;
+
+    /// Evaluates the dense output at θ = (t − t₀)/h ∈ [0, 1].
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]);
+}
+
+/// `out = y + h Σ a_j k_j` over the row `a`.
+#[inline(always)]
+fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, out: &mut [f64; N]) {
+    for (i, o) in out.iter_mut().enumerate() {
+        let mut s = 0.0;
+        for (j, aj) in a.iter().enumerate() {
+            s += aj * k[j][i];
+        }
+        *o = y[i] + h * s;
+    }
+}
+
+/// Evaluates stages `from..to` of a tableau into `k`.
+#[inline(always)]
+fn stages<S: System<N>, const N: usize>(
+    sys: &S,
+    t: f64,
+    y: &[f64; N],
+    h: f64,
+    a: &[&[f64]],
+    c: &[f64],
+    range: core::ops::Range<usize>,
+    k: &mut Stages<N>,
+) {
+    let mut ys = [0.0; N];
+    for s in range {
+        stage_state(y, h, a[s], k, &mut ys);
+        sys.rhs(t + c[s] * h, &ys, &mut k[s]);
+    }
+}
+
+/// Dormand–Prince 5(4) (DOPRI5): 6 evaluations per step, 4th-order dense output for free.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dp54;
+
+impl EmbeddedPair for Dp54 {
+    const NAME: &'static str = "DOPRI5";
+    const ORDER: u32 = 5;
+    const ERR_EXPONENT: f64 = 0.2;
+    const FSAL: usize = 6;
+
+    fn try_step<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        h: f64,
+        k: &mut Stages<N>,
+        y_new: &mut [f64; N],
+        rtol: f64,
+        atol: f64,
+    ) -> (f64, u64) {
+        stages(sys, t, y, h, &DP5_A, &DP5_C, 1..6, k);
+        stage_state(y, h, DP5_A[6], k, y_new);
+        sys.rhs(t + h, y_new, &mut k[6]);
+        let mut acc = 0.0;
+        for i in 0..N {
+            let mut e = 0.0;
+            for (j, ej) in DP5_E.iter().enumerate() {
+                e += ej * k[j][i];
+            }
+            let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
+            let r = h * e / sk;
+            acc += r * r;
+        }
+        ((acc / N as f64).sqrt(), 6)
+    }
+
+    fn finish<S: System<N>, const N: usize>(
+        _sys: &S,
+        _t: f64,
+        _h: f64,
+        _y_new: &[f64; N],
+        _k: &mut Stages<N>,
+    ) -> u64 {
+        0
+    }
+
+    fn dense_prepare<S: System<N>, const N: usize>(
+        _sys: &S,
+        _t: f64,
+        h: f64,
+        y: &[f64; N],
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+        d: &mut DenseCoeffs<N>,
+    ) -> u64 {
+        for i in 0..N {
+            let dy = y_new[i] - y[i];
+            let bspl = h * k[0][i] - dy;
+            d[0][i] = y[i];
+            d[1][i] = dy;
+            d[2][i] = bspl;
+            d[3][i] = dy - h * k[6][i] - bspl;
+            let mut s = 0.0;
+            for (j, dj) in DP5_D.iter().enumerate() {
+                s += dj * k[j][i];
+            }
+            d[4][i] = h * s;
+        }
+        0
+    }
+
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
+        let th1 = 1.0 - theta;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = d[0][i] + theta * (d[1][i] + th1 * (d[2][i] + theta * (d[3][i] + th1 * d[4][i])));
+        }
+    }
+}
+
+/// Hairer's DOP853: an 8th-order pair with a 5th/3rd-order combined error estimate,
+/// 12 evaluations per accepted step and a 7th-order dense output (3 more evaluations).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dp853;
+
+impl EmbeddedPair for Dp853 {
+    const NAME: &'static str = "DOP853";
+    const ORDER: u32 = 8;
+    const ERR_EXPONENT: f64 = 0.125;
+    const FSAL: usize = 12;
+
+    fn try_step<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        h: f64,
+        k: &mut Stages<N>,
+        y_new: &mut [f64; N],
+        rtol: f64,
+        atol: f64,
+    ) -> (f64, u64) {
+        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 1..12, k);
+        stage_state(y, h, DOP853_A[12], k, y_new);
+        // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
+        // from being driven by a pessimistic 5th-order estimate.
+        let (mut e3sum, mut e5sum) = (0.0, 0.0);
+        let b = DOP853_A[12];
+        for i in 0..N {
+            let mut e5 = 0.0;
+            for (j, ej) in DOP853_E5.iter().enumerate() {
+                e5 += ej * k[j][i];
+            }
+            let mut e3 = 0.0;
+            for (j, bj) in b.iter().enumerate() {
+                e3 += bj * k[j][i];
+            }
+            e3 -= DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i];
+            let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
+            e3sum += (e3 / sk) * (e3 / sk);
+            e5sum += (e5 / sk) * (e5 / sk);
+        }
+        let mut deno = e5sum + 0.01 * e3sum;
+        if deno <= 0.0 {
+            deno = 1.0;
+        }
+        (h.abs() * e5sum * (1.0 / (N as f64 * deno)).sqrt(), 11)
+    }
+
+    fn finish<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        h: f64,
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+    ) -> u64 {
+        sys.rhs(t + h, y_new, &mut k[12]);
+        1
+    }
+
+    fn dense_prepare<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        h: f64,
+        y: &[f64; N],
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+        d: &mut DenseCoeffs<N>,
+    ) -> u64 {
+        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 13..16, k);
+        for i in 0..N {
+            let dy = y_new[i] - y[i];
+            let bspl = h * k[0][i] - dy;
+            d[0][i] = y[i];
+            d[1][i] = dy;
+            d[2][i] = bspl;
+            d[3][i] = dy - h * k[12][i] - bspl;
+            for (r, row) in DOP853_D.iter().enumerate() {
+                let mut s = 0.0;
+                for (j, dj) in row.iter().enumerate() {
+                    s += dj * k[j][i];
+                }
+                d[4 + r][i] = h * s;
+            }
+        }
+        3
+    }
+
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
+        let s = theta;
+        let s1 = 1.0 - s;
+        for (i, o) in out.iter_mut().enumerate() {
+            let conpar = d[4][i] + s * (d[5][i] + s1 * (d[6][i] + s * d[7][i]));
+            *o = d[0][i] + s * (d[1][i] + s1 * (d[2][i] + s * (d[3][i] + s1 * conpar)));
+        }
+    }
+}

@@ -1,0 +1,113 @@
+//! One-call drivers over [`Adaptive`]: integrate to an end time through stop times, or
+//! sample the dense output at given times.
+
+use super::adaptive::{Adaptive, AdaptiveConfig};
+use super::error::{OdeError, check_span};
+use super::pair::{Dp54, Dp853, EmbeddedPair};
+use super::system::{Stats, System};
+
+/// Dormand–Prince 5(4) driver.
+pub type Dopri5<S, const N: usize> = Adaptive<S, Dp54, N>;
+
+/// DOP853 driver.
+pub type Dop853<S, const N: usize> = Adaptive<S, Dp853, N>;
+
+/// End state of an integration and the work it took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Solution<const N: usize> {
+    /// Final time (equal to the requested end time).
+    pub t: f64,
+    /// Final state.
+    pub y: [f64; N],
+    /// Steps, rejections and evaluations.
+    pub stats: Stats,
+}
+
+/// Integrates from `(t0, y0)` to `t_end` with pair `P`, stopping exactly at each time in
+/// `stops` (sorted ascending; those past `t_end` are ignored) so that no step straddles a
+/// discontinuity of the right-hand side.
+///
+/// ```
+/// use precess_core::ode::{AdaptiveConfig, Dp853, FnSystem, solve};
+/// // y' = 1 on [0, 1), 0 afterwards: exact y(2) = 1.
+/// let sys = FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
+/// let s = solve::<Dp853, _, 1>(sys, 0.0, [0.0], 2.0, &[1.0], AdaptiveConfig::default())?;
+/// approx::assert_relative_eq!(s.y[0], 1.0, epsilon = 1e-14);
+/// # Ok::<(), precess_core::ode::OdeError>(())
+/// ```
+///
+/// # Errors
+/// Bad input ([`OdeError::EndBeforeStart`], [`OdeError::InvalidTolerance`], non-finite
+/// values, unsorted stops as [`OdeError::StopBeforeCurrent`]) before any work; then the
+/// stepping errors of [`Adaptive::step`].
+pub fn solve<P: EmbeddedPair, S: System<N>, const N: usize>(
+    sys: S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    stops: &[f64],
+    cfg: AdaptiveConfig,
+) -> Result<Solution<N>, OdeError> {
+    check_span(t0, t_end)?;
+    check_sorted(t0, stops)?;
+    let mut ode = Adaptive::<S, P, N>::new(sys, t0, y0, cfg)?;
+    for &s in stops.iter().filter(|&&s| s < t_end) {
+        ode.advance_to(s)?;
+    }
+    ode.advance_to(t_end)?;
+    Ok(Solution {
+        t: ode.t(),
+        y: *ode.y(),
+        stats: ode.stats(),
+    })
+}
+
+/// Integrates from `(t0, y0)` and writes the dense-output state at each of `times`
+/// (ascending, ≥ t0) into `out`; the steps are chosen by the controller alone.
+///
+/// # Errors
+/// As [`solve`], and [`OdeError::InvalidParameter`] if `out` is shorter than `times`.
+pub fn solve_dense<P: EmbeddedPair, S: System<N>, const N: usize>(
+    sys: S,
+    t0: f64,
+    y0: [f64; N],
+    times: &[f64],
+    out: &mut [[f64; N]],
+    cfg: AdaptiveConfig,
+) -> Result<Stats, OdeError> {
+    check_sorted(t0, times)?;
+    if out.len() < times.len() {
+        return Err(OdeError::InvalidParameter {
+            name: "out.len()",
+            value: out.len() as f64,
+        });
+    }
+    let mut ode = Adaptive::<S, P, N>::new(sys, t0, y0, cfg)?;
+    let t_end = times.last().copied().unwrap_or(t0);
+    for (ti, o) in times.iter().zip(out.iter_mut()) {
+        if *ti == t0 {
+            *o = y0;
+            continue;
+        }
+        while ode.t() < *ti {
+            ode.step(t_end)?;
+        }
+        *o = ode.dense_at(*ti)?;
+    }
+    Ok(ode.stats())
+}
+
+/// Checks that `times` are finite, ascending and not before `t0`.
+fn check_sorted(t0: f64, times: &[f64]) -> Result<(), OdeError> {
+    let mut last = t0;
+    for &s in times {
+        if !s.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: s });
+        }
+        if s < last {
+            return Err(OdeError::StopBeforeCurrent { stop: s, t: last });
+        }
+        last = s;
+    }
+    Ok(())
+}
