@@ -267,7 +267,7 @@ impl Arena {
                 None => self.intern(Node::Pow(b, n)),
             },
             Node::Pow(base, m) => match m.checked_mul(n) {
-                Some(mn) if mn == 0 => self.one(),
+                Some(0) => self.one(),
                 Some(mn) => self.pow_nonzero_base(base, mn),
                 None => self.intern(Node::Pow(b, n)),
             },

@@ -46,7 +46,13 @@ impl Arena {
                         continue;
                     }
                     let mut prod: Vec<ExprId> = Vec::with_capacity(factors.len());
-                    prod.extend(factors.iter().enumerate().filter(|&(j, _)| j != i).map(|(_, &f)| f));
+                    prod.extend(
+                        factors
+                            .iter()
+                            .enumerate()
+                            .filter(|&(j, _)| j != i)
+                            .map(|(_, &f)| f),
+                    );
                     prod.push(di);
                     terms.push(self.product(&prod));
                 }

@@ -14,7 +14,14 @@ impl Arena {
     /// (0 = sum context, 1 = product context, 2 = power base).
     fn write_plain(&self, e: ExprId, outer: u8, out: &mut String) {
         let (prec, text) = match self.node(e) {
-            Node::Const(r) => (if r.is_integer() && !r.is_negative() { 3 } else { 1 }, r.to_string()),
+            Node::Const(r) => (
+                if r.is_integer() && !r.is_negative() {
+                    3
+                } else {
+                    1
+                },
+                r.to_string(),
+            ),
             Node::Sym(s) => (3, self.symbol(*s).name.clone()),
             Node::Add(terms) => {
                 let mut s = String::new();

@@ -32,7 +32,9 @@ pub enum SymError {
         value: f64,
     },
     /// A literal that is not a decimal number.
-    #[error("`{literal}` is not a decimal number (expected digits, an optional point and exponent)")]
+    #[error(
+        "`{literal}` is not a decimal number (expected digits, an optional point and exponent)"
+    )]
     InvalidLiteral {
         /// The text that failed to parse.
         literal: String,

@@ -33,7 +33,9 @@ impl Arena {
     /// [`SymError::SqrtOfNegative`] for a negative constant.
     pub fn sqrt(&mut self, u: ExprId) -> Result<ExprId, SymError> {
         match self.node(u) {
-            Node::Const(r) if r.is_negative() => Err(SymError::SqrtOfNegative { value: r.to_f64() }),
+            Node::Const(r) if r.is_negative() => {
+                Err(SymError::SqrtOfNegative { value: r.to_f64() })
+            }
             Node::Const(r) => Ok(match r.sqrt_exact() {
                 Some(root) => self.constant(root),
                 None => self.intern(Node::Sqrt(u)),

@@ -77,7 +77,7 @@ pub fn parse_decimal(text: &str) -> Result<Rational, SymError> {
     let value = Rational::new(num, 1)
         .and_then(|n| n.checked_mul(scale))
         .ok_or_else(out_of_range)?;
-    Ok(if negative { value.neg() } else { value })
+    Ok(if negative { -value } else { value })
 }
 
 impl Arena {

@@ -88,7 +88,10 @@ impl Rational {
         // Cross-multiply over the gcd of the denominators to stay small.
         let g = gcd(self.den, rhs.den);
         let (a, b) = (self.den / g, rhs.den / g);
-        let num = self.num.checked_mul(b)?.checked_add(rhs.num.checked_mul(a)?)?;
+        let num = self
+            .num
+            .checked_mul(b)?
+            .checked_add(rhs.num.checked_mul(a)?)?;
         let den = self.den.checked_mul(b)?;
         Rational::new(num, den)
     }
@@ -102,10 +105,10 @@ impl Rational {
         Rational::new(num, den)
     }
 
-    /// `-self` (never overflows: `num` is never `i128::MIN`).
-    pub fn neg(self) -> Rational {
+    /// `|self|`.
+    pub fn abs_value(self) -> Rational {
         Rational {
-            num: -self.num,
+            num: self.num.abs(),
             den: self.den,
         }
     }
@@ -195,6 +198,18 @@ fn isqrt(n: i128) -> Option<i128> {
     (r * r == n).then_some(r)
 }
 
+impl std::ops::Neg for Rational {
+    type Output = Rational;
+
+    /// `-self` (never overflows: `num` is never `i128::MIN`).
+    fn neg(self) -> Rational {
+        Rational {
+            num: -self.num,
+            den: self.den,
+        }
+    }
+}
+
 impl PartialOrd for Rational {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
@@ -238,9 +253,15 @@ mod tests {
         assert_eq!((a.numer(), a.denom()), (-3, 2));
         let b = a.checked_add(Rational::new(1, 2).unwrap()).unwrap();
         assert_eq!(b, Rational::integer(-1));
-        assert_eq!(Rational::new(2, 3).unwrap().checked_pow(-2), Rational::new(9, 4));
+        assert_eq!(
+            Rational::new(2, 3).unwrap().checked_pow(-2),
+            Rational::new(9, 4)
+        );
         assert_eq!(Rational::ZERO.checked_pow(-1), None);
-        assert_eq!(Rational::new(9, 4).unwrap().sqrt_exact(), Rational::new(3, 2));
+        assert_eq!(
+            Rational::new(9, 4).unwrap().sqrt_exact(),
+            Rational::new(3, 2)
+        );
         assert_eq!(Rational::new(2, 1).unwrap().sqrt_exact(), None);
     }
 

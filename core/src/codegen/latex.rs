@@ -1,0 +1,141 @@
+//! LaTeX rendering of expressions, for printing derivations.
+
+use crate::sym::{Arena, ExprId, Node, Rational};
+
+/// `e` as LaTeX: fractions for rational coefficients and negative powers, `\sin^{2}\theta`
+/// for powers of trigonometric functions, dotted rates.
+///
+/// ```
+/// use precess_core::{codegen::latex, sym::Arena};
+/// let mut a = Arena::new();
+/// let th = a.coordinate("theta");
+/// let s = a.sin(th);
+/// let half = a.number("0.5").unwrap();
+/// let e = a.mul(half, s);
+/// assert_eq!(latex(&a, e), r"\frac{\sin\theta}{2}");
+/// ```
+pub fn latex(arena: &Arena, e: ExprId) -> String {
+    Latex { arena }.expr(e)
+}
+
+struct Latex<'a> {
+    arena: &'a Arena,
+}
+
+impl Latex<'_> {
+    fn expr(&self, e: ExprId) -> String {
+        match self.arena.node(e) {
+            Node::Add(terms) => self.sum(terms),
+            _ => self.term(e),
+        }
+    }
+
+    /// A sum, constant last and negative coefficients as subtractions.
+    fn sum(&self, terms: &[ExprId]) -> String {
+        let mut ordered: Vec<ExprId> = terms.to_vec();
+        ordered.sort_by_key(|&t| matches!(self.arena.node(t), Node::Const(_)));
+        let mut out = String::new();
+        for (i, &t) in ordered.iter().enumerate() {
+            let s = self.term(t);
+            match (i, s.strip_prefix('-')) {
+                (0, _) => out.push_str(&s),
+                (_, Some(rest)) => {
+                    out.push_str(" - ");
+                    out.push_str(rest);
+                }
+                (_, None) => {
+                    out.push_str(" + ");
+                    out.push_str(&s);
+                }
+            }
+        }
+        out
+    }
+
+    /// A product as `c \frac{num}{den}`, with a leading `-` when negative.
+    fn term(&self, e: ExprId) -> String {
+        let (coeff, factors): (Rational, Vec<ExprId>) = match self.arena.node(e) {
+            Node::Const(r) => return rational(*r),
+            Node::Mul(f) => match self.arena.node(f[0]) {
+                Node::Const(r) => (*r, f[1..].to_vec()),
+                _ => (Rational::ONE, f.to_vec()),
+            },
+            _ => (Rational::ONE, vec![e]),
+        };
+        let mut num = Vec::new();
+        let mut den = Vec::new();
+        for &f in &factors {
+            match self.arena.node(f) {
+                Node::Pow(b, n) if *n < 0 => den.push(self.power(*b, -*n)),
+                Node::Pow(b, n) => num.push(self.power(*b, *n)),
+                _ => num.push(self.factor(f)),
+            }
+        }
+        let sign = if coeff.is_negative() { "-" } else { "" };
+        let c = coeff.abs_value();
+        let (cn, cd) = (c.numer(), c.denom());
+        if cn != 1 || num.is_empty() {
+            num.insert(0, cn.to_string());
+        }
+        if cd != 1 {
+            den.insert(0, cd.to_string());
+        }
+        let num = num.join(" ");
+        if den.is_empty() {
+            format!("{sign}{num}")
+        } else {
+            format!("{sign}\\frac{{{num}}}{{{}}}", den.join(" "))
+        }
+    }
+
+    fn power(&self, b: ExprId, n: i64) -> String {
+        if n == 1 {
+            return self.factor(b);
+        }
+        match self.arena.node(b) {
+            Node::Sin(u) => format!("\\sin^{{{n}}}{}", self.argument(*u)),
+            Node::Cos(u) => format!("\\cos^{{{n}}}{}", self.argument(*u)),
+            _ => format!("{{{}}}^{{{n}}}", self.factor(b)),
+        }
+    }
+
+    /// A factor of a product, parenthesised if it is a sum.
+    fn factor(&self, e: ExprId) -> String {
+        match self.arena.node(e) {
+            Node::Const(r) => rational(*r),
+            Node::Sym(s) => self.arena.symbol(*s).latex.clone(),
+            Node::Add(t) => format!("\\left({}\\right)", self.sum(t)),
+            Node::Mul(_) => format!("\\left({}\\right)", self.term(e)),
+            Node::Pow(b, n) if *n < 0 => format!("\\frac{{1}}{{{}}}", self.power(*b, -*n)),
+            Node::Pow(b, n) => self.power(*b, *n),
+            Node::Sqrt(u) => format!("\\sqrt{{{}}}", self.expr(*u)),
+            Node::Sin(u) => format!("\\sin{}", self.argument(*u)),
+            Node::Cos(u) => format!("\\cos{}", self.argument(*u)),
+        }
+    }
+
+    /// The argument of sin or cos: bare for a symbol, parenthesised otherwise.
+    fn argument(&self, u: ExprId) -> String {
+        match self.arena.node(u) {
+            Node::Sym(s) => {
+                let l = &self.arena.symbol(*s).latex;
+                if l.starts_with('\\') {
+                    l.clone()
+                } else {
+                    format!(" {l}")
+                }
+            }
+            _ => format!("\\left({}\\right)", self.expr(u)),
+        }
+    }
+}
+
+fn rational(r: Rational) -> String {
+    let sign = if r.is_negative() { "-" } else { "" };
+    let a = r.abs_value();
+    if a.is_integer() {
+        format!("{sign}{}", a.numer())
+    } else {
+        format!("{sign}\\frac{{{}}}{{{}}}", a.numer(), a.denom())
+    }
+}
