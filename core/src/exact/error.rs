@@ -1,0 +1,47 @@
+//! Typed errors of the exact solutions.
+
+use thiserror::Error;
+
+/// Why an exact solution could not be set up or evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum ExactError {
+    /// The complementary parameter m_c = 1 − m must lie in [0, 1].
+    #[error("complementary parameter m_c = {mc} is outside [0, 1]")]
+    ParameterOutOfRange {
+        /// The offending m_c.
+        mc: f64,
+    },
+    /// An argument (time, angle, state component) is NaN or infinite.
+    #[error("non-finite argument {value} for `{name}`")]
+    NonFinite {
+        /// Which argument.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// Principal moments of inertia must be finite and positive.
+    #[error("principal moments must be finite and > 0, got {inertia:?}")]
+    InvalidInertia {
+        /// The moments given.
+        inertia: [f64; 3],
+    },
+    /// A Carlson integral was called outside its domain.
+    #[error("Carlson integral outside its domain: ({x}, {y}, {z})")]
+    CarlsonDomain {
+        /// First argument.
+        x: f64,
+        /// Second argument.
+        y: f64,
+        /// Third argument.
+        z: f64,
+    },
+}
+
+/// Rejects NaN and infinities.
+pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64, ExactError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ExactError::NonFinite { name, value })
+    }
+}
