@@ -29,8 +29,8 @@ pub fn rf(x: f64, y: f64, z: f64) -> Result<f64, ExactError> {
     }
     let (mut x, mut y, mut z) = (x, y, z);
     let mut a = (x + y + z) / 3.0;
-    let mut q = (3.0 * f64::EPSILON).powf(-1.0 / 6.0)
-        * (a - x).abs().max((a - y).abs()).max((a - z).abs());
+    let mut q =
+        (3.0 * f64::EPSILON).powf(-1.0 / 6.0) * (a - x).abs().max((a - y).abs()).max((a - z).abs());
     while q >= a.abs() {
         let (sx, sy, sz) = (x.sqrt(), y.sqrt(), z.sqrt());
         let lam = sx * sy + sx * sz + sy * sz;
@@ -112,7 +112,9 @@ pub fn rj(x: f64, y: f64, z: f64, p: f64) -> Result<f64, ExactError> {
 fn rc1(e: f64) -> Result<f64, ExactError> {
     if e.abs() < 1e-3 {
         // Series keeps the digits that the closed forms lose as e → 0.
-        return Ok(1.0 - e / 3.0 + e * e / 5.0 - e * e * e / 7.0 + e.powi(4) / 9.0 - e.powi(5) / 11.0);
+        return Ok(
+            1.0 - e / 3.0 + e * e / 5.0 - e * e * e / 7.0 + e.powi(4) / 9.0 - e.powi(5) / 11.0,
+        );
     }
     if e > 0.0 {
         let s = e.sqrt();
@@ -121,7 +123,11 @@ fn rc1(e: f64) -> Result<f64, ExactError> {
         let s = (-e).sqrt();
         Ok(s.atanh() / s)
     } else {
-        Err(ExactError::CarlsonDomain { x: 1.0, y: 1.0 + e, z: 1.0 + e })
+        Err(ExactError::CarlsonDomain {
+            x: 1.0,
+            y: 1.0 + e,
+            z: 1.0 + e,
+        })
     }
 }
 
@@ -163,6 +169,46 @@ pub fn ellip_f(phi: f64, mc: f64) -> Result<f64, ExactError> {
     }
 }
 
+/// F(φ | m) from the amplitude's sine and cosine, φ ∈ (−π, π]: no digits of a small cos φ
+/// are lost to forming φ first (what inverting sn near u = K needs when m_c is tiny).
+///
+/// (s, c) need not be normalised; they are scaled to s² + c² = 1.
+///
+/// ```
+/// use precess_core::exact::carlson::{ellip_f, ellip_f_sc};
+/// let phi = 2.5f64;
+/// let (s, c) = phi.sin_cos();
+/// approx::assert_relative_eq!(ellip_f_sc(s, c, 0.3)?, ellip_f(phi, 0.3)?, max_relative = 1e-15);
+/// # Ok::<(), precess_core::exact::ExactError>(())
+/// ```
+///
+/// # Errors
+/// [`ExactError::NonFinite`], [`ExactError::ParameterOutOfRange`], and
+/// [`ExactError::CarlsonDomain`] for s = c = 0 or |φ| > π/2 with m_c = 0.
+pub fn ellip_f_sc(s: f64, c: f64, mc: f64) -> Result<f64, ExactError> {
+    finite("sin φ", s)?;
+    finite("cos φ", c)?;
+    let r = s.hypot(c);
+    if r == 0.0 {
+        return Err(ExactError::CarlsonDomain { x: s, y: c, z: mc });
+    }
+    let jac = Jacobi::new(mc)?;
+    let (s, c) = (s / r, c / r);
+    if s == 0.0 {
+        return Ok(if c > 0.0 { 0.0 } else { 2.0 * jac.k() });
+    }
+    let base = s * rf(c * c, c * c + mc * s * s, 1.0)?;
+    if c >= 0.0 {
+        Ok(base)
+    } else {
+        // φ = ±π − φ_r: F(φ) = ±2K − F(φ_r).
+        if mc == 0.0 {
+            return Err(ExactError::CarlsonDomain { x: s, y: c, z: mc });
+        }
+        Ok(s.signum() * 2.0 * jac.k() - base)
+    }
+}
+
 /// Incomplete integral of the third kind
 /// Π(n; φ | m) = ∫₀^φ dθ / ((1 − n sin²θ) √(1 − m sin²θ)), from m_c, for n sin²φ < 1 on the
 /// reduced amplitude and |φ| ≤ π/2 (the free-body attitude needs no more).
@@ -187,7 +233,11 @@ pub fn ellip_pi(n: f64, phi: f64, mc: f64) -> Result<f64, ExactError> {
         return Err(ExactError::ParameterOutOfRange { mc });
     }
     if phi.abs() > core::f64::consts::FRAC_PI_2 {
-        return Err(ExactError::CarlsonDomain { x: phi, y: n, z: mc });
+        return Err(ExactError::CarlsonDomain {
+            x: phi,
+            y: n,
+            z: mc,
+        });
     }
     let (s, c) = phi.sin_cos();
     if s == 0.0 {

@@ -139,8 +139,7 @@ impl FreeBodyExact {
         me.lambda = lam2.sqrt() * d(s * parity);
         // Initial phase from the amplitude φ₀ with (sin φ₀, cos φ₀) = (sn u₀, cn u₀).
         let sn0 = m[1] / me.amp[1];
-        let phi0 = sn0.atan2(cn_ratio);
-        me.u0 = super::carlson::ellip_f(phi0, mc)?;
+        me.u0 = super::carlson::ellip_f_sc(sn0, cn_ratio, mc)?;
         Ok(me)
     }
 

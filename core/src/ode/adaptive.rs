@@ -85,9 +85,21 @@ impl AdaptiveConfig {
             return Err(OdeError::InvalidStep { h: self.h_max });
         }
         let checks = [
-            ("safety", self.safety, self.safety > 0.0 && self.safety <= 1.0),
-            ("fac_min", self.fac_min, self.fac_min > 0.0 && self.fac_min < 1.0),
-            ("fac_max", self.fac_max, self.fac_max > 1.0 && self.fac_max.is_finite()),
+            (
+                "safety",
+                self.safety,
+                self.safety > 0.0 && self.safety <= 1.0,
+            ),
+            (
+                "fac_min",
+                self.fac_min,
+                self.fac_min > 0.0 && self.fac_min < 1.0,
+            ),
+            (
+                "fac_max",
+                self.fac_max,
+                self.fac_max > 1.0 && self.fac_max.is_finite(),
+            ),
             ("beta", self.beta, (0.0..=0.2).contains(&self.beta)),
         ];
         for (name, value, ok) in checks {

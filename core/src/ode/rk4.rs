@@ -76,7 +76,8 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     #[inline]
     fn step_unchecked(&mut self, h: f64) {
         let (t, y) = (self.t, self.y);
-        let (mut k1, mut k2, mut k3, mut k4, mut ys) = ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
+        let (mut k1, mut k2, mut k3, mut k4, mut ys) =
+            ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
         self.sys.rhs(t, &y, &mut k1);
         for i in 0..N {
             ys[i] = y[i] + 0.5 * h * k1[i];
