@@ -108,9 +108,12 @@ impl FreeBodyExact {
                 (-d3 * i2 / i32).sqrt(),
                 (d1 * i3 / i31).sqrt(),
             ];
-            let s = if m[2] < 0.0 { -1.0 } else { 1.0 };
+            let s3 = if m[2] < 0.0 { -1.0 } else { 1.0 };
             let mc = d2 * i31 / (d1 * i32);
-            (amp, i32 * d1 / i123, mc, s, m[0] / amp[0].to_f64())
+            // On the separatrix cn = dn = sech > 0, so the sign of m₁ goes into its
+            // amplitude and, since ṁ₂ ∝ m₁m₃, into λ.
+            let s1 = if d2.hi == 0.0 && m[0] < 0.0 { -1.0 } else { 1.0 };
+            (amp, i32 * d1 / i123, mc, s3 * s1, s1 * m[0] / amp[0].to_f64())
         } else {
             let amp = [
                 (-d3 * i1 / i31).sqrt(),
@@ -131,10 +134,14 @@ impl FreeBodyExact {
         let mc = mc.to_f64().clamp(0.0, 1.0);
         me.jac = Jacobi::new(mc)?;
         me.amp = amp.map(Dd::to_f64);
-        if me.regime == Regime::AboutSmallest {
-            me.amp[0] *= s;
-        } else {
-            me.amp[2] *= s;
+        match me.regime {
+            Regime::AboutSmallest => me.amp[0] *= s,
+            Regime::Separatrix => {
+                let (s1, s3) = (m[0].signum(), m[2].signum());
+                me.amp[0] *= s1;
+                me.amp[2] *= s3;
+            }
+            _ => me.amp[2] *= s,
         }
         me.lambda = lam2.sqrt() * d(s * parity);
         // Initial phase from the amplitude φ₀ with (sin φ₀, cos φ₀) = (sn u₀, cn u₀).
