@@ -138,6 +138,8 @@ pub struct Adaptive<S, P, const N: usize> {
     dense_ready: bool,
     err_prev: f64,
     rejected_last: bool,
+    /// The last step landed on a stop: re-evaluate f before the next step.
+    refresh: bool,
     stats: Stats,
     attempts: u64,
     pair: PhantomData<P>,
@@ -167,6 +169,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             dense_ready: false,
             err_prev: 1e-4,
             rejected_last: false,
+            refresh: false,
             stats: Stats {
                 rhs_evals: 1,
                 ..Stats::default()
@@ -242,6 +245,35 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         &self.sys
     }
 
+    /// Changes the system between steps (a torque switched on or off at a stop time) and
+    /// re-evaluates f(t, y) for the next step (one evaluation); the dense output of the
+    /// step before is dropped, since it belonged to the old system.
+    ///
+    /// ```
+    /// use precess_core::ode::{AdaptiveConfig, Dop853, System};
+    /// struct Switch { on: bool }
+    /// impl System<1> for Switch {
+    ///     fn rhs(&self, _t: f64, _y: &[f64; 1], d: &mut [f64; 1]) { d[0] = if self.on { 1.0 } else { 0.0 } }
+    /// }
+    /// let mut ode = Dop853::new(Switch { on: true }, 0.0, [0.0], AdaptiveConfig::default())?;
+    /// ode.advance_to(1.0)?;
+    /// ode.modify_system(|s| s.on = false);
+    /// ode.advance_to(2.0)?;
+    /// approx::assert_relative_eq!(ode.y()[0], 1.0, epsilon = 1e-14);
+    /// # Ok::<(), precess_core::ode::OdeError>(())
+    /// ```
+    pub fn modify_system(&mut self, f: impl FnOnce(&mut S)) {
+        f(&mut self.sys);
+        self.refresh = self.stats.steps > 0;
+        if !self.refresh {
+            self.sys.rhs(self.t, &self.y, &mut self.k[0]);
+            self.stats.rhs_evals += 1;
+        }
+        self.t_prev = self.t;
+        self.y_prev = self.y;
+        self.dense_ready = false;
+    }
+
     /// Takes one accepted step that does not pass `t_limit` (it lands on it exactly when close).
     ///
     /// # Errors
@@ -257,7 +289,13 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         if t_limit == self.t {
             return Ok(());
         }
-        if self.stats.steps > 0 {
+        if self.refresh {
+            // The last step ended on a stop: f there was taken from the left; the new step
+            // needs it from the right.
+            self.sys.rhs(self.t, &self.y, &mut self.k[0]);
+            self.stats.rhs_evals += 1;
+            self.refresh = false;
+        } else if self.stats.steps > 0 {
             self.k[0] = self.k[P::FSAL];
         }
         let mut y_new = [0.0; N];
@@ -272,6 +310,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             // Land exactly on the limit when it is within 1 % of a step (as DOPRI5 does).
             let clamped = self.t + 1.01 * self.h >= t_limit;
             let h = if clamped { t_limit - self.t } else { self.h };
+            let t_hi = if clamped {
+                t_limit.next_down()
+            } else {
+                f64::INFINITY
+            };
             if self.t + h == self.t || h <= 4.0 * f64::EPSILON * self.t.abs() {
                 return Err(OdeError::StepSizeUnderflow { t: self.t, h });
             }
@@ -282,8 +325,8 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                 h,
                 &mut self.k,
                 &mut y_new,
-                self.cfg.rtol,
-                self.cfg.atol,
+                (self.cfg.rtol, self.cfg.atol),
+                t_hi,
             );
             self.stats.rhs_evals += evals;
             if err.is_nan() || !all_finite(&y_new) {
@@ -303,7 +346,9 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                     h_new = h_new.max(self.h);
                 }
                 self.err_prev = err.max(1e-4);
-                self.stats.rhs_evals += P::finish(&self.sys, self.t, h, &y_new, &mut self.k);
+                let t_new = (self.t + h).min(t_hi);
+                self.stats.rhs_evals += P::finish(&self.sys, t_new, &y_new, &mut self.k);
+                self.refresh = clamped;
                 self.stats.steps += 1;
                 self.t_prev = self.t;
                 self.y_prev = self.y;
@@ -344,12 +389,15 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// # Errors
     /// [`OdeError::OutsideLastStep`].
     pub fn dense_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
-        if !(t >= self.t_prev && t <= self.t) || self.stats.steps == 0 {
+        if !(t >= self.t_prev && t <= self.t) {
             return Err(OdeError::OutsideLastStep {
                 t,
                 t_prev: self.t_prev,
                 t_now: self.t,
             });
+        }
+        if t == self.t {
+            return Ok(self.y);
         }
         let h = self.t - self.t_prev;
         if !self.dense_ready {

@@ -6,10 +6,13 @@
 //! States are fixed-size arrays or nalgebra static types: no step allocates.
 
 pub mod adaptive;
+pub mod attitude;
 pub mod error;
+pub mod lie;
 pub mod pair;
 pub mod rk4;
 pub mod solve;
+pub mod splitting;
 pub mod system;
 pub mod tableau;
 

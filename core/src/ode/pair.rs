@@ -27,6 +27,8 @@ pub trait EmbeddedPair {
 
     /// Computes stages 2… from `k[0] = f(t, y)`, writes the solution to `y_new` and returns
     /// the scaled RMS error norm (≤ 1 means accept) and the number of `f` evaluations.
+    /// Stage times are capped at `t_hi`: a step that ends on a stop time evaluates its last
+    /// stages just before it, on the side of a switch that the step belongs to.
     #[allow(clippy::too_many_arguments)]
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
@@ -35,15 +37,15 @@ pub trait EmbeddedPair {
         h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
-        rtol: f64,
-        atol: f64,
+        tol: (f64, f64),
+        t_hi: f64,
     ) -> (f64, u64);
 
-    /// Makes `k[FSAL] = f(t + h, y_new)` available after acceptance; returns evaluations.
+    /// Makes `k[FSAL] = f(min(t + h, t_hi), y_new)` available after acceptance; returns
+    /// evaluations.
     fn finish<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
-        h: f64,
+        t_new: f64,
         y_new: &[f64; N],
         k: &mut Stages<N>,
     ) -> u64;
@@ -85,12 +87,13 @@ fn stages<S: System<N>, const N: usize>(
     a: &[&[f64]],
     c: &[f64],
     range: core::ops::Range<usize>,
+    t_hi: f64,
     k: &mut Stages<N>,
 ) {
     let mut ys = [0.0; N];
     for s in range {
         stage_state(y, h, a[s], k, &mut ys);
-        sys.rhs(t + c[s] * h, &ys, &mut k[s]);
+        sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
     }
 }
 
@@ -111,12 +114,12 @@ impl EmbeddedPair for Dp54 {
         h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
-        rtol: f64,
-        atol: f64,
+        (rtol, atol): (f64, f64),
+        t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, t, y, h, &DP5_A, &DP5_C, 1..6, k);
+        stages(sys, t, y, h, &DP5_A, &DP5_C, 1..6, t_hi, k);
         stage_state(y, h, DP5_A[6], k, y_new);
-        sys.rhs(t + h, y_new, &mut k[6]);
+        sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
         let mut acc = 0.0;
         for i in 0..N {
             let mut e = 0.0;
@@ -132,8 +135,7 @@ impl EmbeddedPair for Dp54 {
 
     fn finish<S: System<N>, const N: usize>(
         _sys: &S,
-        _t: f64,
-        _h: f64,
+        _t_new: f64,
         _y_new: &[f64; N],
         _k: &mut Stages<N>,
     ) -> u64 {
@@ -191,10 +193,10 @@ impl EmbeddedPair for Dp853 {
         h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
-        rtol: f64,
-        atol: f64,
+        (rtol, atol): (f64, f64),
+        t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 1..12, k);
+        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 1..12, t_hi, k);
         stage_state(y, h, DOP853_A[12], k, y_new);
         // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
         // from being driven by a pessimistic 5th-order estimate.
@@ -223,12 +225,11 @@ impl EmbeddedPair for Dp853 {
 
     fn finish<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
-        h: f64,
+        t_new: f64,
         y_new: &[f64; N],
         k: &mut Stages<N>,
     ) -> u64 {
-        sys.rhs(t + h, y_new, &mut k[12]);
+        sys.rhs(t_new, y_new, &mut k[12]);
         1
     }
 
@@ -241,7 +242,7 @@ impl EmbeddedPair for Dp853 {
         k: &mut Stages<N>,
         d: &mut DenseCoeffs<N>,
     ) -> u64 {
-        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 13..16, k);
+        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 13..16, f64::INFINITY, k);
         for i in 0..N {
             let dy = y_new[i] - y[i];
             let bspl = h * k[0][i] - dy;

@@ -27,9 +27,15 @@ pub struct Solution<const N: usize> {
 /// `stops` (sorted ascending; those past `t_end` are ignored) so that no step straddles a
 /// discontinuity of the right-hand side.
 ///
+/// A step that ends on a stop evaluates its last stages just before it, and the next step
+/// starts with a fresh f at the stop (one extra evaluation per stop), so a switch written as
+/// a function of t should take its new value at the switching time (`t < t_s` on one side,
+/// `t ≥ t_s` on the other). Alternatively stop with [`Adaptive::advance_to`] and flip a
+/// flag with [`Adaptive::modify_system`].
+///
 /// ```
 /// use precess_core::ode::{AdaptiveConfig, Dp853, FnSystem, solve};
-/// // y' = 1 on [0, 1), 0 afterwards: exact y(2) = 1.
+/// // y' = 1 on [0, 1], 0 afterwards: exact y(2) = 1.
 /// let sys = FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
 /// let s = solve::<Dp853, _, 1>(sys, 0.0, [0.0], 2.0, &[1.0], AdaptiveConfig::default())?;
 /// approx::assert_relative_eq!(s.y[0], 1.0, epsilon = 1e-14);
