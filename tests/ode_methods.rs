@@ -1,0 +1,160 @@
+//! Convergence orders (the numerical check of the tableaux), dense output, stop times,
+//! statistics and typed errors of the time-stepping layer.
+
+use precess_core::exact::Jacobi;
+use precess_core::ode::{
+    Adaptive, AdaptiveConfig, Dop853, Dopri5, Dp54, Dp853, EmbeddedPair, FnSystem, OdeError, Rk4,
+    Rk4Config, System, solve, solve_dense,
+};
+
+/// DETEST B5, whose exact solution is (sn, cn, dn)(t | 0.51).
+struct B5;
+impl System<3> for B5 {
+    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
+        d[0] = y[1] * y[2];
+        d[1] = -y[0] * y[2];
+        d[2] = -0.51 * y[0] * y[1];
+    }
+}
+
+fn exact_b5(t: f64) -> [f64; 3] {
+    let (s, c, d) = Jacobi::new(0.49).unwrap().sncndn(t);
+    [s, c, d]
+}
+
+fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+}
+
+/// n fixed steps of the pair's propagated solution (no control).
+fn fixed<P: EmbeddedPair>(h: f64, n: usize) -> [f64; 3] {
+    let (mut y, mut t) = ([0.0, 1.0, 1.0], 0.0);
+    let mut k = [[0.0; 3]; 16];
+    for _ in 0..n {
+        B5.rhs(t, &y, &mut k[0]);
+        let mut yn = [0.0; 3];
+        P::try_step(&B5, t, &y, h, &mut k, &mut yn, (1.0, 1.0), f64::INFINITY);
+        y = yn;
+        t += h;
+    }
+    y
+}
+
+fn observed_order(e1: f64, e2: f64) -> f64 {
+    (e1 / e2).log2()
+}
+
+#[test]
+fn convergence_orders_match_the_tableaux() {
+    let t = 4.0;
+    let ex = exact_b5(t);
+    let e = |h: f64, f: &dyn Fn(f64, usize) -> [f64; 3]| err(&f(h, (t / h).round() as usize), &ex);
+    let p5 = observed_order(e(0.1, &fixed::<Dp54>), e(0.05, &fixed::<Dp54>));
+    let p8 = observed_order(e(0.4, &fixed::<Dp853>), e(0.2, &fixed::<Dp853>));
+    let rk = |h: f64, n: usize| {
+        let mut r = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], Rk4Config { h }).unwrap();
+        r.advance_to(h * n as f64).unwrap();
+        *r.y()
+    };
+    let p4 = observed_order(e(0.1, &rk), e(0.05, &rk));
+    eprintln!("observed orders: RK4 {p4:.2}, DOPRI5 {p5:.2}, DOP853 {p8:.2}");
+    assert!((3.8..4.3).contains(&p4), "RK4 order {p4}");
+    assert!((4.7..5.5).contains(&p5), "DOPRI5 order {p5}");
+    assert!((7.6..8.8).contains(&p8), "DOP853 order {p8}");
+}
+
+/// Dense output over one step of size h: local error O(h⁵) for DOPRI5 (order 4 interpolant)
+/// and O(h⁸) for DOP853 (order 7).
+#[test]
+fn dense_output_orders() {
+    fn mid_error<P: EmbeddedPair>(h: f64) -> f64 {
+        let cfg = AdaptiveConfig {
+            h0: Some(h),
+            h_max: h,
+            ..AdaptiveConfig::with_tol(1e3, 1e3)
+        };
+        let mut ode: Adaptive<_, P, 3> = Adaptive::new(B5, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
+        ode.step(10.0).unwrap();
+        assert_eq!(ode.t(), h);
+        err(&ode.dense_at(0.37 * h).unwrap(), &exact_b5(0.37 * h))
+    }
+    let q5 = observed_order(mid_error::<Dp54>(0.2), mid_error::<Dp54>(0.1));
+    let q8 = observed_order(mid_error::<Dp853>(0.8), mid_error::<Dp853>(0.4));
+    eprintln!("dense local orders: DOPRI5 {q5:.2}, DOP853 {q8:.2}");
+    assert!((4.6..5.6).contains(&q5), "DOPRI5 dense {q5}");
+    assert!((7.5..8.8).contains(&q8), "DOP853 dense {q8}");
+}
+
+#[test]
+fn solve_dense_samples_match_the_exact_solution() {
+    let times: Vec<f64> = (0..=40).map(|i| 0.5 * i as f64).collect();
+    let mut out = vec![[0.0; 3]; times.len()];
+    let stats = solve_dense::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], &times, &mut out, AdaptiveConfig::with_tol(1e-12, 1e-12)).unwrap();
+    for (t, y) in times.iter().zip(&out) {
+        assert!(err(y, &exact_b5(*t)) <= 1e-10, "t = {t}");
+    }
+    assert!(stats.steps < 200 && stats.rhs_evals > 12 * stats.steps);
+}
+
+#[test]
+fn statistics_count_work() {
+    let s = solve::<Dp54, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], AdaptiveConfig::with_tol(1e-8, 1e-8)).unwrap();
+    let st = s.stats;
+    // 1 initial f, 1 for the starting step guess, 6 per attempt (FSAL).
+    assert_eq!(st.rhs_evals, 2 + 6 * (st.steps + st.rejections));
+    let mut ode = Dop853::new(B5, 0.0, [0.0, 1.0, 1.0], AdaptiveConfig::with_tol(1e-10, 1e-10)).unwrap();
+    ode.advance_to(20.0).unwrap();
+    let st = ode.stats();
+    assert_eq!(st.rhs_evals, 2 + 12 * st.steps + 11 * st.rejections);
+}
+
+#[test]
+fn switching_rhs_is_exact_with_stops_and_not_without() {
+    // y' = 1 on [0, 1), 0 afterwards, y(0) = 0: y(2) = 1 exactly.
+    let f = FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
+    let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
+    let with = solve::<Dp853, _, 1>(&f, 0.0, [0.0], 2.0, &[1.0], cfg).unwrap();
+    assert!((with.y[0] - 1.0).abs() <= 1e-14, "{}", with.y[0]);
+    let with5 = solve::<Dp54, _, 1>(&f, 0.0, [0.0], 2.0, &[1.0], cfg).unwrap();
+    assert!((with5.y[0] - 1.0).abs() <= 1e-14, "{}", with5.y[0]);
+    let without = solve::<Dp853, _, 1>(&f, 0.0, [0.0], 2.0, &[], cfg).unwrap();
+    assert!((without.y[0] - 1.0).abs() > 1e-14, "stepping over the switch should lose digits");
+}
+
+#[test]
+fn bad_input_is_rejected_before_any_work() {
+    let y0 = [0.0, 1.0, 1.0];
+    let run = |t0: f64, y0: [f64; 3], t1: f64, cfg: AdaptiveConfig| solve::<Dp853, _, 3>(B5, t0, y0, t1, &[], cfg).map(|s| s.y);
+    let d = AdaptiveConfig::default();
+    assert_eq!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(0.0, 1e-9)), Err(OdeError::InvalidTolerance { rtol: 0.0, atol: 1e-9 }));
+    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(1e-6, -1.0)), Err(OdeError::InvalidTolerance { .. })));
+    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(f64::NAN, 1e-9)), Err(OdeError::InvalidTolerance { .. })));
+    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { h0: Some(0.0), ..d }), Err(OdeError::InvalidStep { .. })));
+    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { h0: Some(-1e-3), ..d }), Err(OdeError::InvalidStep { .. })));
+    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { safety: 2.0, ..d }), Err(OdeError::InvalidParameter { name: "safety", .. })));
+    assert_eq!(run(1.0, y0, 0.0, d), Err(OdeError::EndBeforeStart { t_start: 1.0, t_end: 0.0 }));
+    assert!(matches!(run(0.0, [0.0, f64::NAN, 1.0], 1.0, d), Err(OdeError::NonFiniteInitialState { index: 1, .. })));
+    assert!(matches!(run(0.0, [f64::INFINITY, 0.0, 1.0], 1.0, d), Err(OdeError::NonFiniteInitialState { index: 0, .. })));
+    assert!(matches!(run(f64::NAN, y0, 1.0, d), Err(OdeError::NonFiniteTime { .. })));
+    assert!(matches!(solve::<Dp853, _, 3>(B5, 0.0, y0, 2.0, &[1.5, 1.0], d), Err(OdeError::StopBeforeCurrent { stop: 1.0, .. })));
+    assert!(matches!(Rk4::new(B5, 0.0, y0, Rk4Config { h: 0.0 }), Err(OdeError::InvalidStep { .. })));
+    assert!(matches!(Rk4::new(B5, 0.0, y0, Rk4Config { h: -0.1 }), Err(OdeError::InvalidStep { .. })));
+    let mut ode = Dopri5::new(B5, 0.0, y0, d).unwrap();
+    ode.advance_to(1.0).unwrap();
+    assert_eq!(ode.advance_to(0.5), Err(OdeError::StopBeforeCurrent { stop: 0.5, t: 1.0 }));
+    assert!(matches!(ode.dense_at(2.0), Err(OdeError::OutsideLastStep { .. })));
+}
+
+#[test]
+fn blow_up_is_a_typed_error_not_nan() {
+    // y' = y², y(0) = 1 blows up at t = 1.
+    let f = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = y[0] * y[0]);
+    match solve::<Dp853, _, 1>(f, 0.0, [1.0], 2.0, &[], AdaptiveConfig::default()) {
+        // The numerical blow-up time is within the tolerance of the true one.
+        Err(OdeError::StepSizeUnderflow { t, h }) => assert!((t - 1.0).abs() < 1e-5 && h > 0.0, "t = {t}"),
+        Err(OdeError::NonFiniteState { t }) => assert!((t - 1.0).abs() < 1e-5, "t = {t}"),
+        other => panic!("expected a typed failure near t = 1, got {other:?}"),
+    }
+    let cfg = AdaptiveConfig { max_steps: 10, ..AdaptiveConfig::with_tol(1e-12, 1e-12) };
+    assert!(matches!(solve::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], cfg), Err(OdeError::MaxStepsExceeded { max_steps: 10, .. })));
+}
