@@ -9,5 +9,6 @@
 pub mod body;
 pub mod codegen;
 pub mod exact;
+pub mod lagrange;
 pub mod ode;
 pub mod sym;

@@ -62,30 +62,43 @@ impl Latex<'_> {
             },
             _ => (Rational::ONE, vec![e]),
         };
-        let mut num = Vec::new();
-        let mut den = Vec::new();
+        let (mut num, mut den) = (Vec::new(), Vec::new());
         for &f in &factors {
             match self.arena.node(f) {
-                Node::Pow(b, n) if *n < 0 => den.push(self.power(*b, -*n)),
-                Node::Pow(b, n) => num.push(self.power(*b, *n)),
-                _ => num.push(self.factor(f)),
+                Node::Pow(b, n) if *n < 0 => den.push((*b, -*n)),
+                _ => num.push((f, 1)),
             }
         }
         let sign = if coeff.is_negative() { "-" } else { "" };
         let c = coeff.abs_value();
-        let (cn, cd) = (c.numer(), c.denom());
-        if cn != 1 || num.is_empty() {
-            num.insert(0, cn.to_string());
+        // A lone sum needs no parentheses as a whole numerator or denominator of \frac.
+        let render = |list: &[(ExprId, i64)], k: i128, alone: bool| -> String {
+            let mut parts: Vec<String> = Vec::new();
+            if k != 1 || list.is_empty() {
+                parts.push(k.to_string());
+            }
+            for &(e, n) in list {
+                parts.push(
+                    match (
+                        self.arena.node(e),
+                        n,
+                        alone && parts.is_empty() && list.len() == 1,
+                    ) {
+                        (Node::Add(t), 1, true) => self.sum(t),
+                        (_, 1, _) => self.factor(e),
+                        _ => self.power(e, n),
+                    },
+                );
+            }
+            parts.join(" ")
+        };
+        let in_frac = !den.is_empty() || c.denom() != 1;
+        let top = render(&num, c.numer(), in_frac);
+        if !in_frac {
+            return format!("{sign}{top}");
         }
-        if cd != 1 {
-            den.insert(0, cd.to_string());
-        }
-        let num = num.join(" ");
-        if den.is_empty() {
-            format!("{sign}{num}")
-        } else {
-            format!("{sign}\\frac{{{num}}}{{{}}}", den.join(" "))
-        }
+        let bottom = render(&den, c.denom(), true);
+        format!("{sign}\\frac{{{top}}}{{{bottom}}}")
     }
 
     fn power(&self, b: ExprId, n: i64) -> String {

@@ -81,6 +81,40 @@ struct Lowering<'a> {
     ops: Vec<Op>,
     numbered: IdMap<Key, Slot>,
     by_node: IdMap<ExprId, Slot>,
+    /// Negative powers used by more than one product: their reciprocal is computed once
+    /// and multiplied in, instead of dividing in every product.
+    shared_reciprocals: IdMap<ExprId, ()>,
+}
+
+/// The negative powers that appear as a factor of two or more products reachable from
+/// `outputs`.
+fn shared_reciprocals(arena: &Arena, outputs: &[ExprId]) -> IdMap<ExprId, ()> {
+    let mut uses: IdMap<ExprId, u32> = IdMap::default();
+    let mut seen: IdMap<ExprId, ()> = IdMap::default();
+    let mut stack: Vec<ExprId> = outputs.to_vec();
+    while let Some(e) = stack.pop() {
+        if seen.insert(e, ()).is_some() {
+            continue;
+        }
+        match arena.node(e) {
+            Node::Const(_) | Node::Sym(_) => {}
+            Node::Add(c) => stack.extend(c.iter()),
+            Node::Mul(c) => {
+                for &f in c.iter() {
+                    if matches!(arena.node(f), Node::Pow(_, n) if *n < 0) {
+                        *uses.entry(f).or_default() += 1;
+                    }
+                    stack.push(f);
+                }
+            }
+            Node::Pow(b, _) => stack.push(*b),
+            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => stack.push(*u),
+        }
+    }
+    uses.into_iter()
+        .filter(|&(_, n)| n >= 2)
+        .map(|(e, _)| (e, ()))
+        .collect()
 }
 
 impl Program {
@@ -105,6 +139,7 @@ impl Program {
             ops: Vec::new(),
             numbered: IdMap::default(),
             by_node: IdMap::default(),
+            shared_reciprocals: shared_reciprocals(arena, outputs),
         };
         let outputs = outputs.iter().map(|&e| l.node(e)).collect();
         Program {
@@ -231,7 +266,7 @@ impl Lowering<'_> {
         let mut den: Option<Slot> = None;
         for &f in factors {
             let (target, slot) = match self.arena.node(f) {
-                Node::Pow(b, n) if *n < 0 => {
+                Node::Pow(b, n) if *n < 0 && !self.shared_reciprocals.contains_key(&f) => {
                     let base = self.node(*b);
                     (&mut den, self.positive_power(base, n.unsigned_abs()))
                 }

@@ -1,0 +1,176 @@
+//! Solving `M q̈ = f` symbolically, using the structure of M.
+//!
+//! The coordinates split into the connected blocks of M's non-zero pattern (a top's θ
+//! decouples from φ and ψ when it is symmetric). Each block is solved by its adjugate:
+//! `q̈_B = adj(M_B) f_B / det M_B`. Adjugate entries and the determinant are expanded, so
+//! their cancellations are exact; the products with f are *not* expanded, so the lowered
+//! code evaluates f once, the adjugate once, and a single division per block.
+
+use super::equations::EquationsOfMotion;
+use super::error::LagrangeError;
+use crate::codegen::Program;
+use crate::sym::{Arena, ExprId, Node};
+
+/// The largest coupled block solved symbolically (the adjugate grows as n!).
+pub const MAX_BLOCK: usize = 6;
+
+/// `q̈ = M⁻¹ f` in closed form, one expression per coordinate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Accelerations {
+    /// `q̈_i` in terms of q, q̇ and the parameters.
+    pub accel: Vec<ExprId>,
+    /// The coordinate blocks that were solved together.
+    pub blocks: Vec<Vec<usize>>,
+    /// The determinant of each block (the expression that vanishes at a singular chart).
+    pub determinants: Vec<ExprId>,
+}
+
+impl EquationsOfMotion {
+    /// Solves for the accelerations.
+    ///
+    /// # Errors
+    /// [`LagrangeError::SingularMassMatrix`] if a block's determinant is identically zero;
+    /// [`LagrangeError::BlockTooLarge`] past [`MAX_BLOCK`] coupled coordinates.
+    pub fn solve(&self, arena: &mut Arena) -> Result<Accelerations, LagrangeError> {
+        let n = self.coords.len();
+        let blocks = coupled_blocks(arena, &self.mass);
+        let mut accel = vec![arena.zero(); n];
+        let mut determinants = Vec::with_capacity(blocks.len());
+        for block in &blocks {
+            if block.len() > MAX_BLOCK {
+                return Err(LagrangeError::BlockTooLarge {
+                    size: block.len(),
+                    max: MAX_BLOCK,
+                });
+            }
+            let m: Vec<Vec<ExprId>> = block
+                .iter()
+                .map(|&i| block.iter().map(|&j| self.mass[i][j]).collect())
+                .collect();
+            let det = determinant(arena, &m);
+            let det = arena.expand(det);
+            if det == arena.zero() {
+                return Err(LagrangeError::SingularMassMatrix {
+                    block: block.clone(),
+                });
+            }
+            let inv_det = arena.recip(det)?;
+            let k = block.len();
+            for r in 0..k {
+                // Row r of adj(M) = cofactors of column r (M is symmetric, so rows work too).
+                let mut terms = Vec::with_capacity(k);
+                for c in 0..k {
+                    let cof = cofactor(arena, &m, c, r);
+                    let cof = arena.expand(cof);
+                    if cof != arena.zero() {
+                        terms.push(arena.mul(cof, self.forcing[block[c]]));
+                    }
+                }
+                let num = arena.sum(&terms);
+                accel[block[r]] = arena.mul(num, inv_det);
+            }
+            determinants.push(det);
+        }
+        let accel = cheaper_form(arena, &accel);
+        Ok(Accelerations {
+            accel,
+            blocks,
+            determinants,
+        })
+    }
+}
+
+/// `outputs` as they are, or each numerator expanded over its denominator, whichever lowers
+/// to fewer operations together. Expanding cancels terms across the adjugate–forcing
+/// products, but multiplies out factors the unexpanded form shares between outputs, so the
+/// choice is made on the joint program.
+pub fn cheaper_form(arena: &mut Arena, outputs: &[ExprId]) -> Vec<ExprId> {
+    let expanded: Vec<ExprId> = outputs
+        .iter()
+        .map(|&e| match arena.node(e).clone() {
+            Node::Mul(f) => {
+                let (den, num): (Vec<ExprId>, Vec<ExprId>) = f
+                    .iter()
+                    .partition(|&&x| matches!(arena.node(x), Node::Pow(_, n) if *n < 0));
+                let num = arena.product(&num);
+                let num = arena.expand(num);
+                let den = arena.product(&den);
+                arena.mul(num, den)
+            }
+            _ => arena.expand(e),
+        })
+        .collect();
+    let cost = |a: &Arena, x: &[ExprId]| Program::lower(a, x).op_count().total();
+    if cost(arena, &expanded) < cost(arena, outputs) {
+        expanded
+    } else {
+        outputs.to_vec()
+    }
+}
+
+/// Connected components of the graph with an edge i–j where `M_ij ≠ 0`.
+fn coupled_blocks(arena: &Arena, m: &[Vec<ExprId>]) -> Vec<Vec<usize>> {
+    let n = m.len();
+    let mut block_of = vec![usize::MAX; n];
+    let mut blocks: Vec<Vec<usize>> = Vec::new();
+    for start in 0..n {
+        if block_of[start] != usize::MAX {
+            continue;
+        }
+        let id = blocks.len();
+        let mut members = vec![start];
+        block_of[start] = id;
+        let mut k = 0;
+        while k < members.len() {
+            let i = members[k];
+            for j in 0..n {
+                let coupled = m[i][j] != arena.zero() || m[j][i] != arena.zero();
+                if coupled && block_of[j] == usize::MAX {
+                    block_of[j] = id;
+                    members.push(j);
+                }
+            }
+            k += 1;
+        }
+        members.sort_unstable();
+        blocks.push(members);
+    }
+    blocks
+}
+
+/// `det m` by cofactor expansion along the first row, skipping zero entries.
+pub fn determinant(arena: &mut Arena, m: &[Vec<ExprId>]) -> ExprId {
+    match m.len() {
+        0 => arena.one(),
+        1 => m[0][0],
+        _ => {
+            let mut terms = Vec::new();
+            for (j, &entry) in m[0].iter().enumerate() {
+                if entry == arena.zero() {
+                    continue;
+                }
+                let c = cofactor(arena, m, 0, j);
+                terms.push(arena.mul(entry, c));
+            }
+            arena.sum(&terms)
+        }
+    }
+}
+
+/// The (i, j) cofactor: `(−1)^(i+j)` times the minor without row i and column j.
+pub fn cofactor(arena: &mut Arena, m: &[Vec<ExprId>], i: usize, j: usize) -> ExprId {
+    let minor: Vec<Vec<ExprId>> = m
+        .iter()
+        .enumerate()
+        .filter(|&(r, _)| r != i)
+        .map(|(_, row)| {
+            row.iter()
+                .enumerate()
+                .filter(|&(c, _)| c != j)
+                .map(|(_, &e)| e)
+                .collect()
+        })
+        .collect();
+    let d = determinant(arena, &minor);
+    if (i + j) % 2 == 1 { arena.neg(d) } else { d }
+}
