@@ -59,11 +59,11 @@ impl EquationsOfMotion {
             for r in 0..k {
                 // Row r of adj(M) = cofactors of column r (M is symmetric, so rows work too).
                 let mut terms = Vec::with_capacity(k);
-                for c in 0..k {
+                for (c, &coord) in block.iter().enumerate() {
                     let cof = cofactor(arena, &m, c, r);
                     let cof = arena.expand(cof);
                     if cof != arena.zero() {
-                        terms.push(arena.mul(cof, self.forcing[block[c]]));
+                        terms.push(arena.mul(cof, self.forcing[coord]));
                     }
                 }
                 let num = arena.sum(&terms);
