@@ -1,0 +1,120 @@
+//! Why a body description is rejected.
+
+use thiserror::Error;
+
+/// A body description that does not describe a physical rigid body.
+///
+/// Parts are numbered from 0 in the order given; `kind` is the part's name in the attribute
+/// language and `key` the offending key, so the derive macro can point at the tokens.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum BodyError {
+    /// The description has no part.
+    #[error("a body needs at least one part")]
+    NoParts,
+    /// A value is NaN or infinite.
+    #[error("part {part} ({kind}): `{key}` is {value}, but values must be finite")]
+    NonFinite {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// The key.
+        key: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// The pivot has a NaN or infinite coordinate.
+    #[error("the pivot coordinate {value} is not finite")]
+    NonFinitePivot {
+        /// The coordinate.
+        value: f64,
+    },
+    /// A mass that is zero or negative.
+    #[error("part {part} ({kind}): mass must be positive, got {value}")]
+    NonPositiveMass {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// The mass.
+        value: f64,
+    },
+    /// A length or radius that is zero or negative.
+    #[error("part {part} ({kind}): `{key}` must be positive, got {value}")]
+    NonPositiveDimension {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// The key.
+        key: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// A tube whose inner radius is negative or not below its outer radius.
+    #[error(
+        "part {part} (tube): the inner radius {inner} must satisfy 0 ≤ inner < outer = {outer}"
+    )]
+    TubeRadii {
+        /// Index of the part.
+        part: usize,
+        /// Inner radius.
+        inner: f64,
+        /// Outer radius.
+        outer: f64,
+    },
+    /// An explicit tensor with `I[row][col] ≠ I[col][row]`.
+    #[error(
+        "part {part} (body): the inertia tensor must be symmetric, but I[{row}][{col}] = {upper} and I[{col}][{row}] = {lower}"
+    )]
+    NotSymmetric {
+        /// Index of the part.
+        part: usize,
+        /// Row of the upper entry.
+        row: usize,
+        /// Column of the upper entry.
+        col: usize,
+        /// `I[row][col]`.
+        upper: f64,
+        /// `I[col][row]`.
+        lower: f64,
+    },
+    /// An explicit tensor with a principal moment ≤ 0.
+    #[error(
+        "part {part} (body): the inertia tensor must be positive definite, but its principal moments are {moments:?}"
+    )]
+    NotPositiveDefinite {
+        /// Index of the part.
+        part: usize,
+        /// Its principal moments, ascending.
+        moments: [f64; 3],
+    },
+    /// An explicit tensor whose principal moments break I1 + I2 ≥ I3.
+    #[error(
+        "part {part} (body): principal moments {moments:?} break the triangle inequality I1 + I2 ≥ I3 that every mass distribution satisfies"
+    )]
+    TriangleInequality {
+        /// Index of the part.
+        part: usize,
+        /// Its principal moments, ascending.
+        moments: [f64; 3],
+    },
+    /// An explicit tensor given about the pivot, in a description without one.
+    #[error("part {part} (body): the tensor is given about the pivot, but no pivot is declared")]
+    PivotRequired {
+        /// Index of the part.
+        part: usize,
+    },
+    /// The masses add up to zero.
+    #[error("the total mass is zero")]
+    ZeroTotalMass,
+    /// The whole body has a zero principal moment about its reference point: all its mass
+    /// lies on a line through it, and Euler's equations divide by that moment.
+    #[error(
+        "the body has a zero principal moment (moments {moments:?}): all its mass lies on a line through the reference point"
+    )]
+    ZeroPrincipalMoment {
+        /// The principal moments about the reference point, ascending.
+        moments: [f64; 3],
+    },
+}

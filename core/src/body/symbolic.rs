@@ -1,0 +1,157 @@
+//! The symbolic body the derive macro builds: mass properties as expressions in the struct's
+//! fields (constants for a body of literals), the principal frame decided at compile time
+//! where it can be, and Euler's equations specialised to the body.
+
+use nalgebra::Vector3;
+
+use super::error::BodyError;
+use super::mass::{MassProperties, mass_properties};
+use super::principal::{Principal, principal_frame};
+use super::shape::Description;
+use super::validate::matrix;
+use crate::sym::{Arena, ExprId};
+
+/// How the principal frame of a symbolic body is known.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Frame {
+    /// The tensor is symbolically diagonal: the description axes are principal, and these
+    /// are the moments (constants for a body of literals).
+    Diagonal([ExprId; 3]),
+    /// A constant tensor that is not diagonal, decomposed now.
+    Constant(Principal),
+    /// A tensor depending on parameters and not symbolically diagonal: decomposed at run
+    /// time.
+    Runtime,
+}
+
+/// A body described symbolically, with what the macro needs to emit.
+#[derive(Clone, Debug)]
+pub struct SymbolicBody {
+    /// Mass properties as expressions.
+    pub props: MassProperties<ExprId>,
+    /// The principal frame.
+    pub frame: Frame,
+    /// True if nothing depends on a parameter.
+    pub constant: bool,
+}
+
+impl SymbolicBody {
+    /// Computes the mass properties of `d` in `arena` and decides the principal frame.
+    ///
+    /// Literal bodies should be validated first ([`evaluate`] then
+    /// [`Description::validate`]); this checks only what holds for every parameter value.
+    ///
+    /// # Errors
+    /// As [`mass_properties`], and [`BodyError::ZeroPrincipalMoment`] if a moment is
+    /// identically zero.
+    pub fn new(arena: &mut Arena, d: &Description<ExprId>) -> Result<SymbolicBody, BodyError> {
+        let props = mass_properties(arena, d)?;
+        let t = props.inertia;
+        let constant = t
+            .iter()
+            .flatten()
+            .chain(props.center.iter())
+            .chain([&props.mass])
+            .all(|&e| arena.free_symbols(e).is_empty());
+        let diagonal = [(0, 1), (0, 2), (1, 2)]
+            .iter()
+            .all(|&(i, j)| arena.expand(t[i][j]) == arena.zero());
+        let frame = if diagonal {
+            let moments = [t[0][0], t[1][1], t[2][2]];
+            if moments.iter().any(|&m| arena.expand(m) == arena.zero()) {
+                let v = moments.map(|m| arena.eval(m, &[]));
+                return Err(BodyError::ZeroPrincipalMoment { moments: v });
+            }
+            Frame::Diagonal(moments)
+        } else if constant {
+            let numeric = t.map(|row| row.map(|e| arena.eval(e, &[])));
+            Frame::Constant(principal_frame(&matrix(&numeric)))
+        } else {
+            Frame::Runtime
+        };
+        Ok(SymbolicBody {
+            props,
+            frame,
+            constant,
+        })
+    }
+
+    /// Euler's equations ω̇ = (k1 ω2 ω3 + G1/I1, …) with kᵢ = (I_j − I_k)/I_i, as expressions
+    /// in `omega`, `torque` and the parameters; `None` for a [`Frame::Runtime`] body. For a
+    /// constant body every coefficient is a constant (no division is left), and a
+    /// coefficient that vanishes (a symmetric body) removes its term.
+    ///
+    /// # Errors
+    /// [`BodyError::ZeroPrincipalMoment`] if a moment is identically zero.
+    pub fn euler_rhs(
+        &self,
+        arena: &mut Arena,
+        omega: [ExprId; 3],
+        torque: [ExprId; 3],
+    ) -> Result<Option<[ExprId; 3]>, BodyError> {
+        let moments: [ExprId; 3] = match &self.frame {
+            Frame::Runtime => return Ok(None),
+            Frame::Diagonal(m) => *m,
+            Frame::Constant(p) => {
+                let m: Vector3<f64> = p.moments;
+                let mut out = [arena.zero(); 3];
+                for (o, &v) in out.iter_mut().zip(m.iter()) {
+                    *o = arena.float(v).map_err(|_| zero_moment(&m))?;
+                }
+                out
+            }
+        };
+        let mut rhs = [arena.zero(); 3];
+        for i in 0..3 {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let diff = arena.sub(moments[j], moments[k]);
+            let diff = if arena.expand(diff) == arena.zero() {
+                arena.zero()
+            } else {
+                diff
+            };
+            let mut coefficient = arena
+                .div(diff, moments[i])
+                .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })?;
+            let mut inverse = arena
+                .recip(moments[i])
+                .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })?;
+            if self.constant {
+                // Fold to one correctly rounded constant each: no division at run time.
+                coefficient = self.fold(arena, coefficient)?;
+                inverse = self.fold(arena, inverse)?;
+            }
+            let gyro = arena.product(&[coefficient, omega[j], omega[k]]);
+            let drive = arena.mul(inverse, torque[i]);
+            rhs[i] = arena.add(gyro, drive);
+        }
+        Ok(Some(rhs))
+    }
+
+    fn fold(&self, arena: &mut Arena, e: ExprId) -> Result<ExprId, BodyError> {
+        if arena.as_rational(e).is_some() {
+            return Ok(e);
+        }
+        let v = arena.eval(e, &[]);
+        arena
+            .float(v)
+            .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })
+    }
+}
+
+fn zero_moment(m: &Vector3<f64>) -> BodyError {
+    BodyError::ZeroPrincipalMoment {
+        moments: [m[0], m[1], m[2]],
+    }
+}
+
+/// The numeric description behind a constant symbolic one (`None` if a value depends on a
+/// parameter).
+pub fn evaluate(arena: &Arena, d: &Description<ExprId>) -> Option<Description<f64>> {
+    let mut constant = true;
+    let numeric = d.map(&mut |&e| {
+        constant &= arena.free_symbols(e).is_empty();
+        arena.eval(e, &[])
+    });
+    constant.then_some(numeric)
+}

@@ -1,0 +1,168 @@
+//! Validation of a numeric description: one function per rule, the reason in its doc line.
+//! The derive macro runs the same rules at compile time on literal bodies, and the code it
+//! generates for parametric bodies runs them at run time through `RigidBody::validate`.
+
+use nalgebra::Matrix3;
+
+use super::algebra::Numeric;
+use super::error::BodyError;
+use super::mass::{MassProperties, mass_properties};
+use super::principal::{Principal, principal_frame};
+use super::shape::{Description, Part, Shape};
+
+/// Relative tolerance of the tensor checks (symmetry, definiteness, triangle inequality).
+const TOL: f64 = 1e-12;
+
+impl Description<f64> {
+    /// Checks every rule, then computes the mass properties and the principal frame about
+    /// the reference point.
+    ///
+    /// # Errors
+    /// The first rule broken, as a [`BodyError`] carrying the numbers.
+    pub fn analyse(&self) -> Result<(MassProperties<f64>, Principal), BodyError> {
+        for (index, part) in self.parts.iter().enumerate() {
+            check_part(index, part)?;
+        }
+        if let Some(p) = &self.pivot {
+            finite_pivot(p)?;
+        }
+        let props = mass_properties(&mut Numeric, self)?;
+        let principal = principal_frame(&matrix(&props.inertia));
+        no_zero_moment(&principal)?;
+        Ok((props, principal))
+    }
+
+    /// Checks every rule (see [`Description::analyse`]).
+    ///
+    /// # Errors
+    /// The first rule broken.
+    pub fn validate(&self) -> Result<(), BodyError> {
+        self.analyse().map(|_| ())
+    }
+}
+
+/// A tensor as rows to a nalgebra matrix.
+pub fn matrix(t: &[[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| t[i][j])
+}
+
+/// Checks one part: finite values, positive mass and dimensions, a consistent tube, and a
+/// physical explicit tensor.
+///
+/// # Errors
+/// The first rule the part breaks.
+pub fn check_part(index: usize, part: &Part<f64>) -> Result<(), BodyError> {
+    let kind = part.shape.kind();
+    let mass = *part.shape.mass();
+    finite(index, kind, "mass", mass)?;
+    for &(key, &value) in &part.shape.dimensions() {
+        finite(index, kind, key, value)?;
+    }
+    for &x in &part.at {
+        finite(index, kind, "at", x)?;
+    }
+    // A mass must be positive: a zero or negative mass has no inertia to speak of.
+    if mass.is_nan() || mass <= 0.0 {
+        return Err(BodyError::NonPositiveMass {
+            part: index,
+            kind,
+            value: mass,
+        });
+    }
+    // Lengths and radii must be positive: a zero one degenerates the solid.
+    for (key, &value) in part.shape.dimensions() {
+        if value <= 0.0 {
+            return Err(BodyError::NonPositiveDimension {
+                part: index,
+                kind,
+                key,
+                value,
+            });
+        }
+    }
+    match &part.shape {
+        Shape::Tube { inner, outer, .. } => {
+            finite(index, kind, "inner", *inner)?;
+            // The hole must fit inside the tube (inner 0 is a solid cylinder).
+            if !(*inner >= 0.0 && inner < outer) {
+                return Err(BodyError::TubeRadii {
+                    part: index,
+                    inner: *inner,
+                    outer: *outer,
+                });
+            }
+        }
+        Shape::Explicit { inertia, .. } => explicit_tensor(index, inertia)?,
+        _ => {}
+    }
+    Ok(())
+}
+
+/// A value must be finite: NaN and ∞ propagate into every result.
+fn finite(part: usize, kind: &'static str, key: &'static str, value: f64) -> Result<(), BodyError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(BodyError::NonFinite {
+            part,
+            kind,
+            key,
+            value,
+        })
+    }
+}
+
+/// The pivot must be finite.
+fn finite_pivot(p: &[f64; 3]) -> Result<(), BodyError> {
+    match p.iter().find(|x| !x.is_finite()) {
+        Some(&value) => Err(BodyError::NonFinitePivot { value }),
+        None => Ok(()),
+    }
+}
+
+/// An explicit tensor must be symmetric, positive definite and obey I1 + I2 ≥ I3: every
+/// mass distribution's tensor does (Σ m (r² E − x xᵀ) is symmetric, and
+/// I1 + I2 − I3 = 2 Σ m x3² ≥ 0).
+fn explicit_tensor(part: usize, t: &[[f64; 3]; 3]) -> Result<(), BodyError> {
+    for (key, v) in t.iter().flatten().map(|&v| ("inertia", v)) {
+        finite(part, "body", key, v)?;
+    }
+    let scale = t.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+    for (row, col) in [(0, 1), (0, 2), (1, 2)] {
+        let (upper, lower) = (t[row][col], t[col][row]);
+        if (upper - lower).abs() > TOL * scale {
+            return Err(BodyError::NotSymmetric {
+                part,
+                row,
+                col,
+                upper,
+                lower,
+            });
+        }
+    }
+    let moments = ascending(&principal_frame(&matrix(t)));
+    if moments[0] <= TOL * scale {
+        return Err(BodyError::NotPositiveDefinite { part, moments });
+    }
+    if moments[0] + moments[1] < moments[2] * (1.0 - TOL) {
+        return Err(BodyError::TriangleInequality { part, moments });
+    }
+    Ok(())
+}
+
+/// The body's principal moments about the reference point must all be positive: Euler's
+/// equations divide by each (a zero moment means all mass on a line through the point).
+fn no_zero_moment(p: &Principal) -> Result<(), BodyError> {
+    let moments = ascending(p);
+    let positive = moments[0] > TOL * moments[2];
+    if !positive {
+        return Err(BodyError::ZeroPrincipalMoment { moments });
+    }
+    Ok(())
+}
+
+fn ascending(p: &Principal) -> [f64; 3] {
+    let mut m = [p.moments[0], p.moments[1], p.moments[2]];
+    m.sort_by(f64::total_cmp);
+    m
+}
