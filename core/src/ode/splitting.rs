@@ -46,8 +46,9 @@ fn rotate_m(m: &mut Vector3<f64>, axis: usize, theta: f64) {
     let (s, c) = theta.sin_cos();
     let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
     let (ma, mb) = (m[a], m[b]);
-    m[a] = c * ma + s * mb;
-    m[b] = c * mb - s * ma;
+    // One rounding fewer per component than c·a + s·b: less random walk in |m|.
+    m[a] = c.mul_add(ma, s * mb);
+    m[b] = c.mul_add(mb, -(s * ma));
 }
 
 /// The free rigid body split into exact rotations.
@@ -94,55 +95,83 @@ impl FreeBodySplitting {
         self.inertia
     }
 
-    /// One Strang step: R₁(h/2) R₃(h) R₁(h/2), then the Casimir rotation about m.
+    /// The exact flow of ½ m₁²(1/I₁ − 1/I₂) for time τ: a rotation about body axis 1.
     #[inline]
-    fn strang(&self, y: &mut BodyMomentum, h: f64) {
-        let mut q = y.q;
-        let half = |q: &mut UnitQuaternion<f64>, m: &mut Vector3<f64>, tau: f64| {
-            let th = tau * self.a1 * m.x;
-            *q = rotate_body(q, &Vector3::new(th, 0.0, 0.0));
-            rotate_m(m, 0, th);
-        };
-        half(&mut q, &mut y.m, 0.5 * h);
-        let th = h * self.a3 * y.m.z;
-        q = rotate_body(&q, &Vector3::new(0.0, 0.0, th));
-        rotate_m(&mut y.m, 2, th);
-        half(&mut q, &mut y.m, 0.5 * h);
-        // ½|m|²/I₂: m is fixed, the body turns about m by h|m|/I₂.
-        y.q = rotate_body(&q, &(y.m * (h / self.inertia[1])));
+    fn r1(&self, y: &mut BodyMomentum, tau: f64) {
+        let th = tau * self.a1 * y.m.x;
+        y.q = rotate_body(&y.q, &Vector3::new(th, 0.0, 0.0));
+        rotate_m(&mut y.m, 0, th);
     }
 
-    /// One step of the configured order.
-    pub fn step(&self, y: &mut BodyMomentum, h: f64) {
+    /// The exact flow of ½ m₃²(1/I₃ − 1/I₂) for time τ: a rotation about body axis 3.
+    #[inline]
+    fn r3(&self, y: &mut BodyMomentum, tau: f64) {
+        let th = tau * self.a3 * y.m.z;
+        y.q = rotate_body(&y.q, &Vector3::new(0.0, 0.0, th));
+        rotate_m(&mut y.m, 2, th);
+    }
+
+    /// The exact flow of the Casimir part ½|m|²/I₂: m fixed, the body turns about m.
+    #[inline]
+    fn casimir(&self, y: &mut BodyMomentum, tau: f64) {
+        y.q = rotate_body(&y.q, &(y.m * (tau / self.inertia[1])));
+    }
+
+    /// Strang sub-step weights of one step: (1), the triple jump, or the triple jump of it.
+    fn weights(&self) -> ([f64; 9], usize) {
+        let (a1, a2) = triple_jump(2);
+        let mut w = [0.0; 9];
         match self.order {
-            Order::Two => self.strang(y, h),
-            Order::Four => self.four(y, h),
+            Order::Two => {
+                w[0] = 1.0;
+                (w, 1)
+            }
+            Order::Four => {
+                w[..3].copy_from_slice(&[a1, a2, a1]);
+                (w, 3)
+            }
             Order::Six => {
-                let (g1, g2) = triple_jump(4);
-                self.four(y, g1 * h);
-                self.four(y, g2 * h);
-                self.four(y, g1 * h);
+                let (b1, b2) = triple_jump(4);
+                for (j, b) in [b1, b2, b1].iter().enumerate() {
+                    w[3 * j..3 * j + 3].copy_from_slice(&[b * a1, b * a2, b * a1]);
+                }
+                (w, 9)
             }
         }
     }
 
-    fn four(&self, y: &mut BodyMomentum, h: f64) {
-        let (g1, g2) = triple_jump(2);
-        self.strang(y, g1 * h);
-        self.strang(y, g2 * h);
-        self.strang(y, g1 * h);
+    /// One step of the configured order: Strang sub-steps R₁(τ/2) R₃(τ) R₁(τ/2) with the
+    /// triple-jump weights, and the Casimir rotation (which commutes with both) once.
+    pub fn step(&self, y: &mut BodyMomentum, h: f64) {
+        let (w, k) = self.weights();
+        for &g in &w[..k] {
+            self.r1(y, 0.5 * g * h);
+            self.r3(y, g * h);
+            self.r1(y, 0.5 * g * h);
+        }
+        self.casimir(y, h);
     }
 
-    /// `n` steps of size `h`.
+    /// `n` steps of size `h`; the same map as `n` calls of [`Self::step`], but adjacent
+    /// R₁ half-rotations are merged (flows of one Hamiltonian add), so each Strang sub-step
+    /// costs two rotations and |m| sees a third less round-off.
     ///
     /// # Errors
     /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite; [`OdeError::NonFiniteInitialState`].
     pub fn run(&self, y: &mut BodyMomentum, h: f64, n: u64) -> Result<(), OdeError> {
         check_step(h)?;
         check_state(y)?;
+        let (w, k) = self.weights();
+        let mut pending = 0.0;
         for _ in 0..n {
-            self.step(y, h);
+            for &g in &w[..k] {
+                self.r1(y, pending + 0.5 * g * h);
+                self.r3(y, g * h);
+                pending = 0.5 * g * h;
+            }
+            self.casimir(y, h);
         }
+        self.r1(y, pending);
         Ok(())
     }
 }

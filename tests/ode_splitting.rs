@@ -1,0 +1,157 @@
+//! Splitting methods for rigid bodies: orders 2, 4 and 6 against the exact free-body
+//! solution, |m| and energy over 10⁶ steps, and the gravity splitting against DOP853.
+
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use precess_core::exact::FreeBodyExact;
+use precess_core::ode::splitting::{BodyMomentum, FreeBodySplitting, Gravity, Order, PotentialSplitting};
+use precess_core::ode::{AdaptiveConfig, Dp853, OdeError, System, solve};
+
+const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
+
+fn gni() -> BodyMomentum {
+    BodyMomentum { q: UnitQuaternion::identity(), m: Vector3::new(1.1f64.cos(), 0.0, 1.1f64.sin()) }
+}
+
+fn energy(i: [f64; 3], m: &Vector3<f64>) -> f64 {
+    0.5 * (m.x * m.x / i[0] + m.y * m.y / i[1] + m.z * m.z / i[2])
+}
+
+fn m_error(order: Order, h: f64) -> f64 {
+    let s = FreeBodySplitting::new(GNI_I, order).unwrap();
+    let mut y = gni();
+    s.run(&mut y, h, (10.0 / h).round() as u64).unwrap();
+    let ex = FreeBodyExact::new(GNI_I, [1.1f64.cos(), 0.0, 1.1f64.sin()]).unwrap().m_at(10.0).unwrap();
+    (y.m - Vector3::from(ex)).amax()
+}
+
+#[test]
+fn composition_orders_two_four_six() {
+    for (order, p, h) in [(Order::Two, 2.0, 0.02), (Order::Four, 4.0, 0.1), (Order::Six, 6.0, 0.2)] {
+        let (e1, e2) = (m_error(order, h), m_error(order, h / 2.0));
+        let q = (e1 / e2).log2();
+        eprintln!("{order:?}: errors {e1:e} {e2:e}, observed order {q:.2}");
+        assert!((q - p).abs() < 0.35, "{order:?} observed order {q}");
+    }
+}
+
+/// The attitude from the splitting converges to the one DOP853 gets from q̇ = ½ q ⊗ (0, I⁻¹m).
+#[test]
+fn attitude_converges_at_order_two() {
+    struct Ode;
+    impl System<7> for Ode {
+        fn rhs(&self, _t: f64, y: &[f64; 7], d: &mut [f64; 7]) {
+            let w = [y[4] / GNI_I[0], y[5] / GNI_I[1], y[6] / GNI_I[2]];
+            d[0] = -0.5 * (y[1] * w[0] + y[2] * w[1] + y[3] * w[2]);
+            d[1] = 0.5 * (y[0] * w[0] + y[2] * w[2] - y[3] * w[1]);
+            d[2] = 0.5 * (y[0] * w[1] + y[3] * w[0] - y[1] * w[2]);
+            d[3] = 0.5 * (y[0] * w[2] + y[1] * w[1] - y[2] * w[0]);
+            d[4] = y[5] * w[2] - y[6] * w[1];
+            d[5] = y[6] * w[0] - y[4] * w[2];
+            d[6] = y[4] * w[1] - y[5] * w[0];
+        }
+    }
+    let m0 = gni().m;
+    let r = solve::<Dp853, _, 7>(Ode, 0.0, [1.0, 0.0, 0.0, 0.0, m0.x, m0.y, m0.z], 5.0, &[], AdaptiveConfig::with_tol(1e-14, 1e-14)).unwrap().y;
+    let qr = UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]));
+    let err = |h: f64| {
+        let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
+        let mut y = gni();
+        s.run(&mut y, h, (5.0 / h).round() as u64).unwrap();
+        y.q.angle_to(&qr)
+    };
+    let p = (err(0.02) / err(0.01)).log2();
+    assert!((p - 2.0).abs() < 0.2, "attitude order {p}");
+    let s4 = FreeBodySplitting::new(GNI_I, Order::Four).unwrap();
+    let mut y = gni();
+    s4.run(&mut y, 0.01, 500).unwrap();
+    assert!(y.q.angle_to(&qr) < 1e-8, "order-4 attitude error {:e}", y.q.angle_to(&qr));
+}
+
+/// 10⁶ Strang steps: |m| to round-off, energy error bounded with no secular growth.
+#[test]
+fn million_steps_norm_and_energy() {
+    for (i, m0) in [(GNI_I, gni().m), ([3.0, 5.0, 9.0], Vector3::new(0.0, 2.0, 0.01))] {
+        let s = FreeBodySplitting::new(i, Order::Two).unwrap();
+        let mut y = BodyMomentum { q: UnitQuaternion::identity(), m: m0 };
+        let (g0, h0) = (m0.norm(), energy(i, &m0));
+        let n = 1_000_000;
+        let (mut first, mut last, mut worst_g) = (0.0f64, 0.0f64, 0.0f64);
+        for k in (0..n).step_by(100) {
+            s.run(&mut y, 0.01, 100).unwrap();
+            {
+                let de = (energy(i, &y.m) - h0).abs() / h0;
+                if k < n / 10 {
+                    first = first.max(de);
+                } else if k >= n - n / 10 {
+                    last = last.max(de);
+                }
+                worst_g = worst_g.max((y.m.norm() - g0).abs() / g0);
+            }
+        }
+        let dg = (y.m.norm() - g0).abs() / g0;
+        eprintln!("I = {i:?}: |m| drift {dg:e} (worst sampled {worst_g:e}), energy error first 10% {first:e}, last 10% {last:e}, |q|−1 {:e}", y.q.quaternion().norm() - 1.0);
+        assert!(dg <= 1e-13 && worst_g <= 1e-13, "|m| drift {dg:e}");
+        assert!(last <= 1.5 * first + 1e-14, "energy error grows: {first:e} → {last:e}");
+        assert!(first <= 1e-3, "energy error {first:e}");
+    }
+}
+
+/// A heavy top split as free flow plus gravity kicks, against DOP853 on the Eulerian form.
+#[test]
+fn heavy_top_splitting() {
+    let (i, c, weight) = ([1.0, 1.0, 0.5], Vector3::new(0.0, 0.0, 1.0), 1.0);
+    struct Ode;
+    impl System<7> for Ode {
+        fn rhs(&self, _t: f64, y: &[f64; 7], d: &mut [f64; 7]) {
+            let i = [1.0, 1.0, 0.5];
+            let q = UnitQuaternion::from_quaternion(Quaternion::new(y[0], y[1], y[2], y[3]));
+            let g = Vector3::new(0.0, 0.0, 1.0).cross(&(q.inverse() * Vector3::new(0.0, 0.0, -1.0)));
+            let w = [y[4] / i[0], y[5] / i[1], y[6] / i[2]];
+            d[0] = -0.5 * (y[1] * w[0] + y[2] * w[1] + y[3] * w[2]);
+            d[1] = 0.5 * (y[0] * w[0] + y[2] * w[2] - y[3] * w[1]);
+            d[2] = 0.5 * (y[0] * w[1] + y[3] * w[0] - y[1] * w[2]);
+            d[3] = 0.5 * (y[0] * w[2] + y[1] * w[1] - y[2] * w[0]);
+            d[4] = y[5] * w[2] - y[6] * w[1] + g.x;
+            d[5] = y[6] * w[0] - y[4] * w[2] + g.y;
+            d[6] = y[4] * w[1] - y[5] * w[0] + g.z;
+        }
+    }
+    let q0 = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 60f64.to_radians());
+    let m0 = Vector3::new(0.0, 0.0, 0.5 * 20.0);
+    let r = solve::<Dp853, _, 7>(Ode, 0.0, [q0.w, q0.i, q0.j, q0.k, m0.x, m0.y, m0.z], 2.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap().y;
+    let split = PotentialSplitting { free: FreeBodySplitting::new(i, Order::Two).unwrap(), potential: Gravity { weight, c } };
+    let err = |h: f64| {
+        let mut y = BodyMomentum { q: q0, m: m0 };
+        split.run(&mut y, h, (2.0 / h).round() as u64).unwrap();
+        (y.m - Vector3::new(r[4], r[5], r[6])).amax()
+    };
+    let p = (err(2e-3) / err(1e-3)).log2();
+    eprintln!("heavy top: error {:e} at h = 1e-3, order {p:.2}", err(1e-3));
+    assert!((p - 2.0).abs() < 0.2, "order {p}");
+    // Energy over 2·10⁵ steps: bounded, no drift.
+    let mut y = BodyMomentum { q: q0, m: m0 };
+    let e0 = split.energy(&y);
+    let (mut first, mut last) = (0.0f64, 0.0f64);
+    for k in 0..200_000 {
+        split.step(&mut y, 1e-3);
+        let de = (split.energy(&y) - e0).abs();
+        if k < 20_000 {
+            first = first.max(de);
+        } else if k >= 180_000 {
+            last = last.max(de);
+        }
+    }
+    eprintln!("heavy top energy error: first 10% {first:e}, last 10% {last:e}");
+    assert!(last <= 1.5 * first + 1e-13 && first < 1e-3);
+}
+
+#[test]
+fn bad_input_is_typed() {
+    assert!(matches!(FreeBodySplitting::new([1.0, -1.0, 1.0], Order::Two), Err(OdeError::InvalidInertia { .. })));
+    let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
+    let mut y = gni();
+    assert!(matches!(s.run(&mut y, 0.0, 10), Err(OdeError::InvalidStep { .. })));
+    assert!(matches!(s.run(&mut y, f64::NAN, 10), Err(OdeError::InvalidStep { .. })));
+    let mut bad = BodyMomentum { m: Vector3::new(f64::INFINITY, 0.0, 0.0), ..gni() };
+    assert!(matches!(s.run(&mut bad, 0.1, 10), Err(OdeError::NonFiniteInitialState { .. })));
+}
