@@ -11,11 +11,13 @@
 mod angles;
 mod equations;
 mod error;
+mod model;
 mod solve;
 mod top;
 
 pub use angles::{AngleSequence, Mat3, cross, dot, elementary, mat_mul, mat_vec, transpose};
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
+pub use model::{ModelError, TopModel};
 pub use solve::{Accelerations, MAX_BLOCK, cofactor, determinant};
 pub use top::{TopDerivation, TopScene};

@@ -67,6 +67,29 @@ impl TopDerivation {
     pub fn coords(&self) -> &Coordinates {
         &self.equations.coords
     }
+
+    /// The Jacobian of q̈ with respect to the state `(q, q̇)`: row i holds
+    /// `(∂q̈_i/∂q_0, ∂q̈_i/∂q_1, ∂q̈_i/∂q_2, ∂q̈_i/∂q̇_0, ∂q̈_i/∂q̇_1, ∂q̈_i/∂q̇_2)`, for
+    /// linearisation (stability of steady motions) and implicit steppers.
+    pub fn jacobian(&self, arena: &mut Arena) -> [[ExprId; 6]; 3] {
+        let c = self.coords().clone();
+        let state: Vec<ExprId> = c.q.iter().chain(c.rates.iter()).copied().collect();
+        let mut jac = [[arena.zero(); 6]; 3];
+        for (i, row) in jac.iter_mut().enumerate() {
+            for (j, entry) in row.iter_mut().enumerate() {
+                if let Some(s) = arena.as_symbol(state[j]) {
+                    *entry = arena.diff(self.accelerations.accel[i], s);
+                }
+            }
+        }
+        jac
+    }
+
+    /// The body angular acceleration `ω̇ = B q̈ + Ḃ q̇` as an expression in q, q̇ and the
+    /// acceleration symbols q̈ (substitute the solved q̈ to evaluate it).
+    pub fn omega_dot(&self, arena: &mut Arena) -> [ExprId; 3] {
+        self.omega.map(|w| arena.dt(w))
+    }
 }
 
 impl TopScene {

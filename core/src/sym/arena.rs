@@ -24,6 +24,11 @@ impl SymbolId {
     pub fn index(self) -> usize {
         self.0 as usize
     }
+
+    /// The symbol at position `i` of a table (valid for `i < Arena::symbol_count()`).
+    pub fn from_index(i: usize) -> SymbolId {
+        SymbolId(i as u32)
+    }
 }
 
 /// What a symbol stands for, which decides how the time derivative treats it.
