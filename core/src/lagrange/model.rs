@@ -63,7 +63,7 @@ impl TopModel {
         let rates = [sym(c.rates[0]), sym(c.rates[1]), sym(c.rates[2])];
         let energy = top.energy(arena);
         let parameters = (0..arena.symbol_count())
-            .map(|i| SymbolId::from_index(i))
+            .map(SymbolId::from_index)
             .filter(|&s| arena.symbol(s).kind == SymbolKind::Parameter)
             .map(|s| (arena.symbol(s).name.clone(), s))
             .collect();
