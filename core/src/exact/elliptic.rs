@@ -117,15 +117,33 @@ impl Jacobi {
             return (x.tanh(), s, s);
         }
         // u = 2K n + r, |r| ≤ K; sn and cn change sign with odd n, dn does not.
-        let two_k = self.k * Dd::from(2.0);
-        let n = (u / two_k).round();
-        let r = (u - two_k * Dd::from(n)).to_f64();
+        let (n, r) = self.reduce(u);
         let (sn, cn, dn) = self.reduced(r);
         if n.rem_euclid(2.0) == 1.0 {
             (-sn, -cn, dn)
         } else {
             (sn, cn, dn)
         }
+    }
+
+    /// Splits u = 2K n + r with |r| ≤ K (in double-double); returns (n, r). For m_c = 0
+    /// (K = ∞) returns (0, u).
+    pub fn reduce(&self, u: Dd) -> (f64, f64) {
+        if self.mc == 0.0 {
+            return (0.0, u.to_f64());
+        }
+        let two_k = self.k * Dd::from(2.0);
+        let n = (u / two_k).round();
+        (n, (u - two_k * Dd::from(n)).to_f64())
+    }
+
+    /// (sn, cn, dn)(r) for a reduced argument |r| ≤ K (cn ≥ 0), as returned by [`Self::reduce`].
+    pub fn sncndn_reduced(&self, r: f64) -> (f64, f64, f64) {
+        if self.mc == 0.0 {
+            let s = 1.0 / r.cosh();
+            return (r.tanh(), s, s);
+        }
+        self.reduced(r)
     }
 
     /// Bulirsch's descending Landen transformation for |u| ≤ K.

@@ -178,6 +178,36 @@ impl FreeBodyExact {
         }
     }
 
+    /// The elliptic functions of the motion.
+    pub fn jacobi(&self) -> &Jacobi {
+        &self.jac
+    }
+
+    /// The phase u(t) = λt + u₀ in double-double.
+    pub fn phase(&self, t: f64) -> Dd {
+        self.lambda * Dd::from(t) + Dd::from(self.u0)
+    }
+
+    /// The initial phase u₀.
+    pub fn u0(&self) -> f64 {
+        self.u0
+    }
+
+    /// The caller's axis whose component is ± A dn (the axis the motion circles), and
+    /// A² of that axis and of the cn axis; `None` when steady.
+    pub fn dn_axis(&self) -> Option<(usize, f64, f64)> {
+        match self.regime {
+            Regime::Steady => None,
+            Regime::AboutSmallest => Some((self.perm[0], self.amp[0].powi(2), self.amp[2].powi(2))),
+            _ => Some((self.perm[2], self.amp[2].powi(2), self.amp[0].powi(2))),
+        }
+    }
+
+    /// The initial angular momentum.
+    pub fn m0(&self) -> [f64; 3] {
+        self.m0
+    }
+
     /// m(t) in the caller's axes.
     ///
     /// # Errors

@@ -1,0 +1,172 @@
+//! The exact attitude of the torque-free rigid body (after Celledoni, Fassò, Säfström,
+//! Zanna, SIAM J. Sci. Comput. 30(4), 2008).
+//!
+//! With π = R m the constant spatial angular momentum, write the body-to-space rotation as
+//! R(t) = P · R_z(φ(t)) · B(m(t)), where B(m) = R_x(θ) R_z(ψ) turns m onto G ẑ
+//! (m'/G = (sin θ sin ψ, sin θ cos ψ, cos θ) in axes relabelled cyclically so that the third is
+//! the axis a whose component is ±A dn, which never vanishes: no division by zero), and
+//! P = R(0) B(m(0))ᵀ. Then
+//! φ̇ = G (m'₁²/I'₁ + m'₂²/I'₂)/(m'₁² + m'₂²) = G/I_a + G c_a / (A_cn² (1 − n sn² u)),
+//! with c_a = Σ mᵢ²(1/Iᵢ − 1/I_a) (one-signed, no cancellation), n = −A_dn² k²/A_cn², so
+//! φ(t) = G t/I_a + G c_a/(A_cn² λ) · [Π̃(u(t)) − Π̃(u₀)], Π̃(u) = ∫₀ᵘ dv/(1 − n sn² v),
+//! which is Π(n; am u | m) and is evaluated with Carlson's R_F and R_J after reducing u
+//! modulo 2K.
+
+use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+
+use super::carlson::{rf, rj};
+use super::error::{ExactError, finite};
+use super::free_body::{FreeBodyExact, Regime};
+
+/// Constants of the precession angle φ(t).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Precession {
+    /// Caller's axis of the dn component.
+    axis: usize,
+    /// Constant spatial factor P = R(0) B(m₀)ᵀ.
+    p: UnitQuaternion<f64>,
+    /// G / I_a.
+    rate: f64,
+    /// G c_a / (A_cn² λ).
+    coef: f64,
+    /// Characteristic n of the third-kind integral.
+    n: f64,
+    /// Π̃(K) (0 when K = ∞, never used then).
+    pi_k: f64,
+    /// Π̃(u₀).
+    pi_u0: f64,
+}
+
+/// The exact solution (q(t), m(t)) of the free rigid body from (q₀, m₀).
+///
+/// ```
+/// use nalgebra::{UnitQuaternion, Vector3};
+/// use precess_core::exact::FreeBodyAttitude;
+/// let q0 = UnitQuaternion::identity();
+/// let fb = FreeBodyAttitude::new([2.0, 1.0, 2.0 / 3.0], q0, [1.1f64.cos(), 0.0, 1.1f64.sin()])?;
+/// let (q, m) = fb.at(10.0)?;
+/// // The spatial angular momentum π = q m q⁻¹ is conserved.
+/// let pi = q * Vector3::from(m);
+/// approx::assert_relative_eq!(pi, Vector3::new(1.1f64.cos(), 0.0, 1.1f64.sin()), epsilon = 1e-14);
+/// # Ok::<(), precess_core::exact::ExactError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FreeBodyAttitude {
+    fb: FreeBodyExact,
+    inertia: [f64; 3],
+    q0: UnitQuaternion<f64>,
+    prec: Option<Precession>,
+}
+
+/// B(m) = R_x(θ) R_z(ψ) · C_a: turns m onto |m| ẑ, with C_a the cyclic relabelling that
+/// makes axis a the third.
+fn align(m: &[f64; 3], axis: usize) -> UnitQuaternion<f64> {
+    let (i1, i2) = ((axis + 1) % 3, (axis + 2) % 3);
+    let (m1, m2, m3) = (m[i1], m[i2], m[axis]);
+    let rho = m1.hypot(m2);
+    let g = rho.hypot(m3);
+    let (st, ct) = (rho / g, m3 / g);
+    let (sp, cp) = (m1 / rho, m2 / rho);
+    let rx = Matrix3::new(1.0, 0.0, 0.0, 0.0, ct, -st, 0.0, st, ct);
+    let rz = Matrix3::new(cp, -sp, 0.0, sp, cp, 0.0, 0.0, 0.0, 1.0);
+    let mut c = Matrix3::zeros();
+    c[(0, i1)] = 1.0;
+    c[(1, i2)] = 1.0;
+    c[(2, axis)] = 1.0;
+    UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(rx * rz * c))
+}
+
+impl FreeBodyAttitude {
+    /// Sets up the solution for principal moments `inertia`, attitude `q0` (body to space)
+    /// and body angular momentum `m0`.
+    ///
+    /// # Errors
+    /// [`ExactError::InvalidInertia`], [`ExactError::NonFinite`] for non-finite q0 or m0.
+    pub fn new(inertia: [f64; 3], q0: UnitQuaternion<f64>, m0: [f64; 3]) -> Result<Self, ExactError> {
+        let fb = FreeBodyExact::new(inertia, m0)?;
+        for v in q0.coords.iter() {
+            finite("q0", *v)?;
+        }
+        let prec = match fb.dn_axis() {
+            None => None,
+            Some((axis, a_dn2, a_cn2)) => {
+                let g = (m0[0] * m0[0] + m0[1] * m0[1] + m0[2] * m0[2]).sqrt();
+                let ia = inertia[axis];
+                let c_a: f64 = (0..3).map(|i| m0[i] * m0[i] * (ia - inertia[i]) / (inertia[i] * ia)).sum();
+                let jac = fb.jacobi();
+                let mc = jac.mc();
+                let n = -a_dn2 * (1.0 - mc) / a_cn2;
+                let pi_k = if mc > 0.0 {
+                    rf(0.0, mc, 1.0)? + n / 3.0 * rj(0.0, mc, 1.0, 1.0 - n)?
+                } else {
+                    0.0
+                };
+                let mut pr = Precession {
+                    axis,
+                    p: q0 * align(&m0, axis).inverse(),
+                    rate: g / ia,
+                    coef: g * c_a / (a_cn2 * fb.lambda()),
+                    n,
+                    pi_k,
+                    pi_u0: 0.0,
+                };
+                pr.pi_u0 = Self::pi_tilde(&fb, &pr, fb.phase(0.0))?;
+                Some(pr)
+            }
+        };
+        Ok(Self { fb, inertia, q0, prec })
+    }
+
+    /// Π̃(u) = ∫₀ᵘ dv/(1 − n sn² v) = 2jΠ̃(K) + Π̃(r) for u = 2jK + r, |r| ≤ K.
+    fn pi_tilde(fb: &FreeBodyExact, pr: &Precession, u: super::dd::Dd) -> Result<f64, ExactError> {
+        let jac = fb.jacobi();
+        let (j, r) = jac.reduce(u);
+        let (s, c, d) = jac.sncndn_reduced(r);
+        let part = if s == 0.0 {
+            0.0
+        } else {
+            let (c2, d2) = (c * c, d * d);
+            s * rf(c2, d2, 1.0)? + pr.n / 3.0 * s * s * s * rj(c2, d2, 1.0, 1.0 - pr.n * s * s)?
+        };
+        Ok(2.0 * j * pr.pi_k + part)
+    }
+
+    /// The angular-momentum solution underneath.
+    pub fn momentum(&self) -> &FreeBodyExact {
+        &self.fb
+    }
+
+    /// The regime of the motion.
+    pub fn regime(&self) -> Regime {
+        self.fb.regime()
+    }
+
+    /// (q(t), m(t)).
+    ///
+    /// # Errors
+    /// [`ExactError::NonFinite`] for a non-finite `t`.
+    pub fn at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
+        let m = self.fb.m_at(t)?;
+        let Some(pr) = self.prec else {
+            // Steady: ω = I⁻¹m is constant and along m, the body spins uniformly.
+            let w = Vector3::new(m[0] / self.inertia[0], m[1] / self.inertia[1], m[2] / self.inertia[2]);
+            return Ok((self.q0 * UnitQuaternion::from_scaled_axis(w * t), m));
+        };
+        let phi = pr.rate * t + pr.coef * (Self::pi_tilde(&self.fb, &pr, self.fb.phase(t))? - pr.pi_u0);
+        let rz = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi);
+        Ok((pr.p * rz * align(&m, pr.axis), m))
+    }
+}
+
+/// The exact free-body flow of (q, m) over `h`, as a splitting step.
+///
+/// # Errors
+/// As [`FreeBodyAttitude::new`] and [`FreeBodyAttitude::at`].
+pub fn free_body_flow_attitude(
+    inertia: [f64; 3],
+    q: UnitQuaternion<f64>,
+    m: [f64; 3],
+    h: f64,
+) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
+    FreeBodyAttitude::new(inertia, q, m)?.at(h)
+}
