@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::exact::ExactError;
+
 /// Why an integration could not start or could not finish.
 ///
 /// Every variant carries the numbers that explain it, so a caller can report
@@ -92,6 +94,9 @@ pub enum OdeError {
         /// End of the last step (the current time).
         t_now: f64,
     },
+    /// An exact sub-flow (the free-body flow of a splitting) failed.
+    #[error("exact flow: {0}")]
+    Exact(#[from] ExactError),
     /// Mass or a principal moment of inertia is not finite and positive.
     #[error("mass and inertia must be finite and > 0: mass = {mass}, inertia = {inertia:?}")]
     InvalidInertia {
