@@ -1,0 +1,639 @@
+//! Meaning of the `#[rigid(...)]` items: parts and keys against the tables, values to
+//! symbolic expressions, then the body's rules. One function per rule, the reason in a
+//! comment; every error is recorded in the context, spanned on the offending tokens.
+
+use precess_core::body::{
+    About, Axis, BodyError, Description, Part, Shape, SymbolicBody, check_part, evaluate,
+};
+use precess_core::sym::{Arena, ExprId, SymError, parse_decimal};
+use proc_macro2::TokenStream;
+use quote::ToTokens;
+use syn::{BinOp, Expr, Ident, Lit, UnOp};
+
+use crate::ast::Input;
+use crate::attr::{self, Item, KeyValue};
+use crate::ctxt::Ctxt;
+
+/// The keys of one part: required, then optional.
+struct Spec {
+    name: &'static str,
+    required: &'static [&'static str],
+    optional: &'static [&'static str],
+}
+
+const AT: &[&str] = &["at"];
+const AT_AXIS: &[&str] = &["at", "axis"];
+
+const PARTS: &[Spec] = &[
+    Spec {
+        name: "particle",
+        required: &["mass"],
+        optional: AT,
+    },
+    Spec {
+        name: "sphere",
+        required: &["mass", "radius"],
+        optional: AT,
+    },
+    Spec {
+        name: "shell",
+        required: &["mass", "radius"],
+        optional: AT,
+    },
+    Spec {
+        name: "cuboid",
+        required: &["mass", "size"],
+        optional: AT,
+    },
+    Spec {
+        name: "cylinder",
+        required: &["mass", "radius", "length"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "tube",
+        required: &["mass", "inner", "outer", "length"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "disk",
+        required: &["mass", "radius"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "ring",
+        required: &["mass", "radius"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "rod",
+        required: &["mass", "length"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "cone",
+        required: &["mass", "radius", "height"],
+        optional: AT_AXIS,
+    },
+    Spec {
+        name: "ellipsoid",
+        required: &["mass", "semi_axes"],
+        optional: AT,
+    },
+    Spec {
+        name: "body",
+        required: &["mass", "inertia"],
+        optional: &["at", "about"],
+    },
+];
+
+const PART_NAMES: &str = "particle, sphere, shell, cuboid (or box), cylinder, tube, disk, ring, rod, cone, ellipsoid, body";
+
+const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
+
+/// The checked description and where each of its values came from.
+pub struct Checked {
+    /// The arena holding every value.
+    pub arena: Arena,
+    /// The body.
+    pub description: Description<ExprId>,
+    /// The symbolic body computed from it.
+    pub body: SymbolicBody,
+    /// The struct fields used as parameters, by name.
+    pub fields: Vec<Ident>,
+}
+
+/// The tokens of each key's value in one part.
+type KeySpans = Vec<(&'static str, TokenStream)>;
+
+/// Tokens of each value, to span errors found on the whole body.
+struct Spans {
+    parts: Vec<KeySpans>,
+    pivot: Option<TokenStream>,
+    whole: TokenStream,
+}
+
+impl Spans {
+    fn of(&self, part: usize, key: &str) -> TokenStream {
+        let found = self
+            .parts
+            .get(part)
+            .and_then(|p| p.iter().find(|(k, _)| *k == key));
+        match found {
+            Some((_, t)) => t.clone(),
+            None => self.whole.clone(),
+        }
+    }
+}
+
+struct Checker<'a, 'c> {
+    cx: &'c mut Ctxt,
+    input: &'a Input<'a>,
+    arena: Arena,
+    fields: Vec<Ident>,
+}
+
+/// Checks the input's `#[rigid]` attributes and computes the symbolic body.
+pub fn check(cx: &mut Ctxt, input: &Input) -> Option<Checked> {
+    // The body is described only by the attribute: without one there is nothing to derive.
+    if input.rigid.is_empty() {
+        cx.error(input.ident, format!("`#[derive(RigidBody)]` needs a `#[rigid(...)]` attribute listing the body's parts: {PART_NAMES}"));
+        return None;
+    }
+    let mut items = Vec::new();
+    for attr in &input.rigid {
+        match attr::parse(attr) {
+            Ok(mut v) => items.append(&mut v),
+            Err(e) => cx.push(e),
+        }
+    }
+    let whole: TokenStream = input.rigid.iter().map(|a| a.to_token_stream()).collect();
+    let mut ck = Checker {
+        cx,
+        input,
+        arena: Arena::new(),
+        fields: Vec::new(),
+    };
+    let mut description = Description::default();
+    let mut spans = Spans {
+        parts: Vec::new(),
+        pivot: None,
+        whole,
+    };
+    let mut pivot_key: Option<&Ident> = None;
+    for item in &items {
+        match item {
+            Item::Part { name, keys } => {
+                if let Some((part, part_spans)) = ck.part(name, keys) {
+                    description.parts.push(part);
+                    spans.parts.push(part_spans);
+                }
+            }
+            Item::Setting(KeyValue { key, value }) if key == "pivot" => {
+                // One pivot: a body turns about a single fixed point.
+                if pivot_key.is_some() {
+                    ck.cx
+                        .error(key, "duplicate key `pivot`: a body has one pivot");
+                    continue;
+                }
+                pivot_key = Some(key);
+                description.pivot = ck.vector(value);
+                spans.pivot = Some(value.to_token_stream());
+            }
+            Item::Setting(KeyValue { key, .. }) => {
+                ck.cx.error(key, format!("unknown key `{key}`: at the top level only `pivot = [x, y, z]` and parts ({PART_NAMES}) are allowed"));
+            }
+        }
+    }
+    let Checker {
+        cx, arena, fields, ..
+    } = ck;
+    if !cx.is_ok() {
+        return None;
+    }
+    validate(cx, arena, description, &spans, fields)
+}
+
+/// Runs the body rules: each part whose values are all literals now, then the whole body.
+fn validate(
+    cx: &mut Ctxt,
+    mut arena: Arena,
+    description: Description<ExprId>,
+    spans: &Spans,
+    fields: Vec<Ident>,
+) -> Option<Checked> {
+    if description.parts.is_empty() {
+        cx.error(
+            &spans.whole,
+            format!("a body needs at least one part: {PART_NAMES}"),
+        );
+        return None;
+    }
+    // Literal parts are checked at compile time; parametric ones by the generated validate().
+    for (index, part) in description.parts.iter().enumerate() {
+        let single = Description {
+            parts: vec![part.clone()],
+            pivot: None,
+        };
+        if let Some(numeric) = evaluate(&arena, &single)
+            && let Err(e) = check_part(index, &numeric.parts[0])
+        {
+            report(cx, spans, &e);
+        }
+    }
+    if !cx.is_ok() {
+        return None;
+    }
+    if let Some(numeric) = evaluate(&arena, &description)
+        && let Err(e) = numeric.validate()
+    {
+        report(cx, spans, &e);
+        return None;
+    }
+    match SymbolicBody::new(&mut arena, &description) {
+        Ok(body) => Some(Checked {
+            arena,
+            description,
+            body,
+            fields,
+        }),
+        Err(e) => {
+            report(cx, spans, &e);
+            None
+        }
+    }
+}
+
+/// Records a body error on the tokens it is about, with what is allowed.
+fn report(cx: &mut Ctxt, spans: &Spans, e: &BodyError) {
+    let (tokens, msg) = match *e {
+        BodyError::NoParts => (spans.whole.clone(), format!("a body needs at least one part: {PART_NAMES}")),
+        BodyError::NonFinite { part, key, value, .. } => (spans.of(part, key), format!("`{key}` evaluates to {value}: values must be finite")),
+        BodyError::NonFinitePivot { value } => (spans.pivot.clone().unwrap_or(spans.whole.clone()), format!("the pivot has the coordinate {value}: values must be finite")),
+        BodyError::NonPositiveMass { part, value, .. } => (spans.of(part, "mass"), format!("mass must be positive, got {value}")),
+        BodyError::NonPositiveDimension { part, key, value, .. } => (spans.of(part, key), format!("`{key}` must be positive, got {value}")),
+        BodyError::TubeRadii { part, inner, outer } => (spans.of(part, "inner"), format!("the inner radius must satisfy 0 ≤ inner < outer, got inner = {inner} and outer = {outer}")),
+        BodyError::NotSymmetric { part, row, col, upper, lower } => (
+            spans.of(part, "inertia"),
+            format!("the inertia tensor must be symmetric, but I[{row}][{col}] = {upper} and I[{col}][{row}] = {lower}"),
+        ),
+        BodyError::NotPositiveDefinite { part, moments } => (
+            spans.of(part, "inertia"),
+            format!("the inertia tensor must be positive definite, but its principal moments are {moments:?}"),
+        ),
+        BodyError::TriangleInequality { part, moments } => (
+            spans.of(part, "inertia"),
+            format!("the principal moments {moments:?} break the triangle inequality I1 + I2 ≥ I3, which every mass distribution satisfies"),
+        ),
+        BodyError::PivotRequired { part } => (spans.of(part, "about"), "`about = pivot` needs a pivot: declare `pivot = [x, y, z]`, or give the tensor `about = center`".to_owned()),
+        BodyError::ZeroTotalMass => (spans.whole.clone(), "the total mass is zero: masses must be positive".to_owned()),
+        BodyError::ZeroPrincipalMoment { moments } => (
+            spans.whole.clone(),
+            format!("the body has a zero principal moment (moments {moments:?}): all its mass lies on a line through the reference point; Euler's equations need three positive moments"),
+        ),
+    };
+    cx.error(tokens, msg);
+}
+
+impl Checker<'_, '_> {
+    /// One part: known name, known and unique keys, every required key, then its values.
+    fn part(&mut self, name: &Ident, keys: &[KeyValue]) -> Option<(Part<ExprId>, KeySpans)> {
+        let written = name.to_string();
+        let canonical = if written == "box" {
+            "cuboid"
+        } else {
+            written.as_str()
+        };
+        let Some(spec) = PARTS.iter().find(|s| s.name == canonical) else {
+            self.cx.error(
+                name,
+                format!("unknown part `{written}`: expected one of {PART_NAMES}"),
+            );
+            return None;
+        };
+        let mut given: Vec<(&'static str, &KeyValue)> = Vec::new();
+        let mut ok = true;
+        for kv in keys {
+            let k = kv.key.to_string();
+            let k = if spec.name == "body" && k == "center" {
+                "at".to_owned()
+            } else {
+                k
+            };
+            let Some(&key) = spec.required.iter().chain(spec.optional).find(|&&s| s == k) else {
+                let allowed: Vec<&str> =
+                    spec.required.iter().chain(spec.optional).copied().collect();
+                self.cx.error(
+                    &kv.key,
+                    format!(
+                        "unknown key `{}` for `{}`: allowed keys are {}",
+                        kv.key,
+                        spec.name,
+                        allowed.join(", ")
+                    ),
+                );
+                ok = false;
+                continue;
+            };
+            // Each key once: two values for one quantity are ambiguous.
+            if given.iter().any(|(g, _)| *g == key) {
+                self.cx.error(
+                    &kv.key,
+                    format!(
+                        "duplicate key `{}` in `{}`: give each key once",
+                        kv.key, spec.name
+                    ),
+                );
+                ok = false;
+                continue;
+            }
+            given.push((key, kv));
+        }
+        // Every required key: a solid needs all its dimensions.
+        let missing: Vec<&str> = spec
+            .required
+            .iter()
+            .filter(|r| !given.iter().any(|(g, _)| g == *r))
+            .copied()
+            .collect();
+        if !missing.is_empty() {
+            let keys: Vec<String> = missing.iter().map(|m| format!("`{m}`")).collect();
+            self.cx.error(
+                name,
+                format!(
+                    "`{written}` is missing {}: it needs {}",
+                    keys.join(", "),
+                    spec.required.join(", ")
+                ),
+            );
+            ok = false;
+        }
+        if !ok {
+            return None;
+        }
+        let spans = given
+            .iter()
+            .map(|(k, kv)| (*k, kv.value.to_token_stream()))
+            .collect();
+        let get = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, kv)| &kv.value);
+        let shape = self.shape(spec.name, &get)?;
+        let at = match get("at") {
+            Some(e) => self.vector(e)?,
+            None => [self.arena.zero(); 3],
+        };
+        Some((Part { shape, at }, spans))
+    }
+
+    /// The shape named `name` from its key values (all required keys are present).
+    fn shape<'e>(
+        &mut self,
+        name: &str,
+        get: &dyn Fn(&str) -> Option<&'e Expr>,
+    ) -> Option<Shape<ExprId>> {
+        let mut s = |k: &str| get(k).and_then(|e| self.scalar(e));
+        let (mass, a, b, c) = (s("mass"), s("radius"), s("length"), s("height"));
+        let (inner, outer) = (s("inner"), s("outer"));
+        let axis = match get("axis") {
+            Some(e) => self.axis(e)?,
+            None => Axis::Z,
+        };
+        let mass = mass?;
+        Some(match name {
+            "particle" => Shape::Particle { mass },
+            "sphere" => Shape::Sphere { mass, radius: a? },
+            "shell" => Shape::Shell { mass, radius: a? },
+            "cuboid" => Shape::Cuboid {
+                mass,
+                size: self.vector(get("size")?)?,
+            },
+            "ellipsoid" => Shape::Ellipsoid {
+                mass,
+                semi_axes: self.vector(get("semi_axes")?)?,
+            },
+            "cylinder" => Shape::Cylinder {
+                mass,
+                radius: a?,
+                length: b?,
+                axis,
+            },
+            "tube" => Shape::Tube {
+                mass,
+                inner: inner?,
+                outer: outer?,
+                length: b?,
+                axis,
+            },
+            "disk" => Shape::Disk {
+                mass,
+                radius: a?,
+                axis,
+            },
+            "ring" => Shape::Ring {
+                mass,
+                radius: a?,
+                axis,
+            },
+            "rod" => Shape::Rod {
+                mass,
+                length: b?,
+                axis,
+            },
+            "cone" => Shape::Cone {
+                mass,
+                radius: a?,
+                height: c?,
+                axis,
+            },
+            _ => {
+                let about = match get("about") {
+                    Some(e) => self.about(e)?,
+                    None => About::Center,
+                };
+                Shape::Explicit {
+                    mass,
+                    inertia: self.tensor(get("inertia")?)?,
+                    about,
+                }
+            }
+        })
+    }
+
+    /// `x`, `y` or `z`.
+    fn axis(&mut self, e: &Expr) -> Option<Axis> {
+        match path_ident(e).map(|i| i.to_string()).as_deref() {
+            Some("x") => Some(Axis::X),
+            Some("y") => Some(Axis::Y),
+            Some("z") => Some(Axis::Z),
+            _ => {
+                self.cx.error(e, "expected `x`, `y` or `z` for `axis`");
+                None
+            }
+        }
+    }
+
+    /// `center` or `pivot`.
+    fn about(&mut self, e: &Expr) -> Option<About> {
+        match path_ident(e).map(|i| i.to_string()).as_deref() {
+            Some("center") => Some(About::Center),
+            Some("pivot") => Some(About::Pivot),
+            _ => {
+                self.cx.error(e, "expected `center` or `pivot` for `about`");
+                None
+            }
+        }
+    }
+
+    /// `diag(a, b, c)` or `[[..], [..], [..]]`.
+    fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
+        const TENSOR: &str = "expected `diag(I1, I2, I3)` or a full matrix `[[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]]`";
+        match e {
+            Expr::Call(call)
+                if path_ident(&call.func).is_some_and(|i| i == "diag") && call.args.len() == 3 =>
+            {
+                let d: Vec<Option<ExprId>> = call.args.iter().map(|a| self.scalar(a)).collect();
+                let z = self.arena.zero();
+                Some([[d[0]?, z, z], [z, d[1]?, z], [z, z, d[2]?]])
+            }
+            Expr::Array(rows) if rows.elems.len() == 3 => {
+                let r: Vec<Option<[ExprId; 3]>> =
+                    rows.elems.iter().map(|row| self.vector(row)).collect();
+                Some([r[0]?, r[1]?, r[2]?])
+            }
+            _ => {
+                self.cx.error(e, TENSOR);
+                None
+            }
+        }
+    }
+
+    /// `[x, y, z]`.
+    fn vector(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
+        match e {
+            Expr::Array(a) if a.elems.len() == 3 => {
+                let v: Vec<Option<ExprId>> = a.elems.iter().map(|x| self.scalar(x)).collect();
+                Some([v[0]?, v[1]?, v[2]?])
+            }
+            _ => {
+                self.cx
+                    .error(e, "expected a vector of three values `[x, y, z]`");
+                None
+            }
+        }
+    }
+
+    /// A scalar value: a literal, an f64 field, or arithmetic on them.
+    fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
+        match e {
+            Expr::Lit(l) => self.literal(&l.lit),
+            Expr::Paren(p) => self.scalar(&p.expr),
+            Expr::Group(g) => self.scalar(&g.expr),
+            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => {
+                let v = self.scalar(&u.expr)?;
+                Some(self.arena.neg(v))
+            }
+            Expr::Binary(b) => {
+                let (l, r) = (self.scalar(&b.left), self.scalar(&b.right));
+                let (l, r) = (l?, r?);
+                match b.op {
+                    BinOp::Add(_) => Some(self.arena.add(l, r)),
+                    BinOp::Sub(_) => Some(self.arena.sub(l, r)),
+                    BinOp::Mul(_) => Some(self.arena.mul(l, r)),
+                    // A divisor that is identically zero has no value anywhere.
+                    BinOp::Div(_) => match self.arena.div(l, r) {
+                        Ok(v) => Some(v),
+                        Err(_) => {
+                            self.cx.error(&b.right, "division by a value that is zero");
+                            None
+                        }
+                    },
+                    _ => {
+                        self.cx
+                            .error(b.op, format!("unsupported operator: {VALUES}"));
+                        None
+                    }
+                }
+            }
+            Expr::Path(p) => match p.path.get_ident() {
+                Some(ident) => self.field(ident),
+                None => {
+                    let last = p
+                        .path
+                        .segments
+                        .last()
+                        .map(|s| s.ident.to_string())
+                        .unwrap_or_default();
+                    if ["INFINITY", "NEG_INFINITY", "NAN"].contains(&last.as_str()) {
+                        self.cx
+                            .error(e, format!("non-finite value: {VALUES}, and must be finite"));
+                    } else {
+                        self.cx.error(e, format!("unsupported value: {VALUES}"));
+                    }
+                    None
+                }
+            },
+            _ => {
+                self.cx.error(e, format!("unsupported value: {VALUES}"));
+                None
+            }
+        }
+    }
+
+    /// A number literal, exactly (`0.03` is 3/100).
+    fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
+        let (digits, suffix) = match lit {
+            Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
+            Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
+            _ => {
+                self.cx.error(lit, format!("expected a number: {VALUES}"));
+                return None;
+            }
+        };
+        // Values are f64: another suffix would silently change the type the user wrote.
+        if !suffix.is_empty() && suffix != "f64" {
+            self.cx.error(
+                lit,
+                format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
+            );
+            return None;
+        }
+        match parse_decimal(&digits) {
+            Ok(r) => Some(self.arena.constant(r)),
+            Err(SymError::LiteralOutOfRange { .. }) => {
+                self.cx.error(lit, "literal out of range: values must be finite numbers whose exact value fits 38 significant digits (between about 1e-38 and 1e38)");
+                None
+            }
+            Err(_) => {
+                self.cx
+                    .error(lit, format!("expected a decimal number: {VALUES}"));
+                None
+            }
+        }
+    }
+
+    /// A field name: it must exist and be an f64 (the body's parameters are f64).
+    fn field(&mut self, ident: &Ident) -> Option<ExprId> {
+        let name = ident.to_string();
+        let Some(field) = self.input.field(ident) else {
+            let available: Vec<String> = self
+                .input
+                .fields
+                .iter()
+                .filter(|f| f.is_f64())
+                .map(|f| format!("`{}`", f.ident))
+                .collect();
+            let list = if available.is_empty() {
+                "it has none".to_owned()
+            } else {
+                format!("its f64 fields are {}", available.join(", "))
+            };
+            self.cx.error(
+                ident,
+                format!(
+                    "no field `{name}` in `{}`: {VALUES}; {list}",
+                    self.input.ident
+                ),
+            );
+            return None;
+        };
+        if !field.is_f64() {
+            let ty = field.ty.to_token_stream().to_string();
+            self.cx.error(
+                ident,
+                format!("field `{name}` has type `{ty}`: only f64 fields can be used as values"),
+            );
+            return None;
+        }
+        if !self.fields.iter().any(|f| f == ident) {
+            self.fields.push(ident.clone());
+        }
+        Some(self.arena.parameter(&name))
+    }
+}
+
+/// The single identifier a path expression is, if it is one.
+fn path_ident(e: &Expr) -> Option<&Ident> {
+    match e {
+        Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
+        _ => None,
+    }
+}
