@@ -24,7 +24,11 @@ impl System<7> for Ode {
 fn every_regime_matches_dop853() {
     let q0 = UnitQuaternion::from_euler_angles(0.4, -1.2, 2.5);
     let cases: [([f64; 3], [f64; 3], Regime); 10] = [
-        ([2.0, 1.0, 2.0 / 3.0], [1.1f64.cos(), 0.0, 1.1f64.sin()], Regime::AboutSmallest),
+        (
+            [2.0, 1.0, 2.0 / 3.0],
+            [1.1f64.cos(), 0.0, 1.1f64.sin()],
+            Regime::AboutSmallest,
+        ),
         ([1.0, 2.0, 3.0], [0.3, -0.2, 1.0], Regime::AboutLargest),
         ([1.0, 2.0, 3.0], [0.3, -0.2, -1.0], Regime::AboutLargest),
         ([1.0, 2.0, 3.0], [-1.0, 0.4, -0.3], Regime::AboutSmallest),
@@ -42,10 +46,14 @@ fn every_regime_matches_dop853() {
         assert_eq!(ex.regime(), regime);
         for t in [0.3, 7.0, 30.0] {
             let y0 = [q0.w, q0.i, q0.j, q0.k, m0[0], m0[1], m0[2]];
-            let r = solve::<Dp853, _, 7>(Ode(i), 0.0, y0, t, &[], cfg).unwrap().y;
+            let r = solve::<Dp853, _, 7>(Ode(i), 0.0, y0, t, &[], cfg)
+                .unwrap()
+                .y;
             let qr = UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]));
             let (q, m) = ex.at(t).unwrap();
-            let e = q.angle_to(&qr).max((Vector3::from(m) - Vector3::new(r[4], r[5], r[6])).amax());
+            let e = q
+                .angle_to(&qr)
+                .max((Vector3::from(m) - Vector3::new(r[4], r[5], r[6])).amax());
             worst = worst.max(e);
             assert!(e <= 1e-10, "{i:?} {m0:?} t = {t}: {e:e}");
         }
@@ -58,12 +66,17 @@ fn every_regime_matches_dop853() {
 fn flow_composes_over_long_times() {
     let (i, m0) = ([2.0, 1.0, 2.0 / 3.0], [1.1f64.cos(), 0.0, 1.1f64.sin()]);
     let q0 = UnitQuaternion::identity();
-    let whole = FreeBodyAttitude::new(i, q0, m0).unwrap().at(1000.0).unwrap();
+    let whole = FreeBodyAttitude::new(i, q0, m0)
+        .unwrap()
+        .at(1000.0)
+        .unwrap();
     let (mut q, mut m) = (q0, m0);
     for _ in 0..100 {
         (q, m) = FreeBodyAttitude::new(i, q, m).unwrap().at(10.0).unwrap();
     }
-    let e = q.angle_to(&whole.0).max((Vector3::from(m) - Vector3::from(whole.1)).amax());
+    let e = q
+        .angle_to(&whole.0)
+        .max((Vector3::from(m) - Vector3::from(whole.1)).amax());
     eprintln!("composition over t = 1000: {e:e}");
     assert!(e <= 1e-11, "{e:e}");
 }
@@ -71,7 +84,10 @@ fn flow_composes_over_long_times() {
 #[test]
 fn bad_input() {
     let q0 = UnitQuaternion::identity();
-    assert!(matches!(FreeBodyAttitude::new([0.0, 1.0, 2.0], q0, [1.0, 0.0, 0.0]), Err(ExactError::InvalidInertia { .. })));
+    assert!(matches!(
+        FreeBodyAttitude::new([0.0, 1.0, 2.0], q0, [1.0, 0.0, 0.0]),
+        Err(ExactError::InvalidInertia { .. })
+    ));
     let ex = FreeBodyAttitude::new([1.0, 2.0, 3.0], q0, [1.0, 0.2, 0.0]).unwrap();
     assert!(matches!(ex.at(f64::NAN), Err(ExactError::NonFinite { .. })));
 }

@@ -1,5 +1,7 @@
 //! The exact torque-free angular momentum against quoted references (GNI body; the
 //! I = (3, 5, 9) near-separatrix case) and against DOP853 at tight tolerance in every regime.
+// Reference constants are quoted with all their published digits.
+#![allow(clippy::excessive_precision)]
 
 use precess_core::exact::{ExactError, FreeBodyExact, Regime, free_body_flow};
 use precess_core::ode::{AdaptiveConfig, Dp853, System, solve};
@@ -15,8 +17,16 @@ impl System<3> for FreeBody {
 }
 
 const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
-const GNI_M1: [f64; 3] = [0.369_110_080_850_460_6, -0.372_846_321_121_433_4, 0.851_318_606_069_889_3];
-const GNI_M10: [f64; 3] = [0.407_066_136_588_040_8, 0.283_007_426_812_843_7, 0.868_449_167_661_561_7];
+const GNI_M1: [f64; 3] = [
+    0.369_110_080_850_460_6,
+    -0.372_846_321_121_433_4,
+    0.851_318_606_069_889_3,
+];
+const GNI_M10: [f64; 3] = [
+    0.407_066_136_588_040_8,
+    0.283_007_426_812_843_7,
+    0.868_449_167_661_561_7,
+];
 const GNI_PERIOD: f64 = 10.731_465_234_882_8;
 const GNI_H: f64 = 0.647_125_279_313_836;
 
@@ -25,7 +35,10 @@ fn gni_m0() -> [f64; 3] {
 }
 
 fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 fn energy(i: &[f64; 3], m: &[f64; 3]) -> f64 {
@@ -35,10 +48,20 @@ fn energy(i: &[f64; 3], m: &[f64; 3]) -> f64 {
 #[test]
 fn gni_body_against_30_digit_references() {
     let fb = FreeBodyExact::new(GNI_I, gni_m0()).unwrap();
-    let (e1, e10) = (dist(&fb.m_at(1.0).unwrap(), &GNI_M1), dist(&fb.m_at(10.0).unwrap(), &GNI_M10));
-    eprintln!("exact GNI m(1) error {e1:e}, m(10) error {e10:e}, period {}", fb.period());
+    let (e1, e10) = (
+        dist(&fb.m_at(1.0).unwrap(), &GNI_M1),
+        dist(&fb.m_at(10.0).unwrap(), &GNI_M10),
+    );
+    eprintln!(
+        "exact GNI m(1) error {e1:e}, m(10) error {e10:e}, period {}",
+        fb.period()
+    );
     assert!(e1 <= 1e-15 && e10 <= 1e-15, "{e1:e} {e10:e}");
-    assert!((fb.period() - GNI_PERIOD).abs() <= 2e-13, "period {}", fb.period());
+    assert!(
+        (fb.period() - GNI_PERIOD).abs() <= 2e-13,
+        "period {}",
+        fb.period()
+    );
     assert!((energy(&GNI_I, &gni_m0()) - GNI_H).abs() <= 1e-15);
     assert_eq!(fb.regime(), Regime::AboutSmallest);
 }
@@ -46,12 +69,34 @@ fn gni_body_against_30_digit_references() {
 #[test]
 fn near_separatrix_constants() {
     let fb = FreeBodyExact::new([3.0, 5.0, 9.0], [0.0, 2.0, 0.01]).unwrap();
-    eprintln!("(3,5,9): m_c {:e} K {} λ {} period {}", fb.mc(), fb.k(), fb.lambda(), fb.period());
+    eprintln!(
+        "(3,5,9): m_c {:e} K {} λ {} period {}",
+        fb.mc(),
+        fb.k(),
+        fb.lambda(),
+        fb.period()
+    );
     assert_eq!(fb.regime(), Regime::AboutLargest);
-    assert!((fb.mc() - 4.166_493_06e-5).abs() <= 1e-13, "m_c {:e}", fb.mc());
-    assert!((fb.k() - 6.429_276_301_985_03).abs() <= 1e-13, "K {}", fb.k());
-    assert!((fb.lambda().abs() - 0.217_736_957_625_593).abs() <= 1e-15, "λ {}", fb.lambda());
-    assert!((fb.period() - 118.110_887_046).abs() <= 1e-9, "period {}", fb.period());
+    assert!(
+        (fb.mc() - 4.166_493_06e-5).abs() <= 1e-13,
+        "m_c {:e}",
+        fb.mc()
+    );
+    assert!(
+        (fb.k() - 6.429_276_301_985_03).abs() <= 1e-13,
+        "K {}",
+        fb.k()
+    );
+    assert!(
+        (fb.lambda().abs() - 0.217_736_957_625_593).abs() <= 1e-15,
+        "λ {}",
+        fb.lambda()
+    );
+    assert!(
+        (fb.period() - 118.110_887_046).abs() <= 1e-9,
+        "period {}",
+        fb.period()
+    );
     assert!((2.0 * fb.k() / fb.lambda().abs() - 59.055_443_5).abs() <= 1e-7);
     // The linear growth rate about axis 2, σ = ω₂ √((I₂−I₁)(I₃−I₂)/(I₁I₃)), is λ's limit.
     let sigma = 2.0 / 5.0 * (2.0f64 * 4.0 / 27.0).sqrt();
@@ -113,7 +158,11 @@ fn long_times_keep_invariants_and_group_property() {
             let half = free_body_flow(i, fb.m_at(0.5 * t).unwrap(), 0.5 * t).unwrap();
             let tol = if fb.mc() < 1e-3 { 1e-10 } else { 1e-12 };
             eprintln!("group property at {t}: {:e}", dist(&half, &m));
-            assert!(dist(&half, &m) <= tol, "group property at {t}: {:e}", dist(&half, &m));
+            assert!(
+                dist(&half, &m) <= tol,
+                "group property at {t}: {:e}",
+                dist(&half, &m)
+            );
         }
     }
 }
@@ -122,11 +171,25 @@ fn long_times_keep_invariants_and_group_property() {
 fn bad_input_is_rejected_before_work() {
     assert_eq!(
         FreeBodyExact::new([1.0, 0.0, 2.0], [1.0, 0.0, 0.0]),
-        Err(ExactError::InvalidInertia { inertia: [1.0, 0.0, 2.0] })
+        Err(ExactError::InvalidInertia {
+            inertia: [1.0, 0.0, 2.0]
+        })
     );
-    assert!(matches!(FreeBodyExact::new([1.0, -2.0, 2.0], [1.0; 3]), Err(ExactError::InvalidInertia { .. })));
-    assert!(matches!(FreeBodyExact::new([1.0, 2.0, f64::NAN], [1.0; 3]), Err(ExactError::InvalidInertia { .. })));
-    assert!(matches!(FreeBodyExact::new([1.0, 2.0, 3.0], [1.0, f64::NAN, 0.0]), Err(ExactError::NonFinite { .. })));
+    assert!(matches!(
+        FreeBodyExact::new([1.0, -2.0, 2.0], [1.0; 3]),
+        Err(ExactError::InvalidInertia { .. })
+    ));
+    assert!(matches!(
+        FreeBodyExact::new([1.0, 2.0, f64::NAN], [1.0; 3]),
+        Err(ExactError::InvalidInertia { .. })
+    ));
+    assert!(matches!(
+        FreeBodyExact::new([1.0, 2.0, 3.0], [1.0, f64::NAN, 0.0]),
+        Err(ExactError::NonFinite { .. })
+    ));
     let fb = FreeBodyExact::new([1.0, 2.0, 3.0], [1.0, 0.1, 0.2]).unwrap();
-    assert!(matches!(fb.m_at(f64::INFINITY), Err(ExactError::NonFinite { .. })));
+    assert!(matches!(
+        fb.m_at(f64::INFINITY),
+        Err(ExactError::NonFinite { .. })
+    ));
 }

@@ -78,11 +78,19 @@ fn q0() -> UnitQuaternion<f64> {
 }
 
 fn attitude_error(h: f64, t_end: f64, reference: &[f64; 7]) -> f64 {
-    let s0 = Attitude { q: q0(), omega: Vector3::new(0.3, 1.0, -0.4) };
+    let s0 = Attitude {
+        q: q0(),
+        omega: Vector3::new(0.3, 1.0, -0.4),
+    };
     let mut m = Rkmk4::new(Spun, 0.0, s0, Rkmk4Config { h }).unwrap();
     m.advance_to(t_end).unwrap();
     let s = m.state();
-    let qr = UnitQuaternion::from_quaternion(Quaternion::new(reference[0], reference[1], reference[2], reference[3]));
+    let qr = UnitQuaternion::from_quaternion(Quaternion::new(
+        reference[0],
+        reference[1],
+        reference[2],
+        reference[3],
+    ));
     let dw = (s.omega - Vector3::new(reference[4], reference[5], reference[6])).amax();
     s.q.angle_to(&qr).max(dw)
 }
@@ -91,8 +99,20 @@ fn attitude_error(h: f64, t_end: f64, reference: &[f64; 7]) -> f64 {
 fn rkmk4_is_order_four_against_dop853() {
     let q = q0();
     let y0 = [q.w, q.i, q.j, q.k, 0.3, 1.0, -0.4];
-    let reference = solve::<Dp853, _, 7>(SpunOde, 0.0, y0, 5.0, &[], AdaptiveConfig::with_tol(1e-14, 1e-14)).unwrap().y;
-    let (e1, e2) = (attitude_error(0.1, 5.0, &reference), attitude_error(0.05, 5.0, &reference));
+    let reference = solve::<Dp853, _, 7>(
+        SpunOde,
+        0.0,
+        y0,
+        5.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-14, 1e-14),
+    )
+    .unwrap()
+    .y;
+    let (e1, e2) = (
+        attitude_error(0.1, 5.0, &reference),
+        attitude_error(0.05, 5.0, &reference),
+    );
     let p = (e1 / e2).log2();
     eprintln!("RKMK4 errors {e1:e} {e2:e}, order {p:.2}");
     assert!((3.8..4.4).contains(&p), "order {p}");
@@ -101,7 +121,10 @@ fn rkmk4_is_order_four_against_dop853() {
 
 #[test]
 fn quaternion_norm_after_a_million_steps() {
-    let s0 = Attitude { q: q0(), omega: Vector3::new(0.3, 1.0, -0.4) };
+    let s0 = Attitude {
+        q: q0(),
+        omega: Vector3::new(0.3, 1.0, -0.4),
+    };
     let mut m = Rkmk4::new(Spun, 0.0, s0, Rkmk4Config { h: 1e-3 }).unwrap();
     m.advance_to(1000.0).unwrap();
     assert_eq!(m.stats().steps, 1_000_000);
@@ -113,15 +136,34 @@ fn quaternion_norm_after_a_million_steps() {
 #[test]
 fn rigid_body_under_force_and_torque_matches_dop853() {
     let q = q0();
-    let s0 = RigidState { x: Vector3::new(1.0, 0.0, 2.0), v: Vector3::new(0.5, -1.0, 3.0), q, omega: Vector3::new(0.3, 1.0, -0.4) };
-    let y0 = [1.0, 0.0, 2.0, 0.5, -1.0, 3.0, q.w, q.i, q.j, q.k, 0.3, 1.0, -0.4];
-    let r = solve::<Dp853, _, 13>(RocketOde, 0.0, y0, 3.0, &[], AdaptiveConfig::with_tol(1e-14, 1e-14)).unwrap().y;
+    let s0 = RigidState {
+        x: Vector3::new(1.0, 0.0, 2.0),
+        v: Vector3::new(0.5, -1.0, 3.0),
+        q,
+        omega: Vector3::new(0.3, 1.0, -0.4),
+    };
+    let y0 = [
+        1.0, 0.0, 2.0, 0.5, -1.0, 3.0, q.w, q.i, q.j, q.k, 0.3, 1.0, -0.4,
+    ];
+    let r = solve::<Dp853, _, 13>(
+        RocketOde,
+        0.0,
+        y0,
+        3.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-14, 1e-14),
+    )
+    .unwrap()
+    .y;
     let mut m = Rkmk4::new(Rocket, 0.0, s0, Rkmk4Config { h: 1e-3 }).unwrap();
     m.advance_to(3.0).unwrap();
     let s = m.state();
     let ex = (s.x - Vector3::new(r[0], r[1], r[2])).amax();
     let ev = (s.v - Vector3::new(r[3], r[4], r[5])).amax();
-    let eq = s.q.angle_to(&UnitQuaternion::from_quaternion(Quaternion::new(r[6], r[7], r[8], r[9])));
+    let eq =
+        s.q.angle_to(&UnitQuaternion::from_quaternion(Quaternion::new(
+            r[6], r[7], r[8], r[9],
+        )));
     let ew = (s.omega - Vector3::new(r[10], r[11], r[12])).amax();
     eprintln!("rocket errors x {ex:e} v {ev:e} q {eq:e} ω {ew:e}");
     assert!(ex.max(ev).max(eq).max(ew) <= 1e-10);
@@ -141,11 +183,19 @@ fn free_fall_is_exact() {
             Vector3::new(0.0, 0.0, -3.0 * 9.81)
         }
     }
-    let s0 = RigidState { x: Vector3::zeros(), v: Vector3::new(1.0, 2.0, 10.0), q: UnitQuaternion::identity(), omega: Vector3::zeros() };
+    let s0 = RigidState {
+        x: Vector3::zeros(),
+        v: Vector3::new(1.0, 2.0, 10.0),
+        q: UnitQuaternion::identity(),
+        omega: Vector3::zeros(),
+    };
     let mut m = Rkmk4::new(Drop, 0.0, s0, Rkmk4Config { h: 0.1 }).unwrap();
     m.advance_to(2.0).unwrap();
     let x = m.state().x;
-    assert!((x - Vector3::new(2.0, 4.0, 20.0 - 0.5 * 9.81 * 4.0)).amax() <= 1e-13, "{x}");
+    assert!(
+        (x - Vector3::new(2.0, 4.0, 20.0 - 0.5 * 9.81 * 4.0)).amax() <= 1e-13,
+        "{x}"
+    );
 }
 
 #[test]
@@ -159,11 +209,31 @@ fn bad_bodies_and_steps_are_typed_errors() {
             self.0
         }
     }
-    let s0 = RigidState { x: Vector3::zeros(), v: Vector3::zeros(), q: UnitQuaternion::identity(), omega: Vector3::zeros() };
+    let s0 = RigidState {
+        x: Vector3::zeros(),
+        v: Vector3::zeros(),
+        q: UnitQuaternion::identity(),
+        omega: Vector3::zeros(),
+    };
     let cfg = Rkmk4Config::default();
-    assert!(matches!(Rkmk4::new(Flat([1.0, 0.0, 1.0], 1.0), 0.0, s0, cfg), Err(OdeError::InvalidInertia { .. })));
-    assert!(matches!(Rkmk4::new(Flat([1.0, 1.0, 1.0], -1.0), 0.0, s0, cfg), Err(OdeError::InvalidInertia { .. })));
-    assert!(matches!(Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, s0, Rkmk4Config { h: 0.0 }), Err(OdeError::InvalidStep { .. })));
-    let bad = RigidState { omega: Vector3::new(f64::NAN, 0.0, 0.0), ..s0 };
-    assert!(matches!(Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, bad, cfg), Err(OdeError::NonFiniteInitialState { .. })));
+    assert!(matches!(
+        Rkmk4::new(Flat([1.0, 0.0, 1.0], 1.0), 0.0, s0, cfg),
+        Err(OdeError::InvalidInertia { .. })
+    ));
+    assert!(matches!(
+        Rkmk4::new(Flat([1.0, 1.0, 1.0], -1.0), 0.0, s0, cfg),
+        Err(OdeError::InvalidInertia { .. })
+    ));
+    assert!(matches!(
+        Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, s0, Rkmk4Config { h: 0.0 }),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    let bad = RigidState {
+        omega: Vector3::new(f64::NAN, 0.0, 0.0),
+        ..s0
+    };
+    assert!(matches!(
+        Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, bad, cfg),
+        Err(OdeError::NonFiniteInitialState { .. })
+    ));
 }

@@ -23,7 +23,10 @@ fn exact_b5(t: f64) -> [f64; 3] {
 }
 
 fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 /// n fixed steps of the pair's propagated solution (no control).
@@ -89,7 +92,15 @@ fn dense_output_orders() {
 fn solve_dense_samples_match_the_exact_solution() {
     let times: Vec<f64> = (0..=40).map(|i| 0.5 * i as f64).collect();
     let mut out = vec![[0.0; 3]; times.len()];
-    let stats = solve_dense::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], &times, &mut out, AdaptiveConfig::with_tol(1e-12, 1e-12)).unwrap();
+    let stats = solve_dense::<Dp853, _, 3>(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        &times,
+        &mut out,
+        AdaptiveConfig::with_tol(1e-12, 1e-12),
+    )
+    .unwrap();
     for (t, y) in times.iter().zip(&out) {
         assert!(err(y, &exact_b5(*t)) <= 1e-10, "t = {t}");
     }
@@ -98,11 +109,25 @@ fn solve_dense_samples_match_the_exact_solution() {
 
 #[test]
 fn statistics_count_work() {
-    let s = solve::<Dp54, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], AdaptiveConfig::with_tol(1e-8, 1e-8)).unwrap();
+    let s = solve::<Dp54, _, 3>(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        20.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-8, 1e-8),
+    )
+    .unwrap();
     let st = s.stats;
     // 1 initial f, 1 for the starting step guess, 6 per attempt (FSAL).
     assert_eq!(st.rhs_evals, 2 + 6 * (st.steps + st.rejections));
-    let mut ode = Dop853::new(B5, 0.0, [0.0, 1.0, 1.0], AdaptiveConfig::with_tol(1e-10, 1e-10)).unwrap();
+    let mut ode = Dop853::new(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        AdaptiveConfig::with_tol(1e-10, 1e-10),
+    )
+    .unwrap();
     ode.advance_to(20.0).unwrap();
     let st = ode.stats();
     assert_eq!(st.rhs_evals, 2 + 12 * st.steps + 11 * st.rejections);
@@ -111,38 +136,103 @@ fn statistics_count_work() {
 #[test]
 fn switching_rhs_is_exact_with_stops_and_not_without() {
     // y' = 1 on [0, 1), 0 afterwards, y(0) = 0: y(2) = 1 exactly.
-    let f = FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
+    let f =
+        FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
     let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
     let with = solve::<Dp853, _, 1>(&f, 0.0, [0.0], 2.0, &[1.0], cfg).unwrap();
     assert!((with.y[0] - 1.0).abs() <= 1e-14, "{}", with.y[0]);
     let with5 = solve::<Dp54, _, 1>(&f, 0.0, [0.0], 2.0, &[1.0], cfg).unwrap();
     assert!((with5.y[0] - 1.0).abs() <= 1e-14, "{}", with5.y[0]);
     let without = solve::<Dp853, _, 1>(&f, 0.0, [0.0], 2.0, &[], cfg).unwrap();
-    assert!((without.y[0] - 1.0).abs() > 1e-14, "stepping over the switch should lose digits");
+    assert!(
+        (without.y[0] - 1.0).abs() > 1e-14,
+        "stepping over the switch should lose digits"
+    );
 }
 
 #[test]
 fn bad_input_is_rejected_before_any_work() {
     let y0 = [0.0, 1.0, 1.0];
-    let run = |t0: f64, y0: [f64; 3], t1: f64, cfg: AdaptiveConfig| solve::<Dp853, _, 3>(B5, t0, y0, t1, &[], cfg).map(|s| s.y);
+    let run = |t0: f64, y0: [f64; 3], t1: f64, cfg: AdaptiveConfig| {
+        solve::<Dp853, _, 3>(B5, t0, y0, t1, &[], cfg).map(|s| s.y)
+    };
     let d = AdaptiveConfig::default();
-    assert_eq!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(0.0, 1e-9)), Err(OdeError::InvalidTolerance { rtol: 0.0, atol: 1e-9 }));
-    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(1e-6, -1.0)), Err(OdeError::InvalidTolerance { .. })));
-    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig::with_tol(f64::NAN, 1e-9)), Err(OdeError::InvalidTolerance { .. })));
-    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { h0: Some(0.0), ..d }), Err(OdeError::InvalidStep { .. })));
-    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { h0: Some(-1e-3), ..d }), Err(OdeError::InvalidStep { .. })));
-    assert!(matches!(run(0.0, y0, 1.0, AdaptiveConfig { safety: 2.0, ..d }), Err(OdeError::InvalidParameter { name: "safety", .. })));
-    assert_eq!(run(1.0, y0, 0.0, d), Err(OdeError::EndBeforeStart { t_start: 1.0, t_end: 0.0 }));
-    assert!(matches!(run(0.0, [0.0, f64::NAN, 1.0], 1.0, d), Err(OdeError::NonFiniteInitialState { index: 1, .. })));
-    assert!(matches!(run(0.0, [f64::INFINITY, 0.0, 1.0], 1.0, d), Err(OdeError::NonFiniteInitialState { index: 0, .. })));
-    assert!(matches!(run(f64::NAN, y0, 1.0, d), Err(OdeError::NonFiniteTime { .. })));
-    assert!(matches!(solve::<Dp853, _, 3>(B5, 0.0, y0, 2.0, &[1.5, 1.0], d), Err(OdeError::StopBeforeCurrent { stop: 1.0, .. })));
-    assert!(matches!(Rk4::new(B5, 0.0, y0, Rk4Config { h: 0.0 }), Err(OdeError::InvalidStep { .. })));
-    assert!(matches!(Rk4::new(B5, 0.0, y0, Rk4Config { h: -0.1 }), Err(OdeError::InvalidStep { .. })));
+    assert_eq!(
+        run(0.0, y0, 1.0, AdaptiveConfig::with_tol(0.0, 1e-9)),
+        Err(OdeError::InvalidTolerance {
+            rtol: 0.0,
+            atol: 1e-9
+        })
+    );
+    assert!(matches!(
+        run(0.0, y0, 1.0, AdaptiveConfig::with_tol(1e-6, -1.0)),
+        Err(OdeError::InvalidTolerance { .. })
+    ));
+    assert!(matches!(
+        run(0.0, y0, 1.0, AdaptiveConfig::with_tol(f64::NAN, 1e-9)),
+        Err(OdeError::InvalidTolerance { .. })
+    ));
+    assert!(matches!(
+        run(0.0, y0, 1.0, AdaptiveConfig { h0: Some(0.0), ..d }),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    assert!(matches!(
+        run(
+            0.0,
+            y0,
+            1.0,
+            AdaptiveConfig {
+                h0: Some(-1e-3),
+                ..d
+            }
+        ),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    assert!(matches!(
+        run(0.0, y0, 1.0, AdaptiveConfig { safety: 2.0, ..d }),
+        Err(OdeError::InvalidParameter { name: "safety", .. })
+    ));
+    assert_eq!(
+        run(1.0, y0, 0.0, d),
+        Err(OdeError::EndBeforeStart {
+            t_start: 1.0,
+            t_end: 0.0
+        })
+    );
+    assert!(matches!(
+        run(0.0, [0.0, f64::NAN, 1.0], 1.0, d),
+        Err(OdeError::NonFiniteInitialState { index: 1, .. })
+    ));
+    assert!(matches!(
+        run(0.0, [f64::INFINITY, 0.0, 1.0], 1.0, d),
+        Err(OdeError::NonFiniteInitialState { index: 0, .. })
+    ));
+    assert!(matches!(
+        run(f64::NAN, y0, 1.0, d),
+        Err(OdeError::NonFiniteTime { .. })
+    ));
+    assert!(matches!(
+        solve::<Dp853, _, 3>(B5, 0.0, y0, 2.0, &[1.5, 1.0], d),
+        Err(OdeError::StopBeforeCurrent { stop: 1.0, .. })
+    ));
+    assert!(matches!(
+        Rk4::new(B5, 0.0, y0, Rk4Config { h: 0.0 }),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    assert!(matches!(
+        Rk4::new(B5, 0.0, y0, Rk4Config { h: -0.1 }),
+        Err(OdeError::InvalidStep { .. })
+    ));
     let mut ode = Dopri5::new(B5, 0.0, y0, d).unwrap();
     ode.advance_to(1.0).unwrap();
-    assert_eq!(ode.advance_to(0.5), Err(OdeError::StopBeforeCurrent { stop: 0.5, t: 1.0 }));
-    assert!(matches!(ode.dense_at(2.0), Err(OdeError::OutsideLastStep { .. })));
+    assert_eq!(
+        ode.advance_to(0.5),
+        Err(OdeError::StopBeforeCurrent { stop: 0.5, t: 1.0 })
+    );
+    assert!(matches!(
+        ode.dense_at(2.0),
+        Err(OdeError::OutsideLastStep { .. })
+    ));
 }
 
 #[test]
@@ -151,10 +241,18 @@ fn blow_up_is_a_typed_error_not_nan() {
     let f = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = y[0] * y[0]);
     match solve::<Dp853, _, 1>(f, 0.0, [1.0], 2.0, &[], AdaptiveConfig::default()) {
         // The numerical blow-up time is within the tolerance of the true one.
-        Err(OdeError::StepSizeUnderflow { t, h }) => assert!((t - 1.0).abs() < 1e-5 && h > 0.0, "t = {t}"),
+        Err(OdeError::StepSizeUnderflow { t, h }) => {
+            assert!((t - 1.0).abs() < 1e-5 && h > 0.0, "t = {t}")
+        }
         Err(OdeError::NonFiniteState { t }) => assert!((t - 1.0).abs() < 1e-5, "t = {t}"),
         other => panic!("expected a typed failure near t = 1, got {other:?}"),
     }
-    let cfg = AdaptiveConfig { max_steps: 10, ..AdaptiveConfig::with_tol(1e-12, 1e-12) };
-    assert!(matches!(solve::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], cfg), Err(OdeError::MaxStepsExceeded { max_steps: 10, .. })));
+    let cfg = AdaptiveConfig {
+        max_steps: 10,
+        ..AdaptiveConfig::with_tol(1e-12, 1e-12)
+    };
+    assert!(matches!(
+        solve::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], cfg),
+        Err(OdeError::MaxStepsExceeded { max_steps: 10, .. })
+    ));
 }

@@ -1,6 +1,8 @@
 //! Adaptive pairs and RK4 against published reference values. The 30-digit constants are
 //! copied from the references (Hull et al. 1972 DETEST; Hairer–Lubich–Wanner GNI;
 //! Hairer–Nørsett–Wanner EULR; SciMLBenchmarks RigidBody); tests never read them from disk.
+// Reference constants are quoted with all their published digits.
+#![allow(clippy::excessive_precision)]
 
 use precess_core::ode::{
     Adaptive, AdaptiveConfig, Dop853, Dp54, Dp853, Rk4, Rk4Config, System, solve,
@@ -37,8 +39,16 @@ impl System<3> for FreeBody {
     }
 }
 const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
-const GNI_M1: [f64; 3] = [0.369_110_080_850_460_6, -0.372_846_321_121_433_4, 0.851_318_606_069_889_3];
-const GNI_M10: [f64; 3] = [0.407_066_136_588_040_8, 0.283_007_426_812_843_7, 0.868_449_167_661_561_7];
+const GNI_M1: [f64; 3] = [
+    0.369_110_080_850_460_6,
+    -0.372_846_321_121_433_4,
+    0.851_318_606_069_889_3,
+];
+const GNI_M10: [f64; 3] = [
+    0.407_066_136_588_040_8,
+    0.283_007_426_812_843_7,
+    0.868_449_167_661_561_7,
+];
 
 /// EULR / SciML RigidBody: Euler's equations for I = (0.5, 2, 3) with the torque
 /// 0.25 sin²t added to ω̇3 while `on(t)`. (The quoted 30-digit values match the torque on
@@ -57,11 +67,22 @@ impl System<3> for Eulr {
         d[2] = (i1 - i2) / i3 * w[0] * w[1] + torque;
     }
 }
-const EULR_W20: [f64; 3] = [0.987_794_560_340_436_77, 0.123_140_942_018_290_623, 1.262_525_169_584_804_55];
-const SCIML_W10: [f64; 3] = [-0.668_862_422_980_134_302, -0.587_698_402_204_068_395, 2.010_777_393_073_610_82];
+const EULR_W20: [f64; 3] = [
+    0.987_794_560_340_436_77,
+    0.123_140_942_018_290_623,
+    1.262_525_169_584_804_55,
+];
+const SCIML_W10: [f64; 3] = [
+    -0.668_862_422_980_134_302,
+    -0.587_698_402_204_068_395,
+    2.010_777_393_073_610_82,
+];
 
 fn max_err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 fn tight() -> AdaptiveConfig {
@@ -83,7 +104,15 @@ fn b5_dop853_tight_tolerance_within_1e12() {
 
 #[test]
 fn b5_dopri5_error_follows_tolerance() {
-    let s = solve::<Dp54, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], AdaptiveConfig::with_tol(1e-12, 1e-12)).unwrap();
+    let s = solve::<Dp54, _, 3>(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        20.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-12, 1e-12),
+    )
+    .unwrap();
     let e = max_err(&s.y, &B5_Y20);
     assert!(e <= 1e-10, "DOPRI5 B5 error {e:e}");
     assert!(e >= 1e-15, "suspiciously exact: {e:e}");
@@ -100,9 +129,19 @@ fn b5_rk4_fixed_step() {
 
 #[test]
 fn gni_free_body_m1_and_m10() {
-    let mut ode = Dop853::new(FreeBody(GNI_I), 0.0, [1.1f64.cos(), 0.0, 1.1f64.sin()], tight()).unwrap();
+    let mut ode = Dop853::new(
+        FreeBody(GNI_I),
+        0.0,
+        [1.1f64.cos(), 0.0, 1.1f64.sin()],
+        tight(),
+    )
+    .unwrap();
     ode.advance_to(1.0).unwrap();
-    assert!(max_err(ode.y(), &GNI_M1) <= 1e-13, "m(1) {:e}", max_err(ode.y(), &GNI_M1));
+    assert!(
+        max_err(ode.y(), &GNI_M1) <= 1e-13,
+        "m(1) {:e}",
+        max_err(ode.y(), &GNI_M1)
+    );
     ode.advance_to(10.0).unwrap();
     let e = max_err(ode.y(), &GNI_M10);
     eprintln!("GNI m(10) error {e:e}");
@@ -115,13 +154,24 @@ fn eulr_switching_torque_with_stop_times() {
     let sys = Eulr {
         on: |t| (3.0 * PI..=4.0 * PI).contains(&t),
     };
-    let s = solve::<Dp853, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 20.0, &[3.0 * PI, 4.0 * PI], tight()).unwrap();
+    let s = solve::<Dp853, _, 3>(
+        &sys,
+        0.0,
+        [1.0, 0.0, 0.9],
+        20.0,
+        &[3.0 * PI, 4.0 * PI],
+        tight(),
+    )
+    .unwrap();
     let e = max_err(&s.y, &EULR_W20);
     eprintln!("EULR ω(20) error {e:e}");
     assert!(e <= 1e-11, "EULR ω(20) error {e:e}");
     // Without the stops the pair steps across the switch and loses digits: the test can fail.
     let s = solve::<Dp853, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 20.0, &[], tight()).unwrap();
-    eprintln!("EULR ω(20) error without stops {:e}", max_err(&s.y, &EULR_W20));
+    eprintln!(
+        "EULR ω(20) error without stops {:e}",
+        max_err(&s.y, &EULR_W20)
+    );
 }
 
 #[test]
@@ -139,7 +189,8 @@ fn sciml_rigid_body_w10() {
 fn near_separatrix_flip_interval_from_simulation() {
     let reference = 2.0 * 6.429_276_301_985_03 / 0.217_736_957_625_593;
     let cfg = AdaptiveConfig::with_tol(1e-13, 1e-13);
-    let mut ode: Adaptive<_, Dp853, 3> = Adaptive::new(FreeBody([3.0, 5.0, 9.0]), 0.0, [0.0, 2.0, 0.01], cfg).unwrap();
+    let mut ode: Adaptive<_, Dp853, 3> =
+        Adaptive::new(FreeBody([3.0, 5.0, 9.0]), 0.0, [0.0, 2.0, 0.01], cfg).unwrap();
     let mut zeros = Vec::new();
     while ode.t() < 200.0 {
         let (t0, m0) = (ode.t(), ode.y()[1]);
@@ -162,6 +213,10 @@ fn near_separatrix_flip_interval_from_simulation() {
     for w in zeros.windows(2) {
         let rel = ((w[1] - w[0]) - reference).abs() / reference;
         eprintln!("flip interval {} rel err {rel:e}", w[1] - w[0]);
-        assert!(rel <= 1e-6, "flip interval {} vs {reference}: {rel:e}", w[1] - w[0]);
+        assert!(
+            rel <= 1e-6,
+            "flip interval {} vs {reference}: {rel:e}",
+            w[1] - w[0]
+        );
     }
 }

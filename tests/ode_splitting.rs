@@ -11,7 +11,10 @@ use precess_core::ode::{AdaptiveConfig, Dp853, OdeError, System, solve};
 const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
 
 fn gni() -> BodyMomentum {
-    BodyMomentum { q: UnitQuaternion::identity(), m: Vector3::new(1.1f64.cos(), 0.0, 1.1f64.sin()) }
+    BodyMomentum {
+        q: UnitQuaternion::identity(),
+        m: Vector3::new(1.1f64.cos(), 0.0, 1.1f64.sin()),
+    }
 }
 
 fn energy(i: [f64; 3], m: &Vector3<f64>) -> f64 {
@@ -22,13 +25,20 @@ fn m_error(order: Order, h: f64) -> f64 {
     let s = FreeBodySplitting::new(GNI_I, order).unwrap();
     let mut y = gni();
     s.run(&mut y, h, (10.0 / h).round() as u64).unwrap();
-    let ex = FreeBodyExact::new(GNI_I, [1.1f64.cos(), 0.0, 1.1f64.sin()]).unwrap().m_at(10.0).unwrap();
+    let ex = FreeBodyExact::new(GNI_I, [1.1f64.cos(), 0.0, 1.1f64.sin()])
+        .unwrap()
+        .m_at(10.0)
+        .unwrap();
     (y.m - Vector3::from(ex)).amax()
 }
 
 #[test]
 fn composition_orders_two_four_six() {
-    for (order, p, h) in [(Order::Two, 2.0, 0.02), (Order::Four, 4.0, 0.1), (Order::Six, 6.0, 0.2)] {
+    for (order, p, h) in [
+        (Order::Two, 2.0, 0.02),
+        (Order::Four, 4.0, 0.1),
+        (Order::Six, 6.0, 0.2),
+    ] {
         let (e1, e2) = (m_error(order, h), m_error(order, h / 2.0));
         let q = (e1 / e2).log2();
         eprintln!("{order:?}: errors {e1:e} {e2:e}, observed order {q:.2}");
@@ -53,7 +63,16 @@ fn attitude_converges_at_order_two() {
         }
     }
     let m0 = gni().m;
-    let r = solve::<Dp853, _, 7>(Ode, 0.0, [1.0, 0.0, 0.0, 0.0, m0.x, m0.y, m0.z], 5.0, &[], AdaptiveConfig::with_tol(1e-14, 1e-14)).unwrap().y;
+    let r = solve::<Dp853, _, 7>(
+        Ode,
+        0.0,
+        [1.0, 0.0, 0.0, 0.0, m0.x, m0.y, m0.z],
+        5.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-14, 1e-14),
+    )
+    .unwrap()
+    .y;
     let qr = UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]));
     let err = |h: f64| {
         let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
@@ -66,15 +85,25 @@ fn attitude_converges_at_order_two() {
     let s4 = FreeBodySplitting::new(GNI_I, Order::Four).unwrap();
     let mut y = gni();
     s4.run(&mut y, 0.01, 500).unwrap();
-    assert!(y.q.angle_to(&qr) < 1e-8, "order-4 attitude error {:e}", y.q.angle_to(&qr));
+    assert!(
+        y.q.angle_to(&qr) < 1e-8,
+        "order-4 attitude error {:e}",
+        y.q.angle_to(&qr)
+    );
 }
 
 /// 10⁶ Strang steps: |m| to round-off, energy error bounded with no secular growth.
 #[test]
 fn million_steps_norm_and_energy() {
-    for (i, m0) in [(GNI_I, gni().m), ([3.0, 5.0, 9.0], Vector3::new(0.0, 2.0, 0.01))] {
+    for (i, m0) in [
+        (GNI_I, gni().m),
+        ([3.0, 5.0, 9.0], Vector3::new(0.0, 2.0, 0.01)),
+    ] {
         let s = FreeBodySplitting::new(i, Order::Two).unwrap();
-        let mut y = BodyMomentum { q: UnitQuaternion::identity(), m: m0 };
+        let mut y = BodyMomentum {
+            q: UnitQuaternion::identity(),
+            m: m0,
+        };
         let (g0, h0) = (m0.norm(), energy(i, &m0));
         let n = 1_000_000;
         let (mut first, mut last, mut worst_g) = (0.0f64, 0.0f64, 0.0f64);
@@ -91,9 +120,15 @@ fn million_steps_norm_and_energy() {
             }
         }
         let dg = (y.m.norm() - g0).abs() / g0;
-        eprintln!("I = {i:?}: |m| drift {dg:e} (worst sampled {worst_g:e}), energy error first 10% {first:e}, last 10% {last:e}, |q|−1 {:e}", y.q.quaternion().norm() - 1.0);
+        eprintln!(
+            "I = {i:?}: |m| drift {dg:e} (worst sampled {worst_g:e}), energy error first 10% {first:e}, last 10% {last:e}, |q|−1 {:e}",
+            y.q.quaternion().norm() - 1.0
+        );
         assert!(dg <= 1e-13 && worst_g <= 1e-13, "|m| drift {dg:e}");
-        assert!(last <= 1.5 * first + 1e-14, "energy error grows: {first:e} → {last:e}");
+        assert!(
+            last <= 1.5 * first + 1e-14,
+            "energy error grows: {first:e} → {last:e}"
+        );
         assert!(first <= 1e-3, "energy error {first:e}");
     }
 }
@@ -107,7 +142,8 @@ fn heavy_top_splitting() {
         fn rhs(&self, _t: f64, y: &[f64; 7], d: &mut [f64; 7]) {
             let i = [1.0, 1.0, 0.5];
             let q = UnitQuaternion::from_quaternion(Quaternion::new(y[0], y[1], y[2], y[3]));
-            let g = Vector3::new(0.0, 0.0, 1.0).cross(&(q.inverse() * Vector3::new(0.0, 0.0, -1.0)));
+            let g =
+                Vector3::new(0.0, 0.0, 1.0).cross(&(q.inverse() * Vector3::new(0.0, 0.0, -1.0)));
             let w = [y[4] / i[0], y[5] / i[1], y[6] / i[2]];
             d[0] = -0.5 * (y[1] * w[0] + y[2] * w[1] + y[3] * w[2]);
             d[1] = 0.5 * (y[0] * w[0] + y[2] * w[2] - y[3] * w[1]);
@@ -120,8 +156,20 @@ fn heavy_top_splitting() {
     }
     let q0 = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 60f64.to_radians());
     let m0 = Vector3::new(0.0, 0.0, 0.5 * 20.0);
-    let r = solve::<Dp853, _, 7>(Ode, 0.0, [q0.w, q0.i, q0.j, q0.k, m0.x, m0.y, m0.z], 2.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap().y;
-    let split = PotentialSplitting { free: FreeBodySplitting::new(i, Order::Two).unwrap(), potential: Gravity { weight, c } };
+    let r = solve::<Dp853, _, 7>(
+        Ode,
+        0.0,
+        [q0.w, q0.i, q0.j, q0.k, m0.x, m0.y, m0.z],
+        2.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-13, 1e-13),
+    )
+    .unwrap()
+    .y;
+    let split = PotentialSplitting {
+        free: FreeBodySplitting::new(i, Order::Two).unwrap(),
+        potential: Gravity { weight, c },
+    };
     let err = |h: f64| {
         let mut y = BodyMomentum { q: q0, m: m0 };
         split.run(&mut y, h, (2.0 / h).round() as u64).unwrap();
@@ -154,11 +202,17 @@ fn heavy_top_splitting() {
 fn fast_top_nutation_with_exact_free_flow() {
     let top = PotentialSplitting {
         free: ExactFreeFlow::new([1.0, 1.0, 0.5]).unwrap(),
-        potential: Gravity { weight: 1.0, c: Vector3::new(0.0, 0.0, 1.0) },
+        potential: Gravity {
+            weight: 1.0,
+            c: Vector3::new(0.0, 0.0, 1.0),
+        },
     };
     for (w3, amp_ref, period_ref) in [(20.0, 1.7580e-2, 0.634549), (50.0, 2.7779e-3, 0.251729)] {
         let theta0 = 60f64.to_radians();
-        let mut y = BodyMomentum { q: UnitQuaternion::from_axis_angle(&Vector3::x_axis(), theta0), m: Vector3::new(0.0, 0.0, 0.5 * w3) };
+        let mut y = BodyMomentum {
+            q: UnitQuaternion::from_axis_angle(&Vector3::x_axis(), theta0),
+            m: Vector3::new(0.0, 0.0, 0.5 * w3),
+        };
         let h = 2e-4;
         let theta = |y: &BodyMomentum| (y.q * Vector3::z()).z.acos();
         let mut series = vec![theta(&y)];
@@ -177,7 +231,9 @@ fn fast_top_nutation_with_exact_free_flow() {
         }
         let amp = series.iter().cloned().fold(f64::MIN, f64::max) - theta0;
         let period = (minima[minima.len() - 1] - minima[0]) / (minima.len() - 1) as f64;
-        eprintln!("ω₃ = {w3}: nutation amplitude {amp:e} (ref {amp_ref:e}), period {period} (ref {period_ref})");
+        eprintln!(
+            "ω₃ = {w3}: nutation amplitude {amp:e} (ref {amp_ref:e}), period {period} (ref {period_ref})"
+        );
         assert!((amp - amp_ref).abs() <= 2e-3 * amp_ref, "amplitude {amp:e}");
         assert!((period - period_ref).abs() <= 1e-5, "period {period}");
     }
@@ -185,11 +241,26 @@ fn fast_top_nutation_with_exact_free_flow() {
 
 #[test]
 fn bad_input_is_typed() {
-    assert!(matches!(FreeBodySplitting::new([1.0, -1.0, 1.0], Order::Two), Err(OdeError::InvalidInertia { .. })));
+    assert!(matches!(
+        FreeBodySplitting::new([1.0, -1.0, 1.0], Order::Two),
+        Err(OdeError::InvalidInertia { .. })
+    ));
     let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
     let mut y = gni();
-    assert!(matches!(s.run(&mut y, 0.0, 10), Err(OdeError::InvalidStep { .. })));
-    assert!(matches!(s.run(&mut y, f64::NAN, 10), Err(OdeError::InvalidStep { .. })));
-    let mut bad = BodyMomentum { m: Vector3::new(f64::INFINITY, 0.0, 0.0), ..gni() };
-    assert!(matches!(s.run(&mut bad, 0.1, 10), Err(OdeError::NonFiniteInitialState { .. })));
+    assert!(matches!(
+        s.run(&mut y, 0.0, 10),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    assert!(matches!(
+        s.run(&mut y, f64::NAN, 10),
+        Err(OdeError::InvalidStep { .. })
+    ));
+    let mut bad = BodyMomentum {
+        m: Vector3::new(f64::INFINITY, 0.0, 0.0),
+        ..gni()
+    };
+    assert!(matches!(
+        s.run(&mut bad, 0.1, 10),
+        Err(OdeError::NonFiniteInitialState { .. })
+    ));
 }

@@ -82,7 +82,11 @@ impl FreeBodyAttitude {
     ///
     /// # Errors
     /// [`ExactError::InvalidInertia`], [`ExactError::NonFinite`] for non-finite q0 or m0.
-    pub fn new(inertia: [f64; 3], q0: UnitQuaternion<f64>, m0: [f64; 3]) -> Result<Self, ExactError> {
+    pub fn new(
+        inertia: [f64; 3],
+        q0: UnitQuaternion<f64>,
+        m0: [f64; 3],
+    ) -> Result<Self, ExactError> {
         let fb = FreeBodyExact::new(inertia, m0)?;
         for v in q0.coords.iter() {
             finite("q0", *v)?;
@@ -92,7 +96,9 @@ impl FreeBodyAttitude {
             Some((axis, a_dn2, a_cn2)) => {
                 let g = (m0[0] * m0[0] + m0[1] * m0[1] + m0[2] * m0[2]).sqrt();
                 let ia = inertia[axis];
-                let c_a: f64 = (0..3).map(|i| m0[i] * m0[i] * (ia - inertia[i]) / (inertia[i] * ia)).sum();
+                let c_a: f64 = (0..3)
+                    .map(|i| m0[i] * m0[i] * (ia - inertia[i]) / (inertia[i] * ia))
+                    .sum();
                 let jac = fb.jacobi();
                 let mc = jac.mc();
                 let n = -a_dn2 * (1.0 - mc) / a_cn2;
@@ -114,7 +120,12 @@ impl FreeBodyAttitude {
                 Some(pr)
             }
         };
-        Ok(Self { fb, inertia, q0, prec })
+        Ok(Self {
+            fb,
+            inertia,
+            q0,
+            prec,
+        })
     }
 
     /// Π̃(u) = ∫₀ᵘ dv/(1 − n sn² v) = 2jΠ̃(K) + Π̃(r) for u = 2jK + r, |r| ≤ K.
@@ -149,10 +160,15 @@ impl FreeBodyAttitude {
         let m = self.fb.m_at(t)?;
         let Some(pr) = self.prec else {
             // Steady: ω = I⁻¹m is constant and along m, the body spins uniformly.
-            let w = Vector3::new(m[0] / self.inertia[0], m[1] / self.inertia[1], m[2] / self.inertia[2]);
+            let w = Vector3::new(
+                m[0] / self.inertia[0],
+                m[1] / self.inertia[1],
+                m[2] / self.inertia[2],
+            );
             return Ok((self.q0 * UnitQuaternion::from_scaled_axis(w * t), m));
         };
-        let phi = pr.rate * t + pr.coef * (Self::pi_tilde(&self.fb, &pr, self.fb.phase(t))? - pr.pi_u0);
+        let phi =
+            pr.rate * t + pr.coef * (Self::pi_tilde(&self.fb, &pr, self.fb.phase(t))? - pr.pi_u0);
         let rz = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi);
         Ok((pr.p * rz * align(&m, pr.axis), m))
     }

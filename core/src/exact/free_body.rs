@@ -112,8 +112,18 @@ impl FreeBodyExact {
             let mc = d2 * i31 / (d1 * i32);
             // On the separatrix cn = dn = sech > 0, so the sign of m₁ goes into its
             // amplitude and, since ṁ₂ ∝ m₁m₃, into λ.
-            let s1 = if d2.hi == 0.0 && m[0] < 0.0 { -1.0 } else { 1.0 };
-            (amp, i32 * d1 / i123, mc, s3 * s1, s1 * m[0] / amp[0].to_f64())
+            let s1 = if d2.hi == 0.0 && m[0] < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            (
+                amp,
+                i32 * d1 / i123,
+                mc,
+                s3 * s1,
+                s1 * m[0] / amp[0].to_f64(),
+            )
         } else {
             let amp = [
                 (-d3 * i1 / i31).sqrt(),

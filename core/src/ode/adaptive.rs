@@ -81,7 +81,7 @@ impl AdaptiveConfig {
         {
             return Err(OdeError::InvalidStep { h });
         }
-        if !(self.h_max > 0.0) {
+        if self.h_max.is_nan() || self.h_max <= 0.0 {
             return Err(OdeError::InvalidStep { h: self.h_max });
         }
         let checks = [
@@ -204,8 +204,8 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         };
         h = h.min(self.cfg.h_max);
         let mut y1 = [0.0; N];
-        for i in 0..N {
-            y1[i] = self.y[i] + h * self.k[0][i];
+        for ((o, y), f) in y1.iter_mut().zip(&self.y).zip(&self.k[0]) {
+            *o = y + h * f;
         }
         let mut f1 = [0.0; N];
         self.sys.rhs(self.t + h, &y1, &mut f1);

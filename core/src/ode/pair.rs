@@ -77,17 +77,15 @@ fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, o
     }
 }
 
-/// Evaluates stages `from..to` of a tableau into `k`.
+/// Evaluates stages `range` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose
+/// stage times are capped at `t_hi`.
 #[inline(always)]
 fn stages<S: System<N>, const N: usize>(
     sys: &S,
-    t: f64,
+    (t, h, t_hi): (f64, f64, f64),
     y: &[f64; N],
-    h: f64,
-    a: &[&[f64]],
-    c: &[f64],
+    (a, c): (&[&[f64]], &[f64]),
     range: core::ops::Range<usize>,
-    t_hi: f64,
     k: &mut Stages<N>,
 ) {
     let mut ys = [0.0; N];
@@ -117,7 +115,7 @@ impl EmbeddedPair for Dp54 {
         (rtol, atol): (f64, f64),
         t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, t, y, h, &DP5_A, &DP5_C, 1..6, t_hi, k);
+        stages(sys, (t, h, t_hi), y, (&DP5_A, &DP5_C), 1..6, k);
         stage_state(y, h, DP5_A[6], k, y_new);
         sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
         let mut acc = 0.0;
@@ -196,7 +194,7 @@ impl EmbeddedPair for Dp853 {
         (rtol, atol): (f64, f64),
         t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 1..12, t_hi, k);
+        stages(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), 1..12, k);
         stage_state(y, h, DOP853_A[12], k, y_new);
         // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
         // from being driven by a pessimistic 5th-order estimate.
@@ -242,7 +240,14 @@ impl EmbeddedPair for Dp853 {
         k: &mut Stages<N>,
         d: &mut DenseCoeffs<N>,
     ) -> u64 {
-        stages(sys, t, y, h, &DOP853_A, &DOP853_C, 13..16, f64::INFINITY, k);
+        stages(
+            sys,
+            (t, h, f64::INFINITY),
+            y,
+            (&DOP853_A, &DOP853_C),
+            13..16,
+            k,
+        );
         for i in 0..N {
             let dy = y_new[i] - y[i];
             let bspl = h * k[0][i] - dy;

@@ -11,8 +11,8 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::attitude::rotate_body;
-use crate::exact::free_body_flow_attitude;
 use super::error::{OdeError, check_finite, check_inertia};
+use crate::exact::free_body_flow_attitude;
 
 /// A rigid body's state in the splitting methods: attitude and body angular momentum m = I ω.
 #[derive(Debug, Clone, Copy, PartialEq)]

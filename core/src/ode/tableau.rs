@@ -5,6 +5,9 @@
 //! its three extra stages for the 7th-order dense output. Rows of `A` hold the non-zero
 //! prefix of the strictly lower triangle; missing entries are zero.
 //! The order conditions are checked numerically in the tests (convergence order).
+//!
+//! Digits are kept as published (beyond f64 precision) so they can be checked against the source.
+#![allow(clippy::excessive_precision)]
 
 /// Nodes `c` of Dormand–Prince 5(4).
 pub const DP5_C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
