@@ -267,6 +267,10 @@ fn report(cx: &mut Ctxt, spans: &Spans, e: &BodyError) {
         ),
         BodyError::PivotRequired { part } => (spans.of(part, "about"), "`about = pivot` needs a pivot: declare `pivot = [x, y, z]`, or give the tensor `about = center`".to_owned()),
         BodyError::ZeroTotalMass => (spans.whole.clone(), "the total mass is zero: masses must be positive".to_owned()),
+        BodyError::ZeroPrincipalMoment { moments } if moments.iter().any(|m| m.is_nan()) => (
+            spans.whole.clone(),
+            "the body has a principal moment that is zero whatever its fields: all its mass lies on a line through the reference point; Euler's equations need three positive moments".to_owned(),
+        ),
         BodyError::ZeroPrincipalMoment { moments } => (
             spans.whole.clone(),
             format!("the body has a zero principal moment (moments {moments:?}): all its mass lies on a line through the reference point; Euler's equations need three positive moments"),

@@ -29,3 +29,6 @@ pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     expand::derive(&input).into()
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,7 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(cylinder(mass = 1.0, radius = 0.1))]
+struct Body;
+
+fn main() {}

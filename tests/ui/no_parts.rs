@@ -1,0 +1,7 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(pivot = [0.0, 0.0, 0.0])]
+struct Body;
+
+fn main() {}

@@ -1,0 +1,7 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(sphere(mass = 1.0, radius = 0.1, axis = z))]
+struct Body;
+
+fn main() {}

@@ -1,0 +1,7 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(sphere(mass = 1.0, radius = 0.1), torus(mass = 1.0, radius = 0.2))]
+struct Body;
+
+fn main() {}

@@ -1,0 +1,9 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(sphere(mass = 1.0, radius = r.sqrt()))]
+struct Body {
+    r: f64,
+}
+
+fn main() {}
