@@ -68,13 +68,24 @@ pub trait EmbeddedPair {
 /// `out = y + h Σ a_j k_j` over the row `a`.
 #[inline(always)]
 fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, out: &mut [f64; N]) {
-    for (i, o) in out.iter_mut().enumerate() {
-        let mut s = 0.0;
-        for (j, aj) in a.iter().enumerate() {
-            s += aj * k[j][i];
-        }
-        *o = y[i] + h * s;
+    out.copy_from_slice(&weighted(a, k));
+    for (o, yi) in out.iter_mut().zip(y) {
+        *o = yi + h * *o;
     }
+}
+
+/// Σ_j w_j k_j, stage by stage (contiguous in N) and skipping the tableaux' many zeros.
+#[inline(always)]
+fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
+    let mut acc = [0.0; N];
+    for (wj, kj) in w.iter().zip(k) {
+        if *wj != 0.0 {
+            for (a, v) in acc.iter_mut().zip(kj) {
+                *a += wj * v;
+            }
+        }
+    }
+    acc
 }
 
 /// Evaluates stages `range` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose
@@ -118,14 +129,11 @@ impl EmbeddedPair for Dp54 {
         stages(sys, (t, h, t_hi), y, (&DP5_A, &DP5_C), 1..6, k);
         stage_state(y, h, DP5_A[6], k, y_new);
         sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
+        let e = weighted(&DP5_E, k);
         let mut acc = 0.0;
         for i in 0..N {
-            let mut e = 0.0;
-            for (j, ej) in DP5_E.iter().enumerate() {
-                e += ej * k[j][i];
-            }
             let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
-            let r = h * e / sk;
+            let r = h * e[i] / sk;
             acc += r * r;
         }
         ((acc / N as f64).sqrt(), 6)
@@ -199,17 +207,12 @@ impl EmbeddedPair for Dp853 {
         // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
         // from being driven by a pessimistic 5th-order estimate.
         let (mut e3sum, mut e5sum) = (0.0, 0.0);
-        let b = DOP853_A[12];
+        let e5v = weighted(&DOP853_E5, k);
+        let bk = weighted(DOP853_A[12], k);
         for i in 0..N {
-            let mut e5 = 0.0;
-            for (j, ej) in DOP853_E5.iter().enumerate() {
-                e5 += ej * k[j][i];
-            }
-            let mut e3 = 0.0;
-            for (j, bj) in b.iter().enumerate() {
-                e3 += bj * k[j][i];
-            }
-            e3 -= DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i];
+            let e5 = e5v[i];
+            let e3 = bk[i]
+                - (DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i]);
             let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
             e3sum += (e3 / sk) * (e3 / sk);
             e5sum += (e5 / sk) * (e5 / sk);
