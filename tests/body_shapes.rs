@@ -277,3 +277,76 @@ fn particle_pair() {
     let closed = Matrix3::from_diagonal(&Vector3::new(0.5, 2.0, 2.5));
     assert_eq!(b.inertia(), closed);
 }
+
+/// Equal particles on a uniform cubic grid, kept where `inside` holds: the plainest lattice.
+fn cubic_lattice(
+    m: f64,
+    half: [f64; 3],
+    n: usize,
+    inside: impl Fn(Vector3<f64>) -> bool,
+) -> Vec<Particle> {
+    let mut ps = Vec::new();
+    for x in mids(-half[0], half[0], n) {
+        for y in mids(-half[1], half[1], n) {
+            for z in mids(-half[2], half[2], n) {
+                let p = Vector3::new(x, y, z);
+                if inside(p) {
+                    ps.push((1.0, p));
+                }
+            }
+        }
+    }
+    normalise(ps, m)
+}
+
+#[test]
+fn uniform_cubic_lattices() {
+    let n = 160;
+    let r = 0.3;
+    let sphere = cubic_lattice(M, [r; 3], n, |p| p.norm() <= r);
+    let (l, h) = (1.2, 0.9);
+    let cylinder = cubic_lattice(M, [r, r, l / 2.0], n, |p| p.x * p.x + p.y * p.y <= r * r);
+    // Cone, base at z = 0 and apex at z = h: shifted so the grid spans [0, h].
+    let cone: Vec<Particle> = cubic_lattice(M, [r, r, h / 2.0], n, |p| {
+        let z = p.z + h / 2.0;
+        (p.x * p.x + p.y * p.y).sqrt() <= r * (1.0 - z / h)
+    })
+    .into_iter()
+    .map(|(m, p)| (m, p + Vector3::new(0.0, 0.0, h / 2.0)))
+    .collect();
+    let cases = [
+        ("sphere", Shape::Sphere { mass: M, radius: r }, sphere),
+        (
+            "cylinder",
+            Shape::Cylinder {
+                mass: M,
+                radius: r,
+                length: l,
+                axis: Axis::Z,
+            },
+            cylinder,
+        ),
+        (
+            "cone",
+            Shape::Cone {
+                mass: M,
+                radius: r,
+                height: h,
+                axis: Axis::Z,
+            },
+            cone,
+        ),
+    ];
+    for (name, shape, lattice) in cases {
+        let (t, g) = built(shape);
+        let (_, lg) = mass_center(&lattice);
+        let e = rel_err(&t, &tensor_about(&lattice, &lg));
+        println!(
+            "{name:10} uniform cubic lattice ({} particles) {e:.1e}, centre {:.1e}",
+            lattice.len(),
+            (g - lg).norm()
+        );
+        assert!(e < 1e-3, "{name}: {e:e}");
+        assert!((g - lg).norm() < 5e-3 * h);
+    }
+}

@@ -219,6 +219,8 @@ fn validate(
             && let Err(e) = check_part(index, &numeric.parts[0])
         {
             report(cx, spans, &e);
+        } else if let Shape::Explicit { inertia, .. } = &part.shape {
+            symmetric_tensor(cx, &mut arena, inertia, &spans.of(index, "inertia"));
         }
     }
     if !cx.is_ok() {
@@ -240,6 +242,19 @@ fn validate(
         Err(e) => {
             report(cx, spans, &e);
             None
+        }
+    }
+}
+
+/// An explicit tensor with field entries must still be symmetric for every value of the
+/// fields: I[i][j] and I[j][i] are the same quantity, so they must be the same expression.
+fn symmetric_tensor(cx: &mut Ctxt, arena: &mut Arena, t: &[[ExprId; 3]; 3], tokens: &TokenStream) {
+    for (i, j) in [(0, 1), (0, 2), (1, 2)] {
+        let d = arena.sub(t[i][j], t[j][i]);
+        if arena.expand(d) != arena.zero() {
+            let (a, b) = (arena.display(t[i][j]), arena.display(t[j][i]));
+            cx.error(tokens, format!("the inertia tensor must be symmetric, but I[{i}][{j}] = {a} and I[{j}][{i}] = {b}: write the same value in both"));
+            return;
         }
     }
 }

@@ -49,13 +49,27 @@ impl Inputs {
     }
 }
 
-fn emit(c: &Checked, inputs: &Inputs, outputs: &[ExprId]) -> Emitted {
-    Program::lower(&c.arena, outputs).to_tokens(&mut |s| inputs.tokens(s))
+/// Lowers `outputs` and emits them. A constant whose exact value did not fold to one
+/// rational (an overflow kept it as a product) is rounded to one literal first, so a body of
+/// literals never computes at run time.
+fn emit(c: &mut Checked, inputs: &Inputs, outputs: &[ExprId]) -> Emitted {
+    let a = &mut c.arena;
+    let folded: Vec<ExprId> = outputs
+        .iter()
+        .map(|&e| {
+            if a.as_rational(e).is_some() || !a.free_symbols(e).is_empty() {
+                return e;
+            }
+            let v = a.eval(e, &[]);
+            a.float(v).unwrap_or(e)
+        })
+        .collect();
+    Program::lower(&c.arena, &folded).to_tokens(&mut |s| inputs.tokens(s))
 }
 
 /// A method body: the `let`s, then `build` applied to the output expressions.
 fn body(
-    c: &Checked,
+    c: &mut Checked,
     inputs: &Inputs,
     outputs: &[ExprId],
     build: impl FnOnce(&[TokenStream]) -> TokenStream,
@@ -93,13 +107,14 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
         torque: torque_e.map(|x| c.arena.as_symbol(x)),
     };
     let props = c.body.props.clone();
-    let mass = body(&c, &inputs, &[props.mass], |o| o[0].clone());
-    let center = body(&c, &inputs, &props.center, vector);
-    let reference = body(&c, &inputs, &props.reference, vector);
-    let inertia = body(&c, &inputs, &flat(&props.inertia), matrix);
-    let inertia_cm = body(&c, &inputs, &flat(&props.inertia_cm), matrix);
-    let principal = match &c.body.frame {
-        Frame::Diagonal(m) => body(&c, &inputs, m, |o| {
+    let mass = body(&mut c, &inputs, &[props.mass], |o| o[0].clone());
+    let center = body(&mut c, &inputs, &props.center, vector);
+    let reference = body(&mut c, &inputs, &props.reference, vector);
+    let inertia = body(&mut c, &inputs, &flat(&props.inertia), matrix);
+    let inertia_cm = body(&mut c, &inputs, &flat(&props.inertia_cm), matrix);
+    let frame = c.body.frame.clone();
+    let principal = match &frame {
+        Frame::Diagonal(m) => body(&mut c, &inputs, m, |o| {
             let v = vector(o);
             quote!(#p::Principal::diagonal(#v))
         }),
@@ -116,7 +131,7 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
         Frame::Runtime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
     };
     let rhs = match c.body.euler_rhs(&mut c.arena, omega_e, torque_e) {
-        Ok(Some(rhs)) => body(&c, &inputs, &rhs, vector),
+        Ok(Some(rhs)) => body(&mut c, &inputs, &rhs, vector),
         Ok(None) => quote! {
             let principal = #p::RigidBody::principal(self);
             #p::euler_rhs_principal(&principal.moments, omega, torque)
@@ -130,7 +145,7 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
         // Literal bodies were checked while expanding.
         TokenStream::new()
     } else {
-        let d = description(&c, &inputs);
+        let d = description(&mut c, &inputs);
         quote! {
             fn validate(&self) -> ::core::result::Result<(), #p::BodyError> {
                 #d.validate()
@@ -161,7 +176,7 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
 }
 
 /// The description as a run-time value, each value an expression of the fields.
-fn description(c: &Checked, inputs: &Inputs) -> TokenStream {
+fn description(c: &mut Checked, inputs: &Inputs) -> TokenStream {
     let p = quote!(::precess::__private);
     let mut all = Vec::new();
     let indexed: Description<usize> = c.description.map(&mut |&e| {
