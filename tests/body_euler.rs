@@ -54,6 +54,7 @@ fn bodies() -> Vec<Body> {
                     radius: 0.1,
                     height: 0.3,
                     axis: Axis::X,
+                    reversed: false,
                 },
                 [-0.1, 0.0, 0.3],
             )

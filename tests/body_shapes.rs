@@ -235,6 +235,7 @@ fn cone() {
         radius: r,
         height: h,
         axis: Axis::Z,
+        reversed: false,
     };
     // Base at z = 0 (the part's `at`), apex at z = h.
     let lattice = revolution(M, 0.0, h, |_| 0.0, |z| r * (1.0 - z / h), N);
@@ -244,6 +245,7 @@ fn cone() {
         radius: r,
         height: h,
         axis: Axis::Z,
+        reversed: false,
     });
     assert!((g - Vector3::new(0.0, 0.0, h / 4.0)).norm() < 1e-16);
 }
@@ -333,6 +335,7 @@ fn uniform_cubic_lattices() {
                 radius: r,
                 height: h,
                 axis: Axis::Z,
+                reversed: false,
             },
             cone,
         ),
@@ -349,4 +352,28 @@ fn uniform_cubic_lattices() {
         assert!(e < 1e-3, "{name}: {e:e}");
         assert!((g - lg).norm() < 5e-3 * h);
     }
+}
+
+#[test]
+fn reversed_cone_points_down() {
+    let (r, h) = (0.3, 0.9);
+    let t = 3.0 / 20.0 * M * r * r + 3.0 / 80.0 * M * h * h;
+    let shape = Shape::Cone {
+        mass: M,
+        radius: r,
+        height: h,
+        axis: Axis::Z,
+        reversed: true,
+    };
+    // Base at z = 0, apex at z = −h.
+    let lattice = revolution(M, -h, 0.0, |_| 0.0, |z| r * (1.0 + z / h), N);
+    check(
+        "cone −z",
+        shape.clone(),
+        [t, t, 0.3 * M * r * r],
+        lattice,
+        3e-4,
+    );
+    let (_, g) = built(shape);
+    assert!((g - Vector3::new(0.0, 0.0, -h / 4.0)).norm() < 1e-16);
 }

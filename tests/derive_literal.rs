@@ -16,6 +16,11 @@ use precess::prelude::*;
 )]
 struct Top;
 
+/// The classic top: a cone standing on its apex at the pivot, base up.
+#[derive(RigidBody)]
+#[rigid(cone(mass = 1.0, radius = 0.1, height = 0.4, axis = -z, at = [0.0, 0.0, 0.4]), pivot = [0.0, 0.0, 0.0])]
+struct ConeTop;
+
 /// A brick about its centre of mass.
 #[derive(RigidBody)]
 #[rigid(box(mass = 2.0, size = [0.1, 0.2, 0.3]))]
@@ -196,4 +201,16 @@ fn free_body_split() {
     let l = b.inertia_cm() * w + r.cross(&(2.0 * v));
     assert!((b.angular_momentum_about(&w, &r, &v) - l).norm() < 1e-15);
     assert!(b.validate().is_ok());
+}
+
+#[test]
+fn cone_on_its_apex() {
+    // About the apex: I⊥ = 3/20 m r² + 3/5 m h², I3 = 3/10 m r²; G at 3h/4 above it.
+    let (m, r, h) = (1.0, 0.1, 0.4);
+    let top = ConeTop;
+    let t = 3.0 / 20.0 * m * r * r + 3.0 / 5.0 * m * h * h;
+    let closed = Vector3::new(t, t, 3.0 / 10.0 * m * r * r);
+    assert!((top.principal().moments - closed).abs().max() < 4e-16 * t);
+    assert!((top.center_of_mass() - Vector3::new(0.0, 0.0, 0.75 * h)).norm() < 1e-16);
+    println!("cone top: worst euler_rhs {:.1e}", check_euler(&top, 6));
 }

@@ -392,9 +392,9 @@ impl Checker<'_, '_> {
         let mut s = |k: &str| get(k).and_then(|e| self.scalar(e));
         let (mass, a, b, c) = (s("mass"), s("radius"), s("length"), s("height"));
         let (inner, outer) = (s("inner"), s("outer"));
-        let axis = match get("axis") {
+        let (axis, reversed) = match get("axis") {
             Some(e) => self.axis(e)?,
-            None => Axis::Z,
+            None => (Axis::Z, false),
         };
         let mass = mass?;
         Some(match name {
@@ -442,6 +442,7 @@ impl Checker<'_, '_> {
                 radius: a?,
                 height: c?,
                 axis,
+                reversed,
             },
             _ => {
                 let about = match get("about") {
@@ -458,13 +459,21 @@ impl Checker<'_, '_> {
     }
 
     /// `x`, `y` or `z`.
-    fn axis(&mut self, e: &Expr) -> Option<Axis> {
-        match path_ident(e).map(|i| i.to_string()).as_deref() {
-            Some("x") => Some(Axis::X),
-            Some("y") => Some(Axis::Y),
-            Some("z") => Some(Axis::Z),
+    fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
+        // `-z` reverses the axis: it matters only for the cone, whose apex it points to.
+        let (inner, reversed) = match e {
+            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => (&*u.expr, true),
+            _ => (e, false),
+        };
+        match path_ident(inner).map(|i| i.to_string()).as_deref() {
+            Some("x") => Some((Axis::X, reversed)),
+            Some("y") => Some((Axis::Y, reversed)),
+            Some("z") => Some((Axis::Z, reversed)),
             _ => {
-                self.cx.error(e, "expected `x`, `y` or `z` for `axis`");
+                self.cx.error(
+                    e,
+                    "expected `x`, `y` or `z` (or `-x`, `-y`, `-z`) for `axis`",
+                );
                 None
             }
         }

@@ -266,9 +266,10 @@ fn shape(s: &Shape<TokenStream>) -> TokenStream {
             radius,
             height,
             axis: a,
+            reversed,
         } => {
             let a = axis(*a);
-            quote!(#p::Cone { mass: #mass, radius: #radius, height: #height, axis: #a })
+            quote!(#p::Cone { mass: #mass, radius: #radius, height: #height, axis: #a, reversed: #reversed })
         }
         Shape::Explicit {
             mass,

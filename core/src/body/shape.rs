@@ -122,8 +122,8 @@ pub enum Shape<T> {
         /// Direction of the rod.
         axis: Axis,
     },
-    /// Solid cone, its base centred on `at` and its apex at `at + height · axis`; centre of
-    /// mass at `at + height/4 · axis`. About it: I_axis = 3/10 m r²,
+    /// Solid cone, its base centred on `at` and its apex at `at ± height · axis` (+ unless
+    /// `reversed`); centre of mass at `at ± height/4 · axis`. About it: I_axis = 3/10 m r²,
     /// I_transverse = 3/20 m r² + 3/80 m h².
     Cone {
         /// Mass.
@@ -132,8 +132,10 @@ pub enum Shape<T> {
         radius: T,
         /// Height from base to apex.
         height: T,
-        /// From the base towards the apex.
+        /// The symmetry axis.
         axis: Axis,
+        /// True if the apex lies towards −axis from the base (`axis = -z` in the attribute).
+        reversed: bool,
     },
     /// Solid ellipsoid with semi-axes `[a, b, c]` along x, y, z: Ixx = m (b² + c²)/5, cyclic.
     Ellipsoid {
@@ -290,11 +292,13 @@ impl<T> Shape<T> {
                 radius,
                 height,
                 axis,
+                reversed,
             } => Shape::Cone {
                 mass: f(mass),
                 radius: f(radius),
                 height: f(height),
                 axis: *axis,
+                reversed: *reversed,
             },
             Shape::Ellipsoid { mass, semi_axes } => Shape::Ellipsoid {
                 mass: f(mass),
@@ -410,13 +414,14 @@ pub fn closed_form<A: Algebra>(
             radius,
             height,
             axis,
+            reversed,
         } => {
             let mr2 = sq_times(al, mass, radius);
             let mh2 = sq_times(al, mass, height);
             let a = al.scaled(3, 10, mr2);
             let t1 = al.scaled(3, 20, mr2);
             let t2 = al.scaled(3, 80, mh2);
-            let offset = al.scaled(1, 4, height);
+            let offset = al.scaled(if reversed { -1 } else { 1 }, 4, height);
             (along(axis, al.plus(t1, t2), a), Some((axis, offset)))
         }
         Shape::Explicit { .. } => return None,
