@@ -187,3 +187,27 @@ fn run_time_validation() {
         Err(BodyError::NonPositiveDimension { key: "size", .. })
     ));
 }
+
+#[test]
+fn description_builds_the_same_body_at_run_time() {
+    // A derived body's description, built with the run-time builder, gives the same body
+    // with its frame precomputed once.
+    let derived = Dumbbell {
+        m: 1.0,
+        d: 0.3,
+        a: 0.15,
+        label: 0,
+    };
+    let built = Body::new(derived.description()).expect("a valid body");
+    let scale = derived.inertia().abs().max();
+    assert!((built.inertia() - derived.inertia()).abs().max() < 1e-15 * scale);
+    let (pb, pd) = (built.principal(), derived.principal());
+    assert!((pb.moments - pd.moments).abs().max() < 1e-15 * scale);
+    assert!((pb.rotation.matrix() - pd.rotation.matrix()).abs().max() < 1e-12);
+    let (w, g) = (Vector3::new(1.0, -2.0, 3.0), Vector3::new(0.1, 0.2, -0.3));
+    assert!(
+        (built.euler_rhs(&w, &g) - derived.euler_rhs(&w, &g)).norm()
+            < 1e-12 * derived.euler_rhs(&w, &g).norm()
+    );
+    assert_eq!(built.description(), &derived.description());
+}

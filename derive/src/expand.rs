@@ -141,16 +141,17 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
             return None;
         }
     };
+    let d = description(&mut c, &inputs);
     let validate = if c.fields.is_empty() {
         // Literal bodies were checked while expanding.
-        TokenStream::new()
-    } else {
-        let d = description(&mut c, &inputs);
         quote! {
             fn validate(&self) -> ::core::result::Result<(), #p::BodyError> {
-                #d.validate()
+                ::core::result::Result::Ok(())
             }
         }
+    } else {
+        // The trait's default checks the description built from the fields.
+        TokenStream::new()
     };
     Some(quote! {
         #[automatically_derived]
@@ -170,6 +171,7 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
             fn principal(&self) -> #p::Principal { #principal }
             #[inline]
             fn euler_rhs(&self, omega: &#p::Vector3<f64>, torque: &#p::Vector3<f64>) -> #p::Vector3<f64> { #rhs }
+            fn description(&self) -> #p::Description<f64> { #d }
             #validate
         }
     })

@@ -20,6 +20,7 @@ pub fn expand(input: &DeriveInput, cx: &Ctxt) -> TokenStream {
         #errors
         #[automatically_derived]
         impl #impl_generics #p::RigidBody for #ident #ty_generics #where_clause {
+            fn description(&self) -> #p::Description<f64> { #stub }
             fn mass(&self) -> f64 { #stub }
             fn center_of_mass(&self) -> #p::Vector3<f64> { #stub }
             fn reference_point(&self) -> #p::Vector3<f64> { #stub }

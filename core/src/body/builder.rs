@@ -106,6 +106,9 @@ impl Body {
 }
 
 impl RigidBody for Body {
+    fn description(&self) -> Description<f64> {
+        self.description.clone()
+    }
     fn mass(&self) -> f64 {
         self.props.mass
     }

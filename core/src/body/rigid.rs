@@ -4,6 +4,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::error::BodyError;
 use super::principal::Principal;
+use super::shape::Description;
 
 /// A rigid body's mass properties and its equations of motion.
 ///
@@ -64,13 +65,18 @@ pub trait RigidBody {
         0.5 * omega.dot(&(self.inertia_cm() * omega)) + 0.5 * self.mass() * v.norm_squared()
     }
 
-    /// Checks the description's rules for the current parameter values (bodies of
-    /// literals are checked at compile time and always return `Ok`).
+    /// The body's description with the current values: its parts and pivot. Building a
+    /// [`Body`](super::Body) from it precomputes what a parametric body recomputes per call
+    /// (for one whose tensor is not diagonal, the principal frame).
+    fn description(&self) -> Description<f64>;
+
+    /// Checks the description's rules for the current parameter values (derived bodies of
+    /// literals are checked at compile time and return `Ok` at once).
     ///
     /// # Errors
     /// The first rule broken, see [`BodyError`].
     fn validate(&self) -> Result<(), BodyError> {
-        Ok(())
+        self.description().validate()
     }
 
     /// `self`, if it passes [`RigidBody::validate`]: a checked constructor for parametric
