@@ -141,3 +141,24 @@ fn sorted_view_is_ascending_and_right_handed() {
     assert!((s.rotation.matrix().determinant() - 1.0).abs() < 1e-14);
     assert!(off_diagonal(&i, s.rotation.matrix()) < 1e-14);
 }
+
+#[test]
+fn random_near_degenerate_and_degenerate_tensors() {
+    // Random orientations of (a, a (1 + ε), b) for ε = 1e-12 and 0: always diagonal to
+    // rounding, right-handed, and the same bits when asked twice.
+    let mut rng = Rng(13);
+    for eps in [1e-12, 0.0] {
+        for _ in 0..500 {
+            let r0 = Rotation3::new(rng.vector(-1.0, 1.0) * 3.0);
+            let a = rng.uniform(0.5, 2.0);
+            let b = rng.uniform(0.5, 2.0);
+            let i = r0.matrix()
+                * Matrix3::from_diagonal(&Vector3::new(a, a * (1.0 + eps), b))
+                * r0.matrix().transpose();
+            let (m, r) = check_frame(&i);
+            let again = principal_frame(&i);
+            assert_eq!(again.moments, m);
+            assert_eq!(again.rotation.matrix(), &r);
+        }
+    }
+}
