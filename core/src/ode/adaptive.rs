@@ -136,7 +136,8 @@ pub struct Adaptive<S, P, const N: usize> {
     y_prev: [f64; N],
     dense: DenseCoeffs<N>,
     dense_ready: bool,
-    err_prev: f64,
+    /// ln of the last accepted error (at least 1e-4), for the PI controller.
+    ln_err_prev: f64,
     rejected_last: bool,
     /// The last step landed on a stop: re-evaluate f before the next step.
     refresh: bool,
@@ -167,7 +168,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             y_prev: y0,
             dense: [[0.0; N]; 8],
             dense_ready: false,
-            err_prev: 1e-4,
+            ln_err_prev: 1e-4f64.ln(),
             rejected_last: false,
             refresh: false,
             stats: Stats {
@@ -333,9 +334,12 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                 return Err(OdeError::NonFiniteState { t: self.t });
             }
             let alpha = P::ERR_EXPONENT - 0.75 * self.cfg.beta;
-            let fac11 = err.powf(alpha);
+            // err^α / err_prev^β through one ln and one exp (ln err_prev is kept).
+            let ln_err = err.ln();
+            let fac11 = (alpha * ln_err).exp();
             if err <= 1.0 {
-                let fac = (fac11 / self.err_prev.powf(self.cfg.beta) / self.cfg.safety)
+                let fac = ((alpha * ln_err - self.cfg.beta * self.ln_err_prev).exp()
+                    / self.cfg.safety)
                     .clamp(1.0 / self.cfg.fac_max, 1.0 / self.cfg.fac_min);
                 let mut h_new = (h / fac).min(self.cfg.h_max);
                 if self.rejected_last {
@@ -345,7 +349,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                     // A short landing step says little about the natural step size.
                     h_new = h_new.max(self.h);
                 }
-                self.err_prev = err.max(1e-4);
+                self.ln_err_prev = err.max(1e-4).ln();
                 let t_new = (self.t + h).min(t_hi);
                 self.stats.rhs_evals += P::finish(&self.sys, t_new, &y_new, &mut self.k);
                 self.refresh = clamped;

@@ -88,22 +88,28 @@ fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
     acc
 }
 
-/// Evaluates stages `range` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose
-/// stage times are capped at `t_hi`.
+/// Evaluates stage `s` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose stage
+/// times are capped at `t_hi`.
 #[inline(always)]
-fn stages<S: System<N>, const N: usize>(
+fn stage<S: System<N>, const N: usize>(
     sys: &S,
     (t, h, t_hi): (f64, f64, f64),
     y: &[f64; N],
     (a, c): (&[&[f64]], &[f64]),
-    range: core::ops::Range<usize>,
+    s: usize,
     k: &mut Stages<N>,
 ) {
     let mut ys = [0.0; N];
-    for s in range {
-        stage_state(y, h, a[s], k, &mut ys);
-        sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
-    }
+    stage_state(y, h, a[s], k, &mut ys);
+    sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
+}
+
+/// Stages listed one by one with literal indices: once inlined, each row of the constant
+/// tableau is known, so its zeros and loop bounds fold away at compile time.
+macro_rules! stages {
+    ($sys:expr, $step:expr, $y:expr, $tab:expr, $k:expr; $($s:literal)+) => {
+        $( stage($sys, $step, $y, $tab, $s, $k); )+
+    };
 }
 
 /// Dormand–Prince 5(4) (DOPRI5): 6 evaluations per step, 4th-order dense output for free.
@@ -126,7 +132,7 @@ impl EmbeddedPair for Dp54 {
         (rtol, atol): (f64, f64),
         t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, (t, h, t_hi), y, (&DP5_A, &DP5_C), 1..6, k);
+        stages!(sys, (t, h, t_hi), y, (&DP5_A, &DP5_C), k; 1 2 3 4 5);
         stage_state(y, h, DP5_A[6], k, y_new);
         sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
         let e = weighted(&DP5_E, k);
@@ -202,7 +208,7 @@ impl EmbeddedPair for Dp853 {
         (rtol, atol): (f64, f64),
         t_hi: f64,
     ) -> (f64, u64) {
-        stages(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), 1..12, k);
+        stages!(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), k; 1 2 3 4 5 6 7 8 9 10 11);
         stage_state(y, h, DOP853_A[12], k, y_new);
         // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
         // from being driven by a pessimistic 5th-order estimate.
@@ -243,14 +249,7 @@ impl EmbeddedPair for Dp853 {
         k: &mut Stages<N>,
         d: &mut DenseCoeffs<N>,
     ) -> u64 {
-        stages(
-            sys,
-            (t, h, f64::INFINITY),
-            y,
-            (&DOP853_A, &DOP853_C),
-            13..16,
-            k,
-        );
+        stages!(sys, (t, h, f64::INFINITY), y, (&DOP853_A, &DOP853_C), k; 13 14 15);
         for i in 0..N {
             let dy = y_new[i] - y[i];
             let bspl = h * k[0][i] - dy;
