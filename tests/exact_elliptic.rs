@@ -239,3 +239,27 @@ fn bad_parameters_are_typed_errors() {
         Err(ExactError::CarlsonDomain { .. })
     ));
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// Identities for log-uniform m_c in [1e-15, 1] and |u| ≤ 1000, and the addition
+        /// of a real period 4K leaves sn, cn, dn unchanged.
+        #[test]
+        fn identities_and_periodicity(log_mc in -15.0f64..0.0, u in -1000.0f64..1000.0) {
+            let mc = 10f64.powf(log_mc);
+            let j = Jacobi::new(mc).unwrap();
+            let (sn, cn, dn) = j.sncndn(u);
+            prop_assert!((sn * sn + cn * cn - 1.0).abs() <= 6e-16);
+            prop_assert!((dn * dn + (1.0 - mc) * sn * sn - 1.0).abs() <= 6e-16);
+            prop_assert!(dn >= mc.sqrt() * (1.0 - 1e-12) && dn <= 1.0 + 1e-16);
+            let (s2, c2, d2) = j.sncndn_dd(j.k_dd() * precess_core::exact::dd::Dd::from(4.0) + precess_core::exact::dd::Dd::from(u));
+            let tol = 1e-15 * (1.0 + u.abs());
+            prop_assert!((s2 - sn).abs() <= tol && (c2 - cn).abs() <= tol && (d2 - dn).abs() <= tol);
+        }
+    }
+}

@@ -193,3 +193,32 @@ fn bad_input_is_rejected_before_work() {
         Err(ExactError::NonFinite { .. })
     ));
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Random bodies and states: the exact solution agrees with DOP853 at t = 3 and keeps
+        /// |m|² and H at t up to 1e3.
+        #[test]
+        fn random_bodies_agree_with_dop853(
+            i in prop::array::uniform3(0.2f64..5.0),
+            m0 in prop::array::uniform3(-2.0f64..2.0),
+            t in 0.0f64..1e3,
+        ) {
+            prop_assume!(m0.iter().map(|x| x * x).sum::<f64>() > 1e-2);
+            let fb = FreeBodyExact::new(i, m0).unwrap();
+            let s = solve::<Dp853, _, 3>(FreeBody(i), 0.0, m0, 3.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap();
+            let g = m0.iter().map(|x| x * x).sum::<f64>().sqrt();
+            prop_assert!(dist(&fb.m_at(3.0).unwrap(), &s.y) <= 1e-10 * g, "{:e}", dist(&fb.m_at(3.0).unwrap(), &s.y));
+            let m = fb.m_at(t).unwrap();
+            let (g2, g20) = (m.iter().map(|x| x * x).sum::<f64>(), g * g);
+            prop_assert!((g2 - g20).abs() <= 1e-14 * g20);
+            let h0 = energy(&i, &m0);
+            prop_assert!((energy(&i, &m) - h0).abs() <= 1e-14 * h0);
+        }
+    }
+}
