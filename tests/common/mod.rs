@@ -1,5 +1,6 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod eulerian;
 pub mod rng;
 pub mod tree;

@@ -9,6 +9,7 @@
 //! - [`TopScene`] assembles a top's Lagrangian and declared torques, and its Eulerian form.
 
 mod angles;
+mod chart;
 mod equations;
 mod error;
 mod model;
@@ -16,6 +17,7 @@ mod solve;
 mod top;
 
 pub use angles::{AngleSequence, Mat3, cross, dot, elementary, mat_mul, mat_vec, transpose};
+pub use chart::{ChartConfig, ChartError, ChartedTop, angles_from_rotation};
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
 pub use model::{ModelError, TopModel};

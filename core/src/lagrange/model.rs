@@ -6,6 +6,7 @@ use std::cell::RefCell;
 
 use thiserror::Error;
 
+use super::angles::AngleSequence;
 use super::top::TopDerivation;
 use crate::codegen::Program;
 use crate::ode::System;
@@ -41,6 +42,9 @@ pub struct TopModel {
     energy: Program,
     omega: Program,
     momenta: Program,
+    rotation: Program,
+    rate_matrix: Program,
+    sequence: AngleSequence,
     q: [SymbolId; 3],
     rates: [SymbolId; 3],
     time: Option<SymbolId>,
@@ -72,6 +76,9 @@ impl TopModel {
             energy: Program::lower(arena, &[energy]),
             omega: Program::lower(arena, &top.omega),
             momenta: Program::lower(arena, &top.equations.momenta),
+            rotation: Program::lower(arena, top.rotation.as_flattened()),
+            rate_matrix: Program::lower(arena, top.rate_matrix.as_flattened()),
+            sequence: top.sequence,
             q,
             rates,
             time: arena.find_symbol("t"),
@@ -136,6 +143,23 @@ impl TopModel {
     /// The momenta `p_i = ∂L/∂q̇_i`.
     pub fn momenta(&self, state: &[f64; 6]) -> [f64; 3] {
         self.run(&self.momenta, 0.0, state)
+    }
+
+    /// The attitude R(q), body to space, row-major.
+    pub fn rotation(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+        let r: [f64; 9] = self.run(&self.rotation, 0.0, state);
+        [[r[0], r[1], r[2]], [r[3], r[4], r[5]], [r[6], r[7], r[8]]]
+    }
+
+    /// B(q) with ω = B q̇, row-major.
+    pub fn rate_matrix(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+        let b: [f64; 9] = self.run(&self.rate_matrix, 0.0, state);
+        [[b[0], b[1], b[2]], [b[3], b[4], b[5]], [b[6], b[7], b[8]]]
+    }
+
+    /// The angle sequence of the state.
+    pub fn sequence(&self) -> AngleSequence {
+        self.sequence
     }
 }
 

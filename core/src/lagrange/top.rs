@@ -50,6 +50,8 @@ pub struct TopDerivation {
     pub kinetic: ExprId,
     /// Potential energy V = M g (R c)·ẑ.
     pub potential: ExprId,
+    /// The angle sequence of the coordinates.
+    pub sequence: AngleSequence,
     /// The generalised forces of the non-potential torques, `Q = Bᵀ τ`.
     pub forces: Vec<ExprId>,
     /// For each coordinate, its momentum ∂L/∂q̇_i if it is conserved (L does not depend on
@@ -188,6 +190,7 @@ impl TopScene {
             omega,
             rate_matrix: b,
             rotation,
+            sequence: self.sequence,
             kinetic,
             potential,
             forces,

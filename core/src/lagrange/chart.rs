@@ -1,0 +1,229 @@
+//! Getting through gimbal lock: two angle charts of one top and a driver that switches
+//! between them.
+//!
+//! Euler angles are singular where `det B(q) = 0` (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX):
+//! the mass matrix loses rank and q̈ blows up. The ZXZ and ZYX charts are never singular at
+//! the same attitude (ZXZ fails when the body z axis is vertical, ZYX when the body x axis
+//! is), so [`ChartedTop`] integrates in one chart and, between steps, moves the state to the
+//! other chart whenever `|det B|` falls below [`ChartConfig::switch_below`] and the other chart
+//! is better conditioned. The state is mapped exactly through the attitude R and the body
+//! angular velocity ω, which both charts share.
+
+use nalgebra::{Matrix3, Vector3};
+use thiserror::Error;
+
+use super::angles::AngleSequence;
+use super::model::TopModel;
+use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
+
+/// Errors of the chart-switching driver.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ChartError {
+    /// The two models are of the same angle sequence: there is nothing to switch to.
+    #[error("both charts use the {0:?} sequence; give one ZXZ and one ZYX model")]
+    SameSequence(AngleSequence),
+    /// `B(q)` cannot be inverted at this state in either chart.
+    #[error("the rate map is singular in both charts (|det B| = {primary:e} and {secondary:e})")]
+    Singular {
+        /// |det B| in the first chart.
+        primary: f64,
+        /// |det B| in the second chart.
+        secondary: f64,
+    },
+    /// The stepper failed.
+    #[error(transparent)]
+    Ode(#[from] OdeError),
+}
+
+/// When to switch charts, and the integrator settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChartConfig {
+    /// Switch when `|det B(q)|` of the current chart falls below this (default 0.3, i.e.
+    /// θ within 17° of the vertical for ZXZ).
+    pub switch_below: f64,
+    /// The adaptive stepper's configuration (default: DOP853 at rtol = atol = 1e-10).
+    pub stepper: AdaptiveConfig,
+}
+
+impl Default for ChartConfig {
+    fn default() -> Self {
+        ChartConfig {
+            switch_below: 0.3,
+            stepper: AdaptiveConfig::with_tol(1e-10, 1e-10),
+        }
+    }
+}
+
+/// The angles of `seq` for the attitude `r` (body to space). Each angle is in (−π, π], and
+/// θ of ZXZ in [0, π].
+pub fn angles_from_rotation(seq: AngleSequence, r: &Matrix3<f64>) -> [f64; 3] {
+    match seq {
+        // R = Rz(φ) Rx(θ) Rz(ψ): R₂₂ = cos θ, (R₀₂, R₁₂) = sin θ (sin φ, −cos φ),
+        // (R₂₀, R₂₁) = sin θ (sin ψ, cos ψ).
+        AngleSequence::Zxz => [
+            r[(0, 2)].atan2(-r[(1, 2)]),
+            r[(0, 2)].hypot(r[(1, 2)]).atan2(r[(2, 2)]),
+            r[(2, 0)].atan2(r[(2, 1)]),
+        ],
+        // R = Rz(yaw) Ry(pitch) Rx(roll): R₂₀ = −sin pitch, (R₂₁, R₂₂) = cos pitch (sin roll,
+        // cos roll), (R₁₀, R₀₀) = cos pitch (sin yaw, cos yaw).
+        AngleSequence::Zyx => [
+            r[(1, 0)].atan2(r[(0, 0)]),
+            (-r[(2, 0)]).atan2(r[(0, 0)].hypot(r[(1, 0)])),
+            r[(2, 1)].atan2(r[(2, 2)]),
+        ],
+    }
+}
+
+fn matrix(m: [[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[i][j])
+}
+
+/// A top integrated in whichever of two angle charts is regular, with DOP853.
+pub struct ChartedTop<'m> {
+    charts: [&'m TopModel; 2],
+    active: usize,
+    ode: Dop853<&'m TopModel, 6>,
+    config: ChartConfig,
+    switches: usize,
+    /// Work done in the charts left behind.
+    finished: Stats,
+}
+
+impl<'m> ChartedTop<'m> {
+    /// Starts from an attitude `r` (body to space) and a body angular velocity `omega`, in
+    /// the better-conditioned of the two charts.
+    ///
+    /// # Errors
+    /// [`ChartError::SameSequence`] if both models use one sequence; [`ChartError::Singular`]
+    /// if neither chart can represent the state; the stepper's errors for bad settings or a
+    /// non-finite state.
+    pub fn new(
+        charts: [&'m TopModel; 2],
+        t0: f64,
+        r: &Matrix3<f64>,
+        omega: &Vector3<f64>,
+        config: ChartConfig,
+    ) -> Result<Self, ChartError> {
+        if charts[0].sequence() == charts[1].sequence() {
+            return Err(ChartError::SameSequence(charts[0].sequence()));
+        }
+        let states = [0, 1].map(|k| state_in(charts[k], r, omega));
+        let dets = [states[0].1, states[1].1];
+        let active = if dets[0] >= dets[1] { 0 } else { 1 };
+        let (state, _) = states[active];
+        let state = state.ok_or(ChartError::Singular {
+            primary: dets[0],
+            secondary: dets[1],
+        })?;
+        let ode = Dop853::new(charts[active], t0, state, config.stepper)?;
+        Ok(ChartedTop {
+            charts,
+            active,
+            ode,
+            config,
+            switches: 0,
+            finished: Stats::default(),
+        })
+    }
+
+    /// Integrates to `t_end`, switching charts between steps as needed.
+    ///
+    /// # Errors
+    /// The stepper's errors ([`OdeError`]), or [`ChartError::Singular`].
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), ChartError> {
+        while self.ode.t() < t_end {
+            self.ode.step(t_end)?;
+            self.maybe_switch()?;
+        }
+        Ok(())
+    }
+
+    fn maybe_switch(&mut self) -> Result<(), ChartError> {
+        let y = *self.ode.y();
+        let here = self.charts[self.active];
+        // |det B(q)| is zero exactly at the chart's singularity.
+        let det_here = matrix(here.rate_matrix(&y)).determinant().abs();
+        if det_here >= self.config.switch_below {
+            return Ok(());
+        }
+        let other = 1 - self.active;
+        let r = matrix(here.rotation(&y));
+        let w = Vector3::from(here.omega(&y));
+        let (state, det_other) = state_in(self.charts[other], &r, &w);
+        match state {
+            Some(s) if det_other > det_here => {
+                let t = self.ode.t();
+                let done = self.ode.stats();
+                self.finished.steps += done.steps;
+                self.finished.rejections += done.rejections;
+                self.finished.rhs_evals += done.rhs_evals;
+                self.ode = Dop853::new(self.charts[other], t, s, self.config.stepper)?;
+                self.active = other;
+                self.switches += 1;
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.ode.t()
+    }
+
+    /// The state `[q, q̇]` in the active chart.
+    pub fn state(&self) -> &[f64; 6] {
+        self.ode.y()
+    }
+
+    /// The active chart's angle sequence.
+    pub fn sequence(&self) -> AngleSequence {
+        self.charts[self.active].sequence()
+    }
+
+    /// The attitude R, body to space.
+    pub fn rotation(&self) -> Matrix3<f64> {
+        matrix(self.charts[self.active].rotation(self.ode.y()))
+    }
+
+    /// The body angular velocity ω.
+    pub fn omega(&self) -> Vector3<f64> {
+        Vector3::from(self.charts[self.active].omega(self.ode.y()))
+    }
+
+    /// The energy T + V.
+    pub fn energy(&self) -> f64 {
+        self.charts[self.active].energy(self.ode.y())
+    }
+
+    /// The work done so far, over every chart.
+    pub fn stats(&self) -> Stats {
+        let now = self.ode.stats();
+        Stats {
+            steps: self.finished.steps + now.steps,
+            rejections: self.finished.rejections + now.rejections,
+            rhs_evals: self.finished.rhs_evals + now.rhs_evals,
+        }
+    }
+
+    /// How many times the driver changed chart.
+    pub fn switches(&self) -> usize {
+        self.switches
+    }
+}
+
+/// The state of attitude `r` and body rate `omega` in `model`'s chart: the angles from R, the
+/// rates from solving B(q) q̇ = ω; `None` where B is singular. Also returns |det B|.
+fn state_in(model: &TopModel, r: &Matrix3<f64>, omega: &Vector3<f64>) -> (Option<[f64; 6]>, f64) {
+    let q = angles_from_rotation(model.sequence(), r);
+    let probe = [q[0], q[1], q[2], 0.0, 0.0, 0.0];
+    let b = matrix(model.rate_matrix(&probe));
+    let det = b.determinant().abs();
+    let rates = b
+        .lu()
+        .solve(omega)
+        .filter(|v| v.iter().all(|x| x.is_finite()));
+    let state = rates.map(|qd| [q[0], q[1], q[2], qd[0], qd[1], qd[2]]);
+    (state, det)
+}
