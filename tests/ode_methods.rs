@@ -223,7 +223,21 @@ fn bad_input_is_rejected_before_any_work() {
         Rk4::new(B5, 0.0, y0, Rk4Config { h: -0.1 }),
         Err(OdeError::InvalidStep { .. })
     ));
+    let mut rk = Rk4::new(B5, 0.0, y0, Rk4Config { h: 1e-3 }).unwrap();
+    assert!(matches!(
+        rk.advance_to(1e300),
+        Err(OdeError::MaxStepsExceeded { .. })
+    ));
+    assert!(matches!(
+        rk.advance_to(f64::INFINITY),
+        Err(OdeError::NonFiniteTime { .. })
+    ));
+    assert_eq!(rk.stats().steps, 0, "refused before any work");
     let mut ode = Dopri5::new(B5, 0.0, y0, d).unwrap();
+    assert!(matches!(
+        ode.advance_to(f64::INFINITY),
+        Err(OdeError::NonFiniteTime { .. })
+    ));
     ode.advance_to(1.0).unwrap();
     assert_eq!(
         ode.advance_to(0.5),

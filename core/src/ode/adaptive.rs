@@ -374,6 +374,9 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// # Errors
     /// As [`Self::step`].
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
+        if t_stop.is_infinite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
         if t_stop.is_nan() || t_stop < self.t {
             return Err(OdeError::StopBeforeCurrent {
                 stop: t_stop,

@@ -11,6 +11,7 @@ use super::attitude::{
     check_rigid, euler_rates, rotate_body,
 };
 use super::error::{OdeError, check_span};
+use super::rk4::MAX_FIXED_STEPS;
 use super::system::Stats;
 
 /// An element of the algebra so(3) × ℝᵏ: a rotation part plus a vector part.
@@ -287,7 +288,9 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
     /// Advances to exactly `t_stop` in equal steps no longer than the configured h.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`]; [`OdeError::NonFiniteState`] if the state blew up.
+    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
+    /// [`OdeError::MaxStepsExceeded`] before any work; [`OdeError::NonFiniteState`] if the
+    /// state blew up.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
         if t_stop.is_nan() || t_stop < self.t {
             return Err(OdeError::StopBeforeCurrent {
@@ -299,7 +302,17 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         if span == 0.0 {
             return Ok(());
         }
-        let n = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0) as u64;
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
+        if steps > MAX_FIXED_STEPS as f64 {
+            return Err(OdeError::MaxStepsExceeded {
+                t: self.t,
+                max_steps: MAX_FIXED_STEPS,
+            });
+        }
+        let n = steps as u64;
         let h = span / n as f64;
         for i in 1..=n {
             self.step(h);

@@ -3,6 +3,10 @@
 use super::error::{OdeError, check_finite, check_span};
 use super::system::{Stats, System};
 
+/// Most steps one `advance_to` of a fixed-step method will take (10¹²): a span that needs
+/// more is refused with [`OdeError::MaxStepsExceeded`] rather than run for days.
+pub const MAX_FIXED_STEPS: u64 = 1_000_000_000_000;
+
 /// Settings of [`Rk4`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rk4Config {
@@ -101,8 +105,10 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     /// Advances to exactly `t_stop` in equal steps no longer than the configured `h`.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteState`] (checked once per call,
-    /// at the end, naming the start time of the interval).
+    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
+    /// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`] before any work;
+    /// [`OdeError::NonFiniteState`] (checked once per call, at the end, naming the start
+    /// time of the interval).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
         if t_stop.is_nan() || t_stop < self.t {
             return Err(OdeError::StopBeforeCurrent {
@@ -115,7 +121,17 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             return Ok(());
         }
         // Fewest equal steps ≤ h; the small slack keeps span = n·h from adding a step.
-        let n = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0) as u64;
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
+        if steps > MAX_FIXED_STEPS as f64 {
+            return Err(OdeError::MaxStepsExceeded {
+                t: self.t,
+                max_steps: MAX_FIXED_STEPS,
+            });
+        }
+        let n = steps as u64;
         let h = span / n as f64;
         for i in 1..=n {
             self.step_unchecked(h);
