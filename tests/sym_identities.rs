@@ -315,3 +315,18 @@ fn rational_overflow_stays_exact_instead_of_wrapping() {
     let v = a.eval(bbx, &[1.0]);
     assert!((v / ((i128::MAX / 2 + 1) as f64).powi(2) - 1.0).abs() < 1e-15);
 }
+
+#[test]
+fn a_parameter_and_a_coordinate_of_one_name_stay_distinct() {
+    let mut a = Arena::new();
+    let p = a.parameter("theta");
+    let q = a.coordinate("theta");
+    assert_ne!(p, q);
+    assert_eq!(a.coordinate("theta"), q);
+    assert_eq!(a.parameter("theta"), p);
+    let sq = a.as_symbol(q).unwrap();
+    assert_eq!(a.symbol(sq).kind, precess_core::sym::SymbolKind::Coordinate);
+    assert_eq!(a.symbol(sq).latex, r"\theta");
+    // ∂θ_parameter/∂θ_coordinate = 0.
+    assert_eq!(a.diff(p, sq), a.zero());
+}

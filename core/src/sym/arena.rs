@@ -211,12 +211,19 @@ impl Arena {
         sym
     }
 
+    /// The symbol `name` of `kind`. A name already taken by a symbol of another kind (a
+    /// struct field called `theta` and the coordinate θ) gets a distinct symbol, named
+    /// `name'` (then `name''` …), with the same LaTeX: kinds never merge.
     fn named(&mut self, name: &str, kind: SymbolKind) -> ExprId {
-        if let Some(&s) = self.by_name.get(name) {
-            return self.symbol_nodes[s.index()];
+        let mut key = name.to_owned();
+        while let Some(&s) = self.by_name.get(&key) {
+            if self.symbol(s).kind == kind {
+                return self.symbol_nodes[s.index()];
+            }
+            key.push('\'');
         }
         let latex = latex_name(name);
-        let s = self.new_symbol(name, latex, kind);
+        let s = self.new_symbol(&key, latex, kind);
         self.symbol_nodes[s.index()]
     }
 
