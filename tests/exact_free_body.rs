@@ -192,6 +192,10 @@ fn bad_input_is_rejected_before_work() {
         fb.m_at(f64::INFINITY),
         Err(ExactError::NonFinite { .. })
     ));
+    assert!(matches!(
+        fb.m_at(1e300),
+        Err(ExactError::ArgumentTooLarge { .. })
+    ));
 }
 
 mod properties {

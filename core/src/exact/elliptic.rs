@@ -11,6 +11,10 @@ use super::error::{ExactError, finite};
 /// Longest AGM chain kept (m_c down to 1e-300 needs about 12 steps).
 const MAX_AGM: usize = 24;
 
+/// Largest |u| the checked entry points accept: the double-double reduction modulo 2K keeps
+/// about 32 digits, so beyond ~1e15 the reduced argument would lose its absolute accuracy.
+pub const MAX_ARGUMENT: f64 = 1e15;
+
 /// Jacobi elliptic functions of one parameter, with the AGM chain and K precomputed.
 ///
 /// ```
@@ -148,6 +152,16 @@ impl Jacobi {
 
     /// Bulirsch's descending Landen transformation for |u| ≤ K.
     fn reduced(&self, u: f64) -> (f64, f64, f64) {
+        if u.abs() < 1e-5 {
+            // Taylor to the last bit (next terms are O(u⁴) relative); the back substitution
+            // would overflow through cn/sn for tiny u.
+            let (u2, m) = (u * u, 1.0 - self.mc);
+            return (
+                u - (1.0 + m) * u * u2 / 6.0,
+                1.0 - 0.5 * u2,
+                1.0 - 0.5 * m * u2,
+            );
+        }
         let x = u * self.c;
         let (s, co) = x.sin_cos();
         if s == 0.0 {
@@ -181,9 +195,16 @@ impl Jacobi {
 /// ```
 ///
 /// # Errors
-/// [`ExactError::ParameterOutOfRange`], [`ExactError::NonFinite`] for a non-finite `u`.
+/// [`ExactError::ParameterOutOfRange`], [`ExactError::NonFinite`] for a non-finite `u`,
+/// [`ExactError::ArgumentTooLarge`] beyond [`MAX_ARGUMENT`].
 pub fn sncndn(u: f64, mc: f64) -> Result<(f64, f64, f64), ExactError> {
     finite("u", u)?;
+    if u.abs() > MAX_ARGUMENT {
+        return Err(ExactError::ArgumentTooLarge {
+            u,
+            limit: MAX_ARGUMENT,
+        });
+    }
     Ok(Jacobi::new(mc)?.sncndn(u))
 }
 
@@ -200,4 +221,25 @@ pub fn sncndn(u: f64, mc: f64) -> Result<(f64, f64, f64), ExactError> {
 /// [`ExactError::ParameterOutOfRange`] for `mc` outside [0, 1].
 pub fn ellip_k(mc: f64) -> Result<f64, ExactError> {
     Ok(Jacobi::new(mc)?.k())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extreme_arguments_stay_finite() {
+        for mc in [1.0, 0.5, 1e-9, 1e-15, 0.0] {
+            let j = Jacobi::new(mc).unwrap();
+            for u in [
+                0.0, 1e-300, -1e-300, 5e-324, 1e-150, 1e-8, 1e15, -1e15, 1e300, -1e300,
+            ] {
+                let (s, c, d) = j.sncndn(u);
+                assert!(
+                    s.is_finite() && c.is_finite() && d.is_finite(),
+                    "u={u:e} mc={mc:e}: {s} {c} {d}"
+                );
+            }
+        }
+    }
 }

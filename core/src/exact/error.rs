@@ -25,6 +25,16 @@ pub enum ExactError {
         /// The moments given.
         inertia: [f64; 3],
     },
+    /// An elliptic argument (or a phase λt + u₀) too large to reduce modulo 2K accurately.
+    #[error(
+        "argument {u:e} exceeds {limit:e}, beyond which the reduction modulo 2K loses accuracy"
+    )]
+    ArgumentTooLarge {
+        /// The argument.
+        u: f64,
+        /// The largest accepted magnitude.
+        limit: f64,
+    },
     /// A Carlson integral was called outside its domain.
     #[error("Carlson integral outside its domain: ({x}, {y}, {z})")]
     CarlsonDomain {

@@ -14,7 +14,7 @@
 //! digits go.
 
 use super::dd::Dd;
-use super::elliptic::Jacobi;
+use super::elliptic::{Jacobi, MAX_ARGUMENT};
 use super::error::{ExactError, finite};
 
 /// Which motion the initial state starts on.
@@ -221,13 +221,20 @@ impl FreeBodyExact {
     /// m(t) in the caller's axes.
     ///
     /// # Errors
-    /// [`ExactError::NonFinite`] for a non-finite `t`.
+    /// [`ExactError::NonFinite`] for a non-finite `t`; [`ExactError::ArgumentTooLarge`] when
+    /// |λt + u₀| exceeds [`MAX_ARGUMENT`].
     pub fn m_at(&self, t: f64) -> Result<[f64; 3], ExactError> {
         finite("t", t)?;
         if self.regime == Regime::Steady {
             return Ok(self.m0);
         }
         let u = self.lambda * Dd::from(t) + Dd::from(self.u0);
+        if u.hi.abs() > MAX_ARGUMENT {
+            return Err(ExactError::ArgumentTooLarge {
+                u: u.hi,
+                limit: MAX_ARGUMENT,
+            });
+        }
         let (sn, cn, dn) = self.jac.sncndn_dd(u);
         let sorted = if self.regime == Regime::AboutSmallest {
             [self.amp[0] * dn, self.amp[1] * sn, self.amp[2] * cn]
