@@ -91,3 +91,28 @@ fn bad_input() {
     let ex = FreeBodyAttitude::new([1.0, 2.0, 3.0], q0, [1.0, 0.2, 0.0]).unwrap();
     assert!(matches!(ex.at(f64::NAN), Err(ExactError::NonFinite { .. })));
 }
+
+/// Huge and tiny inputs: m → s m, I → c I gives m(t) → s m(t s/c); nothing overflows.
+#[test]
+fn scaling_law_with_extreme_magnitudes() {
+    let (i, m0) = ([1.0, 2.0, 3.0], [0.3, -0.2, 1.0]);
+    let q0 = UnitQuaternion::from_euler_angles(0.1, 0.2, 0.3);
+    let base = FreeBodyAttitude::new(i, q0, m0).unwrap();
+    for (s, c) in [
+        (1e150, 1e150),
+        (1e-150, 1e-150),
+        (1e200, 1e200),
+        (3e-100, 7e-100),
+    ] {
+        let scaled = FreeBodyAttitude::new(i.map(|x| x * c), q0, m0.map(|x| x * s)).unwrap();
+        let t = 2.5;
+        let (qa, ma) = scaled.at(t * c / s).unwrap();
+        let (qb, mb) = base.at(t).unwrap();
+        let em = (Vector3::from(ma) / s - Vector3::from(mb)).amax();
+        assert!(
+            em <= 1e-13 && qa.angle_to(&qb) <= 1e-12,
+            "s = {s:e}, c = {c:e}: {em:e} {:e}",
+            qa.angle_to(&qb)
+        );
+    }
+}

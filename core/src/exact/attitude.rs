@@ -93,15 +93,17 @@ impl FreeBodyAttitude {
         }
         let prec = match fb.dn_axis() {
             None => None,
-            Some((axis, a_dn2, a_cn2)) => {
-                let g = (m0[0] * m0[0] + m0[1] * m0[1] + m0[2] * m0[2]).sqrt();
+            Some((axis, a_dn, a_cn)) => {
+                // Quantities quadratic in m are formed from m/G so huge states cannot overflow.
+                let g = m0[0].hypot(m0[1]).hypot(m0[2]);
                 let ia = inertia[axis];
                 let c_a: f64 = (0..3)
-                    .map(|i| m0[i] * m0[i] * (ia - inertia[i]) / (inertia[i] * ia))
+                    .map(|i| (m0[i] / g).powi(2) * ((ia - inertia[i]) / inertia[i] / ia))
                     .sum();
+                let a_cn2 = (a_cn / g).powi(2);
                 let jac = fb.jacobi();
                 let mc = jac.mc();
-                let n = -a_dn2 * (1.0 - mc) / a_cn2;
+                let n = -(a_dn / a_cn).powi(2) * (1.0 - mc);
                 let pi_k = if mc > 0.0 {
                     rf(0.0, mc, 1.0)? + n / 3.0 * rj(0.0, mc, 1.0, 1.0 - n)?
                 } else {

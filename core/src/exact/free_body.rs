@@ -17,6 +17,17 @@ use super::dd::Dd;
 use super::elliptic::{Jacobi, MAX_ARGUMENT};
 use super::error::{ExactError, finite};
 
+/// The power of two at or below the largest magnitude in `v` (1 if all are zero or
+/// subnormal): dividing by it is exact.
+fn pow2_scale(v: &[f64; 3]) -> f64 {
+    let mx = v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if mx.is_normal() {
+        2f64.powi(mx.log2().floor() as i32)
+    } else {
+        1.0
+    }
+}
+
 /// Which motion the initial state starts on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Regime {
@@ -74,8 +85,11 @@ impl FreeBodyExact {
         // A swap of two axes is a reflection: it reverses the sense of m × ω, i.e. time.
         let odd = matches!(perm, [0, 2, 1] | [1, 0, 2] | [2, 1, 0]);
         let parity = if odd { -1.0 } else { 1.0 };
-        let i = perm.map(|k| inertia[k]);
-        let m = perm.map(|k| m0[k]);
+        // Exact power-of-two scalings keep squares and products of huge or tiny inputs in
+        // range: m = s_m m̃(t s_m/s_I) solves the scaled problem with I = s_I Ĩ.
+        let (sm, si) = (pow2_scale(&m0), pow2_scale(&inertia));
+        let i = perm.map(|k| inertia[k] / si);
+        let m = perm.map(|k| m0[k] / sm);
         let mut me = Self {
             m0,
             regime: Regime::Steady,
@@ -143,7 +157,7 @@ impl FreeBodyExact {
         };
         let mc = mc.to_f64().clamp(0.0, 1.0);
         me.jac = Jacobi::new(mc)?;
-        me.amp = amp.map(Dd::to_f64);
+        me.amp = amp.map(|a| a.to_f64() * sm);
         match me.regime {
             Regime::AboutSmallest => me.amp[0] *= s,
             Regime::Separatrix => {
@@ -153,9 +167,9 @@ impl FreeBodyExact {
             }
             _ => me.amp[2] *= s,
         }
-        me.lambda = lam2.sqrt() * d(s * parity);
+        me.lambda = lam2.sqrt() * d(s * parity) * d(sm) / d(si);
         // Initial phase from the amplitude φ₀ with (sin φ₀, cos φ₀) = (sn u₀, cn u₀).
-        let sn0 = m[1] / me.amp[1];
+        let sn0 = m[1] * sm / me.amp[1];
         me.u0 = super::carlson::ellip_f_sc(sn0, cn_ratio, mc)?;
         Ok(me)
     }
@@ -204,12 +218,12 @@ impl FreeBodyExact {
     }
 
     /// The caller's axis whose component is ± A dn (the axis the motion circles), and
-    /// A² of that axis and of the cn axis; `None` when steady.
+    /// |A| of that axis and of the cn axis; `None` when steady.
     pub fn dn_axis(&self) -> Option<(usize, f64, f64)> {
         match self.regime {
             Regime::Steady => None,
-            Regime::AboutSmallest => Some((self.perm[0], self.amp[0].powi(2), self.amp[2].powi(2))),
-            _ => Some((self.perm[2], self.amp[2].powi(2), self.amp[0].powi(2))),
+            Regime::AboutSmallest => Some((self.perm[0], self.amp[0].abs(), self.amp[2].abs())),
+            _ => Some((self.perm[2], self.amp[2].abs(), self.amp[0].abs())),
         }
     }
 
@@ -229,7 +243,7 @@ impl FreeBodyExact {
             return Ok(self.m0);
         }
         let u = self.lambda * Dd::from(t) + Dd::from(self.u0);
-        if u.hi.abs() > MAX_ARGUMENT {
+        if u.hi.is_nan() || u.hi.abs() > MAX_ARGUMENT {
             return Err(ExactError::ArgumentTooLarge {
                 u: u.hi,
                 limit: MAX_ARGUMENT,
