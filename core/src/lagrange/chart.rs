@@ -13,7 +13,7 @@ use nalgebra::{Matrix3, Vector3};
 use thiserror::Error;
 
 use super::angles::AngleSequence;
-use super::model::TopModel;
+use super::chart_trait::AngleChart;
 use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
 
 /// Errors of the chart-switching driver.
@@ -75,22 +75,18 @@ pub fn angles_from_rotation(seq: AngleSequence, r: &Matrix3<f64>) -> [f64; 3] {
     }
 }
 
-fn matrix(m: [[f64; 3]; 3]) -> Matrix3<f64> {
-    Matrix3::from_fn(|i, j| m[i][j])
-}
-
 /// A top integrated in whichever of two angle charts is regular, with DOP853.
-pub struct ChartedTop<'m> {
-    charts: [&'m TopModel; 2],
+pub struct ChartedTop<'m, C> {
+    charts: [&'m C; 2],
     active: usize,
-    ode: Dop853<&'m TopModel, 6>,
+    ode: Dop853<&'m C, 6>,
     config: ChartConfig,
     switches: usize,
     /// Work done in the charts left behind.
     finished: Stats,
 }
 
-impl<'m> ChartedTop<'m> {
+impl<'m, C: AngleChart> ChartedTop<'m, C> {
     /// Starts from an attitude `r` (body to space) and a body angular velocity `omega`, in
     /// the better-conditioned of the two charts.
     ///
@@ -99,7 +95,7 @@ impl<'m> ChartedTop<'m> {
     /// if neither chart can represent the state; the stepper's errors for bad settings or a
     /// non-finite state.
     pub fn new(
-        charts: [&'m TopModel; 2],
+        charts: [&'m C; 2],
         t0: f64,
         r: &Matrix3<f64>,
         omega: &Vector3<f64>,
@@ -143,13 +139,13 @@ impl<'m> ChartedTop<'m> {
         let y = *self.ode.y();
         let here = self.charts[self.active];
         // |det B(q)| is zero exactly at the chart's singularity.
-        let det_here = matrix(here.rate_matrix(&y)).determinant().abs();
+        let det_here = here.rate_matrix_at(&y).determinant().abs();
         if det_here >= self.config.switch_below {
             return Ok(());
         }
         let other = 1 - self.active;
-        let r = matrix(here.rotation(&y));
-        let w = Vector3::from(here.omega(&y));
+        let r = here.rotation_at(&y);
+        let w = here.omega_at(&y);
         let (state, det_other) = state_in(self.charts[other], &r, &w);
         match state {
             Some(s) if det_other > det_here => {
@@ -184,17 +180,17 @@ impl<'m> ChartedTop<'m> {
 
     /// The attitude R, body to space.
     pub fn rotation(&self) -> Matrix3<f64> {
-        matrix(self.charts[self.active].rotation(self.ode.y()))
+        self.charts[self.active].rotation_at(self.ode.y())
     }
 
     /// The body angular velocity ω.
     pub fn omega(&self) -> Vector3<f64> {
-        Vector3::from(self.charts[self.active].omega(self.ode.y()))
+        self.charts[self.active].omega_at(self.ode.y())
     }
 
     /// The energy T + V.
     pub fn energy(&self) -> f64 {
-        self.charts[self.active].energy(self.ode.y())
+        self.charts[self.active].energy_at(self.ode.y())
     }
 
     /// The work done so far, over every chart.
@@ -215,10 +211,14 @@ impl<'m> ChartedTop<'m> {
 
 /// The state of attitude `r` and body rate `omega` in `model`'s chart: the angles from R, the
 /// rates from solving B(q) q̇ = ω; `None` where B is singular. Also returns |det B|.
-fn state_in(model: &TopModel, r: &Matrix3<f64>, omega: &Vector3<f64>) -> (Option<[f64; 6]>, f64) {
+fn state_in<C: AngleChart>(
+    model: &C,
+    r: &Matrix3<f64>,
+    omega: &Vector3<f64>,
+) -> (Option<[f64; 6]>, f64) {
     let q = angles_from_rotation(model.sequence(), r);
     let probe = [q[0], q[1], q[2], 0.0, 0.0, 0.0];
-    let b = matrix(model.rate_matrix(&probe));
+    let b = model.rate_matrix_at(&probe);
     let det = b.determinant().abs();
     let rates = b
         .lu()

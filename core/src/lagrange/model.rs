@@ -6,7 +6,10 @@ use std::cell::RefCell;
 
 use thiserror::Error;
 
+use nalgebra::Matrix3;
+
 use super::angles::AngleSequence;
+use super::chart_trait::AngleChart;
 use super::top::TopDerivation;
 use crate::codegen::Program;
 use crate::ode::System;
@@ -168,5 +171,22 @@ impl System<6> for TopModel {
         let a: [f64; 3] = self.run(&self.accel, t, y);
         dydt[..3].copy_from_slice(&y[3..]);
         dydt[3..].copy_from_slice(&a);
+    }
+}
+
+impl AngleChart for TopModel {
+    fn sequence(&self) -> AngleSequence {
+        self.sequence
+    }
+    fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        let r = self.rotation(state);
+        Matrix3::from_fn(|i, j| r[i][j])
+    }
+    fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        let b = self.rate_matrix(state);
+        Matrix3::from_fn(|i, j| b[i][j])
+    }
+    fn energy_at(&self, state: &[f64; 6]) -> f64 {
+        self.energy(state)
     }
 }
