@@ -143,6 +143,11 @@ fn switching_rhs_is_exact_with_stops_and_not_without() {
     assert!((with.y[0] - 1.0).abs() <= 1e-14, "{}", with.y[0]);
     let with5 = solve::<Dp54, _, 1>(&f, 0.0, [0.0], 2.0, &[1.0], cfg).unwrap();
     assert!((with5.y[0] - 1.0).abs() <= 1e-14, "{}", with5.y[0]);
+    // RK4 lands on the stop with its last stage just before it, then restarts from it.
+    let mut rk = Rk4::new(&f, 0.0, [0.0], Rk4Config { h: 0.1 }).unwrap();
+    rk.advance_to(1.0).unwrap();
+    rk.advance_to(2.0).unwrap();
+    assert!((rk.y()[0] - 1.0).abs() <= 1e-14, "RK4 {}", rk.y()[0]);
     let without = solve::<Dp853, _, 1>(&f, 0.0, [0.0], 2.0, &[], cfg).unwrap();
     assert!(
         (without.y[0] - 1.0).abs() > 1e-14,

@@ -257,8 +257,8 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         self.stats
     }
 
-    /// One RKMK4 step of size h.
-    fn step(&mut self, h: f64) {
+    /// One RKMK4 step of size h, stage times capped at `t_hi` (see [`super::Rk4`]).
+    fn step(&mut self, h: f64, t_hi: f64) {
         let (t, y0) = (self.t, self.y);
         let stage = |u: &Y::Tangent, tt: f64| {
             let mut k = self.sys.xi(tt, &y0.exp_act(u));
@@ -268,13 +268,13 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         let k1 = self.sys.xi(t, &y0);
         let mut u = Y::Tangent::zero();
         u.axpy(0.5 * h, &k1);
-        let k2 = stage(&u, t + 0.5 * h);
+        let k2 = stage(&u, (t + 0.5 * h).min(t_hi));
         let mut u = Y::Tangent::zero();
         u.axpy(0.5 * h, &k2);
-        let k3 = stage(&u, t + 0.5 * h);
+        let k3 = stage(&u, (t + 0.5 * h).min(t_hi));
         let mut u = Y::Tangent::zero();
         u.axpy(h, &k3);
-        let k4 = stage(&u, t + h);
+        let k4 = stage(&u, (t + h).min(t_hi));
         let mut u = Y::Tangent::zero();
         u.axpy(h / 6.0, &k1);
         u.axpy(h / 3.0, &k2);
@@ -315,7 +315,7 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         let n = steps as u64;
         let h = span / n as f64;
         for i in 1..=n {
-            self.step(h);
+            self.step(h, t_stop.next_down());
             self.t = t0 + i as f64 * h;
         }
         self.t = t_stop;

@@ -76,9 +76,10 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         self.stats
     }
 
-    /// One step of size `h` (no checks; the caller guarantees h > 0).
+    /// One step of size `h` (no checks; the caller guarantees h > 0); stage times are capped
+    /// at `t_hi` so a step ending on a stop samples a switch from its own side.
     #[inline]
-    fn step_unchecked(&mut self, h: f64) {
+    fn step_unchecked(&mut self, h: f64, t_hi: f64) {
         let (t, y) = (self.t, self.y);
         let (mut k1, mut k2, mut k3, mut k4, mut ys) =
             ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
@@ -86,15 +87,15 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         for i in 0..N {
             ys[i] = y[i] + 0.5 * h * k1[i];
         }
-        self.sys.rhs(t + 0.5 * h, &ys, &mut k2);
+        self.sys.rhs((t + 0.5 * h).min(t_hi), &ys, &mut k2);
         for i in 0..N {
             ys[i] = y[i] + 0.5 * h * k2[i];
         }
-        self.sys.rhs(t + 0.5 * h, &ys, &mut k3);
+        self.sys.rhs((t + 0.5 * h).min(t_hi), &ys, &mut k3);
         for i in 0..N {
             ys[i] = y[i] + h * k3[i];
         }
-        self.sys.rhs(t + h, &ys, &mut k4);
+        self.sys.rhs((t + h).min(t_hi), &ys, &mut k4);
         for i in 0..N {
             self.y[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         }
@@ -134,7 +135,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         let n = steps as u64;
         let h = span / n as f64;
         for i in 1..=n {
-            self.step_unchecked(h);
+            self.step_unchecked(h, t_stop.next_down());
             self.t = t0 + i as f64 * h;
         }
         self.t = t_stop;
