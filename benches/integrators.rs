@@ -1,5 +1,5 @@
 //! Integrator benchmarks and work-precision data: DETEST B5 to t = 20 and the I = (3, 5, 9)
-//! near-separatrix body to t = 100, for DOP853, DOPRI5, RK4, the splittings and the exact
+//! near-separatrix body to t = 100, for Vern9, DOP853, DOPRI5, RK4, the splittings and the exact
 //! solution.
 //!
 //! `cargo bench --bench integrators` prints the work-precision table (error, right-hand-side
@@ -17,7 +17,9 @@ use criterion::Criterion;
 use nalgebra::{UnitQuaternion, Vector3};
 use precess_core::exact::{FreeBodyExact, Jacobi};
 use precess_core::ode::splitting::{BodyMomentum, FreeBodySplitting, Order};
-use precess_core::ode::{AdaptiveConfig, Dp54, Dp853, EmbeddedPair, Rk4, Rk4Config, System, solve};
+use precess_core::ode::{
+    AdaptiveConfig, Dp54, Dp853, EmbeddedPair, Rk4, Rk4Config, System, Vern98, solve,
+};
 
 /// DETEST B5 y(20), 30-digit reference.
 const B5_Y20: [f64; 3] = [
@@ -49,12 +51,16 @@ impl System<3> for FreeBody {
 }
 
 fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
 }
 
 /// One method at one setting on one problem: returns (final state, rhs evaluations).
 #[derive(Clone, Copy)]
 enum Method {
+    Vern9(f64),
     Dop853(f64),
     Dopri5(f64),
     Rk4(f64),
@@ -65,6 +71,7 @@ enum Method {
 impl Method {
     fn label(&self) -> String {
         match self {
+            Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
             Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
             Method::Dopri5(t) => format!("DOPRI5 tol {t:.0e}"),
             Method::Rk4(h) => format!("RK4 h {h}"),
@@ -74,7 +81,12 @@ impl Method {
     }
 }
 
-fn adaptive<P: EmbeddedPair, S: System<3>>(sys: S, y0: [f64; 3], t: f64, tol: f64) -> ([f64; 3], u64) {
+fn adaptive<P: EmbeddedPair, S: System<3>>(
+    sys: S,
+    y0: [f64; 3],
+    t: f64,
+    tol: f64,
+) -> ([f64; 3], u64) {
     let s = solve::<P, _, 3>(sys, 0.0, y0, t, &[], AdaptiveConfig::with_tol(tol, tol)).unwrap();
     (s.y, s.stats.rhs_evals)
 }
@@ -88,6 +100,7 @@ fn rk4<S: System<3>>(sys: S, y0: [f64; 3], t: f64, h: f64) -> ([f64; 3], u64) {
 fn run_b5(m: Method) -> ([f64; 3], u64) {
     let y0 = [0.0, 1.0, 1.0];
     match m {
+        Method::Vern9(tol) => adaptive::<Vern98, _>(B5, y0, 20.0, tol),
         Method::Dop853(tol) => adaptive::<Dp853, _>(B5, y0, 20.0, tol),
         Method::Dopri5(tol) => adaptive::<Dp54, _>(B5, y0, 20.0, tol),
         Method::Rk4(h) => rk4(B5, y0, 20.0, h),
@@ -101,6 +114,7 @@ fn run_b5(m: Method) -> ([f64; 3], u64) {
 
 fn run_sep(m: Method) -> ([f64; 3], u64) {
     match m {
+        Method::Vern9(tol) => adaptive::<Vern98, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
         Method::Dop853(tol) => adaptive::<Dp853, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
         Method::Dopri5(tol) => adaptive::<Dp54, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
         Method::Rk4(h) => rk4(FreeBody(SEP_I), SEP_M0, SEP_T, h),
@@ -116,14 +130,20 @@ fn run_sep(m: Method) -> ([f64; 3], u64) {
             ([y.m.x, y.m.y, y.m.z], 0)
         }
         Method::Exact => (
-            FreeBodyExact::new(SEP_I, SEP_M0).unwrap().m_at(black_box(SEP_T)).unwrap(),
+            FreeBodyExact::new(SEP_I, SEP_M0)
+                .unwrap()
+                .m_at(black_box(SEP_T))
+                .unwrap(),
             0,
         ),
     }
 }
 
 fn b5_methods() -> Vec<Method> {
-    let mut v: Vec<Method> = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14].map(Method::Dop853).to_vec();
+    let mut v: Vec<Method> = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14]
+        .map(Method::Dop853)
+        .to_vec();
+    v.extend([1e-8, 1e-10, 1e-12, 1e-14].map(Method::Vern9));
     v.extend([1e-6, 1e-8, 1e-10, 1e-12].map(Method::Dopri5));
     v.extend([0.1, 0.03, 0.01, 0.003].map(Method::Rk4));
     v.push(Method::Exact);
@@ -132,6 +152,7 @@ fn b5_methods() -> Vec<Method> {
 
 fn sep_methods() -> Vec<Method> {
     let mut v: Vec<Method> = [1e-8, 1e-10, 1e-12, 1e-14].map(Method::Dop853).to_vec();
+    v.extend([1e-10, 1e-12, 1e-14].map(Method::Vern9));
     v.extend([1e-8, 1e-10, 1e-12].map(Method::Dopri5));
     v.extend([0.1, 0.03, 0.01].map(Method::Rk4));
     for o in [Order::Two, Order::Four, Order::Six] {
@@ -145,13 +166,26 @@ fn table() {
     println!("work-precision: B5, max-norm error at t = 20 against the 30-digit reference");
     for m in b5_methods() {
         let (y, evals) = run_b5(m);
-        println!("  {:<22} error {:9.2e}  rhs evals {evals}", m.label(), err(&y, &B5_Y20));
+        println!(
+            "  {:<22} error {:9.2e}  rhs evals {evals}",
+            m.label(),
+            err(&y, &B5_Y20)
+        );
     }
-    let exact = FreeBodyExact::new(SEP_I, SEP_M0).unwrap().m_at(SEP_T).unwrap();
-    println!("work-precision: I = (3,5,9), m0 = (0,2,0.01), error at t = 100 against the exact solution");
+    let exact = FreeBodyExact::new(SEP_I, SEP_M0)
+        .unwrap()
+        .m_at(SEP_T)
+        .unwrap();
+    println!(
+        "work-precision: I = (3,5,9), m0 = (0,2,0.01), error at t = 100 against the exact solution"
+    );
     for m in sep_methods() {
         let (y, evals) = run_sep(m);
-        println!("  {:<22} error {:9.2e}  rhs evals {evals}", m.label(), err(&y, &exact));
+        println!(
+            "  {:<22} error {:9.2e}  rhs evals {evals}",
+            m.label(),
+            err(&y, &exact)
+        );
     }
 }
 
@@ -161,6 +195,7 @@ fn main() {
         let n: usize = n.parse().unwrap_or(1);
         for _ in 0..n {
             black_box(run_b5(Method::Dop853(1e-10)));
+            black_box(run_b5(Method::Vern9(1e-10)));
             black_box(run_b5(Method::Dopri5(1e-10)));
             black_box(run_b5(Method::Rk4(0.01)));
             black_box(run_sep(Method::Split(Order::Four, 0.1)));

@@ -4,7 +4,7 @@
 use precess_core::exact::Jacobi;
 use precess_core::ode::{
     Adaptive, AdaptiveConfig, Dop853, Dopri5, Dp54, Dp853, EmbeddedPair, FnSystem, OdeError, Rk4,
-    Rk4Config, System, solve, solve_dense,
+    Rk4Config, System, Vern98, solve, solve_dense,
 };
 
 /// DETEST B5, whose exact solution is (sn, cn, dn)(t | 0.51).
@@ -32,7 +32,7 @@ fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 /// n fixed steps of the pair's propagated solution (no control).
 fn fixed<P: EmbeddedPair>(h: f64, n: usize) -> [f64; 3] {
     let (mut y, mut t) = ([0.0, 1.0, 1.0], 0.0);
-    let mut k = [[0.0; 3]; 16];
+    let mut k = [[0.0; 3]; 17];
     for _ in 0..n {
         B5.rhs(t, &y, &mut k[0]);
         let mut yn = [0.0; 3];
@@ -60,7 +60,9 @@ fn convergence_orders_match_the_tableaux() {
         *r.y()
     };
     let p4 = observed_order(e(0.1, &rk), e(0.05, &rk));
-    eprintln!("observed orders: RK4 {p4:.2}, DOPRI5 {p5:.2}, DOP853 {p8:.2}");
+    let p9 = observed_order(e(0.5, &fixed::<Vern98>), e(0.25, &fixed::<Vern98>));
+    eprintln!("observed orders: RK4 {p4:.2}, DOPRI5 {p5:.2}, DOP853 {p8:.2}, Vern9 {p9:.2}");
+    assert!((8.6..9.8).contains(&p9), "Vern9 order {p9}");
     assert!((3.8..4.3).contains(&p4), "RK4 order {p4}");
     assert!((4.7..5.5).contains(&p5), "DOPRI5 order {p5}");
     assert!((7.6..8.8).contains(&p8), "DOP853 order {p8}");
@@ -131,6 +133,19 @@ fn statistics_count_work() {
     ode.advance_to(20.0).unwrap();
     let st = ode.stats();
     assert_eq!(st.rhs_evals, 2 + 12 * st.steps + 11 * st.rejections);
+    let s = solve::<Vern98, _, 3>(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        20.0,
+        &[],
+        AdaptiveConfig::with_tol(1e-10, 1e-10),
+    )
+    .unwrap();
+    assert_eq!(
+        s.stats.rhs_evals,
+        2 + 16 * s.stats.steps + 15 * s.stats.rejections
+    );
 }
 
 #[test]

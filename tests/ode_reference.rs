@@ -5,7 +5,7 @@
 #![allow(clippy::excessive_precision)]
 
 use precess_core::ode::{
-    Adaptive, AdaptiveConfig, Dop853, Dp54, Dp853, Rk4, Rk4Config, System, solve,
+    Adaptive, AdaptiveConfig, Dop853, Dp54, Dp853, Rk4, Rk4Config, System, Vern98, solve,
 };
 
 /// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2), y(0) = (0, 1, 1).
@@ -100,6 +100,14 @@ fn b5_dop853_tight_tolerance_within_1e12() {
     ode.advance_to(12.0).unwrap();
     assert_eq!(ode.t(), 12.0);
     assert!(max_err(ode.y(), &B5_Y12) <= 1e-12);
+}
+
+#[test]
+fn b5_vern9_tight_tolerance_within_1e12() {
+    let s = solve::<Vern98, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], tight()).unwrap();
+    let e = max_err(&s.y, &B5_Y20);
+    eprintln!("B5 Vern9 y(20) error {e:e} {:?}", s.stats);
+    assert!(e <= 1e-12, "Vern9 B5 y(20) error {e:e}");
 }
 
 #[test]

@@ -155,7 +155,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
-        let mut k = [[0.0; N]; 16];
+        let mut k = [[0.0; N]; 17];
         sys.rhs(t0, &y0, &mut k[0]);
         let mut me = Self {
             sys,

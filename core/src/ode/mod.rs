@@ -15,10 +15,12 @@ pub mod solve;
 pub mod splitting;
 pub mod system;
 pub mod tableau;
+pub mod vern;
 
 pub use adaptive::{Adaptive, AdaptiveConfig};
 pub use error::OdeError;
 pub use pair::{Dp54, Dp853, EmbeddedPair};
 pub use rk4::{Rk4, Rk4Config};
-pub use solve::{Dop853, Dopri5, Solution, solve, solve_dense};
+pub use solve::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use system::{FnSystem, Stats, System};
+pub use vern::Vern98;

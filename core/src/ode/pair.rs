@@ -5,8 +5,9 @@ use super::tableau::{
     DOP853_A, DOP853_BHH, DOP853_C, DOP853_D, DOP853_E5, DP5_A, DP5_C, DP5_D, DP5_E,
 };
 
-/// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages).
-pub type Stages<const N: usize> = [[f64; N]; 16];
+/// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages,
+/// Verner 9(8) 16 plus f at the new point).
+pub type Stages<const N: usize> = [[f64; N]; 17];
 
 /// Coefficients of the dense-output polynomial of the last step.
 pub type DenseCoeffs<const N: usize> = [[f64; N]; 8];
@@ -91,7 +92,7 @@ fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
 /// Evaluates stage `s` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose stage
 /// times are capped at `t_hi`.
 #[inline(always)]
-fn stage<S: System<N>, const N: usize>(
+pub(crate) fn stage<S: System<N>, const N: usize>(
     sys: &S,
     (t, h, t_hi): (f64, f64, f64),
     y: &[f64; N],

@@ -12,6 +12,9 @@ pub type Dopri5<S, const N: usize> = Adaptive<S, Dp54, N>;
 /// DOP853 driver.
 pub type Dop853<S, const N: usize> = Adaptive<S, Dp853, N>;
 
+/// Verner 9(8) driver.
+pub type Vern9<S, const N: usize> = Adaptive<S, super::vern::Vern98, N>;
+
 /// End state of an integration and the work it took.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Solution<const N: usize> {
