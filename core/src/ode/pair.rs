@@ -77,7 +77,7 @@ fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, o
 
 /// Σ_j w_j k_j, stage by stage (contiguous in N) and skipping the tableaux' many zeros.
 #[inline(always)]
-fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
+pub(crate) fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
     let mut acc = [0.0; N];
     for (wj, kj) in w.iter().zip(k) {
         if *wj != 0.0 {
@@ -109,9 +109,10 @@ pub(crate) fn stage<S: System<N>, const N: usize>(
 /// tableau is known, so its zeros and loop bounds fold away at compile time.
 macro_rules! stages {
     ($sys:expr, $step:expr, $y:expr, $tab:expr, $k:expr; $($s:literal)+) => {
-        $( stage($sys, $step, $y, $tab, $s, $k); )+
+        $( $crate::ode::pair::stage($sys, $step, $y, $tab, $s, $k); )+
     };
 }
+pub(crate) use stages;
 
 /// Dormand–Prince 5(4) (DOPRI5): 6 evaluations per step, 4th-order dense output for free.
 #[derive(Debug, Clone, Copy, Default)]

@@ -7,7 +7,7 @@
 //! (y₀, f₀, y₁, f₁), order 3: use DOP853 where high-order dense output matters.
 #![allow(clippy::excessive_precision)]
 
-use super::pair::{DenseCoeffs, EmbeddedPair, Stages, stage};
+use super::pair::{DenseCoeffs, EmbeddedPair, Stages, stages, weighted};
 use super::system::System;
 
 /// Nodes c of Verner 9(8).
@@ -240,23 +240,14 @@ impl EmbeddedPair for Vern98 {
         (rtol, atol): (f64, f64),
         t_hi: f64,
     ) -> (f64, u64) {
-        let step = (t, h, t_hi);
-        let tab: (&[&[f64]], &[f64]) = (&VERN9_A, &VERN9_C);
-        for s in [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15] {
-            stage(sys, step, y, tab, s, k);
-        }
+        stages!(sys, (t, h, t_hi), y, (&VERN9_A, &VERN9_C), k;
+            1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
+        let (s9, s8) = (weighted(&VERN9_B, k), weighted(&VERN8_B, k));
         let mut acc = 0.0;
         for i in 0..N {
-            let (mut s9, mut s8) = (0.0, 0.0);
-            for (j, kj) in k.iter().enumerate().take(16) {
-                if j < 15 {
-                    s9 += VERN9_B[j] * kj[i];
-                }
-                s8 += VERN8_B[j] * kj[i];
-            }
-            y_new[i] = y[i] + h * s9;
+            y_new[i] = y[i] + h * s9[i];
             let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
-            let r = h * (s9 - s8) / sk;
+            let r = h * (s9[i] - s8[i]) / sk;
             acc += r * r;
         }
         ((acc / N as f64).sqrt(), 15)
