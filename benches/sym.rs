@@ -71,7 +71,10 @@ fn bench(c: &mut Criterion) {
     g.finish();
     for (name, asym) in [("symmetric", false), ("asymmetric", true)] {
         let (a, accel) = heavy_top(asym);
-        println!("{name} heavy top q'': {}", Program::lower(&a, &accel).op_count());
+        println!(
+            "{name} heavy top q'': {}",
+            Program::lower(&a, &accel).op_count()
+        );
     }
 }
 

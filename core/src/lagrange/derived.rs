@@ -11,7 +11,9 @@ use crate::ode::System;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TopError {
     /// B(q) is singular: the angles are at the chart's gimbal lock.
-    #[error("the {sequence:?} angles {q:?} are at gimbal lock (|det B| = {det:e}); use the other chart or the Eulerian form")]
+    #[error(
+        "the {sequence:?} angles {q:?} are at gimbal lock (|det B| = {det:e}); use the other chart or the Eulerian form"
+    )]
     SingularChart {
         /// The sequence.
         sequence: AngleSequence,
@@ -60,7 +62,12 @@ pub trait Top {
 
     /// The Eulerian form: ω̇ = I⁻¹(τ − ω × I ω), with the same torques, for the attitude
     /// (body to space) and body angular velocity ω.
-    fn eulerian_rhs(&self, t: f64, attitude: &UnitQuaternion<f64>, omega: &Vector3<f64>) -> Vector3<f64>;
+    fn eulerian_rhs(
+        &self,
+        t: f64,
+        attitude: &UnitQuaternion<f64>,
+        omega: &Vector3<f64>,
+    ) -> Vector3<f64>;
 
     /// q̈ in [`Top::SEQUENCE`].
     fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
@@ -83,7 +90,12 @@ pub trait Top {
     /// [`TopError::SingularChart`] at gimbal lock (|det B| < 1e-12),
     /// [`TopError::NonFinite`] for non-finite input.
     fn rates_from_omega(&self, q: &[f64; 3], omega: &Vector3<f64>) -> Result<[f64; 3], TopError> {
-        rates_from_omega(Self::SEQUENCE, &self.rate_matrix_in(Self::SEQUENCE, q), q, omega)
+        rates_from_omega(
+            Self::SEQUENCE,
+            &self.rate_matrix_in(Self::SEQUENCE, q),
+            q,
+            omega,
+        )
     }
 }
 
@@ -169,10 +181,12 @@ impl<T: Top> AngleChart for TopChart<'_, T> {
         self.sequence
     }
     fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        self.top.rotation_in(self.sequence, &[state[0], state[1], state[2]])
+        self.top
+            .rotation_in(self.sequence, &[state[0], state[1], state[2]])
     }
     fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        self.top.rate_matrix_in(self.sequence, &[state[0], state[1], state[2]])
+        self.top
+            .rate_matrix_in(self.sequence, &[state[0], state[1], state[2]])
     }
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         self.top.energy_in(self.sequence, state)
@@ -192,7 +206,9 @@ impl<T: Top> System<7> for EulerianTop<'_, T> {
         let q = nalgebra::Quaternion::new(y[0], y[1], y[2], y[3]);
         let w = Vector3::new(y[4], y[5], y[6]);
         let qd = q * nalgebra::Quaternion::new(0.0, w.x, w.y, w.z) * 0.5;
-        let wd = self.0.eulerian_rhs(t, &UnitQuaternion::new_normalize(q), &w);
+        let wd = self
+            .0
+            .eulerian_rhs(t, &UnitQuaternion::new_normalize(q), &w);
         d[..4].copy_from_slice(&[qd.w, qd.i, qd.j, qd.k]);
         d[4..].copy_from_slice(wd.as_slice());
     }

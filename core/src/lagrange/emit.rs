@@ -74,9 +74,13 @@ pub fn emit_top(arena: &mut Arena, e: TopEmit<'_>) -> Result<TokenStream, Lagran
         user_fn,
         krate: p,
     } = e;
-    let user = user_fn
-        .as_ref()
-        .map(|_| [arena.parameter("#u0"), arena.parameter("#u1"), arena.parameter("#u2")]);
+    let user = user_fn.as_ref().map(|_| {
+        [
+            arena.parameter("#u0"),
+            arena.parameter("#u1"),
+            arena.parameter("#u2"),
+        ]
+    });
     scene.user_torque = user;
     let declared = scene.sequence;
     let seq_tokens = |s: AngleSequence| match s {
@@ -179,10 +183,13 @@ pub fn emit_top(arena: &mut Arena, e: TopEmit<'_>) -> Result<TokenStream, Lagran
     let momenta = quote!({ #lets [#(#slots),*] });
 
     // The Eulerian form over the attitude matrix and ω.
-    let rot: Mat3 = std::array::from_fn(|i| {
-        std::array::from_fn(|j| arena.parameter(&format!("#R{i}{j}")))
-    });
-    let omega = [arena.parameter("#w0"), arena.parameter("#w1"), arena.parameter("#w2")];
+    let rot: Mat3 =
+        std::array::from_fn(|i| std::array::from_fn(|j| arena.parameter(&format!("#R{i}{j}"))));
+    let omega = [
+        arena.parameter("#w0"),
+        arena.parameter("#w1"),
+        arena.parameter("#w2"),
+    ];
     let rhs = scene.eulerian_rhs(arena, &rot, &omega)?;
     let mut re = Reads {
         map: reads.map.clone(),
