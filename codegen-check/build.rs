@@ -13,7 +13,7 @@ fn main() {
     let mut a = generator::arena_with_vars();
     let mut code = String::new();
     let mut table = String::from(
-        "/// Every generated function, in program order.\npub const FUNCTIONS: &[fn(&[f64]) -> Vec<f64>] = &[",
+        "/// Every generated function, in program order.\npub const FUNCTIONS: &[Generated] = &[",
     );
     for k in 0..generator::PROGRAMS {
         let outs = generator::program(&mut a, k);

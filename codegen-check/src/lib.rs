@@ -5,7 +5,12 @@
 
 pub mod generator;
 
+/// A generated function: symbol values in (by index), the program's outputs out.
+pub type Generated = fn(&[f64]) -> Vec<f64>;
+
 /// The functions the build script emitted: `FUNCTIONS[k]` computes program `k`.
 pub mod generated {
+    use super::Generated;
+
     include!(concat!(env!("OUT_DIR"), "/generated.rs"));
 }

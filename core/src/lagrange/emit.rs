@@ -194,10 +194,10 @@ pub fn emit_top(arena: &mut Arena, e: TopEmit<'_>) -> Result<TokenStream, Lagran
     let mut re = Reads {
         map: reads.map.clone(),
     };
-    for i in 0..3 {
-        re.sym(arena, omega[i], quote!(omega[#i]));
-        for j in 0..3 {
-            re.sym(arena, rot[i][j], quote!(__r[(#i, #j)]));
+    for (i, (&w, row)) in omega.iter().zip(&rot).enumerate() {
+        re.sym(arena, w, quote!(omega[#i]));
+        for (j, &r) in row.iter().enumerate() {
+            re.sym(arena, r, quote!(__r[(#i, #j)]));
         }
     }
     let call = match &user_fn {
