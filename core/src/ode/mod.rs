@@ -1,5 +1,6 @@
 //! Time stepping: systems with an in-place right-hand side, fixed-step RK4, adaptive embedded
-//! pairs (Dormand–Prince 5(4), DOP853) with PI control, stop times and dense output,
+//! pairs (Dormand–Prince 5(4), DOP853, Verner 9(8)) with PI control, stop times and dense
+//! output,
 //! attitude integrators on the unit quaternions (exponential map, RKMK4), and geometric
 //! splitting methods for rigid bodies.
 //!
@@ -7,6 +8,7 @@
 
 pub mod adaptive;
 pub mod attitude;
+pub mod config;
 pub mod error;
 pub mod lie;
 pub mod pair;
