@@ -250,8 +250,8 @@ impl FreeFlow for FreeBodySplitting {
 }
 
 /// The exact free-body flow (elliptic functions and the third-kind integral) as the
-/// kinetic part of a splitting: no error from the free motion at any step size, so a fast
-/// spin does not limit the step.
+/// kinetic part of a splitting: no error from the free motion at any step size, leaving only
+/// the kick-splitting error (for a symmetric body the axis splitting is already exact).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ExactFreeFlow {
     inertia: [f64; 3],
