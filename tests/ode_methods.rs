@@ -36,7 +36,7 @@ fn fixed<P: EmbeddedPair>(h: f64, n: usize) -> [f64; 3] {
     for _ in 0..n {
         B5.rhs(t, &y, &mut k[0]);
         let mut yn = [0.0; 3];
-        P::try_step(&B5, t, &y, h, &mut k, &mut yn, (1.0, 1.0), f64::INFINITY);
+        P::try_step(&B5, (t, h, f64::INFINITY), &y, &mut k, &mut yn, (1.0, 1.0));
         y = yn;
         t += h;
     }

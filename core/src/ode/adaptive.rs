@@ -218,13 +218,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             }
             let (err, evals) = P::try_step(
                 &self.sys,
-                self.t,
+                (self.t, h, t_hi),
                 &self.y,
-                h,
                 &mut self.k,
                 &mut y_new,
                 (self.cfg.rtol, self.cfg.atol),
-                t_hi,
             );
             self.stats.rhs_evals += evals;
             if err.is_nan() || !all_finite(&y_new) {

@@ -30,16 +30,14 @@ pub trait EmbeddedPair {
     /// the scaled RMS error norm (≤ 1 means accept) and the number of `f` evaluations.
     /// Stage times are capped at `t_hi`: a step that ends on a stop time evaluates its last
     /// stages just before it, on the side of a switch that the step belongs to.
-    #[allow(clippy::too_many_arguments)]
+    /// `step` is (t, h, t_hi), `tol` is (rtol, atol).
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
+        step: (f64, f64, f64),
         y: &[f64; N],
-        h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
         tol: (f64, f64),
-        t_hi: f64,
     ) -> (f64, u64);
 
     /// Makes `k[FSAL] = f(min(t + h, t_hi), y_new)` available after acceptance; returns
@@ -126,13 +124,11 @@ impl EmbeddedPair for Dp54 {
 
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
+        (t, h, t_hi): (f64, f64, f64),
         y: &[f64; N],
-        h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
         (rtol, atol): (f64, f64),
-        t_hi: f64,
     ) -> (f64, u64) {
         stages!(sys, (t, h, t_hi), y, (&DP5_A, &DP5_C), k; 1 2 3 4 5);
         stage_state(y, h, DP5_A[6], k, y_new);
@@ -202,13 +198,11 @@ impl EmbeddedPair for Dp853 {
 
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
+        (t, h, t_hi): (f64, f64, f64),
         y: &[f64; N],
-        h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
         (rtol, atol): (f64, f64),
-        t_hi: f64,
     ) -> (f64, u64) {
         stages!(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), k; 1 2 3 4 5 6 7 8 9 10 11);
         stage_state(y, h, DOP853_A[12], k, y_new);

@@ -232,13 +232,11 @@ impl EmbeddedPair for Vern98 {
 
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
-        t: f64,
+        (t, h, t_hi): (f64, f64, f64),
         y: &[f64; N],
-        h: f64,
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
         (rtol, atol): (f64, f64),
-        t_hi: f64,
     ) -> (f64, u64) {
         stages!(sys, (t, h, t_hi), y, (&VERN9_A, &VERN9_C), k;
             1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
