@@ -330,3 +330,32 @@ fn a_parameter_and_a_coordinate_of_one_name_stay_distinct() {
     // ∂θ_parameter/∂θ_coordinate = 0.
     assert_eq!(a.diff(p, sq), a.zero());
 }
+
+#[test]
+fn cancel_reduces_the_top_determinant_to_one_sine() {
+    let mut a = Arena::new();
+    let th = a.coordinate("theta");
+    let (i1, i3, x) = (a.parameter("I_1"), a.parameter("I_3"), a.parameter("x"));
+    let (s, c) = (a.sin(th), a.cos(th));
+    // den = I1 I3 sin²θ, num = I3 sin θ (x cos θ + I1)
+    let s2 = a.mul(s, s);
+    let den = a.product(&[i1, i3, s2]);
+    let xc = a.mul(x, c);
+    let inner = a.add(xc, i1);
+    let num = a.product(&[i3, s, inner]);
+    let (n, d) = a.cancel(num, den);
+    let expected_d = a.product(&[i1, s]);
+    assert_eq!(d, expected_d);
+    let expected_n = a.expand(inner);
+    assert_eq!(n, expected_n);
+    // A numerator without the factor keeps the denominator's sine.
+    let (n2, d2) = a.cancel(inner, den);
+    assert_eq!((n2, d2), (a.expand(inner), a.expand(den)));
+    // sin³θ / sin θ = sin²θ = 1 − cos²θ, exactly.
+    let s3 = a.powi(s, 3).unwrap();
+    let s3 = a.expand(s3);
+    let q = a.div_sin(s3, th).unwrap();
+    assert_eq!(q, a.expand(s2));
+    // cos θ is not divisible by sin θ.
+    assert_eq!(a.div_sin(c, th), None);
+}

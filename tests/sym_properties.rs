@@ -117,4 +117,38 @@ proptest! {
         let diff = a.sub(times_also_one, poly);
         prop_assert_eq!(a.expand(diff), a.zero());
     }
+
+    /// Cancelling common factors keeps the value of the quotient wherever both are defined.
+    #[test]
+    fn cancel_keeps_the_value(
+        pc in proptest::collection::vec(-3i64..=3, 1..5),
+        qc in proptest::collection::vec(-3i64..=3, 1..5),
+        k in 0i64..3, j in 0i64..3, theta in 0.1f64..3.0, x in -2.0f64..2.0,
+    ) {
+        let mut a = Arena::new();
+        let th = a.coordinate("theta");
+        let xs = a.parameter("x");
+        let (s, c) = (a.sin(th), a.cos(th));
+        let basis = [a.one(), c, xs, a.mul(xs, c), a.mul(c, c)];
+        let poly = |a: &mut Arena, coeffs: &[i64]| {
+            let t: Vec<_> = coeffs.iter().zip(basis.iter()).map(|(&k, &b)| { let k = a.integer(k); a.mul(k, b) }).collect();
+            a.sum(&t)
+        };
+        let (p, q) = (poly(&mut a, &pc), poly(&mut a, &qc));
+        prop_assume!(a.expand(q) != a.zero());
+        let sk = a.powi(s, k).unwrap();
+        let sj = a.powi(s, j + 1).unwrap();
+        let num = a.mul(p, sk);
+        let den = a.product(&[q, sj, xs]);
+        let (n, d) = a.cancel(num, den);
+        let mut env = vec![0.0; a.symbol_count()];
+        env[a.as_symbol(th).unwrap().index()] = theta;
+        env[a.as_symbol(xs).unwrap().index()] = x;
+        let (dv, before) = (a.eval(d, &env), a.eval(den, &env));
+        prop_assume!(before.abs() > 1e-3 && dv.abs() > 1e-6);
+        let lhs = a.eval(num, &env) / before;
+        let rhs = a.eval(n, &env) / dv;
+        prop_assert!(close(lhs, rhs, 1e-9), "{} / {} -> {} / {}: {lhs} vs {rhs}",
+            a.display(num), a.display(den), a.display(n), a.display(d));
+    }
 }

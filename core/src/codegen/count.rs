@@ -33,6 +33,19 @@ impl OpCount {
     }
 }
 
+impl OpCount {
+    /// A cost in rough multiply-equivalents for choosing between equal forms: divisions and
+    /// square roots cost about 4, a sine or cosine about 15, a paired `sin_cos` about 20.
+    pub fn weighted(&self) -> usize {
+        self.adds
+            + self.muls
+            + self.negs
+            + 4 * (self.divs + self.sqrts)
+            + 15 * self.trig
+            + 20 * self.sin_cos
+    }
+}
+
 impl fmt::Display for OpCount {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(

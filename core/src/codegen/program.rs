@@ -83,13 +83,16 @@ struct Lowering<'a> {
     by_node: IdMap<ExprId, Slot>,
     /// Negative powers used by more than one product: their reciprocal is computed once
     /// and multiplied in, instead of dividing in every product.
-    shared_reciprocals: IdMap<ExprId, ()>,
+    shared_reciprocals: IdMap<(ExprId, i64), ()>,
 }
+
+/// A term of a sum: its rational coefficient and its factors `(base, exponent)`.
+type Term = (Rational, Vec<(ExprId, i64)>);
 
 /// The negative powers that appear as a factor of two or more products reachable from
 /// `outputs`.
-fn shared_reciprocals(arena: &Arena, outputs: &[ExprId]) -> IdMap<ExprId, ()> {
-    let mut uses: IdMap<ExprId, u32> = IdMap::default();
+fn shared_reciprocals(arena: &Arena, outputs: &[ExprId]) -> IdMap<(ExprId, i64), ()> {
+    let mut uses: IdMap<(ExprId, i64), u32> = IdMap::default();
     let mut seen: IdMap<ExprId, ()> = IdMap::default();
     let mut stack: Vec<ExprId> = outputs.to_vec();
     while let Some(e) = stack.pop() {
@@ -101,8 +104,10 @@ fn shared_reciprocals(arena: &Arena, outputs: &[ExprId]) -> IdMap<ExprId, ()> {
             Node::Add(c) => stack.extend(c.iter()),
             Node::Mul(c) => {
                 for &f in c.iter() {
-                    if matches!(arena.node(f), Node::Pow(_, n) if *n < 0) {
-                        *uses.entry(f).or_default() += 1;
+                    if let Node::Pow(b, n) = arena.node(f)
+                        && *n < 0
+                    {
+                        *uses.entry((*b, *n)).or_default() += 1;
                     }
                     stack.push(f);
                 }
@@ -198,16 +203,19 @@ impl Lowering<'_> {
             Node::Const(r) => self.constant(*r),
             Node::Sym(sym) => self.emit(Op::Input(*sym)),
             Node::Add(terms) => self.sum(terms),
-            Node::Mul(factors) => {
-                let (c, rest) = self.coefficient(factors);
-                let mag = self.product(c.abs_value(), rest);
+            Node::Mul(_) => {
+                let (c, factors) = self.term_of(e);
+                let mag = self.product(c.abs_value(), &factors);
                 if c.is_negative() {
                     self.emit(Op::Neg(mag))
                 } else {
                     mag
                 }
             }
-            Node::Pow(b, n) => self.power_slot(*b, *n),
+            Node::Pow(b, n) => {
+                let base = self.node(*b);
+                self.power_of(base, *n)
+            }
             Node::Sqrt(u) => {
                 let u = self.node(*u);
                 self.emit(Op::Sqrt(u))
@@ -233,18 +241,6 @@ impl Lowering<'_> {
         }
     }
 
-    /// `b^n` for any non-zero integer n, as multiplications (and one division if n < 0).
-    fn power_slot(&mut self, b: ExprId, n: i64) -> Slot {
-        let base = self.node(b);
-        let pos = self.positive_power(base, n.unsigned_abs());
-        if n < 0 {
-            let one = self.constant(Rational::ONE);
-            self.emit(Op::Div(one, pos))
-        } else {
-            pos
-        }
-    }
-
     /// Square-and-multiply; value numbering shares the squares between powers of one base.
     fn positive_power(&mut self, base: Slot, n: u64) -> Slot {
         if n == 1 {
@@ -259,18 +255,17 @@ impl Lowering<'_> {
         }
     }
 
-    /// `c · Π factors` with `c ≥ 0`: numerator factors multiplied, negative powers gathered
+    /// `c · Π bᵢ^nᵢ` with `c ≥ 0`: numerator factors multiplied, negative powers gathered
     /// into one denominator, so a quotient costs a single division.
-    fn product(&mut self, c: Rational, factors: &[ExprId]) -> Slot {
+    fn product(&mut self, c: Rational, factors: &[(ExprId, i64)]) -> Slot {
         let mut num: Option<Slot> = None;
         let mut den: Option<Slot> = None;
-        for &f in factors {
-            let (target, slot) = match self.arena.node(f) {
-                Node::Pow(b, n) if *n < 0 && !self.shared_reciprocals.contains_key(&f) => {
-                    let base = self.node(*b);
-                    (&mut den, self.positive_power(base, n.unsigned_abs()))
-                }
-                _ => (&mut num, self.node(f)),
+        for &(b, n) in factors {
+            let base = self.node(b);
+            let (target, slot) = if n < 0 && !self.shared_reciprocals.contains_key(&(b, n)) {
+                (&mut den, self.positive_power(base, n.unsigned_abs()))
+            } else {
+                (&mut num, self.power_of(base, n))
             };
             *target = Some(match *target {
                 Some(acc) => self.emit(Op::Mul(acc, slot)),
@@ -291,22 +286,98 @@ impl Lowering<'_> {
         }
     }
 
-    /// A sum with negative terms as subtractions: `a − 3b` is one multiply and one subtract.
+    /// `base^n` for a lowered base and a non-zero n.
+    fn power_of(&mut self, base: Slot, n: i64) -> Slot {
+        let pos = self.positive_power(base, n.unsigned_abs());
+        if n < 0 {
+            let one = self.constant(Rational::ONE);
+            self.emit(Op::Div(one, pos))
+        } else {
+            pos
+        }
+    }
+
+    /// A term as its coefficient and its factors `(base, exponent)`.
+    fn term_of(&self, t: ExprId) -> Term {
+        let base_exp = |x: ExprId| match self.arena.node(x) {
+            Node::Pow(b, n) => (*b, *n),
+            _ => (x, 1),
+        };
+        match self.arena.node(t) {
+            Node::Mul(f) => {
+                let (c, rest) = self.coefficient(f);
+                (c, rest.iter().map(|&x| base_exp(x)).collect())
+            }
+            Node::Const(r) => (*r, Vec::new()),
+            _ => (Rational::ONE, vec![base_exp(t)]),
+        }
+    }
+
+    /// A sum, factored greedily (multivariate Horner): the base that divides most terms is
+    /// pulled out, `a·x + b·x + c = x·(a + b) + c`, recursively. Negative terms become
+    /// subtractions.
     fn sum(&mut self, terms: &[ExprId]) -> Slot {
+        let terms: Vec<Term> = terms.iter().map(|&t| self.term_of(t)).collect();
+        let parts = self.horner(terms);
+        self.signed_sum(parts)
+    }
+
+    /// The sum of `terms` as signed parts `(negative, magnitude)`.
+    fn horner(&mut self, terms: Vec<Term>) -> Vec<(bool, Slot)> {
+        let mut counts: Vec<(ExprId, usize)> = Vec::new();
+        for (_, f) in &terms {
+            for &(b, n) in f {
+                if n > 0 {
+                    match counts.iter_mut().find(|(x, _)| *x == b) {
+                        Some(c) => c.1 += 1,
+                        None => counts.push((b, 1)),
+                    }
+                }
+            }
+        }
+        // Most frequent first; ties by id, so the result is deterministic.
+        let best = counts
+            .iter()
+            .filter(|&&(_, c)| c >= 2)
+            .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)));
+        let Some(&(b, _)) = best else {
+            return terms
+                .iter()
+                .map(|(c, f)| (c.is_negative(), self.product(c.abs_value(), f)))
+                .collect();
+        };
+        let (mut with, without): (Vec<Term>, Vec<Term>) = terms
+            .into_iter()
+            .partition(|(_, f)| f.iter().any(|&(x, n)| x == b && n > 0));
+        for (_, f) in &mut with {
+            if let Some(i) = f.iter().position(|&(x, _)| x == b) {
+                f[i].1 -= 1;
+                if f[i].1 == 0 {
+                    f.remove(i);
+                }
+            }
+        }
+        // Pull a common sign out too: −a·x − b·x = −(a + b)·x.
+        let negative = with.iter().all(|(c, _)| c.is_negative());
+        if negative {
+            for (c, _) in &mut with {
+                *c = -*c;
+            }
+        }
+        let inner_parts = self.horner(with);
+        let inner = self.signed_sum(inner_parts);
+        let base = self.node(b);
+        let mut parts = vec![(negative, self.emit(Op::Mul(base, inner)))];
+        parts.extend(self.horner(without));
+        parts
+    }
+
+    /// `Σ ±partᵢ` with positive parts added first and negative ones subtracted.
+    fn signed_sum(&mut self, parts: Vec<(bool, Slot)>) -> Slot {
         let mut pos: Option<Slot> = None;
         let mut neg: Vec<Slot> = Vec::new();
-        for &t in terms {
-            let (c, rest): (Rational, &[ExprId]) = match self.arena.node(t) {
-                Node::Mul(f) => self.coefficient(f),
-                Node::Const(r) if r.is_negative() => (*r, &[]),
-                _ => (Rational::ONE, std::slice::from_ref(&t)),
-            };
-            let mag = if rest.len() == 1 && c.abs_value().is_one() {
-                self.node(rest[0])
-            } else {
-                self.product(c.abs_value(), rest)
-            };
-            if c.is_negative() {
+        for (negative, mag) in parts {
+            if negative {
                 neg.push(mag);
             } else {
                 pos = Some(match pos {
@@ -317,7 +388,7 @@ impl Lowering<'_> {
         }
         let (mut acc, rest) = match (pos, neg.split_first()) {
             (Some(p), _) => (p, &neg[..]),
-            // Every term is negative: negate the first, subtract the rest.
+            // Every part is negative: negate the first, subtract the rest.
             (None, Some((&first, rest))) => (self.emit(Op::Neg(first)), rest),
             (None, None) => (self.constant(Rational::ZERO), &neg[..]),
         };

@@ -9,7 +9,7 @@
 use super::equations::EquationsOfMotion;
 use super::error::LagrangeError;
 use crate::codegen::Program;
-use crate::sym::{Arena, ExprId, Node};
+use crate::sym::{Arena, ExprId};
 
 /// The largest coupled block solved symbolically (the adjugate grows as n!).
 pub const MAX_BLOCK: usize = 6;
@@ -35,6 +35,8 @@ impl EquationsOfMotion {
         let n = self.coords.len();
         let blocks = coupled_blocks(arena, &self.mass);
         let mut accel = vec![arena.zero(); n];
+        // Each q̈ as numerator and determinant, kept for the cancelled variant.
+        let mut quotients = vec![(arena.zero(), arena.one()); n];
         let mut determinants = Vec::with_capacity(blocks.len());
         for block in &blocks {
             if block.len() > MAX_BLOCK {
@@ -68,10 +70,11 @@ impl EquationsOfMotion {
                 }
                 let num = arena.sum(&terms);
                 accel[block[r]] = arena.mul(num, inv_det);
+                quotients[block[r]] = (num, det);
             }
             determinants.push(det);
         }
-        let accel = cheaper_form(arena, &accel);
+        let accel = cheapest_form(arena, &accel, &quotients)?;
         Ok(Accelerations {
             accel,
             blocks,
@@ -80,32 +83,37 @@ impl EquationsOfMotion {
     }
 }
 
-/// `outputs` as they are, or each numerator expanded over its denominator, whichever lowers
-/// to fewer operations together. Expanding cancels terms across the adjugate–forcing
-/// products, but multiplies out factors the unexpanded form shares between outputs, so the
-/// choice is made on the joint program.
-pub fn cheaper_form(arena: &mut Arena, outputs: &[ExprId]) -> Vec<ExprId> {
-    let expanded: Vec<ExprId> = outputs
-        .iter()
-        .map(|&e| match arena.node(e).clone() {
-            Node::Mul(f) => {
-                let (den, num): (Vec<ExprId>, Vec<ExprId>) = f
-                    .iter()
-                    .partition(|&&x| matches!(arena.node(x), Node::Pow(_, n) if *n < 0));
-                let num = arena.product(&num);
-                let num = arena.expand(num);
-                let den = arena.product(&den);
-                arena.mul(num, den)
-            }
-            _ => arena.expand(e),
-        })
-        .collect();
-    let cost = |a: &Arena, x: &[ExprId]| Program::lower(a, x).op_count().total();
-    if cost(arena, &expanded) < cost(arena, outputs) {
-        expanded
-    } else {
-        outputs.to_vec()
+/// The cheapest of three equal forms of the accelerations, judged on the joint program:
+/// - as solved: adjugate–forcing products left factored over one shared reciprocal;
+/// - each numerator expanded over the determinant, which cancels terms across products;
+/// - each numerator expanded and its common factors with the determinant cancelled
+///   ([`Arena::cancel`]), which turns `N / (K sin²θ)` into the textbook `N' / (K' sin θ)`.
+///
+/// # Errors
+/// [`LagrangeError::Sym`] if a cancelled denominator vanished (it cannot, being a factor of
+/// a non-zero determinant).
+pub fn cheapest_form(
+    arena: &mut Arena,
+    solved: &[ExprId],
+    quotients: &[(ExprId, ExprId)],
+) -> Result<Vec<ExprId>, LagrangeError> {
+    let mut expanded = Vec::with_capacity(solved.len());
+    let mut cancelled = Vec::with_capacity(solved.len());
+    for &(num, den) in quotients {
+        let n = arena.expand(num);
+        let inv = arena.recip(den)?;
+        expanded.push(arena.mul(n, inv));
+        let (cn, cd) = arena.cancel(n, den);
+        let inv = arena.recip(cd)?;
+        cancelled.push(arena.mul(cn, inv));
     }
+    let cost = |a: &Arena, x: &[ExprId]| Program::lower(a, x).op_count().weighted();
+    let candidates = [solved.to_vec(), expanded, cancelled];
+    let best = candidates
+        .into_iter()
+        .min_by_key(|c| cost(arena, c))
+        .unwrap_or_else(|| solved.to_vec());
+    Ok(best)
 }
 
 /// Connected components of the graph with an edge i–j where `M_ij ≠ 0`.

@@ -14,6 +14,7 @@
 
 mod arena;
 mod build;
+mod cancel;
 mod diff;
 mod display;
 mod error;
