@@ -67,7 +67,7 @@ impl Arena {
             let mut f = self.factors_of(t);
             let sin_exp = take(&mut f, sin);
             let cos_exp = take(&mut f, cos);
-            if sin_exp < 0 || sin_exp > 1 || cos_exp < 0 {
+            if !(0..=1).contains(&sin_exp) || cos_exp < 0 {
                 return None;
             }
             if sin_exp == 1 {
