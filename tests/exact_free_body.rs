@@ -226,3 +226,37 @@ mod properties {
         }
     }
 }
+
+mod no_nan {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(500))]
+
+        /// Any f64 inputs: a typed error or finite m(t), never NaN.
+        #[test]
+        fn exact_returns_finite_or_typed_error(
+            i in prop::array::uniform3(any::<f64>()),
+            m0 in prop::array::uniform3(any::<f64>()),
+            t in any::<f64>(),
+        ) {
+            if let Ok(fb) = FreeBodyExact::new(i, m0)
+                && let Ok(m) = fb.m_at(t)
+            {
+                prop_assert!(m.iter().all(|v| v.is_finite()), "{i:?} {m0:?} {t}: {m:?}");
+            }
+        }
+
+        /// Physically sized but arbitrary inputs always succeed and stay finite.
+        #[test]
+        fn moderate_inputs_always_succeed(
+            i in prop::array::uniform3(1e-6f64..1e6),
+            m0 in prop::array::uniform3(-1e6f64..1e6),
+            t in -1e3f64..1e3,
+        ) {
+            let m = FreeBodyExact::new(i, m0).unwrap().m_at(t).unwrap();
+            prop_assert!(m.iter().all(|v| v.is_finite()));
+        }
+    }
+}

@@ -290,3 +290,31 @@ fn blow_up_is_a_typed_error_not_nan() {
         Err(OdeError::MaxStepsExceeded { max_steps: 10, .. })
     ));
 }
+
+mod no_nan {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// Whatever the input (NaN, ±∞, subnormal, huge), the result is a typed error or a
+        /// finite state, never NaN.
+        #[test]
+        fn solve_returns_finite_or_typed_error(
+            y0 in prop::array::uniform3(any::<f64>()),
+            rtol in any::<f64>(),
+            t_end in any::<f64>(),
+        ) {
+            let cfg = AdaptiveConfig { max_steps: 2_000, ..AdaptiveConfig::with_tol(rtol, 1e-9) };
+            if let Ok(s) = solve::<Dp853, _, 3>(B5, 0.0, y0, t_end, &[], cfg) {
+                prop_assert!(s.y.iter().all(|v| v.is_finite()), "{:?}", s.y);
+            }
+            if let Ok(mut r) = Rk4::new(B5, 0.0, y0, Rk4Config { h: 0.5 })
+                && r.advance_to(t_end.clamp(0.0, 50.0)).is_ok()
+            {
+                prop_assert!(r.y().iter().all(|v| v.is_finite()), "{:?}", r.y());
+            }
+        }
+    }
+}
