@@ -12,3 +12,7 @@ pub mod exact;
 pub mod lagrange;
 pub mod ode;
 pub mod sym;
+
+/// The linear-algebra crate precess's types come from, re-exported so users and generated
+/// code agree on one version.
+pub use nalgebra;

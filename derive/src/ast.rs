@@ -13,6 +13,8 @@ pub struct Input<'a> {
     pub fields: Vec<Field<'a>>,
     /// The `#[rigid(...)]` attributes, in order.
     pub rigid: Vec<&'a Attribute>,
+    /// The `#[top(...)]` attributes, in order.
+    pub top: Vec<&'a Attribute>,
 }
 
 /// A named field.
@@ -80,15 +82,18 @@ impl<'a> Input<'a> {
                 return None;
             }
         };
-        let rigid = input
-            .attrs
-            .iter()
-            .filter(|a| a.path().is_ident("rigid"))
-            .collect();
+        let named = |name: &str| {
+            input
+                .attrs
+                .iter()
+                .filter(|a| a.path().is_ident(name))
+                .collect()
+        };
         Some(Input {
             ident: &input.ident,
             fields,
-            rigid,
+            rigid: named("rigid"),
+            top: named("top"),
         })
     }
 

@@ -126,11 +126,33 @@ impl Spans {
     }
 }
 
-struct Checker<'a, 'c> {
-    cx: &'c mut Ctxt,
+/// Converts attribute values into the body's arena, recording every error.
+pub struct Checker<'a, 'c> {
+    /// Where errors go.
+    pub cx: &'c mut Ctxt,
     input: &'a Input<'a>,
-    arena: Arena,
+    /// The arena the values are built in.
+    pub arena: Arena,
     fields: Vec<Ident>,
+}
+
+impl<'a, 'c> Checker<'a, 'c> {
+    /// Resumes value conversion in the arena of a checked body, for the values of other
+    /// attributes (`#[top]`): the same rules and errors as `#[rigid]` values.
+    pub fn resume(cx: &'c mut Ctxt, input: &'a Input<'a>, checked: &mut Checked) -> Self {
+        Checker {
+            cx,
+            input,
+            arena: std::mem::take(&mut checked.arena),
+            fields: std::mem::take(&mut checked.fields),
+        }
+    }
+
+    /// Hands the arena and the fields used (now including the new values') back.
+    pub fn suspend(self, checked: &mut Checked) {
+        checked.arena = self.arena;
+        checked.fields = self.fields;
+    }
 }
 
 /// Checks the input's `#[rigid]` attributes and computes the symbolic body.
@@ -515,7 +537,7 @@ impl Checker<'_, '_> {
     }
 
     /// `[x, y, z]`.
-    fn vector(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
+    pub fn vector(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
         match e {
             Expr::Array(a) if a.elems.len() == 3 => {
                 let v: Vec<Option<ExprId>> = a.elems.iter().map(|x| self.scalar(x)).collect();
@@ -530,7 +552,7 @@ impl Checker<'_, '_> {
     }
 
     /// A scalar value: a literal, an f64 field, or arithmetic on them.
-    fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
+    pub fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
         match e {
             Expr::Lit(l) => self.literal(&l.lit),
             Expr::Paren(p) => self.scalar(&p.expr),

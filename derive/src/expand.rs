@@ -13,17 +13,30 @@ use crate::ast::Input;
 use crate::check::{self, Checked};
 use crate::ctxt::Ctxt;
 use crate::fallback;
+use crate::top;
 
 /// The whole derive: the impl, or the errors and a stub impl.
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let mut cx = Ctxt::default();
     let expanded = Input::from_syn(&mut cx, input).and_then(|ast| {
-        let checked = check::check(&mut cx, &ast)?;
-        expand(&mut cx, ast.ident, checked)
+        let mut checked = check::check(&mut cx, &ast)?;
+        let spec = top::check(&mut cx, &ast, &mut checked)?;
+        let top = match spec {
+            Some(spec) => top::expand(&mut cx, ast.ident, &mut checked, spec)?,
+            None => TokenStream::new(),
+        };
+        let body = expand(&mut cx, ast.ident, checked)?;
+        Some(quote!(#body #top))
     });
     match expanded {
         Some(tokens) if cx.is_ok() => tokens,
-        _ => fallback::expand(input, &cx),
+        _ => {
+            let mut out = fallback::expand(input, &cx);
+            if input.attrs.iter().any(|a| a.path().is_ident("top")) {
+                out.extend(top::fallback(&input.ident));
+            }
+            out
+        }
     }
 }
 

@@ -17,14 +17,16 @@ mod check;
 mod ctxt;
 mod expand;
 mod fallback;
+mod top;
 
 use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
 
-/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts.
+/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, and `Top`
+/// when a `#[top(...)]` attribute declares the body a top about its pivot.
 ///
 /// See the `precess` crate for examples and `docs/attributes.md` for the language.
-#[proc_macro_derive(RigidBody, attributes(rigid))]
+#[proc_macro_derive(RigidBody, attributes(rigid, top))]
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     expand::derive(&input).into()
