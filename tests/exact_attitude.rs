@@ -116,3 +116,43 @@ fn scaling_law_with_extreme_magnitudes() {
         );
     }
 }
+
+mod no_nan {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// Any f64 moments, momenta and times: a typed error or a finite unit quaternion.
+        #[test]
+        fn exact_attitude_finite_or_typed_error(
+            i in prop::array::uniform3(any::<f64>()),
+            m0 in prop::array::uniform3(any::<f64>()),
+            euler in prop::array::uniform3(-4.0f64..4.0),
+            t in any::<f64>(),
+        ) {
+            let q0 = UnitQuaternion::from_euler_angles(euler[0], euler[1], euler[2]);
+            if let Ok(ex) = FreeBodyAttitude::new(i, q0, m0)
+                && let Ok((q, m)) = ex.at(t)
+            {
+                prop_assert!(q.coords.iter().chain(m.iter()).all(|v| v.is_finite()));
+                prop_assert!((q.quaternion().norm() - 1.0).abs() < 1e-15);
+            }
+        }
+
+        /// Moderate random bodies: q(t) reproduces the conserved spatial momentum π = q m.
+        #[test]
+        fn spatial_momentum_is_conserved(
+            i in prop::array::uniform3(0.1f64..10.0),
+            m0 in prop::array::uniform3(-3.0f64..3.0),
+            t in 0.0f64..100.0,
+        ) {
+            let q0 = UnitQuaternion::identity();
+            let (q, m) = FreeBodyAttitude::new(i, q0, m0).unwrap().at(t).unwrap();
+            let pi = q * Vector3::from(m);
+            let g = Vector3::from(m0).norm().max(1e-300);
+            prop_assert!((pi - Vector3::from(m0)).amax() <= 1e-13 * g, "{:e}", (pi - Vector3::from(m0)).amax());
+        }
+    }
+}

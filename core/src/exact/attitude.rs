@@ -15,8 +15,9 @@
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 use super::carlson::{rf, rj};
+use super::elliptic::MAX_ARGUMENT;
 use super::error::{ExactError, finite};
-use super::free_body::{FreeBodyExact, Regime};
+use super::free_body::{FreeBodyExact, Regime, pow2_scale};
 
 /// Constants of the precession angle φ(t).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,9 +53,13 @@ struct Precession {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FreeBodyAttitude {
+    /// The scaled problem: m̃ = m/s_m, Ĩ = I/s_I (exact powers of two), in time τ = t s_m/s_I.
     fb: FreeBodyExact,
     inertia: [f64; 3],
     q0: UnitQuaternion<f64>,
+    m0: [f64; 3],
+    scale_m: f64,
+    scale_t: f64,
     prec: Option<Precession>,
 }
 
@@ -87,10 +92,17 @@ impl FreeBodyAttitude {
         q0: UnitQuaternion<f64>,
         m0: [f64; 3],
     ) -> Result<Self, ExactError> {
-        let fb = FreeBodyExact::new(inertia, m0)?;
+        // Validate the caller's numbers first, then work on the scaled problem so that no
+        // product of huge or tiny moments and momenta overflows.
+        FreeBodyExact::new(inertia, m0)?;
         for v in q0.coords.iter() {
             finite("q0", *v)?;
         }
+        let m_orig = m0;
+        let (scale_m, scale_i) = (pow2_scale(&m0), pow2_scale(&inertia));
+        let m0 = m0.map(|x| x / scale_m);
+        let inertia = inertia.map(|x| x / scale_i);
+        let fb = FreeBodyExact::new(inertia, m0)?;
         let prec = match fb.dn_axis() {
             None => None,
             Some((axis, a_dn, a_cn)) => {
@@ -126,6 +138,9 @@ impl FreeBodyAttitude {
             fb,
             inertia,
             q0,
+            m0: m_orig,
+            scale_m,
+            scale_t: scale_m / scale_i,
             prec,
         })
     }
@@ -159,6 +174,30 @@ impl FreeBodyAttitude {
     /// # Errors
     /// [`ExactError::NonFinite`] for a non-finite `t`.
     pub fn at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
+        finite("t", t)?;
+        if t == 0.0 {
+            return Ok((self.q0, self.m0));
+        }
+        let tau = t * self.scale_t;
+        if !tau.is_finite() {
+            return Err(ExactError::ArgumentTooLarge {
+                u: tau,
+                limit: MAX_ARGUMENT,
+            });
+        }
+        let (q, m) = self.scaled_at(tau)?;
+        let m = m.map(|x| x * self.scale_m);
+        if !m.iter().chain(q.coords.iter()).all(|v| v.is_finite()) {
+            return Err(ExactError::ArgumentTooLarge {
+                u: tau,
+                limit: MAX_ARGUMENT,
+            });
+        }
+        Ok((q, m))
+    }
+
+    /// (q, m̃) of the scaled problem at scaled time τ.
+    fn scaled_at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
         let m = self.fb.m_at(t)?;
         let Some(pr) = self.prec else {
             // Steady: ω = I⁻¹m is constant and along m, the body spins uniformly.

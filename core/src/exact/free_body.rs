@@ -19,7 +19,7 @@ use super::error::{ExactError, finite};
 
 /// The power of two at or below the largest magnitude in `v` (1 if all are zero or
 /// subnormal): dividing by it is exact.
-fn pow2_scale(v: &[f64; 3]) -> f64 {
+pub(crate) fn pow2_scale(v: &[f64; 3]) -> f64 {
     let mx = v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
     if mx.is_normal() {
         2f64.powi(mx.log2().floor() as i32)
@@ -239,7 +239,7 @@ impl FreeBodyExact {
     /// |λt + u₀| exceeds [`MAX_ARGUMENT`].
     pub fn m_at(&self, t: f64) -> Result<[f64; 3], ExactError> {
         finite("t", t)?;
-        if self.regime == Regime::Steady {
+        if self.regime == Regime::Steady || t == 0.0 {
             return Ok(self.m0);
         }
         let u = self.lambda * Dd::from(t) + Dd::from(self.u0);
