@@ -59,7 +59,7 @@ pub fn check(cx: &mut Ctxt, input: &Input, checked: &mut Checked) -> Option<Opti
     let mut ck = Checker::resume(cx, input, checked);
     for KeyValue { key, value } in &items {
         // Each setting once: two gravities or two dampings would be ambiguous.
-        if seen.iter().any(|k| *k == key) {
+        if seen.contains(&key) {
             ck.cx.error(key, format!("duplicate key `{key}`"));
             continue;
         }
