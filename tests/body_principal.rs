@@ -96,7 +96,9 @@ fn degenerate_pair_keeps_the_description_axes() {
     let i = tilt.matrix()
         * Matrix3::from_diagonal(&Vector3::new(2.0, 2.0, 1.0))
         * tilt.matrix().transpose();
-    let (_, r) = check_frame(&i);
+    let (m, r) = check_frame(&i);
+    // The pair's moments are made exactly equal, so (I1 − I2)/I3 is exactly zero.
+    assert_eq!(m[0], m[1]);
     assert!((r.column(1) - Vector3::y()).norm() < 1e-15);
     assert!((r - tilt.matrix()).abs().max() < 1e-15);
     // All three equal: the identity.

@@ -83,8 +83,8 @@ impl Principal {
 /// ```
 pub fn principal_frame(tensor: &Matrix3<f64>) -> Principal {
     let (d, v) = jacobi(tensor);
-    let (moments, mut r) = closest_to_axes(d, &v);
-    keep_axes_in_degenerate_planes(&moments, &mut r);
+    let (mut moments, mut r) = closest_to_axes(d, &v);
+    keep_axes_in_degenerate_planes(&mut moments, &mut r);
     Principal {
         moments: Vector3::from(moments),
         rotation: Rotation3::from_matrix_unchecked(r),
@@ -191,8 +191,10 @@ fn closest_to_axes(d: [f64; 3], v: &Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
     }
 }
 
-/// Replaces the axes of a degenerate pair by the description axes projected on their plane.
-fn keep_axes_in_degenerate_planes(moments: &[f64; 3], r: &mut Matrix3<f64>) {
+/// Replaces the axes of a degenerate pair by the description axes projected on their plane,
+/// and makes the pair's moments exactly equal (their mean), so the vanishing coefficient of
+/// Euler's equations is exactly zero.
+fn keep_axes_in_degenerate_planes(moments: &mut [f64; 3], r: &mut Matrix3<f64>) {
     let scale = moments.iter().fold(0.0f64, |s, m| s.max(m.abs()));
     let tol = 16.0 * f64::EPSILON * scale;
     let same = |i: usize, j: usize| (moments[i] - moments[j]).abs() <= tol;
@@ -204,6 +206,9 @@ fn keep_axes_in_degenerate_planes(moments: &[f64; 3], r: &mut Matrix3<f64>) {
         [] => {}
         [(i, j, k)] => {
             let (i, j, k) = (*i, *j, *k);
+            let mean = 0.5 * (moments[i] + moments[j]);
+            moments[i] = mean;
+            moments[j] = mean;
             let ck: Vector3<f64> = r.column(k).into();
             let mut ei = Vector3::zeros();
             ei[i] = 1.0;
@@ -217,6 +222,10 @@ fn keep_axes_in_degenerate_planes(moments: &[f64; 3], r: &mut Matrix3<f64>) {
             r.set_column(i, &ci);
             r.set_column(j, &cj);
         }
-        _ => *r = Matrix3::identity(),
+        _ => {
+            let mean = (moments[0] + moments[1] + moments[2]) / 3.0;
+            *moments = [mean; 3];
+            *r = Matrix3::identity();
+        }
     }
 }

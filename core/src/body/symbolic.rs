@@ -25,6 +25,30 @@ pub enum Frame {
 }
 
 /// A body described symbolically, with what the macro needs to emit.
+///
+/// Literal values fold to exact rationals, so a body of literals has constant moments and
+/// coefficients; a symmetric body's vanishing coefficient removes its term.
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess_core::body::{Axis, Description, Frame, Part, Shape, SymbolicBody};
+/// use precess_core::sym::{Arena, Rational};
+/// let mut a = Arena::new();
+/// let (m, r, l) = (a.number("2").unwrap(), a.number("0.1").unwrap(), a.number("0.4").unwrap());
+/// let z = a.zero();
+/// let cylinder = Shape::Cylinder { mass: m, radius: r, length: l, axis: Axis::Z };
+/// let d = Description { parts: vec![Part { shape: cylinder, at: [z, z, z] }], pivot: None };
+/// let body = SymbolicBody::new(&mut a, &d).unwrap();
+/// let Frame::Diagonal(moments) = body.frame else { panic!("a cylinder is diagonal") };
+/// // I3 = ½ m r² = 1/100 exactly.
+/// assert_eq!(a.as_rational(moments[2]), Rational::new(1, 100));
+/// let w = [a.parameter("w1"), a.parameter("w2"), a.parameter("w3")];
+/// let g = [a.parameter("g1"), a.parameter("g2"), a.parameter("g3")];
+/// let rhs = body.euler_rhs(&mut a, w, g).unwrap().unwrap();
+/// // ω̇3 = G3 / I3: no ω1 ω2 term, and the reciprocal is the constant 100.
+/// let env = [9.0, 9.0, 9.0, 0.0, 0.0, 0.5];
+/// assert_relative_eq!(a.eval(rhs[2], &env), 50.0);
+/// ```
 #[derive(Clone, Debug)]
 pub struct SymbolicBody {
     /// Mass properties as expressions.
