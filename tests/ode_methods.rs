@@ -32,7 +32,7 @@ fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 /// n fixed steps of the pair's propagated solution (no control).
 fn fixed<P: EmbeddedPair>(h: f64, n: usize) -> [f64; 3] {
     let (mut y, mut t) = ([0.0, 1.0, 1.0], 0.0);
-    let mut k = [[0.0; 3]; 17];
+    let mut k = [[0.0; 3]; 21];
     for _ in 0..n {
         B5.rhs(t, &y, &mut k[0]);
         let mut yn = [0.0; 3];
@@ -68,8 +68,8 @@ fn convergence_orders_match_the_tableaux() {
     assert!((7.6..8.8).contains(&p8), "DOP853 order {p8}");
 }
 
-/// Dense output over one step of size h: local error O(h⁵) for DOPRI5 (order 4 interpolant)
-/// and O(h⁸) for DOP853 (order 7).
+/// Dense output over one step of size h: local error O(h⁵) for DOPRI5 (order 4 interpolant),
+/// O(h⁸) for DOP853 (order 7) and O(h⁹) for Vern9 (order 8).
 #[test]
 fn dense_output_orders() {
     fn mid_error<P: EmbeddedPair>(h: f64) -> f64 {
@@ -85,7 +85,9 @@ fn dense_output_orders() {
     }
     let q5 = observed_order(mid_error::<Dp54>(0.2), mid_error::<Dp54>(0.1));
     let q8 = observed_order(mid_error::<Dp853>(0.8), mid_error::<Dp853>(0.4));
-    eprintln!("dense local orders: DOPRI5 {q5:.2}, DOP853 {q8:.2}");
+    let q9 = observed_order(mid_error::<Vern98>(1.0), mid_error::<Vern98>(0.5));
+    eprintln!("dense local orders: DOPRI5 {q5:.2}, DOP853 {q8:.2}, Vern9 {q9:.2}");
+    assert!((8.4..9.8).contains(&q9), "Vern9 dense {q9}");
     assert!((4.6..5.6).contains(&q5), "DOPRI5 dense {q5}");
     assert!((7.5..8.8).contains(&q8), "DOP853 dense {q8}");
 }
@@ -107,6 +109,22 @@ fn solve_dense_samples_match_the_exact_solution() {
         assert!(err(y, &exact_b5(*t)) <= 1e-10, "t = {t}");
     }
     assert!(stats.steps < 200 && stats.rhs_evals > 12 * stats.steps);
+    let stats = solve_dense::<Vern98, _, 3>(
+        B5,
+        0.0,
+        [0.0, 1.0, 1.0],
+        &times,
+        &mut out,
+        AdaptiveConfig::with_tol(1e-12, 1e-12),
+    )
+    .unwrap();
+    let worst = times
+        .iter()
+        .zip(&out)
+        .map(|(t, y)| err(y, &exact_b5(*t)))
+        .fold(0.0, f64::max);
+    assert!(worst <= 1e-10, "Vern9 dense output error {worst:e}");
+    assert!(stats.steps < 200);
 }
 
 #[test]

@@ -52,7 +52,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
-        let mut k = [[0.0; N]; 17];
+        let mut k = [[0.0; N]; 21];
         sys.rhs(t0, &y0, &mut k[0]);
         let mut me = Self {
             sys,
@@ -63,7 +63,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             k,
             t_prev: t0,
             y_prev: y0,
-            dense: [[0.0; N]; 8],
+            dense: [[0.0; N]; 9],
             dense_ready: false,
             ln_err_prev: 1e-4f64.ln(),
             rejected_last: false,

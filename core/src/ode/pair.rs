@@ -6,11 +6,11 @@ use super::tableau::{
 };
 
 /// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages,
-/// Verner 9(8) 16 plus f at the new point).
-pub type Stages<const N: usize> = [[f64; N]; 17];
+/// Verner 9(8) 16, f at the new point and 4 interpolation stages).
+pub type Stages<const N: usize> = [[f64; N]; 21];
 
 /// Coefficients of the dense-output polynomial of the last step.
-pub type DenseCoeffs<const N: usize> = [[f64; N]; 8];
+pub type DenseCoeffs<const N: usize> = [[f64; N]; 9];
 
 /// An explicit embedded Runge–Kutta pair with FSAL and a continuous extension.
 ///
