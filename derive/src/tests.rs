@@ -84,3 +84,30 @@ fn errors_come_with_a_stub_impl() {
     assert!(code.contains("compile_error"));
     assert!(code.contains("unimplemented"));
 }
+
+#[test]
+fn many_parametric_parts_expand() {
+    // Twelve parts placed by fields in all three coordinates: not diagonal, so the frame is
+    // decomposed at run time, and everything else is straight-line code in the fields.
+    let code = expand(quote! {
+        #[rigid(
+            sphere(mass = m1, radius = r, at = [a, b, c]),
+            sphere(mass = m2, radius = r, at = [-a, b, c]),
+            cuboid(mass = m1 + m2, size = [a, b, c], at = [a, -b, c]),
+            cylinder(mass = m1, radius = r, length = c, at = [b, a, c], axis = x),
+            tube(mass = m2, inner = r / 2.0, outer = r, length = a, at = [c, b, a]),
+            disk(mass = m1, radius = r, at = [a, a, b], axis = y),
+            ring(mass = m2, radius = r, at = [b, b, a]),
+            cone(mass = m1, radius = r, height = c, at = [c, c, a], axis = -x),
+            ellipsoid(mass = m2, semi_axes = [a, b, c], at = [a, c, b]),
+            shell(mass = m1, radius = r, at = [c, a, b]),
+            rod(mass = m2, length = a, at = [b, c, a], axis = z),
+            particle(mass = m1, at = [a, b, -c]),
+            pivot = [0.0, 0.0, -a],
+        )]
+        struct Big { m1: f64, m2: f64, r: f64, a: f64, b: f64, c: f64 }
+    });
+    assert!(!code.contains("compile_error"));
+    assert!(code.contains("principal_frame"));
+    println!("emitted {} bytes", code.len());
+}
