@@ -264,3 +264,30 @@ fn literal_top_follows_the_exact_nutation() {
         "generated top departs from the exact nutation by {worst:e}"
     );
 }
+
+/// Any stepper runs a derived top: RK4 (fixed step) and DOPRI5 land where DOP853 does.
+#[test]
+fn any_stepper_runs_the_generated_top() {
+    use precess_core::ode::{Dopri5, Rk4, Rk4Config};
+    let top = brick();
+    let chart = TopChart::declared(&top);
+    let y0 = [0.1, 0.8, -0.3, 0.4, -0.2, 30.0];
+    let mut reference =
+        Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(1e-12, 1e-12)).unwrap();
+    reference.advance_to(1.0).unwrap();
+    let mut dopri = Dopri5::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(1e-10, 1e-10)).unwrap();
+    dopri.advance_to(1.0).unwrap();
+    let mut rk4 = Rk4::new(&chart, 0.0, y0, Rk4Config { h: 1e-4 }).unwrap();
+    rk4.advance_to(1.0).unwrap();
+    for k in 0..6 {
+        let r = reference.y()[k];
+        assert!(
+            (dopri.y()[k] - r).abs() < 1e-7 * (1.0 + r.abs()),
+            "DOPRI5 component {k}"
+        );
+        assert!(
+            (rk4.y()[k] - r).abs() < 1e-7 * (1.0 + r.abs()),
+            "RK4 component {k}"
+        );
+    }
+}
