@@ -34,3 +34,5 @@ pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod top_tests;

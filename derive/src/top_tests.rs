@@ -1,0 +1,71 @@
+//! What `#[top]` emits, checked on its tokens (run with `--nocapture` to read them).
+
+use quote::quote;
+
+fn expand(input: proc_macro2::TokenStream) -> String {
+    let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
+    crate::expand::derive(&input).to_string()
+}
+
+/// The text of the `Zxz` arm of `accel_in`.
+fn zxz_accel(code: &str) -> &str {
+    let start = code.find("fn accel_in").unwrap_or(0);
+    let rest = &code[start..];
+    let arm = rest.find("AngleSequence :: Zxz =>").unwrap_or(0);
+    let rest = &rest[arm..];
+    let end = rest.find("AngleSequence :: Zyx =>").unwrap_or(rest.len());
+    &rest[..end]
+}
+
+#[test]
+fn symmetric_literal_top_emits_the_short_form() {
+    let code = expand(quote! {
+        #[rigid(
+            body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+            pivot = [0.0, 0.0, 0.0],
+        )]
+        #[top(gravity = 1.0)]
+        struct Reference;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    let accel = zxz_accel(&code);
+    println!("ZXZ q'': {accel}\n");
+    // One sin_cos of θ, no lone sine or cosine, one division (the shared 1/sin θ), and no
+    // read of φ or ψ: the symmetric top's equations do not depend on them.
+    assert_eq!(accel.matches("sin_cos").count(), 1, "{accel}");
+    assert_eq!(
+        accel.matches("f64 :: sin (").count() + accel.matches("f64 :: cos (").count(),
+        0
+    );
+    assert_eq!(accel.matches(" / ").count(), 1, "{accel}");
+    assert!(
+        !accel.contains("state [0usize]") && !accel.contains("state [2usize]"),
+        "{accel}"
+    );
+    // Undeclared torques generate nothing: no user call, no damping.
+    assert!(!code.contains("__u"));
+}
+
+#[test]
+fn declared_user_torque_is_called_and_fields_are_read() {
+    let code = expand(quote! {
+        #[rigid(disk(mass = m, radius = 0.04, at = [0.0, 0.0, h]), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, damping = k, torque = drive)]
+        struct Driven { m: f64, h: f64, k: f64 }
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    let accel = zxz_accel(&code);
+    assert!(accel.contains("drive (self , t"), "{accel}");
+    assert!(accel.contains("self . k") && accel.contains("self . m") && accel.contains("self . h"));
+}
+
+#[test]
+fn top_errors_come_with_a_stub_impl() {
+    let code = expand(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.1]))]
+        #[top(gravity = 9.81)]
+        struct NoPivot;
+    });
+    assert!(code.contains("compile_error"));
+    assert!(code.contains("impl :: precess :: __private :: Top for NoPivot"));
+}
