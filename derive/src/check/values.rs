@@ -1,0 +1,221 @@
+//! Values of the attribute language: literals read exactly, f64 fields as parameters,
+//! arithmetic on them, vectors, tensors, axes. Part of the checker, so every error lands in
+//! the same context with the same wording.
+
+use precess_core::body::{About, Axis};
+use precess_core::sym::{ExprId, SymError, parse_decimal};
+use quote::ToTokens;
+use syn::{BinOp, Expr, Ident, Lit, UnOp};
+
+use super::Checker;
+
+const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
+
+impl Checker<'_, '_> {
+    /// `x`, `y` or `z`.
+    pub(super) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
+        // `-z` reverses the axis: it matters only for the cone, whose apex it points to.
+        let (inner, reversed) = match e {
+            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => (&*u.expr, true),
+            _ => (e, false),
+        };
+        match path_ident(inner).map(|i| i.to_string()).as_deref() {
+            Some("x") => Some((Axis::X, reversed)),
+            Some("y") => Some((Axis::Y, reversed)),
+            Some("z") => Some((Axis::Z, reversed)),
+            _ => {
+                self.cx.error(
+                    e,
+                    "expected `x`, `y` or `z` (or `-x`, `-y`, `-z`) for `axis`",
+                );
+                None
+            }
+        }
+    }
+
+    /// `center` or `pivot`.
+    pub(super) fn about(&mut self, e: &Expr) -> Option<About> {
+        match path_ident(e).map(|i| i.to_string()).as_deref() {
+            Some("center") => Some(About::Center),
+            Some("pivot") => Some(About::Pivot),
+            _ => {
+                self.cx.error(e, "expected `center` or `pivot` for `about`");
+                None
+            }
+        }
+    }
+
+    /// `diag(a, b, c)` or `[[..], [..], [..]]`.
+    pub(super) fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
+        const TENSOR: &str = "expected `diag(I1, I2, I3)` or a full matrix `[[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]]`";
+        match e {
+            Expr::Call(call)
+                if path_ident(&call.func).is_some_and(|i| i == "diag") && call.args.len() == 3 =>
+            {
+                let d: Vec<Option<ExprId>> = call.args.iter().map(|a| self.scalar(a)).collect();
+                let z = self.arena.zero();
+                Some([[d[0]?, z, z], [z, d[1]?, z], [z, z, d[2]?]])
+            }
+            Expr::Array(rows) if rows.elems.len() == 3 => {
+                let r: Vec<Option<[ExprId; 3]>> =
+                    rows.elems.iter().map(|row| self.vector(row)).collect();
+                Some([r[0]?, r[1]?, r[2]?])
+            }
+            _ => {
+                self.cx.error(e, TENSOR);
+                None
+            }
+        }
+    }
+
+    /// `[x, y, z]`.
+    pub fn vector(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
+        match e {
+            Expr::Array(a) if a.elems.len() == 3 => {
+                let v: Vec<Option<ExprId>> = a.elems.iter().map(|x| self.scalar(x)).collect();
+                Some([v[0]?, v[1]?, v[2]?])
+            }
+            _ => {
+                self.cx
+                    .error(e, "expected a vector of three values `[x, y, z]`");
+                None
+            }
+        }
+    }
+
+    /// A scalar value: a literal, an f64 field, or arithmetic on them.
+    pub fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
+        match e {
+            Expr::Lit(l) => self.literal(&l.lit),
+            Expr::Paren(p) => self.scalar(&p.expr),
+            Expr::Group(g) => self.scalar(&g.expr),
+            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => {
+                let v = self.scalar(&u.expr)?;
+                Some(self.arena.neg(v))
+            }
+            Expr::Binary(b) => {
+                let (l, r) = (self.scalar(&b.left), self.scalar(&b.right));
+                let (l, r) = (l?, r?);
+                match b.op {
+                    BinOp::Add(_) => Some(self.arena.add(l, r)),
+                    BinOp::Sub(_) => Some(self.arena.sub(l, r)),
+                    BinOp::Mul(_) => Some(self.arena.mul(l, r)),
+                    // A divisor that is identically zero has no value anywhere.
+                    BinOp::Div(_) => match self.arena.div(l, r) {
+                        Ok(v) => Some(v),
+                        Err(_) => {
+                            self.cx.error(&b.right, "division by a value that is zero");
+                            None
+                        }
+                    },
+                    _ => {
+                        self.cx
+                            .error(b.op, format!("unsupported operator: {VALUES}"));
+                        None
+                    }
+                }
+            }
+            Expr::Path(p) => match p.path.get_ident() {
+                Some(ident) => self.field(ident),
+                None => {
+                    let last = p
+                        .path
+                        .segments
+                        .last()
+                        .map(|s| s.ident.to_string())
+                        .unwrap_or_default();
+                    if ["INFINITY", "NEG_INFINITY", "NAN"].contains(&last.as_str()) {
+                        self.cx
+                            .error(e, format!("non-finite value: {VALUES}, and must be finite"));
+                    } else {
+                        self.cx.error(e, format!("unsupported value: {VALUES}"));
+                    }
+                    None
+                }
+            },
+            _ => {
+                self.cx.error(e, format!("unsupported value: {VALUES}"));
+                None
+            }
+        }
+    }
+
+    /// A number literal, exactly (`0.03` is 3/100).
+    fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
+        let (digits, suffix) = match lit {
+            Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
+            Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
+            _ => {
+                self.cx.error(lit, format!("expected a number: {VALUES}"));
+                return None;
+            }
+        };
+        // Values are f64: another suffix would silently change the type the user wrote.
+        if !suffix.is_empty() && suffix != "f64" {
+            self.cx.error(
+                lit,
+                format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
+            );
+            return None;
+        }
+        match parse_decimal(&digits) {
+            Ok(r) => Some(self.arena.constant(r)),
+            Err(SymError::LiteralOutOfRange { .. }) => {
+                self.cx.error(lit, "literal out of range: values must be finite numbers whose exact value fits 38 significant digits (between about 1e-38 and 1e38)");
+                None
+            }
+            Err(_) => {
+                self.cx
+                    .error(lit, format!("expected a decimal number: {VALUES}"));
+                None
+            }
+        }
+    }
+
+    /// A field name: it must exist and be an f64 (the body's parameters are f64).
+    fn field(&mut self, ident: &Ident) -> Option<ExprId> {
+        let name = ident.to_string();
+        let Some(field) = self.input.field(ident) else {
+            let available: Vec<String> = self
+                .input
+                .fields
+                .iter()
+                .filter(|f| f.is_f64())
+                .map(|f| format!("`{}`", f.ident))
+                .collect();
+            let list = if available.is_empty() {
+                "it has none".to_owned()
+            } else {
+                format!("its f64 fields are {}", available.join(", "))
+            };
+            self.cx.error(
+                ident,
+                format!(
+                    "no field `{name}` in `{}`: {VALUES}; {list}",
+                    self.input.ident
+                ),
+            );
+            return None;
+        };
+        if !field.is_f64() {
+            let ty = field.ty.to_token_stream().to_string();
+            self.cx.error(
+                ident,
+                format!("field `{name}` has type `{ty}`: only f64 fields can be used as values"),
+            );
+            return None;
+        }
+        if !self.fields.iter().any(|f| f == ident) {
+            self.fields.push(ident.clone());
+        }
+        Some(self.arena.parameter(&name))
+    }
+}
+
+/// The single identifier a path expression is, if it is one.
+fn path_ident(e: &Expr) -> Option<&Ident> {
+    match e {
+        Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
+        _ => None,
+    }
+}
