@@ -200,13 +200,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let r0 = top.rotation_in(AngleSequence::Zxz, &[0.0, theta0, 0.0]);
     let q0 = UnitQuaternion::from_matrix(&r0);
     let eul = EulerianTop(&top);
-    let mut ode = Dop853::new(&eul, 0.0, [q0.w, q0.i, q0.j, q0.k, 0.0, 0.0, w3], tol)?;
+    let y0 = EulerianTop::<SpinningTop>::state(&q0, &Vector3::new(0.0, 0.0, w3));
+    let mut ode = Dop853::new(&eul, 0.0, y0, tol)?;
     let inertia = top.inertia();
     let weight_lever = top.center_of_mass() * top.mass() * 9.81;
     let energy = |y: &[f64; 7]| {
-        let q = UnitQuaternion::new_normalize(precess::core_api::nalgebra::Quaternion::new(
-            y[0], y[1], y[2], y[3],
-        ));
+        let q = EulerianTop::<SpinningTop>::attitude(y);
         let w = Vector3::new(y[4], y[5], y[6]);
         0.5 * w.dot(&(inertia * w)) + (q * weight_lever).z
     };
@@ -220,10 +219,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 ode.step(t_end)?;
             }
             let y = ode.dense_at(t)?;
-            let q = UnitQuaternion::new_normalize(precess::core_api::nalgebra::Quaternion::new(
-                y[0], y[1], y[2], y[3],
-            ));
-            let axis = q * Vector3::z();
+            let axis = EulerianTop::<SpinningTop>::attitude(&y) * Vector3::z();
             Ok((
                 axis.z.acos(),
                 unwrap.phi(&axis),
@@ -231,7 +227,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 ode.stats().steps,
             ))
         },
-        energy(&[q0.w, q0.i, q0.j, q0.k, 0.0, 0.0, w3]),
+        energy(&y0),
     )?;
 
     // 3. Splitting: exact free-body flow plus gravity kicks, 100 steps per nutation period

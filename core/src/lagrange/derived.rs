@@ -200,6 +200,19 @@ impl<T: Top> AngleChart for TopChart<'_, T> {
 #[derive(Debug)]
 pub struct EulerianTop<'a, T>(pub &'a T);
 
+impl<T> EulerianTop<'_, T> {
+    /// The state `[q_w, q_x, q_y, q_z, ω₁, ω₂, ω₃]` of an attitude and a body ω.
+    pub fn state(attitude: &UnitQuaternion<f64>, omega: &Vector3<f64>) -> [f64; 7] {
+        let q = attitude.quaternion();
+        [q.w, q.i, q.j, q.k, omega.x, omega.y, omega.z]
+    }
+
+    /// The attitude of a state, normalised.
+    pub fn attitude(y: &[f64; 7]) -> UnitQuaternion<f64> {
+        UnitQuaternion::new_normalize(nalgebra::Quaternion::new(y[0], y[1], y[2], y[3]))
+    }
+}
+
 impl<T: Top> System<7> for EulerianTop<'_, T> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; 7], d: &mut [f64; 7]) {
