@@ -58,3 +58,8 @@ pub mod __private {
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use std::vec;
 }
+
+/// The README's examples, compiled and run as doctests so they cannot go stale.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
