@@ -11,7 +11,7 @@ use super::attitude::{
     check_rigid, euler_rates, rotate_body,
 };
 use super::error::{OdeError, check_span};
-use super::rk4::MAX_FIXED_STEPS;
+use super::rk4::equal_steps;
 use super::system::Stats;
 
 /// An element of the algebra so(3) × ℝᵏ: a rotation part plus a vector part.
@@ -292,28 +292,10 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
     /// [`OdeError::MaxStepsExceeded`] before any work; [`OdeError::NonFiniteState`] if the
     /// state blew up.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if t_stop.is_nan() || t_stop < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t,
-            });
-        }
-        let (t0, span) = (self.t, t_stop - self.t);
-        if span == 0.0 {
+        let Some((n, h)) = equal_steps(self.t, t_stop, self.h)? else {
             return Ok(());
-        }
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
-        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
-        if steps > MAX_FIXED_STEPS as f64 {
-            return Err(OdeError::MaxStepsExceeded {
-                t: self.t,
-                max_steps: MAX_FIXED_STEPS,
-            });
-        }
-        let n = steps as u64;
-        let h = span / n as f64;
+        };
+        let t0 = self.t;
         for i in 1..=n {
             self.step(h, t_stop.next_down());
             self.t = t0 + i as f64 * h;

@@ -111,29 +111,10 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     /// [`OdeError::NonFiniteState`] (checked once per call, at the end, naming the start
     /// time of the interval).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if t_stop.is_nan() || t_stop < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t,
-            });
-        }
-        let (t0, span) = (self.t, t_stop - self.t);
-        if span == 0.0 {
+        let Some((n, h)) = equal_steps(self.t, t_stop, self.h)? else {
             return Ok(());
-        }
-        // Fewest equal steps ≤ h; the small slack keeps span = n·h from adding a step.
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
-        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
-        if steps > MAX_FIXED_STEPS as f64 {
-            return Err(OdeError::MaxStepsExceeded {
-                t: self.t,
-                max_steps: MAX_FIXED_STEPS,
-            });
-        }
-        let n = steps as u64;
-        let h = span / n as f64;
+        };
+        let t0 = self.t;
         for i in 1..=n {
             self.step_unchecked(h, t_stop.next_down());
             self.t = t0 + i as f64 * h;
@@ -144,4 +125,33 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         }
         Ok(())
     }
+}
+
+/// The fewest equal steps no longer than `h_max` that take `t` exactly to `t_stop`, as
+/// (count, step); `None` when there is nothing to do. Shared by the fixed-step methods.
+///
+/// # Errors
+/// [`OdeError::StopBeforeCurrent`] (also for a NaN stop), [`OdeError::NonFiniteTime`],
+/// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`].
+pub(crate) fn equal_steps(t: f64, t_stop: f64, h_max: f64) -> Result<Option<(u64, f64)>, OdeError> {
+    if t_stop.is_nan() || t_stop < t {
+        return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
+    }
+    let span = t_stop - t;
+    if span == 0.0 {
+        return Ok(None);
+    }
+    if !t_stop.is_finite() {
+        return Err(OdeError::NonFiniteTime { t: t_stop });
+    }
+    // The small slack keeps span = n·h from adding a step.
+    let steps = ((span / h_max) * (1.0 - 1e-12)).ceil().max(1.0);
+    if steps > MAX_FIXED_STEPS as f64 {
+        return Err(OdeError::MaxStepsExceeded {
+            t,
+            max_steps: MAX_FIXED_STEPS,
+        });
+    }
+    let n = steps as u64;
+    Ok(Some((n, span / n as f64)))
 }
