@@ -103,6 +103,30 @@ pub(crate) fn stage<S: System<N>, const N: usize>(
     sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
 }
 
+/// The tolerance scale of one component, `atol + rtol·max(|y|, |y_new|)`.
+#[inline]
+pub(crate) fn error_scale(y: f64, y_new: f64, (rtol, atol): (f64, f64)) -> f64 {
+    atol + rtol * y.abs().max(y_new.abs())
+}
+
+/// The scaled local error norm of Hairer's codes, `√(mean((h eᵢ / skᵢ)²))` with skᵢ from
+/// [`error_scale`], for an error estimate `e` (per unit step).
+#[inline]
+pub(crate) fn rms_error<const N: usize>(
+    h: f64,
+    e: &[f64; N],
+    y: &[f64; N],
+    y_new: &[f64; N],
+    tol: (f64, f64),
+) -> f64 {
+    let mut acc = 0.0;
+    for i in 0..N {
+        let r = h * e[i] / error_scale(y[i], y_new[i], tol);
+        acc += r * r;
+    }
+    (acc / N as f64).sqrt()
+}
+
 /// Stages listed one by one with literal indices: once inlined, each row of the constant
 /// tableau is known, so its zeros and loop bounds fold away at compile time.
 macro_rules! stages {
@@ -134,13 +158,7 @@ impl EmbeddedPair for Dp54 {
         stage_state(y, h, DP5_A[6], k, y_new);
         sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
         let e = weighted(&DP5_E, k);
-        let mut acc = 0.0;
-        for i in 0..N {
-            let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
-            let r = h * e[i] / sk;
-            acc += r * r;
-        }
-        ((acc / N as f64).sqrt(), 6)
+        (rms_error(h, &e, y, y_new, (rtol, atol)), 6)
     }
 
     fn finish<S: System<N>, const N: usize>(
@@ -215,7 +233,7 @@ impl EmbeddedPair for Dp853 {
             let e5 = e5v[i];
             let e3 = bk[i]
                 - (DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i]);
-            let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
+            let sk = error_scale(y[i], y_new[i], (rtol, atol));
             e3sum += (e3 / sk) * (e3 / sk);
             e5sum += (e5 / sk) * (e5 / sk);
         }

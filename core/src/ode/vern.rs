@@ -7,7 +7,7 @@
 //! four more evaluations per step, made only when dense output is asked for.
 #![allow(clippy::excessive_precision)]
 
-use super::pair::{DenseCoeffs, EmbeddedPair, Stages, stages, weighted};
+use super::pair::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
 use super::system::System;
 
 /// Nodes c of Verner 9(8): 16 stepping stages, f at the new point, and four stages of
@@ -483,14 +483,11 @@ impl EmbeddedPair for Vern98 {
         stages!(sys, (t, h, t_hi), y, (&VERN9_A, &VERN9_C), k;
             1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
         let (s9, s8) = (weighted(&VERN9_B, k), weighted(&VERN8_B, k));
-        let mut acc = 0.0;
         for i in 0..N {
             y_new[i] = y[i] + h * s9[i];
-            let sk = atol + rtol * y[i].abs().max(y_new[i].abs());
-            let r = h * (s9[i] - s8[i]) / sk;
-            acc += r * r;
         }
-        ((acc / N as f64).sqrt(), 15)
+        let e: [f64; N] = std::array::from_fn(|i| s9[i] - s8[i]);
+        (rms_error(h, &e, y, y_new, (rtol, atol)), 15)
     }
 
     fn finish<S: System<N>, const N: usize>(
