@@ -3,30 +3,12 @@
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
+mod common;
+
+use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::exact::{ExactError, FreeBodyExact, Regime, free_body_flow};
-use precess_core::ode::{AdaptiveConfig, Dp853, System, solve};
+use precess_core::ode::{AdaptiveConfig, Dp853, solve};
 
-struct FreeBody([f64; 3]);
-impl System<3> for FreeBody {
-    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
-        let w = [m[0] / self.0[0], m[1] / self.0[1], m[2] / self.0[2]];
-        d[0] = m[1] * w[2] - m[2] * w[1];
-        d[1] = m[2] * w[0] - m[0] * w[2];
-        d[2] = m[0] * w[1] - m[1] * w[0];
-    }
-}
-
-const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
-const GNI_M1: [f64; 3] = [
-    0.369_110_080_850_460_6,
-    -0.372_846_321_121_433_4,
-    0.851_318_606_069_889_3,
-];
-const GNI_M10: [f64; 3] = [
-    0.407_066_136_588_040_8,
-    0.283_007_426_812_843_7,
-    0.868_449_167_661_561_7,
-];
 const GNI_PERIOD: f64 = 10.731_465_234_882_8;
 const GNI_H: f64 = 0.647_125_279_313_836;
 

@@ -4,6 +4,9 @@
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
+mod common;
+
+use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::ode::{
     Adaptive, AdaptiveConfig, Dop853, Dp54, Dp853, Rk4, Rk4Config, System, Vern98, solve,
 };
@@ -26,28 +29,6 @@ const B5_Y20: [f64; 3] = [
     -0.939_657_079_872_920_396_19,
     -0.342_117_775_400_074_906_53,
     0.741_412_659_619_995_300_78,
-];
-
-/// Free rigid body in angular momentum: ṁ = m × (I⁻¹ m).
-struct FreeBody([f64; 3]);
-impl System<3> for FreeBody {
-    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
-        let w = [m[0] / self.0[0], m[1] / self.0[1], m[2] / self.0[2]];
-        d[0] = m[1] * w[2] - m[2] * w[1];
-        d[1] = m[2] * w[0] - m[0] * w[2];
-        d[2] = m[0] * w[1] - m[1] * w[0];
-    }
-}
-const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
-const GNI_M1: [f64; 3] = [
-    0.369_110_080_850_460_6,
-    -0.372_846_321_121_433_4,
-    0.851_318_606_069_889_3,
-];
-const GNI_M10: [f64; 3] = [
-    0.407_066_136_588_040_8,
-    0.283_007_426_812_843_7,
-    0.868_449_167_661_561_7,
 ];
 
 /// EULR / SciML RigidBody: Euler's equations for I = (0.5, 2, 3) with the torque

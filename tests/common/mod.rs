@@ -2,5 +2,6 @@
 #![allow(dead_code)]
 
 pub mod eulerian;
+pub mod free_body;
 pub mod rng;
 pub mod tree;
