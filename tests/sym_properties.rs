@@ -62,7 +62,7 @@ proptest! {
     fn derivatives_match_central_differences(t in tree(), p in point(), var in 0usize..3) {
         let mut a = Arena::new();
         let Ok(e) = t.build(&mut a) else { return Ok(()) };
-        let Some(s) = a.find_symbol(common::tree::VARS[var]) else { return Ok(()) };
+        let Some(s) = a.find_parameter(common::tree::VARS[var]) else { return Ok(()) };
         let d = a.diff(e, s);
         let at = |x: f64| {
             let mut q = p;

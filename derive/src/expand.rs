@@ -109,11 +109,15 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
     let fields = c
         .fields
         .iter()
-        .filter_map(|f| c.arena.find_symbol(&f.to_string()).map(|s| (s, f.clone())))
+        .filter_map(|f| {
+            c.arena
+                .find_parameter(&f.to_string())
+                .map(|s| (s, f.clone()))
+        })
         .collect();
-    let mut sym = |name: &str| c.arena.parameter(name);
-    let omega_e = [sym("#omega0"), sym("#omega1"), sym("#omega2")];
-    let torque_e = [sym("#torque0"), sym("#torque1"), sym("#torque2")];
+    let mut sym = |name: &str| c.arena.input(name);
+    let omega_e = [sym("omega_1"), sym("omega_2"), sym("omega_3")];
+    let torque_e = [sym("G_1"), sym("G_2"), sym("G_3")];
     let inputs = Inputs {
         fields,
         omega: omega_e.map(|x| c.arena.as_symbol(x)),

@@ -158,14 +158,13 @@ pub fn expand(
         user_torque: None,
     };
     let fields = checked.fields.clone();
-    let names: Vec<(String, Ident)> = fields.iter().map(|f| (f.to_string(), f.clone())).collect();
-    let arena_names: Vec<(SymbolId, String)> = (0..a.symbol_count())
-        .map(SymbolId::from_index)
-        .map(|s| (s, a.symbol(s).name.clone()))
+    // Fields are found by id among the parameters, never by a symbol's shown name.
+    let by_id: Vec<(SymbolId, Ident)> = fields
+        .iter()
+        .filter_map(|f| a.find_parameter(&f.to_string()).map(|s| (s, f.clone())))
         .collect();
     let mut parameter = |s: SymbolId| -> Option<TokenStream> {
-        let (_, name) = arena_names.iter().find(|(id, _)| *id == s)?;
-        let (_, field) = names.iter().find(|(n, _)| n == name)?;
+        let (_, field) = by_id.iter().find(|(id, _)| *id == s)?;
         Some(quote!(self.#field))
     };
     let p = quote!(::precess::__private);

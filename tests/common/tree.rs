@@ -131,7 +131,7 @@ fn trig(x: f64, min_div: &mut f64) -> f64 {
 pub fn arena_env(a: &Arena, vals: &[f64]) -> Vec<f64> {
     let mut env = vec![f64::NAN; a.symbol_count()];
     for (i, name) in VARS.iter().enumerate() {
-        if let Some(s) = a.find_symbol(name) {
+        if let Some(s) = a.find_parameter(name) {
             env[s.index()] = vals[i];
         }
     }

@@ -74,13 +74,9 @@ pub fn emit_top(arena: &mut Arena, e: TopEmit<'_>) -> Result<TokenStream, Lagran
         user_fn,
         krate: p,
     } = e;
-    let user = user_fn.as_ref().map(|_| {
-        [
-            arena.parameter("#u0"),
-            arena.parameter("#u1"),
-            arena.parameter("#u2"),
-        ]
-    });
+    let user = user_fn
+        .as_ref()
+        .map(|_| [arena.input("u0"), arena.input("u1"), arena.input("u2")]);
     scene.user_torque = user;
     let declared = scene.sequence;
     let seq_tokens = |s: AngleSequence| match s {
@@ -184,12 +180,8 @@ pub fn emit_top(arena: &mut Arena, e: TopEmit<'_>) -> Result<TokenStream, Lagran
 
     // The Eulerian form over the attitude matrix and ω.
     let rot: Mat3 =
-        std::array::from_fn(|i| std::array::from_fn(|j| arena.parameter(&format!("#R{i}{j}"))));
-    let omega = [
-        arena.parameter("#w0"),
-        arena.parameter("#w1"),
-        arena.parameter("#w2"),
-    ];
+        std::array::from_fn(|i| std::array::from_fn(|j| arena.input(&format!("R{i}{j}"))));
+    let omega = [arena.input("w0"), arena.input("w1"), arena.input("w2")];
     let rhs = scene.eulerian_rhs(arena, &rot, &omega)?;
     let mut re = Reads {
         map: reads.map.clone(),

@@ -138,7 +138,7 @@ impl EquationsOfMotion {
         let q = Coordinates::symbols(arena, &coords.q);
         let qd = Coordinates::symbols(arena, &coords.rates);
         let qdd = Coordinates::symbols(arena, &coords.accels);
-        let time = arena.find_symbol("t");
+        let time = arena.time_symbol();
         let mut mass = vec![vec![arena.zero(); n]; n];
         let mut forcing = Vec::with_capacity(n);
         let mut residuals = Vec::with_capacity(n);

@@ -69,10 +69,10 @@ impl TopModel {
         let q = [sym(c.q[0]), sym(c.q[1]), sym(c.q[2])];
         let rates = [sym(c.rates[0]), sym(c.rates[1]), sym(c.rates[2])];
         let energy = top.energy(arena);
-        let parameters = (0..arena.symbol_count())
-            .map(SymbolId::from_index)
-            .filter(|&s| arena.symbol(s).kind == SymbolKind::Parameter)
-            .map(|s| (arena.symbol(s).name.clone(), s))
+        let parameters = arena
+            .symbols()
+            .filter(|(_, s)| s.kind == SymbolKind::Parameter)
+            .map(|(id, s)| (s.name.clone(), id))
             .collect();
         TopModel {
             accel: Program::lower(arena, &top.accelerations.accel),
@@ -84,7 +84,7 @@ impl TopModel {
             sequence: top.sequence,
             q,
             rates,
-            time: arena.find_symbol("t"),
+            time: arena.time_symbol(),
             parameters,
             env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
             scratch: RefCell::new(Vec::new()),

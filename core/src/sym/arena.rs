@@ -24,18 +24,20 @@ impl SymbolId {
     pub fn index(self) -> usize {
         self.0 as usize
     }
-
-    /// The symbol at position `i` of a table (valid for `i < Arena::symbol_count()`).
-    pub fn from_index(i: usize) -> SymbolId {
-        SymbolId(i as u32)
-    }
 }
 
 /// What a symbol stands for, which decides how the time derivative treats it.
+///
+/// Only [`SymbolKind::Parameter`] and [`SymbolKind::Coordinate`] symbols are found by name;
+/// time, rates and inputs are identities the engine hands out and looks up by id, so a user
+/// parameter called `t`, `theta_dot` or `omega0` can never stand for them.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
 pub enum SymbolKind {
     /// A constant of the problem (mass, length, g): d/dt is zero.
     Parameter,
+    /// A value the engine feeds in at evaluation (a body rate, a torque, a rotation entry):
+    /// constant for d/dt, never found by name, a fresh symbol each time one is made.
+    Input,
     /// Time itself: d/dt is one.
     Time,
     /// A generalised coordinate q: d/dt is its rate q̇.
@@ -103,7 +105,11 @@ pub struct Arena {
     interned: IdMap<Node, ExprId>,
     symbols: Vec<Symbol>,
     symbol_nodes: Vec<ExprId>,
-    by_name: IdMap<String, SymbolId>,
+    /// Parameters and coordinates by (name, is-coordinate): the only symbols found by name.
+    by_name: IdMap<(String, bool), SymbolId>,
+    /// Every display name in use, so two symbols never print alike.
+    shown: IdMap<String, SymbolId>,
+    time: Option<SymbolId>,
     derivatives: IdMap<SymbolId, SymbolId>,
     pub(crate) memo: super::memo::Memo,
 }
@@ -123,6 +129,8 @@ impl Arena {
             symbols: Vec::new(),
             symbol_nodes: Vec::new(),
             by_name: IdMap::default(),
+            shown: IdMap::default(),
+            time: None,
             derivatives: IdMap::default(),
             memo: Default::default(),
         };
@@ -198,48 +206,77 @@ impl Arena {
         }
     }
 
+    /// A new symbol of `kind`, shown as `name` or, where another symbol already shows that
+    /// name, as `name'` (then `name''` …) with the same LaTeX: no two symbols print alike.
     fn new_symbol(&mut self, name: &str, latex: String, kind: SymbolKind) -> SymbolId {
         let sym = SymbolId(self.symbols.len() as u32);
+        let mut shown = name.to_owned();
+        while self.shown.contains_key(&shown) {
+            shown.push('\'');
+        }
+        self.shown.insert(shown.clone(), sym);
         self.symbols.push(Symbol {
-            name: name.to_owned(),
+            name: shown,
             latex,
             kind,
         });
         let node = self.intern(Node::Sym(sym));
         self.symbol_nodes.push(node);
-        self.by_name.insert(name.to_owned(), sym);
         sym
     }
 
-    /// The symbol `name` of `kind`. A name already taken by a symbol of another kind (a
-    /// struct field called `theta` and the coordinate θ) gets a distinct symbol, named
-    /// `name'` (then `name''` …), with the same LaTeX: kinds never merge.
-    fn named(&mut self, name: &str, kind: SymbolKind) -> ExprId {
-        let mut key = name.to_owned();
-        while let Some(&s) = self.by_name.get(&key) {
-            if self.symbol(s).kind == kind {
-                return self.symbol_nodes[s.index()];
-            }
-            key.push('\'');
+    /// The parameter or coordinate `name` (created on first use). Kinds never merge: a
+    /// struct field called `theta` and the coordinate θ are distinct symbols.
+    fn named(&mut self, name: &str, coordinate: bool) -> ExprId {
+        let key = (name.to_owned(), coordinate);
+        if let Some(&s) = self.by_name.get(&key) {
+            return self.symbol_nodes[s.index()];
         }
-        let latex = latex_name(name);
-        let s = self.new_symbol(&key, latex, kind);
+        let kind = if coordinate {
+            SymbolKind::Coordinate
+        } else {
+            SymbolKind::Parameter
+        };
+        let s = self.new_symbol(name, latex_name(name), kind);
+        self.by_name.insert(key, s);
         self.symbol_nodes[s.index()]
     }
 
     /// The parameter named `name` (created on first use; a second call returns the same).
     pub fn parameter(&mut self, name: &str) -> ExprId {
-        self.named(name, SymbolKind::Parameter)
+        self.named(name, false)
     }
 
     /// The generalised coordinate named `name`.
     pub fn coordinate(&mut self, name: &str) -> ExprId {
-        self.named(name, SymbolKind::Coordinate)
+        self.named(name, true)
     }
 
-    /// The time symbol `t`.
+    /// A fresh input symbol shown as `name`: a value the caller feeds in at evaluation (a
+    /// body rate, a torque component). Each call makes a new symbol, never found by name,
+    /// so it cannot meet a parameter of the same name.
+    pub fn input(&mut self, name: &str) -> ExprId {
+        let s = self.new_symbol(name, latex_name(name), SymbolKind::Input);
+        self.symbol_nodes[s.index()]
+    }
+
+    /// The time symbol, shown as `t` (one per arena, created on first use). A parameter
+    /// named `t` is a different symbol.
     pub fn time(&mut self) -> ExprId {
-        self.named("t", SymbolKind::Time)
+        let s = match self.time {
+            Some(s) => s,
+            None => {
+                let s = self.new_symbol("t", "t".to_owned(), SymbolKind::Time);
+                self.time = Some(s);
+                s
+            }
+        };
+        self.symbol_nodes[s.index()]
+    }
+
+    /// The time symbol if [`Arena::time`] has made it, without making it.
+    pub fn time_symbol(&self) -> Option<SymbolId> {
+        self.time
     }
 
     /// The symbol table entry of `s`.
@@ -257,9 +294,22 @@ impl Arena {
         self.symbols.len()
     }
 
-    /// Looks a symbol up by name.
-    pub fn find_symbol(&self, name: &str) -> Option<SymbolId> {
-        self.by_name.get(name).copied()
+    /// Every symbol, in the order made (the order of an evaluation environment).
+    pub fn symbols(&self) -> impl ExactSizeIterator<Item = (SymbolId, &Symbol)> + '_ {
+        self.symbols
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (SymbolId(i as u32), s))
+    }
+
+    /// The parameter named `name`, if one was made.
+    pub fn find_parameter(&self, name: &str) -> Option<SymbolId> {
+        self.by_name.get(&(name.to_owned(), false)).copied()
+    }
+
+    /// The coordinate named `name`, if one was made.
+    pub fn find_coordinate(&self, name: &str) -> Option<SymbolId> {
+        self.by_name.get(&(name.to_owned(), true)).copied()
     }
 
     /// The time derivative of a coordinate or of one of its derivatives (q → q̇ → q̈ …),
@@ -271,7 +321,7 @@ impl Arena {
         let (of, order) = match self.symbol(s).kind {
             SymbolKind::Coordinate => (s, 1u8),
             SymbolKind::Derivative { of, order } => (of, order.checked_add(1)?),
-            SymbolKind::Parameter | SymbolKind::Time => return None,
+            SymbolKind::Parameter | SymbolKind::Input | SymbolKind::Time => return None,
         };
         let base = self.symbol(of);
         let suffix = match order {

@@ -126,7 +126,7 @@ impl Arena {
         let mut terms = Vec::new();
         for s in self.free_symbols(e) {
             let rate = match self.symbol(s).kind {
-                SymbolKind::Parameter => continue,
+                SymbolKind::Parameter | SymbolKind::Input => continue,
                 SymbolKind::Time => self.one(),
                 SymbolKind::Coordinate | SymbolKind::Derivative { .. } => match self.rate_of(s) {
                     Some(r) => self.symbol_expr(r),
