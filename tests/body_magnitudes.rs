@@ -19,6 +19,9 @@ macro_rules! spheres {
         struct $name;
 
         #[test]
+        // Some literals carry more digits than f64 holds, on purpose: the derive reads them
+        // exactly, and this compares with the f64 Rust rounds them to.
+        #[allow(clippy::excessive_precision)]
         fn $test() {
             check_sphere(&$name, $mass, $radius);
         }
@@ -54,7 +57,10 @@ fn check_sphere(body: &impl RigidBody, mass: f64, radius: f64) {
     assert_eq!(body.mass(), mass);
     for k in 0..3 {
         let moment = body.principal().moments[k];
-        assert!(ulps(moment, closed) <= ULPS, "{moment:e} vs 2/5 M R² = {closed:e}");
+        assert!(
+            ulps(moment, closed) <= ULPS,
+            "{moment:e} vs 2/5 M R² = {closed:e}"
+        );
         assert!(ulps(moment, built.principal().moments[k]) <= ULPS);
         assert!(ulps(body.inertia()[(k, k)], built.inertia()[(k, k)]) <= ULPS);
     }
@@ -62,7 +68,12 @@ fn check_sphere(body: &impl RigidBody, mass: f64, radius: f64) {
     let g = Vector3::new(1.0, -2.0, 0.5);
     let w_dot = body.euler_rhs(&Vector3::new(3.0, 1.0, -2.0), &g);
     for k in 0..3 {
-        assert!(ulps(w_dot[k], g[k] / closed) <= ULPS, "{:e} vs {:e}", w_dot[k], g[k] / closed);
+        assert!(
+            ulps(w_dot[k], g[k] / closed) <= ULPS,
+            "{:e} vs {:e}",
+            w_dot[k],
+            g[k] / closed
+        );
     }
     check_euler(body, 17);
 }
@@ -79,7 +90,12 @@ fn jupiter_as_an_ellipsoid() {
     let (i1, i3) = (m * (a * a + c * c) / 5.0, 2.0 * m * a * a / 5.0);
     let p = Jupiter.principal();
     for (k, want) in [(0, i1), (1, i1), (2, i3)] {
-        assert!(ulps(p.moments[k], want) <= ULPS, "I{} = {:e} vs {want:e}", k + 1, p.moments[k]);
+        assert!(
+            ulps(p.moments[k], want) <= ULPS,
+            "I{} = {:e} vs {want:e}",
+            k + 1,
+            p.moments[k]
+        );
     }
     let built = BodyBuilder::new()
         .part(
@@ -95,7 +111,10 @@ fn jupiter_as_an_ellipsoid() {
     let g = Vector3::new(1e20, -3e20, 2e19);
     let (got, want) = (Jupiter.euler_rhs(&w, &g), built.euler_rhs(&w, &g));
     for k in 0..3 {
-        assert!((got[k] - want[k]).abs() <= 1e-15 * want.norm(), "{got} vs {want}");
+        assert!(
+            (got[k] - want[k]).abs() <= 1e-15 * want.norm(),
+            "{got} vs {want}"
+        );
     }
     // The oblateness coefficient (I3 − I1)/I1 = (a² − c²)/(a² + c²) exactly: only ω₁ω₂
     // feeds ω̇₂ through it, and the symmetric axis has none.

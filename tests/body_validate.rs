@@ -234,7 +234,16 @@ fn overflow_of_f64_is_named_not_taken_for_a_zero_moment() {
         .part(heavy, [0.0; 3])
         .build()
         .unwrap_err();
-    assert!(matches!(e, BodyError::Overflow { quantity: "total mass", .. }), "{e}");
+    assert!(
+        matches!(
+            e,
+            BodyError::Overflow {
+                quantity: "total mass",
+                ..
+            }
+        ),
+        "{e}"
+    );
 }
 
 #[test]
@@ -245,7 +254,10 @@ fn underflow_of_f64_is_named_not_taken_for_a_zero_moment() {
         radius: 1e-10,
     })
     .unwrap_err();
-    assert!(matches!(e, BodyError::Underflow { moments } if moments[2] == 4e-321), "{e}");
+    assert!(
+        matches!(e, BodyError::Underflow { moments } if moments[2] == 4e-321),
+        "{e}"
+    );
     assert!(e.to_string().contains("underflow f64"), "{e}");
     // A point mass at the pivot has truly zero moments: that stays a zero moment.
     let e = BodyBuilder::new()

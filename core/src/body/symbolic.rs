@@ -160,7 +160,6 @@ impl SymbolicBody {
         }
         Ok(Some(rhs))
     }
-
 }
 
 /// A constant expression as one constant: itself if it folded exactly (then rounded once

@@ -165,12 +165,24 @@ mod tests {
     fn out_of_range_is_reported_not_wrapped() {
         // 40 significant digits, and an exponent far beyond any f64.
         let long = "1.234567890123456789012345678901234567890001";
-        assert!(matches!(parse_decimal(long), Err(SymError::LiteralOutOfRange { .. })));
-        assert!(matches!(parse_decimal("1e5000"), Err(SymError::LiteralOutOfRange { .. })));
-        assert!(matches!(parse_decimal("1e-99999999999999999999"), Err(SymError::LiteralOutOfRange { .. })));
+        assert!(matches!(
+            parse_decimal(long),
+            Err(SymError::LiteralOutOfRange { .. })
+        ));
+        assert!(matches!(
+            parse_decimal("1e5000"),
+            Err(SymError::LiteralOutOfRange { .. })
+        ));
+        assert!(matches!(
+            parse_decimal("1e-99999999999999999999"),
+            Err(SymError::LiteralOutOfRange { .. })
+        ));
         // Trailing zeros are not significant: 40 digits, but 1e39.
         assert_eq!(ours("1000000000000000000000000000000000000000"), 1e39);
-        assert!(matches!(parse_decimal("1.2.3"), Err(SymError::InvalidLiteral { .. })));
+        assert!(matches!(
+            parse_decimal("1.2.3"),
+            Err(SymError::InvalidLiteral { .. })
+        ));
         // An exact zero has no sign (Rust's `-0.0` is the negation of the literal `0.0`).
         assert_eq!(parse_decimal("-0.000e-5"), Ok(Rational::ZERO));
     }
@@ -178,8 +190,14 @@ mod tests {
     /// A decimal literal of 1–25 significant digits with the point anywhere in them and an
     /// exponent from below the subnormals to beyond the largest finite f64.
     fn literal() -> impl Strategy<Value = String> {
-        (1usize..=25, any::<u128>(), any::<usize>(), -350i64..=315, any::<bool>()).prop_map(
-            |(len, bits, point, exp, negative)| {
+        (
+            1usize..=25,
+            any::<u128>(),
+            any::<usize>(),
+            -350i64..=315,
+            any::<bool>(),
+        )
+            .prop_map(|(len, bits, point, exp, negative)| {
                 // `len` digits, the first nonzero: exactly `len` significant ones (bar
                 // trailing zeros).
                 let lead = (bits % 9 + 1).to_string();
@@ -189,8 +207,7 @@ mod tests {
                 let int = if point == 0 { "0" } else { &digits[..point] };
                 let sign = if negative { "-" } else { "" };
                 format!("{sign}{int}.{}e{exp}", &digits[point..])
-            },
-        )
+            })
     }
 
     proptest! {

@@ -74,7 +74,7 @@ fn strip(x: u128) -> (u128, i64, i64) {
     let twos = x.trailing_zeros();
     let mut x = x >> twos;
     let mut fives = 0;
-    while x % 5 == 0 {
+    while x.is_multiple_of(5) {
         x /= 5;
         fives += 1;
     }

@@ -161,7 +161,10 @@ impl Checker<'_, '_> {
         match parse_decimal(&digits) {
             // Exact, but the generated code and the checks use the f64 it rounds to.
             Ok(r) if !r.to_f64().is_finite() => {
-                self.cx.error(lit, format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"));
+                self.cx.error(
+                    lit,
+                    format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"),
+                );
                 None
             }
             Ok(r) if r.to_f64() == 0.0 && !r.is_zero() => {

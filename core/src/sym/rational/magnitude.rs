@@ -9,7 +9,7 @@ use std::cmp::Ordering;
 
 use super::big::Big;
 
-const LOG2_5: f64 = 2.321_928_094_887_362_3;
+const LOG2_5: f64 = 2.321_928_094_887_362;
 
 /// A positive value n/d · 2^two · 5^five (n, d > 0).
 #[derive(Clone, Copy, Debug)]
@@ -24,7 +24,9 @@ impl Scaled {
     /// log₂ of the value to about 1e-12: the exponents are bounded by the caps of
     /// `Rational`, so the products below lose nothing that matters at the margins used.
     fn log2(self) -> f64 {
-        (self.n as f64).log2() - (self.d as f64).log2() + self.two as f64 + self.five as f64 * LOG2_5
+        (self.n as f64).log2() - (self.d as f64).log2()
+            + self.two as f64
+            + self.five as f64 * LOG2_5
     }
 
     /// The value as a ratio of big integers times a power of two: `(num, den, two)`.
@@ -95,7 +97,11 @@ fn round(m: u128, e: i64, sticky: bool) -> f64 {
 
 /// q · 2^ulp as an `f64`, for q ≤ 2⁵³ (q < 2⁵² only with the subnormal unit 2⁻¹⁰⁷⁴).
 fn compose(q: u128, ulp: i64) -> f64 {
-    let (q, ulp) = if q == 1 << 53 { (q >> 1, ulp + 1) } else { (q, ulp) };
+    let (q, ulp) = if q == 1 << 53 {
+        (q >> 1, ulp + 1)
+    } else {
+        (q, ulp)
+    };
     if q < 1 << 52 {
         return f64::from_bits(q as u64);
     }
@@ -161,8 +167,14 @@ mod tests {
     fn compares_exactly_near_equality() {
         // 10/8 · 2 = 5/2 · 1: equal through different exponents.
         assert_eq!(compare(v(5, 1, -1, 0), v(1, 1, -1, 1)), Ordering::Equal);
-        assert_eq!(compare(v(1, 3, 0, 0), v(333_333, 1, -6, -6)), Ordering::Greater);
-        assert_eq!(compare(v(1, 1, 2322, 0), v(1, 1, 0, 1000)), Ordering::Greater);
+        assert_eq!(
+            compare(v(1, 3, 0, 0), v(333_333, 1, -6, -6)),
+            Ordering::Greater
+        );
+        assert_eq!(
+            compare(v(1, 1, 2322, 0), v(1, 1, 0, 1000)),
+            Ordering::Greater
+        );
         assert_eq!(compare(v(1, 1, 2321, 0), v(1, 1, 0, 1000)), Ordering::Less);
     }
 }

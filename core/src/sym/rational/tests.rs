@@ -39,7 +39,10 @@ fn leaves_i128_exactly_and_comes_back() {
     assert!(e40.is_integer() && !e40.recip().unwrap().is_integer());
     let small = q(3, 7).checked_mul(pow10(-40)).unwrap();
     assert_eq!(small.to_string(), "3e-40/7");
-    assert_eq!(small.to_f64(), "4.285714285714285714285714e-41".parse().unwrap());
+    assert_eq!(
+        small.to_f64(),
+        "4.285714285714285714285714e-41".parse().unwrap()
+    );
 }
 
 #[test]
@@ -99,9 +102,8 @@ fn order_is_exact_where_f64_cannot_tell() {
 }
 
 fn any_rational() -> impl Strategy<Value = Rational> {
-    (-1_000_000i128..1_000_000, 1i128..1_000_000, -400i64..400).prop_map(|(n, d, e)| {
-        q(n, d).checked_mul(pow10(e)).unwrap_or(Rational::ZERO)
-    })
+    (-1_000_000i128..1_000_000, 1i128..1_000_000, -400i64..400)
+        .prop_map(|(n, d, e)| q(n, d).checked_mul(pow10(e)).unwrap_or(Rational::ZERO))
 }
 
 proptest! {
