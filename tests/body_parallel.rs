@@ -1,15 +1,16 @@
 //! The parallel-axis theorem and composites, against direct summation over particles.
 
-mod body_common;
+mod common;
 
-use body_common::*;
+use common::body::*;
+use common::rng::Rng;
 use nalgebra::{Matrix3, Vector3};
 use precess::core_api::body::{Axis, BodyBuilder, Numeric, RigidBody, Shape, point_tensor};
 
 #[test]
 fn theorem_against_direct_summation() {
     // I_O = I_G + M (|d|² E − d dᵀ), d = G − O, for an arbitrary lumpy particle set.
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     let ps: Vec<Particle> = (0..500)
         .map(|_| (rng.uniform(0.1, 2.0), rng.vector(-1.0, 1.0)))
         .collect();

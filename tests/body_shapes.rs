@@ -1,9 +1,9 @@
 //! Every shape's inertia tensor against its textbook closed form and against direct
 //! summation over a particle lattice of the same solid.
 
-mod body_common;
+mod common;
 
-use body_common::*;
+use common::body::*;
 use nalgebra::{Matrix3, Vector3};
 use precess::core_api::body::{Axis, BodyBuilder, RigidBody, Shape};
 
@@ -70,7 +70,7 @@ fn shell() {
         "shell",
         Shape::Shell { mass: M, radius: r },
         [i; 3],
-        body_common::shell(M, r, 400),
+        common::body::shell(M, r, 400),
         1e-4,
     );
 }
@@ -92,7 +92,7 @@ fn cuboid() {
         "cuboid",
         shape,
         closed,
-        body_common::cuboid(M, a, b, c, N),
+        common::body::cuboid(M, a, b, c, N),
         1e-4,
     );
 }
@@ -155,7 +155,7 @@ fn disk() {
         axis: Axis::Z,
     };
     let closed = [0.25 * M * r * r, 0.25 * M * r * r, 0.5 * M * r * r];
-    check("disk", shape, closed, body_common::disk(M, r, 400), 1e-5);
+    check("disk", shape, closed, common::body::disk(M, r, 400), 1e-5);
 }
 
 #[test]
@@ -168,7 +168,7 @@ fn disk_along_y() {
     };
     let closed = [0.25 * M * r * r, 0.5 * M * r * r, 0.25 * M * r * r];
     // z → y: (x, y, z) ↦ (y, z, x) is a proper rotation taking the z axis to y.
-    let lattice: Vec<Particle> = body_common::disk(M, r, 400)
+    let lattice: Vec<Particle> = common::body::disk(M, r, 400)
         .into_iter()
         .map(|(m, x)| (m, Vector3::new(x.y, x.z, x.x)))
         .collect();
@@ -187,7 +187,7 @@ fn ring() {
         "ring",
         shape,
         [0.5 * M * r * r, 0.5 * M * r * r, M * r * r],
-        body_common::ring(M, r, 1000),
+        common::body::ring(M, r, 1000),
         1e-12,
     );
 }
@@ -217,7 +217,7 @@ fn rod_as_part_of_a_body() {
     let s = 0.4 * r * r;
     let closed =
         Matrix3::from_diagonal(&Vector3::new(M * l * l / 12.0 + s, M * l * l / 12.0 + s, s));
-    let mut lattice = body_common::rod(M, l, 2000);
+    let mut lattice = common::body::rod(M, l, 2000);
     lattice.extend(ellipsoid(1.0, r, r, r, 60));
     let e_closed = rel_err(&b.inertia(), &closed);
     let e_lattice = rel_err(&b.inertia(), &tensor_about(&lattice, &Vector3::zeros()));

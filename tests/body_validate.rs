@@ -207,3 +207,95 @@ fn mass_on_a_line_has_a_zero_moment() {
 fn empty_body() {
     assert_eq!(BodyBuilder::new().build().unwrap_err(), BodyError::NoParts);
 }
+
+#[test]
+fn overflow_of_f64_is_named_not_taken_for_a_zero_moment() {
+    // Finite values whose moment of inertia passes the largest f64: 2/5 M R² = 4e309.
+    let e = one(Shape::Sphere {
+        mass: 1e296,
+        radius: 1e7,
+    })
+    .unwrap_err();
+    assert_eq!(
+        e,
+        BodyError::Overflow {
+            quantity: "inertia tensor about the centre of mass",
+            value: f64::INFINITY
+        }
+    );
+    assert!(e.to_string().contains("overflows f64"), "{e}");
+    // Two finite masses whose sum does not fit.
+    let heavy = Shape::Sphere {
+        mass: 1e308,
+        radius: 1e-200,
+    };
+    let e = BodyBuilder::new()
+        .part(heavy.clone(), [0.0; 3])
+        .part(heavy, [0.0; 3])
+        .build()
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            BodyError::Overflow {
+                quantity: "total mass",
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn underflow_of_f64_is_named_not_taken_for_a_zero_moment() {
+    // 2/5 M R² = 4e-321, subnormal: the digits are gone and 1/I overflows.
+    let e = one(Shape::Sphere {
+        mass: 1e-300,
+        radius: 1e-10,
+    })
+    .unwrap_err();
+    assert!(
+        matches!(e, BodyError::Underflow { moments } if moments[2] == 4e-321),
+        "{e}"
+    );
+    assert!(e.to_string().contains("underflow f64"), "{e}");
+    // A point mass at the pivot has truly zero moments: that stays a zero moment.
+    let e = BodyBuilder::new()
+        .part(Shape::Particle { mass: 1e-300 }, [0.0; 3])
+        .pivot([0.0; 3])
+        .build()
+        .unwrap_err();
+    assert_eq!(e, BodyError::ZeroPrincipalMoment { moments: [0.0; 3] });
+    // Light but not too light: the smallest normal range still works.
+    assert!(
+        one(Shape::Sphere {
+            mass: 1e-290,
+            radius: 1e-5
+        })
+        .is_ok()
+    );
+}
+
+#[test]
+fn a_parametric_zero_moment_names_its_axis() {
+    use precess::core_api::body::{Description, Part, SymbolicBody};
+    use precess::core_api::sym::Arena;
+    let mut a = Arena::new();
+    let (mass, length) = (a.parameter("m"), a.parameter("l"));
+    let z = a.zero();
+    let rod = Shape::Rod {
+        mass,
+        length,
+        axis: Axis::X,
+    };
+    let d = Description {
+        parts: vec![Part {
+            shape: rod,
+            at: [z, z, z],
+        }],
+        pivot: None,
+    };
+    let e = SymbolicBody::new(&mut a, &d).unwrap_err();
+    assert_eq!(e, BodyError::IdenticallyZeroMoment { axis: "x" });
+    assert!(!e.to_string().contains("NaN"), "{e}");
+}

@@ -1,9 +1,9 @@
 //! Derived bodies of literals: mass properties against closed forms, the principal frame,
 //! and the generated Euler's equations against the generic I⁻¹ (G − ω × I ω).
 
-mod body_common;
+mod common;
 
-use body_common::Rng;
+use common::body::check_euler;
 use nalgebra::{Matrix3, Vector3};
 use precess::prelude::*;
 
@@ -52,27 +52,6 @@ struct Explicit;
     pivot = [0.0, 0.0, 0.0],
 )]
 struct Everything;
-
-fn generic_rhs(i: &Matrix3<f64>, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
-    i.try_inverse().expect("invertible") * (g - w.cross(&(i * w)))
-}
-
-/// Checks euler_rhs against the generic form in description axes at 10⁴ random states.
-fn check_euler(body: &impl RigidBody, seed: u64) -> f64 {
-    let mut rng = Rng(seed);
-    let p = body.principal();
-    let r = *p.rotation.matrix();
-    let i = body.inertia();
-    let mut worst = 0.0f64;
-    for _ in 0..10_000 {
-        let (w, g) = (rng.vector(-10.0, 10.0), rng.vector(-1.0, 1.0));
-        let got = body.euler_rhs(&w, &g);
-        let want = r.transpose() * generic_rhs(&i, &(r * w), &(r * g));
-        worst = worst.max((got - want).norm() / want.norm().max(1.0));
-    }
-    assert!(worst < 1e-12, "euler_rhs off by {worst:e}");
-    worst
-}
 
 #[test]
 fn top_matches_its_closed_form() {

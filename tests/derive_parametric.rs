@@ -1,9 +1,9 @@
 //! Derived bodies with field parameters: values computed from the fields at run time,
 //! checked against closed forms at several parameter values, and validated at run time.
 
-mod body_common;
+mod common;
 
-use body_common::Rng;
+use common::body::check_euler;
 use nalgebra::{Matrix3, Vector3};
 use precess::prelude::*;
 
@@ -41,26 +41,6 @@ struct Dumbbell {
 #[rigid(body(mass = 1.0, inertia = [[i1, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.5]]))]
 struct Tensor {
     i1: f64,
-}
-
-fn generic_rhs(i: &Matrix3<f64>, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
-    i.try_inverse().expect("invertible") * (g - w.cross(&(i * w)))
-}
-
-fn check_euler(body: &impl RigidBody, seed: u64) -> f64 {
-    let mut rng = Rng(seed);
-    let p = body.principal();
-    let r = *p.rotation.matrix();
-    let i = body.inertia();
-    let mut worst = 0.0f64;
-    for _ in 0..10_000 {
-        let (w, g) = (rng.vector(-10.0, 10.0), rng.vector(-1.0, 1.0));
-        let got = body.euler_rhs(&w, &g);
-        let want = r.transpose() * generic_rhs(&i, &(r * w), &(r * g));
-        worst = worst.max((got - want).norm() / want.norm().max(1.0));
-    }
-    assert!(worst < 1e-12, "euler_rhs off by {worst:e}");
-    worst
 }
 
 #[test]

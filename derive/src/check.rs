@@ -304,10 +304,12 @@ fn report(cx: &mut Ctxt, spans: &Spans, e: &BodyError) {
         ),
         BodyError::PivotRequired { part } => (spans.of(part, "about"), "`about = pivot` needs a pivot: declare `pivot = [x, y, z]`, or give the tensor `about = center`".to_owned()),
         BodyError::ZeroTotalMass => (spans.whole.clone(), "the total mass is zero: masses must be positive".to_owned()),
-        BodyError::ZeroPrincipalMoment { moments } if moments.iter().any(|m| m.is_nan()) => (
+        BodyError::IdenticallyZeroMoment { .. } => (
             spans.whole.clone(),
             "the body has a principal moment that is zero whatever its fields: all its mass lies on a line through the reference point; Euler's equations need three positive moments".to_owned(),
         ),
+        BodyError::Overflow { quantity, value } => (spans.whole.clone(), format!("the body's {quantity} overflows f64 (it evaluates to {value}): its values are too large for f64, whose largest finite value is about 1.8e308; use larger units")),
+        BodyError::Underflow { moments } => (spans.whole.clone(), format!("the body's principal moments {moments:?} underflow f64: its values are too small for f64, whose smallest normal value is about 2.2e-308; use smaller units")),
         BodyError::ZeroPrincipalMoment { moments } => (
             spans.whole.clone(),
             format!("the body has a zero principal moment (moments {moments:?}): all its mass lies on a line through the reference point; Euler's equations need three positive moments"),

@@ -145,7 +145,7 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
             let (m, r) = (vector(&m), matrix(&rows));
             quote!(#p::Principal { moments: #m, rotation: #p::Rotation3::from_matrix_unchecked(#r) })
         }
-        Frame::Runtime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
+        Frame::DecomposedAtRunTime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
     };
     let rhs = match c.body.euler_rhs(&mut c.arena, omega_e, torque_e) {
         Ok(Some(rhs)) => body(&mut c, &inputs, &rhs, vector),

@@ -88,7 +88,7 @@ fn positive(ck: &mut Checker, value: &Expr, what: &str, strict: bool) -> Option<
     let v = ck.scalar(value)?;
     if let Some(r) = ck.arena.as_rational(v) {
         let bad = if strict {
-            r.numer() <= 0
+            r.is_negative() || r.is_zero()
         } else {
             r.is_negative()
         };

@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod body;
 pub mod eulerian;
 pub mod free_body;
 pub mod rng;

@@ -1,4 +1,7 @@
-//! A seedable generator for test states (SplitMix64), so failures reproduce.
+//! A seedable generator for test states (SplitMix64), so failures reproduce: the one
+//! generator of the integration tests.
+
+use nalgebra::Vector3;
 
 pub struct Rng(u64);
 
@@ -18,5 +21,14 @@ impl Rng {
     /// Uniform in `[lo, hi)`.
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A vector with components uniform in `[lo, hi)`.
+    pub fn vector(&mut self, lo: f64, hi: f64) -> Vector3<f64> {
+        Vector3::new(
+            self.uniform(lo, hi),
+            self.uniform(lo, hi),
+            self.uniform(lo, hi),
+        )
     }
 }

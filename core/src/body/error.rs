@@ -108,6 +108,35 @@ pub enum BodyError {
     /// The masses add up to zero.
     #[error("the total mass is zero")]
     ZeroTotalMass,
+    /// A mass property of a body whose values are all finite is not: it overflows `f64`
+    /// (NaN here comes from ∞ − ∞ or 0 · ∞ in the sums).
+    #[error(
+        "the {quantity} overflows f64 (it evaluates to {value}): the body's values are too large for f64, whose largest finite value is about 1.8e308; express them in larger units"
+    )]
+    Overflow {
+        /// What overflows, e.g. "inertia tensor about the reference point".
+        quantity: &'static str,
+        /// Its first non-finite value.
+        value: f64,
+    },
+    /// The principal moments underflow `f64`: the body is so light and small that m l² falls
+    /// below the smallest normal `f64`, where digits are lost and 1/I can overflow.
+    #[error(
+        "the principal moments {moments:?} underflow f64: the body's values are too small for f64, whose smallest normal value is about 2.2e-308; express them in smaller units"
+    )]
+    Underflow {
+        /// The principal moments about the reference point, ascending.
+        moments: [f64; 3],
+    },
+    /// A body with parameters whose moment about a description axis is identically zero:
+    /// zero whatever values the parameters take.
+    #[error(
+        "the body's moment about the {axis} axis is zero whatever its parameters: all its mass lies on a line through the reference point"
+    )]
+    IdenticallyZeroMoment {
+        /// The description axis, `x`, `y` or `z`.
+        axis: &'static str,
+    },
     /// The whole body has a zero principal moment about its reference point: all its mass
     /// lies on a line through it, and Euler's equations divide by that moment.
     #[error(

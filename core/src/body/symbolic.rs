@@ -19,9 +19,9 @@ pub enum Frame {
     Diagonal([ExprId; 3]),
     /// A constant tensor that is not diagonal, decomposed now.
     Constant(Principal),
-    /// A tensor depending on parameters and not symbolically diagonal: decomposed at run
-    /// time.
-    Runtime,
+    /// A tensor depending on parameters and not symbolically diagonal: the generated code
+    /// decomposes it when called, from the parameters' values then.
+    DecomposedAtRunTime,
 }
 
 /// A body described symbolically, with what the macro needs to emit.
@@ -66,8 +66,10 @@ impl SymbolicBody {
     /// [`Description::validate`]); this checks only what holds for every parameter value.
     ///
     /// # Errors
-    /// As [`mass_properties`], and [`BodyError::ZeroPrincipalMoment`] if a moment is
-    /// identically zero.
+    /// As [`mass_properties`]; for a body of literals, [`BodyError::Overflow`] if a mass
+    /// property rounds past the largest `f64` and [`BodyError::ZeroPrincipalMoment`] if a
+    /// moment is zero; for a body with parameters, [`BodyError::IdenticallyZeroMoment`] if a
+    /// moment is zero whatever their values.
     pub fn new(arena: &mut Arena, d: &Description<ExprId>) -> Result<SymbolicBody, BodyError> {
         let props = mass_properties(arena, d)?;
         let t = props.inertia;
@@ -77,21 +79,23 @@ impl SymbolicBody {
             .chain(props.center.iter())
             .chain([&props.mass])
             .all(|&e| arena.free_symbols(e).is_empty());
+        if constant {
+            finite_constants(arena, &props)?;
+        }
         let diagonal = [(0, 1), (0, 2), (1, 2)]
             .iter()
             .all(|&(i, j)| arena.expand(t[i][j]) == arena.zero());
         let frame = if diagonal {
             let moments = [t[0][0], t[1][1], t[2][2]];
-            if moments.iter().any(|&m| arena.expand(m) == arena.zero()) {
-                let v = moments.map(|m| arena.eval(m, &[]));
-                return Err(BodyError::ZeroPrincipalMoment { moments: v });
+            if let Some(i) = (0..3).find(|&i| arena.expand(moments[i]) == arena.zero()) {
+                return Err(zero_moment(arena, constant, &moments, i));
             }
             Frame::Diagonal(moments)
         } else if constant {
             let numeric = t.map(|row| row.map(|e| arena.eval(e, &[])));
             Frame::Constant(principal_frame(&matrix(&numeric)))
         } else {
-            Frame::Runtime
+            Frame::DecomposedAtRunTime
         };
         Ok(SymbolicBody {
             props,
@@ -101,12 +105,14 @@ impl SymbolicBody {
     }
 
     /// Euler's equations ω̇ = (k1 ω2 ω3 + G1/I1, …) with kᵢ = (I_j − I_k)/I_i, as expressions
-    /// in `omega`, `torque` and the parameters; `None` for a [`Frame::Runtime`] body. For a
-    /// constant body every coefficient is a constant (no division is left), and a
+    /// in `omega`, `torque` and the parameters; `None` for a [`Frame::DecomposedAtRunTime`]
+    /// body. For a constant body every coefficient is a constant (no division is left), and a
     /// coefficient that vanishes (a symmetric body) removes its term.
     ///
     /// # Errors
-    /// [`BodyError::ZeroPrincipalMoment`] if a moment is identically zero.
+    /// [`BodyError::ZeroPrincipalMoment`] (literals) or [`BodyError::IdenticallyZeroMoment`]
+    /// (parameters) if a moment is zero; [`BodyError::Overflow`] if a moment or coefficient
+    /// of a constant body is not a finite `f64`.
     pub fn euler_rhs(
         &self,
         arena: &mut Arena,
@@ -114,13 +120,16 @@ impl SymbolicBody {
         torque: [ExprId; 3],
     ) -> Result<Option<[ExprId; 3]>, BodyError> {
         let moments: [ExprId; 3] = match &self.frame {
-            Frame::Runtime => return Ok(None),
+            Frame::DecomposedAtRunTime => return Ok(None),
             Frame::Diagonal(m) => *m,
             Frame::Constant(p) => {
                 let m: Vector3<f64> = p.moments;
                 let mut out = [arena.zero(); 3];
-                for (o, &v) in out.iter_mut().zip(m.iter()) {
-                    *o = arena.float(v).map_err(|_| zero_moment(&m))?;
+                for (o, &value) in out.iter_mut().zip(m.iter()) {
+                    *o = arena.float(value).map_err(|_| BodyError::Overflow {
+                        quantity: "principal moments",
+                        value,
+                    })?;
                 }
                 out
             }
@@ -134,16 +143,16 @@ impl SymbolicBody {
             } else {
                 diff
             };
-            let mut coefficient = arena
-                .div(diff, moments[i])
-                .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })?;
-            let mut inverse = arena
-                .recip(moments[i])
-                .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })?;
+            let (Ok(coefficient), Ok(inverse)) =
+                (arena.div(diff, moments[i]), arena.recip(moments[i]))
+            else {
+                return Err(zero_moment(arena, self.constant, &moments, i));
+            };
+            let (mut coefficient, mut inverse) = (coefficient, inverse);
             if self.constant {
-                // Fold to one correctly rounded constant each: no division at run time.
-                coefficient = self.fold(arena, coefficient)?;
-                inverse = self.fold(arena, inverse)?;
+                // Fold to one constant each: no division at run time.
+                coefficient = fold(arena, coefficient, "coefficients of Euler's equations")?;
+                inverse = fold(arena, inverse, "inverse principal moments")?;
             }
             let gyro = arena.product(&[coefficient, omega[j], omega[k]]);
             let drive = arena.mul(inverse, torque[i]);
@@ -151,21 +160,56 @@ impl SymbolicBody {
         }
         Ok(Some(rhs))
     }
-
-    fn fold(&self, arena: &mut Arena, e: ExprId) -> Result<ExprId, BodyError> {
-        if arena.as_rational(e).is_some() {
-            return Ok(e);
-        }
-        let v = arena.eval(e, &[]);
-        arena
-            .float(v)
-            .map_err(|_| BodyError::ZeroPrincipalMoment { moments: [0.0; 3] })
-    }
 }
 
-fn zero_moment(m: &Vector3<f64>) -> BodyError {
-    BodyError::ZeroPrincipalMoment {
-        moments: [m[0], m[1], m[2]],
+/// A constant expression as one constant: itself if it folded exactly (then rounded once
+/// when emitted), else its value, rounded at each step where the exact folding overflowed.
+fn fold(arena: &mut Arena, e: ExprId, quantity: &'static str) -> Result<ExprId, BodyError> {
+    if arena.as_rational(e).is_some() {
+        return Ok(e);
+    }
+    let value = arena.eval(e, &[]);
+    arena
+        .float(value)
+        .map_err(|_| BodyError::Overflow { quantity, value })
+}
+
+/// Every mass property of a body of literals must be a finite `f64` once rounded.
+fn finite_constants(arena: &Arena, props: &MassProperties<ExprId>) -> Result<(), BodyError> {
+    let quantities: [(&'static str, Vec<ExprId>); 4] = [
+        ("total mass", vec![props.mass]),
+        ("centre of mass", props.center.to_vec()),
+        (
+            "inertia tensor about the centre of mass",
+            props.inertia_cm.iter().flatten().copied().collect(),
+        ),
+        (
+            "inertia tensor about the reference point",
+            props.inertia.iter().flatten().copied().collect(),
+        ),
+    ];
+    for (quantity, exprs) in quantities {
+        for e in exprs {
+            let value = arena.eval(e, &[]);
+            if !value.is_finite() {
+                return Err(BodyError::Overflow { quantity, value });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The error for the zero moment about description axis `i`: with its values for a body of
+/// literals, by axis for one with parameters (whose moments have no value here).
+fn zero_moment(arena: &Arena, constant: bool, moments: &[ExprId; 3], i: usize) -> BodyError {
+    if constant {
+        let mut v = moments.map(|m| arena.eval(m, &[]));
+        v.sort_by(f64::total_cmp);
+        BodyError::ZeroPrincipalMoment { moments: v }
+    } else {
+        BodyError::IdenticallyZeroMoment {
+            axis: ["x", "y", "z"][i % 3],
+        }
     }
 }
 

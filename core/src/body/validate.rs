@@ -27,7 +27,9 @@ impl Description<f64> {
             finite_pivot(p)?;
         }
         let props = mass_properties(&mut Numeric, self)?;
+        finite_properties(&props)?;
         let principal = principal_frame(&matrix(&props.inertia));
+        normal_moments(self, &principal)?;
         no_zero_moment(&principal)?;
         Ok((props, principal))
     }
@@ -146,6 +148,60 @@ fn explicit_tensor(part: usize, t: &[[f64; 3]; 3]) -> Result<(), BodyError> {
     }
     if moments[0] + moments[1] < moments[2] * (1.0 - TOL) {
         return Err(BodyError::TriangleInequality { part, moments });
+    }
+    Ok(())
+}
+
+/// Finite values must give finite mass properties: anything else is an overflow of f64
+/// (say so, rather than let ∞ reach the moment checks and pass for a zero moment).
+fn finite_properties(props: &MassProperties<f64>) -> Result<(), BodyError> {
+    let quantities: [(&'static str, Vec<f64>); 4] = [
+        ("total mass", vec![props.mass]),
+        ("centre of mass", props.center.to_vec()),
+        (
+            "inertia tensor about the centre of mass",
+            props.inertia_cm.iter().flatten().copied().collect(),
+        ),
+        (
+            "inertia tensor about the reference point",
+            props.inertia.iter().flatten().copied().collect(),
+        ),
+    ];
+    for (quantity, values) in quantities {
+        if let Some(&value) = values.iter().find(|v| !v.is_finite()) {
+            return Err(BodyError::Overflow { quantity, value });
+        }
+    }
+    Ok(())
+}
+
+/// The principal moments must be finite and, unless they are truly zero, normal `f64`s:
+/// a moment below 2.2e-308 has lost digits to underflow (and 1/I may overflow).
+///
+/// All moments are exactly zero only when every part is a particle at one point, which is
+/// the reference point (then [`no_zero_moment`] says so); a body with extent whose largest
+/// moment is below the normal range has underflowed, as has a smallest moment that is not
+/// negligible against the largest yet subnormal.
+fn normal_moments(d: &Description<f64>, p: &Principal) -> Result<(), BodyError> {
+    let moments = ascending(p);
+    if let Some(&value) = moments.iter().find(|m| !m.is_finite()) {
+        return Err(BodyError::Overflow {
+            quantity: "principal moments",
+            value,
+        });
+    }
+    let solid = d
+        .parts
+        .iter()
+        .any(|part| !matches!(part.shape, Shape::Particle { .. }));
+    let first = d.parts.first().map(|part| part.at);
+    let spread = d.parts.iter().any(|part| Some(part.at) != first);
+    let off_pivot = d.pivot.is_some() && d.pivot != first;
+    let extent = solid || spread || off_pivot;
+    let all_underflow = extent && moments[2] < f64::MIN_POSITIVE;
+    let smallest_underflows = moments[0] > TOL * moments[2] && moments[0] < f64::MIN_POSITIVE;
+    if all_underflow || smallest_underflows {
+        return Err(BodyError::Underflow { moments });
     }
     Ok(())
 }

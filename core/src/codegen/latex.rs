@@ -72,10 +72,10 @@ impl Latex<'_> {
         let sign = if coeff.is_negative() { "-" } else { "" };
         let c = coeff.abs_value();
         // A lone sum needs no parentheses as a whole numerator or denominator of \frac.
-        let render = |list: &[(ExprId, i64)], k: i128, alone: bool| -> String {
+        let render = |list: &[(ExprId, i64)], k: &str, alone: bool| -> String {
             let mut parts: Vec<String> = Vec::new();
-            if k != 1 || list.is_empty() {
-                parts.push(k.to_string());
+            if k != "1" || list.is_empty() {
+                parts.push(k.to_owned());
             }
             for &(e, n) in list {
                 parts.push(
@@ -92,12 +92,13 @@ impl Latex<'_> {
             }
             parts.join(" ")
         };
-        let in_frac = !den.is_empty() || c.denom() != 1;
-        let top = render(&num, c.numer(), in_frac);
+        let (c_top, c_bottom) = fraction(c);
+        let in_frac = !den.is_empty() || c_bottom != "1";
+        let top = render(&num, &c_top, in_frac);
         if !in_frac {
             return format!("{sign}{top}");
         }
-        let bottom = render(&den, c.denom(), true);
+        let bottom = render(&den, &c_bottom, true);
         format!("{sign}\\frac{{{top}}}{{{bottom}}}")
     }
 
@@ -145,10 +146,29 @@ impl Latex<'_> {
 
 fn rational(r: Rational) -> String {
     let sign = if r.is_negative() { "-" } else { "" };
-    let a = r.abs_value();
-    if a.is_integer() {
-        format!("{sign}{}", a.numer())
-    } else {
-        format!("{sign}\\frac{{{}}}{{{}}}", a.numer(), a.denom())
+    match fraction(r) {
+        (top, bottom) if bottom == "1" => format!("{sign}{top}"),
+        (top, bottom) => format!("{sign}\\frac{{{top}}}{{{bottom}}}"),
     }
+}
+
+/// Numerator and denominator of |r|; beyond ratios of i128s, the numerator carries the
+/// powers: n · 10^k · 2^a (or 5^b).
+fn fraction(r: Rational) -> (String, String) {
+    let (n, d, two, five) = r.abs_value().scaled();
+    let ten = if two.signum() == five.signum() {
+        two.signum() * two.abs().min(five.abs())
+    } else {
+        0
+    };
+    let mut top = vec![n.to_string()];
+    for (base, e) in [(10, ten), (2, two - ten), (5, five - ten)] {
+        if e != 0 {
+            top.push(format!("{base}^{{{e}}}"));
+        }
+    }
+    if top.len() > 1 && n == 1 {
+        top.remove(0);
+    }
+    (top.join(" \\cdot "), d.to_string())
 }

@@ -39,9 +39,10 @@ pub enum SymError {
         /// The text that failed to parse.
         literal: String,
     },
-    /// A literal whose exact value does not fit the engine's 128-bit rationals.
+    /// A literal the engine cannot hold exactly: more than 38 significant digits, or a
+    /// decimal exponent beyond about ±4000 (far outside the range of f64).
     #[error(
-        "`{literal}` cannot be represented exactly: numerator and denominator must stay below 1.7e38"
+        "`{literal}` is out of range: at most 38 significant digits and a decimal exponent within about ±4000"
     )]
     LiteralOutOfRange {
         /// The text of the literal.

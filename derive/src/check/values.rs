@@ -159,9 +159,21 @@ impl Checker<'_, '_> {
             return None;
         }
         match parse_decimal(&digits) {
+            // Exact, but the generated code and the checks use the f64 it rounds to.
+            Ok(r) if !r.to_f64().is_finite() => {
+                self.cx.error(
+                    lit,
+                    format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"),
+                );
+                None
+            }
+            Ok(r) if r.to_f64() == 0.0 && !r.is_zero() => {
+                self.cx.error(lit, format!("`{digits}` underflows f64 to zero: the smallest positive f64 is about 4.9e-324"));
+                None
+            }
             Ok(r) => Some(self.arena.constant(r)),
             Err(SymError::LiteralOutOfRange { .. }) => {
-                self.cx.error(lit, "literal out of range: values must be finite numbers whose exact value fits 38 significant digits (between about 1e-38 and 1e38)");
+                self.cx.error(lit, "literal out of range: values have at most 38 significant digits and lie within f64's range (about 4.9e-324 to 1.8e308)");
                 None
             }
             Err(_) => {
