@@ -316,7 +316,7 @@ struct Skewed;
 /// Eulerian form integrated tightly, through the principal-frame conversion.
 #[test]
 fn fast_top_splitting_converges_to_the_eulerian_form() {
-    use precess_core::lagrange::FastTop;
+    use precess_core::top::FastTop;
     let top = Skewed;
     let fast = FastTop::new(&top, 9.81).unwrap();
     assert!(

@@ -7,9 +7,10 @@ mod common;
 use common::eulerian::Eulerian;
 use nalgebra::{Matrix3, Matrix4, Rotation3, Vector3};
 use precess_core::codegen::Program;
-use precess_core::lagrange::{AngleSequence, TopDerivation, TopModel, TopScene};
 use precess_core::ode::{AdaptiveConfig, Dop853};
+use precess_core::rigid::AngleSequence;
 use precess_core::sym::{Arena, ExprId};
+use precess_core::top::{TopDerivation, TopModel, TopScene};
 
 /// I1 = 1, I3 = 1/2 about the pivot, M g l = 1 (M = g = l = 1): the reference top.
 fn reference_top(a: &mut Arena, sequence: AngleSequence) -> TopDerivation {

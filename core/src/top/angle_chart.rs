@@ -2,8 +2,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::angles::AngleSequence;
 use crate::ode::System;
+use crate::rigid::AngleSequence;
 
 /// A top's equations in one angle chart, with state `[q, q̇]`: what [`super::ChartedTop`]
 /// needs to integrate in it and to map states in and out through the attitude R and the

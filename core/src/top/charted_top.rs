@@ -10,30 +10,11 @@
 //! angular velocity ω, which both charts share.
 
 use nalgebra::{Matrix3, Vector3};
-use thiserror::Error;
 
-use super::angles::AngleSequence;
-use super::chart_trait::AngleChart;
-use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
-
-/// Errors of the chart-switching driver.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ChartError {
-    /// The two models are of the same angle sequence: there is nothing to switch to.
-    #[error("both charts use the {0:?} sequence; give one ZXZ and one ZYX model")]
-    SameSequence(AngleSequence),
-    /// `B(q)` cannot be inverted at this state in either chart.
-    #[error("the rate map is singular in both charts (|det B| = {primary:e} and {secondary:e})")]
-    Singular {
-        /// |det B| in the first chart.
-        primary: f64,
-        /// |det B| in the second chart.
-        secondary: f64,
-    },
-    /// The stepper failed.
-    #[error(transparent)]
-    Ode(#[from] OdeError),
-}
+use super::angle_chart::AngleChart;
+use super::error::ChartError;
+use crate::ode::{AdaptiveConfig, Dop853, Stats};
+use crate::rigid::{AngleSequence, angles_from_rotation};
 
 /// When to switch charts, and the integrator settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,27 +32,6 @@ impl Default for ChartConfig {
             switch_below: 0.3,
             stepper: AdaptiveConfig::with_tol(1e-10, 1e-10),
         }
-    }
-}
-
-/// The angles of `seq` for the attitude `r` (body to space). Each angle is in (−π, π], and
-/// θ of ZXZ in [0, π].
-pub fn angles_from_rotation(seq: AngleSequence, r: &Matrix3<f64>) -> [f64; 3] {
-    match seq {
-        // R = Rz(φ) Rx(θ) Rz(ψ): R₂₂ = cos θ, (R₀₂, R₁₂) = sin θ (sin φ, −cos φ),
-        // (R₂₀, R₂₁) = sin θ (sin ψ, cos ψ).
-        AngleSequence::Zxz => [
-            r[(0, 2)].atan2(-r[(1, 2)]),
-            r[(0, 2)].hypot(r[(1, 2)]).atan2(r[(2, 2)]),
-            r[(2, 0)].atan2(r[(2, 1)]),
-        ],
-        // R = Rz(yaw) Ry(pitch) Rx(roll): R₂₀ = −sin pitch, (R₂₁, R₂₂) = cos pitch (sin roll,
-        // cos roll), (R₁₀, R₀₀) = cos pitch (sin yaw, cos yaw).
-        AngleSequence::Zyx => [
-            r[(1, 0)].atan2(r[(0, 0)]),
-            (-r[(2, 0)]).atan2(r[(0, 0)].hypot(r[(1, 0)])),
-            r[(2, 1)].atan2(r[(2, 2)]),
-        ],
     }
 }
 

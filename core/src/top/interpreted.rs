@@ -4,37 +4,15 @@
 
 use std::cell::RefCell;
 
-use thiserror::Error;
-
 use nalgebra::Matrix3;
 
-use super::angles::AngleSequence;
-use super::chart_trait::AngleChart;
-use super::top::TopDerivation;
+use super::angle_chart::AngleChart;
+use super::error::ModelError;
+use super::scene::TopDerivation;
 use crate::codegen::Program;
 use crate::ode::System;
+use crate::rigid::AngleSequence;
 use crate::sym::{Arena, SymbolId, SymbolKind};
-
-/// Errors of [`TopModel`].
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ModelError {
-    /// No parameter of that name appears in the derivation.
-    #[error("no parameter named `{name}` in this top (parameters: {known})")]
-    UnknownParameter {
-        /// The name asked for.
-        name: String,
-        /// The parameters that exist, comma-separated.
-        known: String,
-    },
-    /// A parameter value that is NaN or infinite.
-    #[error("parameter `{name}` = {value} is not finite")]
-    NonFinite {
-        /// The parameter.
-        name: String,
-        /// Its value.
-        value: f64,
-    },
-}
 
 /// A top's angle-form equations, lowered once and interpreted.
 ///
