@@ -21,7 +21,7 @@ fn model(sequence: AngleSequence) -> TopModel {
     scene.center = [z, z, one];
     scene.gravity = Some(one);
     let top = scene.derive(&mut a).unwrap();
-    TopModel::new(&mut a, &top)
+    TopModel::new(&mut a, &top, &[]).unwrap()
 }
 
 fn reference() -> Eulerian {

@@ -12,8 +12,9 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
-use super::error::ChartError;
-use crate::ode::{AdaptiveConfig, Dop853, Stats};
+use super::error::{ChartError, TopError};
+use super::rates::rates_from_omega;
+use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
 use crate::rigid::{AngleSequence, angles_from_rotation};
 
 /// When to switch charts, and the integrator settings.
@@ -35,7 +36,42 @@ impl Default for ChartConfig {
     }
 }
 
+/// How far from a rotation an attitude given to [`ChartedTop::new`] may be: the largest
+/// entry of |RᵀR − I| and |det R − 1| (a matrix from angles or a quaternion in f64 is within
+/// 1e-15; one that drifted through a long integration should be re-orthonormalised first).
+pub const ROTATION_TOLERANCE: f64 = 1e-9;
+
 /// A top integrated in whichever of two angle charts is regular, with DOP853.
+///
+/// # Examples
+///
+/// A sleeping top stands exactly vertical, where the ZXZ chart is singular: the driver starts
+/// in ZYX and follows the closed form R(t) = Rz(ω3 t). The top (I1 = 1, I3 = ½ about the
+/// pivot, M g l = 1) spins at ω3 = 6, above the sleeping-top threshold
+/// ω3² = 4 M g l I1 / I3² = 16, so it stays up.
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess::prelude::*;
+///
+/// #[derive(RigidBody)]
+/// #[rigid(
+///     body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+///     pivot = [0.0, 0.0, 0.0],
+/// )]
+/// #[top(gravity = 1.0)]
+/// struct Heavy;
+///
+/// let [zxz, zyx] = TopChart::both(&Heavy);
+/// let (r0, w0) = (Matrix3::identity(), Vector3::new(0.0, 0.0, 6.0));
+/// let mut top = ChartedTop::new([&zxz, &zyx], 0.0, &r0, &w0, ChartConfig::default())?;
+/// assert_eq!(top.sequence(), AngleSequence::Zyx);
+/// top.advance_to(5.0)?;
+/// let spun = Rotation3::from_axis_angle(&Vector3::z_axis(), 30.0);
+/// assert_relative_eq!(top.rotation(), *spun.matrix(), epsilon = 1e-9);
+/// assert_relative_eq!(top.omega(), w0, epsilon = 1e-9);
+/// # Ok::<(), precess::top::ChartError>(())
+/// ```
 pub struct ChartedTop<'m, C> {
     charts: [&'m C; 2],
     active: usize,
@@ -51,9 +87,12 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
     /// the better-conditioned of the two charts.
     ///
     /// # Errors
-    /// [`ChartError::SameSequence`] if both models use one sequence; [`ChartError::Singular`]
-    /// if neither chart can represent the state; the stepper's errors for bad settings or a
-    /// non-finite state.
+    /// [`ChartError::SameSequence`] if both models use one sequence;
+    /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive;
+    /// [`ChartError::NotARotation`] if `r` is not a rotation matrix within
+    /// [`ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`] for a NaN or infinite ω;
+    /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
+    /// for bad settings or time.
     pub fn new(
         charts: [&'m C; 2],
         t0: f64,
@@ -64,14 +103,33 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
         if charts[0].sequence() == charts[1].sequence() {
             return Err(ChartError::SameSequence(charts[0].sequence()));
         }
+        let switch = config.switch_below;
+        if !(switch.is_finite() && switch > 0.0) {
+            return Err(ChartError::InvalidSwitch { value: switch });
+        }
+        check_rotation(r)?;
+        if !omega.iter().all(|v| v.is_finite()) {
+            return Err(ChartError::NonFiniteOmega {
+                omega: [omega.x, omega.y, omega.z],
+            });
+        }
         let states = [0, 1].map(|k| state_in(charts[k], r, omega));
-        let dets = [states[0].1, states[1].1];
-        let active = if dets[0] >= dets[1] { 0 } else { 1 };
-        let (state, _) = states[active];
-        let state = state.ok_or(ChartError::Singular {
-            primary: dets[0],
-            secondary: dets[1],
-        })?;
+        let det = |s: &Result<([f64; 6], f64), TopError>| match s {
+            Ok((_, det)) | Err(TopError::SingularChart { det, .. }) => *det,
+            Err(_) => f64::NAN,
+        };
+        let dets = [det(&states[0]), det(&states[1])];
+        let (active, state) = match states {
+            [Ok((a, da)), Ok((_, db))] if da >= db => (0, a),
+            [_, Ok((b, _))] => (1, b),
+            [Ok((a, _)), Err(_)] => (0, a),
+            [Err(_), Err(_)] => {
+                return Err(ChartError::Singular {
+                    primary: dets[0],
+                    secondary: dets[1],
+                });
+            }
+        };
         let ode = Dop853::new(charts[active], t0, state, config.stepper)?;
         Ok(ChartedTop {
             charts,
@@ -83,11 +141,24 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
         })
     }
 
-    /// Integrates to `t_end`, switching charts between steps as needed.
+    /// Integrates to `t_end`, switching charts between steps as needed. A stop at the
+    /// current time does nothing.
     ///
     /// # Errors
-    /// The stepper's errors ([`OdeError`]), or [`ChartError::Singular`].
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_end`,
+    /// [`OdeError::StopBeforeCurrent`] for one before the current time, and the stepper's
+    /// errors (in [`ChartError::Ode`]).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), ChartError> {
+        if !t_end.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_end }.into());
+        }
+        if t_end < self.ode.t() {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_end,
+                t: self.ode.t(),
+            }
+            .into());
+        }
         while self.ode.t() < t_end {
             self.ode.step(t_end)?;
             self.maybe_switch()?;
@@ -95,6 +166,8 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
         Ok(())
     }
 
+    /// Moves to the other chart when the active one nears its singularity and the other is
+    /// better conditioned; stays put otherwise (the active chart is then still regular).
     fn maybe_switch(&mut self) -> Result<(), ChartError> {
         let y = *self.ode.y();
         let here = self.charts[self.active];
@@ -106,21 +179,21 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
         let other = 1 - self.active;
         let r = here.rotation_at(&y);
         let w = here.omega_at(&y);
-        let (state, det_other) = state_in(self.charts[other], &r, &w);
-        match state {
-            Some(s) if det_other > det_here => {
-                let t = self.ode.t();
-                let done = self.ode.stats();
-                self.finished.steps += done.steps;
-                self.finished.rejections += done.rejections;
-                self.finished.rhs_evals += done.rhs_evals;
-                self.ode = Dop853::new(self.charts[other], t, s, self.config.stepper)?;
-                self.active = other;
-                self.switches += 1;
-                Ok(())
-            }
-            _ => Ok(()),
+        let Ok((s, det_other)) = state_in(self.charts[other], &r, &w) else {
+            return Ok(());
+        };
+        if det_other <= det_here {
+            return Ok(());
         }
+        let ode = Dop853::new(self.charts[other], self.ode.t(), s, self.config.stepper)?;
+        let done = self.ode.stats();
+        self.finished.steps += done.steps;
+        self.finished.rejections += done.rejections;
+        self.finished.rhs_evals += done.rhs_evals;
+        self.ode = ode;
+        self.active = other;
+        self.switches += 1;
+        Ok(())
     }
 
     /// Current time.
@@ -169,21 +242,35 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
     }
 }
 
-/// The state of attitude `r` and body rate `omega` in `model`'s chart: the angles from R, the
-/// rates from solving B(q) q̇ = ω; `None` where B is singular. Also returns |det B|.
+/// The state of attitude `r` and body rate `omega` in `model`'s chart, with `|det B|` there:
+/// the angles from R, the rates from B(q) q̇ = ω under the one rule of
+/// [`super::rates_from_omega`].
 fn state_in<C: AngleChart>(
     model: &C,
     r: &Matrix3<f64>,
     omega: &Vector3<f64>,
-) -> (Option<[f64; 6]>, f64) {
+) -> Result<([f64; 6], f64), TopError> {
     let q = angles_from_rotation(model.sequence(), r);
-    let probe = [q[0], q[1], q[2], 0.0, 0.0, 0.0];
-    let b = model.rate_matrix_at(&probe);
+    let b = model.rate_matrix_at(&[q[0], q[1], q[2], 0.0, 0.0, 0.0]);
+    let qd = rates_from_omega(model.sequence(), &b, &q, omega)?;
     let det = b.determinant().abs();
-    let rates = b
-        .lu()
-        .solve(omega)
-        .filter(|v| v.iter().all(|x| x.is_finite()));
-    let state = rates.map(|qd| [q[0], q[1], q[2], qd[0], qd[1], qd[2]]);
-    (state, det)
+    Ok(([q[0], q[1], q[2], qd[0], qd[1], qd[2]], det))
+}
+
+/// Checks that `r` is a finite rotation matrix within [`ROTATION_TOLERANCE`].
+fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
+    let orthogonality = (r.transpose() * r - Matrix3::identity()).abs().max();
+    let det = r.determinant();
+    // Written so that NaN fails both tests.
+    let orthogonal = orthogonality <= ROTATION_TOLERANCE;
+    let proper = (det - 1.0).abs() <= ROTATION_TOLERANCE;
+    if orthogonal && proper {
+        Ok(())
+    } else {
+        Err(ChartError::NotARotation {
+            matrix: [0, 1, 2].map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]]),
+            orthogonality,
+            det,
+        })
+    }
 }

@@ -7,8 +7,10 @@ use std::cell::RefCell;
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
-use super::error::ModelError;
+use super::error::{ModelError, TopError};
+use super::rates::check_chart;
 use super::scene::TopDerivation;
+use super::top_trait::check_state;
 use crate::codegen::Program;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
@@ -17,6 +19,44 @@ use crate::sym::{Arena, SymbolId, SymbolKind};
 /// A top's angle-form equations, lowered once and interpreted.
 ///
 /// The state is `[q₀, q₁, q₂, q̇₀, q̇₁, q̇₂]`; time enters only through declared torques.
+/// As an [`crate::ode::System`] it is unchecked, for the steppers' inner loop (NaN at the
+/// chart's gimbal lock); [`TopModel::accel`] and [`AngleChart::rates_at`] check the chart
+/// under the one rule of [`super::check_chart`].
+///
+/// # Examples
+///
+/// The symmetric heavy top with its moments and weight as parameters; at θ = 60° and
+/// ω3 = 10 with I1 = 1, I3 = ½, M g l = 1 it precesses steadily at the slow root
+/// Ω = 0.204168476687 rad/s of I1 cos θ Ω² − I3 ω3 Ω + M g l = 0, so θ̈ vanishes:
+///
+/// ```
+/// use precess_core::top::{ModelError, TopError, TopModel, TopScene};
+/// use precess_core::sym::Arena;
+///
+/// let mut a = Arena::new();
+/// let (i1, i3) = (a.parameter("I_1"), a.parameter("I_3"));
+/// let z = a.zero();
+/// let mut scene = TopScene::free(&mut a, [[i1, z, z], [z, i1, z], [z, z, i3]]);
+/// scene.mass = a.parameter("M");
+/// scene.center = [z, z, a.parameter("l")];
+/// scene.gravity = Some(a.parameter("g"));
+/// let derivation = scene.derive(&mut a)?;
+///
+/// // Every parameter needs a value; a missing one is named.
+/// let partial = TopModel::new(&mut a, &derivation, &[("I_1", 1.0), ("I_3", 0.5)]);
+/// assert!(matches!(partial, Err(ModelError::UnsetParameter { name, .. }) if name == "M"));
+///
+/// let values = [("I_1", 1.0), ("I_3", 0.5), ("M", 1.0), ("g", 1.0), ("l", 1.0)];
+/// let model = TopModel::new(&mut a, &derivation, &values)?;
+/// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
+/// let q_ddot = model.accel(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
+/// assert!(q_ddot[1].abs() < 1e-10);
+///
+/// // Straight up, the ZXZ angles are singular.
+/// let vertical = model.accel(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
+/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug)]
 pub struct TopModel {
     accel: Program,
@@ -29,15 +69,27 @@ pub struct TopModel {
     q: [SymbolId; 3],
     rates: [SymbolId; 3],
     time: Option<SymbolId>,
+    /// The parameters the programs read, by name.
     parameters: Vec<(String, SymbolId)>,
     env: RefCell<Vec<f64>>,
     scratch: RefCell<Vec<f64>>,
 }
 
 impl TopModel {
-    /// Lowers the derivation's accelerations, energy, body rates and momenta. Parameters
-    /// start as NaN: set each with [`TopModel::set`].
-    pub fn new(arena: &mut Arena, top: &TopDerivation) -> TopModel {
+    /// Lowers the derivation's accelerations, energy, body rates and momenta, with a value for
+    /// each parameter they read (`(name, value)` pairs; [`TopModel::set`] changes one later).
+    ///
+    /// # Errors
+    /// [`ModelError::UnsetParameter`] naming a parameter the derivation reads that
+    /// `parameters` leaves out; [`ModelError::UnknownParameter`] for a name it does not read;
+    /// [`ModelError::NonFinite`] for a NaN or infinite value;
+    /// [`ModelError::RunTimeInput`] if the derivation reads a user torque's inputs, which
+    /// the interpreter cannot supply.
+    pub fn new(
+        arena: &mut Arena,
+        top: &TopDerivation,
+        parameters: &[(&str, f64)],
+    ) -> Result<TopModel, ModelError> {
         let sym = |e| {
             arena
                 .as_symbol(e)
@@ -47,39 +99,87 @@ impl TopModel {
         let q = [sym(c.q[0]), sym(c.q[1]), sym(c.q[2])];
         let rates = [sym(c.rates[0]), sym(c.rates[1]), sym(c.rates[2])];
         let energy = top.energy(arena);
-        let parameters = arena
-            .symbols()
-            .filter(|(_, s)| s.kind == SymbolKind::Parameter)
-            .map(|(id, s)| (s.name.clone(), id))
-            .collect();
-        TopModel {
-            accel: Program::lower(arena, &top.accelerations.accel),
-            energy: Program::lower(arena, &[energy]),
-            omega: Program::lower(arena, &top.omega),
-            momenta: Program::lower(arena, &top.equations.momenta),
-            rotation: Program::lower(arena, top.rotation.as_flattened()),
-            rate_matrix: Program::lower(arena, top.rate_matrix.as_flattened()),
+        let programs = [
+            Program::lower(arena, &top.accelerations.accel),
+            Program::lower(arena, &[energy]),
+            Program::lower(arena, &top.omega),
+            Program::lower(arena, &top.equations.momenta),
+            Program::lower(arena, top.rotation.as_flattened()),
+            Program::lower(arena, top.rate_matrix.as_flattened()),
+        ];
+        let mut read: Vec<(String, SymbolId)> = Vec::new();
+        for s in programs.iter().flat_map(Program::inputs) {
+            let symbol = arena.symbol(s);
+            match symbol.kind {
+                SymbolKind::Parameter if !read.iter().any(|&(_, r)| r == s) => {
+                    read.push((symbol.name.clone(), s));
+                }
+                SymbolKind::Input => {
+                    return Err(ModelError::RunTimeInput {
+                        name: symbol.name.clone(),
+                    });
+                }
+                _ => {}
+            }
+        }
+        read.sort();
+        let [accel, energy, omega, momenta, rotation, rate_matrix] = programs;
+        let mut model = TopModel {
+            accel,
+            energy,
+            omega,
+            momenta,
+            rotation,
+            rate_matrix,
             sequence: top.sequence,
             q,
             rates,
             time: arena.time_symbol(),
-            parameters,
+            parameters: read,
             env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
             scratch: RefCell::new(Vec::new()),
+        };
+        for &(name, value) in parameters {
+            model.set(name, value)?;
+        }
+        let env = model.env.get_mut();
+        if let Some((name, _)) = model
+            .parameters
+            .iter()
+            .find(|(_, s)| env[s.index()].is_nan())
+        {
+            return Err(ModelError::UnsetParameter {
+                name: name.clone(),
+                known: model.known(),
+            });
+        }
+        Ok(model)
+    }
+
+    /// The names of the parameters the derivation reads, in alphabetical order.
+    pub fn parameters(&self) -> impl ExactSizeIterator<Item = &str> + '_ {
+        self.parameters.iter().map(|(n, _)| n.as_str())
+    }
+
+    fn known(&self) -> String {
+        let known: Vec<&str> = self.parameters().collect();
+        if known.is_empty() {
+            "none".to_owned()
+        } else {
+            known.join(", ")
         }
     }
 
     /// Sets the parameter `name`.
     ///
     /// # Errors
-    /// [`ModelError::UnknownParameter`] for a name the derivation does not use,
+    /// [`ModelError::UnknownParameter`] for a name the derivation does not read,
     /// [`ModelError::NonFinite`] for NaN or ±∞.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, ModelError> {
         let Some(&(_, s)) = self.parameters.iter().find(|(n, _)| n == name) else {
-            let known: Vec<&str> = self.parameters.iter().map(|(n, _)| n.as_str()).collect();
             return Err(ModelError::UnknownParameter {
                 name: name.to_owned(),
-                known: known.join(", "),
+                known: self.known(),
             });
         };
         if !value.is_finite() {
@@ -106,9 +206,26 @@ impl TopModel {
         out
     }
 
-    /// q̈ at the state `[q, q̇]`.
-    pub fn accel(&self, state: &[f64; 6]) -> [f64; 3] {
-        self.run(&self.accel, 0.0, state)
+    /// q̈ at the state `[q, q̇]` (at t = 0 for time-dependent torques), refusing a state the
+    /// chart cannot take.
+    ///
+    /// # Errors
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
+    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate
+    /// through it with [`super::ChartedTop`]; [`TopError::NonFiniteResult`] if q̈ overflows.
+    pub fn accel(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
+        check_state(state)?;
+        let q = [state[0], state[1], state[2]];
+        check_chart(self.sequence, &self.rate_matrix_at(state), &q)?;
+        let a: [f64; 3] = self.run(&self.accel, 0.0, state);
+        if a.iter().all(|v| v.is_finite()) {
+            Ok(a)
+        } else {
+            Err(TopError::NonFiniteResult {
+                quantity: "q̈",
+                values: a.to_vec(),
+            })
+        }
     }
 
     /// The energy T + V.

@@ -24,12 +24,12 @@ mod top_chart;
 mod top_trait;
 
 pub use angle_chart::AngleChart;
-pub use charted_top::{ChartConfig, ChartedTop};
+pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
 pub use error::{ChartError, ModelError, TopError};
 pub use eulerian::EulerianTop;
 pub use fast_top::FastTop;
 pub use interpreted::TopModel;
-pub use rates::rates_from_omega;
+pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
 pub use top_chart::TopChart;
 pub use top_trait::{Top, angle_state};

@@ -9,6 +9,37 @@ use crate::rigid::AngleSequence;
 
 /// One chart of a derived top as an ODE system with state `[q, q̇]`: use it with any
 /// stepper of [`crate::ode`], or two of them with [`super::ChartedTop`].
+///
+/// The right-hand side is the generated q̈, unchecked: NaN at the chart's gimbal lock. Near
+/// the vertical, integrate [`TopChart::both`] with [`super::ChartedTop`].
+///
+/// # Examples
+///
+/// The fast heavy top (I1 = 1, I3 = ½ about the pivot, M g l = 1) released at rest from
+/// θ0 = 60° spinning at ω3 = 20 nods down by 1.7580e-2 rad and back in 0.634549 s (the
+/// exact nutation through the cubic in cos θ), so half a period in, θ is at its lowest:
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess::ode::{AdaptiveConfig, Dop853};
+/// use precess::prelude::*;
+///
+/// #[derive(RigidBody)]
+/// #[rigid(
+///     body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+///     pivot = [0.0, 0.0, 0.0],
+/// )]
+/// #[top(gravity = 1.0)]
+/// struct Heavy;
+///
+/// let theta0 = std::f64::consts::FRAC_PI_3;
+/// let chart = TopChart::declared(&Heavy);
+/// let tight = AdaptiveConfig::with_tol(1e-12, 1e-12);
+/// let mut ode = Dop853::new(&chart, 0.0, [0.0, theta0, 0.0, 0.0, 0.0, 20.0], tight)?;
+/// ode.advance_to(0.634549 / 2.0)?;
+/// assert_relative_eq!(ode.y()[1] - theta0, 1.7580e-2, epsilon = 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug)]
 pub struct TopChart<'a, T> {
     /// The top.
