@@ -41,7 +41,9 @@ pub mod prelude {
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::top::{ChartConfig, ChartedTop, EulerianTop, Top, TopChart, TopError};
+    pub use precess_core::top::{
+        ChartConfig, ChartError, ChartedTop, EulerianTop, Top, TopChart, TopError,
+    };
     pub use precess_derive::RigidBody;
 }
 
