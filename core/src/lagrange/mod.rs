@@ -6,14 +6,14 @@
 //!   in trig-canonical form so structural zeros are exact.
 //! - [`EquationsOfMotion::solve`] solves block by block with adjugates, sharing f, the
 //!   adjugate entries and one division per block, and keeps the cheapest of three equal
-//!   forms ([`cheapest_form`]).
+//!   forms.
 
 mod block_solve;
 mod emit;
 mod equations;
 mod error;
 
-pub use block_solve::{Accelerations, MAX_BLOCK, cheapest_form};
+pub use block_solve::{Accelerations, MAX_BLOCK};
 pub use emit::{TopEmit, emit_top};
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
