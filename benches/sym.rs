@@ -3,8 +3,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use precess_core::codegen::Program;
-use precess_core::lagrange::{AngleSequence, TopScene};
+use precess_core::rigid::AngleSequence;
 use precess_core::sym::{Arena, ExprId};
+use precess_core::top::TopScene;
 use std::hint::black_box;
 
 /// ½ ωᵀ I ω for a general (diagonal, asymmetric) I, and its derivatives ∂T/∂q̇ and d/dt.

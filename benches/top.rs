@@ -7,8 +7,8 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::{Matrix3, Vector3};
 use precess::prelude::*;
 use precess_core::codegen::Program;
-use precess_core::lagrange::TopScene;
 use precess_core::sym::Arena;
+use precess_core::top::TopScene;
 use std::hint::black_box;
 
 /// I1 = 1, I3 = 1/2 about the pivot, M g l = 1.

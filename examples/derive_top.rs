@@ -7,8 +7,9 @@
 use std::time::Instant;
 
 use precess::core_api::codegen::{Program, latex};
-use precess::core_api::lagrange::{LagrangeError, TopScene};
+use precess::core_api::lagrange::LagrangeError;
 use precess::core_api::sym::Arena;
+use precess::core_api::top::TopScene;
 
 fn main() -> Result<(), LagrangeError> {
     let started = Instant::now();

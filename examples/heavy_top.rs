@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use precess::core_api::exact::{ellip_k, sncndn};
 use precess::core_api::ode::splitting::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
-use precess::core_api::ode::{AdaptiveConfig, Dop853, OdeError};
+use precess::core_api::ode::{AdaptiveConfig, Dop853};
 use precess::prelude::*;
 
 /// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm), turning on the stem's tip.
@@ -113,9 +113,9 @@ fn measure(
     periods: f64,
     per_period: f64,
     nominal_period: f64,
-    mut step_to: impl FnMut(f64) -> Result<(f64, f64, f64, u64), OdeError>,
+    mut step_to: impl FnMut(f64) -> Result<(f64, f64, f64, u64), Box<dyn std::error::Error>>,
     e0: f64,
-) -> Result<Measured, OdeError> {
+) -> Result<Measured, Box<dyn std::error::Error>> {
     // step_to(t) → (θ, φ, energy, steps). Sample densely enough to see the θ turning points.
     let started = Instant::now();
     let samples = (periods * per_period).round() as usize;
@@ -205,9 +205,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let inertia = top.inertia();
     let weight_lever = top.center_of_mass() * top.mass() * 9.81;
     let energy = |y: &[f64; 7]| {
-        let q = EulerianTop::<SpinningTop>::attitude(y);
+        let q = EulerianTop::<SpinningTop>::attitude(y)?;
         let w = Vector3::new(y[4], y[5], y[6]);
-        0.5 * w.dot(&(inertia * w)) + (q * weight_lever).z
+        Ok::<f64, TopError>(0.5 * w.dot(&(inertia * w)) + (q * weight_lever).z)
     };
     let mut unwrap = Unwrap::default();
     let eulerian = measure(
@@ -219,15 +219,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 ode.step(t_end)?;
             }
             let y = ode.dense_at(t)?;
-            let axis = EulerianTop::<SpinningTop>::attitude(&y) * Vector3::z();
+            let axis = EulerianTop::<SpinningTop>::attitude(&y)? * Vector3::z();
             Ok((
                 axis.z.acos(),
                 unwrap.phi(&axis),
-                energy(&y),
+                energy(&y)?,
                 ode.stats().steps,
             ))
         },
-        energy(&y0),
+        energy(&y0)?,
     )?;
 
     // 3. Splitting: exact free-body flow plus gravity kicks, 100 steps per nutation period

@@ -39,10 +39,11 @@ pub mod prelude {
         About, Axis, Body, BodyBuilder, BodyError, Matrix3, Principal, RigidBody, Rotation3, Shape,
         Vector3,
     };
-    pub use precess_core::lagrange::{
-        AngleSequence, ChartConfig, ChartedTop, EulerianTop, Top, TopChart, TopError,
-    };
     pub use precess_core::nalgebra::UnitQuaternion;
+    pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::top::{
+        ChartConfig, ChartError, ChartedTop, EulerianTop, Top, TopChart, TopError,
+    };
     pub use precess_derive::RigidBody;
 }
 
@@ -54,8 +55,9 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Part, Principal, RigidBody, Rotation3, Shape,
         Vector3, euler_rhs_principal, principal_frame,
     };
-    pub use precess_core::lagrange::{AngleSequence, Top};
     pub use precess_core::nalgebra::UnitQuaternion;
+    pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::top::Top;
     pub use std::vec;
 }
 

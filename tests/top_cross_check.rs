@@ -8,8 +8,9 @@ mod common;
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use precess_core::codegen::Program;
-use precess_core::lagrange::{AngleSequence, TopScene};
+use precess_core::rigid::AngleSequence;
 use precess_core::sym::{Arena, ExprId, Rational};
+use precess_core::top::TopScene;
 
 /// A numeric scene: everything the independent Eulerian form needs.
 #[derive(Clone)]

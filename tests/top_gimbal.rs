@@ -7,11 +7,10 @@ mod common;
 use common::eulerian::Eulerian;
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};
-use precess_core::lagrange::{
-    AngleSequence, ChartConfig, ChartError, ChartedTop, TopModel, TopScene, angles_from_rotation,
-};
 use precess_core::ode::{AdaptiveConfig, Dop853};
+use precess_core::rigid::{AngleSequence, angles_from_rotation};
 use precess_core::sym::Arena;
+use precess_core::top::{ChartConfig, ChartError, ChartedTop, TopModel, TopScene};
 
 /// The reference top (I1 = 1, I3 = 1/2, M g l = 1) in one angle sequence.
 fn model(sequence: AngleSequence) -> TopModel {
@@ -22,7 +21,7 @@ fn model(sequence: AngleSequence) -> TopModel {
     scene.center = [z, z, one];
     scene.gravity = Some(one);
     let top = scene.derive(&mut a).unwrap();
-    TopModel::new(&mut a, &top)
+    TopModel::new(&mut a, &top, &[]).unwrap()
 }
 
 fn reference() -> Eulerian {

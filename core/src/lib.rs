@@ -11,7 +11,9 @@ pub mod codegen;
 pub mod exact;
 pub mod lagrange;
 pub mod ode;
+pub mod rigid;
 pub mod sym;
+pub mod top;
 
 /// The linear-algebra crate precess's types come from, re-exported so users and generated
 /// code agree on one version.

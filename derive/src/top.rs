@@ -2,8 +2,10 @@
 //! Parsed and checked here with the `#[rigid]` value rules, then handed to precess-core's
 //! `emit_top`, which derives both angle charts and the Eulerian form and lowers them.
 
-use precess_core::lagrange::{AngleSequence, TopEmit, TopScene, emit_top};
+use precess_core::lagrange::{TopEmit, emit_top};
+use precess_core::rigid::AngleSequence;
 use precess_core::sym::{ExprId, SymbolId};
+use precess_core::top::TopScene;
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
 use syn::punctuated::Punctuated;

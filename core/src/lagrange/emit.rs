@@ -8,11 +8,12 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::angles::{AngleSequence, Mat3};
 use super::error::LagrangeError;
-use super::top::{TopDerivation, TopScene};
 use crate::codegen::{Emitted, Program};
+use crate::rigid::AngleSequence;
+use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId, SymbolId};
+use crate::top::{TopDerivation, TopScene};
 
 /// What the macro supplies: the scene (its `sequence` is the declared one), how to read a
 /// parameter symbol (a struct field) in Rust, and the user torque function, if declared.

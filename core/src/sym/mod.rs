@@ -9,6 +9,8 @@
 //!   such polynomials is exact.
 //! - Partial derivatives ([`Arena::diff`]) are memoised per node; [`Arena::dt`] is the total
 //!   time derivative over coordinates and their rates.
+//! - [`mat3`] holds the small matrix algebra (products, cross and dot, determinants) that
+//!   kinematics is written in.
 //!
 //! See `docs/symbolic.md` for the canonical form in full.
 
@@ -23,6 +25,7 @@ mod expand;
 mod func;
 mod hash;
 mod literal;
+pub mod mat3;
 mod memo;
 mod rational;
 

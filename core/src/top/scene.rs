@@ -1,10 +1,9 @@
 //! A top about a fixed pivot: its Lagrangian in Euler angles, the declared torques as
 //! generalised forces, and the same scene in Eulerian form.
 
-use super::angles::{AngleSequence, Mat3, cross, dot, mat_vec, transpose};
-use super::equations::{Coordinates, EquationsOfMotion};
-use super::error::LagrangeError;
-use super::solve::{Accelerations, cofactor, determinant};
+use crate::lagrange::{Accelerations, Coordinates, EquationsOfMotion, LagrangeError};
+use crate::rigid::AngleSequence;
+use crate::sym::mat3::{Mat3, cofactor, cross, determinant, dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId};
 
 /// A top: a rigid body turning about a fixed pivot at the space origin, under the torques

@@ -1,13 +1,34 @@
 //! Euler-angle sequences: the rotation they parametrise and the body angular velocity,
-//! derived symbolically from `Ω = Rᵀ Ṙ` rather than typed in.
+//! derived symbolically from `Ω = Rᵀ Ṙ` rather than typed in, and the angles of a numeric
+//! attitude.
 
-use super::equations::Coordinates;
+use nalgebra::Matrix3;
+
+use crate::lagrange::Coordinates;
+use crate::sym::mat3::{Mat3, mat_mul, transpose};
 use crate::sym::{Arena, ExprId};
 
-/// A 3×3 matrix of expressions, row-major.
-pub type Mat3 = [[ExprId; 3]; 3];
-
 /// The angle sequence of a top's generalised coordinates.
+///
+/// # Examples
+///
+/// The ZXZ body angular velocity is derived, not typed in; its third component is the
+/// textbook ω₃ = φ̇ cos θ + ψ̇:
+///
+/// ```
+/// use precess_core::rigid::AngleSequence;
+/// use precess_core::sym::Arena;
+/// let mut a = Arena::new();
+/// let seq = AngleSequence::Zxz;
+/// let c = seq.coordinates(&mut a);
+/// let omega = seq.body_rates(&mut a, &c);
+/// let b = seq.rate_matrix(&mut a, &c, &omega);
+/// // ∂ω₃/∂ψ̇ = 1 and ∂ω₃/∂θ̇ = 0 everywhere.
+/// assert_eq!((b[2][2], b[2][1]), (a.one(), a.zero()));
+/// let cos = a.cos(c.q[1]);
+/// let phi_dot_cos = a.mul(cos, c.rates[0]);
+/// assert_eq!(omega[2], a.add(phi_dot_cos, c.rates[2]));
+/// ```
 #[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
 pub enum AngleSequence {
     /// Proper Euler angles (φ, θ, ψ), `R = Rz(φ) Rx(θ) Rz(ψ)`; singular at sin θ = 0.
@@ -32,6 +53,14 @@ impl AngleSequence {
         match self {
             AngleSequence::Zxz => [2, 0, 2],
             AngleSequence::Zyx => [2, 1, 0],
+        }
+    }
+
+    /// The other sequence: the chart that is regular where this one is singular.
+    pub fn other(self) -> AngleSequence {
+        match self {
+            AngleSequence::Zxz => AngleSequence::Zyx,
+            AngleSequence::Zyx => AngleSequence::Zxz,
         }
     }
 
@@ -88,53 +117,40 @@ pub fn elementary(arena: &mut Arena, axis: usize, angle: ExprId) -> Mat3 {
     }
 }
 
-/// `a b`, entries left unexpanded.
-pub fn mat_mul(arena: &mut Arena, a: &Mat3, b: &Mat3) -> Mat3 {
-    let mut out = [[arena.zero(); 3]; 3];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, entry) in row.iter_mut().enumerate() {
-            let terms: Vec<ExprId> = (0..3).map(|k| arena.mul(a[i][k], b[k][j])).collect();
-            *entry = arena.sum(&terms);
-        }
+/// The angles of `seq` for the attitude `r` (body to space). Each angle is in (−π, π], and
+/// θ of ZXZ in [0, π].
+///
+/// At the sequence's singular attitudes (sin θ = 0, cos pitch = 0) only a sum or difference
+/// of the outer angles is determined; the split returned there is one valid choice.
+///
+/// # Examples
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use nalgebra::{Rotation3, Vector3};
+/// use precess_core::rigid::{AngleSequence, angles_from_rotation};
+/// // R = Rz(0.3) Rx(1.1) Rz(−0.4) gives back (φ, θ, ψ) = (0.3, 1.1, −0.4).
+/// let r = Rotation3::from_axis_angle(&Vector3::z_axis(), 0.3)
+///     * Rotation3::from_axis_angle(&Vector3::x_axis(), 1.1)
+///     * Rotation3::from_axis_angle(&Vector3::z_axis(), -0.4);
+/// let q = angles_from_rotation(AngleSequence::Zxz, r.matrix());
+/// assert_relative_eq!(q.as_slice(), [0.3, 1.1, -0.4].as_slice(), epsilon = 1e-15);
+/// ```
+pub fn angles_from_rotation(seq: AngleSequence, r: &Matrix3<f64>) -> [f64; 3] {
+    match seq {
+        // R = Rz(φ) Rx(θ) Rz(ψ): R₂₂ = cos θ, (R₀₂, R₁₂) = sin θ (sin φ, −cos φ),
+        // (R₂₀, R₂₁) = sin θ (sin ψ, cos ψ).
+        AngleSequence::Zxz => [
+            r[(0, 2)].atan2(-r[(1, 2)]),
+            r[(0, 2)].hypot(r[(1, 2)]).atan2(r[(2, 2)]),
+            r[(2, 0)].atan2(r[(2, 1)]),
+        ],
+        // R = Rz(yaw) Ry(pitch) Rx(roll): R₂₀ = −sin pitch, (R₂₁, R₂₂) = cos pitch (sin roll,
+        // cos roll), (R₁₀, R₀₀) = cos pitch (sin yaw, cos yaw).
+        AngleSequence::Zyx => [
+            r[(1, 0)].atan2(r[(0, 0)]),
+            (-r[(2, 0)]).atan2(r[(0, 0)].hypot(r[(1, 0)])),
+            r[(2, 1)].atan2(r[(2, 2)]),
+        ],
     }
-    out
-}
-
-/// `m v`.
-pub fn mat_vec(arena: &mut Arena, m: &Mat3, v: &[ExprId; 3]) -> [ExprId; 3] {
-    let mut out = [arena.zero(); 3];
-    for (i, o) in out.iter_mut().enumerate() {
-        let terms: Vec<ExprId> = (0..3).map(|k| arena.mul(m[i][k], v[k])).collect();
-        *o = arena.sum(&terms);
-    }
-    out
-}
-
-/// `mᵀ`.
-pub fn transpose(m: &Mat3) -> Mat3 {
-    let mut t = *m;
-    for (i, row) in t.iter_mut().enumerate() {
-        for (j, e) in row.iter_mut().enumerate() {
-            *e = m[j][i];
-        }
-    }
-    t
-}
-
-/// `a · b`.
-pub fn dot(arena: &mut Arena, a: &[ExprId; 3], b: &[ExprId; 3]) -> ExprId {
-    let terms: Vec<ExprId> = (0..3).map(|k| arena.mul(a[k], b[k])).collect();
-    arena.sum(&terms)
-}
-
-/// `a × b`.
-pub fn cross(arena: &mut Arena, a: &[ExprId; 3], b: &[ExprId; 3]) -> [ExprId; 3] {
-    let mut out = [arena.zero(); 3];
-    for (i, o) in out.iter_mut().enumerate() {
-        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        let p = arena.mul(a[j], b[k]);
-        let m = arena.mul(a[k], b[j]);
-        *o = arena.sub(p, m);
-    }
-    out
 }

@@ -9,6 +9,7 @@
 use super::equations::EquationsOfMotion;
 use super::error::LagrangeError;
 use crate::codegen::Program;
+use crate::sym::mat3::{cofactor, determinant};
 use crate::sym::{Arena, ExprId};
 
 /// The largest coupled block solved symbolically (the adjugate grows as n!).
@@ -144,41 +145,4 @@ fn coupled_blocks(arena: &Arena, m: &[Vec<ExprId>]) -> Vec<Vec<usize>> {
         blocks.push(members);
     }
     blocks
-}
-
-/// `det m` by cofactor expansion along the first row, skipping zero entries.
-pub fn determinant(arena: &mut Arena, m: &[Vec<ExprId>]) -> ExprId {
-    match m.len() {
-        0 => arena.one(),
-        1 => m[0][0],
-        _ => {
-            let mut terms = Vec::new();
-            for (j, &entry) in m[0].iter().enumerate() {
-                if entry == arena.zero() {
-                    continue;
-                }
-                let c = cofactor(arena, m, 0, j);
-                terms.push(arena.mul(entry, c));
-            }
-            arena.sum(&terms)
-        }
-    }
-}
-
-/// The (i, j) cofactor: `(−1)^(i+j)` times the minor without row i and column j.
-pub fn cofactor(arena: &mut Arena, m: &[Vec<ExprId>], i: usize, j: usize) -> ExprId {
-    let minor: Vec<Vec<ExprId>> = m
-        .iter()
-        .enumerate()
-        .filter(|&(r, _)| r != i)
-        .map(|(_, row)| {
-            row.iter()
-                .enumerate()
-                .filter(|&(c, _)| c != j)
-                .map(|(_, &e)| e)
-                .collect()
-        })
-        .collect();
-    let d = determinant(arena, &minor);
-    if (i + j) % 2 == 1 { arena.neg(d) } else { d }
 }

@@ -1,0 +1,276 @@
+//! Getting through gimbal lock: two angle charts of one top and a driver that switches
+//! between them.
+//!
+//! Euler angles are singular where `det B(q) = 0` (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX):
+//! the mass matrix loses rank and q̈ blows up. The ZXZ and ZYX charts are never singular at
+//! the same attitude (ZXZ fails when the body z axis is vertical, ZYX when the body x axis
+//! is), so [`ChartedTop`] integrates in one chart and, between steps, moves the state to the
+//! other chart whenever `|det B|` falls below [`ChartConfig::switch_below`] and the other chart
+//! is better conditioned. The state is mapped exactly through the attitude R and the body
+//! angular velocity ω, which both charts share.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::angle_chart::AngleChart;
+use super::error::{ChartError, TopError};
+use super::rates::rates_from_omega;
+use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
+use crate::rigid::{AngleSequence, angles_from_rotation};
+
+/// When to switch charts, and the integrator settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChartConfig {
+    /// Switch when `|det B(q)|` of the current chart falls below this (default 0.3, i.e.
+    /// θ within 17° of the vertical for ZXZ).
+    pub switch_below: f64,
+    /// The adaptive stepper's configuration (default: DOP853 at rtol = atol = 1e-10).
+    pub stepper: AdaptiveConfig,
+}
+
+impl Default for ChartConfig {
+    fn default() -> Self {
+        ChartConfig {
+            switch_below: 0.3,
+            stepper: AdaptiveConfig::with_tol(1e-10, 1e-10),
+        }
+    }
+}
+
+/// How far from a rotation an attitude given to [`ChartedTop::new`] may be: the largest
+/// entry of |RᵀR − I| and |det R − 1| (a matrix from angles or a quaternion in f64 is within
+/// 1e-15; one that drifted through a long integration should be re-orthonormalised first).
+pub const ROTATION_TOLERANCE: f64 = 1e-9;
+
+/// A top integrated in whichever of two angle charts is regular, with DOP853.
+///
+/// # Examples
+///
+/// A sleeping top stands exactly vertical, where the ZXZ chart is singular: the driver starts
+/// in ZYX and follows the closed form R(t) = Rz(ω3 t). The top (I1 = 1, I3 = ½ about the
+/// pivot, M g l = 1) spins at ω3 = 6, above the sleeping-top threshold
+/// ω3² = 4 M g l I1 / I3² = 16, so it stays up.
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess::prelude::*;
+///
+/// #[derive(RigidBody)]
+/// #[rigid(
+///     body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+///     pivot = [0.0, 0.0, 0.0],
+/// )]
+/// #[top(gravity = 1.0)]
+/// struct Heavy;
+///
+/// let [zxz, zyx] = TopChart::both(&Heavy);
+/// let (r0, w0) = (Matrix3::identity(), Vector3::new(0.0, 0.0, 6.0));
+/// let mut top = ChartedTop::new([&zxz, &zyx], 0.0, &r0, &w0, ChartConfig::default())?;
+/// assert_eq!(top.sequence(), AngleSequence::Zyx);
+/// top.advance_to(5.0)?;
+/// let spun = Rotation3::from_axis_angle(&Vector3::z_axis(), 30.0);
+/// assert_relative_eq!(top.rotation(), *spun.matrix(), epsilon = 1e-9);
+/// assert_relative_eq!(top.omega(), w0, epsilon = 1e-9);
+/// # Ok::<(), precess::top::ChartError>(())
+/// ```
+pub struct ChartedTop<'m, C> {
+    charts: [&'m C; 2],
+    active: usize,
+    ode: Dop853<&'m C, 6>,
+    config: ChartConfig,
+    switches: usize,
+    /// Work done in the charts left behind.
+    finished: Stats,
+}
+
+impl<'m, C: AngleChart> ChartedTop<'m, C> {
+    /// Starts from an attitude `r` (body to space) and a body angular velocity `omega`, in
+    /// the better-conditioned of the two charts.
+    ///
+    /// # Errors
+    /// [`ChartError::SameSequence`] if both models use one sequence;
+    /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive;
+    /// [`ChartError::NotARotation`] if `r` is not a rotation matrix within
+    /// [`ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`] for a NaN or infinite ω;
+    /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
+    /// for bad settings or time.
+    pub fn new(
+        charts: [&'m C; 2],
+        t0: f64,
+        r: &Matrix3<f64>,
+        omega: &Vector3<f64>,
+        config: ChartConfig,
+    ) -> Result<Self, ChartError> {
+        if charts[0].sequence() == charts[1].sequence() {
+            return Err(ChartError::SameSequence(charts[0].sequence()));
+        }
+        let switch = config.switch_below;
+        if !(switch.is_finite() && switch > 0.0) {
+            return Err(ChartError::InvalidSwitch { value: switch });
+        }
+        check_rotation(r)?;
+        if !omega.iter().all(|v| v.is_finite()) {
+            return Err(ChartError::NonFiniteOmega {
+                omega: [omega.x, omega.y, omega.z],
+            });
+        }
+        let states = [0, 1].map(|k| state_in(charts[k], r, omega));
+        let det = |s: &Result<([f64; 6], f64), TopError>| match s {
+            Ok((_, det)) | Err(TopError::SingularChart { det, .. }) => *det,
+            Err(_) => f64::NAN,
+        };
+        let dets = [det(&states[0]), det(&states[1])];
+        let (active, state) = match states {
+            [Ok((a, da)), Ok((_, db))] if da >= db => (0, a),
+            [_, Ok((b, _))] => (1, b),
+            [Ok((a, _)), Err(_)] => (0, a),
+            [Err(_), Err(_)] => {
+                return Err(ChartError::Singular {
+                    primary: dets[0],
+                    secondary: dets[1],
+                });
+            }
+        };
+        let ode = Dop853::new(charts[active], t0, state, config.stepper)?;
+        Ok(ChartedTop {
+            charts,
+            active,
+            ode,
+            config,
+            switches: 0,
+            finished: Stats::default(),
+        })
+    }
+
+    /// Integrates to `t_end`, switching charts between steps as needed. A stop at the
+    /// current time does nothing.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_end`,
+    /// [`OdeError::StopBeforeCurrent`] for one before the current time, and the stepper's
+    /// errors (in [`ChartError::Ode`]).
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), ChartError> {
+        if !t_end.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_end }.into());
+        }
+        if t_end < self.ode.t() {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_end,
+                t: self.ode.t(),
+            }
+            .into());
+        }
+        while self.ode.t() < t_end {
+            self.ode.step(t_end)?;
+            self.maybe_switch()?;
+        }
+        Ok(())
+    }
+
+    /// Moves to the other chart when the active one nears its singularity and the other is
+    /// better conditioned; stays put otherwise (the active chart is then still regular).
+    fn maybe_switch(&mut self) -> Result<(), ChartError> {
+        let y = *self.ode.y();
+        let here = self.charts[self.active];
+        // |det B(q)| is zero exactly at the chart's singularity.
+        let det_here = here.rate_matrix_at(&y).determinant().abs();
+        if det_here >= self.config.switch_below {
+            return Ok(());
+        }
+        let other = 1 - self.active;
+        let r = here.rotation_at(&y);
+        let w = here.omega_at(&y);
+        let Ok((s, det_other)) = state_in(self.charts[other], &r, &w) else {
+            return Ok(());
+        };
+        if det_other <= det_here {
+            return Ok(());
+        }
+        let ode = Dop853::new(self.charts[other], self.ode.t(), s, self.config.stepper)?;
+        let done = self.ode.stats();
+        self.finished.steps += done.steps;
+        self.finished.rejections += done.rejections;
+        self.finished.rhs_evals += done.rhs_evals;
+        self.ode = ode;
+        self.active = other;
+        self.switches += 1;
+        Ok(())
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.ode.t()
+    }
+
+    /// The state `[q, q̇]` in the active chart.
+    pub fn state(&self) -> &[f64; 6] {
+        self.ode.y()
+    }
+
+    /// The active chart's angle sequence.
+    pub fn sequence(&self) -> AngleSequence {
+        self.charts[self.active].sequence()
+    }
+
+    /// The attitude R, body to space.
+    pub fn rotation(&self) -> Matrix3<f64> {
+        self.charts[self.active].rotation_at(self.ode.y())
+    }
+
+    /// The body angular velocity ω.
+    pub fn omega(&self) -> Vector3<f64> {
+        self.charts[self.active].omega_at(self.ode.y())
+    }
+
+    /// The energy T + V.
+    pub fn energy(&self) -> f64 {
+        self.charts[self.active].energy_at(self.ode.y())
+    }
+
+    /// The work done so far, over every chart.
+    pub fn stats(&self) -> Stats {
+        let now = self.ode.stats();
+        Stats {
+            steps: self.finished.steps + now.steps,
+            rejections: self.finished.rejections + now.rejections,
+            rhs_evals: self.finished.rhs_evals + now.rhs_evals,
+        }
+    }
+
+    /// How many times the driver changed chart.
+    pub fn switches(&self) -> usize {
+        self.switches
+    }
+}
+
+/// The state of attitude `r` and body rate `omega` in `model`'s chart, with `|det B|` there:
+/// the angles from R, the rates from B(q) q̇ = ω under the one rule of
+/// [`super::rates_from_omega`].
+fn state_in<C: AngleChart>(
+    model: &C,
+    r: &Matrix3<f64>,
+    omega: &Vector3<f64>,
+) -> Result<([f64; 6], f64), TopError> {
+    let q = angles_from_rotation(model.sequence(), r);
+    let b = model.rate_matrix_at(&[q[0], q[1], q[2], 0.0, 0.0, 0.0]);
+    let qd = rates_from_omega(model.sequence(), &b, &q, omega)?;
+    let det = b.determinant().abs();
+    Ok(([q[0], q[1], q[2], qd[0], qd[1], qd[2]], det))
+}
+
+/// Checks that `r` is a finite rotation matrix within [`ROTATION_TOLERANCE`].
+fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
+    let orthogonality = (r.transpose() * r - Matrix3::identity()).abs().max();
+    let det = r.determinant();
+    // Written so that NaN fails both tests.
+    let orthogonal = orthogonality <= ROTATION_TOLERANCE;
+    let proper = (det - 1.0).abs() <= ROTATION_TOLERANCE;
+    if orthogonal && proper {
+        Ok(())
+    } else {
+        Err(ChartError::NotARotation {
+            matrix: [0, 1, 2].map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]]),
+            orthogonality,
+            det,
+        })
+    }
+}

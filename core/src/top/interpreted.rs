@@ -1,0 +1,287 @@
+//! A derived top evaluated at run time through the code generator's interpreter, usable with
+//! any stepper of [`crate::ode`]. The derive macro emits the same programs as compiled Rust;
+//! this is the path for scenes built at run time and the reference the tests use.
+
+use std::cell::RefCell;
+
+use nalgebra::Matrix3;
+
+use super::angle_chart::AngleChart;
+use super::error::{ModelError, TopError};
+use super::rates::check_chart;
+use super::scene::TopDerivation;
+use super::top_trait::check_state;
+use crate::codegen::Program;
+use crate::ode::System;
+use crate::rigid::AngleSequence;
+use crate::sym::{Arena, SymbolId, SymbolKind};
+
+/// A top's angle-form equations, lowered once and interpreted.
+///
+/// The state is `[q₀, q₁, q₂, q̇₀, q̇₁, q̇₂]`; time enters only through declared torques.
+/// As an [`crate::ode::System`] it is unchecked, for the steppers' inner loop (NaN at the
+/// chart's gimbal lock); [`TopModel::accel`] and [`AngleChart::rates_at`] check the chart
+/// under the one rule of [`super::check_chart`].
+///
+/// # Examples
+///
+/// The symmetric heavy top with its moments and weight as parameters; at θ = 60° and
+/// ω3 = 10 with I1 = 1, I3 = ½, M g l = 1 it precesses steadily at the slow root
+/// Ω = 0.204168476687 rad/s of I1 cos θ Ω² − I3 ω3 Ω + M g l = 0, so θ̈ vanishes:
+///
+/// ```
+/// use precess_core::top::{ModelError, TopError, TopModel, TopScene};
+/// use precess_core::sym::Arena;
+///
+/// let mut a = Arena::new();
+/// let (i1, i3) = (a.parameter("I_1"), a.parameter("I_3"));
+/// let z = a.zero();
+/// let mut scene = TopScene::free(&mut a, [[i1, z, z], [z, i1, z], [z, z, i3]]);
+/// scene.mass = a.parameter("M");
+/// scene.center = [z, z, a.parameter("l")];
+/// scene.gravity = Some(a.parameter("g"));
+/// let derivation = scene.derive(&mut a)?;
+///
+/// // Every parameter needs a value; a missing one is named.
+/// let partial = TopModel::new(&mut a, &derivation, &[("I_1", 1.0), ("I_3", 0.5)]);
+/// assert!(matches!(partial, Err(ModelError::UnsetParameter { name, .. }) if name == "M"));
+///
+/// let values = [("I_1", 1.0), ("I_3", 0.5), ("M", 1.0), ("g", 1.0), ("l", 1.0)];
+/// let model = TopModel::new(&mut a, &derivation, &values)?;
+/// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
+/// let q_ddot = model.accel(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
+/// assert!(q_ddot[1].abs() < 1e-10);
+///
+/// // Straight up, the ZXZ angles are singular.
+/// let vertical = model.accel(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
+/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct TopModel {
+    accel: Program,
+    energy: Program,
+    omega: Program,
+    momenta: Program,
+    rotation: Program,
+    rate_matrix: Program,
+    sequence: AngleSequence,
+    q: [SymbolId; 3],
+    rates: [SymbolId; 3],
+    time: Option<SymbolId>,
+    /// The parameters the programs read, by name.
+    parameters: Vec<(String, SymbolId)>,
+    env: RefCell<Vec<f64>>,
+    scratch: RefCell<Vec<f64>>,
+}
+
+impl TopModel {
+    /// Lowers the derivation's accelerations, energy, body rates and momenta, with a value for
+    /// each parameter they read (`(name, value)` pairs; [`TopModel::set`] changes one later).
+    ///
+    /// # Errors
+    /// [`ModelError::UnsetParameter`] naming a parameter the derivation reads that
+    /// `parameters` leaves out; [`ModelError::UnknownParameter`] for a name it does not read;
+    /// [`ModelError::NonFinite`] for a NaN or infinite value;
+    /// [`ModelError::RunTimeInput`] if the derivation reads a user torque's inputs, which
+    /// the interpreter cannot supply.
+    pub fn new(
+        arena: &mut Arena,
+        top: &TopDerivation,
+        parameters: &[(&str, f64)],
+    ) -> Result<TopModel, ModelError> {
+        let sym = |e| {
+            arena
+                .as_symbol(e)
+                .unwrap_or_else(|| unreachable!("coordinates are symbols"))
+        };
+        let c = top.coords();
+        let q = [sym(c.q[0]), sym(c.q[1]), sym(c.q[2])];
+        let rates = [sym(c.rates[0]), sym(c.rates[1]), sym(c.rates[2])];
+        let energy = top.energy(arena);
+        let programs = [
+            Program::lower(arena, &top.accelerations.accel),
+            Program::lower(arena, &[energy]),
+            Program::lower(arena, &top.omega),
+            Program::lower(arena, &top.equations.momenta),
+            Program::lower(arena, top.rotation.as_flattened()),
+            Program::lower(arena, top.rate_matrix.as_flattened()),
+        ];
+        let mut read: Vec<(String, SymbolId)> = Vec::new();
+        for s in programs.iter().flat_map(Program::inputs) {
+            let symbol = arena.symbol(s);
+            match symbol.kind {
+                SymbolKind::Parameter if !read.iter().any(|&(_, r)| r == s) => {
+                    read.push((symbol.name.clone(), s));
+                }
+                SymbolKind::Input => {
+                    return Err(ModelError::RunTimeInput {
+                        name: symbol.name.clone(),
+                    });
+                }
+                _ => {}
+            }
+        }
+        read.sort();
+        let [accel, energy, omega, momenta, rotation, rate_matrix] = programs;
+        let mut model = TopModel {
+            accel,
+            energy,
+            omega,
+            momenta,
+            rotation,
+            rate_matrix,
+            sequence: top.sequence,
+            q,
+            rates,
+            time: arena.time_symbol(),
+            parameters: read,
+            env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
+            scratch: RefCell::new(Vec::new()),
+        };
+        for &(name, value) in parameters {
+            model.set(name, value)?;
+        }
+        let env = model.env.get_mut();
+        if let Some((name, _)) = model
+            .parameters
+            .iter()
+            .find(|(_, s)| env[s.index()].is_nan())
+        {
+            return Err(ModelError::UnsetParameter {
+                name: name.clone(),
+                known: model.known(),
+            });
+        }
+        Ok(model)
+    }
+
+    /// The names of the parameters the derivation reads, in alphabetical order.
+    pub fn parameters(&self) -> impl ExactSizeIterator<Item = &str> + '_ {
+        self.parameters.iter().map(|(n, _)| n.as_str())
+    }
+
+    fn known(&self) -> String {
+        let known: Vec<&str> = self.parameters().collect();
+        if known.is_empty() {
+            "none".to_owned()
+        } else {
+            known.join(", ")
+        }
+    }
+
+    /// Sets the parameter `name`.
+    ///
+    /// # Errors
+    /// [`ModelError::UnknownParameter`] for a name the derivation does not read,
+    /// [`ModelError::NonFinite`] for NaN or ±∞.
+    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, ModelError> {
+        let Some(&(_, s)) = self.parameters.iter().find(|(n, _)| n == name) else {
+            return Err(ModelError::UnknownParameter {
+                name: name.to_owned(),
+                known: self.known(),
+            });
+        };
+        if !value.is_finite() {
+            return Err(ModelError::NonFinite {
+                name: name.to_owned(),
+                value,
+            });
+        }
+        self.env.get_mut()[s.index()] = value;
+        Ok(self)
+    }
+
+    fn run<const K: usize>(&self, p: &Program, t: f64, state: &[f64; 6]) -> [f64; K] {
+        let mut env = self.env.borrow_mut();
+        for k in 0..3 {
+            env[self.q[k].index()] = state[k];
+            env[self.rates[k].index()] = state[3 + k];
+        }
+        if let Some(ts) = self.time {
+            env[ts.index()] = t;
+        }
+        let mut out = [0.0; K];
+        p.eval_into(&env, &mut self.scratch.borrow_mut(), &mut out);
+        out
+    }
+
+    /// q̈ at the state `[q, q̇]` (at t = 0 for time-dependent torques), refusing a state the
+    /// chart cannot take.
+    ///
+    /// # Errors
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
+    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate
+    /// through it with [`super::ChartedTop`]; [`TopError::NonFiniteResult`] if q̈ overflows.
+    pub fn accel(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
+        check_state(state)?;
+        let q = [state[0], state[1], state[2]];
+        check_chart(self.sequence, &self.rate_matrix_at(state), &q)?;
+        let a: [f64; 3] = self.run(&self.accel, 0.0, state);
+        if a.iter().all(|v| v.is_finite()) {
+            Ok(a)
+        } else {
+            Err(TopError::NonFiniteResult {
+                quantity: "q̈",
+                values: a.to_vec(),
+            })
+        }
+    }
+
+    /// The energy T + V.
+    pub fn energy(&self, state: &[f64; 6]) -> f64 {
+        self.run::<1>(&self.energy, 0.0, state)[0]
+    }
+
+    /// The body angular velocity ω.
+    pub fn omega(&self, state: &[f64; 6]) -> [f64; 3] {
+        self.run(&self.omega, 0.0, state)
+    }
+
+    /// The momenta `p_i = ∂L/∂q̇_i`.
+    pub fn momenta(&self, state: &[f64; 6]) -> [f64; 3] {
+        self.run(&self.momenta, 0.0, state)
+    }
+
+    /// The attitude R(q), body to space, row-major.
+    pub fn rotation(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+        let r: [f64; 9] = self.run(&self.rotation, 0.0, state);
+        [[r[0], r[1], r[2]], [r[3], r[4], r[5]], [r[6], r[7], r[8]]]
+    }
+
+    /// B(q) with ω = B q̇, row-major.
+    pub fn rate_matrix(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+        let b: [f64; 9] = self.run(&self.rate_matrix, 0.0, state);
+        [[b[0], b[1], b[2]], [b[3], b[4], b[5]], [b[6], b[7], b[8]]]
+    }
+
+    /// The angle sequence of the state.
+    pub fn sequence(&self) -> AngleSequence {
+        self.sequence
+    }
+}
+
+impl System<6> for TopModel {
+    fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
+        let a: [f64; 3] = self.run(&self.accel, t, y);
+        dydt[..3].copy_from_slice(&y[3..]);
+        dydt[3..].copy_from_slice(&a);
+    }
+}
+
+impl AngleChart for TopModel {
+    fn sequence(&self) -> AngleSequence {
+        self.sequence
+    }
+    fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        let r = self.rotation(state);
+        Matrix3::from_fn(|i, j| r[i][j])
+    }
+    fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        let b = self.rate_matrix(state);
+        Matrix3::from_fn(|i, j| b[i][j])
+    }
+    fn energy_at(&self, state: &[f64; 6]) -> f64 {
+        self.energy(state)
+    }
+}

@@ -1,0 +1,35 @@
+//! The top: one rigid body turning about a fixed pivot, under the torques its scene declares.
+//!
+//! A scene over the engine, in one place:
+//! - [`TopScene`] builds the Lagrangian in Euler angles and the declared torques as
+//!   generalised forces, and [`TopScene::derive`] hands them to the Euler–Lagrange engine
+//!   ([`crate::lagrange`]), giving a [`TopDerivation`]; [`TopScene::eulerian_rhs`] gives the
+//!   same scene in Eulerian form.
+//! - [`Top`] is the trait `#[top(...)]` implements over the generated code; [`TopChart`] and
+//!   [`EulerianTop`] run a derived top with any stepper of [`crate::ode`].
+//! - [`ChartedTop`] gets through gimbal lock by switching between the ZXZ and ZYX charts
+//!   ([`AngleChart`]); [`rates_from_omega`] is the one rule for when a chart is singular.
+//! - [`TopModel`] is a derivation interpreted at run time, for scenes built at run time.
+//! - [`FastTop`] is a top as a splitting: the exact free-body flow and gravity kicks.
+
+mod angle_chart;
+mod charted_top;
+mod error;
+mod eulerian;
+mod fast_top;
+mod interpreted;
+mod rates;
+mod scene;
+mod top_chart;
+mod top_trait;
+
+pub use angle_chart::AngleChart;
+pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
+pub use error::{ChartError, ModelError, TopError};
+pub use eulerian::EulerianTop;
+pub use fast_top::FastTop;
+pub use interpreted::TopModel;
+pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
+pub use scene::{TopDerivation, TopScene};
+pub use top_chart::TopChart;
+pub use top_trait::{Top, angle_state};

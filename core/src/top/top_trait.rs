@@ -1,0 +1,174 @@
+//! The trait `#[top(...)]` implements: a derived top's equations in both angle charts and in
+//! Eulerian form, with the helpers built on them.
+
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
+
+use super::error::TopError;
+use super::rates::{check_chart, rates_from_omega};
+use crate::rigid::AngleSequence;
+
+/// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
+///
+/// Angle-form methods take the angles `q` and rates `q̇` of [`Top::SEQUENCE`]; the `_in`
+/// methods take either sequence (both are generated, so a simulation can switch charts at
+/// gimbal lock, see [`super::ChartedTop`]). The Eulerian form takes the attitude and the
+/// body angular velocity, in the description axes of the body.
+///
+/// The generated methods are straight-line code without checks, for the steppers' inner
+/// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
+/// NaN or infinite. The `try_` helpers and [`Top::rates_from_omega`] check the state and the
+/// chart first, under the one rule of [`super::check_chart`].
+///
+/// # Examples
+///
+/// The symmetric heavy top with I1 = 1, I3 = ½ about the pivot and M g l = 1 precesses
+/// steadily at θ = 60° with ω3 = 10 at Ω = 0.204168476687 rad/s (the slow root of
+/// I1 cos θ Ω² − I3 ω3 Ω + M g l = 0), so θ̈ vanishes there; straight up, the ZXZ chart is
+/// singular and the checked helper says so:
+///
+/// ```
+/// use precess::prelude::*;
+/// use precess::top::TopError;
+///
+/// #[derive(RigidBody)]
+/// #[rigid(
+///     body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+///     pivot = [0.0, 0.0, 0.0],
+/// )]
+/// #[top(gravity = 1.0)]
+/// struct Heavy;
+///
+/// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
+/// // ω3 = ψ̇ + φ̇ cos θ.
+/// let q_dot = [omega_p, 0.0, w3 - omega_p * theta.cos()];
+/// let q_ddot = Heavy.try_angle_accel(0.0, &[0.0, theta, 0.0], &q_dot).unwrap();
+/// assert!(q_ddot[1].abs() < 1e-10);
+///
+/// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
+/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// ```
+pub trait Top {
+    /// The declared angle sequence.
+    const SEQUENCE: AngleSequence;
+
+    /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
+    fn accel_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
+
+    /// R(q) in the chart `seq`, body to space.
+    fn rotation_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
+
+    /// B(q) in the chart `seq`: ω = B q̇.
+    fn rate_matrix_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
+
+    /// The energy T + V in the chart `seq`.
+    fn energy_in(&self, seq: AngleSequence, state: &[f64; 6]) -> f64;
+
+    /// The Jacobian of q̈ with respect to `(q, q̇)` in [`Top::SEQUENCE`]: row i holds
+    /// `∂q̈_i/∂(q_0, q_1, q_2, q̇_0, q̇_1, q̇_2)`.
+    fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3];
+
+    /// The momenta `∂L/∂q̇_i` of [`Top::SEQUENCE`] that are conserved for this scene
+    /// (`None` for the others).
+    fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [Option<f64>; 3];
+
+    /// The Eulerian form: ω̇ = I⁻¹(τ − ω × I ω), with the same torques, for the attitude
+    /// (body to space) and body angular velocity ω.
+    fn eulerian_rhs(
+        &self,
+        t: f64,
+        attitude: &UnitQuaternion<f64>,
+        omega: &Vector3<f64>,
+    ) -> Vector3<f64>;
+
+    /// q̈ in [`Top::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
+    /// [`Top::try_angle_accel`]).
+    fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
+        self.accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    }
+
+    /// q̈ in [`Top::SEQUENCE`], refusing a state the chart cannot take.
+    ///
+    /// # Errors
+    /// As [`Top::try_accel_in`].
+    fn try_angle_accel(
+        &self,
+        t: f64,
+        q: &[f64; 3],
+        q_dot: &[f64; 3],
+    ) -> Result<[f64; 3], TopError> {
+        self.try_accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    }
+
+    /// q̈ in the chart `seq`, refusing a state the chart cannot take.
+    ///
+    /// # Errors
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
+    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate through
+    /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
+    /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
+    fn try_accel_in(
+        &self,
+        seq: AngleSequence,
+        t: f64,
+        state: &[f64; 6],
+    ) -> Result<[f64; 3], TopError> {
+        check_state(state)?;
+        let q = [state[0], state[1], state[2]];
+        check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
+        let a = self.accel_in(seq, t, state);
+        if a.iter().all(|v| v.is_finite()) {
+            Ok(a)
+        } else {
+            Err(TopError::NonFiniteResult {
+                quantity: "q̈",
+                values: a.to_vec(),
+            })
+        }
+    }
+
+    /// The energy T + V in [`Top::SEQUENCE`].
+    fn energy(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> f64 {
+        self.energy_in(Self::SEQUENCE, &angle_state(q, q_dot))
+    }
+
+    /// The body angular velocity ω = B(q) q̇ of [`Top::SEQUENCE`].
+    fn omega_from_rates(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> Vector3<f64> {
+        self.rate_matrix_in(Self::SEQUENCE, q) * Vector3::from(*q_dot)
+    }
+
+    /// The rates q̇ = B(q)⁻¹ ω of [`Top::SEQUENCE`].
+    ///
+    /// # Errors
+    /// As [`super::rates_from_omega`]: [`TopError::SingularChart`] at gimbal lock
+    /// (`|det B|` below [`super::SINGULAR_DET`]), [`TopError::NonFinite`] for non-finite
+    /// input.
+    fn rates_from_omega(&self, q: &[f64; 3], omega: &Vector3<f64>) -> Result<[f64; 3], TopError> {
+        rates_from_omega(
+            Self::SEQUENCE,
+            &self.rate_matrix_in(Self::SEQUENCE, q),
+            q,
+            omega,
+        )
+    }
+}
+
+/// The angle-form state `[q, q̇]` that [`Top::accel_in`] and [`Top::energy_in`] take.
+pub fn angle_state(q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 6] {
+    [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]]
+}
+
+/// Checks that the angles and rates of an angle-form state are finite.
+///
+/// # Errors
+/// [`TopError::NonFinite`] naming the angles q or the rates q̇.
+pub(crate) fn check_state(state: &[f64; 6]) -> Result<(), TopError> {
+    for (quantity, part) in [("angles q", &state[..3]), ("rates q̇", &state[3..])] {
+        if !part.iter().all(|v| v.is_finite()) {
+            return Err(TopError::NonFinite {
+                quantity,
+                values: part.to_vec(),
+            });
+        }
+    }
+    Ok(())
+}
