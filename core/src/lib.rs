@@ -11,6 +11,7 @@ pub mod codegen;
 pub mod exact;
 pub mod lagrange;
 pub mod ode;
+pub mod rigid;
 pub mod sym;
 
 /// The linear-algebra crate precess's types come from, re-exported so users and generated

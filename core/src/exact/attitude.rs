@@ -15,6 +15,7 @@
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 use super::carlson::{rf, rj};
+use super::double_double::Dd;
 use super::elliptic::MAX_ARGUMENT;
 use super::error::{ExactError, finite};
 use super::free_body::{FreeBodyExact, Regime, pow2_scale};
@@ -146,7 +147,7 @@ impl FreeBodyAttitude {
     }
 
     /// Π̃(u) = ∫₀ᵘ dv/(1 − n sn² v) = 2jΠ̃(K) + Π̃(r) for u = 2jK + r, |r| ≤ K.
-    fn pi_tilde(fb: &FreeBodyExact, pr: &Precession, u: super::dd::Dd) -> Result<f64, ExactError> {
+    fn pi_tilde(fb: &FreeBodyExact, pr: &Precession, u: Dd) -> Result<f64, ExactError> {
         let jac = fb.jacobi();
         let (j, r) = jac.reduce(u);
         let (s, c, d) = jac.sncndn_reduced(r);

@@ -5,7 +5,7 @@
 //! Bulirsch (Numer. Math. 7, 1965; A&S 16.4). The argument is reduced modulo 2K in
 //! double-double arithmetic, so large arguments keep their digits.
 
-use super::dd::{Dd, PI};
+use super::double_double::{Dd, PI};
 use super::error::{ExactError, finite};
 
 /// Longest AGM chain kept (m_c down to 1e-300 needs about 12 steps).

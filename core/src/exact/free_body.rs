@@ -13,7 +13,7 @@
 //! carried in double-double: near the separatrix and over long times that is where the
 //! digits go.
 
-use super::dd::Dd;
+use super::double_double::Dd;
 use super::elliptic::{Jacobi, MAX_ARGUMENT};
 use super::error::{ExactError, finite};
 

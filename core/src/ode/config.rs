@@ -1,4 +1,5 @@
-//! Named settings of the adaptive driver, with documented defaults.
+//! Named settings of the steppers, with documented defaults: the adaptive driver's and the
+//! one fixed-step configuration shared by RK4 and the Lie-group RKMK4.
 
 use super::error::OdeError;
 
@@ -104,5 +105,80 @@ impl AdaptiveConfig {
             }
         }
         Ok(())
+    }
+}
+
+/// Settings of the fixed-step methods ([`Rk4`](super::Rk4) and the Lie-group RKMK4 of
+/// `rigid`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FixedStepConfig {
+    /// Largest step (default 1e-2). Each interval between stops is cut into the fewest equal
+    /// steps no longer than this, so stop times are hit exactly.
+    pub h: f64,
+}
+
+impl Default for FixedStepConfig {
+    fn default() -> Self {
+        Self { h: 1e-2 }
+    }
+}
+
+/// Most steps one `advance_to` of a fixed-step method will take (10¹²): a span that needs
+/// more is refused with [`OdeError::MaxStepsExceeded`] rather than run for days.
+const MAX_FIXED_STEPS: u64 = 1_000_000_000_000;
+
+impl FixedStepConfig {
+    /// The default configuration with largest step `h`.
+    ///
+    /// ```
+    /// let c = precess_core::ode::FixedStepConfig::with_step(1e-3);
+    /// approx::assert_relative_eq!(c.h, 1e-3);
+    /// ```
+    pub fn with_step(h: f64) -> Self {
+        Self {
+            h,
+            ..Self::default()
+        }
+    }
+
+    /// Checks the step.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite.
+    pub fn validate(&self) -> Result<(), OdeError> {
+        if self.h.is_finite() && self.h > 0.0 {
+            Ok(())
+        } else {
+            Err(OdeError::InvalidStep { h: self.h })
+        }
+    }
+
+    /// The fewest equal steps no longer than `h` that take `t` exactly to `t_stop`, as
+    /// (count, step); `None` when there is nothing to do.
+    ///
+    /// # Errors
+    /// [`OdeError::StopBeforeCurrent`] (also for a NaN stop), [`OdeError::NonFiniteTime`],
+    /// [`OdeError::MaxStepsExceeded`] beyond the step limit.
+    pub(crate) fn plan(&self, t: f64, t_stop: f64) -> Result<Option<(u64, f64)>, OdeError> {
+        if t_stop.is_nan() || t_stop < t {
+            return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
+        }
+        let span = t_stop - t;
+        if span == 0.0 {
+            return Ok(None);
+        }
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        // The small slack keeps span = n·h from adding a step.
+        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
+        if steps > MAX_FIXED_STEPS as f64 {
+            return Err(OdeError::MaxStepsExceeded {
+                t,
+                max_steps: MAX_FIXED_STEPS,
+            });
+        }
+        let n = steps as u64;
+        Ok(Some((n, span / n as f64)))
     }
 }

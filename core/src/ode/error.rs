@@ -111,7 +111,7 @@ pub enum OdeError {
 ///
 /// # Errors
 /// [`OdeError::NonFiniteInitialState`] naming the first NaN or infinite component.
-pub fn check_finite(y: &[f64]) -> Result<(), OdeError> {
+pub(crate) fn check_finite(y: &[f64]) -> Result<(), OdeError> {
     match y.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(OdeError::NonFiniteInitialState {
             index,
@@ -125,7 +125,7 @@ pub fn check_finite(y: &[f64]) -> Result<(), OdeError> {
 ///
 /// # Errors
 /// [`OdeError::NonFiniteTime`] or [`OdeError::EndBeforeStart`].
-pub fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
+pub(crate) fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
     for t in [t_start, t_end] {
         if !t.is_finite() {
             return Err(OdeError::NonFiniteTime { t });
@@ -141,7 +141,7 @@ pub fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
 ///
 /// # Errors
 /// [`OdeError::InvalidInertia`].
-pub fn check_inertia(mass: f64, inertia: [f64; 3]) -> Result<(), OdeError> {
+pub(crate) fn check_inertia(mass: f64, inertia: [f64; 3]) -> Result<(), OdeError> {
     let ok = |v: f64| v.is_finite() && v > 0.0;
     if ok(mass) && inertia.iter().all(|&v| ok(v)) {
         Ok(())

@@ -1,33 +1,16 @@
 //! The classical fixed-step Runge–Kutta method of order 4.
 
+use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
 use super::system::{Stats, System};
-
-/// Most steps one `advance_to` of a fixed-step method will take (10¹²): a span that needs
-/// more is refused with [`OdeError::MaxStepsExceeded`] rather than run for days.
-pub const MAX_FIXED_STEPS: u64 = 1_000_000_000_000;
-
-/// Settings of [`Rk4`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rk4Config {
-    /// Largest step (default 1e-2). Each interval between stops is cut into the fewest equal
-    /// steps no longer than this, so stop times are hit exactly.
-    pub h: f64,
-}
-
-impl Default for Rk4Config {
-    fn default() -> Self {
-        Self { h: 1e-2 }
-    }
-}
 
 /// Classical RK4: y₁ = y₀ + h (k₁ + 2k₂ + 2k₃ + k₄)/6, four evaluations per step, global
 /// error O(h⁴).
 ///
 /// ```
-/// use precess_core::ode::{FnSystem, Rk4, Rk4Config};
+/// use precess_core::ode::{FixedStepConfig, FnSystem, Rk4};
 /// let sys = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = y[0]);
-/// let mut rk = Rk4::new(sys, 0.0, [1.0], Rk4Config { h: 1e-3 })?;
+/// let mut rk = Rk4::new(sys, 0.0, [1.0], FixedStepConfig::with_step(1e-3))?;
 /// rk.advance_to(1.0)?;
 /// approx::assert_relative_eq!(rk.y()[0], 1f64.exp(), max_relative = 1e-12);
 /// # Ok::<(), precess_core::ode::OdeError>(())
@@ -35,7 +18,7 @@ impl Default for Rk4Config {
 #[derive(Debug, Clone)]
 pub struct Rk4<S, const N: usize> {
     sys: S,
-    h: f64,
+    cfg: FixedStepConfig,
     t: f64,
     y: [f64; N],
     stats: Stats,
@@ -46,15 +29,13 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     ///
     /// # Errors
     /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, non-finite `t0` or `y0`.
-    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: Rk4Config) -> Result<Self, OdeError> {
-        if !(cfg.h.is_finite() && cfg.h > 0.0) {
-            return Err(OdeError::InvalidStep { h: cfg.h });
-        }
+    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: FixedStepConfig) -> Result<Self, OdeError> {
+        cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
         Ok(Self {
             sys,
-            h: cfg.h,
+            cfg,
             t: t0,
             y: y0,
             stats: Stats::default(),
@@ -107,11 +88,11 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     ///
     /// # Errors
     /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
-    /// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`] before any work;
+    /// [`OdeError::MaxStepsExceeded`] beyond the step limit, before any work;
     /// [`OdeError::NonFiniteState`] (checked once per call, at the end, naming the start
     /// time of the interval).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        let Some((n, h)) = equal_steps(self.t, t_stop, self.h)? else {
+        let Some((n, h)) = self.cfg.plan(self.t, t_stop)? else {
             return Ok(());
         };
         let t0 = self.t;
@@ -125,33 +106,4 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         }
         Ok(())
     }
-}
-
-/// The fewest equal steps no longer than `h_max` that take `t` exactly to `t_stop`, as
-/// (count, step); `None` when there is nothing to do. Shared by the fixed-step methods.
-///
-/// # Errors
-/// [`OdeError::StopBeforeCurrent`] (also for a NaN stop), [`OdeError::NonFiniteTime`],
-/// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`].
-pub(crate) fn equal_steps(t: f64, t_stop: f64, h_max: f64) -> Result<Option<(u64, f64)>, OdeError> {
-    if t_stop.is_nan() || t_stop < t {
-        return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
-    }
-    let span = t_stop - t;
-    if span == 0.0 {
-        return Ok(None);
-    }
-    if !t_stop.is_finite() {
-        return Err(OdeError::NonFiniteTime { t: t_stop });
-    }
-    // The small slack keeps span = n·h from adding a step.
-    let steps = ((span / h_max) * (1.0 - 1e-12)).ceil().max(1.0);
-    if steps > MAX_FIXED_STEPS as f64 {
-        return Err(OdeError::MaxStepsExceeded {
-            t,
-            max_steps: MAX_FIXED_STEPS,
-        });
-    }
-    let n = steps as u64;
-    Ok(Some((n, span / n as f64)))
 }
