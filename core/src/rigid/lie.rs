@@ -7,6 +7,7 @@ use super::kinematics::rotate_body;
 use super::state::{
     Attitude, AttitudeModel, RigidBodyModel, RigidState, check_attitude, check_rigid,
 };
+use crate::body::euler_rhs_principal;
 use crate::ode::{OdeError, check_inertia};
 
 /// An element of the algebra so(3) × ℝᵏ: a rotation part plus a vector part.
@@ -90,7 +91,7 @@ impl<M: AttitudeModel> LieSystem<Attitude> for M {
     fn xi(&self, t: f64, y: &Attitude) -> AttitudeTangent {
         AttitudeTangent {
             rot: y.omega,
-            domega: euler_rates(self.inertia(), &y.omega, &self.torque(t, y)),
+            domega: euler_rhs_principal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
         }
     }
     fn check(&self) -> Result<(), OdeError> {
@@ -155,18 +156,10 @@ impl<M: RigidBodyModel> LieSystem<RigidState> for M {
             dx: y.v,
             dv: self.force(t, y) / self.mass(),
             rot: y.omega,
-            domega: euler_rates(self.inertia(), &y.omega, &self.torque(t, y)),
+            domega: euler_rhs_principal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
         }
     }
     fn check(&self) -> Result<(), OdeError> {
         check_inertia(self.mass(), self.inertia())
     }
-}
-
-/// Euler's equations: ω̇ = I⁻¹((I ω) × ω + G).
-///
-fn euler_rates(i: [f64; 3], w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
-    let l = Vector3::new(i[0] * w.x, i[1] * w.y, i[2] * w.z);
-    let r = l.cross(w) + g;
-    Vector3::new(r.x / i[0], r.y / i[1], r.z / i[2])
 }
