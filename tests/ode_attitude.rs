@@ -241,3 +241,51 @@ fn bad_bodies_and_steps_are_typed_errors() {
         Err(OdeError::NonFiniteInitialState { .. })
     ));
 }
+
+#[test]
+fn rkmk4_stops_at_the_first_non_finite_step() {
+    // A sphere with the torque I ω ⊙ ω: ω̇ᵢ = ωᵢ², which blows up at t = 1 from ω = (1, 1, 1).
+    struct Runaway;
+    impl AttitudeModel for Runaway {
+        fn inertia(&self) -> [f64; 3] {
+            [1.0, 1.0, 1.0]
+        }
+        fn torque(&self, _t: f64, s: &Attitude) -> Vector3<f64> {
+            s.omega.component_mul(&s.omega)
+        }
+    }
+    let s0 = Attitude {
+        q: UnitQuaternion::identity(),
+        omega: Vector3::new(1.0, 1.0, 1.0),
+    };
+    let mut m = Rkmk4::new(Runaway, 0.0, s0, FixedStepConfig::with_step(1e-3)).unwrap();
+    match m.advance_to(1e3) {
+        Err(OdeError::NonFiniteState { t }) => assert!((0.99..1.1).contains(&t), "t = {t}"),
+        other => panic!("expected NonFiniteState near t = 1, got {other:?}"),
+    }
+    assert!(m.stats().steps < 1_100, "{} steps", m.stats().steps);
+    assert!(m.state().omega.iter().all(|w| w.is_finite()));
+    assert!(matches!(
+        m.advance_to(f64::NAN),
+        Err(OdeError::NonFiniteTime { .. })
+    ));
+}
+
+#[test]
+fn a_quaternion_that_is_no_rotation_is_refused() {
+    // UnitQuaternion::new_unchecked lets any quaternion through; (0, 0, 0, 0) and (1, 1, 0, 0)
+    // are no rotations.
+    for (q, norm) in [
+        (Quaternion::new(0.0, 0.0, 0.0, 0.0), 0.0),
+        (Quaternion::new(1.0, 1.0, 0.0, 0.0), 2f64.sqrt()),
+    ] {
+        let s0 = Attitude {
+            q: UnitQuaternion::new_unchecked(q),
+            omega: Vector3::new(0.0, 0.0, 1.0),
+        };
+        match Rkmk4::new(Spun, 0.0, s0, FixedStepConfig::default()).map(|m| *m.state()) {
+            Err(OdeError::NotUnitQuaternion { norm: n }) => assert_eq!(n, norm),
+            other => panic!("expected NotUnitQuaternion, got {other:?}"),
+        }
+    }
+}

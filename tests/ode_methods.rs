@@ -264,7 +264,7 @@ fn bad_input_is_rejected_before_any_work() {
     let mut rk = Rk4::new(B5, 0.0, y0, FixedStepConfig::with_step(1e-3)).unwrap();
     assert!(matches!(
         rk.advance_to(1e300),
-        Err(OdeError::MaxStepsExceeded { .. })
+        Err(OdeError::TooManySteps { .. })
     ));
     assert!(matches!(
         rk.advance_to(f64::INFINITY),
@@ -307,6 +307,78 @@ fn blow_up_is_a_typed_error_not_nan() {
         solve::<Dop853Pair, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], cfg),
         Err(OdeError::MaxStepsExceeded { max_steps: 10, .. })
     ));
+}
+
+#[test]
+fn rk4_stops_at_the_first_non_finite_step() {
+    // y' = y², y(0) = 1 blows up at t = 1; asked to go to t = 1e4 (10⁷ steps), RK4 must stop
+    // at the blow-up, not run out the span and report its start.
+    let f = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = y[0] * y[0]);
+    let mut rk = Rk4::new(f, 0.0, [1.0], FixedStepConfig::with_step(1e-3)).unwrap();
+    match rk.advance_to(1e4) {
+        Err(OdeError::NonFiniteState { t }) => assert!((0.99..1.1).contains(&t), "t = {t}"),
+        other => panic!("expected NonFiniteState near t = 1, got {other:?}"),
+    }
+    assert!(rk.stats().steps < 1_100, "{} steps", rk.stats().steps);
+    // The integrator keeps the last finite state, at the start of the failed step.
+    assert!(rk.y()[0].is_finite() && rk.y()[0] > 1e3);
+    assert!((rk.t() - rk.stats().steps as f64 * 1e-3).abs() < 1e-9);
+}
+
+#[test]
+fn fixed_step_limit_is_checked_before_any_work() {
+    let cfg = FixedStepConfig {
+        max_steps: 1_000,
+        ..FixedStepConfig::with_step(1e-3)
+    };
+    let mut rk = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
+    assert_eq!(
+        rk.advance_to(2.0),
+        Err(OdeError::TooManySteps {
+            t: 0.0,
+            t_stop: 2.0,
+            h: 1e-3,
+            steps: 2000.0,
+            max_steps: 1_000
+        })
+    );
+    assert_eq!(rk.stats().steps, 0, "refused before any work");
+    // Exactly at the limit is allowed.
+    rk.advance_to(1.0).unwrap();
+    assert_eq!(rk.stats().steps, 1_000);
+    // The documented default: 10⁸ steps per call, so h = 1e-3 to t = 1e6 (10⁹ steps) is
+    // refused at once.
+    let mut rk = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], FixedStepConfig::with_step(1e-3)).unwrap();
+    assert!(matches!(
+        rk.advance_to(1e6),
+        Err(OdeError::TooManySteps {
+            max_steps: 100_000_000,
+            ..
+        })
+    ));
+    let msg = rk.advance_to(1e6).unwrap_err().to_string();
+    assert!(msg.contains("max_steps = 100000000"), "{msg}");
+}
+
+#[test]
+fn non_finite_stop_times_are_named_as_such() {
+    let y0 = [0.0, 1.0, 1.0];
+    let mut rk = Rk4::new(B5, 0.0, y0, FixedStepConfig::default()).unwrap();
+    let mut ode = Dopri5::new(B5, 0.0, y0, AdaptiveConfig::default()).unwrap();
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let named = |r: Result<(), OdeError>| matches!(r, Err(OdeError::NonFiniteTime { t }) if t.is_nan() == bad.is_nan());
+        assert!(named(rk.advance_to(bad)), "Rk4::advance_to({bad})");
+        assert!(named(ode.advance_to(bad)), "Adaptive::advance_to({bad})");
+        assert!(named(ode.step(bad)), "Adaptive::step({bad})");
+        assert!(
+            named(ode.dense_at(bad).map(|_| ())),
+            "Adaptive::dense_at({bad})"
+        );
+    }
+    let msg = ode.advance_to(f64::NAN).unwrap_err().to_string();
+    assert!(msg.contains("NaN is not finite"), "{msg}");
+    assert!(!msg.contains("before"), "{msg}");
+    assert_eq!((rk.stats().steps, ode.stats().steps), (0, 0));
 }
 
 mod no_nan {

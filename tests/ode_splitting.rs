@@ -328,3 +328,75 @@ fn bad_input_is_typed() {
         Err(OdeError::NonFiniteInitialState { .. })
     ));
 }
+
+#[test]
+fn splitting_steps_check_their_step_and_state() {
+    let s = FreeBodySplitting::new(GNI_I, SplittingOrder::Two).unwrap();
+    let mut y = gni();
+    for h in [f64::NAN, f64::INFINITY, 0.0, -0.1] {
+        assert!(
+            matches!(s.step(&mut y, h), Err(OdeError::InvalidStep { .. })),
+            "h = {h}"
+        );
+    }
+    assert_eq!(y, gni(), "a refused step leaves the state alone");
+    // A finite but enormous step overflows the rotation angle: a typed error, y kept.
+    assert!(matches!(
+        s.step(&mut y, 1e308),
+        Err(OdeError::NonFiniteState { .. })
+    ));
+    assert_eq!(y, gni());
+    s.step(&mut y, 0.01).unwrap();
+    assert!(y.m.iter().all(|v| v.is_finite()));
+    let no_rotation = BodyMomentum {
+        q: UnitQuaternion::new_unchecked(Quaternion::new(0.0, 0.0, 0.0, 0.0)),
+        ..gni()
+    };
+    assert!(matches!(
+        s.run(&mut no_rotation.clone(), 0.01, 10),
+        Err(OdeError::NotUnitQuaternion { norm: 0.0 })
+    ));
+}
+
+#[test]
+fn potential_splitting_names_a_bad_weight() {
+    let top = |weight: f64| PotentialSplitting {
+        free: FreeBodySplitting::new([1.0, 1.0, 0.5], SplittingOrder::Two).unwrap(),
+        potential: Gravity {
+            weight,
+            c: Vector3::new(0.0, 0.0, 10.0),
+        },
+    };
+    let y0 = BodyMomentum {
+        q: UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 1.0),
+        m: Vector3::new(0.0, 0.0, 25.0),
+    };
+    let mut y = y0;
+    assert!(matches!(
+        top(f64::NAN).run(&mut y, 0.01, 10),
+        Err(OdeError::InvalidParameter { name: "weight", .. })
+    ));
+    assert!(matches!(
+        top(f64::NAN).step(&mut y, 0.01),
+        Err(OdeError::InvalidParameter { name: "weight", .. })
+    ));
+    // A finite weight whose torque overflows: the kick is caught at once, y is kept.
+    assert!(matches!(
+        top(1e308).run(&mut y, 0.01, 10),
+        Err(OdeError::NonFiniteState { t: 0.0 })
+    ));
+    assert_eq!(y, y0);
+    // The same with the exact free flow: the kick is named, not the flow's argument.
+    let exact = PotentialSplitting {
+        free: ExactFreeFlow::new([1.0, 1.0, 0.5]).unwrap(),
+        potential: Gravity {
+            weight: 1e308,
+            c: Vector3::new(0.0, 0.0, 10.0),
+        },
+    };
+    assert!(matches!(
+        exact.run(&mut y, 0.01, 10),
+        Err(OdeError::NonFiniteState { t: 0.0 })
+    ));
+    assert_eq!(y, y0);
+}

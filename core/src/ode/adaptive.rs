@@ -173,10 +173,14 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// Takes one accepted step that does not pass `t_limit` (it lands on it exactly when close).
     ///
     /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_limit`,
     /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::StepSizeUnderflow`],
     /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`].
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        if t_limit.is_nan() || t_limit < self.t {
+        if !t_limit.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_limit });
+        }
+        if t_limit < self.t {
             return Err(OdeError::StopBeforeCurrent {
                 stop: t_limit,
                 t: self.t,
@@ -252,12 +256,13 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// Steps until `t == t_stop` exactly; no step crosses `t_stop`.
     ///
     /// # Errors
-    /// As [`Self::step`].
+    /// As [`Self::step`]: a NaN or infinite `t_stop` is [`OdeError::NonFiniteTime`] before
+    /// any work.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if t_stop.is_infinite() {
+        if !t_stop.is_finite() {
             return Err(OdeError::NonFiniteTime { t: t_stop });
         }
-        if t_stop.is_nan() || t_stop < self.t {
+        if t_stop < self.t {
             return Err(OdeError::StopBeforeCurrent {
                 stop: t_stop,
                 t: self.t,
@@ -274,8 +279,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// The first call after a step builds the interpolant (DOP853: 3 evaluations).
     ///
     /// # Errors
-    /// [`OdeError::OutsideLastStep`].
+    /// [`OdeError::NonFiniteTime`], [`OdeError::OutsideLastStep`].
     pub fn dense_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
         if !(t >= self.t_prev && t <= self.t) {
             return Err(OdeError::OutsideLastStep {
                 t,

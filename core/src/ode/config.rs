@@ -108,31 +108,41 @@ impl AdaptiveConfig {
     }
 }
 
-/// Settings of the fixed-step methods ([`Rk4`](super::Rk4) and the Lie-group RKMK4 of
-/// `rigid`).
+/// Settings of the fixed-step methods ([`Rk4`](super::Rk4) and the Lie-group
+/// [`Rkmk4`](crate::rigid::Rkmk4)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FixedStepConfig {
     /// Largest step (default 1e-2). Each interval between stops is cut into the fewest equal
     /// steps no longer than this, so stop times are hit exactly.
     pub h: f64,
+    /// Most steps one `advance_to` may take (default 10⁸, [`FixedStepConfig::MAX_STEPS`]). A
+    /// call that needs more is refused with [`OdeError::TooManySteps`] before any work: a
+    /// stop time or a step off by orders of magnitude fails at once instead of running for
+    /// minutes. Unlike the adaptive driver's budget this is per call, since the count is
+    /// known in advance.
+    pub max_steps: u64,
 }
 
 impl Default for FixedStepConfig {
     fn default() -> Self {
-        Self { h: 1e-2 }
+        Self {
+            h: 1e-2,
+            max_steps: Self::MAX_STEPS,
+        }
     }
 }
 
-/// Most steps one `advance_to` of a fixed-step method will take (10¹²): a span that needs
-/// more is refused with [`OdeError::MaxStepsExceeded`] rather than run for days.
-const MAX_FIXED_STEPS: u64 = 1_000_000_000_000;
-
 impl FixedStepConfig {
+    /// The default of [`FixedStepConfig::max_steps`]: 10⁸ steps, a few seconds of a small
+    /// system's RK4 and well beyond any span meant with a sensible step.
+    pub const MAX_STEPS: u64 = 100_000_000;
+
     /// The default configuration with largest step `h`.
     ///
     /// ```
     /// let c = precess_core::ode::FixedStepConfig::with_step(1e-3);
     /// approx::assert_relative_eq!(c.h, 1e-3);
+    /// assert_eq!(c.max_steps, 100_000_000);
     /// ```
     pub fn with_step(h: f64) -> Self {
         Self {
@@ -157,25 +167,28 @@ impl FixedStepConfig {
     /// (count, step); `None` when there is nothing to do.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`] (also for a NaN stop), [`OdeError::NonFiniteTime`],
-    /// [`OdeError::MaxStepsExceeded`] beyond the step limit.
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite stop, [`OdeError::StopBeforeCurrent`],
+    /// [`OdeError::TooManySteps`] beyond [`FixedStepConfig::max_steps`].
     pub(crate) fn plan(&self, t: f64, t_stop: f64) -> Result<Option<(u64, f64)>, OdeError> {
-        if t_stop.is_nan() || t_stop < t {
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        if t_stop < t {
             return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
         }
         let span = t_stop - t;
         if span == 0.0 {
             return Ok(None);
         }
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
         // The small slack keeps span = n·h from adding a step.
         let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
-        if steps > MAX_FIXED_STEPS as f64 {
-            return Err(OdeError::MaxStepsExceeded {
+        if steps > self.max_steps as f64 {
+            return Err(OdeError::TooManySteps {
                 t,
-                max_steps: MAX_FIXED_STEPS,
+                t_stop,
+                h: self.h,
+                steps,
+                max_steps: self.max_steps,
             });
         }
         let n = steps as u64;

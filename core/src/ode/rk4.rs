@@ -2,7 +2,7 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::system::{Stats, System};
+use super::system::{Stats, System, all_finite};
 
 /// Classical RK4: y₁ = y₀ + h (k₁ + 2k₂ + 2k₃ + k₄)/6, four evaluations per step, global
 /// error O(h⁴).
@@ -28,7 +28,8 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     /// Starts at `(t0, y0)`.
     ///
     /// # Errors
-    /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, non-finite `t0` or `y0`.
+    /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, [`OdeError::NonFiniteTime`] or
+    /// [`OdeError::NonFiniteInitialState`] for a non-finite `t0` or `y0`.
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: FixedStepConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         check_span(t0, t0)?;
@@ -57,10 +58,12 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         self.stats
     }
 
-    /// One step of size `h` (no checks; the caller guarantees h > 0); stage times are capped
-    /// at `t_hi` so a step ending on a stop samples a switch from its own side.
+    /// One step of size `h` from the current state (no checks; the caller guarantees
+    /// h > 0), returned rather than stored so that a non-finite result leaves the state as it
+    /// was; stage times are capped at `t_hi` so a step ending on a stop samples a switch from
+    /// its own side.
     #[inline]
-    fn step_unchecked(&mut self, h: f64, t_hi: f64) {
+    fn step_unchecked(&mut self, h: f64, t_hi: f64) -> [f64; N] {
         let (t, y) = (self.t, self.y);
         let (mut k1, mut k2, mut k3, mut k4, mut ys) =
             ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
@@ -77,33 +80,39 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             ys[i] = y[i] + h * k3[i];
         }
         self.sys.rhs((t + h).min(t_hi), &ys, &mut k4);
+        let mut y_new = [0.0; N];
         for i in 0..N {
-            self.y[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+            y_new[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         }
-        self.stats.steps += 1;
         self.stats.rhs_evals += 4;
+        y_new
     }
 
     /// Advances to exactly `t_stop` in equal steps no longer than the configured `h`.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
-    /// [`OdeError::MaxStepsExceeded`] beyond the step limit, before any work;
-    /// [`OdeError::NonFiniteState`] (checked once per call, at the end, naming the start
-    /// time of the interval).
+    /// Before any work: [`OdeError::NonFiniteTime`] for a NaN or infinite `t_stop`,
+    /// [`OdeError::StopBeforeCurrent`], [`OdeError::TooManySteps`] beyond
+    /// [`FixedStepConfig::max_steps`]. While stepping: [`OdeError::NonFiniteState`] at the
+    /// first step whose result is not finite, naming its start time; the integrator then
+    /// stays at the last finite state.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
         let Some((n, h)) = self.cfg.plan(self.t, t_stop)? else {
             return Ok(());
         };
         let t0 = self.t;
+        let t_hi = t_stop.next_down();
         for i in 1..=n {
-            self.step_unchecked(h, t_stop.next_down());
+            let y_new = self.step_unchecked(h, t_hi);
+            // Checked every step: a blow-up stops at once instead of running out the span.
+            if !all_finite(&y_new) {
+                return Err(OdeError::NonFiniteState { t: self.t });
+            }
+            self.y = y_new;
+            self.stats.steps += 1;
             self.t = t0 + i as f64 * h;
         }
         self.t = t_stop;
-        if self.y.iter().any(|v| !v.is_finite()) {
-            return Err(OdeError::NonFiniteState { t: t0 });
-        }
         Ok(())
     }
 }

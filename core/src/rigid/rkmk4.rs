@@ -38,7 +38,9 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
     /// Starts at (t0, y0).
     ///
     /// # Errors
-    /// [`OdeError::InvalidStep`], [`OdeError::InvalidInertia`], non-finite t0 or y0.
+    /// [`OdeError::InvalidStep`], [`OdeError::InvalidInertia`],
+    /// [`OdeError::NonFiniteTime`] or [`OdeError::NonFiniteInitialState`] for a non-finite t0
+    /// or y0, [`OdeError::NotUnitQuaternion`] for an attitude that is not a rotation.
     pub fn new(sys: S, t0: f64, y0: Y, cfg: FixedStepConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         check_span(t0, t0)?;
@@ -68,8 +70,10 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         self.stats
     }
 
-    /// One RKMK4 step of size h, stage times capped at `t_hi` (see [`Rk4`](crate::ode::Rk4)).
-    fn step(&mut self, h: f64, t_hi: f64) {
+    /// One RKMK4 step of size h from the current state, returned rather than stored so that a
+    /// non-finite result leaves the state as it was; stage times capped at `t_hi` (see
+    /// [`Rk4`](crate::ode::Rk4)).
+    fn step(&mut self, h: f64, t_hi: f64) -> Y {
         let (t, y0) = (self.t, self.y);
         let stage = |u: &Y::Tangent, tt: f64| {
             let mut k = self.sys.xi(tt, &y0.exp_act(u));
@@ -91,30 +95,35 @@ impl<Y: LieState, S: LieSystem<Y>> Rkmk4<S, Y> {
         u.axpy(h / 3.0, &k2);
         u.axpy(h / 3.0, &k3);
         u.axpy(h / 6.0, &k4);
-        self.y = y0.exp_act(&u);
-        self.stats.steps += 1;
         self.stats.rhs_evals += 4;
+        y0.exp_act(&u)
     }
 
     /// Advances to exactly `t_stop` in equal steps no longer than the configured h.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
-    /// [`OdeError::MaxStepsExceeded`] before any work; [`OdeError::NonFiniteState`] if the
-    /// state blew up.
+    /// Before any work: [`OdeError::NonFiniteTime`] for a NaN or infinite `t_stop`,
+    /// [`OdeError::StopBeforeCurrent`], [`OdeError::TooManySteps`] beyond
+    /// [`FixedStepConfig::max_steps`]. While stepping: [`OdeError::NonFiniteState`] at the
+    /// first step whose result is not finite, naming its start time; the integrator then
+    /// stays at the last finite state.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
         let Some((n, h)) = self.cfg.plan(self.t, t_stop)? else {
             return Ok(());
         };
         let t0 = self.t;
+        let t_hi = t_stop.next_down();
         for i in 1..=n {
-            self.step(h, t_stop.next_down());
+            let y_new = self.step(h, t_hi);
+            // Checked every step: a blow-up stops at once instead of running out the span.
+            if y_new.check().is_err() {
+                return Err(OdeError::NonFiniteState { t: self.t });
+            }
+            self.y = y_new;
+            self.stats.steps += 1;
             self.t = t0 + i as f64 * h;
         }
         self.t = t_stop;
-        if self.y.check().is_err() {
-            return Err(OdeError::NonFiniteState { t: t0 });
-        }
         Ok(())
     }
 }

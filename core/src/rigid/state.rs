@@ -64,19 +64,40 @@ pub struct BodyMomentum {
     pub m: Vector3<f64>,
 }
 
+/// How far |q| may be from 1 in a state handed to a stepper (a `UnitQuaternion` built
+/// unchecked from data): beyond this it is no rotation, and is refused rather than
+/// normalised silently.
+pub(crate) const UNIT_NORM_TOLERANCE: f64 = 1e-6;
+
+/// Checks that a finite attitude quaternion has unit norm.
+///
+/// # Errors
+/// [`OdeError::NotUnitQuaternion`].
+pub(crate) fn check_unit(q: &UnitQuaternion<f64>) -> Result<(), OdeError> {
+    let norm = q.quaternion().norm();
+    if (norm - 1.0).abs() <= UNIT_NORM_TOLERANCE {
+        Ok(())
+    } else {
+        Err(OdeError::NotUnitQuaternion { norm })
+    }
+}
+
 /// Checks the initial data of an attitude state.
 ///
 /// # Errors
-/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in q or ω.
+/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in q or ω,
+/// [`OdeError::NotUnitQuaternion`].
 pub(crate) fn check_attitude(s: &Attitude) -> Result<(), OdeError> {
     check_finite(s.q.quaternion().coords.as_slice())?;
-    check_finite(s.omega.as_slice())
+    check_finite(s.omega.as_slice())?;
+    check_unit(&s.q)
 }
 
 /// Checks the initial data of a rigid state.
 ///
 /// # Errors
-/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in any component.
+/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in any component,
+/// [`OdeError::NotUnitQuaternion`].
 pub(crate) fn check_rigid(s: &RigidState) -> Result<(), OdeError> {
     check_finite(s.x.as_slice())?;
     check_finite(s.v.as_slice())?;
@@ -89,8 +110,16 @@ pub(crate) fn check_rigid(s: &RigidState) -> Result<(), OdeError> {
 /// Checks the state of the splittings.
 ///
 /// # Errors
-/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in q or m.
+/// [`OdeError::NonFiniteInitialState`] for NaN or ∞ in q or m,
+/// [`OdeError::NotUnitQuaternion`].
 pub(crate) fn check_momentum(y: &BodyMomentum) -> Result<(), OdeError> {
     check_finite(y.q.quaternion().coords.as_slice())?;
-    check_finite(y.m.as_slice())
+    check_finite(y.m.as_slice())?;
+    check_unit(&y.q)
+}
+
+/// `true` when q and m are finite (the per-step check of the splittings; |q| = 1 holds by
+/// construction there).
+pub(crate) fn momentum_is_finite(y: &BodyMomentum) -> bool {
+    y.q.coords.iter().chain(y.m.iter()).all(|v| v.is_finite())
 }

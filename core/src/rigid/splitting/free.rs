@@ -11,7 +11,7 @@ use nalgebra::{Quaternion, UnitQuaternion};
 
 use crate::ode::{OdeError, check_inertia};
 use crate::rigid::kinematics::rotate_body;
-use crate::rigid::state::{BodyMomentum, check_momentum};
+use crate::rigid::state::{BodyMomentum, check_momentum, momentum_is_finite};
 
 /// Order of the composed method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -64,7 +64,7 @@ fn axis_rotation(y: &mut BodyMomentum, axis: usize, theta: f64) {
 /// let s = FreeBodySplitting::new([2.0, 1.0, 2.0 / 3.0], SplittingOrder::Four)?;
 /// let mut y = BodyMomentum { q: UnitQuaternion::identity(), m: Vector3::new(1.1f64.cos(), 0.0, 1.1f64.sin()) };
 /// for _ in 0..1000 {
-///     s.step(&mut y, 0.01);
+///     s.step(&mut y, 0.01)?;
 /// }
 /// // m(10) of the GNI book's body.
 /// approx::assert_relative_eq!(y.m.x, 0.407_066_136_588_040_8, epsilon = 1e-8);
@@ -143,7 +143,25 @@ impl FreeBodySplitting {
 
     /// One step of the configured order: Strang sub-steps R₁(τ/2) R₃(τ) R₁(τ/2) with the
     /// triple-jump weights, and the Casimir rotation (which commutes with both) once.
-    pub fn step(&self, y: &mut BodyMomentum, h: f64) {
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite, [`OdeError::NonFiniteInitialState`]
+    /// or [`OdeError::NotUnitQuaternion`] for a bad `y`, [`OdeError::NonFiniteState`] (with
+    /// t = 0) if the rotation angles overflow; `y` is left as it was on error.
+    pub fn step(&self, y: &mut BodyMomentum, h: f64) -> Result<(), OdeError> {
+        check_step(h)?;
+        check_momentum(y)?;
+        let mut z = *y;
+        self.step_unchecked(&mut z, h);
+        if !momentum_is_finite(&z) {
+            return Err(OdeError::NonFiniteState { t: 0.0 });
+        }
+        *y = z;
+        Ok(())
+    }
+
+    /// [`Self::step`] without its checks, for callers that make them.
+    pub(super) fn step_unchecked(&self, y: &mut BodyMomentum, h: f64) {
         let (w, k) = self.weights();
         for &g in &w[..k] {
             self.r1(y, 0.5 * g * h);
@@ -158,19 +176,28 @@ impl FreeBodySplitting {
     /// costs two rotations and |m| sees a third less round-off.
     ///
     /// # Errors
-    /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite; [`OdeError::NonFiniteInitialState`].
+    /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite; [`OdeError::NonFiniteInitialState`]
+    /// or [`OdeError::NotUnitQuaternion`] for a bad `y`; [`OdeError::NonFiniteState`] at the
+    /// first step whose rotation angles overflow (t = i·h from the start of the call), with
+    /// `y` left at the last finite state.
     pub fn run(&self, y: &mut BodyMomentum, h: f64, n: u64) -> Result<(), OdeError> {
         check_step(h)?;
         check_momentum(y)?;
         let (w, k) = self.weights();
         let mut pending = 0.0;
-        for _ in 0..n {
+        for i in 0..n {
+            let mut z = *y;
             for &g in &w[..k] {
-                self.r1(y, pending + 0.5 * g * h);
-                self.r3(y, g * h);
+                self.r1(&mut z, pending + 0.5 * g * h);
+                self.r3(&mut z, g * h);
                 pending = 0.5 * g * h;
             }
-            self.casimir(y, h);
+            self.casimir(&mut z, h);
+            // Checked every step: an overflow stops at once, before NaN spreads.
+            if !momentum_is_finite(&z) {
+                return Err(OdeError::NonFiniteState { t: i as f64 * h });
+            }
+            *y = z;
         }
         self.r1(y, pending);
         Ok(())

@@ -6,7 +6,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 use super::free::{FreeBodySplitting, check_step};
 use crate::exact::free_body_flow_attitude;
 use crate::ode::{OdeError, check_inertia};
-use crate::rigid::state::{BodyMomentum, check_momentum};
+use crate::rigid::state::{BodyMomentum, check_momentum, momentum_is_finite};
 
 /// A potential on the attitude for the kick steps.
 pub trait Potential {
@@ -14,6 +14,14 @@ pub trait Potential {
     fn energy(&self, q: &UnitQuaternion<f64>) -> f64;
     /// Body-frame torque G(q) = −(dV) expressed as a body vector.
     fn torque(&self, q: &UnitQuaternion<f64>) -> Vector3<f64>;
+    /// Checks the potential's parameters before a splitting steps with it (default: none to
+    /// check).
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidParameter`] naming the offending parameter.
+    fn check(&self) -> Result<(), OdeError> {
+        Ok(())
+    }
 }
 
 /// Uniform gravity on a body pivoted at the space origin: V = M g (R c)·ẑ,
@@ -34,6 +42,19 @@ impl Potential for Gravity {
         let down = q.inverse() * Vector3::new(0.0, 0.0, -self.weight);
         self.c.cross(&down)
     }
+    /// The weight and the lever must be finite.
+    fn check(&self) -> Result<(), OdeError> {
+        let named = [
+            ("weight", self.weight),
+            ("c.x", self.c.x),
+            ("c.y", self.c.y),
+            ("c.z", self.c.z),
+        ];
+        match named.into_iter().find(|(_, v)| !v.is_finite()) {
+            Some((name, value)) => Err(OdeError::InvalidParameter { name, value }),
+            None => Ok(()),
+        }
+    }
 }
 
 /// A free-body flow usable as the kinetic part of a splitting.
@@ -52,7 +73,8 @@ impl FreeFlow for FreeBodySplitting {
         FreeBodySplitting::inertia(self)
     }
     fn flow(&self, y: &mut BodyMomentum, h: f64) -> Result<(), OdeError> {
-        self.step(y, h);
+        // The splitting that calls this checks h and the state around it.
+        self.step_unchecked(y, h);
         Ok(())
     }
 }
@@ -126,24 +148,47 @@ impl<P: Potential, F: FreeFlow> PotentialSplitting<P, F> {
     /// One step of size h.
     ///
     /// # Errors
-    /// As [`FreeFlow::flow`].
+    /// As [`Self::run`] for one step.
     pub fn step(&self, y: &mut BodyMomentum, h: f64) -> Result<(), OdeError> {
-        y.m += 0.5 * h * self.potential.torque(&y.q);
-        self.free.flow(y, h)?;
-        y.m += 0.5 * h * self.potential.torque(&y.q);
-        Ok(())
+        self.run(y, h, 1)
     }
 
     /// `n` steps of size `h`.
     ///
     /// # Errors
-    /// [`OdeError::InvalidStep`], [`OdeError::NonFiniteInitialState`], then as [`Self::step`].
+    /// Before any work: [`OdeError::InvalidStep`] for h ≤ 0 or non-finite,
+    /// [`OdeError::NonFiniteInitialState`] or [`OdeError::NotUnitQuaternion`] for a bad `y`,
+    /// [`OdeError::InvalidParameter`] from [`Potential::check`] (a NaN weight). While
+    /// stepping: [`OdeError::NonFiniteState`] at the first step whose kick or free flow is not
+    /// finite (an overflowing weight; t = i·h from the start of the call), or the free flow's
+    /// error; `y` is then left at the last finite state.
     pub fn run(&self, y: &mut BodyMomentum, h: f64, n: u64) -> Result<(), OdeError> {
         check_step(h)?;
         check_momentum(y)?;
-        for _ in 0..n {
-            self.step(y, h)?;
+        self.potential.check()?;
+        for i in 0..n {
+            let t = i as f64 * h;
+            let mut z = *y;
+            // Each stage is checked before the next uses it, so the error names the stage's
+            // start rather than a non-finite argument of the exact flow downstream.
+            self.kick(&mut z, 0.5 * h, t)?;
+            self.free.flow(&mut z, h)?;
+            if !momentum_is_finite(&z) {
+                return Err(OdeError::NonFiniteState { t });
+            }
+            self.kick(&mut z, 0.5 * h, t)?;
+            *y = z;
         }
         Ok(())
+    }
+
+    /// m ← m + τ G(q); `t` names the step in the error.
+    fn kick(&self, y: &mut BodyMomentum, tau: f64, t: f64) -> Result<(), OdeError> {
+        y.m += tau * self.potential.torque(&y.q);
+        if y.m.iter().all(|v| v.is_finite()) {
+            Ok(())
+        } else {
+            Err(OdeError::NonFiniteState { t })
+        }
     }
 }
