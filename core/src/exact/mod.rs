@@ -11,6 +11,7 @@ mod double_double;
 mod elliptic;
 mod error;
 mod free_body;
+mod scaling;
 
 pub use attitude::{FreeBodyAttitude, free_body_flow_attitude};
 pub use double_double::Dd;
