@@ -16,10 +16,11 @@ use std::time::Duration;
 use criterion::Criterion;
 use nalgebra::{UnitQuaternion, Vector3};
 use precess_core::exact::{FreeBodyExact, Jacobi};
-use precess_core::ode::splitting::{BodyMomentum, FreeBodySplitting, Order};
 use precess_core::ode::{
-    AdaptiveConfig, Dp54, Dp853, EmbeddedPair, Rk4, Rk4Config, System, Vern98, solve,
+    AdaptiveConfig, Dop853Pair, Dopri5Pair, EmbeddedPair, FixedStepConfig, Rk4, System, Vern9Pair,
+    solve,
 };
+use precess_core::rigid::{BodyMomentum, FreeBodySplitting, SplittingOrder};
 
 /// DETEST B5 y(20), 30-digit reference.
 const B5_Y20: [f64; 3] = [
@@ -64,7 +65,7 @@ enum Method {
     Dop853(f64),
     Dopri5(f64),
     Rk4(f64),
-    Split(Order, f64),
+    Split(SplittingOrder, f64),
     Exact,
 }
 
@@ -92,7 +93,7 @@ fn adaptive<P: EmbeddedPair, S: System<3>>(
 }
 
 fn rk4<S: System<3>>(sys: S, y0: [f64; 3], t: f64, h: f64) -> ([f64; 3], u64) {
-    let mut r = Rk4::new(sys, 0.0, y0, Rk4Config { h }).unwrap();
+    let mut r = Rk4::new(sys, 0.0, y0, FixedStepConfig::with_step(h)).unwrap();
     r.advance_to(t).unwrap();
     (*r.y(), r.stats().rhs_evals)
 }
@@ -100,9 +101,9 @@ fn rk4<S: System<3>>(sys: S, y0: [f64; 3], t: f64, h: f64) -> ([f64; 3], u64) {
 fn run_b5(m: Method) -> ([f64; 3], u64) {
     let y0 = [0.0, 1.0, 1.0];
     match m {
-        Method::Vern9(tol) => adaptive::<Vern98, _>(B5, y0, 20.0, tol),
-        Method::Dop853(tol) => adaptive::<Dp853, _>(B5, y0, 20.0, tol),
-        Method::Dopri5(tol) => adaptive::<Dp54, _>(B5, y0, 20.0, tol),
+        Method::Vern9(tol) => adaptive::<Vern9Pair, _>(B5, y0, 20.0, tol),
+        Method::Dop853(tol) => adaptive::<Dop853Pair, _>(B5, y0, 20.0, tol),
+        Method::Dopri5(tol) => adaptive::<Dopri5Pair, _>(B5, y0, 20.0, tol),
         Method::Rk4(h) => rk4(B5, y0, 20.0, h),
         Method::Split(..) => unreachable!("B5 is not a rigid body"),
         Method::Exact => {
@@ -114,9 +115,9 @@ fn run_b5(m: Method) -> ([f64; 3], u64) {
 
 fn run_sep(m: Method) -> ([f64; 3], u64) {
     match m {
-        Method::Vern9(tol) => adaptive::<Vern98, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
-        Method::Dop853(tol) => adaptive::<Dp853, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
-        Method::Dopri5(tol) => adaptive::<Dp54, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
+        Method::Vern9(tol) => adaptive::<Vern9Pair, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
+        Method::Dop853(tol) => adaptive::<Dop853Pair, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
+        Method::Dopri5(tol) => adaptive::<Dopri5Pair, _>(FreeBody(SEP_I), SEP_M0, SEP_T, tol),
         Method::Rk4(h) => rk4(FreeBody(SEP_I), SEP_M0, SEP_T, h),
         Method::Split(order, h) => {
             let s = FreeBodySplitting::new(SEP_I, order).unwrap();
@@ -155,7 +156,11 @@ fn sep_methods() -> Vec<Method> {
     v.extend([1e-10, 1e-12, 1e-14].map(Method::Vern9));
     v.extend([1e-8, 1e-10, 1e-12].map(Method::Dopri5));
     v.extend([0.1, 0.03, 0.01].map(Method::Rk4));
-    for o in [Order::Two, Order::Four, Order::Six] {
+    for o in [
+        SplittingOrder::Two,
+        SplittingOrder::Four,
+        SplittingOrder::Six,
+    ] {
         v.extend([0.1, 0.05, 0.02].map(|h| Method::Split(o, h)));
     }
     v.push(Method::Exact);
@@ -198,7 +203,7 @@ fn main() {
             black_box(run_b5(Method::Vern9(1e-10)));
             black_box(run_b5(Method::Dopri5(1e-10)));
             black_box(run_b5(Method::Rk4(0.01)));
-            black_box(run_sep(Method::Split(Order::Four, 0.1)));
+            black_box(run_sep(Method::Split(SplittingOrder::Four, 0.1)));
             black_box(run_sep(Method::Exact));
         }
         return;

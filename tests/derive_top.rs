@@ -274,7 +274,7 @@ fn literal_top_follows_the_exact_nutation() {
 /// Any stepper runs a derived top: RK4 (fixed step) and DOPRI5 land where DOP853 does.
 #[test]
 fn any_stepper_runs_the_generated_top() {
-    use precess_core::ode::{Dopri5, Rk4, Rk4Config};
+    use precess_core::ode::{Dopri5, FixedStepConfig, Rk4};
     let top = brick();
     let chart = TopChart::declared(&top);
     let y0 = [0.1, 0.8, -0.3, 0.4, -0.2, 30.0];
@@ -283,7 +283,7 @@ fn any_stepper_runs_the_generated_top() {
     reference.advance_to(1.0).unwrap();
     let mut dopri = Dopri5::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(1e-10, 1e-10)).unwrap();
     dopri.advance_to(1.0).unwrap();
-    let mut rk4 = Rk4::new(&chart, 0.0, y0, Rk4Config { h: 1e-4 }).unwrap();
+    let mut rk4 = Rk4::new(&chart, 0.0, y0, FixedStepConfig::with_step(1e-4)).unwrap();
     rk4.advance_to(1.0).unwrap();
     for k in 0..6 {
         let r = reference.y()[k];

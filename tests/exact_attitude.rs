@@ -3,7 +3,7 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use precess_core::exact::{ExactError, FreeBodyAttitude, Regime};
-use precess_core::ode::{AdaptiveConfig, Dp853, System, solve};
+use precess_core::ode::{AdaptiveConfig, Dop853Pair, System, solve};
 
 struct Ode([f64; 3]);
 impl System<7> for Ode {
@@ -46,7 +46,7 @@ fn every_regime_matches_dop853() {
         assert_eq!(ex.regime(), regime);
         for t in [0.3, 7.0, 30.0] {
             let y0 = [q0.w, q0.i, q0.j, q0.k, m0[0], m0[1], m0[2]];
-            let r = solve::<Dp853, _, 7>(Ode(i), 0.0, y0, t, &[], cfg)
+            let r = solve::<Dop853Pair, _, 7>(Ode(i), 0.0, y0, t, &[], cfg)
                 .unwrap()
                 .y;
             let qr = UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]));

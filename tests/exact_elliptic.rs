@@ -257,7 +257,7 @@ mod properties {
             prop_assert!((sn * sn + cn * cn - 1.0).abs() <= 6e-16);
             prop_assert!((dn * dn + (1.0 - mc) * sn * sn - 1.0).abs() <= 6e-16);
             prop_assert!(dn >= mc.sqrt() * (1.0 - 1e-12) && dn <= 1.0 + 1e-16);
-            let (s2, c2, d2) = j.sncndn_dd(j.k_dd() * precess_core::exact::dd::Dd::from(4.0) + precess_core::exact::dd::Dd::from(u));
+            let (s2, c2, d2) = j.sncndn_dd(j.k_dd() * precess_core::exact::Dd::from(4.0) + precess_core::exact::Dd::from(u));
             let tol = 1e-15 * (1.0 + u.abs());
             prop_assert!((s2 - sn).abs() <= tol && (c2 - cn).abs() <= tol && (d2 - dn).abs() <= tol);
         }

@@ -7,7 +7,7 @@ mod common;
 
 use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::exact::{ExactError, FreeBodyExact, Regime, free_body_flow};
-use precess_core::ode::{AdaptiveConfig, Dp853, solve};
+use precess_core::ode::{AdaptiveConfig, Dop853Pair, solve};
 
 const GNI_PERIOD: f64 = 10.731_465_234_882_8;
 const GNI_H: f64 = 0.647_125_279_313_836;
@@ -105,7 +105,7 @@ fn every_regime_agrees_with_dop853() {
         let fb = FreeBodyExact::new(inertia, m0).unwrap();
         assert_eq!(fb.regime(), regime, "{inertia:?} {m0:?}");
         for t_end in [0.7, 10.0, 40.0] {
-            let s = solve::<Dp853, _, 3>(FreeBody(inertia), 0.0, m0, t_end, &[], cfg).unwrap();
+            let s = solve::<Dop853Pair, _, 3>(FreeBody(inertia), 0.0, m0, t_end, &[], cfg).unwrap();
             let e = dist(&fb.m_at(t_end).unwrap(), &s.y);
             assert!(e <= 1e-11, "{inertia:?} {m0:?} t={t_end}: {e:e}");
         }
@@ -197,7 +197,7 @@ mod properties {
         ) {
             prop_assume!(m0.iter().map(|x| x * x).sum::<f64>() > 1e-2);
             let fb = FreeBodyExact::new(i, m0).unwrap();
-            let s = solve::<Dp853, _, 3>(FreeBody(i), 0.0, m0, 3.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap();
+            let s = solve::<Dop853Pair, _, 3>(FreeBody(i), 0.0, m0, 3.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap();
             let g = m0.iter().map(|x| x * x).sum::<f64>().sqrt();
             prop_assert!(dist(&fb.m_at(3.0).unwrap(), &s.y) <= 1e-10 * g, "{:e}", dist(&fb.m_at(3.0).unwrap(), &s.y));
             let m = fb.m_at(t).unwrap();

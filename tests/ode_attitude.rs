@@ -3,9 +3,8 @@
 //! (q̇ = ½ q ⊗ (0, ω) beside Euler's equations and M ẍ = F) as the second method.
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
-use precess_core::ode::attitude::{Attitude, AttitudeModel, RigidBodyModel, RigidState};
-use precess_core::ode::lie::{Rkmk4, Rkmk4Config};
-use precess_core::ode::{AdaptiveConfig, Dp853, OdeError, System, solve};
+use precess_core::ode::{AdaptiveConfig, Dop853Pair, FixedStepConfig, OdeError, System, solve};
+use precess_core::rigid::{Attitude, AttitudeModel, RigidBodyModel, RigidState, Rkmk4};
 
 const I: [f64; 3] = [1.0, 2.0, 3.0];
 
@@ -82,7 +81,7 @@ fn attitude_error(h: f64, t_end: f64, reference: &[f64; 7]) -> f64 {
         q: q0(),
         omega: Vector3::new(0.3, 1.0, -0.4),
     };
-    let mut m = Rkmk4::new(Spun, 0.0, s0, Rkmk4Config { h }).unwrap();
+    let mut m = Rkmk4::new(Spun, 0.0, s0, FixedStepConfig::with_step(h)).unwrap();
     m.advance_to(t_end).unwrap();
     let s = m.state();
     let qr = UnitQuaternion::from_quaternion(Quaternion::new(
@@ -99,7 +98,7 @@ fn attitude_error(h: f64, t_end: f64, reference: &[f64; 7]) -> f64 {
 fn rkmk4_is_order_four_against_dop853() {
     let q = q0();
     let y0 = [q.w, q.i, q.j, q.k, 0.3, 1.0, -0.4];
-    let reference = solve::<Dp853, _, 7>(
+    let reference = solve::<Dop853Pair, _, 7>(
         SpunOde,
         0.0,
         y0,
@@ -125,7 +124,7 @@ fn quaternion_norm_after_a_million_steps() {
         q: q0(),
         omega: Vector3::new(0.3, 1.0, -0.4),
     };
-    let mut m = Rkmk4::new(Spun, 0.0, s0, Rkmk4Config { h: 1e-3 }).unwrap();
+    let mut m = Rkmk4::new(Spun, 0.0, s0, FixedStepConfig::with_step(1e-3)).unwrap();
     m.advance_to(1000.0).unwrap();
     assert_eq!(m.stats().steps, 1_000_000);
     let e = (m.state().q.quaternion().norm() - 1.0).abs();
@@ -145,7 +144,7 @@ fn rigid_body_under_force_and_torque_matches_dop853() {
     let y0 = [
         1.0, 0.0, 2.0, 0.5, -1.0, 3.0, q.w, q.i, q.j, q.k, 0.3, 1.0, -0.4,
     ];
-    let r = solve::<Dp853, _, 13>(
+    let r = solve::<Dop853Pair, _, 13>(
         RocketOde,
         0.0,
         y0,
@@ -155,7 +154,7 @@ fn rigid_body_under_force_and_torque_matches_dop853() {
     )
     .unwrap()
     .y;
-    let mut m = Rkmk4::new(Rocket, 0.0, s0, Rkmk4Config { h: 1e-3 }).unwrap();
+    let mut m = Rkmk4::new(Rocket, 0.0, s0, FixedStepConfig::with_step(1e-3)).unwrap();
     m.advance_to(3.0).unwrap();
     let s = m.state();
     let ex = (s.x - Vector3::new(r[0], r[1], r[2])).amax();
@@ -189,7 +188,7 @@ fn free_fall_is_exact() {
         q: UnitQuaternion::identity(),
         omega: Vector3::zeros(),
     };
-    let mut m = Rkmk4::new(Drop, 0.0, s0, Rkmk4Config { h: 0.1 }).unwrap();
+    let mut m = Rkmk4::new(Drop, 0.0, s0, FixedStepConfig::with_step(0.1)).unwrap();
     m.advance_to(2.0).unwrap();
     let x = m.state().x;
     assert!(
@@ -215,7 +214,7 @@ fn bad_bodies_and_steps_are_typed_errors() {
         q: UnitQuaternion::identity(),
         omega: Vector3::zeros(),
     };
-    let cfg = Rkmk4Config::default();
+    let cfg = FixedStepConfig::default();
     assert!(matches!(
         Rkmk4::new(Flat([1.0, 0.0, 1.0], 1.0), 0.0, s0, cfg),
         Err(OdeError::InvalidInertia { .. })
@@ -225,7 +224,12 @@ fn bad_bodies_and_steps_are_typed_errors() {
         Err(OdeError::InvalidInertia { .. })
     ));
     assert!(matches!(
-        Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, s0, Rkmk4Config { h: 0.0 }),
+        Rkmk4::new(
+            Flat([1.0, 1.0, 1.0], 1.0),
+            0.0,
+            s0,
+            FixedStepConfig::with_step(0.0)
+        ),
         Err(OdeError::InvalidStep { .. })
     ));
     let bad = RigidState {
@@ -236,4 +240,52 @@ fn bad_bodies_and_steps_are_typed_errors() {
         Rkmk4::new(Flat([1.0, 1.0, 1.0], 1.0), 0.0, bad, cfg),
         Err(OdeError::NonFiniteInitialState { .. })
     ));
+}
+
+#[test]
+fn rkmk4_stops_at_the_first_non_finite_step() {
+    // A sphere with the torque I ω ⊙ ω: ω̇ᵢ = ωᵢ², which blows up at t = 1 from ω = (1, 1, 1).
+    struct Runaway;
+    impl AttitudeModel for Runaway {
+        fn inertia(&self) -> [f64; 3] {
+            [1.0, 1.0, 1.0]
+        }
+        fn torque(&self, _t: f64, s: &Attitude) -> Vector3<f64> {
+            s.omega.component_mul(&s.omega)
+        }
+    }
+    let s0 = Attitude {
+        q: UnitQuaternion::identity(),
+        omega: Vector3::new(1.0, 1.0, 1.0),
+    };
+    let mut m = Rkmk4::new(Runaway, 0.0, s0, FixedStepConfig::with_step(1e-3)).unwrap();
+    match m.advance_to(1e3) {
+        Err(OdeError::NonFiniteState { t }) => assert!((0.99..1.1).contains(&t), "t = {t}"),
+        other => panic!("expected NonFiniteState near t = 1, got {other:?}"),
+    }
+    assert!(m.stats().steps < 1_100, "{} steps", m.stats().steps);
+    assert!(m.state().omega.iter().all(|w| w.is_finite()));
+    assert!(matches!(
+        m.advance_to(f64::NAN),
+        Err(OdeError::NonFiniteTime { .. })
+    ));
+}
+
+#[test]
+fn a_quaternion_that_is_no_rotation_is_refused() {
+    // UnitQuaternion::new_unchecked lets any quaternion through; (0, 0, 0, 0) and (1, 1, 0, 0)
+    // are no rotations.
+    for (q, norm) in [
+        (Quaternion::new(0.0, 0.0, 0.0, 0.0), 0.0),
+        (Quaternion::new(1.0, 1.0, 0.0, 0.0), 2f64.sqrt()),
+    ] {
+        let s0 = Attitude {
+            q: UnitQuaternion::new_unchecked(q),
+            omega: Vector3::new(0.0, 0.0, 1.0),
+        };
+        match Rkmk4::new(Spun, 0.0, s0, FixedStepConfig::default()).map(|m| *m.state()) {
+            Err(OdeError::NotUnitQuaternion { norm: n }) => assert_eq!(n, norm),
+            other => panic!("expected NotUnitQuaternion, got {other:?}"),
+        }
+    }
 }

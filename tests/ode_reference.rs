@@ -8,7 +8,8 @@ mod common;
 
 use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::ode::{
-    Adaptive, AdaptiveConfig, Dop853, Dp54, Dp853, Rk4, Rk4Config, System, Vern98, solve,
+    Adaptive, AdaptiveConfig, Dop853, Dop853Pair, Dopri5Pair, FixedStepConfig, Rk4, System,
+    Vern9Pair, solve,
 };
 
 /// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2), y(0) = (0, 1, 1).
@@ -72,7 +73,7 @@ fn tight() -> AdaptiveConfig {
 
 #[test]
 fn b5_dop853_tight_tolerance_within_1e12() {
-    let s = solve::<Dp853, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[12.0], tight()).unwrap();
+    let s = solve::<Dop853Pair, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[12.0], tight()).unwrap();
     let e = max_err(&s.y, &B5_Y20);
     eprintln!("B5 DOP853 y(20) error {e:e} {:?}", s.stats);
     assert!(e <= 1e-12, "B5 y(20) error {e:e}");
@@ -85,7 +86,7 @@ fn b5_dop853_tight_tolerance_within_1e12() {
 
 #[test]
 fn b5_vern9_tight_tolerance_within_1e12() {
-    let s = solve::<Vern98, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], tight()).unwrap();
+    let s = solve::<Vern9Pair, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], tight()).unwrap();
     let e = max_err(&s.y, &B5_Y20);
     eprintln!("B5 Vern9 y(20) error {e:e} {:?}", s.stats);
     assert!(e <= 1e-12, "Vern9 B5 y(20) error {e:e}");
@@ -93,7 +94,7 @@ fn b5_vern9_tight_tolerance_within_1e12() {
 
 #[test]
 fn b5_dopri5_error_follows_tolerance() {
-    let s = solve::<Dp54, _, 3>(
+    let s = solve::<Dopri5Pair, _, 3>(
         B5,
         0.0,
         [0.0, 1.0, 1.0],
@@ -109,7 +110,7 @@ fn b5_dopri5_error_follows_tolerance() {
 
 #[test]
 fn b5_rk4_fixed_step() {
-    let mut rk = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], Rk4Config { h: 1e-3 }).unwrap();
+    let mut rk = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], FixedStepConfig::with_step(1e-3)).unwrap();
     rk.advance_to(20.0).unwrap();
     let e = max_err(rk.y(), &B5_Y20);
     assert!(e <= 1e-11, "RK4 h=1e-3 B5 error {e:e}");
@@ -143,7 +144,7 @@ fn eulr_switching_torque_with_stop_times() {
     let sys = Eulr {
         on: |t| (3.0 * PI..=4.0 * PI).contains(&t),
     };
-    let s = solve::<Dp853, _, 3>(
+    let s = solve::<Dop853Pair, _, 3>(
         &sys,
         0.0,
         [1.0, 0.0, 0.9],
@@ -156,7 +157,7 @@ fn eulr_switching_torque_with_stop_times() {
     eprintln!("EULR ω(20) error {e:e}");
     assert!(e <= 1e-11, "EULR ω(20) error {e:e}");
     // Without the stops the pair steps across the switch and loses digits: the test can fail.
-    let s = solve::<Dp853, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 20.0, &[], tight()).unwrap();
+    let s = solve::<Dop853Pair, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 20.0, &[], tight()).unwrap();
     eprintln!(
         "EULR ω(20) error without stops {:e}",
         max_err(&s.y, &EULR_W20)
@@ -166,7 +167,7 @@ fn eulr_switching_torque_with_stop_times() {
 #[test]
 fn sciml_rigid_body_w10() {
     let sys = Eulr { on: |_| true };
-    let s = solve::<Dp853, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 10.0, &[], tight()).unwrap();
+    let s = solve::<Dop853Pair, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 10.0, &[], tight()).unwrap();
     let e = max_err(&s.y, &SCIML_W10);
     eprintln!("SciML ω(10) error {e:e}");
     assert!(e <= 1e-12, "SciML ω(10) error {e:e}");
@@ -178,7 +179,7 @@ fn sciml_rigid_body_w10() {
 fn near_separatrix_flip_interval_from_simulation() {
     let reference = 2.0 * 6.429_276_301_985_03 / 0.217_736_957_625_593;
     let cfg = AdaptiveConfig::with_tol(1e-13, 1e-13);
-    let mut ode: Adaptive<_, Dp853, 3> =
+    let mut ode: Adaptive<_, Dop853Pair, 3> =
         Adaptive::new(FreeBody([3.0, 5.0, 9.0]), 0.0, [0.0, 2.0, 0.01], cfg).unwrap();
     let mut zeros = Vec::new();
     while ode.t() < 200.0 {

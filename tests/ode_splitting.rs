@@ -3,10 +3,10 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use precess_core::exact::FreeBodyExact;
-use precess_core::ode::splitting::{
-    BodyMomentum, ExactFreeFlow, FreeBodySplitting, Gravity, Order, PotentialSplitting,
+use precess_core::ode::{AdaptiveConfig, Dop853Pair, OdeError, System, solve};
+use precess_core::rigid::{
+    BodyMomentum, ExactFreeFlow, FreeBodySplitting, Gravity, PotentialSplitting, SplittingOrder,
 };
-use precess_core::ode::{AdaptiveConfig, Dp853, OdeError, System, solve};
 
 const GNI_I: [f64; 3] = [2.0, 1.0, 2.0 / 3.0];
 
@@ -21,7 +21,7 @@ fn energy(i: [f64; 3], m: &Vector3<f64>) -> f64 {
     0.5 * (m.x * m.x / i[0] + m.y * m.y / i[1] + m.z * m.z / i[2])
 }
 
-fn m_error(order: Order, h: f64) -> f64 {
+fn m_error(order: SplittingOrder, h: f64) -> f64 {
     let s = FreeBodySplitting::new(GNI_I, order).unwrap();
     let mut y = gni();
     s.run(&mut y, h, (10.0 / h).round() as u64).unwrap();
@@ -35,9 +35,9 @@ fn m_error(order: Order, h: f64) -> f64 {
 #[test]
 fn composition_orders_two_four_six() {
     for (order, p, h) in [
-        (Order::Two, 2.0, 0.02),
-        (Order::Four, 4.0, 0.1),
-        (Order::Six, 6.0, 0.2),
+        (SplittingOrder::Two, 2.0, 0.02),
+        (SplittingOrder::Four, 4.0, 0.1),
+        (SplittingOrder::Six, 6.0, 0.2),
     ] {
         let (e1, e2) = (m_error(order, h), m_error(order, h / 2.0));
         let q = (e1 / e2).log2();
@@ -63,7 +63,7 @@ fn attitude_converges_at_order_two() {
         }
     }
     let m0 = gni().m;
-    let r = solve::<Dp853, _, 7>(
+    let r = solve::<Dop853Pair, _, 7>(
         Ode,
         0.0,
         [1.0, 0.0, 0.0, 0.0, m0.x, m0.y, m0.z],
@@ -75,14 +75,14 @@ fn attitude_converges_at_order_two() {
     .y;
     let qr = UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]));
     let err = |h: f64| {
-        let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
+        let s = FreeBodySplitting::new(GNI_I, SplittingOrder::Two).unwrap();
         let mut y = gni();
         s.run(&mut y, h, (5.0 / h).round() as u64).unwrap();
         y.q.angle_to(&qr)
     };
     let p = (err(0.02) / err(0.01)).log2();
     assert!((p - 2.0).abs() < 0.2, "attitude order {p}");
-    let s4 = FreeBodySplitting::new(GNI_I, Order::Four).unwrap();
+    let s4 = FreeBodySplitting::new(GNI_I, SplittingOrder::Four).unwrap();
     let mut y = gni();
     s4.run(&mut y, 0.01, 500).unwrap();
     assert!(
@@ -99,7 +99,7 @@ fn million_steps_norm_and_energy() {
         (GNI_I, gni().m),
         ([3.0, 5.0, 9.0], Vector3::new(0.0, 2.0, 0.01)),
     ] {
-        let s = FreeBodySplitting::new(i, Order::Two).unwrap();
+        let s = FreeBodySplitting::new(i, SplittingOrder::Two).unwrap();
         let mut y = BodyMomentum {
             q: UnitQuaternion::identity(),
             m: m0,
@@ -156,7 +156,7 @@ fn heavy_top_splitting() {
     }
     let q0 = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 60f64.to_radians());
     let m0 = Vector3::new(0.0, 0.0, 0.5 * 20.0);
-    let r = solve::<Dp853, _, 7>(
+    let r = solve::<Dop853Pair, _, 7>(
         Ode,
         0.0,
         [q0.w, q0.i, q0.j, q0.k, m0.x, m0.y, m0.z],
@@ -167,7 +167,7 @@ fn heavy_top_splitting() {
     .unwrap()
     .y;
     let split = PotentialSplitting {
-        free: FreeBodySplitting::new(i, Order::Two).unwrap(),
+        free: FreeBodySplitting::new(i, SplittingOrder::Two).unwrap(),
         potential: Gravity { weight, c },
     };
     let err = |h: f64| {
@@ -264,7 +264,7 @@ fn exact_free_flow_beats_axis_splitting_on_a_fast_asymmetric_top() {
     }
     let q0 = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 60f64.to_radians());
     let m0 = Vector3::new(0.0, 0.0, 25.0);
-    let r = solve::<Dp853, _, 7>(
+    let r = solve::<Dop853Pair, _, 7>(
         Ode,
         0.0,
         [q0.w, q0.i, q0.j, q0.k, m0.x, m0.y, m0.z],
@@ -284,7 +284,7 @@ fn exact_free_flow_beats_axis_splitting_on_a_fast_asymmetric_top() {
         potential: gravity,
     };
     let axes = PotentialSplitting {
-        free: FreeBodySplitting::new([1.0, 1.3, 0.5], Order::Two).unwrap(),
+        free: FreeBodySplitting::new([1.0, 1.3, 0.5], SplittingOrder::Two).unwrap(),
         potential: gravity,
     };
     let h = 0.02;
@@ -306,10 +306,10 @@ fn exact_free_flow_beats_axis_splitting_on_a_fast_asymmetric_top() {
 #[test]
 fn bad_input_is_typed() {
     assert!(matches!(
-        FreeBodySplitting::new([1.0, -1.0, 1.0], Order::Two),
+        FreeBodySplitting::new([1.0, -1.0, 1.0], SplittingOrder::Two),
         Err(OdeError::InvalidInertia { .. })
     ));
-    let s = FreeBodySplitting::new(GNI_I, Order::Two).unwrap();
+    let s = FreeBodySplitting::new(GNI_I, SplittingOrder::Two).unwrap();
     let mut y = gni();
     assert!(matches!(
         s.run(&mut y, 0.0, 10),
@@ -327,4 +327,76 @@ fn bad_input_is_typed() {
         s.run(&mut bad, 0.1, 10),
         Err(OdeError::NonFiniteInitialState { .. })
     ));
+}
+
+#[test]
+fn splitting_steps_check_their_step_and_state() {
+    let s = FreeBodySplitting::new(GNI_I, SplittingOrder::Two).unwrap();
+    let mut y = gni();
+    for h in [f64::NAN, f64::INFINITY, 0.0, -0.1] {
+        assert!(
+            matches!(s.step(&mut y, h), Err(OdeError::InvalidStep { .. })),
+            "h = {h}"
+        );
+    }
+    assert_eq!(y, gni(), "a refused step leaves the state alone");
+    // A finite but enormous step overflows the rotation angle: a typed error, y kept.
+    assert!(matches!(
+        s.step(&mut y, 1e308),
+        Err(OdeError::NonFiniteState { .. })
+    ));
+    assert_eq!(y, gni());
+    s.step(&mut y, 0.01).unwrap();
+    assert!(y.m.iter().all(|v| v.is_finite()));
+    let no_rotation = BodyMomentum {
+        q: UnitQuaternion::new_unchecked(Quaternion::new(0.0, 0.0, 0.0, 0.0)),
+        ..gni()
+    };
+    assert!(matches!(
+        s.run(&mut no_rotation.clone(), 0.01, 10),
+        Err(OdeError::NotUnitQuaternion { norm: 0.0 })
+    ));
+}
+
+#[test]
+fn potential_splitting_names_a_bad_weight() {
+    let top = |weight: f64| PotentialSplitting {
+        free: FreeBodySplitting::new([1.0, 1.0, 0.5], SplittingOrder::Two).unwrap(),
+        potential: Gravity {
+            weight,
+            c: Vector3::new(0.0, 0.0, 10.0),
+        },
+    };
+    let y0 = BodyMomentum {
+        q: UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 1.0),
+        m: Vector3::new(0.0, 0.0, 25.0),
+    };
+    let mut y = y0;
+    assert!(matches!(
+        top(f64::NAN).run(&mut y, 0.01, 10),
+        Err(OdeError::InvalidParameter { name: "weight", .. })
+    ));
+    assert!(matches!(
+        top(f64::NAN).step(&mut y, 0.01),
+        Err(OdeError::InvalidParameter { name: "weight", .. })
+    ));
+    // A finite weight whose torque overflows: the kick is caught at once, y is kept.
+    assert!(matches!(
+        top(1e308).run(&mut y, 0.01, 10),
+        Err(OdeError::NonFiniteState { t: 0.0 })
+    ));
+    assert_eq!(y, y0);
+    // The same with the exact free flow: the kick is named, not the flow's argument.
+    let exact = PotentialSplitting {
+        free: ExactFreeFlow::new([1.0, 1.0, 0.5]).unwrap(),
+        potential: Gravity {
+            weight: 1e308,
+            c: Vector3::new(0.0, 0.0, 10.0),
+        },
+    };
+    assert!(matches!(
+        exact.run(&mut y, 0.01, 10),
+        Err(OdeError::NonFiniteState { t: 0.0 })
+    ));
+    assert_eq!(y, y0);
 }

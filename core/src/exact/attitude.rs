@@ -14,10 +14,12 @@
 
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
-use super::carlson::{rf, rj};
+use super::carlson::{SMALL_ROOT, rc, rf, rj};
+use super::double_double::Dd;
 use super::elliptic::MAX_ARGUMENT;
 use super::error::{ExactError, finite};
-use super::free_body::{FreeBodyExact, Regime, pow2_scale};
+use super::free_body::{FreeBodyExact, Regime};
+use super::scaling::pow2_scale;
 
 /// Constants of the precession angle φ(t).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,7 +88,9 @@ impl FreeBodyAttitude {
     /// and body angular momentum `m0`.
     ///
     /// # Errors
-    /// [`ExactError::InvalidInertia`], [`ExactError::NonFinite`] for non-finite q0 or m0.
+    /// [`ExactError::InvalidInertia`], [`ExactError::NonFinite`] for non-finite q0 or m0,
+    /// [`ExactError::NotUnitQuaternion`] for a q0 that is no rotation (|q0| off 1 by more
+    /// than 1e-6, such as the zero quaternion).
     pub fn new(
         inertia: [f64; 3],
         q0: UnitQuaternion<f64>,
@@ -98,6 +102,7 @@ impl FreeBodyAttitude {
         for v in q0.coords.iter() {
             finite("q0", *v)?;
         }
+        ExactError::check_unit(&q0)?;
         let m_orig = m0;
         let (scale_m, scale_i) = (pow2_scale(&m0), pow2_scale(&inertia));
         let m0 = m0.map(|x| x / scale_m);
@@ -105,27 +110,35 @@ impl FreeBodyAttitude {
         let fb = FreeBodyExact::new(inertia, m0)?;
         let prec = match fb.dn_axis() {
             None => None,
-            Some((axis, a_dn, a_cn)) => {
-                // Quantities quadratic in m are formed from m/G so huge states cannot overflow.
+            Some((axis, _, _)) => {
+                // c_a / A_cn² and n = −A_dn² k²/A_cn² reduce to constants of the body (the
+                // m-dependence cancels exactly), so nothing quadratic in a component of m is
+                // formed: in sorted axes, about the largest axis
+                // c_a/A_cn² = (I₃−I₁)/(I₁I₃), n = −I₃(I₂−I₁)/(I₁(I₃−I₂)); about the smallest
+                // c_a/A_cn² = −(I₃−I₁)/(I₁I₃), n = −I₁(I₃−I₂)/(I₃(I₂−I₁)).
                 let g = m0[0].hypot(m0[1]).hypot(m0[2]);
-                let ia = inertia[axis];
-                let c_a: f64 = (0..3)
-                    .map(|i| (m0[i] / g).powi(2) * ((ia - inertia[i]) / inertia[i] / ia))
-                    .sum();
-                let a_cn2 = (a_cn / g).powi(2);
+                let [i1, i2, i3] = fb.sorted_axes().map(|k| inertia[k]);
+                let (ratio, n) = if fb.regime() == Regime::AboutSmallest {
+                    (-(i3 - i1) / (i1 * i3), -i1 * (i3 - i2) / (i3 * (i2 - i1)))
+                } else {
+                    ((i3 - i1) / (i1 * i3), -i3 * (i2 - i1) / (i1 * (i3 - i2)))
+                };
                 let jac = fb.jacobi();
-                let mc = jac.mc();
-                let n = -(a_dn / a_cn).powi(2) * (1.0 - mc);
-                let pi_k = if mc > 0.0 {
+                let (mc, kc) = (jac.mc(), jac.kc());
+                let pi_k = if kc >= SMALL_ROOT {
                     rf(0.0, mc, 1.0)? + n / 3.0 * rj(0.0, mc, 1.0, 1.0 - n)?
+                } else if kc > 0.0 {
+                    // R_F(0, k'², 1) = K and R_J(0, k'², 1, p) → (3/p)(K − R_C(1, p)) as k' → 0.
+                    let k = jac.k();
+                    k + n / (1.0 - n) * (k - rc(1.0, 1.0 - n))
                 } else {
                     0.0
                 };
                 let mut pr = Precession {
                     axis,
                     p: q0 * align(&m0, axis).inverse(),
-                    rate: g / ia,
-                    coef: g * c_a / (a_cn2 * fb.lambda()),
+                    rate: g / inertia[axis],
+                    coef: g * ratio / fb.lambda(),
                     n,
                     pi_k,
                     pi_u0: 0.0,
@@ -146,12 +159,17 @@ impl FreeBodyAttitude {
     }
 
     /// Π̃(u) = ∫₀ᵘ dv/(1 − n sn² v) = 2jΠ̃(K) + Π̃(r) for u = 2jK + r, |r| ≤ K.
-    fn pi_tilde(fb: &FreeBodyExact, pr: &Precession, u: super::dd::Dd) -> Result<f64, ExactError> {
+    fn pi_tilde(fb: &FreeBodyExact, pr: &Precession, u: Dd) -> Result<f64, ExactError> {
         let jac = fb.jacobi();
         let (j, r) = jac.reduce(u);
         let (s, c, d) = jac.sncndn_reduced(r);
         let part = if s == 0.0 {
             0.0
+        } else if c.abs() < SMALL_ROOT && d < SMALL_ROOT {
+            // Near u = ±K with k' tiny, c² and d² underflow. Then s R_F(c², d², 1) = F(am r) = r
+            // exactly, and R_J(c², d², 1, p) = (3/p)(R_F(c², d², 1) − R_C(1, p)) to O(d² ln d).
+            let p = 1.0 - pr.n * s * s;
+            r + pr.n * s * s * s / p * (r / s - rc(1.0, p))
         } else {
             let (c2, d2) = (c * c, d * d);
             s * rf(c2, d2, 1.0)? + pr.n / 3.0 * s * s * s * rj(c2, d2, 1.0, 1.0 - pr.n * s * s)?

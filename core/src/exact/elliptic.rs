@@ -5,7 +5,7 @@
 //! Bulirsch (Numer. Math. 7, 1965; A&S 16.4). The argument is reduced modulo 2K in
 //! double-double arithmetic, so large arguments keep their digits.
 
-use super::dd::{Dd, PI};
+use super::double_double::{Dd, PI};
 use super::error::{ExactError, finite};
 
 /// Longest AGM chain kept (m_c down to 1e-300 needs about 12 steps).
@@ -30,6 +30,8 @@ pub const MAX_ARGUMENT: f64 = 1e15;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jacobi {
     mc: f64,
+    /// k' = √m_c, which stays representable where m_c underflows.
+    kc: f64,
     /// K in double-double; +∞ in `hi` when m_c = 0.
     k: Dd,
     /// Arithmetic means a₀…a_{n−1} and geometric means b₀…b_{n−1} of the AGM chain.
@@ -49,19 +51,38 @@ impl Jacobi {
         if !(0.0..=1.0).contains(&mc) {
             return Err(ExactError::ParameterOutOfRange { mc });
         }
+        Ok(Self::build(mc, mc.sqrt(), Dd::from(mc).sqrt()))
+    }
+
+    /// Prepares the functions from the complementary modulus k' = √m_c ∈ [0, 1] (clamped),
+    /// for parameters whose m_c = k'² is below the f64 range: the AGM chain starts from k'
+    /// itself.
+    pub(crate) fn from_kc(kc: Dd) -> Self {
+        let kc = if kc.hi > 1.0 {
+            Dd::from(1.0)
+        } else if kc.hi < 0.0 {
+            Dd::from(0.0)
+        } else {
+            kc
+        };
+        Self::build((kc * kc).to_f64(), kc.to_f64(), kc)
+    }
+
+    fn build(mc: f64, kc: f64, kc_dd: Dd) -> Self {
         let mut me = Self {
             mc,
+            kc,
             k: Dd::from(f64::INFINITY),
             a: [0.0; MAX_AGM],
             b: [0.0; MAX_AGM],
             len: 0,
             c: 0.0,
         };
-        if mc == 0.0 {
-            return Ok(me);
+        if kc == 0.0 {
+            return me;
         }
         // Double chain for the Landen back-substitution (Bulirsch's sncndn).
-        let (mut a, mut b) = (1.0_f64, mc.sqrt());
+        let (mut a, mut b) = (1.0_f64, kc);
         let mut c = 0.5 * (a + b);
         for i in 0..MAX_AGM {
             me.a[i] = a;
@@ -77,7 +98,7 @@ impl Jacobi {
         }
         me.c = c;
         // Double-double chain for K itself, which sets the period.
-        let (mut ad, mut bd) = (Dd::from(1.0), Dd::from(mc).sqrt());
+        let (mut ad, mut bd) = (Dd::from(1.0), kc_dd);
         for _ in 0..MAX_AGM {
             let an = (ad + bd) * Dd::from(0.5);
             let done = (ad - bd).to_f64().abs() <= 1e-17 * ad.hi;
@@ -88,12 +109,17 @@ impl Jacobi {
             }
         }
         me.k = PI / (ad * Dd::from(2.0));
-        Ok(me)
+        me
     }
 
     /// The complementary parameter m_c.
     pub fn mc(&self) -> f64 {
         self.mc
+    }
+
+    /// The complementary modulus k' = √m_c.
+    pub fn kc(&self) -> f64 {
+        self.kc
     }
 
     /// The complete elliptic integral of the first kind K(m) (+∞ at m_c = 0).
@@ -115,7 +141,7 @@ impl Jacobi {
     ///
     /// Non-finite arguments give NaN; the checked entry point is [`sncndn`].
     pub fn sncndn_dd(&self, u: Dd) -> (f64, f64, f64) {
-        if self.mc == 0.0 {
+        if self.kc == 0.0 {
             let x = u.to_f64();
             let s = 1.0 / x.cosh();
             return (x.tanh(), s, s);
@@ -133,7 +159,7 @@ impl Jacobi {
     /// Splits u = 2K n + r with |r| ≤ K (in double-double); returns (n, r). For m_c = 0
     /// (K = ∞) returns (0, u).
     pub fn reduce(&self, u: Dd) -> (f64, f64) {
-        if self.mc == 0.0 {
+        if self.kc == 0.0 {
             return (0.0, u.to_f64());
         }
         let two_k = self.k * Dd::from(2.0);
@@ -143,7 +169,7 @@ impl Jacobi {
 
     /// (sn, cn, dn)(r) for a reduced argument |r| ≤ K (cn ≥ 0), as returned by [`Self::reduce`].
     pub fn sncndn_reduced(&self, r: f64) -> (f64, f64, f64) {
-        if self.mc == 0.0 {
+        if self.kc == 0.0 {
             let s = 1.0 / r.cosh();
             return (r.tanh(), s, s);
         }
@@ -226,6 +252,23 @@ pub fn ellip_k(mc: f64) -> Result<f64, ExactError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn from_kc_matches_new_where_m_c_is_representable() {
+        for mc in [0.5, 1e-10, 1e-300] {
+            let (a, b) = (
+                Jacobi::new(mc).unwrap(),
+                Jacobi::from_kc(Dd::from(mc).sqrt()),
+            );
+            assert!((a.k() - b.k()).abs() <= 1e-15 * a.k(), "mc = {mc:e}");
+            let (u1, u2) = (a.sncndn(0.7 * a.k()), b.sncndn(0.7 * a.k()));
+            assert!((u1.0 - u2.0).abs() + (u1.1 - u2.1).abs() + (u1.2 - u2.2).abs() < 1e-15);
+        }
+        // Beyond: k' = 1e-170 has K = ln(4/k') + O(k'²).
+        let j = Jacobi::from_kc(Dd::from(1e-170));
+        assert_eq!(j.mc(), 0.0);
+        assert!((j.k() - (4e170f64).ln()).abs() < 1e-13, "{}", j.k());
+    }
 
     #[test]
     fn extreme_arguments_stay_finite() {

@@ -35,6 +35,34 @@ pub enum ExactError {
         /// The largest accepted magnitude.
         limit: f64,
     },
+    /// R_J's value is beyond f64, or its arguments span more orders of magnitude than one
+    /// power-of-two scaling can bring into range together.
+    #[error(
+        "Carlson integral R_J({x:e}, {y:e}, {z:e}, {p:e}) is outside the range of f64 (the \
+         value overflows or the arguments span too many orders of magnitude)"
+    )]
+    CarlsonRange {
+        /// First argument.
+        x: f64,
+        /// Second argument.
+        y: f64,
+        /// Third argument.
+        z: f64,
+        /// Fourth argument.
+        p: f64,
+    },
+    /// F(φ | m) at m = 1 (m_c = 0) diverges at |φ| = π/2, where K = ∞: no value beyond.
+    #[error("F(φ | m = 1) diverges for |φ| ≥ π/2 (m_c = 0, K = ∞); got φ = {phi}")]
+    Diverges {
+        /// The amplitude asked for.
+        phi: f64,
+    },
+    /// An attitude quaternion is not of unit norm (|q| − 1 beyond 1e-6): it is no rotation.
+    #[error("attitude quaternion has norm {norm}, not 1: it is no rotation")]
+    NotUnitQuaternion {
+        /// Its norm.
+        norm: f64,
+    },
     /// A Carlson integral was called outside its domain.
     #[error("Carlson integral outside its domain: ({x}, {y}, {z})")]
     CarlsonDomain {
@@ -45,6 +73,21 @@ pub enum ExactError {
         /// Third argument.
         z: f64,
     },
+}
+
+impl ExactError {
+    /// Checks that an attitude quaternion has unit norm (within 1e-6).
+    ///
+    /// # Errors
+    /// [`ExactError::NotUnitQuaternion`].
+    pub(crate) fn check_unit(q: &nalgebra::UnitQuaternion<f64>) -> Result<(), ExactError> {
+        let norm = q.quaternion().norm();
+        if (norm - 1.0).abs() <= 1e-6 {
+            Ok(())
+        } else {
+            Err(ExactError::NotUnitQuaternion { norm })
+        }
+    }
 }
 
 /// Rejects NaN and infinities.

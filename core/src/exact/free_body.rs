@@ -13,19 +13,26 @@
 //! carried in double-double: near the separatrix and over long times that is where the
 //! digits go.
 
-use super::dd::Dd;
+use super::carlson::ellip_f_sc_of;
+use super::double_double::Dd;
 use super::elliptic::{Jacobi, MAX_ARGUMENT};
 use super::error::{ExactError, finite};
+use super::scaling::{exponent, pow2, pow2_scale};
 
-/// The power of two at or below the largest magnitude in `v` (1 if all are zero or
-/// subnormal): dividing by it is exact.
-pub(crate) fn pow2_scale(v: &[f64; 3]) -> f64 {
-    let mx = v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-    if mx.is_normal() {
-        2f64.powi(mx.log2().floor() as i32)
-    } else {
-        1.0
+/// x · 2ᵉ for a double-double (exact unless a part leaves the f64 range).
+fn ldexp_dd(x: Dd, e: i32) -> Dd {
+    use super::scaling::ldexp;
+    Dd {
+        hi: ldexp(x.hi, e),
+        lo: ldexp(x.lo, e),
     }
+}
+
+/// The exponent of the larger of |a|, |b| (0 when both are zero): the pair divided by 2 to
+/// this power has its larger in [1, 2), so its squares neither overflow nor underflow.
+fn pair_exponent(a: f64, b: f64) -> i32 {
+    let mx = a.abs().max(b.abs());
+    if mx > 0.0 { exponent(mx) } else { 0 }
 }
 
 /// Which motion the initial state starts on.
@@ -112,18 +119,29 @@ impl FreeBodyExact {
         let sq = |x: f64| Dd::prod(x, x);
         let (i1, i2, i3) = (d(i[0]), d(i[1]), d(i[2]));
         let (i21, i31, i32) = (i2 - i1, i3 - i1, i3 - i2);
-        let d1 = sq(m[1]) * i21 / i2 + sq(m[2]) * i31 / i3;
-        let d3 = -(sq(m[0]) * i31 / i1 + sq(m[1]) * i32 / i2);
-        let d2 = sq(m[2]) * i32 / i3 - sq(m[0]) * i21 / i1;
+        // Each Dₖ involves two components of m. It is formed from those two divided by the
+        // power of two of the larger (Dₖ = 4^eₖ D̃ₖ), so that near a principal axis, where
+        // the others are 1e-170 of it, no square underflows: the amplitudes and k' = √m_c
+        // then come out as √D̃ₖ · 2^eₖ.
+        let (e12, e13, e23) = (
+            pair_exponent(m[0], m[1]),
+            pair_exponent(m[0], m[2]),
+            pair_exponent(m[1], m[2]),
+        );
+        let (s12, s13, s23) = (pow2(e12), pow2(e13), pow2(e23));
+        let d1 = sq(m[1] / s23) * i21 / i2 + sq(m[2] / s23) * i31 / i3;
+        let d3 = -(sq(m[0] / s12) * i31 / i1 + sq(m[1] / s12) * i32 / i2);
+        let d2 = sq(m[2] / s13) * i32 / i3 - sq(m[0] / s13) * i21 / i1;
         let i123 = i1 * i2 * i3;
-        let (amp, lam2, mc, s, cn_ratio) = if d2.hi >= 0.0 {
+        let root = |x: Dd, e: i32| x.sqrt().to_f64() * pow2(e);
+        // (amplitudes, λ, m_c / 4^e and e, sign, cos of the initial amplitude)
+        let (amp, lam, mc_scaled, e_mc, s, cn_ratio) = if d2.hi >= 0.0 {
             let amp = [
-                (-d3 * i1 / i31).sqrt(),
-                (-d3 * i2 / i32).sqrt(),
-                (d1 * i3 / i31).sqrt(),
+                root(-d3 * i1 / i31, e12),
+                root(-d3 * i2 / i32, e12),
+                root(d1 * i3 / i31, e23),
             ];
             let s3 = if m[2] < 0.0 { -1.0 } else { 1.0 };
-            let mc = d2 * i31 / (d1 * i32);
             // On the separatrix cn = dn = sech > 0, so the sign of m₁ goes into its
             // amplitude and, since ṁ₂ ∝ m₁m₃, into λ.
             let s1 = if d2.hi == 0.0 && m[0] < 0.0 {
@@ -133,20 +151,27 @@ impl FreeBodyExact {
             };
             (
                 amp,
-                i32 * d1 / i123,
-                mc,
+                (i32 * d1 / i123).sqrt() * d(s23),
+                d2 * i31 / (d1 * i32),
+                e13 - e23,
                 s3 * s1,
-                s1 * m[0] / amp[0].to_f64(),
+                s1 * m[0] / amp[0],
             )
         } else {
             let amp = [
-                (-d3 * i1 / i31).sqrt(),
-                (d1 * i2 / i21).sqrt(),
-                (d1 * i3 / i31).sqrt(),
+                root(-d3 * i1 / i31, e12),
+                root(d1 * i2 / i21, e23),
+                root(d1 * i3 / i31, e23),
             ];
             let s = if m[0] < 0.0 { -1.0 } else { 1.0 };
-            let mc = d2 * i31 / (d3 * i21);
-            (amp, i21 * (-d3) / i123, mc, s, m[2] / amp[2].to_f64())
+            (
+                amp,
+                (i21 * (-d3) / i123).sqrt() * d(s12),
+                d2 * i31 / (d3 * i21),
+                e13 - e12,
+                s,
+                m[2] / amp[2],
+            )
         };
         me.regime = if d2.hi > 0.0 {
             Regime::AboutLargest
@@ -155,9 +180,14 @@ impl FreeBodyExact {
         } else {
             Regime::Separatrix
         };
-        let mc = mc.to_f64().clamp(0.0, 1.0);
-        me.jac = Jacobi::new(mc)?;
-        me.amp = amp.map(|a| a.to_f64() * sm);
+        let mc = ldexp_dd(mc_scaled, 2 * e_mc).to_f64().clamp(0.0, 1.0);
+        me.jac = if mc >= f64::MIN_POSITIVE {
+            Jacobi::new(mc)?
+        } else {
+            // m_c underflows (a state 1e-170 off the intermediate axis): k' does not.
+            Jacobi::from_kc(ldexp_dd(mc_scaled.sqrt(), e_mc))
+        };
+        me.amp = amp.map(|a| a * sm);
         match me.regime {
             Regime::AboutSmallest => me.amp[0] *= s,
             Regime::Separatrix => {
@@ -167,11 +197,16 @@ impl FreeBodyExact {
             }
             _ => me.amp[2] *= s,
         }
-        me.lambda = lam2.sqrt() * d(s * parity) * d(sm) / d(si);
+        me.lambda = lam * d(s * parity) * d(sm) / d(si);
         // Initial phase from the amplitude φ₀ with (sin φ₀, cos φ₀) = (sn u₀, cn u₀).
         let sn0 = m[1] * sm / me.amp[1];
-        me.u0 = super::carlson::ellip_f_sc(sn0, cn_ratio, mc)?;
+        me.u0 = ellip_f_sc_of(sn0, cn_ratio, &me.jac)?;
         Ok(me)
+    }
+
+    /// The caller's axes in order of increasing moment.
+    pub(crate) fn sorted_axes(&self) -> [usize; 3] {
+        self.perm
     }
 
     /// The regime of the motion.

@@ -1,17 +1,18 @@
-//! The adaptive driver: PI step-size control, stop times, dense output, statistics.
-//! Its settings live in [`super::config`].
+//! The adaptive driver: stop times, dense output, statistics; the step size comes from
+//! [`PiController`], the settings from [`AdaptiveConfig`].
 
 use core::marker::PhantomData;
 
-pub use super::config::AdaptiveConfig;
+use super::config::AdaptiveConfig;
+use super::controller::PiController;
 use super::error::{OdeError, check_finite, check_span};
-use super::pair::{DenseCoeffs, EmbeddedPair, Stages};
+use super::pairs::{DenseCoeffs, EmbeddedPair, Stages};
 use super::system::{Stats, System, all_finite};
 
 /// An adaptive integrator using the embedded pair `P` on a system `S` of dimension `N`.
 ///
-/// Owns its stage storage, so stepping never allocates. Use [`super::Dopri5`] or
-/// [`super::Dop853`] for the concrete pairs.
+/// Owns its stage storage, so stepping never allocates. The drivers of the concrete pairs
+/// are [`Dopri5`](super::Dopri5), [`Dop853`](super::Dop853) and [`Vern9`](super::Vern9).
 ///
 /// ```
 /// use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem};
@@ -33,9 +34,7 @@ pub struct Adaptive<S, P, const N: usize> {
     y_prev: [f64; N],
     dense: DenseCoeffs<N>,
     dense_ready: bool,
-    /// ln of the last accepted error (at least 1e-4), for the PI controller.
-    ln_err_prev: f64,
-    rejected_last: bool,
+    control: PiController,
     /// The last step landed on a stop: re-evaluate f before the next step.
     refresh: bool,
     stats: Stats,
@@ -65,8 +64,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             y_prev: y0,
             dense: [[0.0; N]; 9],
             dense_ready: false,
-            ln_err_prev: 1e-4f64.ln(),
-            rejected_last: false,
+            control: PiController::new(P::ERR_EXPONENT, &cfg),
             refresh: false,
             stats: Stats {
                 rhs_evals: 1,
@@ -175,10 +173,14 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// Takes one accepted step that does not pass `t_limit` (it lands on it exactly when close).
     ///
     /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_limit`,
     /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::StepSizeUnderflow`],
     /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`].
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        if t_limit.is_nan() || t_limit < self.t {
+        if !t_limit.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_limit });
+        }
+        if t_limit < self.t {
             return Err(OdeError::StopBeforeCurrent {
                 stop: t_limit,
                 t: self.t,
@@ -228,23 +230,12 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             if err.is_nan() || !all_finite(&y_new) {
                 return Err(OdeError::NonFiniteState { t: self.t });
             }
-            let alpha = P::ERR_EXPONENT - 0.75 * self.cfg.beta;
-            // err^α / err_prev^β through one ln and one exp (ln err_prev is kept).
-            let ln_err = err.ln();
-            let fac11 = (alpha * ln_err).exp();
             if err <= 1.0 {
-                let fac = ((alpha * ln_err - self.cfg.beta * self.ln_err_prev).exp()
-                    / self.cfg.safety)
-                    .clamp(1.0 / self.cfg.fac_max, 1.0 / self.cfg.fac_min);
-                let mut h_new = (h / fac).min(self.cfg.h_max);
-                if self.rejected_last {
-                    h_new = h_new.min(h);
-                }
+                let mut h_new = self.control.accepted(h, err);
                 if clamped {
                     // A short landing step says little about the natural step size.
                     h_new = h_new.max(self.h);
                 }
-                self.ln_err_prev = err.max(1e-4).ln();
                 let t_new = (self.t + h).min(t_hi);
                 self.stats.rhs_evals += P::finish(&self.sys, t_new, &y_new, &mut self.k);
                 self.refresh = clamped;
@@ -255,24 +246,23 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                 self.y = y_new;
                 self.h = h_new;
                 self.dense_ready = false;
-                self.rejected_last = false;
                 return Ok(());
             }
             self.stats.rejections += 1;
-            self.rejected_last = true;
-            self.h = h / (fac11 / self.cfg.safety).min(1.0 / self.cfg.fac_min);
+            self.h = self.control.rejected(h, err);
         }
     }
 
     /// Steps until `t == t_stop` exactly; no step crosses `t_stop`.
     ///
     /// # Errors
-    /// As [`Self::step`].
+    /// As [`Self::step`]: a NaN or infinite `t_stop` is [`OdeError::NonFiniteTime`] before
+    /// any work.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if t_stop.is_infinite() {
+        if !t_stop.is_finite() {
             return Err(OdeError::NonFiniteTime { t: t_stop });
         }
-        if t_stop.is_nan() || t_stop < self.t {
+        if t_stop < self.t {
             return Err(OdeError::StopBeforeCurrent {
                 stop: t_stop,
                 t: self.t,
@@ -289,8 +279,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// The first call after a step builds the interpolant (DOP853: 3 evaluations).
     ///
     /// # Errors
-    /// [`OdeError::OutsideLastStep`].
+    /// [`OdeError::NonFiniteTime`], [`OdeError::OutsideLastStep`].
     pub fn dense_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
         if !(t >= self.t_prev && t <= self.t) {
             return Err(OdeError::OutsideLastStep {
                 t,

@@ -1,4 +1,5 @@
-//! Named settings of the adaptive driver, with documented defaults.
+//! Named settings of the steppers, with documented defaults: the adaptive driver's and the
+//! one fixed-step configuration shared by RK4 and the Lie-group RKMK4.
 
 use super::error::OdeError;
 
@@ -104,5 +105,93 @@ impl AdaptiveConfig {
             }
         }
         Ok(())
+    }
+}
+
+/// Settings of the fixed-step methods ([`Rk4`](super::Rk4) and the Lie-group
+/// [`Rkmk4`](crate::rigid::Rkmk4)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FixedStepConfig {
+    /// Largest step (default 1e-2). Each interval between stops is cut into the fewest equal
+    /// steps no longer than this, so stop times are hit exactly.
+    pub h: f64,
+    /// Most steps one `advance_to` may take (default 10⁸, [`FixedStepConfig::MAX_STEPS`]). A
+    /// call that needs more is refused with [`OdeError::TooManySteps`] before any work: a
+    /// stop time or a step off by orders of magnitude fails at once instead of running for
+    /// minutes. Unlike the adaptive driver's budget this is per call, since the count is
+    /// known in advance.
+    pub max_steps: u64,
+}
+
+impl Default for FixedStepConfig {
+    fn default() -> Self {
+        Self {
+            h: 1e-2,
+            max_steps: Self::MAX_STEPS,
+        }
+    }
+}
+
+impl FixedStepConfig {
+    /// The default of [`FixedStepConfig::max_steps`]: 10⁸ steps, a few seconds of a small
+    /// system's RK4 and well beyond any span meant with a sensible step.
+    pub const MAX_STEPS: u64 = 100_000_000;
+
+    /// The default configuration with largest step `h`.
+    ///
+    /// ```
+    /// let c = precess_core::ode::FixedStepConfig::with_step(1e-3);
+    /// approx::assert_relative_eq!(c.h, 1e-3);
+    /// assert_eq!(c.max_steps, 100_000_000);
+    /// ```
+    pub fn with_step(h: f64) -> Self {
+        Self {
+            h,
+            ..Self::default()
+        }
+    }
+
+    /// Checks the step.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite.
+    pub fn validate(&self) -> Result<(), OdeError> {
+        if self.h.is_finite() && self.h > 0.0 {
+            Ok(())
+        } else {
+            Err(OdeError::InvalidStep { h: self.h })
+        }
+    }
+
+    /// The fewest equal steps no longer than `h` that take `t` exactly to `t_stop`, as
+    /// (count, step); `None` when there is nothing to do.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite stop, [`OdeError::StopBeforeCurrent`],
+    /// [`OdeError::TooManySteps`] beyond [`FixedStepConfig::max_steps`].
+    pub(crate) fn plan(&self, t: f64, t_stop: f64) -> Result<Option<(u64, f64)>, OdeError> {
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        if t_stop < t {
+            return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
+        }
+        let span = t_stop - t;
+        if span == 0.0 {
+            return Ok(None);
+        }
+        // The small slack keeps span = n·h from adding a step.
+        let steps = ((span / self.h) * (1.0 - 1e-12)).ceil().max(1.0);
+        if steps > self.max_steps as f64 {
+            return Err(OdeError::TooManySteps {
+                t,
+                t_stop,
+                h: self.h,
+                steps,
+                max_steps: self.max_steps,
+            });
+        }
+        let n = steps as u64;
+        Ok(Some((n, span / n as f64)))
     }
 }

@@ -18,10 +18,11 @@ pub enum OdeError {
         /// The rejected step size.
         h: f64,
     },
-    /// A stage or the new state contained NaN or ±∞.
-    #[error("non-finite state at t = {t}")]
+    /// A stage or the new state contained NaN or ±∞ (the state before that step is kept).
+    #[error("non-finite state in the step from t = {t}")]
     NonFiniteState {
-        /// Start of the step that produced the non-finite value.
+        /// Start of the step that produced the non-finite value (for the splittings, which
+        /// carry no clock, the time since the start of the call).
         t: f64,
     },
     /// The initial state holds NaN or ±∞ (component `index`).
@@ -48,8 +49,8 @@ pub enum OdeError {
         /// Requested end time.
         t_end: f64,
     },
-    /// A time value is NaN or infinite.
-    #[error("non-finite time {t}")]
+    /// A start, stop or output time is NaN or infinite.
+    #[error("time {t} is not finite: start, stop and output times must be finite numbers")]
     NonFiniteTime {
         /// The offending time.
         t: f64,
@@ -84,6 +85,24 @@ pub enum OdeError {
         /// The configured limit.
         max_steps: u64,
     },
+    /// A fixed-step advance would take more steps than its configured limit (checked before
+    /// any work).
+    #[error(
+        "advancing from t = {t} to {t_stop} in steps of at most h = {h} takes {steps:e} steps, \
+         more than max_steps = {max_steps}"
+    )]
+    TooManySteps {
+        /// Current time.
+        t: f64,
+        /// The requested stop time.
+        t_stop: f64,
+        /// The configured largest step.
+        h: f64,
+        /// The steps the advance would take.
+        steps: f64,
+        /// The configured limit.
+        max_steps: u64,
+    },
     /// Dense output was asked for a time outside the last accepted step.
     #[error("dense output at t = {t} is outside the last step [{t_prev}, {t_now}]")]
     OutsideLastStep {
@@ -97,6 +116,12 @@ pub enum OdeError {
     /// An exact sub-flow (the free-body flow of a splitting) failed.
     #[error("exact flow: {0}")]
     Exact(#[from] ExactError),
+    /// An attitude quaternion is not of unit norm (|q| − 1 beyond 1e-6): it is no rotation.
+    #[error("attitude quaternion has norm {norm}, not 1: it is no rotation")]
+    NotUnitQuaternion {
+        /// Its norm.
+        norm: f64,
+    },
     /// Mass or a principal moment of inertia is not finite and positive.
     #[error("mass and inertia must be finite and > 0: mass = {mass}, inertia = {inertia:?}")]
     InvalidInertia {
@@ -111,7 +136,7 @@ pub enum OdeError {
 ///
 /// # Errors
 /// [`OdeError::NonFiniteInitialState`] naming the first NaN or infinite component.
-pub fn check_finite(y: &[f64]) -> Result<(), OdeError> {
+pub(crate) fn check_finite(y: &[f64]) -> Result<(), OdeError> {
     match y.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(OdeError::NonFiniteInitialState {
             index,
@@ -125,7 +150,7 @@ pub fn check_finite(y: &[f64]) -> Result<(), OdeError> {
 ///
 /// # Errors
 /// [`OdeError::NonFiniteTime`] or [`OdeError::EndBeforeStart`].
-pub fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
+pub(crate) fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
     for t in [t_start, t_end] {
         if !t.is_finite() {
             return Err(OdeError::NonFiniteTime { t });
@@ -141,7 +166,7 @@ pub fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
 ///
 /// # Errors
 /// [`OdeError::InvalidInertia`].
-pub fn check_inertia(mass: f64, inertia: [f64; 3]) -> Result<(), OdeError> {
+pub(crate) fn check_inertia(mass: f64, inertia: [f64; 3]) -> Result<(), OdeError> {
     let ok = |v: f64| v.is_finite() && v > 0.0;
     if ok(mass) && inertia.iter().all(|&v| ok(v)) {
         Ok(())

@@ -1,33 +1,16 @@
 //! The classical fixed-step Runge–Kutta method of order 4.
 
+use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::system::{Stats, System};
-
-/// Most steps one `advance_to` of a fixed-step method will take (10¹²): a span that needs
-/// more is refused with [`OdeError::MaxStepsExceeded`] rather than run for days.
-pub const MAX_FIXED_STEPS: u64 = 1_000_000_000_000;
-
-/// Settings of [`Rk4`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rk4Config {
-    /// Largest step (default 1e-2). Each interval between stops is cut into the fewest equal
-    /// steps no longer than this, so stop times are hit exactly.
-    pub h: f64,
-}
-
-impl Default for Rk4Config {
-    fn default() -> Self {
-        Self { h: 1e-2 }
-    }
-}
+use super::system::{Stats, System, all_finite};
 
 /// Classical RK4: y₁ = y₀ + h (k₁ + 2k₂ + 2k₃ + k₄)/6, four evaluations per step, global
 /// error O(h⁴).
 ///
 /// ```
-/// use precess_core::ode::{FnSystem, Rk4, Rk4Config};
+/// use precess_core::ode::{FixedStepConfig, FnSystem, Rk4};
 /// let sys = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = y[0]);
-/// let mut rk = Rk4::new(sys, 0.0, [1.0], Rk4Config { h: 1e-3 })?;
+/// let mut rk = Rk4::new(sys, 0.0, [1.0], FixedStepConfig::with_step(1e-3))?;
 /// rk.advance_to(1.0)?;
 /// approx::assert_relative_eq!(rk.y()[0], 1f64.exp(), max_relative = 1e-12);
 /// # Ok::<(), precess_core::ode::OdeError>(())
@@ -35,7 +18,7 @@ impl Default for Rk4Config {
 #[derive(Debug, Clone)]
 pub struct Rk4<S, const N: usize> {
     sys: S,
-    h: f64,
+    cfg: FixedStepConfig,
     t: f64,
     y: [f64; N],
     stats: Stats,
@@ -45,16 +28,15 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     /// Starts at `(t0, y0)`.
     ///
     /// # Errors
-    /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, non-finite `t0` or `y0`.
-    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: Rk4Config) -> Result<Self, OdeError> {
-        if !(cfg.h.is_finite() && cfg.h > 0.0) {
-            return Err(OdeError::InvalidStep { h: cfg.h });
-        }
+    /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, [`OdeError::NonFiniteTime`] or
+    /// [`OdeError::NonFiniteInitialState`] for a non-finite `t0` or `y0`.
+    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: FixedStepConfig) -> Result<Self, OdeError> {
+        cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
         Ok(Self {
             sys,
-            h: cfg.h,
+            cfg,
             t: t0,
             y: y0,
             stats: Stats::default(),
@@ -76,10 +58,12 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         self.stats
     }
 
-    /// One step of size `h` (no checks; the caller guarantees h > 0); stage times are capped
-    /// at `t_hi` so a step ending on a stop samples a switch from its own side.
+    /// One step of size `h` from the current state (no checks; the caller guarantees
+    /// h > 0), returned rather than stored so that a non-finite result leaves the state as it
+    /// was; stage times are capped at `t_hi` so a step ending on a stop samples a switch from
+    /// its own side.
     #[inline]
-    fn step_unchecked(&mut self, h: f64, t_hi: f64) {
+    fn step_unchecked(&mut self, h: f64, t_hi: f64) -> [f64; N] {
         let (t, y) = (self.t, self.y);
         let (mut k1, mut k2, mut k3, mut k4, mut ys) =
             ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
@@ -96,62 +80,39 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             ys[i] = y[i] + h * k3[i];
         }
         self.sys.rhs((t + h).min(t_hi), &ys, &mut k4);
+        let mut y_new = [0.0; N];
         for i in 0..N {
-            self.y[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+            y_new[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         }
-        self.stats.steps += 1;
         self.stats.rhs_evals += 4;
+        y_new
     }
 
     /// Advances to exactly `t_stop` in equal steps no longer than the configured `h`.
     ///
     /// # Errors
-    /// [`OdeError::StopBeforeCurrent`], [`OdeError::NonFiniteTime`],
-    /// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`] before any work;
-    /// [`OdeError::NonFiniteState`] (checked once per call, at the end, naming the start
-    /// time of the interval).
+    /// Before any work: [`OdeError::NonFiniteTime`] for a NaN or infinite `t_stop`,
+    /// [`OdeError::StopBeforeCurrent`], [`OdeError::TooManySteps`] beyond
+    /// [`FixedStepConfig::max_steps`]. While stepping: [`OdeError::NonFiniteState`] at the
+    /// first step whose result is not finite, naming its start time; the integrator then
+    /// stays at the last finite state.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        let Some((n, h)) = equal_steps(self.t, t_stop, self.h)? else {
+        let Some((n, h)) = self.cfg.plan(self.t, t_stop)? else {
             return Ok(());
         };
         let t0 = self.t;
+        let t_hi = t_stop.next_down();
         for i in 1..=n {
-            self.step_unchecked(h, t_stop.next_down());
+            let y_new = self.step_unchecked(h, t_hi);
+            // Checked every step: a blow-up stops at once instead of running out the span.
+            if !all_finite(&y_new) {
+                return Err(OdeError::NonFiniteState { t: self.t });
+            }
+            self.y = y_new;
+            self.stats.steps += 1;
             self.t = t0 + i as f64 * h;
         }
         self.t = t_stop;
-        if self.y.iter().any(|v| !v.is_finite()) {
-            return Err(OdeError::NonFiniteState { t: t0 });
-        }
         Ok(())
     }
-}
-
-/// The fewest equal steps no longer than `h_max` that take `t` exactly to `t_stop`, as
-/// (count, step); `None` when there is nothing to do. Shared by the fixed-step methods.
-///
-/// # Errors
-/// [`OdeError::StopBeforeCurrent`] (also for a NaN stop), [`OdeError::NonFiniteTime`],
-/// [`OdeError::MaxStepsExceeded`] beyond [`MAX_FIXED_STEPS`].
-pub(crate) fn equal_steps(t: f64, t_stop: f64, h_max: f64) -> Result<Option<(u64, f64)>, OdeError> {
-    if t_stop.is_nan() || t_stop < t {
-        return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
-    }
-    let span = t_stop - t;
-    if span == 0.0 {
-        return Ok(None);
-    }
-    if !t_stop.is_finite() {
-        return Err(OdeError::NonFiniteTime { t: t_stop });
-    }
-    // The small slack keeps span = n·h from adding a step.
-    let steps = ((span / h_max) * (1.0 - 1e-12)).ceil().max(1.0);
-    if steps > MAX_FIXED_STEPS as f64 {
-        return Err(OdeError::MaxStepsExceeded {
-            t,
-            max_steps: MAX_FIXED_STEPS,
-        });
-    }
-    let n = steps as u64;
-    Ok(Some((n, span / n as f64)))
 }

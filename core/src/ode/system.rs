@@ -59,6 +59,32 @@ pub struct Stats {
     pub rhs_evals: u64,
 }
 
+impl core::ops::AddAssign for Stats {
+    /// Adds the work of another integration (a chart switch restarts the integrator; the
+    /// totals carry on).
+    ///
+    /// ```
+    /// use precess_core::ode::Stats;
+    /// let mut total = Stats { steps: 3, rejections: 1, rhs_evals: 20 };
+    /// total += Stats { steps: 2, rejections: 0, rhs_evals: 12 };
+    /// assert_eq!(total, Stats { steps: 5, rejections: 1, rhs_evals: 32 });
+    /// ```
+    fn add_assign(&mut self, other: Stats) {
+        self.steps += other.steps;
+        self.rejections += other.rejections;
+        self.rhs_evals += other.rhs_evals;
+    }
+}
+
+impl core::ops::Add for Stats {
+    type Output = Stats;
+    /// The work of two integrations together; see the `+=` form.
+    fn add(mut self, other: Stats) -> Stats {
+        self += other;
+        self
+    }
+}
+
 /// `true` when every component is finite.
 pub(crate) fn all_finite<const N: usize>(y: &[f64; N]) -> bool {
     y.iter().all(|v| v.is_finite())

@@ -1,6 +1,24 @@
-//! Rigid-body motion shared by the scenes: Euler-angle sequences, their rotation and rate
-//! matrices, and the angles of a numeric attitude.
+//! Rigid-body motion shared by the scenes: Euler-angle sequences with their rotation and
+//! rate matrices, attitude kinematics on the unit quaternions (the exponential map), the
+//! states and the models that drive them, the Runge–Kutta–Munthe-Kaas Lie-group stepper, and
+//! the geometric splittings (free body, body under a potential).
+//!
+//! The generic steppers these build on are in [`crate::ode`]; the exact free-body flow is in
+//! [`crate::exact`].
 
 mod angles;
+mod kinematics;
+mod lie;
+mod rkmk4;
+mod splitting;
+mod state;
 
 pub use angles::{AngleSequence, angles_from_rotation, elementary};
+pub use kinematics::{dexpinv_right, exp_rotation, rotate_body};
+pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
+pub use rkmk4::Rkmk4;
+pub use splitting::{
+    ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,
+    SplittingOrder,
+};
+pub use state::{Attitude, AttitudeModel, BodyMomentum, RigidBodyModel, RigidState};

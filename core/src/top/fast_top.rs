@@ -5,7 +5,7 @@ use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
 use crate::ode::OdeError;
-use crate::ode::splitting::{BodyMomentum, ExactFreeFlow, FreeFlow, Gravity, PotentialSplitting};
+use crate::rigid::{BodyMomentum, ExactFreeFlow, FreeFlow, Gravity, PotentialSplitting};
 
 /// A body about its pivot as a [`PotentialSplitting`]: the exact free-body flow with the
 /// principal moments about the pivot, and gravity kicks with the centre of mass expressed in

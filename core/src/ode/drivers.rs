@@ -1,19 +1,20 @@
-//! One-call drivers over [`Adaptive`]: integrate to an end time through stop times, or
-//! sample the dense output at given times.
+//! The drivers: [`Adaptive`] named for each pair, and one-call functions that integrate to an
+//! end time through stop times or sample the dense output at given times.
 
-use super::adaptive::{Adaptive, AdaptiveConfig};
+use super::adaptive::Adaptive;
+use super::config::AdaptiveConfig;
 use super::error::{OdeError, check_span};
-use super::pair::{Dp54, Dp853, EmbeddedPair};
+use super::pairs::{Dop853Pair, Dopri5Pair, EmbeddedPair, Vern9Pair};
 use super::system::{Stats, System};
 
-/// Dormand–Prince 5(4) driver.
-pub type Dopri5<S, const N: usize> = Adaptive<S, Dp54, N>;
+/// The Dormand–Prince 5(4) driver: [`Adaptive`] with [`Dopri5Pair`].
+pub type Dopri5<S, const N: usize> = Adaptive<S, Dopri5Pair, N>;
 
-/// DOP853 driver.
-pub type Dop853<S, const N: usize> = Adaptive<S, Dp853, N>;
+/// The DOP853 driver: [`Adaptive`] with [`Dop853Pair`].
+pub type Dop853<S, const N: usize> = Adaptive<S, Dop853Pair, N>;
 
-/// Verner 9(8) driver.
-pub type Vern9<S, const N: usize> = Adaptive<S, super::vern::Vern98, N>;
+/// The Verner 9(8) driver: [`Adaptive`] with [`Vern9Pair`].
+pub type Vern9<S, const N: usize> = Adaptive<S, Vern9Pair, N>;
 
 /// End state of an integration and the work it took.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,10 +38,10 @@ pub struct Solution<const N: usize> {
 /// flag with [`Adaptive::modify_system`].
 ///
 /// ```
-/// use precess_core::ode::{AdaptiveConfig, Dp853, FnSystem, solve};
+/// use precess_core::ode::{AdaptiveConfig, Dop853Pair, FnSystem, solve};
 /// // y' = 1 on [0, 1], 0 afterwards: exact y(2) = 1.
 /// let sys = FnSystem(|t: f64, _y: &[f64; 1], d: &mut [f64; 1]| d[0] = if t < 1.0 { 1.0 } else { 0.0 });
-/// let s = solve::<Dp853, _, 1>(sys, 0.0, [0.0], 2.0, &[1.0], AdaptiveConfig::default())?;
+/// let s = solve::<Dop853Pair, _, 1>(sys, 0.0, [0.0], 2.0, &[1.0], AdaptiveConfig::default())?;
 /// approx::assert_relative_eq!(s.y[0], 1.0, epsilon = 1e-14);
 /// # Ok::<(), precess_core::ode::OdeError>(())
 /// ```

@@ -1,70 +1,17 @@
-//! Butcher coefficients of the embedded pairs, as published.
+//! Hairer's DOP853: the published tableau (Hairer, Nørsett, Wanner, *Solving ODEs I*, 2nd ed.,
+//! §II.10), including its three extra stages for the 7th-order dense output, and the pair
+//! built on it.
 //!
-//! Dormand & Prince 1980 (5(4), with Shampine's dense output as in Hairer's DOPRI5) and
-//! Hairer's DOP853 (Hairer, Nørsett, Wanner, *Solving ODEs I*, 2nd ed., §II.10), including
-//! its three extra stages for the 7th-order dense output. Rows of `A` hold the non-zero
-//! prefix of the strictly lower triangle; missing entries are zero.
-//! The order conditions are checked numerically in the tests (convergence order).
-//!
-//! Digits are kept as published (beyond f64 precision) so they can be checked against the source.
+//! Rows of `A` hold the non-zero prefix of the strictly lower triangle; missing entries are
+//! zero. Digits are kept as published (beyond f64 precision) so they can be checked against
+//! the source; the order conditions are checked numerically in the tests.
 #![allow(clippy::excessive_precision)]
 
-/// Nodes `c` of Dormand–Prince 5(4).
-pub const DP5_C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
-
-/// Stage coefficients of Dormand–Prince 5(4); row 6 equals the weights (FSAL).
-pub const DP5_A: [&[f64]; 7] = [
-    &[],
-    &[0.2],
-    &[3.0 / 40.0, 9.0 / 40.0],
-    &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
-    &[
-        19372.0 / 6561.0,
-        -25360.0 / 2187.0,
-        64448.0 / 6561.0,
-        -212.0 / 729.0,
-    ],
-    &[
-        9017.0 / 3168.0,
-        -355.0 / 33.0,
-        46732.0 / 5247.0,
-        49.0 / 176.0,
-        -5103.0 / 18656.0,
-    ],
-    &[
-        35.0 / 384.0,
-        0.0,
-        500.0 / 1113.0,
-        125.0 / 192.0,
-        -2187.0 / 6784.0,
-        11.0 / 84.0,
-    ],
-];
-
-/// Error weights `b − b̂` of Dormand–Prince 5(4) over the 7 stages.
-pub const DP5_E: [f64; 7] = [
-    71.0 / 57600.0,
-    0.0,
-    -71.0 / 16695.0,
-    71.0 / 1920.0,
-    -17253.0 / 339200.0,
-    22.0 / 525.0,
-    -1.0 / 40.0,
-];
-
-/// Dense-output coefficients `d` of Dormand–Prince 5(4) (Shampine 1986).
-pub const DP5_D: [f64; 7] = [
-    -12715105075.0 / 11282082432.0,
-    0.0,
-    87487479700.0 / 32700410799.0,
-    -10690763975.0 / 1880347072.0,
-    701980252875.0 / 199316789632.0,
-    -1453857185.0 / 822651844.0,
-    69997945.0 / 29380423.0,
-];
+use super::{DenseCoeffs, EmbeddedPair, Stages, error_scale, stage_state, stages, weighted};
+use crate::ode::system::System;
 
 /// Nodes `c` of DOP853: 12 stages, the FSAL stage and three dense-output stages.
-pub const DOP853_C: [f64; 16] = [
+const DOP853_C: [f64; 16] = [
     0.0,
     0.526001519587677318785587544488e-01,
     0.789002279381515978178381316732e-01,
@@ -84,7 +31,7 @@ pub const DOP853_C: [f64; 16] = [
 ];
 
 /// Stage coefficients of DOP853; row 12 holds the 8th-order weights `b` (FSAL).
-pub const DOP853_A: [&[f64]; 16] = [
+const DOP853_A: [&[f64]; 16] = [
     &[],
     &[5.26001519587677318785587544488e-2],
     &[
@@ -237,14 +184,14 @@ pub const DOP853_A: [&[f64]; 16] = [
 ];
 
 /// Weights of DOP853's 3rd-order estimate that are subtracted from `b` (stages 1, 9, 12).
-pub const DOP853_BHH: [f64; 3] = [
+const DOP853_BHH: [f64; 3] = [
     0.244094488188976377952755905512,
     0.733846688281611857341361741547,
     0.220588235294117647058823529412e-1,
 ];
 
 /// Weights of DOP853's 5th-order error estimate over the 12 stages.
-pub const DOP853_E5: [f64; 12] = [
+const DOP853_E5: [f64; 12] = [
     0.1312004499419488073250102996e-1,
     0.0,
     0.0,
@@ -260,7 +207,7 @@ pub const DOP853_E5: [f64; 12] = [
 ];
 
 /// Dense-output coefficients of DOP853 (rows d4…d7 over the 16 stages).
-pub const DOP853_D: [[f64; 16]; 4] = [
+const DOP853_D: [[f64; 16]; 4] = [
     [
         -0.84289382761090128651353491142e1,
         0.0,
@@ -334,3 +281,92 @@ pub const DOP853_D: [[f64; 16]; 4] = [
         -0.14972683625798562581422125276e3,
     ],
 ];
+
+/// Hairer's DOP853: an 8th-order pair with a 5th/3rd-order combined error estimate,
+/// 12 evaluations per accepted step and a 7th-order dense output (3 more evaluations).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dop853Pair;
+
+impl EmbeddedPair for Dop853Pair {
+    const NAME: &'static str = "DOP853";
+    const ORDER: u32 = 8;
+    const ERR_EXPONENT: f64 = 0.125;
+    const FSAL: usize = 12;
+
+    fn try_step<S: System<N>, const N: usize>(
+        sys: &S,
+        (t, h, t_hi): (f64, f64, f64),
+        y: &[f64; N],
+        k: &mut Stages<N>,
+        y_new: &mut [f64; N],
+        (rtol, atol): (f64, f64),
+    ) -> (f64, u64) {
+        stages!(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), k; 1 2 3 4 5 6 7 8 9 10 11);
+        stage_state(y, h, DOP853_A[12], k, y_new);
+        // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
+        // from being driven by a pessimistic 5th-order estimate.
+        let (mut e3sum, mut e5sum) = (0.0, 0.0);
+        let e5v = weighted(&DOP853_E5, k);
+        let bk = weighted(DOP853_A[12], k);
+        for i in 0..N {
+            let e5 = e5v[i];
+            let e3 = bk[i]
+                - (DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i]);
+            let sk = error_scale(y[i], y_new[i], (rtol, atol));
+            e3sum += (e3 / sk) * (e3 / sk);
+            e5sum += (e5 / sk) * (e5 / sk);
+        }
+        let mut deno = e5sum + 0.01 * e3sum;
+        if deno <= 0.0 {
+            deno = 1.0;
+        }
+        (h.abs() * e5sum * (1.0 / (N as f64 * deno)).sqrt(), 11)
+    }
+
+    fn finish<S: System<N>, const N: usize>(
+        sys: &S,
+        t_new: f64,
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+    ) -> u64 {
+        sys.rhs(t_new, y_new, &mut k[12]);
+        1
+    }
+
+    fn dense_prepare<S: System<N>, const N: usize>(
+        sys: &S,
+        t: f64,
+        h: f64,
+        y: &[f64; N],
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+        d: &mut DenseCoeffs<N>,
+    ) -> u64 {
+        stages!(sys, (t, h, f64::INFINITY), y, (&DOP853_A, &DOP853_C), k; 13 14 15);
+        for i in 0..N {
+            let dy = y_new[i] - y[i];
+            let bspl = h * k[0][i] - dy;
+            d[0][i] = y[i];
+            d[1][i] = dy;
+            d[2][i] = bspl;
+            d[3][i] = dy - h * k[12][i] - bspl;
+            for (r, row) in DOP853_D.iter().enumerate() {
+                let mut s = 0.0;
+                for (j, dj) in row.iter().enumerate() {
+                    s += dj * k[j][i];
+                }
+                d[4 + r][i] = h * s;
+            }
+        }
+        3
+    }
+
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
+        let s = theta;
+        let s1 = 1.0 - s;
+        for (i, o) in out.iter_mut().enumerate() {
+            let conpar = d[4][i] + s * (d[5][i] + s1 * (d[6][i] + s * d[7][i]));
+            *o = d[0][i] + s * (d[1][i] + s1 * (d[2][i] + s * (d[3][i] + s1 * conpar)));
+        }
+    }
+}

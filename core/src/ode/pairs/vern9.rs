@@ -1,18 +1,19 @@
-//! Verner's "most efficient" 9(8) pair (J. H. Verner, Numer. Algorithms 53, 2010; the
-//! coefficients of RKV98.IIa.Efficient from his web page): 16 stages, the 9th-order solution
-//! propagated and the 8th-order one used for the error estimate.
+//! Verner's "most efficient" 9(8) pair: the published tableau (J. H. Verner, Numer.
+//! Algorithms 53, 2010; the coefficients of RKV98.IIa.Efficient from his web page) and the
+//! pair built on it: 16 stages, the 9th-order solution propagated and the 8th-order one used
+//! for the error estimate.
 //!
 //! It is not FSAL, so f(t + h, y_new) costs one evaluation after each accepted step (16 per
 //! step, 15 per rejection). Dense output is Verner's 8th-order interpolant over 21 stages:
 //! four more evaluations per step, made only when dense output is asked for.
 #![allow(clippy::excessive_precision)]
 
-use super::pair::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
-use super::system::System;
+use super::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
+use crate::ode::system::System;
 
 /// Nodes c of Verner 9(8): 16 stepping stages, f at the new point, and four stages of
 /// the 8th-order interpolant.
-pub const VERN9_C: [f64; 21] = [
+const VERN9_C: [f64; 21] = [
     0.0,
     0.3462e-1,
     0.9702435063878044594828361677100617517633e-1,
@@ -37,7 +38,7 @@ pub const VERN9_C: [f64; 21] = [
 ];
 
 /// Stage coefficients of Verner 9(8) (rows are the non-zero prefix of the lower triangle).
-pub const VERN9_A: [&[f64]; 21] = [
+const VERN9_A: [&[f64]; 21] = [
     &[],
     &[0.3462e-1],
     &[
@@ -272,7 +273,7 @@ pub const VERN9_A: [&[f64]; 21] = [
 ];
 
 /// 9th-order weights (propagated).
-pub const VERN9_B: [f64; 15] = [
+const VERN9_B: [f64; 15] = [
     0.1461197685842315252051541915018784713459e-1,
     0.0,
     0.0,
@@ -291,7 +292,7 @@ pub const VERN9_B: [f64; 15] = [
 ];
 
 /// 8th-order weights (error estimate only).
-pub const VERN8_B: [f64; 16] = [
+const VERN8_B: [f64; 16] = [
     0.1996996514886773085518508418098868756464e-1,
     0.0,
     0.0,
@@ -312,7 +313,7 @@ pub const VERN8_B: [f64; 16] = [
 
 /// Interpolant weights b_i(θ) = Σₖ P[i][k−1] θᵏ (k = 1…8) over stages 1…21 (order 8);
 /// at θ = 1 they reduce to the 9th-order weights.
-pub const VERN9_P: [[f64; 8]; 21] = [
+const VERN9_P: [[f64; 8]; 21] = [
     [
         1.0,
         -12.74966541771576102412726774271024205003,
@@ -464,9 +465,9 @@ pub const VERN9_P: [[f64; 8]; 21] = [
 
 /// Verner's 9(8) pair: the most efficient of the three here at tight tolerances.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct Vern98;
+pub struct Vern9Pair;
 
-impl EmbeddedPair for Vern98 {
+impl EmbeddedPair for Vern9Pair {
     const NAME: &'static str = "Vern9";
     const ORDER: u32 = 9;
     const ERR_EXPONENT: f64 = 1.0 / 9.0;

@@ -15,7 +15,7 @@ pub struct Dd {
 }
 
 /// π as a double-double.
-pub const PI: Dd = Dd {
+pub(crate) const PI: Dd = Dd {
     hi: core::f64::consts::PI,
     lo: 1.224_646_799_147_353_2e-16,
 };

@@ -1,0 +1,129 @@
+//! Dormand–Prince 5(4) (DOPRI5): the published tableau (Dormand & Prince 1980, with
+//! Shampine's dense output as in Hairer's DOPRI5) and the pair built on it.
+//!
+//! Rows of `A` hold the non-zero prefix of the strictly lower triangle; missing entries are
+//! zero. The order conditions are checked numerically in the tests (convergence order).
+
+use super::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stage_state, stages, weighted};
+use crate::ode::system::System;
+
+/// Nodes `c` of Dormand–Prince 5(4).
+const DOPRI5_C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
+
+/// Stage coefficients of Dormand–Prince 5(4); row 6 equals the weights (FSAL).
+const DOPRI5_A: [&[f64]; 7] = [
+    &[],
+    &[0.2],
+    &[3.0 / 40.0, 9.0 / 40.0],
+    &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
+    &[
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+    ],
+    &[
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+    ],
+    &[
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+    ],
+];
+
+/// Error weights `b − b̂` of Dormand–Prince 5(4) over the 7 stages.
+const DOPRI5_E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+
+/// Dense-output coefficients `d` of Dormand–Prince 5(4) (Shampine 1986).
+const DOPRI5_D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
+/// Dormand–Prince 5(4) (DOPRI5): 6 evaluations per step, 4th-order dense output for free.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dopri5Pair;
+
+impl EmbeddedPair for Dopri5Pair {
+    const NAME: &'static str = "DOPRI5";
+    const ORDER: u32 = 5;
+    const ERR_EXPONENT: f64 = 0.2;
+    const FSAL: usize = 6;
+
+    fn try_step<S: System<N>, const N: usize>(
+        sys: &S,
+        (t, h, t_hi): (f64, f64, f64),
+        y: &[f64; N],
+        k: &mut Stages<N>,
+        y_new: &mut [f64; N],
+        (rtol, atol): (f64, f64),
+    ) -> (f64, u64) {
+        stages!(sys, (t, h, t_hi), y, (&DOPRI5_A, &DOPRI5_C), k; 1 2 3 4 5);
+        stage_state(y, h, DOPRI5_A[6], k, y_new);
+        sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
+        let e = weighted(&DOPRI5_E, k);
+        (rms_error(h, &e, y, y_new, (rtol, atol)), 6)
+    }
+
+    fn finish<S: System<N>, const N: usize>(
+        _sys: &S,
+        _t_new: f64,
+        _y_new: &[f64; N],
+        _k: &mut Stages<N>,
+    ) -> u64 {
+        0
+    }
+
+    fn dense_prepare<S: System<N>, const N: usize>(
+        _sys: &S,
+        _t: f64,
+        h: f64,
+        y: &[f64; N],
+        y_new: &[f64; N],
+        k: &mut Stages<N>,
+        d: &mut DenseCoeffs<N>,
+    ) -> u64 {
+        for i in 0..N {
+            let dy = y_new[i] - y[i];
+            let bspl = h * k[0][i] - dy;
+            d[0][i] = y[i];
+            d[1][i] = dy;
+            d[2][i] = bspl;
+            d[3][i] = dy - h * k[6][i] - bspl;
+            let mut s = 0.0;
+            for (j, dj) in DOPRI5_D.iter().enumerate() {
+                s += dj * k[j][i];
+            }
+            d[4][i] = h * s;
+        }
+        0
+    }
+
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
+        let th1 = 1.0 - theta;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = d[0][i] + theta * (d[1][i] + th1 * (d[2][i] + theta * (d[3][i] + th1 * d[4][i])));
+        }
+    }
+}
