@@ -9,9 +9,14 @@
 //!   such polynomials is exact.
 //! - Partial derivatives ([`Arena::diff`]) are memoised per node; [`Arena::dt`] is the total
 //!   time derivative over coordinates and their rates.
+//! - Every walk is iterative over [`Arena::post_order`] (children through
+//!   [`Node::children`]), so no depth of nesting overflows the stack.
+//! - [`Arena::abbreviate`] names a large time-independent expression (an inertia entry) so
+//!   that derivations over it stay small; [`Arena::is_zero`] sees through the names.
 //!
 //! See `docs/symbolic.md` for the canonical form in full.
 
+mod abbreviate;
 mod arena;
 mod build;
 mod cancel;
@@ -24,10 +29,17 @@ mod func;
 mod hash;
 mod literal;
 mod memo;
+mod node;
 mod rational;
+mod substitute;
+mod walk;
+mod zero;
 
-pub use arena::{Arena, ExprId, Node, Symbol, SymbolId, SymbolKind};
+pub use arena::{Arena, ExprId, Symbol, SymbolId, SymbolKind};
 pub use error::SymError;
+pub use cancel::MAX_DIVIDED_DEGREE;
+pub use expand::MAX_EXPANDED_TERMS;
+pub use node::Node;
 pub use hash::{IdHasher, IdMap};
 pub use literal::parse_decimal;
 pub use rational::Rational;
