@@ -32,24 +32,25 @@ static FOREIGN_SYMBOL: LazyLock<Symbol> = LazyLock::new(|| Symbol {
 /// constructors) have equal ids, so comparing ids compares expressions.
 ///
 /// An id carries the tag of the arena that made it, so an id from another arena is never
-/// taken for one of this arena's expressions (see [`Arena::owns`]). Ids order by their
-/// position in the arena, children before parents.
+/// taken for one of this arena's expressions (see [`Arena::owns`]). Within one arena, ids
+/// order by their position, children before parents.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub struct ExprId(u64);
 
 impl ExprId {
     pub(crate) fn new(index: u32, tag: u32) -> ExprId {
-        ExprId((u64::from(index) << 32) | u64::from(tag))
+        // The index in the low half: the hasher's bucket bits vary from id to id.
+        ExprId((u64::from(tag) << 32) | u64::from(index))
     }
 
     /// Position of the node in the arena; children always sit before their parents.
     pub fn index(self) -> usize {
-        (self.0 >> 32) as usize
+        self.0 as u32 as usize
     }
 
     /// The tag of the arena that made the id.
     fn tag(self) -> u32 {
-        self.0 as u32
+        (self.0 >> 32) as u32
     }
 }
 

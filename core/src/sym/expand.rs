@@ -173,7 +173,10 @@ impl Arena {
             Node::Add(t) => t.to_vec(),
             _ => vec![e],
         };
-        terms.into_iter().map(|t| self.split_coefficient(t)).collect()
+        terms
+            .into_iter()
+            .map(|t| self.split_coefficient(t))
+            .collect()
     }
 
     /// The expanded product of expanded factors.

@@ -36,10 +36,10 @@ mod walk;
 mod zero;
 
 pub use arena::{Arena, ExprId, Symbol, SymbolId, SymbolKind};
-pub use error::SymError;
 pub use cancel::MAX_DIVIDED_DEGREE;
+pub use error::SymError;
 pub use expand::MAX_EXPANDED_TERMS;
-pub use node::Node;
 pub use hash::{IdHasher, IdMap};
 pub use literal::parse_decimal;
+pub use node::Node;
 pub use rational::Rational;

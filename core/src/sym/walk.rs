@@ -16,7 +16,7 @@ impl Arena {
     /// use precess_core::sym::Arena;
     /// let mut a = Arena::new();
     /// let x = a.parameter("x");
-    /// let s = a.sin(x);
+    /// let s = a.cos(x);
     /// let e = a.mul(s, s);
     /// let order = a.post_order(&[e]);
     /// assert_eq!(order.last(), Some(&e));

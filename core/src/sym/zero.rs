@@ -66,7 +66,11 @@ fn rational(r: Rational) -> Option<u64> {
 
 /// (sin, cos) at an argument of value `v`, odd in `v`.
 fn sin_cos(v: u64, seed: u64) -> (u64, u64) {
-    let (flip, rep) = if v > P / 2 { (true, neg(v)) } else { (false, v) };
+    let (flip, rep) = if v > P / 2 {
+        (true, neg(v))
+    } else {
+        (false, v)
+    };
     let mut t = mix(rep ^ mix(seed)) % P;
     if flip {
         t = neg(t);
