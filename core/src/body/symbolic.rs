@@ -72,6 +72,7 @@ impl SymbolicBody {
     /// moment is zero whatever their values.
     pub fn new(arena: &mut Arena, d: &Description<ExprId>) -> Result<SymbolicBody, BodyError> {
         let props = mass_properties(arena, d)?;
+        let props = abbreviated(arena, props);
         let t = props.inertia;
         let constant = t
             .iter()
@@ -138,7 +139,7 @@ impl SymbolicBody {
         for i in 0..3 {
             let (j, k) = ((i + 1) % 3, (i + 2) % 3);
             let diff = arena.sub(moments[j], moments[k]);
-            let diff = if arena.expand(diff) == arena.zero() {
+            let diff = if arena.is_zero(diff).unwrap_or(false) {
                 arena.zero()
             } else {
                 diff
@@ -159,6 +160,43 @@ impl SymbolicBody {
             rhs[i] = arena.add(gyro, drive);
         }
         Ok(Some(rhs))
+    }
+}
+
+/// The mass properties with each compound entry named once ([`Arena::abbreviate`]): a body
+/// of N field-valued parts has entries of O(N) terms, and a derivation over them (a top's
+/// determinant and adjugate) would otherwise grow as a power of N. Values are unchanged.
+fn abbreviated(arena: &mut Arena, p: MassProperties<ExprId>) -> MassProperties<ExprId> {
+    const AXES: [&str; 3] = ["x", "y", "z"];
+    // A body of literals stays constant (its checks and folding need the values); only
+    // entries that hold parameters are named.
+    let name = |arena: &mut Arena, n: String, e: ExprId| {
+        if arena.free_symbols(e).is_empty() {
+            return e;
+        }
+        arena.abbreviate(&n, e).unwrap_or(e)
+    };
+    let tensor = |arena: &mut Arena, prefix: &str, t: [[ExprId; 3]; 3]| {
+        let mut out = t;
+        for i in 0..3 {
+            for j in i..3 {
+                let e = name(arena, format!("{prefix}_{}{}", AXES[i], AXES[j]), t[i][j]);
+                out[i][j] = e;
+                out[j][i] = e;
+            }
+        }
+        out
+    };
+    let inertia = tensor(arena, "I", p.inertia);
+    let inertia_cm = tensor(arena, "Icm", p.inertia_cm);
+    let center = std::array::from_fn(|k| name(arena, format!("c_{}", AXES[k]), p.center[k]));
+    let reference = std::array::from_fn(|k| name(arena, format!("c_{}", AXES[k]), p.reference[k]));
+    MassProperties {
+        mass: name(arena, "M".to_owned(), p.mass),
+        center,
+        reference,
+        inertia,
+        inertia_cm,
     }
 }
 

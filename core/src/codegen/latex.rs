@@ -1,4 +1,6 @@
 //! LaTeX rendering of expressions, for printing derivations.
+//!
+//! Written from an explicit stack of tasks (no recursion), so any depth of nesting prints.
 
 use crate::sym::{Arena, ExprId, Node, Rational};
 
@@ -15,53 +17,126 @@ use crate::sym::{Arena, ExprId, Node, Rational};
 /// assert_eq!(latex(&a, e), r"\frac{\sin\theta}{2}");
 /// ```
 pub fn latex(arena: &Arena, e: ExprId) -> String {
-    Latex { arena }.expr(e)
+    let mut out = String::new();
+    let mut stack = vec![Task::Expr(e)];
+    while let Some(task) = stack.pop() {
+        if let Task::Text(t) = task {
+            out.push_str(&t);
+            continue;
+        }
+        let parts = Latex { arena }.expand(task);
+        stack.extend(parts.into_iter().rev());
+    }
+    out
+}
+
+/// A piece of LaTeX still to write.
+enum Task {
+    Text(String),
+    /// A whole expression.
+    Expr(ExprId),
+    /// The terms of a sum, constant last and negative terms as subtractions.
+    Sum(ExprId),
+    /// A term with its sign.
+    Term(ExprId),
+    /// A term without its sign.
+    TermBody(ExprId),
+    /// A factor of a product, parenthesised if it is a sum or product.
+    Factor(ExprId),
+    /// `b^n`.
+    Power(ExprId, i64),
+    /// The argument of sin or cos: bare for a symbol, parenthesised otherwise.
+    Argument(ExprId),
 }
 
 struct Latex<'a> {
     arena: &'a Arena,
 }
 
+fn text(s: impl Into<String>) -> Task {
+    Task::Text(s.into())
+}
+
 impl Latex<'_> {
-    fn expr(&self, e: ExprId) -> String {
-        match self.arena.node(e) {
-            Node::Add(terms) => self.sum(terms),
-            _ => self.term(e),
+    /// The tasks that write `task`, in order.
+    fn expand(&self, task: Task) -> Vec<Task> {
+        match task {
+            Task::Text(t) => vec![Task::Text(t)],
+            Task::Expr(e) => match self.arena.node(e) {
+                Node::Add(_) => vec![Task::Sum(e)],
+                _ => vec![Task::Term(e)],
+            },
+            Task::Sum(e) => self.sum(e),
+            Task::Term(e) => {
+                if self.coefficient(e).is_negative() {
+                    vec![text("-"), Task::TermBody(e)]
+                } else {
+                    vec![Task::TermBody(e)]
+                }
+            }
+            Task::TermBody(e) => self.term_body(e),
+            Task::Factor(e) => self.factor(e),
+            Task::Power(b, n) => self.power(b, n),
+            Task::Argument(u) => match self.arena.node(u) {
+                Node::Sym(s) => {
+                    let l = &self.arena.symbol(*s).latex;
+                    vec![text(if l.starts_with('\\') {
+                        l.clone()
+                    } else {
+                        format!(" {l}")
+                    })]
+                }
+                _ => vec![text("\\left("), Task::Expr(u), text("\\right)")],
+            },
         }
     }
 
-    /// A sum, constant last and negative coefficients as subtractions.
-    fn sum(&self, terms: &[ExprId]) -> String {
+    fn sum(&self, e: ExprId) -> Vec<Task> {
+        let Node::Add(terms) = self.arena.node(e) else {
+            return vec![Task::Term(e)];
+        };
         let mut ordered: Vec<ExprId> = terms.to_vec();
         ordered.sort_by_key(|&t| matches!(self.arena.node(t), Node::Const(_)));
-        let mut out = String::new();
+        let mut out = Vec::with_capacity(2 * ordered.len());
         for (i, &t) in ordered.iter().enumerate() {
-            let s = self.term(t);
-            match (i, s.strip_prefix('-')) {
-                (0, _) => out.push_str(&s),
-                (_, Some(rest)) => {
-                    out.push_str(" - ");
-                    out.push_str(rest);
-                }
-                (_, None) => {
-                    out.push_str(" + ");
-                    out.push_str(&s);
-                }
+            if i == 0 {
+                out.push(Task::Term(t));
+            } else {
+                let sign = if self.coefficient(t).is_negative() {
+                    " - "
+                } else {
+                    " + "
+                };
+                out.push(text(sign));
+                out.push(Task::TermBody(t));
             }
         }
         out
     }
 
-    /// A product as `c \frac{num}{den}`, with a leading `-` when negative.
-    fn term(&self, e: ExprId) -> String {
-        let (coeff, factors): (Rational, Vec<ExprId>) = match self.arena.node(e) {
-            Node::Const(r) => return rational(*r),
-            Node::Mul(f) => match self.arena.node(f[0]) {
-                Node::Const(r) => (*r, f[1..].to_vec()),
-                _ => (Rational::ONE, f.to_vec()),
+    /// The rational coefficient of a term (one if it has none).
+    fn coefficient(&self, e: ExprId) -> Rational {
+        match self.arena.node(e) {
+            Node::Const(r) => *r,
+            Node::Mul(f) => match f.first().map(|&x| self.arena.node(x)) {
+                Some(Node::Const(r)) => *r,
+                _ => Rational::ONE,
             },
-            _ => (Rational::ONE, vec![e]),
+            _ => Rational::ONE,
+        }
+    }
+
+    /// A term without its sign, as `c \frac{num}{den}`.
+    fn term_body(&self, e: ExprId) -> Vec<Task> {
+        let factors: Vec<ExprId> = match self.arena.node(e) {
+            Node::Const(r) => return vec![text(rational(r.abs_value()))],
+            Node::Mul(f) => match f.first().map(|&x| self.arena.node(x)) {
+                Some(Node::Const(_)) => f[1..].to_vec(),
+                _ => f.to_vec(),
+            },
+            _ => vec![e],
         };
+        let c = self.coefficient(e).abs_value();
         let (mut num, mut den) = (Vec::new(), Vec::new());
         for &f in &factors {
             match self.arena.node(f) {
@@ -69,77 +144,65 @@ impl Latex<'_> {
                 _ => num.push((f, 1)),
             }
         }
-        let sign = if coeff.is_negative() { "-" } else { "" };
-        let c = coeff.abs_value();
-        // A lone sum needs no parentheses as a whole numerator or denominator of \frac.
-        let render = |list: &[(ExprId, i64)], k: &str, alone: bool| -> String {
-            let mut parts: Vec<String> = Vec::new();
-            if k != "1" || list.is_empty() {
-                parts.push(k.to_owned());
-            }
-            for &(e, n) in list {
-                parts.push(
-                    match (
-                        self.arena.node(e),
-                        n,
-                        alone && parts.is_empty() && list.len() == 1,
-                    ) {
-                        (Node::Add(t), 1, true) => self.sum(t),
-                        (_, 1, _) => self.factor(e),
-                        _ => self.power(e, n),
-                    },
-                );
-            }
-            parts.join(" ")
-        };
         let (c_top, c_bottom) = fraction(c);
         let in_frac = !den.is_empty() || c_bottom != "1";
-        let top = render(&num, &c_top, in_frac);
         if !in_frac {
-            return format!("{sign}{top}");
+            return self.render(&num, &c_top, false);
         }
-        let bottom = render(&den, &c_bottom, true);
-        format!("{sign}\\frac{{{top}}}{{{bottom}}}")
+        let mut out = vec![text("\\frac{")];
+        out.extend(self.render(&num, &c_top, true));
+        out.push(text("}{"));
+        out.extend(self.render(&den, &c_bottom, true));
+        out.push(text("}"));
+        out
     }
 
-    fn power(&self, b: ExprId, n: i64) -> String {
+    /// Factors joined by spaces after a number `k` (shown unless 1); a lone sum needs no
+    /// parentheses as a whole numerator or denominator of `\frac`.
+    fn render(&self, list: &[(ExprId, i64)], k: &str, alone: bool) -> Vec<Task> {
+        let mut out = Vec::new();
+        let with_number = k != "1" || list.is_empty();
+        if with_number {
+            out.push(text(k));
+        }
+        for (i, &(e, n)) in list.iter().enumerate() {
+            if i > 0 || with_number {
+                out.push(text(" "));
+            }
+            let lone = alone && !with_number && list.len() == 1;
+            out.push(match (self.arena.node(e), n, lone) {
+                (Node::Add(_), 1, true) => Task::Sum(e),
+                (_, 1, _) => Task::Factor(e),
+                _ => Task::Power(e, n),
+            });
+        }
+        out
+    }
+
+    fn power(&self, b: ExprId, n: i64) -> Vec<Task> {
         if n == 1 {
-            return self.factor(b);
+            return vec![Task::Factor(b)];
         }
         match self.arena.node(b) {
-            Node::Sin(u) => format!("\\sin^{{{n}}}{}", self.argument(*u)),
-            Node::Cos(u) => format!("\\cos^{{{n}}}{}", self.argument(*u)),
-            _ => format!("{{{}}}^{{{n}}}", self.factor(b)),
+            Node::Sin(u) => vec![text(format!("\\sin^{{{n}}}")), Task::Argument(*u)],
+            Node::Cos(u) => vec![text(format!("\\cos^{{{n}}}")), Task::Argument(*u)],
+            _ => vec![text("{"), Task::Factor(b), text(format!("}}^{{{n}}}"))],
         }
     }
 
-    /// A factor of a product, parenthesised if it is a sum.
-    fn factor(&self, e: ExprId) -> String {
+    fn factor(&self, e: ExprId) -> Vec<Task> {
         match self.arena.node(e) {
-            Node::Const(r) => rational(*r),
-            Node::Sym(s) => self.arena.symbol(*s).latex.clone(),
-            Node::Add(t) => format!("\\left({}\\right)", self.sum(t)),
-            Node::Mul(_) => format!("\\left({}\\right)", self.term(e)),
-            Node::Pow(b, n) if *n < 0 => format!("\\frac{{1}}{{{}}}", self.power(*b, -*n)),
-            Node::Pow(b, n) => self.power(*b, *n),
-            Node::Sqrt(u) => format!("\\sqrt{{{}}}", self.expr(*u)),
-            Node::Sin(u) => format!("\\sin{}", self.argument(*u)),
-            Node::Cos(u) => format!("\\cos{}", self.argument(*u)),
-        }
-    }
-
-    /// The argument of sin or cos: bare for a symbol, parenthesised otherwise.
-    fn argument(&self, u: ExprId) -> String {
-        match self.arena.node(u) {
-            Node::Sym(s) => {
-                let l = &self.arena.symbol(*s).latex;
-                if l.starts_with('\\') {
-                    l.clone()
-                } else {
-                    format!(" {l}")
-                }
+            Node::Const(r) => vec![text(rational(*r))],
+            Node::Sym(s) => vec![text(self.arena.symbol(*s).latex.clone())],
+            Node::Add(_) => vec![text("\\left("), Task::Sum(e), text("\\right)")],
+            Node::Mul(_) => vec![text("\\left("), Task::Term(e), text("\\right)")],
+            Node::Pow(b, n) if *n < 0 => {
+                vec![text("\\frac{1}{"), Task::Power(*b, -*n), text("}")]
             }
-            _ => format!("\\left({}\\right)", self.expr(u)),
+            Node::Pow(b, n) => vec![Task::Power(*b, *n)],
+            Node::Sqrt(u) => vec![text("\\sqrt{"), Task::Expr(*u), text("}")],
+            Node::Sin(u) => vec![text("\\sin"), Task::Argument(*u)],
+            Node::Cos(u) => vec![text("\\cos"), Task::Argument(*u)],
         }
     }
 }

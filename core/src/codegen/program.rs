@@ -86,6 +86,50 @@ struct Lowering<'a> {
     shared_reciprocals: IdMap<(ExprId, i64), ()>,
 }
 
+/// How deep the greedy factoring of one sum may nest (each level pulls out one base).
+const MAX_HORNER_DEPTH: usize = 64;
+
+/// The nodes [`Lowering::node`] is asked for when lowering `outputs`, children before
+/// parents: the bases of the factors of products and of the terms of sums, the bases of
+/// powers, the arguments of functions, the definitions of abbreviations.
+fn lowering_order(arena: &Arena, outputs: &[ExprId]) -> Vec<ExprId> {
+    let base = |x: ExprId| match arena.node(x) {
+        Node::Pow(b, _) => *b,
+        _ => x,
+    };
+    let factors_of = |t: ExprId, out: &mut Vec<ExprId>| match arena.node(t) {
+        Node::Const(_) => {}
+        Node::Mul(f) => out.extend(
+            f.iter()
+                .filter(|&&x| !matches!(arena.node(x), Node::Const(_)))
+                .map(|&x| base(x)),
+        ),
+        _ => out.push(base(t)),
+    };
+    let mut seen: IdMap<ExprId, ()> = IdMap::default();
+    let mut order = Vec::new();
+    let mut stack: Vec<ExprId> = outputs.to_vec();
+    let mut next = Vec::new();
+    while let Some(e) = stack.pop() {
+        if seen.insert(e, ()).is_some() {
+            continue;
+        }
+        order.push(e);
+        next.clear();
+        match arena.node(e) {
+            Node::Const(_) => {}
+            Node::Sym(s) => next.extend(arena.definition(*s)),
+            Node::Add(terms) => terms.iter().for_each(|&t| factors_of(t, &mut next)),
+            Node::Mul(_) => factors_of(e, &mut next),
+            Node::Pow(b, _) => next.push(*b),
+            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => next.push(*u),
+        }
+        stack.extend(next.iter().filter(|x| !seen.contains_key(x)));
+    }
+    order.sort_unstable_by_key(|e| e.index());
+    order
+}
+
 /// A term of a sum: its rational coefficient and its factors `(base, exponent)`.
 type Term = (Rational, Vec<(ExprId, i64)>);
 
@@ -93,27 +137,15 @@ type Term = (Rational, Vec<(ExprId, i64)>);
 /// `outputs`.
 fn shared_reciprocals(arena: &Arena, outputs: &[ExprId]) -> IdMap<(ExprId, i64), ()> {
     let mut uses: IdMap<(ExprId, i64), u32> = IdMap::default();
-    let mut seen: IdMap<ExprId, ()> = IdMap::default();
-    let mut stack: Vec<ExprId> = outputs.to_vec();
-    while let Some(e) = stack.pop() {
-        if seen.insert(e, ()).is_some() {
-            continue;
-        }
-        match arena.node(e) {
-            Node::Const(_) | Node::Sym(_) => {}
-            Node::Add(c) => stack.extend(c.iter()),
-            Node::Mul(c) => {
-                for &f in c.iter() {
-                    if let Node::Pow(b, n) = arena.node(f)
-                        && *n < 0
-                    {
-                        *uses.entry((*b, *n)).or_default() += 1;
-                    }
-                    stack.push(f);
+    for e in arena.walk(outputs, true, |_| true) {
+        if let Node::Mul(c) = arena.node(e) {
+            for &f in c.iter() {
+                if let Node::Pow(b, n) = arena.node(f)
+                    && *n < 0
+                {
+                    *uses.entry((*b, *n)).or_default() += 1;
                 }
             }
-            Node::Pow(b, _) => stack.push(*b),
-            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => stack.push(*u),
         }
     }
     uses.into_iter()
@@ -146,6 +178,11 @@ impl Program {
             by_node: IdMap::default(),
             shared_reciprocals: shared_reciprocals(arena, outputs),
         };
+        // Lower every node the outputs need, children first, so that `node` finds each
+        // child done and never recurses deeper than one level.
+        for e in lowering_order(arena, outputs) {
+            l.node(e);
+        }
         let outputs = outputs.iter().map(|&e| l.node(e)).collect();
         Program {
             ops: l.ops,
@@ -201,7 +238,11 @@ impl Lowering<'_> {
         }
         let s = match self.arena.node(e) {
             Node::Const(r) => self.constant(*r),
-            Node::Sym(sym) => self.emit(Op::Input(*sym)),
+            Node::Sym(sym) => match self.arena.definition(*sym) {
+                // An abbreviation is computed from its definition.
+                Some(d) => self.node(d),
+                None => self.emit(Op::Input(*sym)),
+            },
             Node::Add(terms) => self.sum(terms),
             Node::Mul(_) => {
                 let (c, factors) = self.term_of(e);
@@ -318,12 +359,13 @@ impl Lowering<'_> {
     /// subtractions.
     fn sum(&mut self, terms: &[ExprId]) -> Slot {
         let terms: Vec<Term> = terms.iter().map(|&t| self.term_of(t)).collect();
-        let parts = self.horner(terms);
+        let parts = self.horner(terms, 0);
         self.signed_sum(parts)
     }
 
-    /// The sum of `terms` as signed parts `(negative, magnitude)`.
-    fn horner(&mut self, terms: Vec<Term>) -> Vec<(bool, Slot)> {
+    /// The sum of `terms` as signed parts `(negative, magnitude)`. Past [`MAX_HORNER_DEPTH`]
+    /// nested factorings the rest is summed flat, which bounds the recursion.
+    fn horner(&mut self, terms: Vec<Term>, depth: usize) -> Vec<(bool, Slot)> {
         let mut counts: Vec<(ExprId, usize)> = Vec::new();
         for (_, f) in &terms {
             for &(b, n) in f {
@@ -338,7 +380,7 @@ impl Lowering<'_> {
         // Most frequent first; ties by id, so the result is deterministic.
         let best = counts
             .iter()
-            .filter(|&&(_, c)| c >= 2)
+            .filter(|&&(_, c)| c >= 2 && depth < MAX_HORNER_DEPTH)
             .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)));
         let Some(&(b, _)) = best else {
             return terms
@@ -364,11 +406,11 @@ impl Lowering<'_> {
                 *c = -*c;
             }
         }
-        let inner_parts = self.horner(with);
+        let inner_parts = self.horner(with, depth + 1);
         let inner = self.signed_sum(inner_parts);
         let base = self.node(b);
         let mut parts = vec![(negative, self.emit(Op::Mul(base, inner)))];
-        parts.extend(self.horner(without));
+        parts.extend(self.horner(without, depth + 1));
         parts
     }
 

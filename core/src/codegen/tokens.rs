@@ -70,7 +70,7 @@ impl Program {
                 _ => {}
             }
         }
-        let mut lets = TokenStream::new();
+        let mut stmts: Vec<Statement> = Vec::with_capacity(self.ops.len());
         let mut paired_done: Vec<Slot> = Vec::new();
         for (i, op) in self.ops.iter().enumerate() {
             let slot = i as Slot;
@@ -91,8 +91,12 @@ impl Program {
                     if let (Some(&s), Some(&c)) = (sines.get(&a), cosines.get(&a)) {
                         if !paired_done.contains(&a) {
                             paired_done.push(a);
-                            let (s, c, arg) = (ident(s), ident(c), operand(a));
-                            lets.extend(quote!(let (#s, #c): (f64, f64) = f64::sin_cos(#arg);));
+                            let (si, ci, arg) = (ident(s), ident(c), operand(a));
+                            stmts.push(Statement {
+                                defines: vec![s, c],
+                                uses: vec![a],
+                                tokens: quote!(let (#si, #ci): (f64, f64) = f64::sin_cos(#arg);),
+                            });
                         }
                         continue;
                     }
@@ -104,11 +108,73 @@ impl Program {
                     method(operand(a), f)
                 }
             };
-            lets.extend(quote!(let #name: f64 = #rhs;));
+            stmts.push(Statement {
+                defines: vec![slot],
+                uses: operands(op),
+                tokens: quote!(let #name: f64 = #rhs;),
+            });
         }
+        let lets = chunked(stmts, &self.outputs);
         let outputs = self.outputs.iter().map(|&s| operand(s)).collect();
         Emitted { lets, outputs }
     }
+}
+
+/// One `let` of the emitted code, with the slots it binds and reads.
+struct Statement {
+    defines: Vec<Slot>,
+    uses: Vec<Slot>,
+    tokens: TokenStream,
+}
+
+/// How many `let`s share one block (see [`chunked`]).
+const LETS_PER_BLOCK: usize = 128;
+
+/// The operand slots an instruction reads.
+fn operands(op: &Op) -> Vec<Slot> {
+    match *op {
+        Op::Const(_) | Op::Input(_) => Vec::new(),
+        Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => vec![a, b],
+        Op::Neg(a) | Op::Sqrt(a) | Op::Sin(a) | Op::Cos(a) => vec![a],
+    }
+}
+
+/// The statements, grouped: every `let` opens a scope nested in the previous one, and with
+/// tens of thousands in one function rustc's debug-info writer recurses past its stack. So
+/// past [`LETS_PER_BLOCK`] statements each group becomes a block that returns the slots
+/// later groups read, `let (a, b,): (f64, f64,) = { …; (a, b,) };`, which keeps the nesting
+/// depth near `n / LETS_PER_BLOCK + LETS_PER_BLOCK`. The computation is the same.
+fn chunked(stmts: Vec<Statement>, outputs: &[Slot]) -> TokenStream {
+    if stmts.len() <= LETS_PER_BLOCK {
+        return stmts.into_iter().map(|s| s.tokens).collect();
+    }
+    // The last group that reads each slot (outputs are read after all of them).
+    let mut last_read: IdMap<Slot, usize> = IdMap::default();
+    for (i, st) in stmts.iter().enumerate() {
+        for &u in &st.uses {
+            last_read.insert(u, i / LETS_PER_BLOCK);
+        }
+    }
+    for &o in outputs {
+        last_read.insert(o, usize::MAX);
+    }
+    let mut out = TokenStream::new();
+    for (group, chunk) in stmts.chunks(LETS_PER_BLOCK).enumerate() {
+        let exported: Vec<Ident> = chunk
+            .iter()
+            .flat_map(|st| st.defines.iter())
+            .filter(|s| last_read.get(s).is_some_and(|&g| g > group))
+            .map(|&s| ident(s))
+            .collect();
+        let body: TokenStream = chunk.iter().map(|st| st.tokens.clone()).collect();
+        if exported.is_empty() {
+            out.extend(quote!({ #body }));
+        } else {
+            let types = exported.iter().map(|_| quote!(f64));
+            out.extend(quote!(let (#(#exported,)*): (#(#types,)*) = { #body (#(#exported,)*) };));
+        }
+    }
+    out
 }
 
 fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {

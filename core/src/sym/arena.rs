@@ -1,17 +1,56 @@
 //! The arena: hash-consed expression nodes and the symbol table.
 
+use std::sync::LazyLock;
+use std::sync::atomic::{AtomicU32, Ordering};
+
 use super::hash::IdMap;
+pub use super::node::Node;
 use super::rational::Rational;
+
+/// The next arena tag; 0 is never handed out, so `ExprId::new(_, 0)` is foreign everywhere.
+static NEXT_TAG: AtomicU32 = AtomicU32::new(1);
+
+fn fresh_tag() -> u32 {
+    match NEXT_TAG.fetch_add(1, Ordering::Relaxed) {
+        // After 2³² arenas the counter wraps; skip the reserved 0.
+        0 => NEXT_TAG.fetch_add(1, Ordering::Relaxed),
+        t => t,
+    }
+}
+
+/// What [`Arena::node`] answers for an id this arena does not own: an unbound symbol, which
+/// evaluates to NaN and prints as `<foreign>`.
+static FOREIGN_NODE: Node = Node::Sym(SymbolId(u32::MAX));
+
+static FOREIGN_SYMBOL: LazyLock<Symbol> = LazyLock::new(|| Symbol {
+    name: "<foreign>".to_owned(),
+    latex: r"\langle\text{foreign}\rangle".to_owned(),
+    kind: SymbolKind::Input,
+});
 
 /// Handle to an expression in an [`Arena`]. Equal expressions (after the canonical
 /// constructors) have equal ids, so comparing ids compares expressions.
+///
+/// An id carries the tag of the arena that made it, so an id from another arena is never
+/// taken for one of this arena's expressions (see [`Arena::owns`]). Within one arena, ids
+/// order by their position, children before parents.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
-pub struct ExprId(pub(crate) u32);
+pub struct ExprId(u64);
 
 impl ExprId {
+    pub(crate) fn new(index: u32, tag: u32) -> ExprId {
+        // The index in the low half: the hasher's bucket bits vary from id to id.
+        ExprId((u64::from(tag) << 32) | u64::from(index))
+    }
+
     /// Position of the node in the arena; children always sit before their parents.
     pub fn index(self) -> usize {
-        self.0 as usize
+        self.0 as u32 as usize
+    }
+
+    /// The tag of the arena that made the id.
+    fn tag(self) -> u32 {
+        (self.0 >> 32) as u32
     }
 }
 
@@ -40,6 +79,9 @@ pub enum SymbolKind {
     Input,
     /// Time itself: d/dt is one.
     Time,
+    /// A name for a time-independent expression ([`Arena::abbreviate`]): an atom to the
+    /// canonical form, its definition to evaluation, lowering and differentiation.
+    Abbreviation,
     /// A generalised coordinate q: d/dt is its rate q̇.
     Coordinate,
     /// The `order`-th time derivative of the coordinate `of`.
@@ -62,28 +104,6 @@ pub struct Symbol {
     pub kind: SymbolKind,
 }
 
-/// One node of the expression graph. Constructors in [`Arena`] keep these canonical:
-/// sums and products are flat and sorted, constants are folded, like terms are collected.
-#[derive(Clone, PartialEq, Eq, Hash, Debug)]
-pub enum Node {
-    /// An exact rational constant.
-    Const(Rational),
-    /// A symbol.
-    Sym(SymbolId),
-    /// A sum of at least two terms.
-    Add(Box<[ExprId]>),
-    /// A product of at least two factors; a rational coefficient comes first.
-    Mul(Box<[ExprId]>),
-    /// An integer power other than 0 and 1 of a non-constant base.
-    Pow(ExprId, i64),
-    /// The principal square root.
-    Sqrt(ExprId),
-    /// Sine.
-    Sin(ExprId),
-    /// Cosine.
-    Cos(ExprId),
-}
-
 /// Arena of hash-consed expressions and of the symbols they use.
 ///
 /// ```
@@ -99,7 +119,7 @@ pub enum Node {
 /// // sin²x + cos²x − 1 is the zero node itself.
 /// assert_eq!(a.sub(sum, one), a.zero());
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Arena {
     nodes: Vec<Node>,
     interned: IdMap<Node, ExprId>,
@@ -111,7 +131,43 @@ pub struct Arena {
     shown: IdMap<String, SymbolId>,
     time: Option<SymbolId>,
     derivatives: IdMap<SymbolId, SymbolId>,
+    /// The expression each abbreviation stands for, and the abbreviations by the values of
+    /// their definitions at two points modulo a prime.
+    pub(crate) definitions: IdMap<SymbolId, ExprId>,
+    pub(crate) abbreviations: IdMap<[u64; 2], Vec<ExprId>>,
+    /// The tag stamped on the ids this arena makes.
+    tag: u32,
+    /// Arenas this one was cloned from, with their length at the time: their ids below that
+    /// length denote the same expressions here.
+    inherited: Vec<(u32, u32)>,
+    /// The ids of 0 and 1, made first.
+    zero_one: [ExprId; 2],
     pub(crate) memo: super::memo::Memo,
+}
+
+impl Clone for Arena {
+    /// A copy that owns every id of `self` made so far; ids either copy makes afterwards
+    /// carry a new tag, so they are never mistaken for the other copy's.
+    fn clone(&self) -> Arena {
+        let mut inherited = self.inherited.clone();
+        inherited.push((self.tag, self.nodes.len() as u32));
+        Arena {
+            nodes: self.nodes.clone(),
+            interned: self.interned.clone(),
+            symbols: self.symbols.clone(),
+            symbol_nodes: self.symbol_nodes.clone(),
+            by_name: self.by_name.clone(),
+            shown: self.shown.clone(),
+            time: self.time,
+            derivatives: self.derivatives.clone(),
+            definitions: self.definitions.clone(),
+            abbreviations: self.abbreviations.clone(),
+            tag: fresh_tag(),
+            inherited,
+            zero_one: self.zero_one,
+            memo: self.memo.clone(),
+        }
+    }
 }
 
 impl Default for Arena {
@@ -132,10 +188,17 @@ impl Arena {
             shown: IdMap::default(),
             time: None,
             derivatives: IdMap::default(),
+            definitions: IdMap::default(),
+            abbreviations: IdMap::default(),
+            tag: fresh_tag(),
+            inherited: Vec::new(),
+            zero_one: [ExprId::new(0, 0); 2],
             memo: Default::default(),
         };
-        arena.intern(Node::Const(Rational::ZERO));
-        arena.intern(Node::Const(Rational::ONE));
+        arena.zero_one = [
+            arena.intern(Node::Const(Rational::ZERO)),
+            arena.intern(Node::Const(Rational::ONE)),
+        ];
         arena
     }
 
@@ -144,15 +207,57 @@ impl Arena {
         if let Some(&id) = self.interned.get(&node) {
             return id;
         }
-        let id = ExprId(self.nodes.len() as u32);
+        // 2³² nodes would need hundreds of gigabytes: the allocator fails long before.
+        let id = ExprId::new(self.nodes.len() as u32, self.tag);
         self.nodes.push(node.clone());
         self.interned.insert(node, id);
         id
     }
 
-    /// The node behind an id.
+    /// True if `id` was made by this arena (or by the arena it was cloned from, before the
+    /// clone). Every method accepts foreign ids without panicking: [`Arena::node`] reads one
+    /// as an unbound symbol shown `<foreign>` (NaN when evaluated), and the fallible methods
+    /// return [`SymError::ForeignExpression`](super::SymError::ForeignExpression).
+    ///
+    /// ```
+    /// use precess_core::sym::Arena;
+    /// let (mut a, mut b) = (Arena::new(), Arena::new());
+    /// let x = a.parameter("x");
+    /// assert!(a.owns(x));
+    /// assert!(!b.owns(x));
+    /// assert!(b.eval(x, &[1.0]).is_nan());
+    /// ```
+    pub fn owns(&self, id: ExprId) -> bool {
+        let i = id.index();
+        if id.tag() == self.tag {
+            return i < self.nodes.len();
+        }
+        self.inherited
+            .iter()
+            .any(|&(tag, len)| tag == id.tag() && i < len as usize)
+    }
+
+    /// `Err(SymError::ForeignExpression)` unless every id of `ids` is this arena's.
+    pub(crate) fn check_owned(&self, ids: &[ExprId]) -> Result<(), super::SymError> {
+        match ids.iter().find(|&&id| !self.owns(id)) {
+            Some(&id) => Err(super::SymError::ForeignExpression { index: id.index() }),
+            None => Ok(()),
+        }
+    }
+
+    /// The node behind an id; for an id of another arena, an unbound symbol shown
+    /// `<foreign>` (see [`Arena::owns`]).
+    #[inline]
     pub fn node(&self, id: ExprId) -> &Node {
-        &self.nodes[id.index()]
+        if id.tag() == self.tag
+            && let Some(n) = self.nodes.get(id.index())
+        {
+            return n;
+        }
+        if self.owns(id) {
+            return &self.nodes[id.index()];
+        }
+        &FOREIGN_NODE
     }
 
     /// All nodes, children before parents.
@@ -172,12 +277,12 @@ impl Arena {
 
     /// The constant 0.
     pub fn zero(&self) -> ExprId {
-        ExprId(0)
+        self.zero_one[0]
     }
 
     /// The constant 1.
     pub fn one(&self) -> ExprId {
-        ExprId(1)
+        self.zero_one[1]
     }
 
     /// The rational constant `r`.
@@ -208,7 +313,7 @@ impl Arena {
 
     /// A new symbol of `kind`, shown as `name` or, where another symbol already shows that
     /// name, as `name'` (then `name''` …) with the same LaTeX: no two symbols print alike.
-    fn new_symbol(&mut self, name: &str, latex: String, kind: SymbolKind) -> SymbolId {
+    pub(crate) fn new_symbol(&mut self, name: &str, latex: String, kind: SymbolKind) -> SymbolId {
         let sym = SymbolId(self.symbols.len() as u32);
         let mut shown = name.to_owned();
         while self.shown.contains_key(&shown) {
@@ -230,7 +335,7 @@ impl Arena {
     fn named(&mut self, name: &str, coordinate: bool) -> ExprId {
         let key = (name.to_owned(), coordinate);
         if let Some(&s) = self.by_name.get(&key) {
-            return self.symbol_nodes[s.index()];
+            return self.symbol_expr(s);
         }
         let kind = if coordinate {
             SymbolKind::Coordinate
@@ -239,7 +344,7 @@ impl Arena {
         };
         let s = self.new_symbol(name, latex_name(name), kind);
         self.by_name.insert(key, s);
-        self.symbol_nodes[s.index()]
+        self.symbol_expr(s)
     }
 
     /// The parameter named `name` (created on first use; a second call returns the same).
@@ -257,7 +362,7 @@ impl Arena {
     /// so it cannot meet a parameter of the same name.
     pub fn input(&mut self, name: &str) -> ExprId {
         let s = self.new_symbol(name, latex_name(name), SymbolKind::Input);
-        self.symbol_nodes[s.index()]
+        self.symbol_expr(s)
     }
 
     /// The time symbol, shown as `t` (one per arena, created on first use). A parameter
@@ -271,7 +376,7 @@ impl Arena {
                 s
             }
         };
-        self.symbol_nodes[s.index()]
+        self.symbol_expr(s)
     }
 
     /// The time symbol if [`Arena::time`] has made it, without making it.
@@ -280,13 +385,19 @@ impl Arena {
     }
 
     /// The symbol table entry of `s`.
+    ///
+    /// A symbol id past the table (from a larger arena) reads as the `<foreign>` input.
     pub fn symbol(&self, s: SymbolId) -> &Symbol {
-        &self.symbols[s.index()]
+        self.symbols.get(s.index()).unwrap_or(&FOREIGN_SYMBOL)
     }
 
-    /// The expression that is the bare symbol `s`.
+    /// The expression that is the bare symbol `s` (a foreign id for a symbol past the
+    /// table).
     pub fn symbol_expr(&self, s: SymbolId) -> ExprId {
-        self.symbol_nodes[s.index()]
+        self.symbol_nodes
+            .get(s.index())
+            .copied()
+            .unwrap_or(ExprId::new(u32::MAX, 0))
     }
 
     /// Number of symbols, the length an evaluation environment needs.
@@ -321,7 +432,10 @@ impl Arena {
         let (of, order) = match self.symbol(s).kind {
             SymbolKind::Coordinate => (s, 1u8),
             SymbolKind::Derivative { of, order } => (of, order.checked_add(1)?),
-            SymbolKind::Parameter | SymbolKind::Input | SymbolKind::Time => return None,
+            SymbolKind::Parameter
+            | SymbolKind::Input
+            | SymbolKind::Time
+            | SymbolKind::Abbreviation => return None,
         };
         let base = self.symbol(of);
         let suffix = match order {
@@ -349,7 +463,7 @@ impl Arena {
 }
 
 /// LaTeX for a plain name: Greek letters get their command, `_x` a subscript.
-fn latex_name(name: &str) -> String {
+pub(crate) fn latex_name(name: &str) -> String {
     const GREEK: &[&str] = &[
         "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
         "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",

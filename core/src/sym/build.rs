@@ -48,9 +48,10 @@ impl Arena {
     /// `1 / a`.
     ///
     /// # Errors
-    /// [`SymError::DivisionByZero`] if `a` is identically zero.
+    /// [`SymError::DivisionByZero`] if `a` is identically zero ([`Arena::is_zero`]);
+    /// [`SymError::ForeignExpression`] for an id of another arena.
     pub fn recip(&mut self, a: ExprId) -> Result<ExprId, SymError> {
-        if a == self.zero() || self.expand(a) == self.zero() {
+        if self.is_zero(a)? {
             return Err(SymError::DivisionByZero {
                 divisor: self.display(a),
             });
@@ -232,8 +233,10 @@ impl Arena {
     ///
     /// # Errors
     /// [`SymError::ZeroToNegativePower`] for `0^n` with `n < 0`;
-    /// [`SymError::DivisionByZero`] if `n < 0` and `a` is identically zero after expansion.
+    /// [`SymError::DivisionByZero`] if `n < 0` and `a` is identically zero;
+    /// [`SymError::ForeignExpression`] for an id of another arena.
     pub fn powi(&mut self, a: ExprId, n: i64) -> Result<ExprId, SymError> {
+        self.check_owned(&[a])?;
         match (self.node(a), n) {
             (_, 0) => Ok(self.one()),
             (_, 1) => Ok(a),
@@ -245,7 +248,7 @@ impl Arena {
                 Err(SymError::ExponentOverflow { a: *m, b: n })
             }
             _ => {
-                if n < 0 && self.expand(a) == self.zero() {
+                if n < 0 && self.is_zero(a)? {
                     return Err(SymError::DivisionByZero {
                         divisor: self.display(a),
                     });

@@ -7,7 +7,13 @@
 //! textbook `N' / (I₁ sin θ)`: one factor of the singularity instead of two, and fewer
 //! operations.
 
+use std::collections::BTreeMap;
+
 use super::arena::{Arena, ExprId, Node};
+
+/// The highest power of cos u that [`Arena::div_sin`] divides: the quotient by 1 − cos² u of
+/// a polynomial of degree d has about d/2 terms, so past this the division is not tried.
+pub const MAX_DIVIDED_DEGREE: i64 = 1 << 12;
 
 /// A term split into its factors `(base, exponent)`, the rational coefficient kept as a
 /// factor of exponent 1.
@@ -46,7 +52,8 @@ impl Arena {
 
     /// `p / sin u` if it is exact in the ring of polynomials in sin u and cos u (and other
     /// symbols), for `p` expanded; the result is expanded. `None` if the division leaves a
-    /// remainder or `p` holds negative powers of sin u or cos u.
+    /// remainder, `p` holds negative powers of sin u or cos u, or a power of cos u above
+    /// [`MAX_DIVIDED_DEGREE`].
     ///
     /// ```
     /// use precess_core::sym::Arena;
@@ -62,12 +69,12 @@ impl Arena {
         let (sin, cos) = (self.sin(u), self.cos(u));
         // p = A(cos) + sin · B: B is read off the terms with sin; A is grouped by cos degree.
         let mut with_sin = Vec::new();
-        let mut by_cos_degree: Vec<Vec<ExprId>> = Vec::new();
+        let mut by_cos_degree: BTreeMap<i64, Vec<ExprId>> = BTreeMap::new();
         for t in self.terms_of(p) {
             let mut f = self.factors_of(t);
             let sin_exp = take(&mut f, sin);
             let cos_exp = take(&mut f, cos);
-            if !(0..=1).contains(&sin_exp) || cos_exp < 0 {
+            if !(0..=1).contains(&sin_exp) || !(0..=MAX_DIVIDED_DEGREE).contains(&cos_exp) {
                 return None;
             }
             if sin_exp == 1 {
@@ -76,17 +83,17 @@ impl Arena {
                 }
                 with_sin.push(self.rebuild(&f));
             } else {
-                let k = cos_exp as usize;
-                if by_cos_degree.len() <= k {
-                    by_cos_degree.resize(k + 1, Vec::new());
-                }
                 let rest = self.rebuild(&f);
-                by_cos_degree[k].push(rest);
+                by_cos_degree.entry(cos_exp).or_default().push(rest);
             }
         }
         // A / (1 − cos²) by synthetic division from the top degree: the quotient's
         // coefficient of cosᵏ⁻² is −aₖ, and aₖ carries into aₖ₋₂.
-        let mut a: Vec<ExprId> = by_cos_degree.iter().map(|v| self.sum(v)).collect();
+        let top = by_cos_degree.keys().next_back().map_or(0, |&k| k as usize);
+        let mut a: Vec<ExprId> = vec![self.zero(); top + 1];
+        for (k, v) in &by_cos_degree {
+            a[*k as usize] = self.sum(v);
+        }
         let mut quotient_terms = Vec::new();
         for k in (2..a.len()).rev() {
             let ak = a[k];

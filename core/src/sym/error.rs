@@ -56,4 +56,36 @@ pub enum SymError {
         /// Second exponent.
         b: i64,
     },
+    /// An id made by another arena (or by a clone after the copy was taken).
+    #[error("expression id {index} belongs to another arena")]
+    ForeignExpression {
+        /// The id's position in the arena that made it.
+        index: usize,
+    },
+    /// An expansion that would pass the engine's term limit.
+    #[error("expanding would produce about {terms} terms, past the limit of {limit}")]
+    ExpansionTooLarge {
+        /// The number of terms the expansion would have (saturated at `usize::MAX`).
+        terms: usize,
+        /// The limit, [`MAX_EXPANDED_TERMS`](super::MAX_EXPANDED_TERMS).
+        limit: usize,
+    },
+    /// An abbreviation whose definition depends on time or a coordinate.
+    #[error("the abbreviation `{name}` would depend on `{symbol}`, which changes in time")]
+    TimeDependentAbbreviation {
+        /// The abbreviation's name.
+        name: String,
+        /// The time-dependent symbol in its definition.
+        symbol: String,
+    },
+    /// A power too large to compute with (an exponent past what fits in memory).
+    #[error("the power {exponent} of `{base}` is too large to {operation}")]
+    PowerTooLarge {
+        /// The base as text.
+        base: String,
+        /// The exponent.
+        exponent: i64,
+        /// What could not be done with it.
+        operation: &'static str,
+    },
 }

@@ -2,9 +2,11 @@
 //! interpreter and the tests compare against).
 
 use super::arena::{Arena, ExprId, Node};
+use super::hash::IdMap;
 
 impl Arena {
-    /// The value of `e` with symbol `s` set to `env[s.index()]`.
+    /// The value of `e` with symbol `s` set to `env[s.index()]`; an abbreviation takes the
+    /// value of its definition.
     ///
     /// Missing entries read as NaN, so an unbound symbol cannot pass for a number.
     ///
@@ -16,40 +18,24 @@ impl Arena {
     /// assert_eq!(a.eval(e, &[3.0]), 9.0);
     /// ```
     pub fn eval(&self, e: ExprId, env: &[f64]) -> f64 {
-        let mut values = vec![f64::NAN; e.index() + 1];
-        for id in self.reachable(e) {
-            values[id.index()] = self.eval_node(id, &values, env);
+        let order = self.walk(&[e], true, |_| true);
+        let mut values: IdMap<ExprId, f64> = IdMap::default();
+        values.reserve(order.len());
+        for id in order {
+            let v = self.eval_node(id, &values, env);
+            values.insert(id, v);
         }
-        values[e.index()]
+        values.get(&e).copied().unwrap_or(f64::NAN)
     }
 
-    /// The ids `e` depends on (itself included), children before parents.
-    pub fn reachable(&self, e: ExprId) -> Vec<ExprId> {
-        let mut seen = vec![false; e.index() + 1];
-        seen[e.index()] = true;
-        // Ids are topologically ordered, so a reverse sweep marks every dependency.
-        for i in (0..=e.index()).rev() {
-            if !seen[i] {
-                continue;
-            }
-            match &self.nodes_slice()[i] {
-                Node::Const(_) | Node::Sym(_) => {}
-                Node::Add(c) | Node::Mul(c) => c.iter().for_each(|x| seen[x.index()] = true),
-                Node::Pow(b, _) => seen[b.index()] = true,
-                Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => seen[u.index()] = true,
-            }
-        }
-        (0..=e.index())
-            .filter(|&i| seen[i])
-            .map(|i| ExprId(i as u32))
-            .collect()
-    }
-
-    fn eval_node(&self, id: ExprId, values: &[f64], env: &[f64]) -> f64 {
-        let v = |x: &ExprId| values[x.index()];
+    fn eval_node(&self, id: ExprId, values: &IdMap<ExprId, f64>, env: &[f64]) -> f64 {
+        let v = |x: &ExprId| values.get(x).copied().unwrap_or(f64::NAN);
         match self.node(id) {
             Node::Const(r) => r.to_f64(),
-            Node::Sym(s) => env.get(s.index()).copied().unwrap_or(f64::NAN),
+            Node::Sym(s) => match self.definitions.get(s) {
+                Some(d) => v(d),
+                None => env.get(s.index()).copied().unwrap_or(f64::NAN),
+            },
             Node::Add(c) => c.iter().map(v).sum(),
             Node::Mul(c) => c.iter().map(v).product(),
             Node::Pow(b, n) => match i32::try_from(*n) {

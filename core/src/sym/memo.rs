@@ -8,4 +8,7 @@ use super::hash::IdMap;
 pub(crate) struct Memo {
     pub(crate) diff: IdMap<(ExprId, SymbolId), ExprId>,
     pub(crate) expand: IdMap<ExprId, ExprId>,
+    /// Products and powers left factored because their expansion would pass the term
+    /// limit, with the number of terms it would have had.
+    pub(crate) too_large: IdMap<ExprId, usize>,
 }

@@ -11,9 +11,14 @@
 //!   time derivative over coordinates and their rates.
 //! - [`mat3`] holds the small matrix algebra (products, cross and dot, determinants) that
 //!   kinematics is written in.
+//! - Every walk is iterative over [`Arena::post_order`] (children through
+//!   [`Node::children`]), so no depth of nesting overflows the stack.
+//! - [`Arena::abbreviate`] names a large time-independent expression (an inertia entry) so
+//!   that derivations over it stay small; [`Arena::is_zero`] sees through the names.
 //!
 //! See `docs/symbolic.md` for the canonical form in full.
 
+mod abbreviate;
 mod arena;
 mod build;
 mod cancel;
@@ -27,10 +32,17 @@ mod hash;
 mod literal;
 pub mod mat3;
 mod memo;
+mod node;
 mod rational;
+mod substitute;
+mod walk;
+mod zero;
 
-pub use arena::{Arena, ExprId, Node, Symbol, SymbolId, SymbolKind};
+pub use arena::{Arena, ExprId, Symbol, SymbolId, SymbolKind};
+pub use cancel::MAX_DIVIDED_DEGREE;
 pub use error::SymError;
+pub use expand::MAX_EXPANDED_TERMS;
 pub use hash::{IdHasher, IdMap};
 pub use literal::parse_decimal;
+pub use node::Node;
 pub use rational::Rational;
