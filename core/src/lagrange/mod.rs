@@ -12,7 +12,6 @@ mod angles;
 mod chart;
 mod chart_trait;
 mod derived;
-mod emit;
 mod equations;
 mod error;
 mod fast;
@@ -24,7 +23,6 @@ pub use angles::{AngleSequence, Mat3, cross, dot, elementary, mat_mul, mat_vec, 
 pub use chart::{ChartConfig, ChartError, ChartedTop, angles_from_rotation};
 pub use chart_trait::AngleChart;
 pub use derived::{EulerianTop, Top, TopChart, TopError, join, rates_from_omega};
-pub use emit::{TopEmit, emit_top};
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
 pub use fast::FastTop;

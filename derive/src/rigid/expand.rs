@@ -1,0 +1,271 @@
+//! Expansion of `#[rigid]`: the checked body's expressions lowered by precess-core's code
+//! generator and quoted into a `RigidBody` impl. Constants become literals; a field becomes
+//! `self.field`; generated code names everything through the hidden path.
+
+use precess_core::body::{About, Axis, Description, Frame, Shape};
+use precess_core::codegen::{Emitted, f64_literal};
+use precess_core::sym::{Arena, ExprId};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+use super::check::CheckedBody;
+use crate::ctxt::Ctxt;
+use crate::private::Private;
+use crate::symbols::{FieldParameters, SymbolTokens};
+
+/// What one method body is lowered with: the arena, the map of symbols, and where an
+/// internal error is recorded.
+struct Lowering<'a> {
+    cx: &'a Ctxt,
+    ident: &'a Ident,
+    arena: &'a mut Arena,
+    symbols: SymbolTokens,
+}
+
+impl Lowering<'_> {
+    /// Lowers `outputs` and emits them. A constant whose exact value did not fold to one
+    /// rational (an overflow kept it as a product) is rounded to one literal first, so a
+    /// body of literals never computes at run time.
+    fn emit(&mut self, outputs: &[ExprId]) -> Emitted {
+        let a = &mut *self.arena;
+        let folded: Vec<ExprId> = outputs
+            .iter()
+            .map(|&e| {
+                if a.as_rational(e).is_some() || !a.free_symbols(e).is_empty() {
+                    return e;
+                }
+                let v = a.eval(e, &[]);
+                a.float(v).unwrap_or(e)
+            })
+            .collect();
+        self.symbols.lower(self.cx, self.ident, self.arena, &folded)
+    }
+
+    /// A method body: the `let`s, then `build` applied to the output expressions.
+    fn method_body(
+        &mut self,
+        outputs: &[ExprId],
+        build: impl FnOnce(&[TokenStream]) -> TokenStream,
+    ) -> TokenStream {
+        let Emitted { lets, outputs } = self.emit(outputs);
+        let out = build(&outputs);
+        quote! { #lets #out }
+    }
+}
+
+fn vector(o: &[TokenStream]) -> TokenStream {
+    quote!(#Private::Vector3::new(#(#o),*))
+}
+
+fn matrix(o: &[TokenStream]) -> TokenStream {
+    quote!(#Private::Matrix3::new(#(#o),*))
+}
+
+/// `impl RigidBody for …`, or `None` after recording why Euler's equations could not be
+/// formed.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &mut Arena,
+    parameters: &FieldParameters,
+    checked: &CheckedBody,
+) -> Option<TokenStream> {
+    let p = Private;
+    let omega_in = [
+        arena.input("omega_1"),
+        arena.input("omega_2"),
+        arena.input("omega_3"),
+    ];
+    let torque_in = [arena.input("G_1"), arena.input("G_2"), arena.input("G_3")];
+    let mut symbols = parameters.tokens();
+    for (i, (&w, &g)) in omega_in.iter().zip(&torque_in).enumerate() {
+        symbols.insert_expr(arena, w, quote!(omega[#i]));
+        symbols.insert_expr(arena, g, quote!(torque[#i]));
+    }
+    let mut low = Lowering {
+        cx,
+        ident,
+        arena,
+        symbols,
+    };
+    let props = &checked.body.props;
+    let mass = low.method_body(&[props.mass], |o| o[0].clone());
+    let center = low.method_body(&props.center, vector);
+    let reference = low.method_body(&props.reference, vector);
+    let inertia = low.method_body(props.inertia.as_flattened(), matrix);
+    let inertia_cm = low.method_body(props.inertia_cm.as_flattened(), matrix);
+    let principal = match &checked.body.frame {
+        Frame::Diagonal(m) => low.method_body(m, |o| {
+            let v = vector(o);
+            quote!(#p::Principal::diagonal(#v))
+        }),
+        Frame::Constant(pr) => {
+            let m: Vec<TokenStream> = pr.moments.iter().map(|&x| f64_literal(x)).collect();
+            let r = pr.rotation.matrix();
+            let rows: Vec<TokenStream> = (0..3)
+                .flat_map(|i| (0..3).map(move |j| (i, j)))
+                .map(|(i, j)| f64_literal(r[(i, j)]))
+                .collect();
+            let (m, r) = (vector(&m), matrix(&rows));
+            quote!(#p::Principal { moments: #m, rotation: #p::Rotation3::from_matrix_unchecked(#r) })
+        }
+        Frame::Runtime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
+    };
+    let rhs = match checked.body.euler_rhs(low.arena, omega_in, torque_in) {
+        Ok(Some(rhs)) => low.method_body(&rhs, vector),
+        Ok(None) => quote! {
+            let principal = #p::RigidBody::principal(self);
+            #p::euler_rhs_principal(&principal.moments, omega, torque)
+        },
+        Err(e) => {
+            cx.error_spanned_by(ident, format!("cannot form Euler's equations: {e}"));
+            return None;
+        }
+    };
+    let d = description(&mut low, &checked.description);
+    let validate = if parameters.is_empty() {
+        // Literal bodies were checked while expanding.
+        quote! {
+            fn validate(&self) -> ::core::result::Result<(), #p::BodyError> {
+                ::core::result::Result::Ok(())
+            }
+        }
+    } else {
+        // The trait's default checks the description built from the fields.
+        TokenStream::new()
+    };
+    Some(quote! {
+        #[automatically_derived]
+        #[allow(clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::RigidBody for #ident {
+            #[inline]
+            fn mass(&self) -> f64 { #mass }
+            #[inline]
+            fn center_of_mass(&self) -> #p::Vector3<f64> { #center }
+            #[inline]
+            fn reference_point(&self) -> #p::Vector3<f64> { #reference }
+            #[inline]
+            fn inertia(&self) -> #p::Matrix3<f64> { #inertia }
+            #[inline]
+            fn inertia_cm(&self) -> #p::Matrix3<f64> { #inertia_cm }
+            #[inline]
+            fn principal(&self) -> #p::Principal { #principal }
+            #[inline]
+            fn euler_rhs(&self, omega: &#p::Vector3<f64>, torque: &#p::Vector3<f64>) -> #p::Vector3<f64> { #rhs }
+            fn description(&self) -> #p::Description<f64> { #d }
+            #validate
+        }
+    })
+}
+
+/// The description as a run-time value, each value an expression of the fields.
+fn description(low: &mut Lowering, description: &Description<ExprId>) -> TokenStream {
+    let p = Private;
+    let mut all = Vec::new();
+    let indexed: Description<usize> = description.map(&mut |&e| {
+        all.push(e);
+        all.len() - 1
+    });
+    let Emitted { lets, outputs } = low.emit(&all);
+    let d = indexed.map(&mut |&i| outputs.get(i).cloned().unwrap_or_default());
+    let parts = d.parts.iter().map(|part| {
+        let shape = shape(&part.shape);
+        let at = &part.at;
+        quote!(#p::Part { shape: #shape, at: [#(#at),*] })
+    });
+    let pivot = match &d.pivot {
+        Some(v) => quote!(::core::option::Option::Some([#(#v),*])),
+        None => quote!(::core::option::Option::None),
+    };
+    quote! {{
+        #lets
+        #p::Description { parts: #p::vec![#(#parts),*], pivot: #pivot }
+    }}
+}
+
+fn axis(a: Axis) -> TokenStream {
+    match a {
+        Axis::X => quote!(#Private::Axis::X),
+        Axis::Y => quote!(#Private::Axis::Y),
+        Axis::Z => quote!(#Private::Axis::Z),
+    }
+}
+
+fn shape(s: &Shape<TokenStream>) -> TokenStream {
+    let p = quote!(#Private::Shape);
+    match s {
+        Shape::Particle { mass } => quote!(#p::Particle { mass: #mass }),
+        Shape::Sphere { mass, radius } => quote!(#p::Sphere { mass: #mass, radius: #radius }),
+        Shape::Shell { mass, radius } => quote!(#p::Shell { mass: #mass, radius: #radius }),
+        Shape::Cuboid { mass, size } => quote!(#p::Cuboid { mass: #mass, size: [#(#size),*] }),
+        Shape::Ellipsoid { mass, semi_axes } => {
+            quote!(#p::Ellipsoid { mass: #mass, semi_axes: [#(#semi_axes),*] })
+        }
+        Shape::Cylinder {
+            mass,
+            radius,
+            length,
+            axis: a,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Cylinder { mass: #mass, radius: #radius, length: #length, axis: #a })
+        }
+        Shape::Tube {
+            mass,
+            inner,
+            outer,
+            length,
+            axis: a,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Tube { mass: #mass, inner: #inner, outer: #outer, length: #length, axis: #a })
+        }
+        Shape::Disk {
+            mass,
+            radius,
+            axis: a,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Disk { mass: #mass, radius: #radius, axis: #a })
+        }
+        Shape::Ring {
+            mass,
+            radius,
+            axis: a,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Ring { mass: #mass, radius: #radius, axis: #a })
+        }
+        Shape::Rod {
+            mass,
+            length,
+            axis: a,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Rod { mass: #mass, length: #length, axis: #a })
+        }
+        Shape::Cone {
+            mass,
+            radius,
+            height,
+            axis: a,
+            reversed,
+        } => {
+            let a = axis(*a);
+            quote!(#p::Cone { mass: #mass, radius: #radius, height: #height, axis: #a, reversed: #reversed })
+        }
+        Shape::Explicit {
+            mass,
+            inertia,
+            about,
+        } => {
+            let rows = inertia.iter().map(|r| quote!([#(#r),*]));
+            let about = match about {
+                About::Center => quote!(#Private::About::Center),
+                About::Pivot => quote!(#Private::About::Pivot),
+            };
+            quote!(#p::Explicit { mass: #mass, inertia: [#(#rows),*], about: #about })
+        }
+    }
+}
