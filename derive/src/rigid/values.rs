@@ -205,7 +205,11 @@ impl Checker<'_> {
             return None;
         };
         if !field.is_f64() {
-            let ty = field.ty.to_token_stream().to_string();
+            // As written: token streams print paths as `a :: b`.
+            let ty = field.ty.to_token_stream().to_string().replace(" :: ", "::");
+            let ty = ty
+                .strip_prefix(":: ")
+                .map_or(ty.clone(), |t| format!("::{t}"));
             self.cx.error_spanned_by(
                 ident,
                 format!("field `{name}` has type `{ty}`: only f64 fields can be used as values"),
