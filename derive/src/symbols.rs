@@ -98,3 +98,37 @@ impl FieldParameters {
         map
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A symbol the map does not know is a spanned internal error, never a value: the old
+    /// fallback emitted `f64::NAN` and the body silently computed NaN.
+    #[test]
+    fn an_unknown_symbol_is_an_error_on_the_struct() {
+        let mut arena = Arena::new();
+        let m = arena.parameter("m");
+        let stray = arena.input("omega_1");
+        let sum = arena.add(m, stray);
+        let mut map = SymbolTokens::default();
+        map.insert_expr(&arena, m, quote!(self.m));
+        let ident: Ident = syn::parse_quote!(Spinner);
+        let cx = Ctxt::new();
+        let code = map.lower(&cx, &ident, &arena, &[sum]);
+        let text = format!("{} {:?}", code.lets, code.outputs);
+        assert!(!text.contains("NAN"), "{text}");
+        let errors = cx.check().expect_err("the stray input is reported");
+        assert_eq!(errors.len(), 1);
+        let message = errors[0].to_string();
+        assert!(
+            message.contains("internal error") && message.contains("omega_1"),
+            "{message}"
+        );
+        // Known symbols alone lower without an error.
+        let cx = Ctxt::new();
+        let code = map.lower(&cx, &ident, &arena, &[m]);
+        assert!(cx.check().is_ok());
+        assert!(code.lets.to_string().contains("self . m"));
+    }
+}

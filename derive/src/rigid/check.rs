@@ -175,7 +175,8 @@ fn validate(
             pivot: None,
         };
         if let Some(numeric) = evaluate(arena, &single)
-            && let Err(e) = check_part(index, &numeric.parts[0])
+            && let Some(numeric_part) = numeric.parts.first()
+            && let Err(e) = check_part(index, numeric_part)
         {
             report(cx, spans, &e);
         } else if let Shape::Explicit { inertia, .. } = &part.shape {

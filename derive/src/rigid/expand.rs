@@ -90,7 +90,7 @@ pub fn expand(
         symbols,
     };
     let props = &checked.body.props;
-    let mass = low.method_body(&[props.mass], |o| o[0].clone());
+    let mass = low.method_body(&[props.mass], |o| quote!(#(#o)*));
     let center = low.method_body(&props.center, vector);
     let reference = low.method_body(&props.reference, vector);
     let inertia = low.method_body(props.inertia.as_flattened(), matrix);
