@@ -34,13 +34,6 @@ impl SymbolTokens {
         }
     }
 
-    /// This map and `extra` on top of it.
-    pub fn extended(&self, extra: impl IntoIterator<Item = (SymbolId, TokenStream)>) -> Self {
-        let mut map = self.clone();
-        map.entries.extend(extra);
-        map
-    }
-
     fn get(&self, s: SymbolId) -> Option<TokenStream> {
         self.entries
             .iter()
@@ -51,7 +44,7 @@ impl SymbolTokens {
     /// Lowers `outputs` to straight-line Rust reading the symbols through this map. A symbol
     /// it does not know is recorded in `cx` as an internal error spanned on `ident` (the
     /// derive then emits its errors and stub impls, never this code).
-    pub fn lower(&self, cx: &Ctxt, ident: &Ident, arena: &Arena, outputs: &[ExprId]) -> Emitted {
+    fn lower(&self, cx: &Ctxt, ident: &Ident, arena: &Arena, outputs: &[ExprId]) -> Emitted {
         Program::lower(arena, outputs).to_tokens(&mut |s| match self.get(s) {
             Some(tokens) => tokens,
             None => {
@@ -67,6 +60,41 @@ impl SymbolTokens {
                 quote!(0.0)
             }
         })
+    }
+}
+
+/// Lowering of one impl's methods: the symbols every method reads (the fields, say), and
+/// where an unknown symbol is reported.
+pub struct Lowering<'a> {
+    cx: &'a Ctxt,
+    ident: &'a Ident,
+    symbols: SymbolTokens,
+}
+
+impl<'a> Lowering<'a> {
+    /// Lowers with `symbols`, reporting into `cx` on the struct `ident`.
+    pub fn new(cx: &'a Ctxt, ident: &'a Ident, symbols: SymbolTokens) -> Self {
+        Lowering { cx, ident, symbols }
+    }
+
+    /// `outputs` as straight-line Rust reading the common symbols.
+    pub fn lower(&self, arena: &Arena, outputs: &[ExprId]) -> Emitted {
+        self.symbols.lower(self.cx, self.ident, arena, outputs)
+    }
+
+    /// `outputs` as straight-line Rust reading the common symbols and, for one method,
+    /// each expression of `reads` (a bare symbol) as its tokens.
+    pub fn lower_reading(
+        &self,
+        arena: &Arena,
+        outputs: &[ExprId],
+        reads: &[(ExprId, TokenStream)],
+    ) -> Emitted {
+        let mut symbols = self.symbols.clone();
+        for (e, tokens) in reads {
+            symbols.insert_expr(arena, *e, tokens.clone());
+        }
+        symbols.lower(self.cx, self.ident, arena, outputs)
     }
 }
 

@@ -21,7 +21,7 @@ pub enum Item {
         keys: Vec<KeyValue>,
     },
     /// `key = value` at the top level (only [`keys::PIVOT`] is meaningful).
-    Setting(KeyValue),
+    Setting(Box<KeyValue>),
 }
 
 /// `key = value`.
@@ -59,7 +59,7 @@ impl Parse for Item {
         } else if input.peek(Token![=]) {
             input.parse::<Token![=]>()?;
             let value = input.parse()?;
-            Ok(Item::Setting(KeyValue { key: name, value }))
+            Ok(Item::Setting(Box::new(KeyValue { key: name, value })))
         } else {
             Err(syn::Error::new(
                 name.span(),

@@ -120,7 +120,8 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                     spans.parts.push(part_spans);
                 }
             }
-            Item::Setting(KeyValue { key, value }) if key == keys::PIVOT => {
+            Item::Setting(setting) if setting.key == keys::PIVOT => {
+                let KeyValue { key, value } = &**setting;
                 // One pivot: a body turns about a single fixed point.
                 if pivot_key.is_some() {
                     ck.cx.error_spanned_by(
@@ -133,7 +134,8 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                 description.pivot = ck.vector(value);
                 spans.pivot = Some(value.to_token_stream());
             }
-            Item::Setting(KeyValue { key, .. }) => {
+            Item::Setting(setting) => {
+                let key = &setting.key;
                 ck.cx.error_spanned_by(
                     key,
                     format!(

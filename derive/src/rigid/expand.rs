@@ -12,46 +12,39 @@ use syn::Ident;
 use super::check::CheckedBody;
 use crate::ctxt::Ctxt;
 use crate::private::Private;
-use crate::symbols::{FieldParameters, SymbolTokens};
+use crate::symbols::{FieldParameters, Lowering};
 
-/// What one method body is lowered with: the arena, the map of symbols, and where an
-/// internal error is recorded.
-struct Lowering<'a> {
-    cx: &'a Ctxt,
-    ident: &'a Ident,
-    arena: &'a mut Arena,
-    symbols: SymbolTokens,
+/// A constant whose exact value did not fold to one rational (an overflow kept it as a
+/// product) is rounded to one literal, so a body of literals never computes at run time.
+fn fold_constants(arena: &mut Arena, outputs: &[ExprId]) -> Vec<ExprId> {
+    outputs
+        .iter()
+        .map(|&e| {
+            if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
+                return e;
+            }
+            let v = arena.eval(e, &[]);
+            arena.float(v).unwrap_or(e)
+        })
+        .collect()
 }
 
-impl Lowering<'_> {
-    /// Lowers `outputs` and emits them. A constant whose exact value did not fold to one
-    /// rational (an overflow kept it as a product) is rounded to one literal first, so a
-    /// body of literals never computes at run time.
-    fn emit(&mut self, outputs: &[ExprId]) -> Emitted {
-        let a = &mut *self.arena;
-        let folded: Vec<ExprId> = outputs
-            .iter()
-            .map(|&e| {
-                if a.as_rational(e).is_some() || !a.free_symbols(e).is_empty() {
-                    return e;
-                }
-                let v = a.eval(e, &[]);
-                a.float(v).unwrap_or(e)
-            })
-            .collect();
-        self.symbols.lower(self.cx, self.ident, self.arena, &folded)
-    }
+/// Lowers `outputs` with constants folded.
+fn emit(low: &Lowering, arena: &mut Arena, outputs: &[ExprId]) -> Emitted {
+    let folded = fold_constants(arena, outputs);
+    low.lower(arena, &folded)
+}
 
-    /// A method body: the `let`s, then `build` applied to the output expressions.
-    fn method_body(
-        &mut self,
-        outputs: &[ExprId],
-        build: impl FnOnce(&[TokenStream]) -> TokenStream,
-    ) -> TokenStream {
-        let Emitted { lets, outputs } = self.emit(outputs);
-        let out = build(&outputs);
-        quote! { #lets #out }
-    }
+/// A method body: the `let`s, then `build` applied to the output expressions.
+fn method_body(
+    low: &Lowering,
+    arena: &mut Arena,
+    outputs: &[ExprId],
+    build: impl FnOnce(&[TokenStream]) -> TokenStream,
+) -> TokenStream {
+    let Emitted { lets, outputs } = emit(low, arena, outputs);
+    let out = build(&outputs);
+    quote! { #lets #out }
 }
 
 fn vector(o: &[TokenStream]) -> TokenStream {
@@ -83,20 +76,15 @@ pub fn expand(
         symbols.insert_expr(arena, w, quote!(omega[#i]));
         symbols.insert_expr(arena, g, quote!(torque[#i]));
     }
-    let mut low = Lowering {
-        cx,
-        ident,
-        arena,
-        symbols,
-    };
+    let low = Lowering::new(cx, ident, symbols);
     let props = &checked.body.props;
-    let mass = low.method_body(&[props.mass], |o| quote!(#(#o)*));
-    let center = low.method_body(&props.center, vector);
-    let reference = low.method_body(&props.reference, vector);
-    let inertia = low.method_body(props.inertia.as_flattened(), matrix);
-    let inertia_cm = low.method_body(props.inertia_cm.as_flattened(), matrix);
+    let mass = method_body(&low, arena, &[props.mass], |o| quote!(#(#o)*));
+    let center = method_body(&low, arena, &props.center, vector);
+    let reference = method_body(&low, arena, &props.reference, vector);
+    let inertia = method_body(&low, arena, props.inertia.as_flattened(), matrix);
+    let inertia_cm = method_body(&low, arena, props.inertia_cm.as_flattened(), matrix);
     let principal = match &checked.body.frame {
-        Frame::Diagonal(m) => low.method_body(m, |o| {
+        Frame::Diagonal(m) => method_body(&low, arena, m, |o| {
             let v = vector(o);
             quote!(#p::Principal::diagonal(#v))
         }),
@@ -112,8 +100,8 @@ pub fn expand(
         }
         Frame::Runtime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
     };
-    let rhs = match checked.body.euler_rhs(low.arena, omega_in, torque_in) {
-        Ok(Some(rhs)) => low.method_body(&rhs, vector),
+    let rhs = match checked.body.euler_rhs(arena, omega_in, torque_in) {
+        Ok(Some(rhs)) => method_body(&low, arena, &rhs, vector),
         Ok(None) => quote! {
             let principal = #p::RigidBody::principal(self);
             #p::euler_rhs_principal(&principal.moments, omega, torque)
@@ -123,7 +111,7 @@ pub fn expand(
             return None;
         }
     };
-    let d = description(&mut low, &checked.description);
+    let d = description(&low, arena, &checked.description);
     let validate = if parameters.is_empty() {
         // Literal bodies were checked while expanding.
         quote! {
@@ -160,14 +148,18 @@ pub fn expand(
 }
 
 /// The description as a run-time value, each value an expression of the fields.
-fn description(low: &mut Lowering, description: &Description<ExprId>) -> TokenStream {
+fn description(
+    low: &Lowering,
+    arena: &mut Arena,
+    description: &Description<ExprId>,
+) -> TokenStream {
     let p = Private;
     let mut all = Vec::new();
     let indexed: Description<usize> = description.map(&mut |&e| {
         all.push(e);
         all.len() - 1
     });
-    let Emitted { lets, outputs } = low.emit(&all);
+    let Emitted { lets, outputs } = emit(low, arena, &all);
     let d = indexed.map(&mut |&i| outputs.get(i).cloned().unwrap_or_default());
     let parts = d.parts.iter().map(|part| {
         let shape = shape(&part.shape);

@@ -13,7 +13,7 @@ use super::check::TopSettings;
 use crate::ctxt::Ctxt;
 use crate::private::Private;
 use crate::rigid::check::CheckedBody;
-use crate::symbols::{FieldParameters, SymbolTokens};
+use crate::symbols::{FieldParameters, Lowering};
 
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
 /// mass relative to it, and the declared torques. The user torque is three input symbols,
@@ -39,26 +39,6 @@ fn sequence_tokens(s: AngleSequence) -> TokenStream {
     match s {
         AngleSequence::Zxz => quote!(#Private::AngleSequence::Zxz),
         AngleSequence::Zyx => quote!(#Private::AngleSequence::Zyx),
-    }
-}
-
-/// What every method is lowered with.
-struct Lowering<'a> {
-    cx: &'a Ctxt,
-    ident: &'a Ident,
-    /// The fields, and the user torque read from `__u`.
-    symbols: SymbolTokens,
-}
-
-impl Lowering<'_> {
-    /// Lowers `outputs` with the base map plus the method's own reads.
-    fn lower(&self, arena: &Arena, outputs: &[ExprId], reads: &[(ExprId, TokenStream)]) -> Emitted {
-        let extra = reads
-            .iter()
-            .filter_map(|(e, t)| Some((arena.as_symbol(*e)?, t.clone())));
-        self.symbols
-            .extended(extra)
-            .lower(self.cx, self.ident, arena, outputs)
     }
 }
 
@@ -92,18 +72,20 @@ impl ChartArms {
                 let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
             }
         });
-        let Emitted { lets, outputs } = low.lower(arena, &top.accelerations.accel, &state);
+        let Emitted { lets, outputs } = low.lower_reading(arena, &top.accelerations.accel, &state);
         self.accel
             .push(quote!(#seq_t => { #call #lets [#(#outputs),*] }));
         let energy = top.energy(arena);
-        let Emitted { lets, outputs } = low.lower(arena, &[energy], &state);
+        let Emitted { lets, outputs } = low.lower_reading(arena, &[energy], &state);
         self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
         // R and B read the angles from `q` rather than `state`.
         let angles: Vec<(ExprId, TokenStream)> = (0..3).map(|k| (c.q[k], quote!(q[#k]))).collect();
-        let Emitted { lets, outputs } = low.lower(arena, top.rotation.as_flattened(), &angles);
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rotation.as_flattened(), &angles);
         self.rotation
             .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
-        let Emitted { lets, outputs } = low.lower(arena, top.rate_matrix.as_flattened(), &angles);
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
         self.rate_matrix
             .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
     }
@@ -139,7 +121,7 @@ pub fn expand(
         }
         scene.user_torque = Some(u);
     }
-    let low = Lowering { cx, ident, symbols };
+    let low = Lowering::new(cx, ident, symbols);
     let methods = match methods(&low, arena, &scene, &user) {
         Ok(methods) => methods,
         Err(e) => {
@@ -266,11 +248,11 @@ fn declared_chart(
         }
     });
     let jac = top.jacobian(arena);
-    let Emitted { lets, outputs } = low.lower(arena, jac.as_flattened(), &reads);
+    let Emitted { lets, outputs } = low.lower_reading(arena, jac.as_flattened(), &reads);
     let rows = outputs.chunks(6).map(|row| quote!([#(#row),*]));
     let jacobian = quote!({ #call #lets [#(#rows),*] });
     let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
-    let Emitted { lets, outputs } = low.lower(arena, &conserved, &reads);
+    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
     let mut it = outputs.into_iter();
     let slots = top.conserved_momenta.iter().map(|m| match m {
         Some(_) => {
@@ -302,7 +284,7 @@ fn eulerian(
         }
     }
     let call = user.call(|f| quote!(let __u: #p::Vector3<f64> = #f(self, t, &__r, omega);));
-    let Emitted { lets, outputs } = low.lower(arena, &rhs, &reads);
+    let Emitted { lets, outputs } = low.lower_reading(arena, &rhs, &reads);
     Ok(quote!({
         let __r: #p::Matrix3<f64> = attitude.to_rotation_matrix().into_inner();
         #call
