@@ -71,7 +71,12 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<proc_macro2::TokenStream> {
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let body = rigid::check::check(&mut ck, &rigid_items);
-    let pivot = rigid::check::declares_pivot(&rigid_items);
+    // Without any #[rigid] the missing attribute is the error, not the missing pivot.
+    let pivot = if ast.rigid.is_empty() {
+        None
+    } else {
+        rigid::check::declares_pivot(&rigid_items)
+    };
     let settings = top::check::check(&mut ck, &top_items, pivot);
     let (body, settings) = (body?, settings?);
     let top = match &settings {
