@@ -16,8 +16,7 @@ use crate::rigid::check::CheckedBody;
 use crate::symbols::{FieldParameters, Lowering};
 
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
-/// mass relative to it, and the declared torques. The user torque is three input symbols,
-/// read from the value the user function returns.
+/// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
 fn scene(arena: &mut Arena, checked: &CheckedBody, settings: &TopSettings) -> TopScene {
     let props = &checked.body.props;
     let center: [ExprId; 3] =
@@ -114,6 +113,8 @@ pub fn expand(
     let mut scene = scene(arena, checked, settings);
     let user = UserCall(settings.torque.as_ref().map(ToTokens::to_token_stream));
     let mut symbols = parameters.tokens();
+    // The user torque enters the derivation as three input symbols, read from the value
+    // the user function returns.
     if user.0.is_some() {
         let u = [arena.input("u0"), arena.input("u1"), arena.input("u2")];
         for (i, &ui) in u.iter().enumerate() {
