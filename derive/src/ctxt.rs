@@ -1,38 +1,67 @@
 //! Collects every error of one expansion, so the user sees them all at once.
+//!
+//! Taken by `&self` (the errors sit in a `RefCell`), so every phase can hold it next to a
+//! mutable borrow of the arena. It must be consumed by [`Ctxt::check`]: dropping it with
+//! errors still inside would lose them, which only a bug in the macro itself can do.
 
+use std::cell::RefCell;
 use std::fmt::Display;
+use std::thread;
 
-use proc_macro2::TokenStream;
 use quote::ToTokens;
 
 /// The errors found so far.
-#[derive(Default)]
 pub struct Ctxt {
-    errors: Vec<syn::Error>,
+    /// `None` once [`Ctxt::check`] has taken them.
+    errors: RefCell<Option<Vec<syn::Error>>>,
 }
 
 impl Ctxt {
+    /// An empty context.
+    pub fn new() -> Ctxt {
+        Ctxt {
+            errors: RefCell::new(Some(Vec::new())),
+        }
+    }
+
     /// Records `msg` spanned on `tokens` (first to last token).
-    pub fn error(&mut self, tokens: impl ToTokens, msg: impl Display) {
-        self.errors
-            .push(syn::Error::new_spanned(tokens.into_token_stream(), msg));
+    pub fn error_spanned_by(&self, tokens: impl ToTokens, msg: impl Display) {
+        self.syn_error(syn::Error::new_spanned(tokens.into_token_stream(), msg));
     }
 
     /// Records a ready-made error (a syntax error from syn).
-    pub fn push(&mut self, e: syn::Error) {
-        self.errors.push(e);
+    pub fn syn_error(&self, e: syn::Error) {
+        if let Some(errors) = self.errors.borrow_mut().as_mut() {
+            errors.push(e);
+        }
     }
 
-    /// True if nothing went wrong.
-    pub fn is_ok(&self) -> bool {
-        self.errors.is_empty()
+    /// How many errors were recorded so far: a phase compares it before and after to know
+    /// whether its own part went wrong, whatever other phases found.
+    pub fn error_count(&self) -> usize {
+        self.errors.borrow().as_ref().map_or(0, Vec::len)
     }
 
-    /// Every error as `compile_error!` invocations.
-    pub fn to_compile_errors(&self) -> TokenStream {
-        self.errors
-            .iter()
-            .map(syn::Error::to_compile_error)
-            .collect()
+    /// Takes the errors: `Ok` if there were none.
+    ///
+    /// # Errors
+    /// Every recorded error, in the order found.
+    pub fn check(self) -> Result<(), Vec<syn::Error>> {
+        let errors = self.errors.borrow_mut().take().unwrap_or_default();
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(errors)
+        }
+    }
+}
+
+impl Drop for Ctxt {
+    fn drop(&mut self) {
+        // Reachable only if the macro forgot to call `check` (a bug caught by its own
+        // tests), never through user input; silent otherwise while already unwinding.
+        if !thread::panicking() && self.errors.borrow().is_some() {
+            panic!("internal error: the derive's errors were never checked");
+        }
     }
 }

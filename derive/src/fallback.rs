@@ -1,33 +1,19 @@
-//! What the derive emits when it found errors: the errors, plus a stub impl so that code
-//! using the trait does not add a cascade of "trait not implemented" errors.
+//! What the derive emits when it found errors: every error, plus a stub impl of each trait
+//! the struct asked for, so code using the traits does not add a cascade of "trait not
+//! implemented" errors.
 
 use proc_macro2::TokenStream;
-use quote::quote;
 use syn::DeriveInput;
 
-use crate::ctxt::Ctxt;
+use crate::keys;
+use crate::{rigid, top};
 
-/// The recorded errors and a stub `RigidBody` impl for `input`.
-pub fn expand(input: &DeriveInput, cx: &Ctxt) -> TokenStream {
-    let errors = cx.to_compile_errors();
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let p = quote!(::precess::__private);
-    let stub = quote!(::core::unimplemented!(
-        "the #[rigid] description has errors"
-    ));
-    quote! {
-        #errors
-        #[automatically_derived]
-        impl #impl_generics #p::RigidBody for #ident #ty_generics #where_clause {
-            fn description(&self) -> #p::Description<f64> { #stub }
-            fn mass(&self) -> f64 { #stub }
-            fn center_of_mass(&self) -> #p::Vector3<f64> { #stub }
-            fn reference_point(&self) -> #p::Vector3<f64> { #stub }
-            fn inertia(&self) -> #p::Matrix3<f64> { #stub }
-            fn inertia_cm(&self) -> #p::Matrix3<f64> { #stub }
-            fn principal(&self) -> #p::Principal { #stub }
-            fn euler_rhs(&self, _: &#p::Vector3<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
-        }
+/// The errors as `compile_error!` invocations and the stub impls for `input`.
+pub fn expand(input: &DeriveInput, errors: &[syn::Error]) -> TokenStream {
+    let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
+    out.extend(rigid::fallback::stub(input));
+    if input.attrs.iter().any(|a| a.path().is_ident(keys::TOP)) {
+        out.extend(top::fallback::stub(input));
     }
+    out
 }

@@ -3,24 +3,33 @@
 //! It reads the body described by `#[rigid(...)]` (see `docs/attributes.md`), computes its
 //! mass properties, principal frame and Euler's equations with precess-core's symbolic
 //! engine while it expands, and emits a `RigidBody` impl specialised to the body: constants
-//! for literal values, straight-line code in the fields for parametric ones.
+//! for literal values, straight-line code in the fields for parametric ones. With
+//! `#[top(...)]` it also derives the top's equations of motion and emits a `Top` impl.
 //!
-//! Phases, one file each: `ast` (borrowed view of the input), `attr` (syntax of the
-//! attribute), `check` (meaning and validation, every error collected in `ctxt`), `expand`
-//! (calls precess-core and quotes the result), `fallback` (errors plus a stub impl).
+//! Each attribute is a folder with the same phases (`rigid/`, `top/`: ast → attr → check →
+//! expand → fallback). Shared by all: `ctxt` (every error of one expansion, checked once),
+//! `keys` (the language's words), `symbols` (the one map from symbols to the Rust that reads
+//! them), `private` (the hidden path generated code names), `fallback` (errors plus stubs).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod ast;
-mod attr;
-mod check;
 mod ctxt;
-mod expand;
 mod fallback;
+mod keys;
+mod private;
+mod rigid;
+mod symbols;
 mod top;
 
+use precess_core::sym::Arena;
 use proc_macro::TokenStream;
+use quote::quote;
 use syn::{DeriveInput, parse_macro_input};
+
+use ctxt::Ctxt;
+use rigid::ast::Input;
+use rigid::check::Checker;
+use symbols::FieldParameters;
 
 /// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, and `Top`
 /// when a `#[top(...)]` attribute declares the body a top about its pivot.
@@ -29,10 +38,56 @@ use syn::{DeriveInput, parse_macro_input};
 #[proc_macro_derive(RigidBody, attributes(rigid, top))]
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
-    expand::derive(&input).into()
+    derive(&input).into()
+}
+
+/// The whole derive: the impls, or every error and stub impls.
+fn derive(input: &DeriveInput) -> proc_macro2::TokenStream {
+    let cx = Ctxt::new();
+    let expanded = expand(&cx, input);
+    match cx.check() {
+        Ok(()) => match expanded {
+            Some(tokens) => tokens,
+            // Every phase that gives up records why; reaching here is a bug of the macro.
+            None => fallback::expand(
+                input,
+                &[syn::Error::new_spanned(
+                    &input.ident,
+                    "internal error of the derive: it stopped without an error; please report this",
+                )],
+            ),
+        },
+        Err(errors) => fallback::expand(input, &errors),
+    }
+}
+
+/// Every phase of both attributes. Syntax and meaning are checked for both before either
+/// is expanded, so one pass reports the errors of `#[rigid]` and `#[top]` together.
+fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<proc_macro2::TokenStream> {
+    let ast = Input::from_syn(cx, input)?;
+    let rigid_items = rigid::attr::parse(cx, &ast.rigid);
+    let top_items = top::attr::parse(cx, &ast.top);
+    let mut arena = Arena::new();
+    let mut parameters = FieldParameters::default();
+    let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
+    let body = rigid::check::check(&mut ck, &rigid_items);
+    // Without any #[rigid] the missing attribute is the error, not the missing pivot.
+    let pivot = if ast.rigid.is_empty() {
+        None
+    } else {
+        rigid::check::declares_pivot(&rigid_items)
+    };
+    let settings = top::check::check(&mut ck, &top_items, pivot);
+    let (body, settings) = (body?, settings?);
+    let top = match &settings {
+        Some(settings) => {
+            top::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
+        }
+        None => proc_macro2::TokenStream::new(),
+    };
+    let rigid = rigid::expand::expand(cx, ast.ident, &mut arena, &parameters, &body)?;
+    Some(quote!(#rigid #top))
 }
 
 #[cfg(test)]
 mod tests;
-#[cfg(test)]
-mod top_tests;

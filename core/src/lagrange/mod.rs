@@ -9,11 +9,9 @@
 //!   forms.
 
 mod block_solve;
-mod emit;
 mod equations;
 mod error;
 
 pub use block_solve::{Accelerations, MAX_BLOCK};
-pub use emit::{TopEmit, emit_top};
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;

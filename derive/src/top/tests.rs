@@ -4,7 +4,7 @@ use quote::quote;
 
 fn expand(input: proc_macro2::TokenStream) -> String {
     let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-    crate::expand::derive(&input).to_string()
+    crate::derive(&input).to_string()
 }
 
 /// The text of the `Zxz` arm of `accel_in`.
@@ -68,4 +68,25 @@ fn top_errors_come_with_a_stub_impl() {
     });
     assert!(code.contains("compile_error"));
     assert!(code.contains("impl :: precess :: __private :: Top for NoPivot"));
+}
+
+#[test]
+fn top_without_rigid_reports_the_missing_attribute_once() {
+    let code = expand(quote! {
+        #[top(gravity = 9.81)]
+        struct Bare;
+    });
+    assert_eq!(code.matches("compile_error").count(), 1, "{code}");
+    assert!(code.contains("needs a `#[rigid(...)]`"), "{code}");
+}
+
+#[test]
+fn rigid_and_top_errors_come_together() {
+    let code = expand(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1, colour = 3.0), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, friction = 0.1)]
+        struct Spinner;
+    });
+    assert!(code.contains("unknown key `colour`"), "{code}");
+    assert!(code.contains("unknown key `friction`"), "{code}");
 }

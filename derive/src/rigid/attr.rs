@@ -1,12 +1,15 @@
 //! Syntax of the `#[rigid(...)]` list: parts `name(key = value, ...)` and `pivot = [..]`,
 //! parsed with syn into raw items whose meaning `check.rs` decides. (A custom syn parser
 //! rather than `parse_nested_meta`, so an unknown part or key is reported and skipped and
-//! every error in the list is collected.)
+//! every error in the list is collected.) `#[top]` lists are `key = value` items too.
 
 use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{Expr, Ident, Token, parenthesized};
+use syn::{Attribute, Expr, Ident, Token, parenthesized};
+
+use crate::ctxt::Ctxt;
+use crate::keys;
 
 /// One entry of the list.
 pub enum Item {
@@ -17,8 +20,8 @@ pub enum Item {
         /// Its keys in order.
         keys: Vec<KeyValue>,
     },
-    /// `key = value` at the top level (only `pivot` is meaningful).
-    Setting(KeyValue),
+    /// `key = value` at the top level (only [`keys::PIVOT`] is meaningful).
+    Setting(Box<KeyValue>),
 }
 
 /// `key = value`.
@@ -56,18 +59,53 @@ impl Parse for Item {
         } else if input.peek(Token![=]) {
             input.parse::<Token![=]>()?;
             let value = input.parse()?;
-            Ok(Item::Setting(KeyValue { key: name, value }))
+            Ok(Item::Setting(Box::new(KeyValue { key: name, value })))
         } else {
             Err(syn::Error::new(
                 name.span(),
-                format!("expected a part `{name}(key = value, ...)` or `pivot = [x, y, z]`"),
+                format!(
+                    "expected a part `{name}(key = value, ...)` or `{} = [x, y, z]`",
+                    keys::PIVOT
+                ),
             ))
         }
     }
 }
 
-/// The items of one `#[rigid(...)]` attribute.
-pub fn parse(attr: &syn::Attribute) -> syn::Result<Vec<Item>> {
-    let items = attr.parse_args_with(Punctuated::<Item, Token![,]>::parse_terminated)?;
-    Ok(items.into_iter().collect())
+/// The items of a list of attributes.
+pub struct Parsed<T> {
+    /// The items of every attribute that parsed, in order.
+    pub items: Vec<T>,
+    /// False if an attribute was not valid syntax (its error is recorded): what the items
+    /// leave out (a pivot, say) is then unknown rather than absent.
+    pub complete: bool,
+}
+
+/// The items of every `#[rigid(...)]` attribute.
+pub fn parse(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<Item> {
+    parse_each(cx, attrs, |a| {
+        a.parse_args_with(Punctuated::<Item, Token![,]>::parse_terminated)
+    })
+}
+
+/// Parses each attribute with `parse`, recording syntax errors and going on with the rest.
+pub fn parse_each<T>(
+    cx: &Ctxt,
+    attrs: &[&Attribute],
+    parse: impl Fn(&Attribute) -> syn::Result<Punctuated<T, Token![,]>>,
+) -> Parsed<T> {
+    let mut parsed = Parsed {
+        items: Vec::new(),
+        complete: true,
+    };
+    for attr in attrs {
+        match parse(attr) {
+            Ok(list) => parsed.items.extend(list),
+            Err(e) => {
+                cx.syn_error(e);
+                parsed.complete = false;
+            }
+        }
+    }
+    parsed
 }

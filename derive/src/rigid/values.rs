@@ -7,11 +7,11 @@ use precess_core::sym::{ExprId, SymError, parse_decimal};
 use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
-use super::Checker;
+use super::check::Checker;
 
 const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
 
-impl Checker<'_, '_> {
+impl Checker<'_> {
     /// `x`, `y` or `z`.
     pub(super) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
         // `-z` reverses the axis: it matters only for the cone, whose apex it points to.
@@ -24,7 +24,7 @@ impl Checker<'_, '_> {
             Some("y") => Some((Axis::Y, reversed)),
             Some("z") => Some((Axis::Z, reversed)),
             _ => {
-                self.cx.error(
+                self.cx.error_spanned_by(
                     e,
                     "expected `x`, `y` or `z` (or `-x`, `-y`, `-z`) for `axis`",
                 );
@@ -39,7 +39,8 @@ impl Checker<'_, '_> {
             Some("center") => Some(About::Center),
             Some("pivot") => Some(About::Pivot),
             _ => {
-                self.cx.error(e, "expected `center` or `pivot` for `about`");
+                self.cx
+                    .error_spanned_by(e, "expected `center` or `pivot` for `about`");
                 None
             }
         }
@@ -62,7 +63,7 @@ impl Checker<'_, '_> {
                 Some([r[0]?, r[1]?, r[2]?])
             }
             _ => {
-                self.cx.error(e, TENSOR);
+                self.cx.error_spanned_by(e, TENSOR);
                 None
             }
         }
@@ -77,7 +78,7 @@ impl Checker<'_, '_> {
             }
             _ => {
                 self.cx
-                    .error(e, "expected a vector of three values `[x, y, z]`");
+                    .error_spanned_by(e, "expected a vector of three values `[x, y, z]`");
                 None
             }
         }
@@ -104,13 +105,14 @@ impl Checker<'_, '_> {
                     BinOp::Div(_) => match self.arena.div(l, r) {
                         Ok(v) => Some(v),
                         Err(_) => {
-                            self.cx.error(&b.right, "division by a value that is zero");
+                            self.cx
+                                .error_spanned_by(&b.right, "division by a value that is zero");
                             None
                         }
                     },
                     _ => {
                         self.cx
-                            .error(b.op, format!("unsupported operator: {VALUES}"));
+                            .error_spanned_by(b.op, format!("unsupported operator: {VALUES}"));
                         None
                     }
                 }
@@ -125,16 +127,20 @@ impl Checker<'_, '_> {
                         .map(|s| s.ident.to_string())
                         .unwrap_or_default();
                     if ["INFINITY", "NEG_INFINITY", "NAN"].contains(&last.as_str()) {
-                        self.cx
-                            .error(e, format!("non-finite value: {VALUES}, and must be finite"));
+                        self.cx.error_spanned_by(
+                            e,
+                            format!("non-finite value: {VALUES}, and must be finite"),
+                        );
                     } else {
-                        self.cx.error(e, format!("unsupported value: {VALUES}"));
+                        self.cx
+                            .error_spanned_by(e, format!("unsupported value: {VALUES}"));
                     }
                     None
                 }
             },
             _ => {
-                self.cx.error(e, format!("unsupported value: {VALUES}"));
+                self.cx
+                    .error_spanned_by(e, format!("unsupported value: {VALUES}"));
                 None
             }
         }
@@ -146,13 +152,14 @@ impl Checker<'_, '_> {
             Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
             Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
             _ => {
-                self.cx.error(lit, format!("expected a number: {VALUES}"));
+                self.cx
+                    .error_spanned_by(lit, format!("expected a number: {VALUES}"));
                 return None;
             }
         };
         // Values are f64: another suffix would silently change the type the user wrote.
         if !suffix.is_empty() && suffix != "f64" {
-            self.cx.error(
+            self.cx.error_spanned_by(
                 lit,
                 format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
             );
@@ -161,24 +168,24 @@ impl Checker<'_, '_> {
         match parse_decimal(&digits) {
             // Exact, but the generated code and the checks use the f64 it rounds to.
             Ok(r) if !r.to_f64().is_finite() => {
-                self.cx.error(
+                self.cx.error_spanned_by(
                     lit,
                     format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"),
                 );
                 None
             }
             Ok(r) if r.to_f64() == 0.0 && !r.is_zero() => {
-                self.cx.error(lit, format!("`{digits}` underflows f64 to zero: the smallest positive f64 is about 4.9e-324"));
+                self.cx.error_spanned_by(lit, format!("`{digits}` underflows f64 to zero: the smallest positive f64 is about 4.9e-324"));
                 None
             }
             Ok(r) => Some(self.arena.constant(r)),
             Err(SymError::LiteralOutOfRange { .. }) => {
-                self.cx.error(lit, "literal out of range: values have at most 38 significant digits and lie within f64's range (about 4.9e-324 to 1.8e308)");
+                self.cx.error_spanned_by(lit, "literal out of range: values have at most 38 significant digits and lie within f64's range (about 4.9e-324 to 1.8e308)");
                 None
             }
             Err(_) => {
                 self.cx
-                    .error(lit, format!("expected a decimal number: {VALUES}"));
+                    .error_spanned_by(lit, format!("expected a decimal number: {VALUES}"));
                 None
             }
         }
@@ -200,7 +207,7 @@ impl Checker<'_, '_> {
             } else {
                 format!("its f64 fields are {}", available.join(", "))
             };
-            self.cx.error(
+            self.cx.error_spanned_by(
                 ident,
                 format!(
                     "no field `{name}` in `{}`: {VALUES}; {list}",
@@ -210,17 +217,22 @@ impl Checker<'_, '_> {
             return None;
         };
         if !field.is_f64() {
-            let ty = field.ty.to_token_stream().to_string();
-            self.cx.error(
+            // As written: token streams print paths as `a :: b`.
+            let ty = field.ty.to_token_stream().to_string().replace(" :: ", "::");
+            let ty = ty
+                .strip_prefix(":: ")
+                .map_or(ty.clone(), |t| format!("::{t}"));
+            self.cx.error_spanned_by(
                 ident,
                 format!("field `{name}` has type `{ty}`: only f64 fields can be used as values"),
             );
             return None;
         }
-        if !self.fields.iter().any(|f| f == ident) {
-            self.fields.push(ident.clone());
+        let parameter = self.arena.parameter(&name);
+        if let Some(symbol) = self.arena.as_symbol(parameter) {
+            self.parameters.insert(symbol, ident);
         }
-        Some(self.arena.parameter(&name))
+        Some(parameter)
     }
 }
 

@@ -1,137 +1,90 @@
-//! Expansion: the checked body's expressions lowered by precess-core's code generator and
-//! quoted into a `RigidBody` impl. Constants become literals; a field becomes `self.field`;
-//! generated code names everything through `::precess::__private`.
+//! Expansion of `#[rigid]`: the checked body's expressions lowered by precess-core's code
+//! generator and quoted into a `RigidBody` impl. Constants become literals; a field becomes
+//! `self.field`; generated code names everything through the hidden path.
 
-use precess_core::body::{Axis, Description, Frame, Shape};
-use precess_core::codegen::{Emitted, Program, f64_literal};
-use precess_core::sym::{ExprId, SymbolId};
+use precess_core::body::{About, Axis, Description, Frame, Shape};
+use precess_core::codegen::{Emitted, f64_literal};
+use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::{DeriveInput, Ident};
+use syn::Ident;
 
-use crate::ast::Input;
-use crate::check::{self, Checked};
+use super::check::CheckedBody;
 use crate::ctxt::Ctxt;
-use crate::fallback;
-use crate::top;
+use crate::private::Private;
+use crate::symbols::{FieldParameters, Lowering};
 
-/// The whole derive: the impl, or the errors and a stub impl.
-pub fn derive(input: &DeriveInput) -> TokenStream {
-    let mut cx = Ctxt::default();
-    let expanded = Input::from_syn(&mut cx, input).and_then(|ast| {
-        let mut checked = check::check(&mut cx, &ast)?;
-        let spec = top::check(&mut cx, &ast, &mut checked)?;
-        let top = match spec {
-            Some(spec) => top::expand(&mut cx, ast.ident, &mut checked, spec)?,
-            None => TokenStream::new(),
-        };
-        let body = expand(&mut cx, ast.ident, checked)?;
-        Some(quote!(#body #top))
-    });
-    match expanded {
-        Some(tokens) if cx.is_ok() => tokens,
-        _ => {
-            let mut out = fallback::expand(input, &cx);
-            if input.attrs.iter().any(|a| a.path().is_ident("top")) {
-                out.extend(top::fallback(&input.ident));
-            }
-            out
-        }
-    }
-}
-
-/// Maps the arena's symbols to Rust expressions.
-struct Inputs {
-    fields: Vec<(SymbolId, Ident)>,
-    omega: [Option<SymbolId>; 3],
-    torque: [Option<SymbolId>; 3],
-}
-
-impl Inputs {
-    fn tokens(&self, s: SymbolId) -> TokenStream {
-        if let Some((_, f)) = self.fields.iter().find(|(id, _)| *id == s) {
-            return quote!(self.#f);
-        }
-        if let Some(i) = self.omega.iter().position(|&o| o == Some(s)) {
-            return quote!(omega[#i]);
-        }
-        if let Some(i) = self.torque.iter().position(|&t| t == Some(s)) {
-            return quote!(torque[#i]);
-        }
-        quote!(f64::NAN)
-    }
-}
-
-/// Lowers `outputs` and emits them. A constant whose exact value did not fold to one
-/// rational (an overflow kept it as a product) is rounded to one literal first, so a body of
-/// literals never computes at run time.
-fn emit(c: &mut Checked, inputs: &Inputs, outputs: &[ExprId]) -> Emitted {
-    let a = &mut c.arena;
-    let folded: Vec<ExprId> = outputs
+/// A constant whose exact value did not fold to one rational (an overflow kept it as a
+/// product) is rounded to one literal, so a body of literals never computes at run time.
+fn fold_constants(arena: &mut Arena, outputs: &[ExprId]) -> Vec<ExprId> {
+    outputs
         .iter()
         .map(|&e| {
-            if a.as_rational(e).is_some() || !a.free_symbols(e).is_empty() {
+            if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
                 return e;
             }
-            let v = a.eval(e, &[]);
-            a.float(v).unwrap_or(e)
+            let v = arena.eval(e, &[]);
+            arena.float(v).unwrap_or(e)
         })
-        .collect();
-    Program::lower(&c.arena, &folded).to_tokens(&mut |s| inputs.tokens(s))
+        .collect()
+}
+
+/// Lowers `outputs` with constants folded.
+fn emit(low: &Lowering, arena: &mut Arena, outputs: &[ExprId]) -> Emitted {
+    let folded = fold_constants(arena, outputs);
+    low.lower(arena, &folded)
 }
 
 /// A method body: the `let`s, then `build` applied to the output expressions.
-fn body(
-    c: &mut Checked,
-    inputs: &Inputs,
+fn method_body(
+    low: &Lowering,
+    arena: &mut Arena,
     outputs: &[ExprId],
     build: impl FnOnce(&[TokenStream]) -> TokenStream,
 ) -> TokenStream {
-    let Emitted { lets, outputs } = emit(c, inputs, outputs);
+    let Emitted { lets, outputs } = emit(low, arena, outputs);
     let out = build(&outputs);
     quote! { #lets #out }
 }
 
 fn vector(o: &[TokenStream]) -> TokenStream {
-    quote!(::precess::__private::Vector3::new(#(#o),*))
+    quote!(#Private::Vector3::new(#(#o),*))
 }
 
 fn matrix(o: &[TokenStream]) -> TokenStream {
-    quote!(::precess::__private::Matrix3::new(#(#o),*))
+    quote!(#Private::Matrix3::new(#(#o),*))
 }
 
-fn flat(t: &[[ExprId; 3]; 3]) -> Vec<ExprId> {
-    t.iter().flatten().copied().collect()
-}
-
-fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
-    let p = quote!(::precess::__private);
-    let fields = c
-        .fields
-        .iter()
-        .filter_map(|f| {
-            c.arena
-                .find_parameter(&f.to_string())
-                .map(|s| (s, f.clone()))
-        })
-        .collect();
-    let mut sym = |name: &str| c.arena.input(name);
-    let omega_e = [sym("omega_1"), sym("omega_2"), sym("omega_3")];
-    let torque_e = [sym("G_1"), sym("G_2"), sym("G_3")];
-    let inputs = Inputs {
-        fields,
-        omega: omega_e.map(|x| c.arena.as_symbol(x)),
-        torque: torque_e.map(|x| c.arena.as_symbol(x)),
-    };
-    let props = c.body.props.clone();
-    let mass = body(&mut c, &inputs, &[props.mass], |o| o[0].clone());
-    let center = body(&mut c, &inputs, &props.center, vector);
-    let reference = body(&mut c, &inputs, &props.reference, vector);
-    let inertia = body(&mut c, &inputs, &flat(&props.inertia), matrix);
-    let inertia_cm = body(&mut c, &inputs, &flat(&props.inertia_cm), matrix);
-    let frame = c.body.frame.clone();
-    let principal = match &frame {
-        Frame::Diagonal(m) => body(&mut c, &inputs, m, |o| {
+/// `impl RigidBody for …`, or `None` after recording why Euler's equations could not be
+/// formed.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &mut Arena,
+    parameters: &FieldParameters,
+    checked: &CheckedBody,
+) -> Option<TokenStream> {
+    let p = Private;
+    let omega_in = [
+        arena.input("omega_1"),
+        arena.input("omega_2"),
+        arena.input("omega_3"),
+    ];
+    let torque_in = [arena.input("G_1"), arena.input("G_2"), arena.input("G_3")];
+    let mut symbols = parameters.tokens();
+    for (i, (&w, &g)) in omega_in.iter().zip(&torque_in).enumerate() {
+        symbols.insert_expr(arena, w, quote!(omega[#i]));
+        symbols.insert_expr(arena, g, quote!(torque[#i]));
+    }
+    let low = Lowering::new(cx, ident, symbols);
+    let props = &checked.body.props;
+    let mass = method_body(&low, arena, &[props.mass], |o| quote!(#(#o)*));
+    let center = method_body(&low, arena, &props.center, vector);
+    let reference = method_body(&low, arena, &props.reference, vector);
+    let inertia = method_body(&low, arena, props.inertia.as_flattened(), matrix);
+    let inertia_cm = method_body(&low, arena, props.inertia_cm.as_flattened(), matrix);
+    let principal = match &checked.body.frame {
+        Frame::Diagonal(m) => method_body(&low, arena, m, |o| {
             let v = vector(o);
             quote!(#p::Principal::diagonal(#v))
         }),
@@ -147,19 +100,19 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
         }
         Frame::DecomposedAtRunTime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
     };
-    let rhs = match c.body.euler_rhs(&mut c.arena, omega_e, torque_e) {
-        Ok(Some(rhs)) => body(&mut c, &inputs, &rhs, vector),
+    let rhs = match checked.body.euler_rhs(arena, omega_in, torque_in) {
+        Ok(Some(rhs)) => method_body(&low, arena, &rhs, vector),
         Ok(None) => quote! {
             let principal = #p::RigidBody::principal(self);
             #p::euler_rhs_principal(&principal.moments, omega, torque)
         },
         Err(e) => {
-            cx.error(ident, format!("cannot form Euler's equations: {e}"));
+            cx.error_spanned_by(ident, format!("cannot form Euler's equations: {e}"));
             return None;
         }
     };
-    let d = description(&mut c, &inputs);
-    let validate = if c.fields.is_empty() {
+    let d = description(&low, arena, &checked.description);
+    let validate = if parameters.is_empty() {
         // Literal bodies were checked while expanding.
         quote! {
             fn validate(&self) -> ::core::result::Result<(), #p::BodyError> {
@@ -195,15 +148,19 @@ fn expand(cx: &mut Ctxt, ident: &Ident, mut c: Checked) -> Option<TokenStream> {
 }
 
 /// The description as a run-time value, each value an expression of the fields.
-fn description(c: &mut Checked, inputs: &Inputs) -> TokenStream {
-    let p = quote!(::precess::__private);
+fn description(
+    low: &Lowering,
+    arena: &mut Arena,
+    description: &Description<ExprId>,
+) -> TokenStream {
+    let p = Private;
     let mut all = Vec::new();
-    let indexed: Description<usize> = c.description.map(&mut |&e| {
+    let indexed: Description<usize> = description.map(&mut |&e| {
         all.push(e);
         all.len() - 1
     });
-    let Emitted { lets, outputs } = emit(c, inputs, &all);
-    let d = indexed.map(&mut |&i| outputs[i].clone());
+    let Emitted { lets, outputs } = emit(low, arena, &all);
+    let d = indexed.map(&mut |&i| outputs.get(i).cloned().unwrap_or_default());
     let parts = d.parts.iter().map(|part| {
         let shape = shape(&part.shape);
         let at = &part.at;
@@ -221,14 +178,14 @@ fn description(c: &mut Checked, inputs: &Inputs) -> TokenStream {
 
 fn axis(a: Axis) -> TokenStream {
     match a {
-        Axis::X => quote!(::precess::__private::Axis::X),
-        Axis::Y => quote!(::precess::__private::Axis::Y),
-        Axis::Z => quote!(::precess::__private::Axis::Z),
+        Axis::X => quote!(#Private::Axis::X),
+        Axis::Y => quote!(#Private::Axis::Y),
+        Axis::Z => quote!(#Private::Axis::Z),
     }
 }
 
 fn shape(s: &Shape<TokenStream>) -> TokenStream {
-    let p = quote!(::precess::__private::Shape);
+    let p = quote!(#Private::Shape);
     match s {
         Shape::Particle { mass } => quote!(#p::Particle { mass: #mass }),
         Shape::Sphere { mass, radius } => quote!(#p::Sphere { mass: #mass, radius: #radius }),
@@ -297,8 +254,8 @@ fn shape(s: &Shape<TokenStream>) -> TokenStream {
         } => {
             let rows = inertia.iter().map(|r| quote!([#(#r),*]));
             let about = match about {
-                precess_core::body::About::Center => quote!(::precess::__private::About::Center),
-                precess_core::body::About::Pivot => quote!(::precess::__private::About::Pivot),
+                About::Center => quote!(#Private::About::Center),
+                About::Pivot => quote!(#Private::About::Pivot),
             };
             quote!(#p::Explicit { mass: #mass, inertia: [#(#rows),*], about: #about })
         }

@@ -1,9 +1,11 @@
-//! A borrowed view of the derive input: the struct, its fields and its `#[rigid]`
-//! attributes, keeping the original tokens for spans.
+//! A borrowed view of the derive input: the struct, its fields and its `#[rigid]` and
+//! `#[top]` attributes, keeping the original tokens for spans.
 
+use quote::ToTokens;
 use syn::{Attribute, Data, DeriveInput, Fields, Ident, Type};
 
 use crate::ctxt::Ctxt;
+use crate::keys;
 
 /// The struct the derive applies to.
 pub struct Input<'a> {
@@ -26,9 +28,31 @@ pub struct Field<'a> {
 }
 
 impl Field<'_> {
-    /// True if the type is written `f64`.
+    /// True if the type is written `f64` or as the primitive's path
+    /// (`core::primitive::f64`, `::std::primitive::f64`, …).
     pub fn is_f64(&self) -> bool {
-        matches!(self.ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"))
+        let Type::Path(p) = self.ty else {
+            return false;
+        };
+        let segments: Vec<String> = p
+            .path
+            .segments
+            .iter()
+            .filter(|s| s.arguments.is_none())
+            .map(|s| s.ident.to_string())
+            .collect();
+        if p.qself.is_some() || segments.len() != p.path.segments.len() {
+            return false;
+        }
+        // A bare `f64` cannot be a path from the crate root, and the primitive module lives
+        // only in `core` and `std`: any other `f64` is a user's type of that name.
+        match segments.as_slice() {
+            [f] => p.path.leading_colon.is_none() && f == "f64",
+            [krate, module, f] => {
+                (krate == "core" || krate == "std") && module == "primitive" && f == "f64"
+            }
+            _ => false,
+        }
     }
 }
 
@@ -37,12 +61,20 @@ const SUPPORTED: &str =
 
 impl<'a> Input<'a> {
     /// The view of `input`, or `None` after recording why the derive does not apply.
-    pub fn from_syn(cx: &mut Ctxt, input: &'a DeriveInput) -> Option<Input<'a>> {
+    pub fn from_syn(cx: &Ctxt, input: &'a DeriveInput) -> Option<Input<'a>> {
         // A generic struct has no single set of field values to describe a body with.
-        if !input.generics.params.is_empty() || input.generics.where_clause.is_some() {
-            cx.error(
+        if !input.generics.params.is_empty() {
+            cx.error_spanned_by(
                 &input.generics,
                 format!("{SUPPORTED}; generic structs are not supported"),
+            );
+            return None;
+        }
+        // Spanned on the clause itself: `Generics` without parameters prints no tokens.
+        if let Some(clause) = &input.generics.where_clause {
+            cx.error_spanned_by(
+                clause,
+                format!("{SUPPORTED}; where clauses are not supported: remove it"),
             );
             return None;
         }
@@ -60,7 +92,7 @@ impl<'a> Input<'a> {
                     .collect(),
                 Fields::Unit => Vec::new(),
                 Fields::Unnamed(unnamed) => {
-                    cx.error(
+                    cx.error_spanned_by(
                         unnamed,
                         format!("{SUPPORTED}; tuple structs are not supported: name the fields"),
                     );
@@ -68,14 +100,14 @@ impl<'a> Input<'a> {
                 }
             },
             Data::Enum(e) => {
-                cx.error(
+                cx.error_spanned_by(
                     e.enum_token,
                     format!("{SUPPORTED}; enums are not supported"),
                 );
                 return None;
             }
             Data::Union(u) => {
-                cx.error(
+                cx.error_spanned_by(
                     u.union_token,
                     format!("{SUPPORTED}; unions are not supported"),
                 );
@@ -92,13 +124,18 @@ impl<'a> Input<'a> {
         Some(Input {
             ident: &input.ident,
             fields,
-            rigid: named("rigid"),
-            top: named("top"),
+            rigid: named(keys::RIGID),
+            top: named(keys::TOP),
         })
     }
 
     /// The field named `name`.
     pub fn field(&self, name: &Ident) -> Option<&Field<'a>> {
         self.fields.iter().find(|f| f.ident == name)
+    }
+
+    /// Every `#[rigid]` attribute's tokens, to span an error on the whole description.
+    pub fn rigid_tokens(&self) -> proc_macro2::TokenStream {
+        self.rigid.iter().map(|a| a.to_token_stream()).collect()
     }
 }

@@ -1,0 +1,263 @@
+//! The words of the attribute language, each written once: the attribute names, the parts
+//! with their keys, and the `#[top]` keys. The checkers match against these constants and
+//! every error message lists them from here, so a new part or key is one edit.
+
+/// `#[rigid(...)]`: the body's parts and pivot.
+pub const RIGID: &str = "rigid";
+/// `#[top(...)]`: the body as a top about its pivot.
+pub const TOP: &str = "top";
+
+/// The mass of a part.
+pub const MASS: &str = "mass";
+/// A radius (sphere, shell, cylinder, disk, ring, cone).
+pub const RADIUS: &str = "radius";
+/// A full length, end to end (cylinder, tube, rod).
+pub const LENGTH: &str = "length";
+/// The height of a cone, base to apex.
+pub const HEIGHT: &str = "height";
+/// The inner radius of a tube.
+pub const INNER: &str = "inner";
+/// The outer radius of a tube.
+pub const OUTER: &str = "outer";
+/// The edges of a box, `[a, b, c]`.
+pub const SIZE: &str = "size";
+/// The semi-axes of an ellipsoid, `[a, b, c]`.
+pub const SEMI_AXES: &str = "semi_axes";
+/// The inertia tensor of an explicit body.
+pub const INERTIA: &str = "inertia";
+/// Where a part sits.
+pub const AT: &str = "at";
+/// The explicit body's alias of [`AT`]: its centre of mass.
+pub const CENTER: &str = "center";
+/// The symmetry axis of an axisymmetric part.
+pub const AXIS: &str = "axis";
+/// The point an explicit tensor is taken about.
+pub const ABOUT: &str = "about";
+/// The body's fixed point, a top-level key of `#[rigid]`.
+pub const PIVOT: &str = "pivot";
+
+/// The kinds of part, one per row of [`PARTS`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum PartKind {
+    /// A point mass.
+    Particle,
+    /// A solid sphere.
+    Sphere,
+    /// A thin spherical shell.
+    Shell,
+    /// A solid box.
+    Cuboid,
+    /// A solid cylinder.
+    Cylinder,
+    /// A thick-walled tube.
+    Tube,
+    /// A thin disk.
+    Disk,
+    /// A thin ring.
+    Ring,
+    /// A thin rod.
+    Rod,
+    /// A solid cone.
+    Cone,
+    /// A solid ellipsoid.
+    Ellipsoid,
+    /// A body given by its mass, centre and tensor.
+    Explicit,
+}
+
+/// One part of the language: its name, an alias, and its keys.
+pub struct PartKeys {
+    /// What it is.
+    pub kind: PartKind,
+    /// Its name in `#[rigid]` (and in precess-core's errors).
+    pub name: &'static str,
+    /// Another name accepted for it.
+    pub alias: Option<&'static str>,
+    /// Keys it must have.
+    pub required: &'static [&'static str],
+    /// Keys it may have.
+    pub optional: &'static [&'static str],
+}
+
+impl PartKeys {
+    /// Every key it accepts, required first.
+    pub fn allowed(&self) -> impl Iterator<Item = &'static str> {
+        self.required.iter().chain(self.optional).copied()
+    }
+
+    /// The key `written` stands for in this part (`center` is the explicit body's `at`).
+    pub fn key(&self, written: &str) -> Option<&'static str> {
+        let written = if self.kind == PartKind::Explicit && written == CENTER {
+            AT
+        } else {
+            written
+        };
+        self.allowed().find(|&k| k == written)
+    }
+}
+
+const PLACED: &[&str] = &[AT];
+const PLACED_ON_AXIS: &[&str] = &[AT, AXIS];
+
+/// Every part, in the order the docs list them.
+pub const PARTS: &[PartKeys] = &[
+    part(PartKind::Particle, "particle", &[MASS], PLACED),
+    part(PartKind::Sphere, "sphere", &[MASS, RADIUS], PLACED),
+    part(PartKind::Shell, "shell", &[MASS, RADIUS], PLACED),
+    PartKeys {
+        alias: Some("box"),
+        ..part(PartKind::Cuboid, "cuboid", &[MASS, SIZE], PLACED)
+    },
+    part(
+        PartKind::Cylinder,
+        "cylinder",
+        &[MASS, RADIUS, LENGTH],
+        PLACED_ON_AXIS,
+    ),
+    part(
+        PartKind::Tube,
+        "tube",
+        &[MASS, INNER, OUTER, LENGTH],
+        PLACED_ON_AXIS,
+    ),
+    part(PartKind::Disk, "disk", &[MASS, RADIUS], PLACED_ON_AXIS),
+    part(PartKind::Ring, "ring", &[MASS, RADIUS], PLACED_ON_AXIS),
+    part(PartKind::Rod, "rod", &[MASS, LENGTH], PLACED_ON_AXIS),
+    part(
+        PartKind::Cone,
+        "cone",
+        &[MASS, RADIUS, HEIGHT],
+        PLACED_ON_AXIS,
+    ),
+    part(PartKind::Ellipsoid, "ellipsoid", &[MASS, SEMI_AXES], PLACED),
+    part(PartKind::Explicit, "body", &[MASS, INERTIA], &[AT, ABOUT]),
+];
+
+const fn part(
+    kind: PartKind,
+    name: &'static str,
+    required: &'static [&'static str],
+    optional: &'static [&'static str],
+) -> PartKeys {
+    PartKeys {
+        kind,
+        name,
+        alias: None,
+        required,
+        optional,
+    }
+}
+
+/// The part called `written`, by its name or its alias.
+pub fn find_part(written: &str) -> Option<&'static PartKeys> {
+    PARTS
+        .iter()
+        .find(|p| p.name == written || p.alias == Some(written))
+}
+
+/// The parts as the messages list them: `particle, sphere, …, cuboid (or box), …`.
+pub fn part_list() -> String {
+    let names: Vec<String> = PARTS
+        .iter()
+        .map(|p| match p.alias {
+            Some(alias) => format!("{} (or {alias})", p.name),
+            None => p.name.to_owned(),
+        })
+        .collect();
+    names.join(", ")
+}
+
+/// g along −z in space.
+pub const GRAVITY: &str = "gravity";
+/// A constant torque fixed in the body.
+pub const BODY_TORQUE: &str = "body_torque";
+/// A constant torque fixed in space.
+pub const SPACE_TORQUE: &str = "space_torque";
+/// Linear damping −c ω.
+pub const DAMPING: &str = "damping";
+/// A user torque function.
+pub const TORQUE: &str = "torque";
+/// The angle sequence of the generalised coordinates.
+pub const ANGLES: &str = "angles";
+
+/// The keys of `#[top(...)]`, in the order the docs list them.
+pub const TOP_KEYS: &[&str] = &[GRAVITY, BODY_TORQUE, SPACE_TORQUE, DAMPING, TORQUE, ANGLES];
+
+#[cfg(test)]
+mod tests {
+    use precess_core::body::{Axis, Shape};
+
+    use super::*;
+
+    /// A shape of `kind` with the number 1 everywhere.
+    fn shape(kind: PartKind) -> Shape<f64> {
+        let (mass, v, axis) = (1.0, [1.0; 3], Axis::Z);
+        match kind {
+            PartKind::Particle => Shape::Particle { mass },
+            PartKind::Sphere => Shape::Sphere { mass, radius: 1.0 },
+            PartKind::Shell => Shape::Shell { mass, radius: 1.0 },
+            PartKind::Cuboid => Shape::Cuboid { mass, size: v },
+            PartKind::Cylinder => Shape::Cylinder {
+                mass,
+                radius: 1.0,
+                length: 1.0,
+                axis,
+            },
+            PartKind::Tube => Shape::Tube {
+                mass,
+                inner: 0.5,
+                outer: 1.0,
+                length: 1.0,
+                axis,
+            },
+            PartKind::Disk => Shape::Disk {
+                mass,
+                radius: 1.0,
+                axis,
+            },
+            PartKind::Ring => Shape::Ring {
+                mass,
+                radius: 1.0,
+                axis,
+            },
+            PartKind::Rod => Shape::Rod {
+                mass,
+                length: 1.0,
+                axis,
+            },
+            PartKind::Cone => Shape::Cone {
+                mass,
+                radius: 1.0,
+                height: 1.0,
+                axis,
+                reversed: false,
+            },
+            PartKind::Ellipsoid => Shape::Ellipsoid { mass, semi_axes: v },
+            PartKind::Explicit => Shape::Explicit {
+                mass,
+                inertia: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+                about: precess_core::body::About::Center,
+            },
+        }
+    }
+
+    /// precess-core names parts and keys in its errors; the checker spans those errors by
+    /// looking the names up here, so both must spell them alike.
+    #[test]
+    fn core_names_every_part_and_key_as_the_table_does() {
+        for p in PARTS {
+            let s = shape(p.kind);
+            assert_eq!(s.kind(), p.name);
+            for (key, _) in s.dimensions() {
+                assert!(p.required.contains(&key), "{} lacks {key}", p.name);
+            }
+        }
+        assert_eq!(
+            part_list(),
+            "particle, sphere, shell, cuboid (or box), cylinder, tube, disk, ring, rod, cone, ellipsoid, body"
+        );
+        assert_eq!(find_part("box").map(|p| p.kind), Some(PartKind::Cuboid));
+        let body = find_part("body").map(|p| p.key(CENTER));
+        assert_eq!(body, Some(Some(AT)));
+    }
+}

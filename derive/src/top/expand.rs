@@ -1,0 +1,298 @@
+//! Expansion of `#[top]`: the scene derived by precess-core in both angle charts (ZXZ and
+//! ZYX, so a simulation can switch at gimbal lock) and in Eulerian form, each method one
+//! straight-line block per chart, quoted into `impl Top for …`.
+
+use precess_core::codegen::Emitted;
+use precess_core::lagrange::LagrangeError;
+use precess_core::rigid::AngleSequence;
+use precess_core::sym::mat3::Mat3;
+use precess_core::sym::{Arena, ExprId};
+use precess_core::top::{TopDerivation, TopScene};
+use proc_macro2::TokenStream;
+use quote::{ToTokens, quote};
+use syn::Ident;
+
+use super::check::TopSettings;
+use crate::ctxt::Ctxt;
+use crate::private::Private;
+use crate::rigid::check::CheckedBody;
+use crate::symbols::{FieldParameters, Lowering};
+
+/// The scene of the checked body and settings: inertia about the pivot, the centre of
+/// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
+fn scene(arena: &mut Arena, checked: &CheckedBody, settings: &TopSettings) -> TopScene {
+    let props = &checked.body.props;
+    let center: [ExprId; 3] =
+        std::array::from_fn(|k| arena.sub(props.center[k], props.reference[k]));
+    TopScene {
+        sequence: settings.angles,
+        inertia: props.inertia,
+        mass: props.mass,
+        center,
+        gravity: settings.gravity,
+        body_torque: settings.body_torque,
+        space_torque: settings.space_torque,
+        damping: settings.damping,
+        user_torque: None,
+    }
+}
+
+fn sequence_tokens(s: AngleSequence) -> TokenStream {
+    match s {
+        AngleSequence::Zxz => quote!(#Private::AngleSequence::Zxz),
+        AngleSequence::Zyx => quote!(#Private::AngleSequence::Zyx),
+    }
+}
+
+/// The arms of the chart-dispatched methods, one per angle sequence.
+#[derive(Default)]
+struct ChartArms {
+    accel: Vec<TokenStream>,
+    rotation: Vec<TokenStream>,
+    rate_matrix: Vec<TokenStream>,
+    energy: Vec<TokenStream>,
+}
+
+impl ChartArms {
+    /// Adds the arms of the chart `top` was derived in.
+    fn push(&mut self, low: &Lowering, arena: &mut Arena, top: &TopDerivation, user: &UserCall) {
+        let p = Private;
+        let c = top.coords().clone();
+        let seq_t = sequence_tokens(top.sequence);
+        let state: Vec<(ExprId, TokenStream)> = (0..3)
+            .flat_map(|k| {
+                let j = k + 3;
+                [(c.q[k], quote!(state[#k])), (c.rates[k], quote!(state[#j]))]
+            })
+            .collect();
+        // The user torque is called with R and ω computed by the chart's own methods.
+        let call = user.call(|f| {
+            quote! {
+                let __q = [state[0], state[1], state[2]];
+                let __r = #p::Top::rotation_in(self, #seq_t, &__q);
+                let __w = #p::Top::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
+                let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
+            }
+        });
+        let Emitted { lets, outputs } = low.lower_reading(arena, &top.accelerations.accel, &state);
+        self.accel
+            .push(quote!(#seq_t => { #call #lets [#(#outputs),*] }));
+        let energy = top.energy(arena);
+        let Emitted { lets, outputs } = low.lower_reading(arena, &[energy], &state);
+        self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
+        // R and B read the angles from `q` rather than `state`.
+        let angles: Vec<(ExprId, TokenStream)> = (0..3).map(|k| (c.q[k], quote!(q[#k]))).collect();
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rotation.as_flattened(), &angles);
+        self.rotation
+            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
+        self.rate_matrix
+            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+    }
+}
+
+/// The declared user torque function, if any: how each method calls it into `__u`.
+struct UserCall(Option<TokenStream>);
+
+impl UserCall {
+    /// The statements calling the function (built by `call` from its path), or nothing.
+    fn call(&self, call: impl FnOnce(&TokenStream) -> TokenStream) -> TokenStream {
+        self.0.as_ref().map(call).unwrap_or_default()
+    }
+}
+
+/// `impl Top for …`, or `None` after recording why the equations could not be derived.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &mut Arena,
+    parameters: &FieldParameters,
+    checked: &CheckedBody,
+    settings: &TopSettings,
+) -> Option<TokenStream> {
+    let p = Private;
+    let mut scene = scene(arena, checked, settings);
+    let user = UserCall(settings.torque.as_ref().map(ToTokens::to_token_stream));
+    let mut symbols = parameters.tokens();
+    // The user torque enters the derivation as three input symbols, read from the value
+    // the user function returns.
+    if user.0.is_some() {
+        let u = [arena.input("u0"), arena.input("u1"), arena.input("u2")];
+        for (i, &ui) in u.iter().enumerate() {
+            symbols.insert_expr(arena, ui, quote!(__u[#i]));
+        }
+        scene.user_torque = Some(u);
+    }
+    let low = Lowering::new(cx, ident, symbols);
+    let methods = match methods(&low, arena, &scene, &user) {
+        Ok(methods) => methods,
+        Err(e) => {
+            cx.error_spanned_by(
+                ident,
+                format!("cannot derive the top's equations of motion: {e}"),
+            );
+            return None;
+        }
+    };
+    let declared_t = sequence_tokens(scene.sequence);
+    let Methods {
+        arms:
+            ChartArms {
+                accel,
+                rotation,
+                rate_matrix,
+                energy,
+            },
+        jacobian,
+        momenta,
+        eulerian,
+    } = methods;
+    Some(quote! {
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::Top for #ident {
+            const SEQUENCE: #p::AngleSequence = #declared_t;
+
+            #[inline]
+            fn accel_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
+                match seq { #(#accel)* }
+            }
+
+            #[inline]
+            fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+                match seq { #(#rotation)* }
+            }
+
+            #[inline]
+            fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+                match seq { #(#rate_matrix)* }
+            }
+
+            #[inline]
+            fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; 6]) -> f64 {
+                match seq { #(#energy)* }
+            }
+
+            fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] #jacobian
+
+            fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [::core::option::Option<f64>; 3] #momenta
+
+            #[inline]
+            fn eulerian_rhs(
+                &self,
+                t: f64,
+                attitude: &#p::UnitQuaternion<f64>,
+                omega: &#p::Vector3<f64>,
+            ) -> #p::Vector3<f64> #eulerian
+        }
+    })
+}
+
+/// The bodies of every method of `impl Top`.
+struct Methods {
+    arms: ChartArms,
+    jacobian: TokenStream,
+    momenta: TokenStream,
+    eulerian: TokenStream,
+}
+
+/// Derives the scene in both charts and in Eulerian form and lowers every method.
+fn methods(
+    low: &Lowering,
+    arena: &mut Arena,
+    scene: &TopScene,
+    user: &UserCall,
+) -> Result<Methods, LagrangeError> {
+    let mut arms = ChartArms::default();
+    let mut chart = |seq: AngleSequence, arms: &mut ChartArms| {
+        let top = TopScene {
+            sequence: seq,
+            ..scene.clone()
+        }
+        .derive(arena)?;
+        arms.push(low, arena, &top, user);
+        Ok::<_, LagrangeError>(top)
+    };
+    let zxz = chart(AngleSequence::Zxz, &mut arms)?;
+    let zyx = chart(AngleSequence::Zyx, &mut arms)?;
+    let declared = match scene.sequence {
+        AngleSequence::Zxz => &zxz,
+        AngleSequence::Zyx => &zyx,
+    };
+    let (jacobian, momenta) = declared_chart(low, arena, declared, user);
+    let eulerian = eulerian(low, arena, scene, user)?;
+    Ok(Methods {
+        arms,
+        jacobian,
+        momenta,
+        eulerian,
+    })
+}
+
+/// The declared chart only: the Jacobian of q̈ and the conserved momenta, over q and q̇.
+fn declared_chart(
+    low: &Lowering,
+    arena: &mut Arena,
+    top: &TopDerivation,
+    user: &UserCall,
+) -> (TokenStream, TokenStream) {
+    let p = Private;
+    let c = top.coords().clone();
+    let reads: Vec<(ExprId, TokenStream)> = (0..3)
+        .flat_map(|k| [(c.q[k], quote!(q[#k])), (c.rates[k], quote!(q_dot[#k]))])
+        .collect();
+    let declared_t = sequence_tokens(top.sequence);
+    let call = user.call(|f| {
+        quote! {
+            let __r = #p::Top::rotation_in(self, #declared_t, q);
+            let __w = #p::Top::rate_matrix_in(self, #declared_t, q) * #p::Vector3::from(*q_dot);
+            let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
+        }
+    });
+    let jac = top.jacobian(arena);
+    let Emitted { lets, outputs } = low.lower_reading(arena, jac.as_flattened(), &reads);
+    let rows = outputs.chunks(6).map(|row| quote!([#(#row),*]));
+    let jacobian = quote!({ #call #lets [#(#rows),*] });
+    let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
+    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
+    let mut it = outputs.into_iter();
+    let slots = top.conserved_momenta.iter().map(|m| match m {
+        Some(_) => {
+            let v = it.next();
+            quote!(::core::option::Option::Some(#v))
+        }
+        None => quote!(::core::option::Option::None),
+    });
+    (jacobian, quote!({ #lets [#(#slots),*] }))
+}
+
+/// The Eulerian form ω̇(R, ω) over the attitude matrix and ω.
+fn eulerian(
+    low: &Lowering,
+    arena: &mut Arena,
+    scene: &TopScene,
+    user: &UserCall,
+) -> Result<TokenStream, LagrangeError> {
+    let p = Private;
+    let rot: Mat3 =
+        std::array::from_fn(|i| std::array::from_fn(|j| arena.input(&format!("R{i}{j}"))));
+    let omega = [arena.input("w0"), arena.input("w1"), arena.input("w2")];
+    let rhs = scene.eulerian_rhs(arena, &rot, &omega)?;
+    let mut reads = Vec::new();
+    for (i, (&w, row)) in omega.iter().zip(&rot).enumerate() {
+        reads.push((w, quote!(omega[#i])));
+        for (j, &r) in row.iter().enumerate() {
+            reads.push((r, quote!(__r[(#i, #j)])));
+        }
+    }
+    let call = user.call(|f| quote!(let __u: #p::Vector3<f64> = #f(self, t, &__r, omega);));
+    let Emitted { lets, outputs } = low.lower_reading(arena, &rhs, &reads);
+    Ok(quote!({
+        let __r: #p::Matrix3<f64> = attitude.to_rotation_matrix().into_inner();
+        #call
+        #lets
+        #p::Vector3::new(#(#outputs),*)
+    }))
+}
