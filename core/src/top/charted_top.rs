@@ -187,9 +187,7 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
         }
         let ode = Dop853::new(self.charts[other], self.ode.t(), s, self.config.stepper)?;
         let done = self.ode.stats();
-        self.finished.steps += done.steps;
-        self.finished.rejections += done.rejections;
-        self.finished.rhs_evals += done.rhs_evals;
+        self.finished += done;
         self.ode = ode;
         self.active = other;
         self.switches += 1;
@@ -228,12 +226,7 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
 
     /// The work done so far, over every chart.
     pub fn stats(&self) -> Stats {
-        let now = self.ode.stats();
-        Stats {
-            steps: self.finished.steps + now.steps,
-            rejections: self.finished.rejections + now.rejections,
-            rhs_evals: self.finished.rhs_evals + now.rhs_evals,
-        }
+        self.finished + self.ode.stats()
     }
 
     /// How many times the driver changed chart.
