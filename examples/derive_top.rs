@@ -6,10 +6,10 @@
 
 use std::time::Instant;
 
-use precess::core_api::codegen::{Program, latex};
-use precess::core_api::lagrange::LagrangeError;
-use precess::core_api::sym::Arena;
-use precess::core_api::top::TopScene;
+use precess::codegen::{Program, latex};
+use precess::lagrange::LagrangeError;
+use precess::sym::Arena;
+use precess::top::TopScene;
 
 fn main() -> Result<(), LagrangeError> {
     let started = Instant::now();

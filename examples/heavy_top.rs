@@ -13,9 +13,9 @@
 
 use std::time::Instant;
 
-use precess::core_api::exact::{ellip_k, sncndn};
-use precess::core_api::ode::{AdaptiveConfig, Dop853};
-use precess::core_api::rigid::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
+use precess::exact::{ellip_k, sncndn};
+use precess::ode::{AdaptiveConfig, Dop853};
+use precess::rigid::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
 use precess::prelude::*;
 
 /// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm), turning on the stem's tip.

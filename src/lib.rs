@@ -26,11 +26,12 @@
 //! ```
 //!
 //! The same bodies can be built at run time with [`body::BodyBuilder`]; the macro and the
-//! builder share one implementation in `precess-core`.
+//! builder share one implementation in `precess-core`, whose modules are re-exported here at
+//! the root: the engine ([`sym`], [`codegen`], [`lagrange`], [`ode`], [`exact`]), the bodies
+//! ([`body`], [`rigid`]) and the scenes ([`top`]), and the [`nalgebra`] precess is built on.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub use precess_core as core_api;
 pub use precess_core::*;
 
 /// The derive and the types a user of it needs.

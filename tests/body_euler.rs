@@ -7,7 +7,7 @@ mod common;
 use common::body::*;
 use common::rng::Rng;
 use nalgebra::Vector3;
-use precess::core_api::body::{About, Axis, Body, BodyBuilder, RigidBody, Shape};
+use precess::body::{About, Axis, Body, BodyBuilder, RigidBody, Shape};
 
 fn bodies() -> Vec<Body> {
     let tilted = [[2.0, 0.3, -0.1], [0.3, 1.5, 0.2], [-0.1, 0.2, 1.0]];

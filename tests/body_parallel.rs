@@ -5,7 +5,7 @@ mod common;
 use common::body::*;
 use common::rng::Rng;
 use nalgebra::{Matrix3, Vector3};
-use precess::core_api::body::{Axis, BodyBuilder, Numeric, RigidBody, Shape, point_tensor};
+use precess::body::{Axis, BodyBuilder, Numeric, RigidBody, Shape, point_tensor};
 
 #[test]
 fn theorem_against_direct_summation() {

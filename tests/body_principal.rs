@@ -5,7 +5,7 @@ mod common;
 
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};
-use precess::core_api::body::principal_frame;
+use precess::body::principal_frame;
 
 fn off_diagonal(i: &Matrix3<f64>, r: &Matrix3<f64>) -> f64 {
     let d = r.transpose() * i * r;

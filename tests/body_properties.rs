@@ -3,10 +3,10 @@
 //! builder, both through the one implementation in precess-core.
 
 use nalgebra::{Matrix3, Vector3};
-use precess::core_api::body::{
+use precess::body::{
     Axis, BodyBuilder, Description, MassProperties, Part, RigidBody, Shape, mass_properties,
 };
-use precess::core_api::sym::{Arena, ExprId};
+use precess::sym::{Arena, ExprId};
 use proptest::prelude::*;
 
 fn coordinate() -> impl Strategy<Value = f64> {
@@ -91,7 +91,7 @@ proptest! {
         let Ok(sp) = mass_properties(&mut a, &symbolic) else {
             return Err(TestCaseError::fail("symbolic mass properties failed"));
         };
-        let np: MassProperties<f64> = mass_properties(&mut precess::core_api::body::Numeric, &numeric).expect("valid");
+        let np: MassProperties<f64> = mass_properties(&mut precess::body::Numeric, &numeric).expect("valid");
         let ev = |t: &[[ExprId; 3]; 3]| Matrix3::from_fn(|i, j| a.eval(t[i][j], &env));
         // The size of the terms summed, not of the result: a lone particle's tensor about its
         // own centre is zero, and both paths then hold rounding-sized noise.

@@ -5,7 +5,7 @@ mod common;
 
 use common::body::*;
 use nalgebra::{Matrix3, Vector3};
-use precess::core_api::body::{Axis, BodyBuilder, RigidBody, Shape};
+use precess::body::{Axis, BodyBuilder, RigidBody, Shape};
 
 const N: usize = 120;
 

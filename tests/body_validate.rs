@@ -1,6 +1,6 @@
 //! Validation of run-time bodies: one test per rule, the error carrying the numbers.
 
-use precess::core_api::body::{About, Axis, BodyBuilder, BodyError, Shape};
+use precess::body::{About, Axis, BodyBuilder, BodyError, Shape};
 
 fn one(shape: Shape<f64>) -> Result<(), BodyError> {
     BodyBuilder::new().part(shape, [0.0; 3]).build().map(|_| ())
@@ -176,7 +176,7 @@ fn explicit_tensor_about_the_pivot_is_moved_to_the_centre() {
         .pivot([0.0; 3])
         .build()
         .expect("a valid body");
-    use precess::core_api::body::RigidBody;
+    use precess::body::RigidBody;
     assert!(
         (b.inertia_cm() - nalgebra::Matrix3::identity() * i0)
             .abs()
@@ -278,8 +278,8 @@ fn underflow_of_f64_is_named_not_taken_for_a_zero_moment() {
 
 #[test]
 fn a_parametric_zero_moment_names_its_axis() {
-    use precess::core_api::body::{Description, Part, SymbolicBody};
-    use precess::core_api::sym::Arena;
+    use precess::body::{Description, Part, SymbolicBody};
+    use precess::sym::Arena;
     let mut a = Arena::new();
     let (mass, length) = (a.parameter("m"), a.parameter("l"));
     let z = a.zero();

@@ -2,7 +2,7 @@
 //! generic tensor formula, and Euler's equations in their generic form I⁻¹ (G − ω × I ω).
 
 use nalgebra::{Matrix3, Vector3};
-use precess::core_api::body::RigidBody;
+use precess::body::RigidBody;
 
 use super::rng::Rng;
 
