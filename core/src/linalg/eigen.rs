@@ -192,9 +192,9 @@ fn deflation_point(h: &mut DMatrix<f64>, last: usize, norm: f64) -> usize {
 /// replaced every tenth iteration without deflation by an exceptional pair that breaks the
 /// cycles the standard shifts can fall into (a cyclic permutation matrix, for one).
 fn shifts(h: &DMatrix<f64>, l: usize, last: usize, since_deflation: usize) -> (f64, f64) {
-    if since_deflation % 10 == 0 {
+    if since_deflation.is_multiple_of(10) {
         // Built from the size of the last (or, alternately, first) subdiagonal entries.
-        let (w, diag) = if since_deflation % 20 == 0 {
+        let (w, diag) = if since_deflation.is_multiple_of(20) {
             (h[(l + 1, l)].abs() + h[(l + 2, l + 1)].abs(), h[(l, l)])
         } else {
             (
