@@ -11,6 +11,8 @@
 //!   ([`AngleChart`]); [`rates_from_omega`] is the one rule for when a chart is singular.
 //! - [`TopModel`] is a derivation interpreted at run time, for scenes built at run time.
 //! - [`FastTop`] is a top as a splitting: the exact free-body flow and gravity kicks.
+//! - [`HeavyTopTheory`] and [`HeavyTopMotion`] give the symmetric heavy top's closed forms
+//!   (nutation, precession, the sleeping top), [`TorqueFreeSymmetric`] the free body's cones.
 
 mod angle_chart;
 mod charted_top;
@@ -20,6 +22,7 @@ mod fast_top;
 mod interpreted;
 mod rates;
 mod scene;
+mod theory;
 mod top_chart;
 mod top_trait;
 
@@ -31,5 +34,9 @@ pub use fast_top::FastTop;
 pub use interpreted::TopModel;
 pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
+pub use theory::{
+    HeavyTopMotion, HeavyTopTheory, STEADY_TOLERANCE, SYMMETRY_TOLERANCE, SleepingTop,
+    SteadyPrecession, TheoryError, TorqueFreeSymmetric,
+};
 pub use top_chart::TopChart;
 pub use top_trait::{Top, angle_state};
