@@ -119,10 +119,10 @@ mod tests {
 
     #[test]
     fn roots_of_a_product_are_recovered() {
-        // 2 (x + 0.3)(x − 0.2)(x − 1.5) = 2x³ − 2.8x² − 0.78x + 0.18.
+        // 2 (x + 0.3)(x − 0.2)(x − 1.5) = 2x³ − 2.8x² − 0.42x + 0.18.
         let c = ShiftedCubic {
             f0: 0.18,
-            f1: -0.78,
+            f1: -0.42,
             f2: -2.8,
             beta: 2.0,
         };
