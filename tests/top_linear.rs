@@ -288,6 +288,13 @@ fn singular_and_bad_states_are_refused() {
         at_lock,
         Err(LinearisationError::Top(TopError::SingularChart { .. }))
     ));
+    // Regular chart (|det B| = sin θ = 1e-7) but p_φ, p_ψ no longer determine φ̇, ψ̇:
+    // det M_cc relative to its diagonal is (I1/I3) sin²θ = 2e-14.
+    let near_lock = reduced_linearisation(&ReferenceTop, 0.0, &[0.0, 1e-7, 0.0], &[0.0, 0.0, 5.0]);
+    assert!(
+        matches!(near_lock, Err(LinearisationError::SingularMomentumMap { det, .. }) if det < 1e-13),
+        "{near_lock:?}"
+    );
     let nan = reduced_linearisation(&ReferenceTop, 0.0, &[0.0, f64::NAN, 0.0], &[0.0; 3]);
     assert!(matches!(
         nan,
