@@ -30,7 +30,8 @@ const BAND_SLACK: f64 = 1e-12;
 ///   third kind Π(n|m) = R_F(0, 1−m, 1) + (n/3) R_J(0, 1−m, 1, 1−n) (DLMF 19.25.2). It is
 ///   evaluated as φ̇(u1) plus the R_J terms, with 1 − n₊ = (1 − u2)/(1 − u1) and
 ///   1 − n₋ = (1 + u2)/(1 + u1) formed directly; Carlson's integrals are accurate to a few ε,
-///   and the result agrees with a 4096-point periodic quadrature to 1.4e-14 (`tests/top_theory.rs`).
+///   and the result agrees with a 4096-point periodic quadrature to 1.4e-14
+///   (`tests/top_theory.rs`).
 ///
 /// For M g l < 0 (a top hanging below its pivot) the same holds for u′ = −u, a′ = −a, and the
 /// answers are mapped back. The roots are found about the initial u0 (see the source of
