@@ -17,8 +17,8 @@ const BAND_SLACK: f64 = 1e-12;
 /// With u = cos θ, a = p_ψ/I1, b = p_φ/I1, β = 2 M g l / I1 and α = (2E − I3 ω3²)/I1,
 /// energy conservation gives u̇² = f(u) = (α − β u)(1 − u²) − (b − a u)², a cubic with
 /// f(±1) = −(b ∓ a)² ≤ 0. For M g l > 0 its roots are u1 ≤ u2 in [−1, 1] (the turning
-/// points, θ_max = arccos u1 and θ_min = arccos u2) and u3 ≥ 1. Writing f = β (u − u1)(u2 − u)(u3 − u)
-/// and u = u1 + (u2 − u1) sin²χ turns dt = du/√f into
+/// points, θ_max = arccos u1 and θ_min = arccos u2) and u3 ≥ 1. Writing
+/// f = β (u − u1)(u2 − u)(u3 − u) and u = u1 + (u2 − u1) sin²χ turns dt = du/√f into
 /// dt = 2 dχ / (√(β (u3 − u1)) √(1 − m sin²χ)), m = (u2 − u1)/(u3 − u1), so
 ///
 /// - u(t) = u1 + (u2 − u1) sn²(ν (t − t1) | m), ν = √(β (u3 − u1))/2 = √(M g l (u3 − u1)/(2 I1)),
