@@ -10,6 +10,7 @@ pub mod body;
 pub mod codegen;
 pub mod exact;
 pub mod lagrange;
+pub mod linalg;
 pub mod ode;
 pub mod rigid;
 pub mod sym;

@@ -11,6 +11,10 @@
 //!   ([`AngleChart`]); [`rates_from_omega`] is the one rule for when a chart is singular.
 //! - [`TopModel`] is a derivation interpreted at run time, for scenes built at run time.
 //! - [`FastTop`] is a top as a splitting: the exact free-body flow and gravity kicks.
+//! - [`HeavyTopTheory`] and [`HeavyTopMotion`] give the symmetric heavy top's closed forms
+//!   (nutation, precession, the sleeping top), [`TorqueFreeSymmetric`] the free body's cones.
+//! - [`angle_linearisation`] and [`reduced_linearisation`] give the linear system about a
+//!   state or a steady motion, for [`crate::linalg`]'s eigenvalues and stability verdict.
 
 mod angle_chart;
 mod charted_top;
@@ -18,8 +22,10 @@ mod error;
 mod eulerian;
 mod fast_top;
 mod interpreted;
+mod linear;
 mod rates;
 mod scene;
+mod theory;
 mod top_chart;
 mod top_trait;
 
@@ -29,7 +35,15 @@ pub use error::{ChartError, ModelError, TopError};
 pub use eulerian::EulerianTop;
 pub use fast_top::FastTop;
 pub use interpreted::TopModel;
+pub use linear::{
+    LinearisationError, MOMENTUM_MAP_TOLERANCE, ReducedLinearisation, angle_linearisation,
+    reduced_linearisation,
+};
 pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
+pub use theory::{
+    HeavyTopMotion, HeavyTopTheory, STEADY_TOLERANCE, SYMMETRY_TOLERANCE, SleepingTop,
+    SteadyPrecession, TheoryError, TorqueFreeSymmetric,
+};
 pub use top_chart::TopChart;
 pub use top_trait::{Top, angle_state};

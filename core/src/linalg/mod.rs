@@ -1,0 +1,19 @@
+//! Dense linear algebra beyond nalgebra's: eigenvalues of a general real matrix by a method
+//! that always returns, Jacobians by central differences, and the linear system about a state
+//! with its stability verdict.
+//!
+//! nalgebra's `complex_eigenvalues` did not return on a 6×6 top Jacobian (a defective zero
+//! eigenvalue from the cyclic coordinates); [`eigenvalues`] balances (isolating such zeros
+//! exactly), reduces to Hessenberg form and runs the Francis double-shift QR iteration with
+//! an iteration cap, so it terminates on every input.
+
+mod balance;
+mod eigen;
+mod error;
+mod jacobian;
+mod stability;
+
+pub use eigen::eigenvalues;
+pub use error::LinalgError;
+pub use jacobian::{JACOBIAN_STEP, jacobian};
+pub use stability::{LinearSystem, NEUTRAL_TOLERANCE, Stability};
