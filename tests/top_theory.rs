@@ -393,7 +393,7 @@ fn torque_free_cones() {
     });
     for t in [0.3, 1.0, 7.5] {
         let s =
-            solve::<precess_core::ode::Dp853, _, 3>(&euler, 0.0, omega, t, &[], tight()).unwrap();
+            solve::<precess_core::ode::Dop853Pair, _, 3>(&euler, 0.0, omega, t, &[], tight()).unwrap();
         let w = body.omega_at(t).unwrap();
         for i in 0..3 {
             assert!((s.y[i] - w[i]).abs() < 1e-11, "t = {t}: {:?} vs {w:?}", s.y);
@@ -410,7 +410,7 @@ fn torque_free_cones() {
     let chart = TopChart::declared(&FreeCoin);
     let y0 = [q[0], q[1], q[2], qd[0], qd[1], qd[2]];
     let t = 4.0;
-    let s = solve::<precess_core::ode::Dp853, _, 6>(&chart, 0.0, y0, t, &[], tight()).unwrap();
+    let s = solve::<precess_core::ode::Dop853Pair, _, 6>(&chart, 0.0, y0, t, &[], tight()).unwrap();
     assert_relative_eq!(s.y[0] / t, body.space_cone_rate(), max_relative = 1e-11);
     assert_relative_eq!(s.y[1], theta, max_relative = 1e-11);
     assert_relative_eq!(s.y[5], -body.body_cone_rate(), max_relative = 1e-11);
