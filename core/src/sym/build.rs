@@ -120,7 +120,7 @@ impl Arena {
     }
 
     /// `c · m` for a monomial `m` (no coefficient of its own).
-    fn scale_monomial(&mut self, c: Rational, m: ExprId) -> ExprId {
+    pub(crate) fn scale_monomial(&mut self, c: Rational, m: ExprId) -> ExprId {
         if c.is_one() {
             return m;
         }

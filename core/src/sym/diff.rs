@@ -25,6 +25,19 @@ impl Arena {
             return d;
         }
         let memo = &self.memo.diff;
+        let node = self.node(e);
+        let definition_done = match node {
+            Node::Sym(t) => self
+                .definitions
+                .get(t)
+                .is_none_or(|d| memo.contains_key(&(*d, s))),
+            _ => true,
+        };
+        if definition_done && node.children().iter().all(|c| memo.contains_key(&(*c, s))) {
+            let d = self.diff_node(e, s);
+            self.memo.diff.insert((e, s), d);
+            return d;
+        }
         let order = self.walk(&[e], true, |id| !memo.contains_key(&(id, s)));
         for id in order {
             if !self.memo.diff.contains_key(&(id, s)) {

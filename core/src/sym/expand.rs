@@ -48,6 +48,13 @@ impl Arena {
             return done;
         }
         let memo = &self.memo.expand;
+        // Most calls meet a node whose children are done: skip the walk's bookkeeping.
+        if self.node(e).children().iter().all(|c| memo.contains_key(c)) {
+            let out = self.expand_node(e);
+            self.memo.expand.insert(e, out);
+            self.memo.expand.entry(out).or_insert(out);
+            return out;
+        }
         let order = self.walk(&[e], false, |id| !memo.contains_key(&id));
         for id in order {
             if self.memo.expand.contains_key(&id) {
@@ -192,10 +199,7 @@ impl Arena {
     fn sum_of_terms(&mut self, terms: &Terms) -> ExprId {
         let parts: Vec<ExprId> = terms
             .iter()
-            .map(|&(c, m)| {
-                let k = self.constant(c);
-                self.mul(k, m)
-            })
+            .map(|&(c, m)| self.scale_monomial(c, m))
             .collect();
         self.sum(&parts)
     }
