@@ -15,8 +15,8 @@ use std::time::Instant;
 
 use precess::exact::{ellip_k, sncndn};
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::rigid::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
 use precess::prelude::*;
+use precess::rigid::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
 
 /// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm), turning on the stem's tip.
 #[derive(RigidBody)]

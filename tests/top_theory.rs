@@ -392,8 +392,8 @@ fn torque_free_cones() {
         d.copy_from_slice(dw.as_slice());
     });
     for t in [0.3, 1.0, 7.5] {
-        let s =
-            solve::<precess_core::ode::Dop853Pair, _, 3>(&euler, 0.0, omega, t, &[], tight()).unwrap();
+        let s = solve::<precess_core::ode::Dop853Pair, _, 3>(&euler, 0.0, omega, t, &[], tight())
+            .unwrap();
         let w = body.omega_at(t).unwrap();
         for i in 0..3 {
             assert!((s.y[i] - w[i]).abs() < 1e-11, "t = {t}: {:?} vs {w:?}", s.y);

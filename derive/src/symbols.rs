@@ -6,7 +6,7 @@
 //! symbol the map does not know is a bug of the macro; it is reported as a compile error on
 //! the struct rather than emitted as a value.
 
-use precess_core::codegen::{Emitted, Program};
+use precess_core::codegen::{Emitted, Op, Program};
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -45,7 +45,22 @@ impl SymbolTokens {
     /// it does not know is recorded in `cx` as an internal error spanned on `ident` (the
     /// derive then emits its errors and stub impls, never this code).
     fn lower(&self, cx: &Ctxt, ident: &Ident, arena: &Arena, outputs: &[ExprId]) -> Emitted {
-        Program::lower(arena, outputs).to_tokens(&mut |s| match self.get(s) {
+        let program = Program::lower(arena, outputs);
+        // A constant is exact in the engine but rounds to ±inf as an f64 when the values
+        // combine past f64's range (1.8e308 − (−1.8e308), say): the code would compute
+        // with an infinity, so the derive refuses it.
+        if let Some(x) = program.ops().iter().find_map(|op| match op {
+            Op::Const(x) if !x.is_finite() => Some(*x),
+            _ => None,
+        }) {
+            cx.error_spanned_by(
+                ident,
+                format!(
+                    "a constant of the body's equations rounds to {x} in f64: its values combine past f64's range (about 1.8e308); use other units"
+                ),
+            );
+        }
+        program.to_tokens(&mut |s| match self.get(s) {
             Some(tokens) => tokens,
             None => {
                 let symbol = arena.symbol(s);
