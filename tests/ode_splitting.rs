@@ -346,6 +346,11 @@ fn splitting_steps_check_their_step_and_state() {
         Err(OdeError::NonFiniteState { .. })
     ));
     assert_eq!(y, gni());
+    assert!(matches!(
+        s.run(&mut y, 1e308, 3),
+        Err(OdeError::NonFiniteState { t: 0.0 })
+    ));
+    assert_eq!(y, gni());
     s.step(&mut y, 0.01).unwrap();
     assert!(y.m.iter().all(|v| v.is_finite()));
     let no_rotation = BodyMomentum {

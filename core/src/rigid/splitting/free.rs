@@ -179,30 +179,56 @@ impl FreeBodySplitting {
     /// [`OdeError::InvalidStep`] for h ≤ 0 or non-finite; [`OdeError::NonFiniteInitialState`]
     /// or [`OdeError::NotUnitQuaternion`] for a bad `y`; [`OdeError::NonFiniteState`] at the
     /// first step whose rotation angles overflow (t = i·h from the start of the call), with
-    /// `y` left at the last finite state.
+    /// `y` left at the last finite state (at t).
     pub fn run(&self, y: &mut BodyMomentum, h: f64, n: u64) -> Result<(), OdeError> {
         check_step(h)?;
         check_momentum(y)?;
         let (w, k) = self.weights();
+        let weights = &w[..k];
         let mut pending = 0.0;
-        for i in 0..n {
-            let mut z = *y;
-            for &g in &w[..k] {
-                self.r1(&mut z, pending + 0.5 * g * h);
-                self.r3(&mut z, g * h);
-                pending = 0.5 * g * h;
+        let mut done = 0;
+        while done < n {
+            // Checked after each block of a few steps (a non-finite component stays
+            // non-finite), then replayed to stop at the first bad step.
+            let len = CHECK_BLOCK.min(n - done);
+            let (y_start, pending_start) = (*y, pending);
+            for _ in 0..len {
+                self.merged_step(y, &mut pending, weights, h);
             }
-            self.casimir(&mut z, h);
-            // Checked every step: an overflow stops at once, before NaN spreads.
-            if !momentum_is_finite(&z) {
-                return Err(OdeError::NonFiniteState { t: i as f64 * h });
+            if !momentum_is_finite(y) {
+                (*y, pending) = (y_start, pending_start);
+                for i in done..done + len {
+                    let (y_prev, pending_prev) = (*y, pending);
+                    self.merged_step(y, &mut pending, weights, h);
+                    if !momentum_is_finite(y) {
+                        // The last finite state, with its pending half rotation applied.
+                        *y = y_prev;
+                        self.r1(y, pending_prev);
+                        return Err(OdeError::NonFiniteState { t: i as f64 * h });
+                    }
+                }
             }
-            *y = z;
+            done += len;
         }
         self.r1(y, pending);
         Ok(())
     }
+
+    /// One step of [`Self::run`], leaving its last R₁ half-rotation pending to merge with the
+    /// next step's first.
+    #[inline]
+    fn merged_step(&self, y: &mut BodyMomentum, pending: &mut f64, weights: &[f64], h: f64) {
+        for &g in weights {
+            self.r1(y, *pending + 0.5 * g * h);
+            self.r3(y, g * h);
+            *pending = 0.5 * g * h;
+        }
+        self.casimir(y, h);
+    }
 }
+
+/// Steps between two checks of the state in [`FreeBodySplitting::run`].
+const CHECK_BLOCK: u64 = 8;
 
 pub(super) fn check_step(h: f64) -> Result<(), OdeError> {
     if h.is_finite() && h > 0.0 {
