@@ -5,18 +5,9 @@ mod common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;
+use common::tops::ReferenceTop;
 use precess::prelude::*;
 use precess_core::ode::{AdaptiveConfig, Dop853};
-
-/// The reference top of the published values: I1 = I2 = 1, I3 = 1/2 about the pivot,
-/// M g l = 1 (M = 1, l = 1, g = 1).
-#[derive(RigidBody)]
-#[rigid(
-    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 1.0)]
-struct ReferenceTop;
 
 /// An asymmetric top with its centre of mass off the axis and parameters from fields, under
 /// every declared torque.

@@ -3,7 +3,10 @@
 //! on both branches, the intermediate-axis growth rate, and the 6×6 top Jacobians checked
 //! through their characteristic polynomial.
 
+mod common;
+
 use approx::assert_relative_eq;
+use common::tops::ReferenceTop;
 use precess::prelude::*;
 use precess_core::body::euler_rhs_principal;
 use precess_core::linalg::{LinearSystem, Stability, eigenvalues};
@@ -13,15 +16,6 @@ use precess_core::top::{
     HeavyTopTheory, LinearisationError, SleepingTop, angle_linearisation, reduced_linearisation,
 };
 use std::f64::consts::FRAC_PI_3;
-
-/// I1 = I2 = 1, I3 = ½ about the pivot, M g l = 1, in ZXZ.
-#[derive(RigidBody)]
-#[rigid(
-    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 1.0)]
-struct ReferenceTop;
 
 /// The same top in ZYX, whose chart is regular with the axis vertical.
 #[derive(RigidBody)]

@@ -1,7 +1,10 @@
 //! The symmetric top's closed forms against derived tops integrated with DOP853, against
 //! published values, against an independent quadrature, and in their limits.
 
+mod common;
+
 use approx::assert_relative_eq;
+use common::tops::ReferenceTop;
 use precess::prelude::*;
 use precess_core::body::euler_rhs_principal;
 use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem, solve};
@@ -9,16 +12,6 @@ use precess_core::top::{
     HeavyTopMotion, HeavyTopTheory, SleepingTop, TheoryError, TorqueFreeSymmetric,
 };
 use std::f64::consts::{FRAC_PI_3, PI};
-
-/// The reference top of the published values: I1 = I2 = 1, I3 = ½ about the pivot,
-/// M g l = 1.
-#[derive(RigidBody)]
-#[rigid(
-    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 1.0)]
-struct ReferenceTop;
 
 /// I1 = 2, I3 = 0.7, M g l = 1.5 · 9.81 · 0.8.
 #[derive(RigidBody)]

@@ -5,4 +5,5 @@ pub mod body;
 pub mod eulerian;
 pub mod free_body;
 pub mod rng;
+pub mod tops;
 pub mod tree;
