@@ -43,7 +43,7 @@ pub mod prelude {
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{
-        ChartConfig, ChartError, ChartedTop, EulerianTop, Top, TopChart, TopError,
+        ChartConfig, ChartError, ChartedTop, EulerianTop, TopChart, TopDynamics, TopError,
     };
     pub use precess_derive::RigidBody;
 }
@@ -58,7 +58,7 @@ pub mod __private {
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::top::Top;
+    pub use precess_core::top::TopDynamics;
     pub use std::vec;
 }
 

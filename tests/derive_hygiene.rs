@@ -72,7 +72,11 @@ scenes! {
     Raw: r#type,
 }
 
-fn same_physics<B: RigidBody + precess::prelude::Top>(name: &str, other: &B, plain: &Plain) {
+fn same_physics<B: RigidBody + precess::prelude::TopDynamics>(
+    name: &str,
+    other: &B,
+    plain: &Plain,
+) {
     // The rigid body.
     assert_eq!(other.mass(), plain.mass(), "{name}");
     assert_eq!(other.center_of_mass(), plain.center_of_mass(), "{name}");

@@ -54,7 +54,12 @@ fn brick() -> Brick {
 /// ω̇ = B q̈ + Ḃ q̇ from the generated angle form. Ḃ q̇ is the derivative of B along q̇,
 /// taken from the generated B by central differences with Richardson extrapolation
 /// (truncation O(h⁴) ≈ 1e-13 at h = 1e-3, rounding ≈ 1e-13).
-fn omega_dot_from_angles<T: Top>(top: &T, t: f64, q: [f64; 3], qd: [f64; 3]) -> Vector3<f64> {
+fn omega_dot_from_angles<T: TopDynamics>(
+    top: &T,
+    t: f64,
+    q: [f64; 3],
+    qd: [f64; 3],
+) -> Vector3<f64> {
     let qdd = top.angle_accel(t, &q, &qd);
     let b = |h: f64| {
         let q: [f64; 3] = std::array::from_fn(|i| q[i] + h * qd[i]);
@@ -350,4 +355,27 @@ fn fast_top_splitting_converges_to_the_eulerian_form() {
     // The round trip through the principal frame is exact.
     let (q, w) = fast.to_description(&fast.to_principal(&q0, &w0));
     assert!(q.angle_to(&q0) < 1e-15 && (w - w0).norm() < 1e-12);
+}
+
+/// A user's struct may be called `Top`, the name the docs use: the trait the derive
+/// implements is `TopDynamics`, so the prelude's glob import keeps its methods in scope.
+mod user_struct_named_top {
+    use approx::assert_relative_eq;
+    use precess::prelude::*;
+
+    #[derive(RigidBody)]
+    #[rigid(
+        body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+        pivot = [0.0, 0.0, 0.0],
+    )]
+    #[top(gravity = 1.0)]
+    struct Top;
+
+    #[test]
+    fn methods_resolve_through_the_prelude() {
+        // Lying on its side at rest, θ̈ = M g l sin θ / I1 = 1 (ZXZ: q = [φ, θ, ψ]).
+        let q_ddot = Top.angle_accel(0.0, &[0.0, std::f64::consts::FRAC_PI_2, 0.0], &[0.0; 3]);
+        assert_relative_eq!(q_ddot[1], 1.0, max_relative = 1e-15);
+        assert_eq!(<Top as TopDynamics>::SEQUENCE, AngleSequence::Zxz);
+    }
 }

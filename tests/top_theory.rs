@@ -51,7 +51,12 @@ fn tight() -> AdaptiveConfig {
 /// Integrates the derived top from (q, q̇) and holds the closed forms against it: the
 /// conserved quantities, θ(t) at many times, θ_max and θ_min at the predicted turning times
 /// (θ̇ = 0 there, five periods on), and the mean precession over five periods.
-fn check_against_integration<T: Top>(top: &T, theory: HeavyTopTheory, q: [f64; 3], qd: [f64; 3]) {
+fn check_against_integration<T: TopDynamics>(
+    top: &T,
+    theory: HeavyTopTheory,
+    q: [f64; 3],
+    qd: [f64; 3],
+) {
     let motion = theory.motion_from_angles(&q, &qd).unwrap();
     assert!(motion.theta_min() > 0.05 && motion.theta_max() < PI - 0.05);
     // Conserved quantities against the generated energy and momenta.

@@ -4,7 +4,7 @@
 //! mass properties, principal frame and Euler's equations with precess-core's symbolic
 //! engine while it expands, and emits a `RigidBody` impl specialised to the body: constants
 //! for literal values, straight-line code in the fields for parametric ones. With
-//! `#[top(...)]` it also derives the top's equations of motion and emits a `Top` impl.
+//! `#[top(...)]` it also derives the top's equations of motion and emits a `TopDynamics` impl.
 //!
 //! Each attribute is a folder with the same phases (`rigid/`, `top/`: ast → attr → check →
 //! expand → fallback). Shared by all: `ctxt` (every error of one expansion, checked once),
@@ -31,7 +31,7 @@ use rigid::ast::Input;
 use rigid::check::Checker;
 use symbols::FieldParameters;
 
-/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, and `Top`
+/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, and `TopDynamics`
 /// when a `#[top(...)]` attribute declares the body a top about its pivot.
 ///
 /// See the `precess` crate for examples and `docs/attributes.md` for the language.

@@ -3,12 +3,12 @@
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 use super::error::TopError;
-use super::top_trait::Top;
+use super::top_trait::TopDynamics;
 use crate::ode::System;
 
 /// The Eulerian form of a derived top as an ODE system with state
 /// `[q_w, q_x, q_y, q_z, ω₁, ω₂, ω₃]` (unit quaternion body to space, body ω):
-/// q̇ = ½ q ⊗ (0, ω), ω̇ from [`Top::eulerian_rhs`]. The quaternion is normalised before use,
+/// q̇ = ½ q ⊗ (0, ω), ω̇ from [`TopDynamics::eulerian_rhs`]. The quaternion is normalised before use,
 /// so drift of its norm under a general-purpose stepper does not leak into ω̇. It has no
 /// singular attitude.
 ///
@@ -109,7 +109,7 @@ impl<T> EulerianTop<'_, T> {
     }
 }
 
-impl<T: Top> System<7> for EulerianTop<'_, T> {
+impl<T: TopDynamics> System<7> for EulerianTop<'_, T> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; 7], d: &mut [f64; 7]) {
         let q = Quaternion::new(y[0], y[1], y[2], y[3]);

@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use super::error::TopError;
 use super::rates::check_chart;
-use super::top_trait::{Top, angle_state, check_state};
+use super::top_trait::{TopDynamics, angle_state, check_state};
 use crate::linalg::{LinalgError, LinearSystem, jacobian};
 
 /// Smallest |det| of the cyclic block of the mass matrix, relative to the product of its
@@ -39,7 +39,7 @@ pub enum LinearisationError {
 
 /// The linear system ẋ = A x of a derived top's angle form about `(q, q̇)` at time t, with
 /// x = (δq, δq̇) and A = [[0, I], [∂q̈/∂q, ∂q̈/∂q̇]] from the generated
-/// [`Top::angle_jacobian`] (exact derivatives, no differencing).
+/// [`TopDynamics::angle_jacobian`] (exact derivatives, no differencing).
 ///
 /// About a steady motion that moves along cyclic coordinates (a steady precession advances
 /// φ and ψ), A is the same at every point of the motion, so its spectrum is that motion's:
@@ -79,7 +79,7 @@ pub enum LinearisationError {
 /// assert_relative_eq!(top_frequency, w_n, max_relative = 1e-12);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn angle_linearisation<T: Top>(
+pub fn angle_linearisation<T: TopDynamics>(
     top: &T,
     t: f64,
     q: &[f64; 3],
@@ -122,7 +122,7 @@ pub struct ReducedLinearisation {
 /// # Errors
 /// As [`angle_linearisation`]; [`LinearisationError::SingularMomentumMap`] if the cyclic
 /// rates cannot be solved from the momenta at q.
-pub fn reduced_linearisation<T: Top>(
+pub fn reduced_linearisation<T: TopDynamics>(
     top: &T,
     t: f64,
     q: &[f64; 3],
@@ -171,14 +171,14 @@ pub fn reduced_linearisation<T: Top>(
 }
 
 /// M_ij = p_i(q, e_j) for the cyclic rows i.
-fn mass_row<T: Top>(top: &T, q: &[f64; 3], i: usize, j: usize) -> f64 {
+fn mass_row<T: TopDynamics>(top: &T, q: &[f64; 3], i: usize, j: usize) -> f64 {
     let mut unit = [0.0; 3];
     unit[j] = 1.0;
     top.conserved_momenta(q, &unit)[i].unwrap_or(f64::NAN)
 }
 
 /// The cyclic rates q̇_c solving M_cc q̇_c = p_c − M_ck q̇_k (`rates` holds q̇_k, zeros at c).
-fn cyclic_rates<T: Top>(
+fn cyclic_rates<T: TopDynamics>(
     top: &T,
     q: &[f64; 3],
     rates: &[f64; 3],
@@ -197,7 +197,7 @@ fn cyclic_rates<T: Top>(
 }
 
 /// Refuses a cyclic block of M whose determinant vanishes relative to its diagonal.
-fn check_momentum_map<T: Top>(
+fn check_momentum_map<T: TopDynamics>(
     top: &T,
     q: &[f64; 3],
     cyclic: &[usize],

@@ -5,7 +5,7 @@
 //!   generalised forces, and [`TopScene::derive`] hands them to the Euler–Lagrange engine
 //!   ([`crate::lagrange`]), giving a [`TopDerivation`]; [`TopScene::eulerian_rhs`] gives the
 //!   same scene in Eulerian form.
-//! - [`Top`] is the trait `#[top(...)]` implements over the generated code; [`TopChart`] and
+//! - [`TopDynamics`] is the trait `#[top(...)]` implements over the generated code; [`TopChart`] and
 //!   [`EulerianTop`] run a derived top with any stepper of [`crate::ode`].
 //! - [`ChartedTop`] gets through gimbal lock by switching between the ZXZ and ZYX charts
 //!   ([`AngleChart`]); [`rates_from_omega`] is the one rule for when a chart is singular.
@@ -46,4 +46,4 @@ pub use theory::{
     SteadyPrecession, TheoryError, TorqueFreeSymmetric,
 };
 pub use top_chart::TopChart;
-pub use top_trait::{Top, angle_state};
+pub use top_trait::{TopDynamics, angle_state};

@@ -1,5 +1,5 @@
 //! When an angle chart is singular, and solving `B(q) q̇ = ω` there: one rule for every
-//! path (the derived [`super::Top`], the interpreted [`super::TopModel`] through
+//! path (the derived [`super::TopDynamics`], the interpreted [`super::TopModel`] through
 //! [`super::AngleChart`], and [`super::ChartedTop`] when it picks or switches a chart).
 //!
 //! The body angular velocity is `ω = B(q) q̇`. For ZXZ `|det B| = |sin θ|`, for ZYX

@@ -3,7 +3,7 @@
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
-use super::top_trait::Top;
+use super::top_trait::TopDynamics;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
 
@@ -48,7 +48,7 @@ pub struct TopChart<'a, T> {
     pub sequence: AngleSequence,
 }
 
-impl<'a, T: Top> TopChart<'a, T> {
+impl<'a, T: TopDynamics> TopChart<'a, T> {
     /// The chart of the declared sequence.
     pub fn declared(top: &'a T) -> Self {
         TopChart {
@@ -69,7 +69,7 @@ impl<'a, T: Top> TopChart<'a, T> {
     }
 }
 
-impl<T: Top> System<6> for TopChart<'_, T> {
+impl<T: TopDynamics> System<6> for TopChart<'_, T> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
         let a = self.top.accel_in(self.sequence, t, y);
@@ -78,7 +78,7 @@ impl<T: Top> System<6> for TopChart<'_, T> {
     }
 }
 
-impl<T: Top> AngleChart for TopChart<'_, T> {
+impl<T: TopDynamics> AngleChart for TopChart<'_, T> {
     fn sequence(&self) -> AngleSequence {
         self.sequence
     }

@@ -9,14 +9,14 @@ use crate::rigid::AngleSequence;
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
 ///
-/// Angle-form methods take the angles `q` and rates `q̇` of [`Top::SEQUENCE`]; the `_in`
+/// Angle-form methods take the angles `q` and rates `q̇` of [`TopDynamics::SEQUENCE`]; the `_in`
 /// methods take either sequence (both are generated, so a simulation can switch charts at
 /// gimbal lock, see [`super::ChartedTop`]). The Eulerian form takes the attitude and the
 /// body angular velocity, in the description axes of the body.
 ///
 /// The generated methods are straight-line code without checks, for the steppers' inner
 /// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
-/// NaN or infinite. The `try_` helpers and [`Top::rates_from_omega`] check the state and the
+/// NaN or infinite. The `try_` helpers and [`TopDynamics::rates_from_omega`] check the state and the
 /// chart first, under the one rule of [`super::check_chart`].
 ///
 /// # Examples
@@ -47,7 +47,7 @@ use crate::rigid::AngleSequence;
 /// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
 /// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
 /// ```
-pub trait Top {
+pub trait TopDynamics {
     /// The declared angle sequence.
     const SEQUENCE: AngleSequence;
 
@@ -63,11 +63,11 @@ pub trait Top {
     /// The energy T + V in the chart `seq`.
     fn energy_in(&self, seq: AngleSequence, state: &[f64; 6]) -> f64;
 
-    /// The Jacobian of q̈ with respect to `(q, q̇)` in [`Top::SEQUENCE`]: row i holds
+    /// The Jacobian of q̈ with respect to `(q, q̇)` in [`TopDynamics::SEQUENCE`]: row i holds
     /// `∂q̈_i/∂(q_0, q_1, q_2, q̇_0, q̇_1, q̇_2)`.
     fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3];
 
-    /// The momenta `∂L/∂q̇_i` of [`Top::SEQUENCE`] that are conserved for this scene
+    /// The momenta `∂L/∂q̇_i` of [`TopDynamics::SEQUENCE`] that are conserved for this scene
     /// (`None` for the others).
     fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [Option<f64>; 3];
 
@@ -80,16 +80,16 @@ pub trait Top {
         omega: &Vector3<f64>,
     ) -> Vector3<f64>;
 
-    /// q̈ in [`Top::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
-    /// [`Top::try_angle_accel`]).
+    /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
+    /// [`TopDynamics::try_angle_accel`]).
     fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
         self.accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
     }
 
-    /// q̈ in [`Top::SEQUENCE`], refusing a state the chart cannot take.
+    /// q̈ in [`TopDynamics::SEQUENCE`], refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// As [`Top::try_accel_in`].
+    /// As [`TopDynamics::try_accel_in`].
     fn try_angle_accel(
         &self,
         t: f64,
@@ -126,17 +126,17 @@ pub trait Top {
         }
     }
 
-    /// The energy T + V in [`Top::SEQUENCE`].
+    /// The energy T + V in [`TopDynamics::SEQUENCE`].
     fn energy(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> f64 {
         self.energy_in(Self::SEQUENCE, &angle_state(q, q_dot))
     }
 
-    /// The body angular velocity ω = B(q) q̇ of [`Top::SEQUENCE`].
+    /// The body angular velocity ω = B(q) q̇ of [`TopDynamics::SEQUENCE`].
     fn omega_from_rates(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> Vector3<f64> {
         self.rate_matrix_in(Self::SEQUENCE, q) * Vector3::from(*q_dot)
     }
 
-    /// The rates q̇ = B(q)⁻¹ ω of [`Top::SEQUENCE`].
+    /// The rates q̇ = B(q)⁻¹ ω of [`TopDynamics::SEQUENCE`].
     ///
     /// # Errors
     /// As [`super::rates_from_omega`]: [`TopError::SingularChart`] at gimbal lock
@@ -152,7 +152,7 @@ pub trait Top {
     }
 }
 
-/// The angle-form state `[q, q̇]` that [`Top::accel_in`] and [`Top::energy_in`] take.
+/// The angle-form state `[q, q̇]` that [`TopDynamics::accel_in`] and [`TopDynamics::energy_in`] take.
 pub fn angle_state(q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 6] {
     [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]]
 }

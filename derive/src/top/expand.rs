@@ -1,6 +1,6 @@
 //! Expansion of `#[top]`: the scene derived by precess-core in both angle charts (ZXZ and
 //! ZYX, so a simulation can switch at gimbal lock) and in Eulerian form, each method one
-//! straight-line block per chart, quoted into `impl Top for …`.
+//! straight-line block per chart, quoted into `impl TopDynamics for …`.
 
 use precess_core::codegen::Emitted;
 use precess_core::lagrange::LagrangeError;
@@ -69,8 +69,8 @@ impl ChartArms {
         let call = user.call(|f| {
             quote! {
                 let __q = [state[0], state[1], state[2]];
-                let __r = #p::Top::rotation_in(self, #seq_t, &__q);
-                let __w = #p::Top::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
+                let __r = #p::TopDynamics::rotation_in(self, #seq_t, &__q);
+                let __w = #p::TopDynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
                 let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
             }
         });
@@ -103,7 +103,7 @@ impl UserCall {
     }
 }
 
-/// `impl Top for …`, or `None` after recording why the equations could not be derived.
+/// `impl TopDynamics for …`, or `None` after recording why the equations could not be derived.
 pub fn expand(
     cx: &Ctxt,
     ident: &Ident,
@@ -152,7 +152,7 @@ pub fn expand(
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
-        impl #p::Top for #ident {
+        impl #p::TopDynamics for #ident {
             const SEQUENCE: #p::AngleSequence = #declared_t;
 
             #[inline]
@@ -190,7 +190,7 @@ pub fn expand(
     })
 }
 
-/// The bodies of every method of `impl Top`.
+/// The bodies of every method of `impl TopDynamics`.
 struct Methods {
     arms: ChartArms,
     jacobian: TokenStream,
@@ -246,8 +246,8 @@ fn declared_chart(
     let declared_t = sequence_tokens(top.sequence);
     let call = user.call(|f| {
         quote! {
-            let __r = #p::Top::rotation_in(self, #declared_t, q);
-            let __w = #p::Top::rate_matrix_in(self, #declared_t, q) * #p::Vector3::from(*q_dot);
+            let __r = #p::TopDynamics::rotation_in(self, #declared_t, q);
+            let __w = #p::TopDynamics::rate_matrix_in(self, #declared_t, q) * #p::Vector3::from(*q_dot);
             let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
         }
     });

@@ -1,4 +1,4 @@
-//! The stub `impl Top` emitted next to the errors when the struct declares a top, so code
+//! The stub `impl TopDynamics` emitted next to the errors when the struct declares a top, so code
 //! using the trait does not add errors to the real ones.
 
 use proc_macro2::TokenStream;
@@ -7,7 +7,7 @@ use syn::DeriveInput;
 
 use crate::private::Private;
 
-/// A stub `impl Top` for `input`.
+/// A stub `impl TopDynamics` for `input`.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
@@ -15,7 +15,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let stub = quote!(::core::unimplemented!("the #[top] description has errors"));
     quote! {
         #[automatically_derived]
-        impl #impl_generics #p::Top for #ident #ty_generics #where_clause {
+        impl #impl_generics #p::TopDynamics for #ident #ty_generics #where_clause {
             const SEQUENCE: #p::AngleSequence = #p::AngleSequence::Zxz;
             fn accel_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; 6]) -> [f64; 3] { #stub }
             fn rotation_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }

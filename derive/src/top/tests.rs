@@ -67,7 +67,7 @@ fn top_errors_come_with_a_stub_impl() {
         struct NoPivot;
     });
     assert!(code.contains("compile_error"));
-    assert!(code.contains("impl :: precess :: __private :: Top for NoPivot"));
+    assert!(code.contains("impl :: precess :: __private :: TopDynamics for NoPivot"));
 }
 
 #[test]
