@@ -134,7 +134,8 @@ fn run_sep(m: Method) -> ([f64; 3], u64) {
             FreeBodyExact::new(SEP_I, SEP_M0)
                 .unwrap()
                 .m_at(black_box(SEP_T))
-                .unwrap(),
+                .unwrap()
+                .into(),
             0,
         ),
     }
@@ -177,10 +178,11 @@ fn table() {
             err(&y, &B5_Y20)
         );
     }
-    let exact = FreeBodyExact::new(SEP_I, SEP_M0)
+    let exact: [f64; 3] = FreeBodyExact::new(SEP_I, SEP_M0)
         .unwrap()
         .m_at(SEP_T)
-        .unwrap();
+        .unwrap()
+        .into();
     println!(
         "work-precision: I = (3,5,9), m0 = (0,2,0.01), error at t = 100 against the exact solution"
     );

@@ -53,7 +53,7 @@ fn main() -> Result<(), BodyError> {
             body.mass(),
             body.center_of_mass().as_slice(),
             p.moments.as_slice(),
-            body.euler_rhs(&w, &Vector3::zeros()).as_slice(),
+            body.euler_rhs_principal(&w, &Vector3::zeros()).as_slice(),
         );
     }
     // An invalid parameter is caught at run time with the numbers.

@@ -21,7 +21,7 @@
 //! // I3 = ½ m_s r_s² + ½ m r².
 //! let i3 = 0.5 * 0.2 * 0.004f64.powi(2) + 0.5 * 0.5 * 0.03f64.powi(2);
 //! assert_relative_eq!(top.principal().moments[2], i3, max_relative = 1e-15);
-//! let w_dot = top.euler_rhs(&Vector3::new(0.0, 0.0, 10.0), &Vector3::zeros());
+//! let w_dot = top.euler_rhs_principal(&Vector3::new(0.0, 0.0, 10.0), &Vector3::zeros());
 //! assert_relative_eq!(w_dot.norm(), 0.0);
 //! ```
 //!
@@ -54,7 +54,7 @@ pub mod prelude {
 pub mod __private {
     pub use precess_core::body::{
         About, Axis, BodyError, Description, Matrix3, Part, Principal, RigidBody, Rotation3, Shape,
-        Vector3, euler_rhs_principal, principal_frame,
+        Vector3, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;

@@ -70,7 +70,7 @@ fn flow_composes_over_long_times() {
         .unwrap()
         .at(1000.0)
         .unwrap();
-    let (mut q, mut m) = (q0, m0);
+    let (mut q, mut m) = (q0, Vector3::from(m0));
     for _ in 0..100 {
         (q, m) = FreeBodyAttitude::new(i, q, m).unwrap().at(10.0).unwrap();
     }

@@ -31,8 +31,8 @@ fn energy(i: &[f64; 3], m: &[f64; 3]) -> f64 {
 fn gni_body_against_30_digit_references() {
     let fb = FreeBodyExact::new(GNI_I, gni_m0()).unwrap();
     let (e1, e10) = (
-        dist(&fb.m_at(1.0).unwrap(), &GNI_M1),
-        dist(&fb.m_at(10.0).unwrap(), &GNI_M10),
+        dist(&<[f64; 3]>::from(fb.m_at(1.0).unwrap()), &GNI_M1),
+        dist(&<[f64; 3]>::from(fb.m_at(10.0).unwrap()), &GNI_M10),
     );
     eprintln!(
         "exact GNI m(1) error {e1:e}, m(10) error {e10:e}, period {}",
@@ -106,7 +106,7 @@ fn every_regime_agrees_with_dop853() {
         assert_eq!(fb.regime(), regime, "{inertia:?} {m0:?}");
         for t_end in [0.7, 10.0, 40.0] {
             let s = solve::<Dop853Pair, _, 3>(FreeBody(inertia), 0.0, m0, t_end, &[], cfg).unwrap();
-            let e = dist(&fb.m_at(t_end).unwrap(), &s.y);
+            let e = dist(&<[f64; 3]>::from(fb.m_at(t_end).unwrap()), &s.y);
             assert!(e <= 1e-11, "{inertia:?} {m0:?} t={t_end}: {e:e}");
         }
     }
@@ -118,8 +118,8 @@ fn separatrix_tends_to_the_intermediate_axis() {
     let (i, m0) = ([2.0, 3.0, 6.0], [1.0, 0.5, 1.0]);
     let g = (1.0f64 + 0.25 + 1.0).sqrt();
     let fb = FreeBodyExact::new(i, m0).unwrap();
-    let late = fb.m_at(60.0).unwrap();
-    let early = fb.m_at(-60.0).unwrap();
+    let late = <[f64; 3]>::from(fb.m_at(60.0).unwrap());
+    let early = <[f64; 3]>::from(fb.m_at(-60.0).unwrap());
     assert!((late[1].abs() - g).abs() <= 1e-12 && (early[1].abs() - g).abs() <= 1e-12);
     assert!(late[1] * early[1] < 0.0, "the separatrix connects −G to +G");
 }
@@ -131,13 +131,16 @@ fn long_times_keep_invariants_and_group_property() {
         let fb = FreeBodyExact::new(i, m0).unwrap();
         let (g0, h0) = (m0.iter().map(|x| x * x).sum::<f64>(), energy(&i, &m0));
         for t in [1e2, 1e3, 5e3, 1e4] {
-            let m = fb.m_at(t).unwrap();
+            let m = <[f64; 3]>::from(fb.m_at(t).unwrap());
             let g = m.iter().map(|x| x * x).sum::<f64>();
             assert!((g - g0).abs() <= 1e-14 * g0, "|m|² drift at {t}");
             assert!((energy(&i, &m) - h0).abs() <= 1e-14 * h0, "H drift at {t}");
             // Restarting from a rounded m(t/2) perturbs λ and K; near the separatrix
             // (m_c ≈ 4e-5) K is 1/(2m_c) times more sensitive, so that case gets more slack.
-            let half = free_body_flow(i, fb.m_at(0.5 * t).unwrap(), 0.5 * t).unwrap();
+            let half: [f64; 3] =
+                free_body_flow(i, <[f64; 3]>::from(fb.m_at(0.5 * t).unwrap()), 0.5 * t)
+                    .unwrap()
+                    .into();
             let tol = if fb.mc() < 1e-3 { 1e-10 } else { 1e-12 };
             eprintln!("group property at {t}: {:e}", dist(&half, &m));
             assert!(
@@ -199,8 +202,8 @@ mod properties {
             let fb = FreeBodyExact::new(i, m0).unwrap();
             let s = solve::<Dop853Pair, _, 3>(FreeBody(i), 0.0, m0, 3.0, &[], AdaptiveConfig::with_tol(1e-13, 1e-13)).unwrap();
             let g = m0.iter().map(|x| x * x).sum::<f64>().sqrt();
-            prop_assert!(dist(&fb.m_at(3.0).unwrap(), &s.y) <= 1e-10 * g, "{:e}", dist(&fb.m_at(3.0).unwrap(), &s.y));
-            let m = fb.m_at(t).unwrap();
+            prop_assert!(dist(&<[f64; 3]>::from(fb.m_at(3.0).unwrap()), &s.y) <= 1e-10 * g, "{:e}", dist(&<[f64; 3]>::from(fb.m_at(3.0).unwrap()), &s.y));
+            let m = <[f64; 3]>::from(fb.m_at(t).unwrap());
             let (g2, g20) = (m.iter().map(|x| x * x).sum::<f64>(), g * g);
             prop_assert!((g2 - g20).abs() <= 1e-14 * g20);
             let h0 = energy(&i, &m0);

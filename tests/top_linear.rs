@@ -8,7 +8,7 @@ mod common;
 use approx::assert_relative_eq;
 use common::tops::ReferenceTop;
 use precess::prelude::*;
-use precess_core::body::euler_rhs_principal;
+use precess_core::body::euler_rhs_diagonal;
 use precess_core::linalg::{LinearSystem, Stability, eigenvalues};
 use precess_core::nalgebra::{Complex, DMatrix};
 use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem};
@@ -183,7 +183,7 @@ fn free_body_axes() {
     let i = [1.0, 2.0, 3.5];
     let moments = Vector3::from(i);
     let euler = FnSystem(move |_t: f64, y: &[f64; 3], d: &mut [f64; 3]| {
-        let dw = euler_rhs_principal(&moments, &Vector3::from(*y), &Vector3::zeros());
+        let dw = euler_rhs_diagonal(&moments, &Vector3::from(*y), &Vector3::zeros());
         d.copy_from_slice(dw.as_slice());
     });
     let w = 2.5;

@@ -6,7 +6,7 @@ mod common;
 use approx::assert_relative_eq;
 use common::tops::ReferenceTop;
 use precess::prelude::*;
-use precess_core::body::euler_rhs_principal;
+use precess_core::body::euler_rhs_diagonal;
 use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem, solve};
 use precess_core::top::{
     HeavyTopMotion, HeavyTopTheory, SleepingTop, TheoryError, TorqueFreeSymmetric,
@@ -386,7 +386,7 @@ fn torque_free_cones() {
     let body = TorqueFreeSymmetric::new(1.0, 2.0, omega).unwrap();
     let moments = Vector3::new(1.0, 1.0, 2.0);
     let euler = FnSystem(move |_t: f64, y: &[f64; 3], d: &mut [f64; 3]| {
-        let dw = euler_rhs_principal(&moments, &Vector3::from(*y), &Vector3::zeros());
+        let dw = euler_rhs_diagonal(&moments, &Vector3::from(*y), &Vector3::zeros());
         d.copy_from_slice(dw.as_slice());
     });
     for t in [0.3, 1.0, 7.5] {

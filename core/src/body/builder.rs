@@ -127,7 +127,7 @@ impl RigidBody for Body {
     fn principal(&self) -> Principal {
         self.principal
     }
-    fn euler_rhs(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
+    fn euler_rhs_principal(&self, w: &Vector3<f64>, g: &Vector3<f64>) -> Vector3<f64> {
         let (k, d) = (&self.coefficients, &self.inverse);
         Vector3::new(
             k[0] * w[1] * w[2] + d[0] * g[0],

@@ -26,7 +26,7 @@ pub use error::BodyError;
 pub use mass::{MassProperties, Tensor, mass_properties, point_tensor};
 pub use nalgebra::{Matrix3, Rotation3, Vector3};
 pub use principal::{Principal, principal_frame};
-pub use rigid::{RigidBody, euler_rhs_principal};
+pub use rigid::{RigidBody, euler_rhs_diagonal};
 pub use shape::{About, Axis, ClosedForm, Description, Part, Shape, closed_form};
 pub use symbolic::{Frame, SymbolicBody, evaluate};
 pub use validate::{check_part, matrix};

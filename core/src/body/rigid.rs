@@ -9,8 +9,10 @@ use super::shape::Description;
 /// A rigid body's mass properties and its equations of motion.
 ///
 /// Frames: the description frame is the one the body was described in; "reference point" is
-/// the pivot if one is declared, else the centre of mass. [`RigidBody::euler_rhs`] works in
-/// the principal frame ([`RigidBody::principal`]); the other methods in description axes.
+/// the pivot if one is declared, else the centre of mass. Every method works in description
+/// axes except the one whose name says `_principal`: [`RigidBody::euler_rhs_principal`] takes
+/// and returns principal-axis components ([`RigidBody::principal`] gives the rotation between
+/// the two). Vectors are [`Vector3`]s, tensors [`Matrix3`]s (see docs/conventions.md).
 pub trait RigidBody {
     /// Total mass M.
     fn mass(&self) -> f64;
@@ -34,7 +36,7 @@ pub trait RigidBody {
     /// Euler's equations in the principal frame: ω̇ with
     /// I1 ω̇1 = (I2 − I3) ω2 ω3 + G1 (and cyclic), for body angular velocity ω and torque G
     /// about the reference point, both in principal axes.
-    fn euler_rhs(&self, omega: &Vector3<f64>, torque: &Vector3<f64>) -> Vector3<f64>;
+    fn euler_rhs_principal(&self, omega: &Vector3<f64>, torque: &Vector3<f64>) -> Vector3<f64>;
 
     /// Kinetic energy of rotation about the reference point, ½ ωᵀ I ω (ω in description
     /// axes).
@@ -95,7 +97,7 @@ pub trait RigidBody {
 
 /// Euler's equations for principal moments `moments`, the generic form
 /// I⁻¹ (G − ω × I ω) with I diagonal.
-pub fn euler_rhs_principal(
+pub fn euler_rhs_diagonal(
     moments: &Vector3<f64>,
     omega: &Vector3<f64>,
     torque: &Vector3<f64>,

@@ -44,7 +44,7 @@ pub enum Frame {
 /// assert_eq!(a.as_rational(moments[2]), Rational::new(1, 100));
 /// let w = [a.parameter("w1"), a.parameter("w2"), a.parameter("w3")];
 /// let g = [a.parameter("g1"), a.parameter("g2"), a.parameter("g3")];
-/// let rhs = body.euler_rhs(&mut a, w, g).unwrap().unwrap();
+/// let rhs = body.euler_rhs_principal(&mut a, w, g).unwrap().unwrap();
 /// // ω̇3 = G3 / I3: no ω1 ω2 term, and the reciprocal is the constant 100.
 /// let env = [9.0, 9.0, 9.0, 0.0, 0.0, 0.5];
 /// assert_relative_eq!(a.eval(rhs[2], &env), 50.0);
@@ -114,7 +114,7 @@ impl SymbolicBody {
     /// [`BodyError::ZeroPrincipalMoment`] (literals) or [`BodyError::IdenticallyZeroMoment`]
     /// (parameters) if a moment is zero; [`BodyError::Overflow`] if a moment or coefficient
     /// of a constant body is not a finite `f64`.
-    pub fn euler_rhs(
+    pub fn euler_rhs_principal(
         &self,
         arena: &mut Arena,
         omega: [ExprId; 3],

@@ -18,7 +18,7 @@ use super::carlson::{SMALL_ROOT, rc, rf, rj};
 use super::double_double::Dd;
 use super::elliptic::MAX_ARGUMENT;
 use super::error::{ExactError, finite};
-use super::free_body::{FreeBodyExact, Regime};
+use super::free_body::{FreeBodyExact, Regime, array};
 use super::scaling::pow2_scale;
 
 /// Constants of the precession angle φ(t).
@@ -92,10 +92,11 @@ impl FreeBodyAttitude {
     /// [`ExactError::NotUnitQuaternion`] for a q0 that is no rotation (|q0| off 1 by more
     /// than 1e-6, such as the zero quaternion).
     pub fn new(
-        inertia: [f64; 3],
+        inertia: impl Into<Vector3<f64>>,
         q0: UnitQuaternion<f64>,
-        m0: [f64; 3],
+        m0: impl Into<Vector3<f64>>,
     ) -> Result<Self, ExactError> {
+        let (inertia, m0) = (array(inertia), array(m0));
         // Validate the caller's numbers first, then work on the scaled problem so that no
         // product of huge or tiny moments and momenta overflows.
         FreeBodyExact::new(inertia, m0)?;
@@ -191,7 +192,12 @@ impl FreeBodyAttitude {
     ///
     /// # Errors
     /// [`ExactError::NonFinite`] for a non-finite `t`.
-    pub fn at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
+    pub fn at(&self, t: f64) -> Result<(UnitQuaternion<f64>, Vector3<f64>), ExactError> {
+        self.array_at(t).map(|(q, m)| (q, m.into()))
+    }
+
+    /// [`FreeBodyAttitude::at`] with m as an array, for the steppers' inner loops.
+    pub(crate) fn array_at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
         finite("t", t)?;
         if t == 0.0 {
             return Ok((self.q0, self.m0));
@@ -216,7 +222,7 @@ impl FreeBodyAttitude {
 
     /// (q, m̃) of the scaled problem at scaled time τ.
     fn scaled_at(&self, t: f64) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
-        let m = self.fb.m_at(t)?;
+        let m = self.fb.m_array_at(t)?;
         let Some(pr) = self.prec else {
             // Steady: ω = I⁻¹m is constant and along m, the body spins uniformly.
             let w = Vector3::new(
@@ -238,10 +244,10 @@ impl FreeBodyAttitude {
 /// # Errors
 /// As [`FreeBodyAttitude::new`] and [`FreeBodyAttitude::at`].
 pub fn free_body_flow_attitude(
-    inertia: [f64; 3],
+    inertia: impl Into<Vector3<f64>>,
     q: UnitQuaternion<f64>,
-    m: [f64; 3],
+    m: impl Into<Vector3<f64>>,
     h: f64,
-) -> Result<(UnitQuaternion<f64>, [f64; 3]), ExactError> {
+) -> Result<(UnitQuaternion<f64>, Vector3<f64>), ExactError> {
     FreeBodyAttitude::new(inertia, q, m)?.at(h)
 }

@@ -13,6 +13,8 @@
 //! carried in double-double: near the separatrix and over long times that is where the
 //! digits go.
 
+use nalgebra::Vector3;
+
 use super::carlson::ellip_f_sc_of;
 use super::double_double::Dd;
 use super::elliptic::{Jacobi, MAX_ARGUMENT};
@@ -80,7 +82,11 @@ impl FreeBodyExact {
     /// # Errors
     /// [`ExactError::InvalidInertia`] unless all moments are finite and > 0;
     /// [`ExactError::NonFinite`] for a non-finite `m0`.
-    pub fn new(inertia: [f64; 3], m0: [f64; 3]) -> Result<Self, ExactError> {
+    pub fn new(
+        inertia: impl Into<Vector3<f64>>,
+        m0: impl Into<Vector3<f64>>,
+    ) -> Result<Self, ExactError> {
+        let (inertia, m0) = (array(inertia), array(m0));
         if !inertia.iter().all(|&v| v.is_finite() && v > 0.0) {
             return Err(ExactError::InvalidInertia { inertia });
         }
@@ -263,8 +269,8 @@ impl FreeBodyExact {
     }
 
     /// The initial angular momentum.
-    pub fn m0(&self) -> [f64; 3] {
-        self.m0
+    pub fn m0(&self) -> Vector3<f64> {
+        self.m0.into()
     }
 
     /// m(t) in the caller's axes.
@@ -272,7 +278,12 @@ impl FreeBodyExact {
     /// # Errors
     /// [`ExactError::NonFinite`] for a non-finite `t`; [`ExactError::ArgumentTooLarge`] when
     /// |λt + u₀| exceeds [`MAX_ARGUMENT`].
-    pub fn m_at(&self, t: f64) -> Result<[f64; 3], ExactError> {
+    pub fn m_at(&self, t: f64) -> Result<Vector3<f64>, ExactError> {
+        self.m_array_at(t).map(Vector3::from)
+    }
+
+    /// [`FreeBodyExact::m_at`] as an array, for the steppers' inner loops.
+    pub(crate) fn m_array_at(&self, t: f64) -> Result<[f64; 3], ExactError> {
         finite("t", t)?;
         if self.regime == Regime::Steady || t == 0.0 {
             return Ok(self.m0);
@@ -303,6 +314,17 @@ impl FreeBodyExact {
 ///
 /// # Errors
 /// As [`FreeBodyExact::new`] and [`FreeBodyExact::m_at`].
-pub fn free_body_flow(inertia: [f64; 3], m: [f64; 3], h: f64) -> Result<[f64; 3], ExactError> {
+pub fn free_body_flow(
+    inertia: impl Into<Vector3<f64>>,
+    m: impl Into<Vector3<f64>>,
+    h: f64,
+) -> Result<Vector3<f64>, ExactError> {
     FreeBodyExact::new(inertia, m)?.m_at(h)
+}
+
+/// The components of a vector given as anything that converts to one (`[x, y, z]` or a
+/// [`Vector3`]): the public boundary takes vectors, the arithmetic inside works on arrays.
+pub(crate) fn array(v: impl Into<Vector3<f64>>) -> [f64; 3] {
+    let v = v.into();
+    [v.x, v.y, v.z]
 }

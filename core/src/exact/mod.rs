@@ -17,4 +17,5 @@ pub use attitude::{FreeBodyAttitude, free_body_flow_attitude};
 pub use double_double::Dd;
 pub use elliptic::{Jacobi, MAX_ARGUMENT, ellip_k, sncndn};
 pub use error::ExactError;
+pub(crate) use free_body::array;
 pub use free_body::{FreeBodyExact, Regime, free_body_flow};

@@ -71,14 +71,14 @@ pub(crate) fn classify(eig: &[Complex<f64>], norm: f64, tol: f64) -> Stability {
 ///
 /// ```
 /// use approx::assert_relative_eq;
-/// use precess_core::body::euler_rhs_principal;
+/// use precess_core::body::euler_rhs_diagonal;
 /// use precess_core::linalg::{LinearSystem, Stability};
 /// use precess_core::nalgebra::Vector3;
 /// use precess_core::ode::FnSystem;
 ///
 /// let (i, w) = (Vector3::new(1.0, 2.0, 3.0), 5.0);
 /// let euler = FnSystem(move |_t: f64, y: &[f64; 3], d: &mut [f64; 3]| {
-///     let dw = euler_rhs_principal(&i, &Vector3::from(*y), &Vector3::zeros());
+///     let dw = euler_rhs_diagonal(&i, &Vector3::from(*y), &Vector3::zeros());
 ///     d.copy_from_slice(dw.as_slice());
 /// });
 /// let lin = LinearSystem::from_system(&euler, 0.0, &[0.0, w, 0.0])?;

@@ -170,6 +170,38 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         self.dense_ready = false;
     }
 
+    /// Starts again from `(t0, y0)` with the same system and settings, as [`Adaptive::new`]
+    /// would (f evaluated afresh, the first step size chosen again, the controller's memory
+    /// cleared), while the statistics keep counting: for a state moved to another chart of
+    /// the same motion, say, after [`Adaptive::modify_system`] has switched the chart.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`] or [`OdeError::NonFiniteInitialState`] for non-finite
+    /// input, [`OdeError::NonFiniteState`] if f is not finite there; the integrator is left
+    /// as it was on error.
+    pub fn restart(&mut self, t0: f64, y0: [f64; N]) -> Result<(), OdeError> {
+        check_span(t0, t0)?;
+        check_finite(&y0)?;
+        let mut f0 = [0.0; N];
+        self.sys.rhs(t0, &y0, &mut f0);
+        self.stats.rhs_evals += 1;
+        if !all_finite(&f0) {
+            return Err(OdeError::NonFiniteState { t: t0 });
+        }
+        // The next step takes f(t, y) from the FSAL stage once a step has been taken.
+        self.k[0] = f0;
+        self.k[P::FSAL] = f0;
+        (self.t, self.y, self.t_prev, self.y_prev) = (t0, y0, t0, y0);
+        self.dense_ready = false;
+        self.refresh = false;
+        self.control = PiController::new(P::ERR_EXPONENT, &self.cfg);
+        self.h = match self.cfg.h0 {
+            Some(h) => h.min(self.cfg.h_max),
+            None => self.initial_step(),
+        };
+        Ok(())
+    }
+
     /// Takes one accepted step that does not pass `t_limit` (it lands on it exactly when close).
     ///
     /// # Errors

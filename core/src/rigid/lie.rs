@@ -7,7 +7,7 @@ use super::kinematics::rotate_body;
 use super::state::{
     Attitude, AttitudeModel, RigidBodyModel, RigidState, check_attitude, check_rigid,
 };
-use crate::body::euler_rhs_principal;
+use crate::body::euler_rhs_diagonal;
 use crate::ode::{OdeError, check_inertia};
 
 /// An element of the algebra so(3) × ℝᵏ: a rotation part plus a vector part.
@@ -91,7 +91,7 @@ impl<M: AttitudeModel> LieSystem<Attitude> for M {
     fn xi(&self, t: f64, y: &Attitude) -> AttitudeTangent {
         AttitudeTangent {
             rot: y.omega,
-            domega: euler_rhs_principal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
+            domega: euler_rhs_diagonal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
         }
     }
     fn check(&self) -> Result<(), OdeError> {
@@ -156,7 +156,7 @@ impl<M: RigidBodyModel> LieSystem<RigidState> for M {
             dx: y.v,
             dv: self.force(t, y) / self.mass(),
             rot: y.omega,
-            domega: euler_rhs_principal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
+            domega: euler_rhs_diagonal(&self.inertia().into(), &y.omega, &self.torque(t, y)),
         }
     }
     fn check(&self) -> Result<(), OdeError> {

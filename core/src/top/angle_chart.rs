@@ -43,3 +43,23 @@ pub trait AngleChart: System<6> {
         rates_from_omega(self.sequence(), &b, q, omega)
     }
 }
+
+/// Borrowed charts are charts: `ChartedTop::new([&a, &b], …)` for models that are costly to
+/// clone, such as the interpreted [`super::TopModel`].
+impl<C: AngleChart + ?Sized> AngleChart for &C {
+    fn sequence(&self) -> AngleSequence {
+        (**self).sequence()
+    }
+    fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        (**self).rotation_at(state)
+    }
+    fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
+        (**self).rate_matrix_at(state)
+    }
+    fn energy_at(&self, state: &[f64; 6]) -> f64 {
+        (**self).energy_at(state)
+    }
+    fn omega_at(&self, state: &[f64; 6]) -> Vector3<f64> {
+        (**self).omega_at(state)
+    }
+}

@@ -14,7 +14,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::angle_chart::AngleChart;
 use super::error::{ChartError, TopError};
 use super::rates::rates_from_omega;
-use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats};
+use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats, System};
 use crate::rigid::{AngleSequence, angles_from_rotation};
 
 /// When to switch charts, and the integrator settings.
@@ -64,7 +64,7 @@ pub const ROTATION_TOLERANCE: f64 = 1e-9;
 ///
 /// let [zxz, zyx] = TopChart::both(&Heavy);
 /// let (r0, w0) = (Matrix3::identity(), Vector3::new(0.0, 0.0, 6.0));
-/// let mut top = ChartedTop::new([&zxz, &zyx], 0.0, &r0, &w0, ChartConfig::default())?;
+/// let mut top = ChartedTop::new([zxz, zyx], 0.0, &r0, &w0, ChartConfig::default())?;
 /// assert_eq!(top.sequence(), AngleSequence::Zyx);
 /// top.advance_to(5.0)?;
 /// let spun = Rotation3::from_axis_angle(&Vector3::z_axis(), 30.0);
@@ -72,17 +72,36 @@ pub const ROTATION_TOLERANCE: f64 = 1e-9;
 /// assert_relative_eq!(top.omega(), w0, epsilon = 1e-9);
 /// # Ok::<(), precess::top::ChartError>(())
 /// ```
-pub struct ChartedTop<'m, C> {
-    charts: [&'m C; 2],
-    active: usize,
-    ode: Dop853<&'m C, 6>,
+///
+/// The two charts are taken by value as `[C; 2]`, the type [`super::TopChart::both`]
+/// returns; borrowed charts work too (`[&a, &b]`), as [`AngleChart`] is implemented for
+/// references.
+pub struct ChartedTop<C> {
+    ode: Dop853<Charts<C>, 6>,
     config: ChartConfig,
     switches: usize,
-    /// Work done in the charts left behind.
-    finished: Stats,
 }
 
-impl<'m, C: AngleChart> ChartedTop<'m, C> {
+/// The two charts as one ODE system that evaluates the active one, so that the driver owns
+/// them and a switch only changes `active`.
+struct Charts<C> {
+    charts: [C; 2],
+    active: usize,
+}
+
+impl<C: AngleChart> Charts<C> {
+    fn active(&self) -> &C {
+        &self.charts[self.active]
+    }
+}
+
+impl<C: AngleChart> System<6> for Charts<C> {
+    fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
+        self.active().rhs(t, y, dydt);
+    }
+}
+
+impl<C: AngleChart> ChartedTop<C> {
     /// Starts from an attitude `r` (body to space) and a body angular velocity `omega`, in
     /// the better-conditioned of the two charts.
     ///
@@ -94,7 +113,7 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
     /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
     /// for bad settings or time.
     pub fn new(
-        charts: [&'m C; 2],
+        charts: [C; 2],
         t0: f64,
         r: &Matrix3<f64>,
         omega: &Vector3<f64>,
@@ -113,7 +132,7 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
                 omega: [omega.x, omega.y, omega.z],
             });
         }
-        let states = [0, 1].map(|k| state_in(charts[k], r, omega));
+        let states = [0, 1].map(|k| state_in(&charts[k], r, omega));
         let det = |s: &Result<([f64; 6], f64), TopError>| match s {
             Ok((_, det)) | Err(TopError::SingularChart { det, .. }) => *det,
             Err(_) => f64::NAN,
@@ -130,14 +149,11 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
                 });
             }
         };
-        let ode = Dop853::new(charts[active], t0, state, config.stepper)?;
+        let ode = Dop853::new(Charts { charts, active }, t0, state, config.stepper)?;
         Ok(ChartedTop {
-            charts,
-            active,
             ode,
             config,
             switches: 0,
-            finished: Stats::default(),
         })
     }
 
@@ -170,26 +186,26 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
     /// better conditioned; stays put otherwise (the active chart is then still regular).
     fn maybe_switch(&mut self) -> Result<(), ChartError> {
         let y = *self.ode.y();
-        let here = self.charts[self.active];
+        let charts = self.ode.system();
+        let here = charts.active();
         // |det B(q)| is zero exactly at the chart's singularity.
         let det_here = here.rate_matrix_at(&y).determinant().abs();
         if det_here >= self.config.switch_below {
             return Ok(());
         }
-        let other = 1 - self.active;
+        let other = 1 - charts.active;
         let r = here.rotation_at(&y);
         let w = here.omega_at(&y);
-        let Ok((s, det_other)) = state_in(self.charts[other], &r, &w) else {
+        let Ok((s, det_other)) = state_in(&charts.charts[other], &r, &w) else {
             return Ok(());
         };
         if det_other <= det_here {
             return Ok(());
         }
-        let ode = Dop853::new(self.charts[other], self.ode.t(), s, self.config.stepper)?;
-        let done = self.ode.stats();
-        self.finished += done;
-        self.ode = ode;
-        self.active = other;
+        // A fresh start in the other chart, its first step size from its own f.
+        let t = self.ode.t();
+        self.ode.modify_system(|charts| charts.active = other);
+        self.ode.restart(t, s)?;
         self.switches += 1;
         Ok(())
     }
@@ -206,27 +222,27 @@ impl<'m, C: AngleChart> ChartedTop<'m, C> {
 
     /// The active chart's angle sequence.
     pub fn sequence(&self) -> AngleSequence {
-        self.charts[self.active].sequence()
+        self.ode.system().active().sequence()
     }
 
     /// The attitude R, body to space.
     pub fn rotation(&self) -> Matrix3<f64> {
-        self.charts[self.active].rotation_at(self.ode.y())
+        self.ode.system().active().rotation_at(self.ode.y())
     }
 
     /// The body angular velocity ω.
     pub fn omega(&self) -> Vector3<f64> {
-        self.charts[self.active].omega_at(self.ode.y())
+        self.ode.system().active().omega_at(self.ode.y())
     }
 
     /// The energy T + V.
     pub fn energy(&self) -> f64 {
-        self.charts[self.active].energy_at(self.ode.y())
+        self.ode.system().active().energy_at(self.ode.y())
     }
 
     /// The work done so far, over every chart.
     pub fn stats(&self) -> Stats {
-        self.finished + self.ode.stats()
+        self.ode.stats()
     }
 
     /// How many times the driver changed chart.

@@ -4,7 +4,7 @@
 
 use std::cell::RefCell;
 
-use nalgebra::Matrix3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
 use super::error::{ModelError, TopError};
@@ -234,8 +234,8 @@ impl TopModel {
     }
 
     /// The body angular velocity ω.
-    pub fn omega(&self, state: &[f64; 6]) -> [f64; 3] {
-        self.run(&self.omega, 0.0, state)
+    pub fn omega(&self, state: &[f64; 6]) -> Vector3<f64> {
+        self.run::<3>(&self.omega, 0.0, state).into()
     }
 
     /// The momenta `p_i = ∂L/∂q̇_i`.
@@ -243,16 +243,16 @@ impl TopModel {
         self.run(&self.momenta, 0.0, state)
     }
 
-    /// The attitude R(q), body to space, row-major.
-    pub fn rotation(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+    /// The attitude R(q), body to space.
+    pub fn rotation(&self, state: &[f64; 6]) -> Matrix3<f64> {
         let r: [f64; 9] = self.run(&self.rotation, 0.0, state);
-        [[r[0], r[1], r[2]], [r[3], r[4], r[5]], [r[6], r[7], r[8]]]
+        Matrix3::from_row_slice(&r)
     }
 
-    /// B(q) with ω = B q̇, row-major.
-    pub fn rate_matrix(&self, state: &[f64; 6]) -> [[f64; 3]; 3] {
+    /// B(q) with ω = B q̇.
+    pub fn rate_matrix(&self, state: &[f64; 6]) -> Matrix3<f64> {
         let b: [f64; 9] = self.run(&self.rate_matrix, 0.0, state);
-        [[b[0], b[1], b[2]], [b[3], b[4], b[5]], [b[6], b[7], b[8]]]
+        Matrix3::from_row_slice(&b)
     }
 
     /// The angle sequence of the state.
@@ -274,12 +274,10 @@ impl AngleChart for TopModel {
         self.sequence
     }
     fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        let r = self.rotation(state);
-        Matrix3::from_fn(|i, j| r[i][j])
+        self.rotation(state)
     }
     fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        let b = self.rate_matrix(state);
-        Matrix3::from_fn(|i, j| b[i][j])
+        self.rate_matrix(state)
     }
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         self.energy(state)

@@ -100,11 +100,11 @@ pub fn expand(
         }
         Frame::DecomposedAtRunTime => quote!(#p::principal_frame(&#p::RigidBody::inertia(self))),
     };
-    let rhs = match checked.body.euler_rhs(arena, omega_in, torque_in) {
+    let rhs = match checked.body.euler_rhs_principal(arena, omega_in, torque_in) {
         Ok(Some(rhs)) => method_body(&low, arena, &rhs, vector),
         Ok(None) => quote! {
             let principal = #p::RigidBody::principal(self);
-            #p::euler_rhs_principal(&principal.moments, omega, torque)
+            #p::euler_rhs_diagonal(&principal.moments, omega, torque)
         },
         Err(e) => {
             cx.error_spanned_by(ident, format!("cannot form Euler's equations: {e}"));
@@ -140,7 +140,7 @@ pub fn expand(
             #[inline]
             fn principal(&self) -> #p::Principal { #principal }
             #[inline]
-            fn euler_rhs(&self, omega: &#p::Vector3<f64>, torque: &#p::Vector3<f64>) -> #p::Vector3<f64> { #rhs }
+            fn euler_rhs_principal(&self, omega: &#p::Vector3<f64>, torque: &#p::Vector3<f64>) -> #p::Vector3<f64> { #rhs }
             fn description(&self) -> #p::Description<f64> { #d }
             #validate
         }

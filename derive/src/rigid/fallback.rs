@@ -25,7 +25,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             fn inertia(&self) -> #p::Matrix3<f64> { #stub }
             fn inertia_cm(&self) -> #p::Matrix3<f64> { #stub }
             fn principal(&self) -> #p::Principal { #stub }
-            fn euler_rhs(&self, _: &#p::Vector3<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
+            fn euler_rhs_principal(&self, _: &#p::Vector3<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
         }
     }
 }

@@ -7,8 +7,9 @@
 //! with the others and is applied once per step. Strang gives order 2; the triple jump
 //! (Yoshida 1990) gives 4, and applied again, 6.
 
-use nalgebra::{Quaternion, UnitQuaternion};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
+use crate::exact::array;
 use crate::ode::{OdeError, check_inertia};
 use crate::rigid::kinematics::rotate_body;
 use crate::rigid::state::{BodyMomentum, check_momentum, momentum_is_finite};
@@ -85,7 +86,8 @@ impl FreeBodySplitting {
     ///
     /// # Errors
     /// [`OdeError::InvalidInertia`] unless the moments are finite and > 0.
-    pub fn new(inertia: [f64; 3], order: SplittingOrder) -> Result<Self, OdeError> {
+    pub fn new(inertia: impl Into<Vector3<f64>>, order: SplittingOrder) -> Result<Self, OdeError> {
+        let inertia = array(inertia);
         check_inertia(1.0, inertia)?;
         Ok(Self {
             inertia,
@@ -96,8 +98,8 @@ impl FreeBodySplitting {
     }
 
     /// Principal moments.
-    pub fn inertia(&self) -> [f64; 3] {
-        self.inertia
+    pub fn inertia(&self) -> Vector3<f64> {
+        self.inertia.into()
     }
 
     /// The exact flow of ½ m₁²(1/I₁ − 1/I₂) for time τ: a rotation about body axis 1.

@@ -4,7 +4,7 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::free::{FreeBodySplitting, check_step};
-use crate::exact::free_body_flow_attitude;
+use crate::exact::{array, free_body_flow_attitude};
 use crate::ode::{OdeError, check_inertia};
 use crate::rigid::state::{BodyMomentum, check_momentum, momentum_is_finite};
 
@@ -60,7 +60,7 @@ impl Potential for Gravity {
 /// A free-body flow usable as the kinetic part of a splitting.
 pub trait FreeFlow {
     /// Principal moments.
-    fn inertia(&self) -> [f64; 3];
+    fn inertia(&self) -> Vector3<f64>;
     /// Advances (q, m) by the free motion over `h`.
     ///
     /// # Errors
@@ -69,7 +69,7 @@ pub trait FreeFlow {
 }
 
 impl FreeFlow for FreeBodySplitting {
-    fn inertia(&self) -> [f64; 3] {
+    fn inertia(&self) -> Vector3<f64> {
         FreeBodySplitting::inertia(self)
     }
     fn flow(&self, y: &mut BodyMomentum, h: f64) -> Result<(), OdeError> {
@@ -92,20 +92,21 @@ impl ExactFreeFlow {
     ///
     /// # Errors
     /// [`OdeError::InvalidInertia`].
-    pub fn new(inertia: [f64; 3]) -> Result<Self, OdeError> {
+    pub fn new(inertia: impl Into<Vector3<f64>>) -> Result<Self, OdeError> {
+        let inertia = array(inertia);
         check_inertia(1.0, inertia)?;
         Ok(Self { inertia })
     }
 }
 
 impl FreeFlow for ExactFreeFlow {
-    fn inertia(&self) -> [f64; 3] {
-        self.inertia
+    fn inertia(&self) -> Vector3<f64> {
+        self.inertia.into()
     }
     fn flow(&self, y: &mut BodyMomentum, h: f64) -> Result<(), OdeError> {
-        let (q, m) = free_body_flow_attitude(self.inertia, y.q, y.m.into(), h)?;
+        let (q, m) = free_body_flow_attitude(self.inertia, y.q, y.m, h)?;
         y.q = q;
-        y.m = m.into();
+        y.m = m;
         Ok(())
     }
 }

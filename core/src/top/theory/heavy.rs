@@ -1,7 +1,7 @@
 //! The symmetric heavy top's parameters and the answers that need no initial state: steady
 //! precession, its small nutation, the sleeping top, and the reduced system in θ.
 
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, Vector3};
 
 use super::error::{TheoryError, finite};
 use super::motion::HeavyTopMotion;
@@ -124,8 +124,9 @@ impl HeavyTopTheory {
     /// # Errors
     /// [`TheoryError::NotSymmetric`] if I1 and I2 differ by more than
     /// [`SYMMETRY_TOLERANCE`] relative; as [`HeavyTopTheory::new`].
-    pub fn from_principal(moments: [f64; 3], mgl: f64) -> Result<Self, TheoryError> {
-        let [i1, i2, i3] = moments;
+    pub fn from_principal(moments: impl Into<Vector3<f64>>, mgl: f64) -> Result<Self, TheoryError> {
+        let moments = moments.into();
+        let (i1, i2, i3) = (moments.x, moments.y, moments.z);
         finite("I2", i2)?;
         let me = Self::new(i1, i3, mgl)?;
         let relative = (i1 - i2).abs() / i1.max(i2);

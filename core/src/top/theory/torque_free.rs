@@ -1,6 +1,8 @@
 //! The torque-free symmetric body: ω cones about the symmetry axis in the body, and the axis
 //! cones about the fixed angular momentum in space.
 
+use nalgebra::Vector3;
+
 use super::error::{TheoryError, finite};
 
 /// A symmetric rigid body (I1 = I2, axial I3) under no torque, from its body angular
@@ -31,7 +33,7 @@ use super::error::{TheoryError, finite};
 pub struct TorqueFreeSymmetric {
     i1: f64,
     i3: f64,
-    omega: [f64; 3],
+    omega: Vector3<f64>,
 }
 
 impl TorqueFreeSymmetric {
@@ -40,14 +42,15 @@ impl TorqueFreeSymmetric {
     ///
     /// # Errors
     /// [`TheoryError::NonFinite`]; [`TheoryError::NonPositiveMoment`].
-    pub fn new(i1: f64, i3: f64, omega: [f64; 3]) -> Result<Self, TheoryError> {
+    pub fn new(i1: f64, i3: f64, omega: impl Into<Vector3<f64>>) -> Result<Self, TheoryError> {
+        let omega = omega.into();
         for (moment, value) in [("I1", i1), ("I3", i3)] {
             finite(moment, value)?;
             if value <= 0.0 {
                 return Err(TheoryError::NonPositiveMoment { moment, value });
             }
         }
-        for w in omega {
+        for &w in omega.iter() {
             finite("ω", w)?;
         }
         Ok(TorqueFreeSymmetric { i1, i3, omega })
@@ -61,7 +64,7 @@ impl TorqueFreeSymmetric {
 
     /// |L| = √(I1² (ω1² + ω2²) + I3² ω3²).
     pub fn angular_momentum(&self) -> f64 {
-        let [w1, w2, w3] = self.omega;
+        let (w1, w2, w3) = (self.omega.x, self.omega.y, self.omega.z);
         (self.i1 * w1.hypot(w2)).hypot(self.i3 * w3)
     }
 
@@ -72,7 +75,7 @@ impl TorqueFreeSymmetric {
 
     /// The constant angle between the symmetry axis and L, atan2(I1 |ω⊥|, I3 ω3).
     pub fn axis_angle(&self) -> f64 {
-        let [w1, w2, w3] = self.omega;
+        let (w1, w2, w3) = (self.omega.x, self.omega.y, self.omega.z);
         (self.i1 * w1.hypot(w2)).atan2(self.i3 * w3)
     }
 
@@ -80,10 +83,10 @@ impl TorqueFreeSymmetric {
     ///
     /// # Errors
     /// [`TheoryError::NonFinite`] for a non-finite t.
-    pub fn omega_at(&self, t: f64) -> Result<[f64; 3], TheoryError> {
+    pub fn omega_at(&self, t: f64) -> Result<Vector3<f64>, TheoryError> {
         finite("t", t)?;
         let (s, c) = (self.body_cone_rate() * t).sin_cos();
-        let [w1, w2, w3] = self.omega;
-        Ok([c * w1 - s * w2, s * w1 + c * w2, w3])
+        let (w1, w2, w3) = (self.omega.x, self.omega.y, self.omega.z);
+        Ok(Vector3::new(c * w1 - s * w2, s * w1 + c * w2, w3))
     }
 }
