@@ -201,7 +201,7 @@ fn zxz_alone_struggles_near_the_singularity() {
             eprintln!(
                 "ZXZ alone: {steps} steps, error {gap:e}; charted: {charted_steps} steps, error {charted_gap:e}"
             );
-            assert!(gap > 100.0 * charted_gap && steps > 5 * charted_steps);
+            assert!(gap > 10.0 * charted_gap && steps > 5 * charted_steps);
         }
     }
 }

@@ -64,7 +64,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             y_prev: y0,
             dense: [[0.0; N]; 9],
             dense_ready: false,
-            control: PiController::new(P::ERR_EXPONENT, &cfg),
+            control: PiController::new::<P>(&cfg),
             refresh: false,
             stats: Stats {
                 rhs_evals: 1,
@@ -194,7 +194,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         (self.t, self.y, self.t_prev, self.y_prev) = (t0, y0, t0, y0);
         self.dense_ready = false;
         self.refresh = false;
-        self.control = PiController::new(P::ERR_EXPONENT, &self.cfg);
+        self.control = PiController::new::<P>(&self.cfg);
         self.h = match self.cfg.h0 {
             Some(h) => h.min(self.cfg.h_max),
             None => self.initial_step(),

@@ -2,6 +2,8 @@
 //! one fixed-step configuration shared by RK4 and the Lie-group RKMK4.
 
 use super::error::OdeError;
+#[cfg(doc)]
+use super::pairs::ControllerGains;
 
 /// Settings of the adaptive driver. Every field has a documented default
 /// (`AdaptiveConfig::default()`), so callers override only what they mean.
@@ -18,13 +20,17 @@ pub struct AdaptiveConfig {
     pub h_max: f64,
     /// Safety factor on the proposed step (default 0.9).
     pub safety: f64,
-    /// Smallest ratio h_new/h after a step (default 0.2).
-    pub fac_min: f64,
-    /// Largest ratio h_new/h after a step (default 10).
-    pub fac_max: f64,
-    /// Integral gain of the PI controller, Hairer's β (default 0.04; 0 gives the I controller):
-    /// h_new = h · safety · err^(−α) · err_prev^β with α = 1/(q+1) − 0.75 β.
-    pub beta: f64,
+    /// Smallest ratio h_new/h after a step; `None` (default) takes the pair's
+    /// ([`ControllerGains`]: 0.2 for DOPRI5 and Vern9, 0.333 for DOP853).
+    pub fac_min: Option<f64>,
+    /// Largest ratio h_new/h after a step; `None` (default) takes the pair's (10 for DOPRI5
+    /// and Vern9, 6 for DOP853).
+    pub fac_max: Option<f64>,
+    /// Integral gain of the PI controller, Hairer's β, in [0, 0.2] (0 is the I controller):
+    /// h_new = h · safety · err^(−α) · err_prev^β with α = 1/(q+1) − w β, w the pair's
+    /// `beta_weight`. `None` (default) takes the pair's: 0.04 for DOPRI5 and Vern9, 0 for
+    /// DOP853, as Hairer's codes do.
+    pub beta: Option<f64>,
     /// Largest number of step attempts before [`OdeError::MaxStepsExceeded`] (default 100 000).
     pub max_steps: u64,
 }
@@ -37,9 +43,9 @@ impl Default for AdaptiveConfig {
             h0: None,
             h_max: f64::INFINITY,
             safety: 0.9,
-            fac_min: 0.2,
-            fac_max: 10.0,
-            beta: 0.04,
+            fac_min: None,
+            fac_max: None,
+            beta: None,
             max_steps: 100_000,
         }
     }
@@ -89,15 +95,19 @@ impl AdaptiveConfig {
             ),
             (
                 "fac_min",
-                self.fac_min,
-                self.fac_min > 0.0 && self.fac_min < 1.0,
+                self.fac_min.unwrap_or(0.5),
+                self.fac_min.is_none_or(|f| f > 0.0 && f < 1.0),
             ),
             (
                 "fac_max",
-                self.fac_max,
-                self.fac_max > 1.0 && self.fac_max.is_finite(),
+                self.fac_max.unwrap_or(2.0),
+                self.fac_max.is_none_or(|f| f > 1.0 && f.is_finite()),
             ),
-            ("beta", self.beta, (0.0..=0.2).contains(&self.beta)),
+            (
+                "beta",
+                self.beta.unwrap_or(0.0),
+                self.beta.is_none_or(|b| (0.0..=0.2).contains(&b)),
+            ),
         ];
         for (name, value, ok) in checks {
             if !ok {

@@ -24,6 +24,8 @@ pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span};
-pub use pairs::{DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair};
+pub use pairs::{
+    ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,
+};
 pub use rk4::Rk4;
 pub use system::{FnSystem, Stats, System};

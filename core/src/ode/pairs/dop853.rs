@@ -7,7 +7,9 @@
 //! the source; the order conditions are checked numerically in the tests.
 #![allow(clippy::excessive_precision)]
 
-use super::{DenseCoeffs, EmbeddedPair, Stages, error_scale, stage_state, stages, weighted};
+use super::{
+    ControllerGains, DenseCoeffs, EmbeddedPair, Stages, error_scale, stage_state, stages, weighted,
+};
 use crate::ode::system::System;
 
 /// Nodes `c` of DOP853: 12 stages, the FSAL stage and three dense-output stages.
@@ -291,6 +293,12 @@ impl EmbeddedPair for Dop853Pair {
     const NAME: &'static str = "DOP853";
     const ORDER: u32 = 8;
     const ERR_EXPONENT: f64 = 0.125;
+    const GAINS: ControllerGains = ControllerGains {
+        beta: 0.0,
+        beta_weight: 0.2,
+        fac_min: 0.333,
+        fac_max: 6.0,
+    };
     const FSAL: usize = 12;
 
     fn try_step<S: System<N>, const N: usize>(

@@ -4,7 +4,9 @@
 //! Rows of `A` hold the non-zero prefix of the strictly lower triangle; missing entries are
 //! zero. The order conditions are checked numerically in the tests (convergence order).
 
-use super::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stage_state, stages, weighted};
+use super::{
+    ControllerGains, DenseCoeffs, EmbeddedPair, Stages, rms_error, stage_state, stages, weighted,
+};
 use crate::ode::system::System;
 
 /// Nodes `c` of Dormand–Prince 5(4).
@@ -69,6 +71,12 @@ impl EmbeddedPair for Dopri5Pair {
     const NAME: &'static str = "DOPRI5";
     const ORDER: u32 = 5;
     const ERR_EXPONENT: f64 = 0.2;
+    const GAINS: ControllerGains = ControllerGains {
+        beta: 0.04,
+        beta_weight: 0.75,
+        fac_min: 0.2,
+        fac_max: 10.0,
+    };
     const FSAL: usize = 6;
 
     fn try_step<S: System<N>, const N: usize>(

@@ -21,6 +21,27 @@ pub type Stages<const N: usize> = [[f64; N]; 21];
 /// Coefficients of the dense-output polynomial of the last step.
 pub type DenseCoeffs<const N: usize> = [[f64; N]; 9];
 
+/// Defaults of the PI step-size controller for one pair, as in Hairer's codes (HNW I §II.4,
+/// and the `dopri5.f` / `dop853.f` sources): h_new = h · safety · err^(−α) · err_prev^β with
+/// α = 1/(q+1) − `beta_weight` · β, and h_new/h held in [`fac_min`, `fac_max`].
+///
+/// | pair | β | `beta_weight` | `fac_min` | `fac_max` |
+/// |---|---|---|---|---|
+/// | DOPRI5 (`dopri5.f`) | 0.04 | 0.75 | 0.2 | 10 |
+/// | DOP853 (`dop853.f`) | 0 | 0.2 | 0.333 | 6 |
+/// | Vern9 (no reference code: DOPRI5's, which measured better than DOP853's here) | 0.04 | 0.75 | 0.2 | 10 |
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ControllerGains {
+    /// Hairer's β, the weight of the previous error (0: the I controller).
+    pub beta: f64,
+    /// The factor of β in α = 1/(q+1) − `beta_weight` · β.
+    pub beta_weight: f64,
+    /// Smallest ratio h_new/h.
+    pub fac_min: f64,
+    /// Largest ratio h_new/h.
+    pub fac_max: f64,
+}
+
 /// An explicit embedded Runge–Kutta pair with FSAL and a continuous extension.
 ///
 /// Implementations hold no data: the driver [`Adaptive`](super::Adaptive) owns the stages.
@@ -34,6 +55,9 @@ pub trait EmbeddedPair {
     const ERR_EXPONENT: f64;
     /// Index of the stage that holds `f(t + h, y_new)` after an accepted step.
     const FSAL: usize;
+    /// The step-size controller's defaults for this pair, used where
+    /// [`AdaptiveConfig`](super::AdaptiveConfig) leaves them `None`.
+    const GAINS: ControllerGains;
 
     /// Computes stages 2… from `k[0] = f(t, y)`, writes the solution to `y_new` and returns
     /// the scaled RMS error norm (≤ 1 means accept) and the number of `f` evaluations.

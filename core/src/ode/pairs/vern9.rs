@@ -8,7 +8,7 @@
 //! four more evaluations per step, made only when dense output is asked for.
 #![allow(clippy::excessive_precision)]
 
-use super::{DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
+use super::{ControllerGains, DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
 use crate::ode::system::System;
 
 /// Nodes c of Verner 9(8): 16 stepping stages, f at the new point, and four stages of
@@ -471,6 +471,12 @@ impl EmbeddedPair for Vern9Pair {
     const NAME: &'static str = "Vern9";
     const ORDER: u32 = 9;
     const ERR_EXPONENT: f64 = 1.0 / 9.0;
+    const GAINS: ControllerGains = ControllerGains {
+        beta: 0.04,
+        beta_weight: 0.75,
+        fac_min: 0.2,
+        fac_max: 10.0,
+    };
     const FSAL: usize = 16;
 
     fn try_step<S: System<N>, const N: usize>(
