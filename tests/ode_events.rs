@@ -12,7 +12,7 @@ use precess::nalgebra::{UnitQuaternion, Vector3};
 use precess::prelude::TopDynamics;
 use precess_core::ode::{
     AdaptiveConfig, Direction, Dop853, Dopri5, Event, FixedStepConfig, FixedStepper, FnSystem,
-    OdeError, Rk4, Run, StopReason, Stepper, Vern9,
+    OdeError, Rk4, Run, Stepper, StopReason, Vern9,
 };
 use precess_core::rigid::{
     BodyMomentum, ExactFreeFlow, FreeBodySplitting, Gravity, PotentialSplitting, SplittingOrder,
@@ -57,10 +57,7 @@ fn a_falling_point_stops_at_the_floor_with_every_stepper() {
     // Verner's interpolant has coefficients up to 1e4 that cancel, so its round-off is a
     // few 1e-12 of h |f|: with the 0.5 s to 4.5 s steps this problem lets the controller
     // take, 2e-12 in t. Steps of 0.1 s keep it near 1e-15 (docs/trajectories.md).
-    let bounded = AdaptiveConfig {
-        h_max: 0.1,
-        ..cfg
-    };
+    let bounded = AdaptiveConfig { h_max: 0.1, ..cfg };
     lands_on_the_floor(Vern9::new(falling(), 0.0, y0, bounded).unwrap());
     lands_on_the_floor(Rk4::new(falling(), 0.0, y0, FixedStepConfig::with_step(0.1)).unwrap());
 }
@@ -110,7 +107,13 @@ fn directions_filter_the_zeros_of_sin() {
 fn rk4_locates_on_its_own_partial_steps() {
     // RK4 with h = 0.01 is accurate to ~1e-10 here; the event time follows it, not the
     // 0.01 grid, and g at the reported state is 0 to the resolution of t.
-    let mut rk = Rk4::new(oscillator(), 0.0, [0.0, 1.0], FixedStepConfig::with_step(0.01)).unwrap();
+    let mut rk = Rk4::new(
+        oscillator(),
+        0.0,
+        [0.0, 1.0],
+        FixedStepConfig::with_step(0.01),
+    )
+    .unwrap();
     let out = Run::new(&mut rk, 7.0)
         .event(Event::new("zero"), |_t, y| y[0])
         .integrate()
@@ -121,7 +124,11 @@ fn rk4_locates_on_its_own_partial_steps() {
     assert_relative_eq!(ts[1], 2.0 * PI, max_relative = 1e-9);
     for h in &out.events {
         // |g| ≤ |ġ| · a few ulps of t, with |ġ| = |cos t| = 1.
-        assert!(h.state[0].abs() <= 8.0 * f64::EPSILON * h.t, "{}", h.state[0]);
+        assert!(
+            h.state[0].abs() <= 8.0 * f64::EPSILON * h.t,
+            "{}",
+            h.state[0]
+        );
     }
 }
 
@@ -260,11 +267,20 @@ fn flips_near_the_intermediate_axis_are_2k_over_lambda_apart() {
         .integrate()
         .unwrap();
     assert_eq!(out.events.len(), 2);
-    assert_relative_eq!(out.events[1].t, first + 2.0 * interval, max_relative = 5e-11);
+    assert_relative_eq!(
+        out.events[1].t,
+        first + 2.0 * interval,
+        max_relative = 5e-11
+    );
 
     // RK4.
-    let mut rk = Rk4::new(FreeBody([3.0, 5.0, 9.0]), 0.0, y0, FixedStepConfig::with_step(0.02))
-        .unwrap();
+    let mut rk = Rk4::new(
+        FreeBody([3.0, 5.0, 9.0]),
+        0.0,
+        y0,
+        FixedStepConfig::with_step(0.02),
+    )
+    .unwrap();
     let out = Run::new(&mut rk, t_end)
         .event(Event::new("omega2"), |_t, m| m[1] / 5.0)
         .integrate()
@@ -291,7 +307,15 @@ fn flips_near_the_intermediate_axis_are_2k_over_lambda_apart() {
 fn a_terminal_event_drops_the_later_crossings_of_its_step() {
     // RK4 with h = 2 on y = sin t: the step [2, 4] holds y = 0.5 falling (near 5π/6) and
     // y = 0 (near π). The terminal one ends the run; the later zero is not reported.
-    let rk = || Rk4::new(oscillator(), 0.0, [0.0, 1.0], FixedStepConfig::with_step(2.0)).unwrap();
+    let rk = || {
+        Rk4::new(
+            oscillator(),
+            0.0,
+            [0.0, 1.0],
+            FixedStepConfig::with_step(2.0),
+        )
+        .unwrap()
+    };
     let mut free = rk();
     let all = Run::new(&mut free, 4.0)
         .event(Event::new("zero"), |_t, y| y[0])
@@ -301,7 +325,10 @@ fn a_terminal_event_drops_the_later_crossings_of_its_step() {
     let times: Vec<(usize, f64)> = all.events.iter().map(|h| (h.index, h.t)).collect();
     assert_eq!(times.len(), 2);
     assert!(times[0].0 == 1 && times[1].0 == 0, "{times:?}");
-    assert!(times.iter().all(|(_, t)| (2.0..4.0).contains(t)), "{times:?}");
+    assert!(
+        times.iter().all(|(_, t)| (2.0..4.0).contains(t)),
+        "{times:?}"
+    );
 
     let mut stopped = rk();
     let out = Run::new(&mut stopped, 4.0)
@@ -358,10 +385,14 @@ fn bad_input_is_a_typed_error() {
     assert!(matches!(err, OdeError::NonFiniteEvent { index: 1, t: 0.0, value } if value.is_nan()));
     let mut ode = start();
     let err = Run::new(&mut ode, 3.0)
-        .event(Event::new("blows up"), |t, _y| if t < 1.0 { 1.0 } else { f64::INFINITY })
+        .event(Event::new("blows up"), |t, _y| {
+            if t < 1.0 { 1.0 } else { f64::INFINITY }
+        })
         .integrate()
         .unwrap_err();
-    assert!(matches!(err, OdeError::NonFiniteEvent { index: 0, t, value } if t >= 1.0 && value == f64::INFINITY));
+    assert!(
+        matches!(err, OdeError::NonFiniteEvent { index: 0, t, value } if t >= 1.0 && value == f64::INFINITY)
+    );
     // End times.
     let mut ode = start();
     let err = Run::new(&mut ode, f64::NAN).integrate().unwrap_err();
@@ -371,26 +402,54 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(err, OdeError::StopBeforeCurrent { stop: -1.0, t: 0.0 });
     // Sample times: after the end, unsorted, not finite; a sample interval that is not > 0.
     let mut ode = start();
-    let err = Run::new(&mut ode, 1.0).sample_at([0.5, 2.0]).integrate().unwrap_err();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([0.5, 2.0])
+        .integrate()
+        .unwrap_err();
     assert_eq!(err, OdeError::SampleAfterEnd { t: 2.0, t_end: 1.0 });
     let mut ode = start();
-    let err = Run::new(&mut ode, 1.0).sample_at([0.5, 0.25]).integrate().unwrap_err();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([0.5, 0.25])
+        .integrate()
+        .unwrap_err();
     assert_eq!(err, OdeError::StopBeforeCurrent { stop: 0.25, t: 0.5 });
     let mut ode = start();
-    let err = Run::new(&mut ode, 1.0).sample_at([f64::INFINITY]).integrate().unwrap_err();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([f64::INFINITY])
+        .integrate()
+        .unwrap_err();
     assert_eq!(err, OdeError::NonFiniteTime { t: f64::INFINITY });
     let mut ode = start();
-    let err = Run::new(&mut ode, 1.0).sample_every(0.0).integrate().unwrap_err();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_every(0.0)
+        .integrate()
+        .unwrap_err();
     assert_eq!(err, OdeError::InvalidStep { h: 0.0 });
     // The solution inside the last step, and nowhere else.
-    let mut rk = Rk4::new(oscillator(), 0.0, [0.0, 1.0], FixedStepConfig::with_step(0.1)).unwrap();
+    let mut rk = Rk4::new(
+        oscillator(),
+        0.0,
+        [0.0, 1.0],
+        FixedStepConfig::with_step(0.1),
+    )
+    .unwrap();
     Stepper::step(&mut rk, 1.0).unwrap();
     let err = rk.state_at(0.2).unwrap_err();
-    assert_eq!(err, OdeError::OutsideLastStep { t: 0.2, t_prev: 0.0, t_now: 0.1 });
+    assert_eq!(
+        err,
+        OdeError::OutsideLastStep {
+            t: 0.2,
+            t_prev: 0.0,
+            t_now: 0.1
+        }
+    );
     // RK4's own half step: local error h⁵/120 = 2.6e-9.
     assert_relative_eq!(rk.state_at(0.05).unwrap()[0], 0.05f64.sin(), epsilon = 3e-9);
     let err = rk.restart(0.0, [f64::NAN, 0.0]).unwrap_err();
-    assert!(matches!(err, OdeError::NonFiniteInitialState { index: 0, .. }));
+    assert!(matches!(
+        err,
+        OdeError::NonFiniteInitialState { index: 0, .. }
+    ));
 }
 
 #[test]

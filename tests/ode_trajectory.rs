@@ -63,7 +63,13 @@ fn samples_every_dt_reach_the_end() {
 fn rk4_samples_are_its_own_partial_steps() {
     // A partial step of RK4 from the step's start is RK4's answer there: compared with the
     // closed form at RK4's accuracy (h = 0.01: global error ~1e-10), not with the grid.
-    let mut rk = Rk4::new(oscillator(), 0.0, [1.0, 0.0], FixedStepConfig::with_step(0.01)).unwrap();
+    let mut rk = Rk4::new(
+        oscillator(),
+        0.0,
+        [1.0, 0.0],
+        FixedStepConfig::with_step(0.01),
+    )
+    .unwrap();
     let out = Run::new(&mut rk, 5.0)
         .sample_at([0.123, 1.2345, 4.99999])
         .integrate()
@@ -90,10 +96,11 @@ fn every_step_is_recorded_and_observed() {
     // The default records the start and every step.
     assert_eq!(out.trajectory.len(), steps + 1);
     assert_eq!(out.trajectory.times()[0], 0.0);
-    for ((t, y0), (ts, ys)) in seen
-        .iter()
-        .zip(out.trajectory.times()[1..].iter().zip(&out.trajectory.states()[1..]))
-    {
+    for ((t, y0), (ts, ys)) in seen.iter().zip(
+        out.trajectory.times()[1..]
+            .iter()
+            .zip(&out.trajectory.states()[1..]),
+    ) {
         assert_eq!((*t, *y0), (*ts, ys[0]));
         assert_relative_eq!(*y0, t.cos(), epsilon = 1e-12);
     }
@@ -167,7 +174,13 @@ fn derived_quantities_and_csv_read_back() {
         assert_eq!(row, &[tr.times()[i], state[0], state[1], q[0], q[1]]);
     }
     let err = tr.set_state_names(["x"]).unwrap_err();
-    assert_eq!(err, OdeError::ColumnCount { expected: 2, got: 1 });
+    assert_eq!(
+        err,
+        OdeError::ColumnCount {
+            expected: 2,
+            got: 1
+        }
+    );
 }
 
 #[test]
@@ -179,7 +192,9 @@ fn a_non_finite_quantity_is_an_error() {
         .quantity("angle", |_t, y| (y[0] + 0.5).acos())
         .integrate()
         .unwrap_err();
-    assert!(matches!(err, OdeError::NonFiniteQuantity { column: 1, t: 0.0, value } if value.is_nan()));
+    assert!(
+        matches!(err, OdeError::NonFiniteQuantity { column: 1, t: 0.0, value } if value.is_nan())
+    );
     let mut tr = Trajectory::<[f64; 1]>::new(vec!["a".into()]);
     assert_eq!(
         tr.push(0.0, [1.0], &[1.0, 2.0]).unwrap_err(),
@@ -205,7 +220,10 @@ fn the_top_keeps_its_conserved_columns() {
         .integrate()
         .unwrap();
     let tr = &mut out.trajectory;
-    assert_eq!(tr.quantity_names(), ["energy", "omega", "L", "p_phi", "p_psi"]);
+    assert_eq!(
+        tr.quantity_names(),
+        ["energy", "omega", "L", "p_phi", "p_psi"]
+    );
     let col = |name: &str| tr.column(name).unwrap();
     for (((e, p_phi), p_psi), w) in col("energy")
         .into_iter()
@@ -221,9 +239,10 @@ fn the_top_keeps_its_conserved_columns() {
     assert_relative_eq!(col("L")[0], 10.0, max_relative = 1e-15);
     tr.set_state_names(TopQuantities::<ReferenceTop>::state_names())
         .unwrap();
-    assert!(tr.to_csv().starts_with(
-        "t,phi,theta,psi,phi_dot,theta_dot,psi_dot,energy,omega,L,p_phi,p_psi\n"
-    ));
+    assert!(
+        tr.to_csv()
+            .starts_with("t,phi,theta,psi,phi_dot,theta_dot,psi_dot,energy,omega,L,p_phi,p_psi\n")
+    );
 }
 
 #[test]
@@ -240,8 +259,16 @@ fn a_splitting_trajectory_writes_its_attitude_and_momentum() {
         .integrate()
         .unwrap();
     // m(1) and m(10) of the GNI book's body (Hairer, Lubich, Wanner).
-    let m1 = [0.369_110_080_850_460_6, -0.372_846_321_121_433_4, 0.851_318_606_069_889_3];
-    let m10 = [0.407_066_136_588_040_8, 0.283_007_426_812_843_7, 0.868_449_167_661_561_7];
+    let m1 = [
+        0.369_110_080_850_460_6,
+        -0.372_846_321_121_433_4,
+        0.851_318_606_069_889_3,
+    ];
+    let m10 = [
+        0.407_066_136_588_040_8,
+        0.283_007_426_812_843_7,
+        0.868_449_167_661_561_7,
+    ];
     for (y, m) in out.trajectory.states().iter().zip([m1, m10]) {
         assert_relative_eq!(y.m, Vector3::from(m), epsilon = 1e-8);
     }

@@ -211,7 +211,13 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         if t == self.t_prev {
             return Ok(self.y_prev);
         }
-        let y = Self::step_from(&self.sys, self.t_prev, &self.y_prev, t - self.t_prev, self.t_hi);
+        let y = Self::step_from(
+            &self.sys,
+            self.t_prev,
+            &self.y_prev,
+            t - self.t_prev,
+            self.t_hi,
+        );
         self.stats.rhs_evals += 4;
         if all_finite(&y) {
             Ok(y)

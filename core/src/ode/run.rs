@@ -154,6 +154,11 @@ impl<'a, S: Stepper> Run<'a, S> {
         self
     }
 
+    /// Records nothing (the events, the observer and the final state are the answer).
+    pub fn sample_none(self) -> Self {
+        self.sample_at(Vec::new())
+    }
+
     /// Records the states at `times` (ascending, from the start to `t_end`) from the
     /// stepper's solution inside each step; the steps stay the stepper's own.
     pub fn sample_at(mut self, times: impl Into<Vec<f64>>) -> Self {
@@ -273,13 +278,23 @@ impl<'a, S: Stepper> Run<'a, S> {
                 let hit = &out.events[first_new + k];
                 let (t_hit, y_hit) = (hit.t, hit.state.clone());
                 if samples.steps() {
-                    self.record(&mut out.trajectory, (&counts, &mut values), t_hit, y_hit.clone())?;
+                    self.record(
+                        &mut out.trajectory,
+                        (&counts, &mut values),
+                        t_hit,
+                        y_hit.clone(),
+                    )?;
                 }
                 self.stepper.restart(t_hit, y_hit)?;
                 break;
             }
             if samples.steps() {
-                self.record(&mut out.trajectory, (&counts, &mut values), t_b, y_b.clone())?;
+                self.record(
+                    &mut out.trajectory,
+                    (&counts, &mut values),
+                    t_b,
+                    y_b.clone(),
+                )?;
             }
             if let Some(obs) = self.observer.as_mut()
                 && obs(t_b, &y_b) == Control::Stop

@@ -249,7 +249,15 @@ mod tests {
 
     #[test]
     fn numbers_read_back_exactly() {
-        for v in [0.1, -2.5e-7, 6.02214076e23, 1.0 / 3.0, 0.0, -0.0, 123456.789] {
+        for v in [
+            0.1,
+            -2.5e-7,
+            6.02214076e23,
+            1.0 / 3.0,
+            0.0,
+            -0.0,
+            123456.789,
+        ] {
             let mut s = String::new();
             push_number(&mut s, v);
             assert_eq!(s.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{s}");
