@@ -279,3 +279,40 @@ fn a_splitting_trajectory_writes_its_attitude_and_momentum() {
     assert!(csv.starts_with("t,q_w,q_x,q_y,q_z,m_1,m_2,m_3,|m|\n1,"));
     assert_eq!(csv.lines().count(), 3);
 }
+
+#[test]
+fn bad_end_and_sample_times_are_typed_errors() {
+    let start = || Dop853::new(oscillator(), 0.0, [1.0, 0.0], AdaptiveConfig::default()).unwrap();
+    // End times.
+    let mut ode = start();
+    let err = Run::new(&mut ode, f64::NAN).integrate().unwrap_err();
+    assert!(matches!(err, OdeError::NonFiniteTime { t } if t.is_nan()));
+    let mut ode = start();
+    let err = Run::new(&mut ode, -1.0).integrate().unwrap_err();
+    assert_eq!(err, OdeError::StopBeforeCurrent { stop: -1.0, t: 0.0 });
+    // Sample times: after the end, unsorted, not finite; a sample interval that is not > 0.
+    let mut ode = start();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([0.5, 2.0])
+        .integrate()
+        .unwrap_err();
+    assert_eq!(err, OdeError::SampleAfterEnd { t: 2.0, t_end: 1.0 });
+    let mut ode = start();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([0.5, 0.25])
+        .integrate()
+        .unwrap_err();
+    assert_eq!(err, OdeError::StopBeforeCurrent { stop: 0.25, t: 0.5 });
+    let mut ode = start();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_at([f64::INFINITY])
+        .integrate()
+        .unwrap_err();
+    assert_eq!(err, OdeError::NonFiniteTime { t: f64::INFINITY });
+    let mut ode = start();
+    let err = Run::new(&mut ode, 1.0)
+        .sample_every(0.0)
+        .integrate()
+        .unwrap_err();
+    assert_eq!(err, OdeError::InvalidStep { h: 0.0 });
+}

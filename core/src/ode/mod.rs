@@ -25,6 +25,7 @@ mod fixed;
 mod pairs;
 mod rk4;
 mod run;
+mod sampling;
 mod stepper;
 mod system;
 mod trajectory;
