@@ -112,10 +112,13 @@ pub struct EventHit<St> {
     pub terminal: bool,
 }
 
+/// A function of (t, y), boxed once per run.
+pub(crate) type StateFn<'a, St> = Box<dyn FnMut(f64, &St) -> f64 + 'a>;
+
 /// An event with its function and the value of g at the end of the last step.
 pub(crate) struct EventSlot<'a, St> {
     pub(crate) event: Event,
-    pub(crate) g: Box<dyn FnMut(f64, &St) -> f64 + 'a>,
+    pub(crate) g: StateFn<'a, St>,
     pub(crate) last: f64,
 }
 

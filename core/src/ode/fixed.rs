@@ -34,16 +34,13 @@ impl StepGrid {
         let reusable = matches!(grid, Some(g) if g.t_limit == t_limit && g.done < g.n
             && g.time(g.done) == t);
         if !reusable {
-            *grid = match cfg.plan(t, t_limit)? {
-                Some((n, h)) => Some(StepGrid {
-                    t0: t,
-                    h,
-                    n,
-                    done: 0,
-                    t_limit,
-                }),
-                None => None,
-            };
+            *grid = cfg.plan(t, t_limit)?.map(|(n, h)| StepGrid {
+                t0: t,
+                h,
+                n,
+                done: 0,
+                t_limit,
+            });
         }
         Ok(grid.map(|g| (g.h, g.time(g.done + 1))))
     }

@@ -81,6 +81,7 @@ impl<St> Outcome<St> {
 const PROGRESS_STEPS: f64 = 1000.0;
 
 type Observer<'a, St> = Box<dyn FnMut(f64, &St) -> Control + 'a>;
+type Reporter<'a> = Box<dyn FnMut(&Progress) + 'a>;
 
 /// A run of a [`Stepper`] from where it stands to `t_end`: what to sample, which quantities
 /// to derive per sample, which events to find, who watches each step, and who hears of the
@@ -121,7 +122,7 @@ pub struct Run<'a, S: Stepper> {
     quantities: Vec<Box<dyn Quantities<S::State> + 'a>>,
     events: Vec<EventSlot<'a, S::State>>,
     observer: Option<Observer<'a, S::State>>,
-    progress: Option<Box<dyn FnMut(&Progress) + 'a>>,
+    progress: Option<Reporter<'a>>,
 }
 
 impl<'a, S: Stepper> Run<'a, S> {
