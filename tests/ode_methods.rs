@@ -409,24 +409,24 @@ mod no_nan {
     }
 }
 
-/// `restart` is a fresh start with the old counters: from a state reached by steps of one
+/// `reinitialise` is a fresh start with the old counters: from a state reached by steps of one
 /// system, it continues exactly as a new driver from that state would (each pair, since the
 /// FSAL stage of the old steps must not leak into the first new one).
 #[test]
-fn restart_continues_as_a_new_driver_would() {
+fn reinitialise_continues_as_a_new_driver_would() {
     fn check<P: EmbeddedPair>() {
         let cfg = AdaptiveConfig::with_tol(1e-10, 1e-12);
         let mut ode = Adaptive::<_, P, 3>::new(B5, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
         ode.advance_to(3.0).unwrap();
         let (t, y) = (ode.t(), [0.3, -0.2, 0.9]);
-        ode.restart(t, y).unwrap();
+        ode.reinitialise(t, y).unwrap();
         ode.advance_to(8.0).unwrap();
         let mut fresh = Adaptive::<_, P, 3>::new(B5, t, y, cfg).unwrap();
         fresh.advance_to(8.0).unwrap();
         assert_eq!(ode.y(), fresh.y());
         assert!(ode.stats().steps > fresh.stats().steps);
         assert!(matches!(
-            ode.restart(t, [f64::NAN, 0.0, 0.0]),
+            ode.reinitialise(t, [f64::NAN, 0.0, 0.0]),
             Err(OdeError::NonFiniteInitialState { .. })
         ));
         assert_eq!(ode.t(), 8.0);

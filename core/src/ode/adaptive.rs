@@ -141,6 +141,24 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         &self.sys
     }
 
+    /// Start of the last accepted step (equal to [`Self::t`] before the first step, after
+    /// [`Self::modify_system`] and after a restart): dense output covers `[last_step_start, t]`.
+    pub fn last_step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    /// Puts the driver at `(t, y)` for [`Stepper::restart`](super::Stepper::restart) (the
+    /// caller checks the values): the next step re-evaluates f there, the dense output of the
+    /// step before is dropped, the step size and the controller's memory are kept.
+    pub(super) fn reset_state(&mut self, t: f64, y: [f64; N]) {
+        self.t = t;
+        self.y = y;
+        self.t_prev = t;
+        self.y_prev = y;
+        self.dense_ready = false;
+        self.refresh = true;
+    }
+
     /// Changes the system between steps (a torque switched on or off at a stop time) and
     /// re-evaluates f(t, y) for the next step (one evaluation); the dense output of the
     /// step before is dropped, since it belonged to the old system.
@@ -174,12 +192,14 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// would (f evaluated afresh, the first step size chosen again, the controller's memory
     /// cleared), while the statistics keep counting: for a state moved to another chart of
     /// the same motion, say, after [`Adaptive::modify_system`] has switched the chart.
+    /// [`Stepper::restart`](super::Stepper::restart) differs in keeping the step size and
+    /// the controller's memory, for a run continued after an event.
     ///
     /// # Errors
     /// [`OdeError::NonFiniteTime`] or [`OdeError::NonFiniteInitialState`] for non-finite
     /// input, [`OdeError::NonFiniteState`] if f is not finite there; the integrator is left
     /// as it was on error.
-    pub fn restart(&mut self, t0: f64, y0: [f64; N]) -> Result<(), OdeError> {
+    pub fn reinitialise(&mut self, t0: f64, y0: [f64; N]) -> Result<(), OdeError> {
         check_span(t0, t0)?;
         check_finite(&y0)?;
         let mut f0 = [0.0; N];

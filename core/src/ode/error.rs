@@ -113,6 +113,42 @@ pub enum OdeError {
         /// End of the last step (the current time).
         t_now: f64,
     },
+    /// An event function g(t, y) returned NaN or ±∞.
+    #[error("event {index}: g = {value} at t = {t} is not finite")]
+    NonFiniteEvent {
+        /// Index of the event, in the order the events were added.
+        index: usize,
+        /// Time of the evaluation.
+        t: f64,
+        /// The value returned.
+        value: f64,
+    },
+    /// A derived quantity of a trajectory came out NaN or ±∞.
+    #[error("trajectory quantity {column}: {value} at t = {t} is not finite")]
+    NonFiniteQuantity {
+        /// Index of the quantity among the trajectory's derived columns.
+        column: usize,
+        /// Time of the sample.
+        t: f64,
+        /// The value computed.
+        value: f64,
+    },
+    /// A sample time lies after the end of the run (it would never be reached).
+    #[error("sample time {t} is after the end of the run, t_end = {t_end}")]
+    SampleAfterEnd {
+        /// The sample time.
+        t: f64,
+        /// The end of the run.
+        t_end: f64,
+    },
+    /// A list of column names does not match the columns it names.
+    #[error("{got} column names given for {expected} columns")]
+    ColumnCount {
+        /// Columns there are.
+        expected: usize,
+        /// Names given.
+        got: usize,
+    },
     /// An exact sub-flow (the free-body flow of a splitting) failed.
     #[error("exact flow: {0}")]
     Exact(#[from] ExactError),

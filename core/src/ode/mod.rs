@@ -5,6 +5,12 @@
 //! States are fixed-size arrays: no step allocates. The rigid-body steppers (attitudes on the
 //! unit quaternions, RKMK4, the splittings) live in [`crate::rigid`].
 //!
+//! Answers come from a [`Run`] of any [`Stepper`] (the adaptive driver, [`Rk4`], a
+//! [`FixedStepper`] over a splitting): samples at chosen times through the dense output or
+//! partial steps, a [`Trajectory`] with derived quantities that writes CSV, an observer of
+//! every accepted step that may stop the run, events (zero crossings of g(t, y), located on
+//! the stepper's own solution) and progress reports.
+//!
 //! Names: a pair type (`Dopri5Pair`, `Dop853Pair`, `Vern9Pair`) is the method — its tableau
 //! and error estimate; the driver of the same name without `Pair` (`Dopri5`, `Dop853`,
 //! `Vern9`) is [`Adaptive`] running it.
@@ -14,9 +20,15 @@ mod config;
 mod controller;
 mod drivers;
 mod error;
+mod events;
+mod fixed;
 mod pairs;
 mod rk4;
+mod run;
+mod sampling;
+mod stepper;
 mod system;
+mod trajectory;
 
 pub use adaptive::Adaptive;
 pub use config::{AdaptiveConfig, FixedStepConfig};
@@ -24,8 +36,13 @@ pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span};
+pub use events::{Direction, Event, EventHit};
+pub use fixed::{FixedStepMethod, FixedStepper};
 pub use pairs::{
     ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,
 };
 pub use rk4::Rk4;
+pub use run::{Control, Outcome, Progress, Run, StopReason};
+pub use stepper::Stepper;
 pub use system::{FnSystem, Stats, System};
+pub use trajectory::{Quantities, StateColumns, Trajectory};

@@ -2,6 +2,8 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
+use super::fixed::{StepGrid, check_inside};
+use super::stepper::Stepper;
 use super::system::{Stats, System, all_finite};
 
 /// Steps between two checks of RK4's state (the first bad step is then found by replaying
@@ -26,6 +28,12 @@ pub struct Rk4<S, const N: usize> {
     t: f64,
     y: [f64; N],
     stats: Stats,
+    /// The last step of [`Stepper::step`] (start, state, stage-time cap), for the partial
+    /// steps of [`Stepper::state_at`]; after [`Rk4::advance_to`] it is the current state.
+    t_prev: f64,
+    y_prev: [f64; N],
+    t_hi: f64,
+    grid: Option<StepGrid>,
 }
 
 impl<S: System<N>, const N: usize> Rk4<S, N> {
@@ -44,6 +52,10 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             t: t0,
             y: y0,
             stats: Stats::default(),
+            t_prev: t0,
+            y_prev: y0,
+            t_hi: f64::INFINITY,
+            grid: None,
         })
     }
 
@@ -127,6 +139,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
                         self.y = y;
                         self.stats.steps += i - 1;
                         self.stats.rhs_evals += 4 * (len + i);
+                        self.forget_last_step();
                         return Err(OdeError::NonFiniteState { t });
                     }
                     y = y_new;
@@ -139,6 +152,85 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         self.t = t_stop;
         self.stats.steps += n;
         self.stats.rhs_evals += 4 * n;
+        self.forget_last_step();
+        Ok(())
+    }
+
+    /// After a move that is not one [`Stepper::step`]: no partial steps before `t`.
+    fn forget_last_step(&mut self) {
+        self.t_prev = self.t;
+        self.y_prev = self.y;
+        self.grid = None;
+    }
+}
+
+/// One RK4 step at a time on the grid of equal steps to the limit (as
+/// [`Rk4::advance_to`] takes them); inside a step, the solution is RK4's own partial step
+/// from the step's start.
+impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
+    type State = [f64; N];
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn state(&self) -> &[f64; N] {
+        &self.y
+    }
+
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        let Some((h, t_new)) = StepGrid::next(&mut self.grid, &self.cfg, self.t, t_limit)? else {
+            return Ok(());
+        };
+        let t_hi = t_limit.next_down();
+        let y_new = Self::step_from(&self.sys, self.t, &self.y, h, t_hi);
+        self.stats.rhs_evals += 4;
+        if !all_finite(&y_new) {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        StepGrid::advance(&mut self.grid);
+        (self.t_prev, self.y_prev, self.t_hi) = (self.t, self.y, t_hi);
+        (self.t, self.y) = (t_new, y_new);
+        self.stats.steps += 1;
+        Ok(())
+    }
+
+    fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        check_inside(t, self.t_prev, self.t)?;
+        if t == self.t {
+            return Ok(self.y);
+        }
+        if t == self.t_prev {
+            return Ok(self.y_prev);
+        }
+        let y = Self::step_from(
+            &self.sys,
+            self.t_prev,
+            &self.y_prev,
+            t - self.t_prev,
+            self.t_hi,
+        );
+        self.stats.rhs_evals += 4;
+        if all_finite(&y) {
+            Ok(y)
+        } else {
+            Err(OdeError::NonFiniteState { t: self.t_prev })
+        }
+    }
+
+    fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
+        check_span(t, t)?;
+        check_finite(&state)?;
+        (self.t, self.y) = (t, state);
+        self.forget_last_step();
         Ok(())
     }
 }

@@ -205,7 +205,7 @@ impl<C: AngleChart> ChartedTop<C> {
         // A fresh start in the other chart, its first step size from its own f.
         let t = self.ode.t();
         self.ode.modify_system(|charts| charts.active = other);
-        self.ode.restart(t, s)?;
+        self.ode.reinitialise(t, s)?;
         self.switches += 1;
         Ok(())
     }

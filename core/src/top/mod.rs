@@ -15,6 +15,8 @@
 //!   (nutation, precession, the sleeping top), [`TorqueFreeSymmetric`] the free body's cones.
 //! - [`angle_linearisation`] and [`reduced_linearisation`] give the linear system about a
 //!   state or a steady motion, for [`crate::linalg`]'s eigenvalues and stability verdict.
+//! - [`TopQuantities`] gives a run's trajectory the top's energy, |ω|, |L| and conserved
+//!   momenta per sample.
 
 mod angle_chart;
 mod charted_top;
@@ -23,6 +25,7 @@ mod eulerian;
 mod fast_top;
 mod interpreted;
 mod linear;
+mod observe;
 mod rates;
 mod scene;
 mod theory;
@@ -39,6 +42,7 @@ pub use linear::{
     LinearisationError, MOMENTUM_MAP_TOLERANCE, ReducedLinearisation, angle_linearisation,
     reduced_linearisation,
 };
+pub use observe::TopQuantities;
 pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
 pub use theory::{

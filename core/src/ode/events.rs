@@ -1,0 +1,249 @@
+//! Events: zero crossings of user functions g(t, y), found in each accepted step and located
+//! on the stepper's own solution inside it.
+//!
+//! A crossing is a change of sign of g between the ends of a step: g < 0 before and g ≥ 0
+//! after is rising, g > 0 before and g ≤ 0 after is falling. A g that starts a step at exactly
+//! 0 (the run starts on a root, or the last event ended there) opens no crossing, so an event
+//! is never reported twice. Two crossings inside one step cancel and go unseen: bound the step
+//! (`AdaptiveConfig::h_max`, `FixedStepConfig::h`) below the shortest interval between roots.
+//!
+//! The root is bracketed by the step and located with the Anderson–Björck variant of regula
+//! falsi (Anderson & Björck 1973), with a bisection whenever the bracket fails to halve over
+//! two iterations, down to a few ulps of t: on the dense output of an adaptive pair, or on
+//! the partial steps of a fixed-step method, so the event is as accurate as the method.
+
+use super::error::OdeError;
+
+/// Which sign changes of g count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Direction {
+    /// Either way (the default).
+    #[default]
+    Both,
+    /// g going from negative to zero or positive.
+    Rising,
+    /// g going from positive to zero or negative.
+    Falling,
+}
+
+impl Direction {
+    /// Whether a crossing in direction `crossing` (rising or falling) is wanted.
+    fn admits(self, crossing: Direction) -> bool {
+        self == Direction::Both || self == crossing
+    }
+}
+
+/// What an event is: its name, the directions that count, and whether it ends the run.
+///
+/// ```
+/// use precess_core::ode::{Direction, Event};
+/// let floor = Event::new("floor").falling().terminal();
+/// assert_eq!(floor.direction(), Direction::Falling);
+/// assert!(floor.is_terminal());
+/// assert_eq!(floor.name(), "floor");
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Event {
+    name: String,
+    direction: Direction,
+    terminal: bool,
+}
+
+impl Event {
+    /// An event named `name`, counting both directions, not terminal.
+    pub fn new(name: impl Into<String>) -> Self {
+        Self {
+            name: name.into(),
+            direction: Direction::Both,
+            terminal: false,
+        }
+    }
+
+    /// Counts only rising crossings.
+    pub fn rising(self) -> Self {
+        self.with_direction(Direction::Rising)
+    }
+
+    /// Counts only falling crossings.
+    pub fn falling(self) -> Self {
+        self.with_direction(Direction::Falling)
+    }
+
+    /// Counts the crossings of `direction`.
+    pub fn with_direction(mut self, direction: Direction) -> Self {
+        self.direction = direction;
+        self
+    }
+
+    /// Ends the run at the first counted crossing; the stepper is restarted there.
+    pub fn terminal(mut self) -> Self {
+        self.terminal = true;
+        self
+    }
+
+    /// The name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The directions that count.
+    pub fn direction(&self) -> Direction {
+        self.direction
+    }
+
+    /// Whether the event ends the run.
+    pub fn is_terminal(&self) -> bool {
+        self.terminal
+    }
+}
+
+/// An event that fired: which one, when, the state then, and which way g crossed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EventHit<St> {
+    /// Index of the event, in the order the events were added to the run.
+    pub index: usize,
+    /// Time of the crossing: the end of the located bracket, where g has its new sign or is 0.
+    pub t: f64,
+    /// The stepper's solution at `t`.
+    pub state: St,
+    /// [`Direction::Rising`] or [`Direction::Falling`].
+    pub direction: Direction,
+    /// Whether the event was terminal (and so the last of the run).
+    pub terminal: bool,
+}
+
+/// A function of (t, y), boxed once per run.
+pub(crate) type StateFn<'a, St> = Box<dyn FnMut(f64, &St) -> f64 + 'a>;
+
+/// An event with its function and the value of g at the end of the last step.
+pub(crate) struct EventSlot<'a, St> {
+    pub(crate) event: Event,
+    pub(crate) g: StateFn<'a, St>,
+    pub(crate) last: f64,
+}
+
+impl<St> EventSlot<'_, St> {
+    /// g(t, y), refused when not finite.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteEvent`].
+    pub(crate) fn eval(&mut self, index: usize, t: f64, y: &St) -> Result<f64, OdeError> {
+        let value = (self.g)(t, y);
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(OdeError::NonFiniteEvent { index, t, value })
+        }
+    }
+
+    /// The counted crossing from the last value to `g_new`, if any.
+    pub(crate) fn crossing(&self, g_new: f64) -> Option<Direction> {
+        let g_old = self.last;
+        let dir = if g_old < 0.0 && g_new >= 0.0 {
+            Direction::Rising
+        } else if g_old > 0.0 && g_new <= 0.0 {
+            Direction::Falling
+        } else {
+            return None;
+        };
+        self.event.direction.admits(dir).then_some(dir)
+    }
+}
+
+/// Iterations after which [`locate_root`] gives up refining (the bisection safeguard needs
+/// about 2 × 64 to reach one ulp from any bracket of doubles).
+const MAX_ITERATIONS: usize = 200;
+
+/// The root of `f` in `[a, b]`, given `f(a) = fa` and `f(b) = fb` of opposite signs (or
+/// `fb = 0`), to a few ulps: returns the right end of the final bracket, where f has the sign
+/// of `fb` or is 0.
+///
+/// # Errors
+/// What `f` returns.
+pub(crate) fn locate_root(
+    mut f: impl FnMut(f64) -> Result<f64, OdeError>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+) -> Result<f64, OdeError> {
+    // The side replaced last (−1 left, +1 right) and the bracket widths of the last two
+    // iterations, for the Anderson–Björck scaling and the bisection safeguard.
+    let mut last_side = 0;
+    let mut widths = [f64::INFINITY; 2];
+    for _ in 0..MAX_ITERATIONS {
+        if fb == 0.0 {
+            return Ok(b);
+        }
+        let width = b - a;
+        if width <= 2.0 * f64::EPSILON * a.abs().max(b.abs()) {
+            return Ok(b);
+        }
+        let bisect = width > 0.5 * widths[0];
+        widths = [widths[1], width];
+        let secant = b - fb * (width / (fb - fa));
+        let c = if bisect || !(secant > a && secant < b) {
+            0.5 * (a + b)
+        } else {
+            secant
+        };
+        if c <= a || c >= b {
+            // a and b are adjacent doubles.
+            return Ok(b);
+        }
+        let fc = f(c)?;
+        if fc == 0.0 {
+            return Ok(c);
+        }
+        if (fc < 0.0) == (fb < 0.0) {
+            // c replaces b; when b's side moves twice running, a is stale: scale fa down.
+            if last_side == 1 {
+                let m = 1.0 - fc / fb;
+                fa *= if m > 0.0 { m } else { 0.5 };
+            }
+            (b, fb, last_side) = (c, fc, 1);
+        } else {
+            if last_side == -1 {
+                let m = 1.0 - fc / fa;
+                fb *= if m > 0.0 { m } else { 0.5 };
+            }
+            (a, fa, last_side) = (c, fc, -1);
+        }
+    }
+    Ok(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn root_of_a_smooth_function_to_an_ulp() {
+        // cos t = t at 0.739085133215160641655312087673873404 (the Dottie number).
+        let f = |t: f64| Ok(t.cos() - t);
+        let root = locate_root(f, (0.0, 1.0), (1.0, 1f64.cos() - 1.0)).unwrap();
+        assert!((root - 0.739_085_133_215_160_6).abs() <= 2.0 * f64::EPSILON);
+    }
+
+    #[test]
+    fn root_of_a_flat_function_converges() {
+        // (t − 0.3)⁵: regula falsi alone stalls on one side; the safeguards converge.
+        let g = |t: f64| (t - 0.3).powi(5);
+        let mut calls = 0;
+        let f = |t: f64| {
+            calls += 1;
+            Ok(g(t))
+        };
+        let root = locate_root(f, (0.0, g(0.0)), (1.0, g(1.0))).unwrap();
+        assert!((root - 0.3).abs() < 1e-3, "{root}");
+        assert!(calls < MAX_ITERATIONS);
+        // The returned end has the sign of f at the right end (or is a zero).
+        assert!(g(root) >= 0.0);
+    }
+
+    #[test]
+    fn the_returned_end_is_on_the_new_side() {
+        // Falling: f(a) > 0, f(b) < 0; the answer has f ≤ 0.
+        let f = |t: f64| Ok(0.5 - t);
+        let root = locate_root(f, (0.0, 0.5), (1.0, -0.5)).unwrap();
+        assert!(0.5 - root <= 0.0 && (root - 0.5).abs() <= f64::EPSILON);
+    }
+}

@@ -1,0 +1,244 @@
+//! Fixed-step methods as [`Stepper`]s: the equal-step grid they share, the one-step interface
+//! a method implements ([`FixedStepMethod`]), and the clock that runs it ([`FixedStepper`]).
+
+use super::config::FixedStepConfig;
+use super::error::OdeError;
+use super::stepper::Stepper;
+use super::system::Stats;
+
+/// The equal steps from a start to a limit: step i ends at `t0 + i h`, the last exactly on
+/// the limit, so a long run gathers no round-off in t.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StepGrid {
+    t0: f64,
+    h: f64,
+    n: u64,
+    done: u64,
+    t_limit: f64,
+}
+
+impl StepGrid {
+    /// The next step `(start, h, end)` from `t` towards `t_limit`: continues `grid` when it
+    /// was planned for this limit and `t` is where it left off, else plans anew under `cfg`;
+    /// `None` when `t == t_limit`. The caller advances the grid with [`StepGrid::advance`]
+    /// once the step is taken.
+    ///
+    /// # Errors
+    /// As [`FixedStepConfig::plan`]: a non-finite or earlier limit, too many steps.
+    pub(crate) fn next(
+        grid: &mut Option<StepGrid>,
+        cfg: &FixedStepConfig,
+        t: f64,
+        t_limit: f64,
+    ) -> Result<Option<(f64, f64)>, OdeError> {
+        let reusable = matches!(grid, Some(g) if g.t_limit == t_limit && g.done < g.n
+            && g.time(g.done) == t);
+        if !reusable {
+            *grid = cfg.plan(t, t_limit)?.map(|(n, h)| StepGrid {
+                t0: t,
+                h,
+                n,
+                done: 0,
+                t_limit,
+            });
+        }
+        Ok(grid.map(|g| (g.h, g.time(g.done + 1))))
+    }
+
+    /// Marks the step returned by [`StepGrid::next`] as taken.
+    pub(crate) fn advance(grid: &mut Option<StepGrid>) {
+        if let Some(g) = grid {
+            g.done += 1;
+        }
+    }
+
+    /// The end of step i.
+    fn time(&self, i: u64) -> f64 {
+        if i >= self.n {
+            self.t_limit
+        } else {
+            self.t0 + i as f64 * self.h
+        }
+    }
+}
+
+/// One step of a fixed-step method on its own state, for [`FixedStepper`].
+///
+/// The rigid-body splittings implement it (`FreeBodySplitting`, `PotentialSplitting` on
+/// `BodyMomentum`); so can any method that maps `(t, y, h)` to the state at `t + h`.
+pub trait FixedStepMethod {
+    /// The state the method advances.
+    type State: Clone;
+
+    /// Checks a state before the method steps from it (default: nothing to check).
+    ///
+    /// # Errors
+    /// The method's own refusal (a non-finite component, a quaternion that is no rotation).
+    fn check_state(&self, _y: &Self::State) -> Result<(), OdeError> {
+        Ok(())
+    }
+
+    /// Advances `y` from `t` by `h > 0`; on error `y` is left as it was.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteState`] when the step is not finite, its `t` counted from the
+    /// start of the call (0: the splittings carry no clock; [`FixedStepper`] adds the step's
+    /// start), or the method's own.
+    fn advance(&self, t: f64, y: &mut Self::State, h: f64) -> Result<(), OdeError>;
+}
+
+impl<M: FixedStepMethod + ?Sized> FixedStepMethod for &M {
+    type State = M::State;
+    fn check_state(&self, y: &Self::State) -> Result<(), OdeError> {
+        (**self).check_state(y)
+    }
+    fn advance(&self, t: f64, y: &mut Self::State, h: f64) -> Result<(), OdeError> {
+        (**self).advance(t, y, h)
+    }
+}
+
+/// A [`FixedStepMethod`] with a clock: equal steps no longer than the configured `h`, the
+/// solution inside the last step by a partial step from its start, and a restart.
+///
+/// ```
+/// use precess_core::ode::{FixedStepConfig, FixedStepMethod, FixedStepper, OdeError, Stepper};
+/// /// The exact flow of y' = −y, as a "method".
+/// struct Decay;
+/// impl FixedStepMethod for Decay {
+///     type State = f64;
+///     fn advance(&self, _t: f64, y: &mut f64, h: f64) -> Result<(), OdeError> {
+///         *y *= (-h).exp();
+///         Ok(())
+///     }
+/// }
+/// let mut s = FixedStepper::new(Decay, 0.0, 1.0, FixedStepConfig::with_step(0.25))?;
+/// s.step(1.0)?;
+/// approx::assert_relative_eq!(s.t(), 0.25);
+/// approx::assert_relative_eq!(s.state_at(0.1)?, (-0.1f64).exp(), max_relative = 1e-15);
+/// # Ok::<(), OdeError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct FixedStepper<M: FixedStepMethod> {
+    method: M,
+    cfg: FixedStepConfig,
+    t: f64,
+    y: M::State,
+    t_prev: f64,
+    y_prev: M::State,
+    grid: Option<StepGrid>,
+    stats: Stats,
+}
+
+impl<M: FixedStepMethod> FixedStepper<M> {
+    /// Starts `method` at `(t0, y0)` with steps no longer than `cfg.h`.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidStep`], [`OdeError::NonFiniteTime`], or the method's
+    /// [`FixedStepMethod::check_state`].
+    pub fn new(method: M, t0: f64, y0: M::State, cfg: FixedStepConfig) -> Result<Self, OdeError> {
+        cfg.validate()?;
+        if !t0.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t0 });
+        }
+        method.check_state(&y0)?;
+        Ok(Self {
+            method,
+            cfg,
+            t: t0,
+            y: y0.clone(),
+            t_prev: t0,
+            y_prev: y0,
+            grid: None,
+            stats: Stats::default(),
+        })
+    }
+
+    /// The method.
+    pub fn method(&self) -> &M {
+        &self.method
+    }
+
+    /// One step of the method from `(t, y)`, its error's time counted from the start of the
+    /// run rather than of the call.
+    fn advance_from(&self, t: f64, y: &mut M::State, h: f64) -> Result<(), OdeError> {
+        self.method.advance(t, y, h).map_err(|e| match e {
+            OdeError::NonFiniteState { t: since } => OdeError::NonFiniteState { t: t + since },
+            other => other,
+        })
+    }
+}
+
+impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
+    type State = M::State;
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn state(&self) -> &M::State {
+        &self.y
+    }
+
+    /// Steps taken; the splittings evaluate no right-hand side, so `rhs_evals` stays 0.
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        let Some((h, t_new)) = StepGrid::next(&mut self.grid, &self.cfg, self.t, t_limit)? else {
+            return Ok(());
+        };
+        let mut y = self.y.clone();
+        self.advance_from(self.t, &mut y, h)?;
+        StepGrid::advance(&mut self.grid);
+        self.t_prev = self.t;
+        self.y_prev = core::mem::replace(&mut self.y, y);
+        self.t = t_new;
+        self.stats.steps += 1;
+        Ok(())
+    }
+
+    fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    fn state_at(&mut self, t: f64) -> Result<M::State, OdeError> {
+        check_inside(t, self.t_prev, self.t)?;
+        if t == self.t {
+            return Ok(self.y.clone());
+        }
+        let mut y = self.y_prev.clone();
+        if t > self.t_prev {
+            self.advance_from(self.t_prev, &mut y, t - self.t_prev)?;
+        }
+        Ok(y)
+    }
+
+    fn restart(&mut self, t: f64, state: M::State) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        self.method.check_state(&state)?;
+        self.t = t;
+        self.t_prev = t;
+        self.y_prev = state.clone();
+        self.y = state;
+        self.grid = None;
+        Ok(())
+    }
+}
+
+/// Checks that `t` is finite and inside the last step `[t_prev, t_now]`.
+///
+/// # Errors
+/// [`OdeError::NonFiniteTime`], [`OdeError::OutsideLastStep`].
+pub(crate) fn check_inside(t: f64, t_prev: f64, t_now: f64) -> Result<(), OdeError> {
+    if !t.is_finite() {
+        return Err(OdeError::NonFiniteTime { t });
+    }
+    if t >= t_prev && t <= t_now {
+        Ok(())
+    } else {
+        Err(OdeError::OutsideLastStep { t, t_prev, t_now })
+    }
+}

@@ -1,0 +1,109 @@
+//! The one interface the trajectory and event machinery drives: a stepper that takes accepted
+//! steps, can give its own solution anywhere inside the last one, and can be put back on a
+//! state (a terminal event's).
+
+use super::adaptive::Adaptive;
+use super::error::{OdeError, check_finite};
+use super::pairs::EmbeddedPair;
+use super::system::{Stats, System};
+
+/// A time stepper as [`Run`](super::Run) sees it: accepted steps, the solution inside the last
+/// step, and a restart.
+///
+/// Implemented by the adaptive driver ([`Adaptive`]: [`Dopri5`](super::Dopri5),
+/// [`Dop853`](super::Dop853), [`Vern9`](super::Vern9)), by [`Rk4`](super::Rk4), and by
+/// [`FixedStepper`](super::FixedStepper) for any [`FixedStepMethod`](super::FixedStepMethod)
+/// (the rigid-body splittings). A new integrator gets trajectories, observers and events by
+/// implementing these seven methods.
+///
+/// Inside the last step, [`Stepper::state_at`] is the adaptive pairs' dense output; the
+/// fixed-step methods have no high-order interpolant, so they re-step from the step's start
+/// with a partial step, which is the method's own solution at that time, as accurate as its
+/// steps.
+///
+/// ```
+/// use precess_core::ode::{AdaptiveConfig, Dop853, FnSystem, Stepper};
+/// let sys = FnSystem(|_t: f64, y: &[f64; 1], d: &mut [f64; 1]| d[0] = -y[0]);
+/// let mut ode = Dop853::new(sys, 0.0, [1.0], AdaptiveConfig::with_tol(1e-12, 1e-14))?;
+/// Stepper::step(&mut ode, 10.0)?;
+/// let (t0, t1) = (ode.step_start(), Stepper::t(&ode));
+/// let mid = ode.state_at(0.5 * (t0 + t1))?;
+/// approx::assert_relative_eq!(mid[0], (-0.5 * (t0 + t1)).exp(), max_relative = 1e-12);
+/// # Ok::<(), precess_core::ode::OdeError>(())
+/// ```
+pub trait Stepper {
+    /// The state the stepper advances (an array for [`System`]s, `BodyMomentum` for the
+    /// splittings).
+    type State: Clone;
+
+    /// Current time.
+    fn t(&self) -> f64;
+
+    /// Current state.
+    fn state(&self) -> &Self::State;
+
+    /// Work done so far.
+    fn stats(&self) -> Stats;
+
+    /// Takes one accepted step that does not pass `t_limit`, landing on it exactly at the end.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`], [`OdeError::StopBeforeCurrent`], and the stepper's own
+    /// failures ([`OdeError::NonFiniteState`], …); the state is left as it was.
+    fn step(&mut self, t_limit: f64) -> Result<(), OdeError>;
+
+    /// Start of the last step (equal to [`Stepper::t`] before any step and after a restart).
+    fn step_start(&self) -> f64;
+
+    /// The stepper's solution at `t` inside the last step `[step_start, t]`.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`], [`OdeError::OutsideLastStep`], or the method's failure on
+    /// the partial step.
+    fn state_at(&mut self, t: f64) -> Result<Self::State, OdeError>;
+
+    /// Puts the stepper at `(t, state)`, as if it had started there (the step size an
+    /// adaptive driver had found is kept).
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`], [`OdeError::NonFiniteInitialState`], or what the method
+    /// checks of a state.
+    fn restart(&mut self, t: f64, state: Self::State) -> Result<(), OdeError>;
+}
+
+impl<S: System<N>, P: EmbeddedPair, const N: usize> Stepper for Adaptive<S, P, N> {
+    type State = [f64; N];
+
+    fn t(&self) -> f64 {
+        Adaptive::t(self)
+    }
+
+    fn state(&self) -> &[f64; N] {
+        self.y()
+    }
+
+    fn stats(&self) -> Stats {
+        Adaptive::stats(self)
+    }
+
+    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        Adaptive::step(self, t_limit)
+    }
+
+    fn step_start(&self) -> f64 {
+        self.last_step_start()
+    }
+
+    fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        self.dense_at(t)
+    }
+
+    fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        check_finite(&state)?;
+        self.reset_state(t, state);
+        Ok(())
+    }
+}

@@ -1,0 +1,125 @@
+//! The standard quantities of a derived top as trajectory columns: energy, |ω|, |L| and the
+//! conserved momenta, per sample of a run of its angle form.
+
+use super::top_trait::TopDynamics;
+use crate::body::RigidBody;
+use crate::ode::Quantities;
+
+/// A generic regular state of either chart, at which [`TopQuantities::new`] asks which
+/// momenta the scene conserves (the answer depends on the scene, not on the state).
+const PROBE: ([f64; 3], [f64; 3]) = ([0.3, 0.7, 0.2], [0.1, 0.2, 0.3]);
+
+/// The standard quantities of a top in its declared angle chart (state `[q, q̇]`, as
+/// [`super::TopChart::declared`] integrates): `energy` (T + V), `omega` (|ω|), `L` (|L| about
+/// the pivot, |I ω|), then each conserved momentum `p_<angle>` (`p_phi`, `p_psi` for a
+/// symmetric top under gravity in ZXZ).
+///
+/// Add them to a run with [`Run::quantities`](crate::ode::Run::quantities); name the state
+/// columns of its CSV with [`TopQuantities::state_names`].
+///
+/// # Examples
+///
+/// The heavy top (I1 = 1, I3 = ½ about the pivot, M g l = 1) released at rest from
+/// θ0 = 60° spinning at ω3 = 20 keeps E = ½ I3 ω3² + M g l cos θ0 = 100.5, p_ψ = I3 ω3 = 10
+/// and p_φ = p_ψ cos θ0 = 5 along the run:
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess::ode::{AdaptiveConfig, Dop853, Run};
+/// use precess::prelude::*;
+/// use precess::top::TopQuantities;
+///
+/// #[derive(RigidBody)]
+/// #[rigid(
+///     body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+///     pivot = [0.0, 0.0, 0.0],
+/// )]
+/// #[top(gravity = 1.0)]
+/// struct Heavy;
+///
+/// let chart = TopChart::declared(&Heavy);
+/// let y0 = [0.0, std::f64::consts::FRAC_PI_3, 0.0, 0.0, 0.0, 20.0];
+/// let mut ode = Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(1e-12, 1e-12))?;
+/// let mut out = Run::new(&mut ode, 1.0)
+///     .sample_every(0.1)
+///     .quantities(TopQuantities::new(&Heavy))
+///     .integrate()?;
+/// let names = out.trajectory.quantity_names().to_vec();
+/// assert_eq!(names, ["energy", "omega", "L", "p_phi", "p_psi"]);
+/// for (e, p_phi) in out.trajectory.column("energy").unwrap().iter().zip(out.trajectory.column("p_phi").unwrap()) {
+///     assert_relative_eq!(*e, 100.5, max_relative = 1e-11);
+///     assert_relative_eq!(p_phi, 5.0, max_relative = 1e-11);
+/// }
+/// out.trajectory.set_state_names(TopQuantities::<Heavy>::state_names())?;
+/// assert!(out.trajectory.to_csv().starts_with("t,phi,theta,psi,phi_dot,theta_dot,psi_dot,energy,"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct TopQuantities<'a, T> {
+    top: &'a T,
+    /// Which of the angles' momenta the scene conserves.
+    conserved: [bool; 3],
+}
+
+impl<'a, T: TopDynamics + RigidBody> TopQuantities<'a, T> {
+    /// The quantities of `top`.
+    pub fn new(top: &'a T) -> Self {
+        let (q, q_dot) = PROBE;
+        let conserved = top.conserved_momenta(&q, &q_dot).map(|p| p.is_some());
+        Self { top, conserved }
+    }
+}
+
+impl<T: TopDynamics> TopQuantities<'_, T> {
+    /// The names of the angle-form state `[q, q̇]` of the declared chart, for
+    /// [`Trajectory::set_state_names`](crate::ode::Trajectory::set_state_names): the angles,
+    /// then `<angle>_dot`.
+    pub fn state_names() -> [String; 6] {
+        let n = T::SEQUENCE.names();
+        [
+            n[0].to_string(),
+            n[1].to_string(),
+            n[2].to_string(),
+            format!("{}_dot", n[0]),
+            format!("{}_dot", n[1]),
+            format!("{}_dot", n[2]),
+        ]
+    }
+}
+
+impl<T: TopDynamics + RigidBody> Quantities<[f64; 6]> for TopQuantities<'_, T> {
+    fn names(&self) -> Vec<String> {
+        let mut names = vec!["energy".to_string(), "omega".to_string(), "L".to_string()];
+        for (name, _) in T::SEQUENCE
+            .names()
+            .iter()
+            .zip(self.conserved)
+            .filter(|(_, c)| *c)
+        {
+            names.push(format!("p_{name}"));
+        }
+        names
+    }
+
+    fn evaluate(&mut self, _t: f64, y: &[f64; 6], out: &mut [f64]) {
+        let (q, q_dot) = ([y[0], y[1], y[2]], [y[3], y[4], y[5]]);
+        let omega = self.top.omega_from_rates(&q, &q_dot);
+        let momenta = self.top.conserved_momenta(&q, &q_dot);
+        let conserved = momenta
+            .iter()
+            .zip(self.conserved)
+            .filter(|(_, c)| *c)
+            // A scene conserves a momentum everywhere or nowhere; NaN would say otherwise.
+            .map(|(p, _)| p.unwrap_or(f64::NAN));
+        let values = [
+            self.top.energy(&q, &q_dot),
+            omega.norm(),
+            self.top.angular_momentum(&omega).norm(),
+        ]
+        .into_iter()
+        .chain(conserved);
+        for (o, v) in out.iter_mut().zip(values) {
+            *o = v;
+        }
+    }
+}
