@@ -23,6 +23,7 @@ mod eulerian;
 mod fast_top;
 mod interpreted;
 mod linear;
+mod parameters;
 mod rates;
 mod scene;
 mod theory;
@@ -39,6 +40,7 @@ pub use linear::{
     LinearisationError, MOMENTUM_MAP_TOLERANCE, ReducedLinearisation, angle_linearisation,
     reduced_linearisation,
 };
+pub use parameters::TopParameters;
 pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
 pub use theory::{
