@@ -252,11 +252,37 @@ fn edit_distance(a: &str, b: &str) -> usize {
     rows[a.len()][b.len()]
 }
 
-/// Every part name and alias, for [`did_you_mean`] on an unknown part.
+/// Every part name and alias.
 pub fn part_names() -> impl Iterator<Item = &'static str> {
     PARTS
         .iter()
         .flat_map(|p| std::iter::once(p.name).chain(p.alias))
+}
+
+/// Words people write for a part that are not its name, each with the part meant. Spelling
+/// alone would mislead here (`cube` is one letter from `tube`).
+const PART_SYNONYMS: &[(&str, &str)] = &[
+    ("cube", "cuboid"),
+    ("block", "cuboid"),
+    ("brick", "cuboid"),
+    ("ball", "sphere"),
+    ("point", "particle"),
+    ("disc", "disk"),
+    ("hoop", "ring"),
+    ("pipe", "tube"),
+    ("stick", "rod"),
+    ("bar", "rod"),
+    ("spheroid", "ellipsoid"),
+];
+
+/// `; did you mean `…`?` for an unknown part: the part a known synonym stands for, else as
+/// [`did_you_mean`] over the part names and aliases.
+pub fn did_you_mean_part(written: &str) -> String {
+    let lower = written.to_lowercase();
+    match PART_SYNONYMS.iter().find(|(word, _)| *word == lower) {
+        Some((_, part)) => format!("; did you mean `{part}`?"),
+        None => did_you_mean(written, part_names()),
+    }
 }
 
 #[cfg(test)]
@@ -366,5 +392,12 @@ mod tests {
             "; did you mean `radius`?"
         );
         assert_eq!(did_you_mean("colour", ["mass", "radius", "at"]), "");
+        // A synonym is what was meant, not the nearest spelling.
+        assert_eq!(did_you_mean_part("cube"), "; did you mean `cuboid`?");
+        assert_eq!(did_you_mean_part("Ball"), "; did you mean `sphere`?");
+        assert_eq!(did_you_mean_part("spehre"), "; did you mean `sphere`?");
+        for (_, part) in PART_SYNONYMS {
+            assert!(find_part(part).is_some(), "{part} is no part");
+        }
     }
 }

@@ -263,7 +263,7 @@ impl Checker<'_> {
                 format!(
                     "unknown part `{name}`: expected one of {}{}",
                     part_list(),
-                    keys::did_you_mean(&name.to_string(), keys::part_names())
+                    keys::did_you_mean_part(&name.to_string())
                 ),
             );
             return None;
