@@ -58,7 +58,7 @@ pub mod __private {
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::top::TopDynamics;
+    pub use precess_core::top::{TopDynamics, TopParameters};
     pub use std::vec;
 }
 

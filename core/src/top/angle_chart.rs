@@ -26,6 +26,17 @@ pub trait AngleChart: System<6> {
     /// The energy T + V.
     fn energy_at(&self, state: &[f64; 6]) -> f64;
 
+    /// Checks the scene's settings before a run ([`super::TopParameters::check`]);
+    /// [`super::ChartedTop::new`] calls it. A chart over a derived top checks the top's field
+    /// values; the default, for charts whose settings were checked when they were built,
+    /// accepts.
+    ///
+    /// # Errors
+    /// As [`super::TopParameters::check`].
+    fn check_parameters(&self) -> Result<(), TopError> {
+        Ok(())
+    }
+
     /// The body angular velocity ω = B(q) q̇.
     fn omega_at(&self, state: &[f64; 6]) -> Vector3<f64> {
         self.rate_matrix_at(state) * Vector3::new(state[3], state[4], state[5])
@@ -58,6 +69,9 @@ impl<C: AngleChart + ?Sized> AngleChart for &C {
     }
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         (**self).energy_at(state)
+    }
+    fn check_parameters(&self) -> Result<(), TopError> {
+        (**self).check_parameters()
     }
     fn omega_at(&self, state: &[f64; 6]) -> Vector3<f64> {
         (**self).omega_at(state)

@@ -108,6 +108,8 @@ impl<C: AngleChart> ChartedTop<C> {
     /// # Errors
     /// [`ChartError::SameSequence`] if both models use one sequence;
     /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive;
+    /// [`ChartError::Parameter`] for a setting of the top out of its range (a negative
+    /// gravity or damping, a NaN field: [`super::TopParameters::check`]);
     /// [`ChartError::NotARotation`] if `r` is not a rotation matrix within
     /// [`ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`] for a NaN or infinite ω;
     /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
@@ -125,6 +127,9 @@ impl<C: AngleChart> ChartedTop<C> {
         let switch = config.switch_below;
         if !(switch.is_finite() && switch > 0.0) {
             return Err(ChartError::InvalidSwitch { value: switch });
+        }
+        for chart in &charts {
+            chart.check_parameters().map_err(ChartError::Parameter)?;
         }
         check_rotation(r)?;
         if !omega.iter().all(|v| v.is_finite()) {

@@ -3,6 +3,7 @@
 
 use thiserror::Error;
 
+use crate::body::BodyError;
 use crate::ode::OdeError;
 use crate::rigid::AngleSequence;
 
@@ -44,6 +45,38 @@ pub enum TopError {
         /// Its values.
         values: Vec<f64>,
     },
+    /// A declared setting of the scene (`#[top(gravity = g)]`, `damping`, a constant torque)
+    /// is NaN or infinite.
+    #[error("the top's `{parameter}` is {value}: it must be finite")]
+    NonFiniteParameter {
+        /// The setting, as `#[top(...)]` names it.
+        parameter: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The gravity is negative. It is the magnitude g ≥ 0 of a field along −z in space, so a
+    /// gravity written with the sign of its direction would pull the top up.
+    #[error(
+        "the top's `gravity` is {value}: it must be zero or positive, the magnitude g of \
+         gravity along −z (write 9.81, not −9.81)"
+    )]
+    NegativeGravity {
+        /// The value given.
+        value: f64,
+    },
+    /// The damping coefficient is negative: the torque −k ω would feed energy in.
+    #[error(
+        "the top's `damping` is {value}: it must be zero or positive (the torque is −k ω; a \
+         negative k feeds energy in)"
+    )]
+    NegativeDamping {
+        /// The value given.
+        value: f64,
+    },
+    /// The body of a top breaks a rule of its description (a field-valued mass, say), found
+    /// by [`super::TopDynamics::validate_top`].
+    #[error(transparent)]
+    Body(#[from] BodyError),
     /// The attitude quaternion of an Eulerian state is zero, so it names no attitude.
     #[error(
         "the attitude quaternion {quaternion:?} is zero; a state needs a non-zero quaternion \
@@ -97,6 +130,9 @@ pub enum ChartError {
         /// |det B| in the second chart.
         secondary: f64,
     },
+    /// A setting of the top is out of its range (see [`super::TopParameters::check`]).
+    #[error(transparent)]
+    Parameter(TopError),
     /// The stepper failed, or the stop time is not finite or lies in the past.
     #[error(transparent)]
     Ode(#[from] OdeError),

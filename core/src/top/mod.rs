@@ -5,6 +5,9 @@
 //!   generalised forces, and [`TopScene::derive`] hands them to the Euler–Lagrange engine
 //!   ([`crate::lagrange`]), giving a [`TopDerivation`]; [`TopScene::eulerian_rhs`] gives the
 //!   same scene in Eulerian form.
+//! - [`TopParameters`] holds a scene's declared settings (gravity, damping, constant
+//!   torques) and [`TopParameters::check`] is the one rule for them: the derive applies it to
+//!   literals at compile time, [`TopDynamics::check_parameters`] to field values at run time.
 //! - [`TopDynamics`] is the trait `#[top(...)]` implements over the generated code; [`TopChart`] and
 //!   [`EulerianTop`] run a derived top with any stepper of [`crate::ode`].
 //! - [`ChartedTop`] gets through gimbal lock by switching between the ZXZ and ZYX charts
@@ -26,6 +29,7 @@ mod fast_top;
 mod interpreted;
 mod linear;
 mod observe;
+mod parameters;
 mod rates;
 mod scene;
 mod theory;
@@ -43,6 +47,7 @@ pub use linear::{
     reduced_linearisation,
 };
 pub use observe::TopQuantities;
+pub use parameters::TopParameters;
 pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
 pub use scene::{TopDerivation, TopScene};
 pub use theory::{

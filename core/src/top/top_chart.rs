@@ -3,6 +3,7 @@
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
+use super::error::TopError;
 use super::top_trait::TopDynamics;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
@@ -92,5 +93,8 @@ impl<T: TopDynamics> AngleChart for TopChart<'_, T> {
     }
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         self.top.energy_in(self.sequence, state)
+    }
+    fn check_parameters(&self) -> Result<(), TopError> {
+        self.top.check_parameters()
     }
 }

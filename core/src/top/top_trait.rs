@@ -4,7 +4,9 @@
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
+use super::parameters::TopParameters;
 use super::rates::{check_chart, rates_from_omega};
+use crate::body::RigidBody;
 use crate::rigid::AngleSequence;
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
@@ -80,6 +82,48 @@ pub trait TopDynamics {
         omega: &Vector3<f64>,
     ) -> Vector3<f64>;
 
+    /// The values of the declared torque settings (gravity, damping, constant torques), read
+    /// from the fields where `#[top(...)]` names fields.
+    fn top_parameters(&self) -> TopParameters;
+
+    /// Checks the declared settings under the rules literals are held to at compile time
+    /// ([`TopParameters::check`]): gravity and damping finite and ≥ 0, torques finite. The
+    /// checked entry points (`try_` methods, [`super::ChartedTop::new`],
+    /// [`TopDynamics::validate_top`]) call it; the generated equations do not.
+    ///
+    /// # Errors
+    /// As [`TopParameters::check`].
+    fn check_parameters(&self) -> Result<(), TopError> {
+        self.top_parameters().check()
+    }
+
+    /// Checks the body ([`RigidBody::validate`]) and the top's settings
+    /// ([`TopDynamics::check_parameters`]) for the current field values.
+    ///
+    /// # Errors
+    /// [`TopError::Body`] for the body's first broken rule, then as
+    /// [`TopDynamics::check_parameters`].
+    fn validate_top(&self) -> Result<(), TopError>
+    where
+        Self: RigidBody,
+    {
+        self.validate()?;
+        self.check_parameters()
+    }
+
+    /// `self`, if it passes [`TopDynamics::validate_top`]: a checked constructor for tops
+    /// with field values, `Spinner { g: 9.81 }.validated_top()?`.
+    ///
+    /// # Errors
+    /// As [`TopDynamics::validate_top`].
+    fn validated_top(self) -> Result<Self, TopError>
+    where
+        Self: Sized + RigidBody,
+    {
+        self.validate_top()?;
+        Ok(self)
+    }
+
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
     /// [`TopDynamics::try_angle_accel`]).
     fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
@@ -102,7 +146,8 @@ pub trait TopDynamics {
     /// q̈ in the chart `seq`, refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
+    /// The settings' errors of [`TopDynamics::check_parameters`] (a negative gravity or
+    /// damping, a NaN field); [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
     /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
     /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
@@ -112,6 +157,7 @@ pub trait TopDynamics {
         t: f64,
         state: &[f64; 6],
     ) -> Result<[f64; 3], TopError> {
+        self.check_parameters()?;
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;

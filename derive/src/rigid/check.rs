@@ -139,9 +139,10 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                 ck.cx.error_spanned_by(
                     key,
                     format!(
-                        "unknown key `{key}`: at the top level only `{} = [x, y, z]` and parts ({}) are allowed",
+                        "unknown key `{key}`: at the top level only `{} = [x, y, z]` and parts ({}) are allowed{}",
                         keys::PIVOT,
-                        part_list()
+                        part_list(),
+                        keys::did_you_mean(&key.to_string(), keys::RIGID_KEYS.iter().copied())
                     ),
                 );
             }
@@ -259,22 +260,35 @@ impl Checker<'_> {
         let Some(table) = keys::find_part(&name.to_string()) else {
             self.cx.error_spanned_by(
                 name,
-                format!("unknown part `{name}`: expected one of {}", part_list()),
+                format!(
+                    "unknown part `{name}`: expected one of {}{}",
+                    part_list(),
+                    keys::did_you_mean_part(&name.to_string())
+                ),
             );
             return None;
         };
         let mut given: Vec<(&'static str, &KeyValue)> = Vec::new();
         let mut ok = true;
+        // Keys a misspelling was taken for: their absence is the same mistake, said once.
+        let mut suggested: Vec<&'static str> = Vec::new();
         for kv in keys {
-            let Some(key) = table.key(&kv.key.to_string()) else {
+            let written = kv.key.to_string();
+            let Some(key) = table.key(&written) else {
                 let allowed: Vec<&str> = table.allowed().collect();
+                // The explicit body's alias is a key one may have meant too.
+                let alias = (table.kind == keys::PartKind::Explicit).then_some(keys::CENTER);
+                let known = allowed.iter().copied().chain(alias);
+                let near = keys::closest(&written, known.clone());
+                suggested.extend(near.and_then(|k| table.key(k)));
                 self.cx.error_spanned_by(
                     &kv.key,
                     format!(
-                        "unknown key `{}` for `{}`: allowed keys are {}",
+                        "unknown key `{}` for `{}`: allowed keys are {}{}",
                         kv.key,
                         table.name,
-                        allowed.join(", ")
+                        allowed.join(", "),
+                        keys::did_you_mean(&written, known)
                     ),
                 );
                 ok = false;
@@ -298,7 +312,7 @@ impl Checker<'_> {
         let missing: Vec<String> = table
             .required
             .iter()
-            .filter(|r| !given.iter().any(|(g, _)| g == *r))
+            .filter(|r| !given.iter().any(|(g, _)| g == *r) && !suggested.contains(r))
             .map(|m| format!("`{m}`"))
             .collect();
         if !missing.is_empty() {

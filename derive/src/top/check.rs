@@ -1,8 +1,12 @@
 //! Meaning of the `#[top(...)]` items: keys against the table in `keys.rs`, values with the
-//! `#[rigid]` value rules in the same arena, and the signs that literals can be judged on.
+//! `#[rigid]` value rules in the same arena, and the rules of
+//! `precess_core::top::TopParameters` on the values that are literals (field values meet the
+//! same rules at run time, in the generated `TopDynamics::check_parameters`).
 
+use precess_core::nalgebra::Vector3;
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
+use precess_core::top::TopParameters;
 use syn::{Expr, Ident};
 
 use crate::keys::{self, TOP_KEYS};
@@ -67,18 +71,67 @@ pub fn check(
         }
         seen.push(key);
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
-            Some(keys::GRAVITY) => settings.gravity = sign_checked(ck, value, keys::GRAVITY, true),
-            Some(keys::DAMPING) => settings.damping = sign_checked(ck, value, keys::DAMPING, false),
-            Some(keys::BODY_TORQUE) => settings.body_torque = ck.vector(value),
-            Some(keys::SPACE_TORQUE) => settings.space_torque = ck.vector(value),
+            Some(keys::GRAVITY) => {
+                settings.gravity = ck.scalar(value).filter(|&g| {
+                    let literal = constant(ck, g);
+                    literal_rule(
+                        ck,
+                        value,
+                        TopParameters {
+                            gravity: literal,
+                            ..TopParameters::default()
+                        },
+                    )
+                });
+            }
+            Some(keys::DAMPING) => {
+                settings.damping = ck.scalar(value).filter(|&k| {
+                    let literal = constant(ck, k);
+                    literal_rule(
+                        ck,
+                        value,
+                        TopParameters {
+                            damping: literal,
+                            ..TopParameters::default()
+                        },
+                    )
+                });
+            }
+            Some(keys::BODY_TORQUE) => {
+                settings.body_torque = ck.vector(value).filter(|v| {
+                    let literal = constant_vector(ck, v);
+                    literal_rule(
+                        ck,
+                        value,
+                        TopParameters {
+                            body_torque: literal,
+                            ..TopParameters::default()
+                        },
+                    )
+                });
+            }
+            Some(keys::SPACE_TORQUE) => {
+                settings.space_torque = ck.vector(value).filter(|v| {
+                    let literal = constant_vector(ck, v);
+                    literal_rule(
+                        ck,
+                        value,
+                        TopParameters {
+                            space_torque: literal,
+                            ..TopParameters::default()
+                        },
+                    )
+                });
+            }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}",
+                    "unknown key `{key}` in `#[{}]`: expected {}{}",
                     keys::TOP,
-                    TOP_KEYS.join(", ")
+                    TOP_KEYS.join(", "),
+                    keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),
         }
@@ -87,30 +140,29 @@ pub fn check(
     ok.then_some(Some(settings))
 }
 
-/// A scalar that must be positive (gravity: g along −z) or non-negative (damping: a
-/// negative coefficient would feed energy in). Only literal values can be judged here.
-fn sign_checked(ck: &mut Checker, value: &Expr, what: &str, strict: bool) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v) {
-        let bad = if strict {
-            r.is_negative() || r.is_zero()
-        } else {
-            r.is_negative()
-        };
-        if bad {
-            let need = if strict {
-                "positive (gravity acts along −z; give its magnitude)"
-            } else {
-                "zero or positive (a negative damping feeds energy in)"
-            };
-            ck.cx.error_spanned_by(
-                value,
-                format!("`{what}` is {}: it must be {need}", r.to_f64()),
-            );
-            return None;
+/// The value of `e` if it is a constant (a literal, or arithmetic on literals).
+fn constant(ck: &Checker, e: ExprId) -> Option<f64> {
+    ck.arena.as_rational(e).map(|r| r.to_f64())
+}
+
+/// The vector `v` if all its components are constants. A vector mixing fields and literals
+/// is judged whole at run time (its literal components are finite: literals always are).
+fn constant_vector(ck: &Checker, v: &[ExprId; 3]) -> Option<Vector3<f64>> {
+    let [x, y, z] = v.map(|c| constant(ck, c));
+    Some(Vector3::new(x?, y?, z?))
+}
+
+/// Judges the literal settings in `literal` by the rule the generated
+/// `TopDynamics::check_parameters` applies to field values at run time, so both are held
+/// to one rule; records its error on `value`. False after an error.
+fn literal_rule(ck: &Checker, value: &Expr, literal: TopParameters) -> bool {
+    match literal.check() {
+        Ok(()) => true,
+        Err(e) => {
+            ck.cx.error_spanned_by(value, e);
+            false
         }
     }
-    Some(v)
 }
 
 /// The path of the user torque function.

@@ -9,8 +9,9 @@ use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId};
 use precess_core::top::{TopDerivation, TopScene};
 use proc_macro2::TokenStream;
-use quote::{ToTokens, quote};
+use quote::{quote, quote_spanned};
 use syn::Ident;
+use syn::spanned::Spanned;
 
 use super::check::TopSettings;
 use crate::ctxt::Ctxt;
@@ -66,14 +67,14 @@ impl ChartArms {
             })
             .collect();
         // The user torque is called with R and ω computed by the chart's own methods.
-        let call = user.call(|f| {
+        let call = user.call(
             quote! {
                 let __q = [state[0], state[1], state[2]];
                 let __r = #p::TopDynamics::rotation_in(self, #seq_t, &__q);
                 let __w = #p::TopDynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
-                let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
-            }
-        });
+            },
+            quote!(&__w),
+        );
         let Emitted { lets, outputs } = low.lower_reading(arena, &top.accelerations.accel, &state);
         self.accel
             .push(quote!(#seq_t => { #call #lets [#(#outputs),*] }));
@@ -94,12 +95,26 @@ impl ChartArms {
 }
 
 /// The declared user torque function, if any: how each method calls it into `__u`.
-struct UserCall(Option<TokenStream>);
+struct UserCall(Option<syn::Path>);
 
 impl UserCall {
-    /// The statements calling the function (built by `call` from its path), or nothing.
-    fn call(&self, call: impl FnOnce(&TokenStream) -> TokenStream) -> TokenStream {
-        self.0.as_ref().map(call).unwrap_or_default()
+    /// The statements calling the function, or nothing: `setup` (which binds the attitude
+    /// matrix `__r`), then `__u = f(self, t, &__r, omega)`.
+    ///
+    /// The function is first bound to a fn pointer of the signature the attribute
+    /// documents, spanned on its path: a function of another signature is then one error on
+    /// the path in the attribute, naming the expected and the found signature, rather than
+    /// errors of the call spread over the derive. (The optimiser sees through the pointer: it
+    /// is a constant.)
+    fn call(&self, setup: TokenStream, omega: TokenStream) -> TokenStream {
+        let Some(path) = &self.0 else {
+            return TokenStream::new();
+        };
+        let p = Private;
+        let bind = quote_spanned! {path.span()=>
+            let __torque: fn(&Self, f64, &#p::Matrix3<f64>, &#p::Vector3<f64>) -> #p::Vector3<f64> = #path;
+        };
+        quote!(#setup #bind let __u = __torque(self, t, &__r, #omega);)
     }
 }
 
@@ -114,7 +129,7 @@ pub fn expand(
 ) -> Option<TokenStream> {
     let p = Private;
     let mut scene = scene(arena, checked, settings);
-    let user = UserCall(settings.torque.as_ref().map(ToTokens::to_token_stream));
+    let user = UserCall(settings.torque.clone());
     let mut symbols = parameters.tokens();
     // The user torque enters the derivation as three input symbols, read from the value
     // the user function returns.
@@ -137,6 +152,7 @@ pub fn expand(
         }
     };
     let declared_t = sequence_tokens(scene.sequence);
+    let parameters = top_parameters(&low, arena, settings);
     let Methods {
         arms:
             ChartArms {
@@ -154,6 +170,8 @@ pub fn expand(
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::TopDynamics for #ident {
             const SEQUENCE: #p::AngleSequence = #declared_t;
+
+            fn top_parameters(&self) -> #p::TopParameters #parameters
 
             #[inline]
             fn accel_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
@@ -187,6 +205,43 @@ pub fn expand(
                 omega: &#p::Vector3<f64>,
             ) -> #p::Vector3<f64> #eulerian
         }
+    })
+}
+
+/// The body of `top_parameters`: the declared settings' values, read from the fields where
+/// they name fields, for `check_parameters` to judge at run time by the rule literals met at
+/// compile time.
+fn top_parameters(low: &Lowering, arena: &Arena, settings: &TopSettings) -> TokenStream {
+    let p = Private;
+    let scalars = [settings.gravity, settings.damping];
+    let vectors = [settings.body_torque, settings.space_torque];
+    let values: Vec<ExprId> = scalars
+        .iter()
+        .flatten()
+        .copied()
+        .chain(vectors.iter().flatten().flatten().copied())
+        .collect();
+    let Emitted { lets, outputs } = low.lower(arena, &values);
+    let mut it = outputs.into_iter();
+    let some = quote!(::core::option::Option::Some);
+    let none = quote!(::core::option::Option::None);
+    let [gravity, damping] = scalars.map(|s| match s {
+        Some(_) => {
+            let v = it.next();
+            quote!(#some(#v))
+        }
+        None => none.clone(),
+    });
+    let [body_torque, space_torque] = vectors.map(|v| match v {
+        Some(_) => {
+            let (x, y, z) = (it.next(), it.next(), it.next());
+            quote!(#some(#p::Vector3::new(#x, #y, #z)))
+        }
+        None => none.clone(),
+    });
+    quote!({
+        #lets
+        #p::TopParameters { gravity: #gravity, damping: #damping, body_torque: #body_torque, space_torque: #space_torque }
     })
 }
 
@@ -244,13 +299,13 @@ fn declared_chart(
         .flat_map(|k| [(c.q[k], quote!(q[#k])), (c.rates[k], quote!(q_dot[#k]))])
         .collect();
     let declared_t = sequence_tokens(top.sequence);
-    let call = user.call(|f| {
+    let call = user.call(
         quote! {
             let __r = #p::TopDynamics::rotation_in(self, #declared_t, q);
             let __w = #p::TopDynamics::rate_matrix_in(self, #declared_t, q) * #p::Vector3::from(*q_dot);
-            let __u: #p::Vector3<f64> = #f(self, t, &__r, &__w);
-        }
-    });
+        },
+        quote!(&__w),
+    );
     let jac = top.jacobian(arena);
     let Emitted { lets, outputs } = low.lower_reading(arena, jac.as_flattened(), &reads);
     let rows = outputs.chunks(6).map(|row| quote!([#(#row),*]));
@@ -287,7 +342,7 @@ fn eulerian(
             reads.push((r, quote!(__r[(#i, #j)])));
         }
     }
-    let call = user.call(|f| quote!(let __u: #p::Vector3<f64> = #f(self, t, &__r, omega);));
+    let call = user.call(TokenStream::new(), quote!(omega));
     let Emitted { lets, outputs } = low.lower_reading(arena, &rhs, &reads);
     Ok(quote!({
         let __r: #p::Matrix3<f64> = attitude.to_rotation_matrix().into_inner();

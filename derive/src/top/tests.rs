@@ -55,7 +55,9 @@ fn declared_user_torque_is_called_and_fields_are_read() {
     });
     assert!(!code.contains("compile_error"), "{code}");
     let accel = zxz_accel(&code);
-    assert!(accel.contains("drive (self , t"), "{accel}");
+    // Bound once to the documented fn pointer type, then called.
+    assert!(accel.contains("= drive ;"), "{accel}");
+    assert!(accel.contains("__torque (self , t"), "{accel}");
     assert!(accel.contains("self . k") && accel.contains("self . m") && accel.contains("self . h"));
 }
 
@@ -89,4 +91,47 @@ fn rigid_and_top_errors_come_together() {
     });
     assert!(code.contains("unknown key `colour`"), "{code}");
     assert!(code.contains("unknown key `friction`"), "{code}");
+}
+
+#[test]
+fn a_bare_top_is_torque_free() {
+    let code = expand(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.1]), pivot = [0.0, 0.0, 0.0])]
+        #[top]
+        struct Free;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    assert!(code.contains("impl :: precess :: __private :: TopDynamics for Free"));
+    // Nothing declared: every setting is None, and no user call.
+    let start = code.find("fn top_parameters").unwrap_or(0);
+    let parameters = &code[start
+        ..code[start..]
+            .find("fn accel_in")
+            .map_or(code.len(), |e| start + e)];
+    assert_eq!(parameters.matches(":: None").count(), 4, "{parameters}");
+    assert!(!code.contains("__u"));
+}
+
+#[test]
+fn field_settings_are_read_for_the_run_time_check() {
+    let code = expand(quote! {
+        #[rigid(disk(mass = 1.0, radius = 0.04, at = [0.0, 0.0, 0.05]), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = g, damping = 0.5)]
+        struct Spinner { g: f64 }
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    let start = code.find("fn top_parameters").unwrap_or(0);
+    let parameters = &code[start
+        ..code[start..]
+            .find("fn accel_in")
+            .map_or(code.len(), |e| start + e)];
+    assert!(parameters.contains("= self . g ;"), "{parameters}");
+    assert!(
+        parameters.contains("gravity : :: core :: option :: Option :: Some (__p"),
+        "{parameters}"
+    );
+    assert!(
+        parameters.contains("damping : :: core :: option :: Option :: Some (0.5"),
+        "{parameters}"
+    );
 }

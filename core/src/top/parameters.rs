@@ -1,0 +1,137 @@
+//! The scalar and vector settings of a top's scene and the one rule function that judges
+//! them: the derive calls it on literal values while it expands (a compile error) and the
+//! generated [`super::TopDynamics::check_parameters`] on field values at run time (a
+//! [`TopError`]), so a value is accepted or refused alike whichever way it was written.
+
+use nalgebra::Vector3;
+
+use super::error::TopError;
+
+/// The values of a top's declared torque settings (`None`: not declared), as
+/// `#[top(...)]` takes them from literals or fields.
+///
+/// Sign conventions: `gravity` is the magnitude g ≥ 0 of a uniform field pointing along −z in
+/// space (write 9.81, not −9.81); `damping` is the coefficient k ≥ 0 of the torque −k ω;
+/// the two constant torques are any finite vectors, `body_torque` in body axes and
+/// `space_torque` in space axes.
+///
+/// # Examples
+///
+/// A gravity given with the sign of its direction is refused by name:
+///
+/// ```
+/// use precess::top::{TopError, TopParameters};
+///
+/// let upright = TopParameters { gravity: Some(9.81), damping: Some(0.02), ..Default::default() };
+/// assert_eq!(upright.check(), Ok(()));
+///
+/// let signed = TopParameters { gravity: Some(-9.81), ..Default::default() };
+/// assert_eq!(signed.check(), Err(TopError::NegativeGravity { value: -9.81 }));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TopParameters {
+    /// The magnitude g of gravity along −z (space).
+    pub gravity: Option<f64>,
+    /// The coefficient k of the damping torque −k ω.
+    pub damping: Option<f64>,
+    /// A constant torque fixed in the body, body axes.
+    pub body_torque: Option<Vector3<f64>>,
+    /// A constant torque fixed in space, space axes.
+    pub space_torque: Option<Vector3<f64>>,
+}
+
+impl TopParameters {
+    /// Checks every declared value, in the order of the fields.
+    ///
+    /// Gravity and damping must be finite and ≥ 0 (a zero gravity or damping is the torque
+    /// left out, which is physics, so it is allowed); torque components must be finite.
+    ///
+    /// # Errors
+    /// [`TopError::NonFiniteParameter`] naming the setting and its NaN or infinite value;
+    /// [`TopError::NegativeGravity`] for g < 0 (a gravity written with the sign of its
+    /// direction would pull the top up); [`TopError::NegativeDamping`] for k < 0 (a negative
+    /// damping feeds energy in).
+    pub fn check(&self) -> Result<(), TopError> {
+        if let Some(value) = self.gravity {
+            finite("gravity", value)?;
+            if value < 0.0 {
+                return Err(TopError::NegativeGravity { value });
+            }
+        }
+        if let Some(value) = self.damping {
+            finite("damping", value)?;
+            if value < 0.0 {
+                return Err(TopError::NegativeDamping { value });
+            }
+        }
+        for (parameter, torque) in [
+            ("body_torque", &self.body_torque),
+            ("space_torque", &self.space_torque),
+        ] {
+            for &value in torque.iter().flatten() {
+                finite(parameter, value)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A setting must be finite: NaN and ∞ propagate into every acceleration.
+fn finite(parameter: &'static str, value: f64) -> Result<(), TopError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(TopError::NonFiniteParameter { parameter, value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_rule_names_its_setting() {
+        let none = TopParameters::default();
+        assert_eq!(none.check(), Ok(()));
+        let zero = TopParameters {
+            gravity: Some(0.0),
+            damping: Some(0.0),
+            body_torque: Some(Vector3::zeros()),
+            space_torque: Some(Vector3::new(-1.0, 0.0, 2.0)),
+        };
+        assert_eq!(zero.check(), Ok(()));
+        let damped = TopParameters {
+            damping: Some(-0.5),
+            ..none
+        };
+        assert_eq!(
+            damped.check(),
+            Err(TopError::NegativeDamping { value: -0.5 })
+        );
+        let nan = TopParameters {
+            gravity: Some(f64::NAN),
+            ..none
+        };
+        assert!(matches!(
+            nan.check(),
+            Err(TopError::NonFiniteParameter { parameter: "gravity", value }) if value.is_nan()
+        ));
+        let torque = TopParameters {
+            space_torque: Some(Vector3::new(0.0, f64::INFINITY, 0.0)),
+            ..none
+        };
+        assert_eq!(
+            torque.check(),
+            Err(TopError::NonFiniteParameter {
+                parameter: "space_torque",
+                value: f64::INFINITY
+            })
+        );
+        // −0.0 is not below zero: it is the same gravity as 0.
+        let minus_zero = TopParameters {
+            gravity: Some(-0.0),
+            ..none
+        };
+        assert_eq!(minus_zero.check(), Ok(()));
+    }
+}

@@ -1,0 +1,8 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.1]), pivot = [0.0, 0.0, 0.0])]
+#[top(gravty = 9.81)]
+struct Spinner;
+
+fn main() {}
