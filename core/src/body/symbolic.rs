@@ -37,7 +37,7 @@ pub enum Frame {
 /// let (m, r, l) = (a.number("2").unwrap(), a.number("0.1").unwrap(), a.number("0.4").unwrap());
 /// let z = a.zero();
 /// let cylinder = Shape::Cylinder { mass: m, radius: r, length: l, axis: Axis::Z };
-/// let d = Description { parts: vec![Part { shape: cylinder, at: [z, z, z] }], pivot: None };
+/// let d = Description { parts: vec![Part::new(cylinder, [z, z, z])], pivot: None };
 /// let body = SymbolicBody::new(&mut a, &d).unwrap();
 /// let Frame::Diagonal(moments) = body.frame else { panic!("a cylinder is diagonal") };
 /// // I3 = ½ m r² = 1/100 exactly.
