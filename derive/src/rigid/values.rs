@@ -41,7 +41,7 @@ impl Checker<'_> {
         e: &Expr,
         kind: &'static str,
     ) -> Option<Orientation<ExprId>> {
-        const ROTATE: &str = "expected `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])` (rows of the rotation) or turns about the part's axes such as `zxz(phi, theta, psi)` or `y(angle)` for `rotate` (angles in radians)";
+        const ROTATE: &str = "expected `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])` (rows of the rotation) or up to three turns about the part's axes such as `zxz(phi, theta, psi)` or `y(angle)` for `rotate` (angles in radians)";
         let call = match e {
             Expr::Call(call) => call,
             _ => {
@@ -57,11 +57,20 @@ impl Checker<'_> {
         match (name.as_str(), args.as_slice()) {
             ("axis_angle", [axis, angle]) => {
                 let (k, a) = (self.vector(axis), self.scalar(angle));
-                let o = Orientation::AxisAngle {
-                    axis: k?,
-                    angle: a?,
+                let (k, a) = (k?, a?);
+                // The axis is checked on its own, so a literal zero axis is refused even
+                // when the angle is a field.
+                let zero = self.arena.zero();
+                let axis_only = Orientation::AxisAngle {
+                    axis: k,
+                    angle: zero,
                 };
-                self.literal_rotation(&o, kind, axis).then_some(o)
+                self.literal_rotation(&axis_only, kind, axis)
+                    .then_some(Orientation::AxisAngle { axis: k, angle: a })
+            }
+            ("axis_angle", _) => {
+                self.cx.error_spanned_by(e, "`axis_angle` takes an axis and an angle in radians: `axis_angle([x, y, z], angle)`");
+                None
             }
             ("matrix", [rows]) => {
                 let Expr::Array(a) = rows else {
@@ -77,13 +86,20 @@ impl Checker<'_> {
                 let o = Orientation::Matrix([r[0]?, r[1]?, r[2]?]);
                 self.literal_rotation(&o, kind, rows).then_some(o)
             }
+            ("matrix", _) => {
+                self.cx.error_spanned_by(e, "`matrix` takes the rows of the rotation: `matrix([[Rxx, Rxy, Rxz], [Ryx, Ryy, Ryz], [Rzx, Rzy, Rzz]])`");
+                None
+            }
             (turns, _)
                 if (1..=3).contains(&turns.len()) && turns.chars().all(|c| "xyz".contains(c)) =>
             {
                 if args.len() != turns.len() {
                     let n = turns.len();
+                    let axes: Vec<String> = turns.chars().map(String::from).collect();
                     let msg = format!(
-                        "`{turns}(..)` turns about {n} axes in turn and takes {n} angles, got {}",
+                        "`{turns}(..)` turns about {} in turn, so it takes {n} {}, got {}",
+                        axes.join(", then "),
+                        if n == 1 { "angle" } else { "angles" },
                         args.len()
                     );
                     if args.is_empty() {
