@@ -138,8 +138,16 @@ pub fn check_orientation(
         Orientation::Matrix(rows) => {
             // A non-orthonormal matrix stretches the part: R I Rᵀ is then not its tensor.
             let r = matrix(rows);
-            let deviation = (r.transpose() * r - Matrix3::identity()).abs().max();
-            if !(deviation <= ORTHONORMAL_TOLERANCE) {
+            let gram = r.transpose() * r - Matrix3::identity();
+            // The largest |entry|, NaN kept (huge entries give ∞ − ∞).
+            let deviation = gram.iter().fold(0.0f64, |m, x| {
+                if x.is_nan() || x.abs() > m {
+                    x.abs()
+                } else {
+                    m
+                }
+            });
+            if deviation.is_nan() || deviation > ORTHONORMAL_TOLERANCE {
                 return Err(BodyError::NotOrthonormal {
                     part,
                     kind,
