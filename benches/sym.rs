@@ -31,6 +31,7 @@ fn point_mass_top(n: usize) -> usize {
                 mass: a.parameter(&format!("m{i}")),
             },
             at: ["x", "y", "z"].map(|c| a.parameter(&format!("{c}{i}"))),
+            orientation: None,
         })
         .collect();
     let d = Description {

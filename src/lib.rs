@@ -37,8 +37,8 @@ pub use precess_core::*;
 /// The derive and the types a user of it needs.
 pub mod prelude {
     pub use precess_core::body::{
-        About, Axis, Body, BodyBuilder, BodyError, Matrix3, Principal, RigidBody, Rotation3, Shape,
-        Vector3,
+        About, Axis, Body, BodyBuilder, BodyError, Matrix3, Orientation, Principal, RigidBody,
+        Rotation3, Shape, Vector3,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
@@ -53,8 +53,8 @@ pub mod prelude {
 #[doc(hidden)]
 pub mod __private {
     pub use precess_core::body::{
-        About, Axis, BodyError, Description, Matrix3, Part, Principal, RigidBody, Rotation3, Shape,
-        Vector3, euler_rhs_diagonal, principal_frame,
+        About, Axis, BodyError, Description, Matrix3, Orientation, Part, Principal, RigidBody,
+        Rotation3, Shape, Vector3, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;

@@ -49,7 +49,7 @@ fn part() -> impl Strategy<Value = Part<f64>> {
                 reversed,
             },
         });
-    (shape, point()).prop_map(|(shape, at)| Part { shape, at })
+    (shape, point()).prop_map(|(shape, at)| Part::new(shape, at))
 }
 
 fn matrix(t: &[[f64; 3]; 3]) -> Matrix3<f64> {

@@ -289,10 +289,7 @@ fn a_parametric_zero_moment_names_its_axis() {
         axis: Axis::X,
     };
     let d = Description {
-        parts: vec![Part {
-            shape: rod,
-            at: [z, z, z],
-        }],
+        parts: vec![Part::new(rod, [z, z, z])],
         pivot: None,
     };
     let e = SymbolicBody::new(&mut a, &d).unwrap_err();

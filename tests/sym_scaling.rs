@@ -36,10 +36,7 @@ fn parametric(cloud: &[(f64, [f64; 3])]) -> (Arena, TopModel, usize) {
         .map(|i| {
             let m = a.parameter(&format!("m{i}"));
             let at = ["x", "y", "z"].map(|c| a.parameter(&format!("{c}{i}")));
-            Part {
-                shape: Shape::Particle { mass: m },
-                at,
-            }
+            Part::new(Shape::Particle { mass: m }, at)
         })
         .collect();
     let d = Description {
@@ -140,10 +137,7 @@ fn single() -> Result<(), LagrangeError> {
     let m = a.parameter("m");
     let at = [a.parameter("x"), a.parameter("y"), a.parameter("z")];
     let d = Description {
-        parts: vec![Part {
-            shape: Shape::Particle { mass: m },
-            at,
-        }],
+        parts: vec![Part::new(Shape::Particle { mass: m }, at)],
         pivot: Some([z, z, z]),
     };
     let body = SymbolicBody::new(&mut a, &d).expect("the mass properties exist");

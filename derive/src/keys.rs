@@ -31,6 +31,8 @@ pub const AT: &str = "at";
 pub const CENTER: &str = "center";
 /// The symmetry axis of an axisymmetric part.
 pub const AXIS: &str = "axis";
+/// The rotation of a part with axes, from its own axes to description axes.
+pub const ROTATE: &str = "rotate";
 /// The point an explicit tensor is taken about.
 pub const ABOUT: &str = "about";
 /// The body's fixed point, a top-level key of `#[rigid]`.
@@ -97,7 +99,9 @@ impl PartKeys {
 }
 
 const PLACED: &[&str] = &[AT];
-const PLACED_ON_AXIS: &[&str] = &[AT, AXIS];
+// A part with axes may be turned; a particle, sphere or shell looks the same at any turn.
+const PLACED_TURNED: &[&str] = &[AT, ROTATE];
+const PLACED_ON_AXIS: &[&str] = &[AT, AXIS, ROTATE];
 
 /// Every part, in the order the docs list them.
 pub const PARTS: &[PartKeys] = &[
@@ -106,7 +110,7 @@ pub const PARTS: &[PartKeys] = &[
     part(PartKind::Shell, "shell", &[MASS, RADIUS], PLACED),
     PartKeys {
         alias: Some("box"),
-        ..part(PartKind::Cuboid, "cuboid", &[MASS, SIZE], PLACED)
+        ..part(PartKind::Cuboid, "cuboid", &[MASS, SIZE], PLACED_TURNED)
     },
     part(
         PartKind::Cylinder,
@@ -129,8 +133,18 @@ pub const PARTS: &[PartKeys] = &[
         &[MASS, RADIUS, HEIGHT],
         PLACED_ON_AXIS,
     ),
-    part(PartKind::Ellipsoid, "ellipsoid", &[MASS, SEMI_AXES], PLACED),
-    part(PartKind::Explicit, "body", &[MASS, INERTIA], &[AT, ABOUT]),
+    part(
+        PartKind::Ellipsoid,
+        "ellipsoid",
+        &[MASS, SEMI_AXES],
+        PLACED_TURNED,
+    ),
+    part(
+        PartKind::Explicit,
+        "body",
+        &[MASS, INERTIA],
+        &[AT, ABOUT, ROTATE],
+    ),
 ];
 
 const fn part(

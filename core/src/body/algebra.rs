@@ -4,7 +4,8 @@
 
 use crate::sym::{Arena, ExprId, Rational};
 
-/// The four field operations and exact rational constants, over some value type.
+/// The four field operations, exact rational constants, and the sine, cosine and square
+/// root a part's rotation needs, over some value type.
 ///
 /// Implemented by [`Numeric`] (values are `f64`) and by [`Arena`] (values are [`ExprId`]s,
 /// so a body of literals folds to exact rational constants).
@@ -21,6 +22,13 @@ pub trait Algebra {
     fn times(&mut self, a: Self::Value, b: Self::Value) -> Self::Value;
     /// `a / b`, `None` when `b` is (identically) zero.
     fn divide(&mut self, a: Self::Value, b: Self::Value) -> Option<Self::Value>;
+
+    /// `sin a`.
+    fn sin(&mut self, a: Self::Value) -> Self::Value;
+    /// `cos a`.
+    fn cos(&mut self, a: Self::Value) -> Self::Value;
+    /// `√a`, `None` when `a` is (a constant) below zero.
+    fn sqrt(&mut self, a: Self::Value) -> Option<Self::Value>;
 
     /// `c · a` for the rational `c = num / den`.
     fn scaled(&mut self, num: i64, den: i64, a: Self::Value) -> Self::Value {
@@ -64,6 +72,15 @@ impl Algebra for Numeric {
     fn divide(&mut self, a: f64, b: f64) -> Option<f64> {
         (b != 0.0).then(|| a / b)
     }
+    fn sin(&mut self, a: f64) -> f64 {
+        a.sin()
+    }
+    fn cos(&mut self, a: f64) -> f64 {
+        a.cos()
+    }
+    fn sqrt(&mut self, a: f64) -> Option<f64> {
+        (a >= 0.0).then(|| a.sqrt())
+    }
 }
 
 impl Algebra for Arena {
@@ -85,6 +102,15 @@ impl Algebra for Arena {
     }
     fn divide(&mut self, a: ExprId, b: ExprId) -> Option<ExprId> {
         Arena::div(self, a, b).ok()
+    }
+    fn sin(&mut self, a: ExprId) -> ExprId {
+        Arena::sin(self, a)
+    }
+    fn cos(&mut self, a: ExprId) -> ExprId {
+        Arena::cos(self, a)
+    }
+    fn sqrt(&mut self, a: ExprId) -> Option<ExprId> {
+        Arena::sqrt(self, a).ok()
     }
     fn total(&mut self, terms: &[ExprId]) -> ExprId {
         self.sum(terms)

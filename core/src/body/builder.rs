@@ -5,6 +5,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::error::BodyError;
 use super::mass::MassProperties;
+use super::orientation::Orientation;
 use super::principal::Principal;
 use super::rigid::RigidBody;
 use super::shape::{Description, Part, Shape};
@@ -40,15 +41,49 @@ impl BodyBuilder {
         }
     }
 
-    /// Adds `shape` at `at` (its centre; a cone's base centre).
-    pub fn part(mut self, shape: Shape<f64>, at: [f64; 3]) -> BodyBuilder {
-        self.description.parts.push(Part { shape, at });
+    /// Adds `shape` at `at` (its centre; a cone's base centre), its axes along the
+    /// description axes. `at` is a `Vector3` or `[x, y, z]`.
+    pub fn part(mut self, shape: Shape<f64>, at: impl Into<Vector3<f64>>) -> BodyBuilder {
+        self.description.parts.push(Part::new(shape, array(at)));
         self
     }
 
-    /// Declares the pivot, the fixed point the body turns about.
-    pub fn pivot(mut self, pivot: [f64; 3]) -> BodyBuilder {
-        self.description.pivot = Some(pivot);
+    /// Adds `shape` at `at`, turned about `at` by `orientation`: an [`Orientation`], or a
+    /// nalgebra `Rotation3`, `UnitQuaternion` or `Matrix3` (part axes → description axes).
+    /// Its tensor about its centre becomes R I Rᵀ.
+    ///
+    /// ```
+    /// use approx::assert_relative_eq;
+    /// use precess_core::body::{Axis, BodyBuilder, Orientation, RigidBody, Shape};
+    /// let rod = Shape::Rod { mass: 3.0, length: 2.0, axis: Axis::Z };
+    /// let ball = Shape::Sphere { mass: 1.0, radius: 0.1 };
+    /// // A rod along z turned a quarter turn about y lies along x: no moment about x.
+    /// let quarter = Orientation::axis_angle([0.0, 1.0, 0.0], std::f64::consts::FRAC_PI_2);
+    /// let body = BodyBuilder::new()
+    ///     .rotated_part(rod, [0.0, 0.0, 0.0], quarter)
+    ///     .part(ball, [0.0, 0.0, 0.0])
+    ///     .build()
+    ///     .unwrap();
+    /// let i = body.inertia();
+    /// let ball_moment = 0.4 * 0.01;
+    /// assert_relative_eq!(i[(0, 0)], ball_moment, max_relative = 1e-12);
+    /// assert_relative_eq!(i[(1, 1)], 1.0 + ball_moment, max_relative = 1e-15);
+    /// assert_relative_eq!(i[(2, 2)], 1.0 + ball_moment, max_relative = 1e-15);
+    /// ```
+    pub fn rotated_part(
+        mut self,
+        shape: Shape<f64>,
+        at: impl Into<Vector3<f64>>,
+        orientation: impl Into<Orientation<f64>>,
+    ) -> BodyBuilder {
+        let part = Part::new(shape, array(at)).rotated(orientation.into());
+        self.description.parts.push(part);
+        self
+    }
+
+    /// Declares the pivot, the fixed point the body turns about (a `Vector3` or `[x, y, z]`).
+    pub fn pivot(mut self, pivot: impl Into<Vector3<f64>>) -> BodyBuilder {
+        self.description.pivot = Some(array(pivot));
         self
     }
 
@@ -64,6 +99,12 @@ impl BodyBuilder {
     pub fn build(self) -> Result<Body, BodyError> {
         Body::new(self.description)
     }
+}
+
+/// The description stores points as arrays, as the symbolic one does.
+fn array(v: impl Into<Vector3<f64>>) -> [f64; 3] {
+    let v = v.into();
+    [v.x, v.y, v.z]
 }
 
 /// A body computed at run time: its mass properties, principal frame, and the coefficients of

@@ -99,6 +99,44 @@ pub enum BodyError {
         /// Its principal moments, ascending.
         moments: [f64; 3],
     },
+    /// An axis–angle rotation whose axis has no direction: zero, or with a squared length
+    /// outside the normal range of `f64`, so that it cannot be normalised.
+    #[error(
+        "part {part} ({kind}): the rotation axis {axis:?} has no direction: give a non-zero axis such as [0.0, 0.0, 1.0] (its squared length must lie between 2.2e-308 and 1.8e308)"
+    )]
+    ZeroRotationAxis {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// The axis as given.
+        axis: [f64; 3],
+    },
+    /// A rotation matrix whose rows are not orthonormal: RᵀR differs from the identity.
+    #[error(
+        "part {part} ({kind}): the matrix is not a rotation: its columns are not orthonormal, |RᵀR − E| reaches {deviation:e} (at most 1e-9 is allowed)"
+    )]
+    NotOrthonormal {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// The largest entry of |RᵀR − E|.
+        deviation: f64,
+    },
+    /// An orthonormal matrix with det = −1: a reflection, which turns a right-handed part
+    /// into its mirror image.
+    #[error(
+        "part {part} ({kind}): the matrix is a reflection (det = {determinant}), not a rotation: a rotation has det = +1; negate one column, or swap two"
+    )]
+    ImproperRotation {
+        /// Index of the part.
+        part: usize,
+        /// The part's name.
+        kind: &'static str,
+        /// det R.
+        determinant: f64,
+    },
     /// An explicit tensor given about the pivot, in a description without one.
     #[error("part {part} (body): the tensor is given about the pivot, but no pivot is declared")]
     PivotRequired {

@@ -4,6 +4,7 @@
 
 use super::algebra::Algebra;
 use super::error::BodyError;
+use super::orientation::{rotate_tensor, rotate_vector, rotation_matrix};
 use super::shape::{About, Description, Shape, closed_form};
 
 /// A symmetric 3×3 tensor as rows.
@@ -88,12 +89,14 @@ struct Reduced<V> {
 
 /// Mass properties of `d`, computed in the algebra `al`.
 ///
-/// Each part's tensor about its own centre of mass is shifted to the reference point by the
-/// general parallel-axis theorem and summed.
+/// Each part's tensor about its own centre of mass, turned into description axes by its
+/// rotation R as R I Rᵀ, is shifted to the reference point by the general parallel-axis
+/// theorem and summed.
 ///
 /// # Errors
 /// [`BodyError::NoParts`] for an empty description, [`BodyError::PivotRequired`] for an
-/// explicit tensor given about a pivot that is not declared, [`BodyError::ZeroTotalMass`]
+/// explicit tensor given about a pivot that is not declared, [`BodyError::ZeroRotationAxis`]
+/// for an axis–angle whose axis is (identically) zero, [`BodyError::ZeroTotalMass`]
 /// when the masses add up to (identically) zero.
 pub fn mass_properties<A: Algebra>(
     al: &mut A,
@@ -106,28 +109,53 @@ pub fn mass_properties<A: Algebra>(
     let mut reduced = Vec::with_capacity(d.parts.len());
     for (index, part) in d.parts.iter().enumerate() {
         let mass = *part.shape.mass();
+        // R maps the part's axes to description axes; without one they coincide.
+        let rotation = match &part.orientation {
+            Some(o) => Some(rotation_matrix(al, o).ok_or(BodyError::ZeroRotationAxis {
+                part: index,
+                kind: part.shape.kind(),
+                axis: [0.0; 3],
+            })?),
+            None => None,
+        };
+        let turn = |al: &mut A, t: Tensor<A::Value>| match &rotation {
+            Some(r) => rotate_tensor(al, r, &t),
+            None => t,
+        };
         let (center, inertia) = match (&part.shape, closed_form(al, &part.shape)) {
             (_, Some((diag, offset))) => {
                 let mut center = part.at;
                 if let Some((axis, off)) = offset {
-                    center[axis.index()] = al.plus(center[axis.index()], off);
+                    // The centre's offset from `at`, along the axis in part axes, turned.
+                    let mut d = [zero; 3];
+                    d[axis.index()] = off;
+                    let d = match &rotation {
+                        Some(r) => rotate_vector(al, r, &d),
+                        None => d,
+                    };
+                    center = std::array::from_fn(|k| al.plus(center[k], d[k]));
                 }
                 let mut t = [[zero; 3]; 3];
                 for i in 0..3 {
                     t[i][i] = diag[i];
                 }
-                (center, t)
+                (center, turn(al, t))
             }
-            (Shape::Explicit { inertia, about, .. }, None) => match about {
-                About::Center => (part.at, *inertia),
-                About::Pivot => {
-                    let pivot = d.pivot.ok_or(BodyError::PivotRequired { part: index })?;
-                    // I_G = I_P − m (|g|² E − g gᵀ), g = G − P.
-                    let g = vsub(al, part.at, pivot);
-                    let shift = point_tensor(al, mass, g);
-                    (part.at, tensor_sub(al, inertia, &shift))
+            (Shape::Explicit { inertia, about, .. }, None) => {
+                // A tensor about any point turns as R I Rᵀ: turn first, then shift in
+                // description axes.
+                let inertia = turn(al, *inertia);
+                match about {
+                    About::Center => (part.at, inertia),
+                    About::Pivot => {
+                        let pivot = d.pivot.ok_or(BodyError::PivotRequired { part: index })?;
+                        // I_G = I_P − m (|g|² E − g gᵀ), g = G − P.
+                        let g = vsub(al, part.at, pivot);
+                        let shift = point_tensor(al, mass, g);
+                        (part.at, tensor_sub(al, &inertia, &shift))
+                    }
                 }
-            },
+            }
             (_, None) => return Err(BodyError::NoParts),
         };
         reduced.push(Reduced {

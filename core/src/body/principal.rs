@@ -25,10 +25,11 @@ pub struct Principal {
 }
 
 impl Principal {
-    /// A diagonal tensor's frame: the description axes themselves.
-    pub fn diagonal(moments: Vector3<f64>) -> Principal {
+    /// A diagonal tensor's frame: the description axes themselves (`moments` a `Vector3`
+    /// or `[I1, I2, I3]`).
+    pub fn diagonal(moments: impl Into<Vector3<f64>>) -> Principal {
         Principal {
-            moments,
+            moments: moments.into(),
             rotation: Rotation3::identity(),
         }
     }

@@ -6,6 +6,7 @@
 //! [`Axis`]; the others are given directly in description axes.
 
 use super::algebra::Algebra;
+use super::orientation::Orientation;
 
 /// A coordinate axis of the description frame.
 #[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
@@ -156,13 +157,35 @@ pub enum Shape<T> {
 }
 
 /// One part of a body: a shape placed at `at` (its centre; for a cone, the centre of its
-/// base).
+/// base), laid out in its own axes and, if `orientation` is given, turned about `at`.
 #[derive(Clone, PartialEq, Debug)]
 pub struct Part<T> {
-    /// The shape and its dimensions.
+    /// The shape and its dimensions, in the part's own axes.
     pub shape: Shape<T>,
     /// Where it sits in the description frame.
     pub at: [T; 3],
+    /// The rotation from the part's axes to description axes, about `at`; `None` keeps the
+    /// part's axes along the description axes.
+    pub orientation: Option<Orientation<T>>,
+}
+
+impl<T> Part<T> {
+    /// `shape` at `at`, its axes along the description axes.
+    pub fn new(shape: Shape<T>, at: [T; 3]) -> Part<T> {
+        Part {
+            shape,
+            at,
+            orientation: None,
+        }
+    }
+
+    /// The same part turned by `orientation` about `at` (replacing any earlier turn).
+    pub fn rotated(self, orientation: Orientation<T>) -> Part<T> {
+        Part {
+            orientation: Some(orientation),
+            ..self
+        }
+    }
 }
 
 /// A whole body: its parts and an optional pivot (a fixed point of the motion).
@@ -328,6 +351,7 @@ impl<T> Description<T> {
                 .map(|p| Part {
                     shape: p.shape.map(f),
                     at: v3(&p.at, f),
+                    orientation: p.orientation.as_ref().map(|o| o.map(f)),
                 })
                 .collect(),
             pivot: self.pivot.as_ref().map(|p| v3(p, f)),
@@ -336,7 +360,7 @@ impl<T> Description<T> {
 }
 
 /// A shape's diagonal tensor about its centre of mass, and that centre's offset from `at`
-/// along an axis (the cone's h/4).
+/// along an axis (the cone's h/4), both in the part's own axes.
 pub type ClosedForm<V> = ([V; 3], Option<(Axis, V)>);
 
 /// Lays an axisymmetric tensor (transverse `t`, axial `a`) along `axis`.
@@ -347,7 +371,7 @@ fn along<V: Copy>(axis: Axis, t: V, a: V) -> [V; 3] {
 }
 
 /// The diagonal of a non-explicit shape's inertia tensor about its own centre of mass, in
-/// description axes, and the offset of that centre from `at` along the shape's axis
+/// the part's own axes (description axes unless the part is rotated), and the offset of that centre from `at` along the shape's axis
 /// (non-zero only for the cone). `None` for [`Shape::Explicit`].
 pub fn closed_form<A: Algebra>(
     al: &mut A,

@@ -9,7 +9,7 @@ use super::mass::{MassProperties, mass_properties};
 use super::principal::{Principal, principal_frame};
 use super::shape::Description;
 use super::validate::matrix;
-use crate::sym::{Arena, ExprId};
+use crate::sym::{Arena, ExprId, Node};
 
 /// How the principal frame of a symbolic body is known.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,7 +37,7 @@ pub enum Frame {
 /// let (m, r, l) = (a.number("2").unwrap(), a.number("0.1").unwrap(), a.number("0.4").unwrap());
 /// let z = a.zero();
 /// let cylinder = Shape::Cylinder { mass: m, radius: r, length: l, axis: Axis::Z };
-/// let d = Description { parts: vec![Part { shape: cylinder, at: [z, z, z] }], pivot: None };
+/// let d = Description { parts: vec![Part::new(cylinder, [z, z, z])], pivot: None };
 /// let body = SymbolicBody::new(&mut a, &d).unwrap();
 /// let Frame::Diagonal(moments) = body.frame else { panic!("a cylinder is diagonal") };
 /// // I3 = ½ m r² = 1/100 exactly.
@@ -80,9 +80,12 @@ impl SymbolicBody {
             .chain(props.center.iter())
             .chain([&props.mass])
             .all(|&e| arena.free_symbols(e).is_empty());
-        if constant {
+        let props = if constant {
             finite_constants(arena, &props)?;
-        }
+            constants_folded(arena, props)?
+        } else {
+            props
+        };
         let diagonal = [(0, 1), (0, 2), (1, 2)]
             .iter()
             .all(|&(i, j)| arena.expand(t[i][j]) == arena.zero());
@@ -198,6 +201,61 @@ fn abbreviated(arena: &mut Arena, p: MassProperties<ExprId>) -> MassProperties<E
         inertia,
         inertia_cm,
     }
+}
+
+/// A body of literals with every mass property one constant. Literal values are rationals,
+/// so only a rotated part leaves irrational constants (sin 0.5, √2): each such entry is
+/// expanded, which keeps what cancels exactly (a cylinder turned about its own axis stays
+/// diagonal, its moments exact), and otherwise rounded once. Left as expressions, they would
+/// be carried through a top's whole derivation.
+fn constants_folded(
+    arena: &mut Arena,
+    p: MassProperties<ExprId>,
+) -> Result<MassProperties<ExprId>, BodyError> {
+    let one = |arena: &mut Arena, e: ExprId| -> Result<ExprId, BodyError> {
+        if arena.as_rational(e).is_some() {
+            return Ok(e);
+        }
+        // Without a turn, a constant that is not one rational is an exact product that left
+        // 128 bits: it is rounded as the emitted code always rounded it.
+        let turned = arena
+            .reachable(e)
+            .iter()
+            .any(|&id| matches!(arena.node(id), Node::Sin(_) | Node::Cos(_) | Node::Sqrt(_)));
+        if !turned {
+            return Ok(e);
+        }
+        let x = arena.expand(e);
+        if arena.as_rational(x).is_some() {
+            return Ok(x);
+        }
+        fold(arena, x, "mass properties")
+    };
+    let tensor = |arena: &mut Arena, t: [[ExprId; 3]; 3]| -> Result<_, BodyError> {
+        let mut out = t;
+        for i in 0..3 {
+            for j in i..3 {
+                let e = one(arena, t[i][j])?;
+                out[i][j] = e;
+                out[j][i] = e;
+            }
+        }
+        Ok(out)
+    };
+    let inertia = tensor(arena, p.inertia)?;
+    let inertia_cm = tensor(arena, p.inertia_cm)?;
+    let vector = |arena: &mut Arena, v: [ExprId; 3]| -> Result<[ExprId; 3], BodyError> {
+        Ok([one(arena, v[0])?, one(arena, v[1])?, one(arena, v[2])?])
+    };
+    let center = vector(arena, p.center)?;
+    let reference = vector(arena, p.reference)?;
+    Ok(MassProperties {
+        mass: p.mass,
+        center,
+        reference,
+        inertia,
+        inertia_cm,
+    })
 }
 
 /// A constant expression as one constant: itself if it folded exactly (then rounded once

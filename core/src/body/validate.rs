@@ -7,11 +7,17 @@ use nalgebra::Matrix3;
 use super::algebra::Numeric;
 use super::error::BodyError;
 use super::mass::{MassProperties, mass_properties};
+use super::orientation::Orientation;
 use super::principal::{Principal, principal_frame};
 use super::shape::{Description, Part, Shape};
 
 /// Relative tolerance of the tensor checks (symmetry, definiteness, triangle inequality).
 const TOL: f64 = 1e-12;
+
+/// How far a rotation matrix's RᵀR may be from the identity, entry by entry: loose enough
+/// for a matrix written with 10 digits or computed in `f64`, tight enough that the tensor it
+/// turns is off by no more than about this much, relative.
+pub const ORTHONORMAL_TOLERANCE: f64 = 1e-9;
 
 impl Description<f64> {
     /// Checks every rule, then computes the mass properties and the principal frame about
@@ -96,6 +102,70 @@ pub fn check_part(index: usize, part: &Part<f64>) -> Result<(), BodyError> {
         }
         Shape::Explicit { inertia, .. } => explicit_tensor(index, inertia)?,
         _ => {}
+    }
+    if let Some(o) = &part.orientation {
+        check_orientation(index, kind, o)?;
+    }
+    Ok(())
+}
+
+/// Checks a part's rotation: finite values, an axis with a direction, and a matrix that is a
+/// rotation (orthonormal to [`ORTHONORMAL_TOLERANCE`], det = +1).
+///
+/// # Errors
+/// [`BodyError::NonFinite`] (key `rotate`), [`BodyError::ZeroRotationAxis`],
+/// [`BodyError::NotOrthonormal`] or [`BodyError::ImproperRotation`].
+pub fn check_orientation(
+    part: usize,
+    kind: &'static str,
+    o: &Orientation<f64>,
+) -> Result<(), BodyError> {
+    for &value in o.values() {
+        finite(part, kind, "rotate", value)?;
+    }
+    match o {
+        Orientation::AxisAngle { axis, .. } => {
+            // The axis is normalised by |k|² and |k|: both must be normal, non-zero f64.
+            let norm2: f64 = axis.iter().map(|k| k * k).sum();
+            if !(norm2 >= f64::MIN_POSITIVE && norm2.is_finite()) {
+                return Err(BodyError::ZeroRotationAxis {
+                    part,
+                    kind,
+                    axis: *axis,
+                });
+            }
+        }
+        Orientation::Matrix(rows) => {
+            // A non-orthonormal matrix stretches the part: R I Rᵀ is then not its tensor.
+            let r = matrix(rows);
+            let gram = r.transpose() * r - Matrix3::identity();
+            // The largest |entry|, NaN kept (huge entries give ∞ − ∞).
+            let deviation = gram.iter().fold(0.0f64, |m, x| {
+                if x.is_nan() || x.abs() > m {
+                    x.abs()
+                } else {
+                    m
+                }
+            });
+            if deviation.is_nan() || deviation > ORTHONORMAL_TOLERANCE {
+                return Err(BodyError::NotOrthonormal {
+                    part,
+                    kind,
+                    deviation,
+                });
+            }
+            // det = −1 mirrors the part: a cone's apex or a box's handedness would flip.
+            let determinant = r.determinant();
+            if determinant < 0.0 {
+                return Err(BodyError::ImproperRotation {
+                    part,
+                    kind,
+                    determinant,
+                });
+            }
+        }
+        // Any finite angles make a rotation.
+        Orientation::Sequence(_) => {}
     }
     Ok(())
 }

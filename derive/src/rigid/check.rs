@@ -3,7 +3,8 @@
 //! in a comment; every error is recorded in the context, spanned on the offending tokens.
 
 use precess_core::body::{
-    About, Axis, BodyError, Description, Part, Shape, SymbolicBody, check_part, evaluate,
+    About, Axis, BodyError, Description, ORTHONORMAL_TOLERANCE, Part, Shape, SymbolicBody,
+    check_part, evaluate,
 };
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -238,6 +239,9 @@ fn report(cx: &Ctxt, spans: &Spans, e: &BodyError) {
             spans.of(part, keys::INERTIA),
             format!("the principal moments {moments:?} break the triangle inequality I1 + I2 ≥ I3, which every mass distribution satisfies"),
         ),
+        BodyError::ZeroRotationAxis { part, .. }
+        | BodyError::NotOrthonormal { part, .. }
+        | BodyError::ImproperRotation { part, .. } => (spans.of(part, keys::ROTATE), message(e)),
         BodyError::PivotRequired { part } => (spans.of(part, keys::ABOUT), "`about = pivot` needs a pivot: declare `pivot = [x, y, z]`, or give the tensor `about = center`".to_owned()),
         BodyError::ZeroTotalMass => (spans.whole.clone(), "the total mass is zero: masses must be positive".to_owned()),
         BodyError::IdenticallyZeroMoment { .. } => (
@@ -252,6 +256,22 @@ fn report(cx: &Ctxt, spans: &Spans, e: &BodyError) {
         ),
     };
     cx.error_spanned_by(tokens, msg);
+}
+
+/// What a rejected rotation is told, without the part's number (the span shows the part).
+pub(super) fn message(e: &BodyError) -> String {
+    match *e {
+        BodyError::ZeroRotationAxis { axis, .. } => format!(
+            "the rotation axis {axis:?} has no direction: give a non-zero axis such as [0.0, 0.0, 1.0]"
+        ),
+        BodyError::NotOrthonormal { deviation, .. } => format!(
+            "the matrix is not a rotation: its columns are not orthonormal (|RᵀR − E| reaches {deviation:.1e}; at most {ORTHONORMAL_TOLERANCE:e} is allowed)"
+        ),
+        BodyError::ImproperRotation { determinant, .. } => format!(
+            "the matrix is a reflection (det = {determinant}), not a rotation: a rotation has det = +1; negate one column, or swap two"
+        ),
+        _ => e.to_string(),
+    }
 }
 
 impl Checker<'_> {
@@ -334,12 +354,25 @@ impl Checker<'_> {
             .map(|(k, kv)| (*k, kv.value.to_token_stream()))
             .collect();
         let value = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, kv)| &kv.value);
-        let shape = self.shape(table.kind, &value)?;
+        // Every value is read, so each of its errors is reported, before any is given up on.
+        let shape = self.shape(table.kind, &value);
         let at = match value(keys::AT) {
-            Some(e) => self.vector(e)?,
-            None => [self.arena.zero(); 3],
+            Some(e) => self.vector(e),
+            None => Some([self.arena.zero(); 3]),
         };
-        Some((Part { shape, at }, spans))
+        let orientation = match value(keys::ROTATE) {
+            Some(e) => self.orientation(e, table.name).map(Some),
+            None => Some(None),
+        };
+        let (shape, at, orientation) = (shape?, at?, orientation?);
+        Some((
+            Part {
+                shape,
+                at,
+                orientation,
+            },
+            spans,
+        ))
     }
 
     /// The shape of `kind` from its key values (all required keys are present).

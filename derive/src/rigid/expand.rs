@@ -2,7 +2,7 @@
 //! generator and quoted into a `RigidBody` impl. Constants become literals; a field becomes
 //! `self.field`; generated code names everything through the hidden path.
 
-use precess_core::body::{About, Axis, Description, Frame, Shape};
+use precess_core::body::{About, Axis, Description, Frame, Orientation, Shape};
 use precess_core::codegen::{Emitted, f64_literal};
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -164,7 +164,14 @@ fn description(
     let parts = d.parts.iter().map(|part| {
         let shape = shape(&part.shape);
         let at = &part.at;
-        quote!(#p::Part { shape: #shape, at: [#(#at),*] })
+        let orientation = match &part.orientation {
+            Some(o) => {
+                let o = orientation(o);
+                quote!(::core::option::Option::Some(#o))
+            }
+            None => quote!(::core::option::Option::None),
+        };
+        quote!(#p::Part { shape: #shape, at: [#(#at),*], orientation: #orientation })
     });
     let pivot = match &d.pivot {
         Some(v) => quote!(::core::option::Option::Some([#(#v),*])),
@@ -181,6 +188,26 @@ fn axis(a: Axis) -> TokenStream {
         Axis::X => quote!(#Private::Axis::X),
         Axis::Y => quote!(#Private::Axis::Y),
         Axis::Z => quote!(#Private::Axis::Z),
+    }
+}
+
+fn orientation(o: &Orientation<TokenStream>) -> TokenStream {
+    let p = quote!(#Private::Orientation);
+    match o {
+        Orientation::AxisAngle { axis, angle } => {
+            quote!(#p::AxisAngle { axis: [#(#axis),*], angle: #angle })
+        }
+        Orientation::Matrix(rows) => {
+            let rows = rows.iter().map(|r| quote!([#(#r),*]));
+            quote!(#p::Matrix([#(#rows),*]))
+        }
+        Orientation::Sequence(turns) => {
+            let turns = turns.iter().map(|(a, angle)| {
+                let a = axis(*a);
+                quote!((#a, #angle))
+            });
+            quote!(#p::Sequence(#Private::vec![#(#turns),*]))
+        }
     }
 }
 

@@ -114,3 +114,56 @@ fn many_parametric_parts_expand() {
     assert!(code.contains("principal_frame"));
     println!("emitted {} bytes", code.len());
 }
+
+#[test]
+fn literal_rotations_fold_to_constants() {
+    // sin, cos and √ of literals are folded while expanding, in the body and in the top's
+    // equations: nothing trigonometric is left for run time.
+    let code = expand(quote! {
+        #[rigid(
+            cylinder(mass = 2.5, radius = 0.3, length = 1.2, at = [0.0, 0.0, 0.5],
+                     rotate = axis_angle([0.0, 1.0, 1.0], 0.5)),
+            cuboid(mass = 1.0, size = [0.2, 0.5, 0.9], rotate = zxz(0.4, 0.7, -0.2)),
+            pivot = [0.0, 0.0, 0.0],
+        )]
+        #[top(gravity = 9.81)]
+        struct Turned;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    for name in [
+        "inertia",
+        "inertia_cm",
+        "center_of_mass",
+        "principal",
+        "euler_rhs",
+    ] {
+        let m = method(&code, name);
+        for f in ["sin", "cos", "sqrt"] {
+            assert!(!m.contains(f), "{name} calls {f}: {m}");
+        }
+    }
+    // Not diagonal, but constant: decomposed now, not at run time.
+    assert!(!code.contains("principal_frame"));
+    // The rotation stays in the description, as written.
+    assert!(method(&code, "description").contains("Orientation :: AxisAngle"));
+}
+
+#[test]
+fn a_field_angle_is_turned_at_run_time() {
+    let code = expand(quote! {
+        #[rigid(rod(mass = 3.0, length = 2.0, rotate = y(angle)), sphere(mass = 1.0, radius = 0.1))]
+        struct Swing { angle: f64 }
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    let inertia = method(&code, "inertia");
+    assert!(
+        inertia.contains("self . angle") && inertia.contains("sin"),
+        "{inertia}"
+    );
+    // Turned about its own axis, a cylinder stays symbolically diagonal.
+    let code = expand(quote! {
+        #[rigid(cylinder(mass = 1.0, radius = 0.1, length = 0.5, rotate = z(angle)))]
+        struct Spun { angle: f64 }
+    });
+    assert!(!code.contains("principal_frame"), "{code}");
+}

@@ -2,7 +2,7 @@
 //! arithmetic on them, vectors, tensors, axes. Part of the checker, so every error lands in
 //! the same context with the same wording.
 
-use precess_core::body::{About, Axis};
+use precess_core::body::{About, Axis, Orientation, check_orientation};
 use precess_core::sym::{ExprId, SymError, parse_decimal};
 use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
@@ -29,6 +29,127 @@ impl Checker<'_> {
                     "expected `x`, `y` or `z` (or `-x`, `-y`, `-z`) for `axis`",
                 );
                 None
+            }
+        }
+    }
+
+    /// `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])`, or elementary turns
+    /// named by their axes, `zxz(φ, θ, ψ)`, `y(α)`. A rotation whose values are literals is
+    /// checked now, and its error spanned on the axis or the matrix.
+    pub(super) fn orientation(
+        &mut self,
+        e: &Expr,
+        kind: &'static str,
+    ) -> Option<Orientation<ExprId>> {
+        const ROTATE: &str = "expected `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])` (rows of the rotation) or up to three turns about the part's axes such as `zxz(phi, theta, psi)` or `y(angle)` for `rotate` (angles in radians)";
+        let call = match e {
+            Expr::Call(call) => call,
+            _ => {
+                self.cx.error_spanned_by(e, ROTATE);
+                return None;
+            }
+        };
+        let Some(name) = path_ident(&call.func).map(|i| i.to_string()) else {
+            self.cx.error_spanned_by(e, ROTATE);
+            return None;
+        };
+        let args: Vec<&Expr> = call.args.iter().collect();
+        match (name.as_str(), args.as_slice()) {
+            ("axis_angle", [axis, angle]) => {
+                let (k, a) = (self.vector(axis), self.scalar(angle));
+                let (k, a) = (k?, a?);
+                // The axis is checked on its own, so a literal zero axis is refused even
+                // when the angle is a field.
+                let zero = self.arena.zero();
+                let axis_only = Orientation::AxisAngle {
+                    axis: k,
+                    angle: zero,
+                };
+                self.literal_rotation(&axis_only, kind, axis)
+                    .then_some(Orientation::AxisAngle { axis: k, angle: a })
+            }
+            ("axis_angle", _) => {
+                self.cx.error_spanned_by(e, "`axis_angle` takes an axis and an angle in radians: `axis_angle([x, y, z], angle)`");
+                None
+            }
+            ("matrix", [rows]) => {
+                let Expr::Array(a) = rows else {
+                    self.cx.error_spanned_by(rows, "expected the rows of the rotation, `[[Rxx, Rxy, Rxz], [Ryx, Ryy, Ryz], [Rzx, Rzy, Rzz]]`");
+                    return None;
+                };
+                if a.elems.len() != 3 {
+                    self.cx.error_spanned_by(rows, "expected the three rows of the rotation, `[[Rxx, Rxy, Rxz], [Ryx, Ryy, Ryz], [Rzx, Rzy, Rzz]]`");
+                    return None;
+                }
+                let r: Vec<Option<[ExprId; 3]>> =
+                    a.elems.iter().map(|row| self.vector(row)).collect();
+                let o = Orientation::Matrix([r[0]?, r[1]?, r[2]?]);
+                self.literal_rotation(&o, kind, rows).then_some(o)
+            }
+            ("matrix", _) => {
+                self.cx.error_spanned_by(e, "`matrix` takes the rows of the rotation: `matrix([[Rxx, Rxy, Rxz], [Ryx, Ryy, Ryz], [Rzx, Rzy, Rzz]])`");
+                None
+            }
+            (turns, _)
+                if (1..=3).contains(&turns.len()) && turns.chars().all(|c| "xyz".contains(c)) =>
+            {
+                if args.len() != turns.len() {
+                    let n = turns.len();
+                    let axes: Vec<String> = turns.chars().map(String::from).collect();
+                    let msg = format!(
+                        "`{turns}(..)` turns about {} in turn, so it takes {n} {}, got {}",
+                        axes.join(", then "),
+                        if n == 1 { "angle" } else { "angles" },
+                        args.len()
+                    );
+                    if args.is_empty() {
+                        self.cx.error_spanned_by(e, msg);
+                    } else {
+                        self.cx.error_spanned_by(&call.args, msg);
+                    }
+                    return None;
+                }
+                let angles: Vec<Option<ExprId>> = args.iter().map(|a| self.scalar(a)).collect();
+                let mut sequence = Vec::with_capacity(angles.len());
+                for (c, angle) in turns.chars().zip(angles) {
+                    let axis = match c {
+                        'x' => Axis::X,
+                        'y' => Axis::Y,
+                        _ => Axis::Z,
+                    };
+                    sequence.push((axis, angle?));
+                }
+                Some(Orientation::Sequence(sequence))
+            }
+            _ => {
+                self.cx.error_spanned_by(e, ROTATE);
+                None
+            }
+        }
+    }
+
+    /// Checks a rotation whose values are all literals, with its error spanned on `tokens`;
+    /// false if it is not a rotation (one with fields is checked by `validate()`).
+    fn literal_rotation(
+        &mut self,
+        o: &Orientation<ExprId>,
+        kind: &'static str,
+        tokens: &Expr,
+    ) -> bool {
+        let mut constant = true;
+        let numeric = o.map(&mut |&e| {
+            constant &= self.arena.free_symbols(e).is_empty();
+            self.arena.eval(e, &[])
+        });
+        if !constant {
+            return true;
+        }
+        match check_orientation(0, kind, &numeric) {
+            Ok(()) => true,
+            Err(err) => {
+                self.cx
+                    .error_spanned_by(tokens, super::check::message(&err));
+                false
             }
         }
     }
