@@ -40,6 +40,7 @@ pub mod prelude {
         About, Axis, Body, BodyBuilder, BodyError, Matrix3, Principal, RigidBody, Rotation3, Shape,
         Vector3,
     };
+    pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{
@@ -58,6 +59,7 @@ pub mod __private {
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::top::TopDynamics;
     pub use std::vec;
 }

@@ -110,6 +110,24 @@ impl FreeState {
         })
     }
 
+    /// The state of an array without checks, for generated code in a stepper's inner loop
+    /// (a user force function's argument): the quaternion normalised, NaN if it is zero.
+    pub fn from_array_unchecked(y: &[f64; STATE_LEN]) -> FreeState {
+        let part = |at: usize| Vector3::new(y[at], y[at + 1], y[at + 2]);
+        let at = layout::QUATERNION;
+        FreeState {
+            position: part(layout::POSITION),
+            velocity: part(layout::VELOCITY),
+            attitude: UnitQuaternion::new_normalize(Quaternion::new(
+                y[at],
+                y[at + 1],
+                y[at + 2],
+                y[at + 3],
+            )),
+            omega_principal: part(layout::OMEGA),
+        }
+    }
+
     /// The state of a body described in its description frame: the attitude of the
     /// description axes and ω in description axes, turned into principal axes with the
     /// body's principal frame (about its centre of mass).
