@@ -40,14 +40,16 @@ impl Parse for FreeItem {
             let value = input.parse()?;
             Ok(FreeItem::Setting(Box::new(KeyValue { key: name, value })))
         } else {
-            Err(syn::Error::new(
-                name.span(),
+            let expected = if keys::FREE_FORCES.iter().any(|&f| name == f) {
                 format!(
-                    "expected `{name} = value` or a force `{name}({} = [x, y, z], {} = [x, y, z])`",
+                    "`{name}({} = [x, y, z], {} = [x, y, z])`",
                     keys::FORCE,
                     keys::FORCE_AT
-                ),
-            ))
+                )
+            } else {
+                format!("`{name} = value`")
+            };
+            Err(syn::Error::new(name.span(), format!("expected {expected}")))
         }
     }
 }
