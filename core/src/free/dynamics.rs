@@ -102,11 +102,6 @@ pub trait FreeDynamics: RigidBody {
             return Err(FreeError::NotExact { declared });
         }
         self.check_parameters()?;
-        FreeExact::new(
-            &self.principal_cm().moments,
-            &self.gravity(),
-            t0,
-            state,
-        )
+        FreeExact::new(&self.principal_cm().moments, &self.gravity(), t0, state)
     }
 }

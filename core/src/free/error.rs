@@ -36,7 +36,9 @@ pub enum FreeError {
         value: f64,
     },
     /// The mass or a principal moment is not finite and positive.
-    #[error("mass and principal moments must be finite and > 0: mass = {mass}, moments = {moments:?}")]
+    #[error(
+        "mass and principal moments must be finite and > 0: mass = {mass}, moments = {moments:?}"
+    )]
     InvalidInertia {
         /// The mass.
         mass: f64,

@@ -54,8 +54,8 @@ pub struct FreeFlight<S, P = Dop853Pair> {
     done: Stats,
 }
 
-impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
-    /// Starts at `state` at time `t0`, projecting after every step.
+impl<S: System<STATE_LEN> + Clone> FreeFlight<S, Dop853Pair> {
+    /// Starts at `state` at time `t0` with DOP853, projecting after every step.
     ///
     /// # Errors
     /// As [`FreeState::check`] for the state; [`FreeError::Ode`] for a bad configuration,
@@ -64,8 +64,12 @@ impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
     pub fn new(sys: S, t0: f64, state: &FreeState, cfg: AdaptiveConfig) -> Result<Self, FreeError> {
         Self::with_projection(sys, t0, state, cfg, Projection::default())
     }
+}
 
-    /// As [`FreeFlight::new`], keeping the quaternion on the sphere as `projection` says.
+impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
+    /// Starts at `state` at time `t0` with the pair `P` (name it:
+    /// `FreeFlight::<_, Dopri5Pair>::with_projection(..)`), keeping the quaternion on the
+    /// sphere as `projection` says.
     ///
     /// # Errors
     /// As [`FreeFlight::new`].

@@ -48,7 +48,10 @@ pub fn cm_frame(arena: &mut Arena, inertia_cm: &Mat3) -> Result<CmFrame, FreeErr
     let diagonal = [(0, 1), (0, 2), (1, 2)]
         .iter()
         .all(|&(i, j)| arena.is_zero(t[i][j]).unwrap_or(false));
-    let constant = t.iter().flatten().all(|&e| arena.free_symbols(e).is_empty());
+    let constant = t
+        .iter()
+        .flatten()
+        .all(|&e| arena.free_symbols(e).is_empty());
     if diagonal {
         let moments = [t[0][0], t[1][1], t[2][2]];
         for (k, &m) in moments.iter().enumerate() {

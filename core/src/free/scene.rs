@@ -363,7 +363,11 @@ fn rotation_of_quaternion(arena: &mut Arena, q: [ExprId; 4]) -> Result<Mat3, Fre
     let off = |arena: &mut Arena, a: ExprId, b: ExprId, c: ExprId, plus: bool| {
         let ab = arena.mul(a, b);
         let wc = arena.mul(w, c);
-        let s = if plus { arena.add(ab, wc) } else { arena.sub(ab, wc) };
+        let s = if plus {
+            arena.add(ab, wc)
+        } else {
+            arena.sub(ab, wc)
+        };
         arena.product(&[two, s, inv])
     };
     Ok([

@@ -84,7 +84,9 @@ impl<T: FreeDynamics> RigidBodyModel for FreeLie<'_, T> {
     }
 
     fn force(&self, t: f64, s: &RigidState) -> Vector3<f64> {
-        self.0.wrench(t, &FreeState::from(*s).to_array()).force_space
+        self.0
+            .wrench(t, &FreeState::from(*s).to_array())
+            .force_space
     }
 
     fn torque(&self, t: f64, s: &RigidState) -> Vector3<f64> {
