@@ -57,9 +57,9 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Part, Principal, RigidBody, Rotation3, Shape,
         Vector3, euler_rhs_principal, principal_frame,
     };
+    pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::top::TopDynamics;
     pub use std::vec;
 }

@@ -6,7 +6,7 @@ use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
 use super::attr::FreeItem;
-use crate::keys::{self, FREE_FORCES, FREE_KEYS, FORCE_KEYS};
+use crate::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
 use crate::rigid::attr::{KeyValue, Parsed};
 use crate::rigid::check::Checker;
 

@@ -49,7 +49,8 @@ impl Preludes {
             .into_iter()
             .filter_map(|(user, local)| {
                 let (path, symbols) = user.as_ref()?;
-                reads(symbols).then(|| quote!(let #local: #p::Vector3<f64> = #path(self, t, &__state);))
+                reads(symbols)
+                    .then(|| quote!(let #local: #p::Vector3<f64> = #path(self, t, &__state);))
             })
             .collect();
         if !calls.is_empty() {
@@ -81,13 +82,15 @@ fn scene(
         CmFrame::Diagonal(m) => scene.moments = *m,
         CmFrame::Constant(pr) => {
             let r = pr.rotation.matrix();
-            let constant = |arena: &mut Arena, x: f64| arena.float(x).unwrap_or_else(|_| arena.zero());
+            let constant =
+                |arena: &mut Arena, x: f64| arena.float(x).unwrap_or_else(|_| arena.zero());
             scene.moments = std::array::from_fn(|k| constant(arena, pr.moments[k]));
             scene.principal_rotation =
                 std::array::from_fn(|i| std::array::from_fn(|j| constant(arena, r[(i, j)])));
         }
         CmFrame::AtRunTime => {
-            let moments: [ExprId; 3] = std::array::from_fn(|k| arena.input(&format!("I_{}", k + 1)));
+            let moments: [ExprId; 3] =
+                std::array::from_fn(|k| arena.input(&format!("I_{}", k + 1)));
             let rotation: Mat3 = std::array::from_fn(|i| {
                 std::array::from_fn(|j| arena.input(&format!("R_pd_{i}{j}")))
             });
@@ -99,7 +102,10 @@ fn scene(
                     symbols.insert_expr(arena, r, quote!(__pr.rotation.matrix()[(#i, #j)]));
                 }
             }
-            preludes.principal = moments.into_iter().chain(rotation.into_iter().flatten()).collect();
+            preludes.principal = moments
+                .into_iter()
+                .chain(rotation.into_iter().flatten())
+                .collect();
             scene.moments = moments;
             scene.principal_rotation = rotation;
         }

@@ -31,7 +31,10 @@ fn gravity_alone_makes_no_torque_and_reads_no_attitude() {
     assert!(rhs.contains("9.81"), "{rhs}");
     assert!(code.contains("const BEYOND_GRAVITY : :: core :: option :: Option < & 'static str > = :: core :: option :: Option :: None"), "{code}");
     // No user function, no run-time frame.
-    assert!(!code.contains("__state") && !code.contains("let __pr"), "{code}");
+    assert!(
+        !code.contains("__state") && !code.contains("let __pr"),
+        "{code}"
+    );
 }
 
 #[test]
@@ -45,7 +48,10 @@ fn symmetric_torque_free_body_emits_the_reduced_euler_equations() {
     let rhs = method(&code, "free_rhs");
     // ω̇₃ = 0: the last entry of the array is the literal zero.
     let last = rhs.rsplit(',').next().unwrap_or("");
-    assert!(last.trim_start().starts_with("0f64") || last.contains("0f64 ]"), "{rhs}");
+    assert!(
+        last.trim_start().starts_with("0f64") || last.contains("0f64 ]"),
+        "{rhs}"
+    );
 }
 
 #[test]
