@@ -6,7 +6,7 @@ use nalgebra::Vector3;
 
 use super::error::FreeError;
 use super::state::FreeState;
-use crate::exact::{FreeBodyAttitude, Regime};
+use crate::exact::{FreeBodyAttitude, FreeBodyExact, Regime};
 
 /// The exact motion from one state, evaluated at any time in O(1):
 /// x(t) = x₀ + v₀ τ + ½ g τ², v(t) = v₀ + g τ with τ = t − t₀, and (q(t), m(t)) from
@@ -37,6 +37,9 @@ pub struct FreeExact {
     gravity: Vector3<f64>,
     moments: Vector3<f64>,
     attitude: FreeBodyAttitude,
+    /// The body angular momentum alone, in the caller's time (the attitude's own works on
+    /// a rescaled clock).
+    momentum: FreeBodyExact,
 }
 
 impl FreeExact {
@@ -75,17 +78,16 @@ impl FreeExact {
         }
         state.check()?;
         let m = moments.component_mul(&state.omega_principal);
-        let attitude = FreeBodyAttitude::new(
-            [moments.x, moments.y, moments.z],
-            state.attitude,
-            [m.x, m.y, m.z],
-        )?;
+        let (i, m) = ([moments.x, moments.y, moments.z], [m.x, m.y, m.z]);
+        let attitude = FreeBodyAttitude::new(i, state.attitude, m)?;
+        let momentum = FreeBodyExact::new(i, m)?;
         Ok(FreeExact {
             t0,
             start: *state,
             gravity: *gravity,
             moments: *moments,
             attitude,
+            momentum,
         })
     }
 
@@ -115,16 +117,15 @@ impl FreeExact {
     /// The regime of the attitude's motion (about the largest or smallest axis, on the
     /// separatrix, or steady).
     pub fn regime(&self) -> Regime {
-        self.attitude.regime()
+        self.momentum.regime()
     }
 
     /// The time between two flips of a body spinning near its intermediate axis, 2K/|λ|
     /// (half the period of the angular momentum in the body); `None` when steady or on the
     /// separatrix.
     pub fn flip_interval(&self) -> Option<f64> {
-        let m = self.attitude.momentum();
-        match m.regime() {
-            Regime::AboutLargest | Regime::AboutSmallest => Some(0.5 * m.period()),
+        match self.momentum.regime() {
+            Regime::AboutLargest | Regime::AboutSmallest => Some(0.5 * self.momentum.period()),
             Regime::Steady | Regime::Separatrix => None,
         }
     }
