@@ -6,7 +6,7 @@ mod free_bodies;
 
 use approx::assert_relative_eq;
 use free_bodies::{T_HANDLE_MOMENTS, THandle};
-use precess::free::{FreeDynamics, FreeFlight, FreeState, FreeSystem};
+use precess::free::{FreeDynamics, FreeExact, FreeFlight, FreeState, FreeSystem};
 use precess::ode::AdaptiveConfig;
 use precess::prelude::*;
 
@@ -108,4 +108,18 @@ fn a_symmetric_body_precesses_in_the_body_at_the_closed_form_rate() {
         let expected = Vector3::new(w_perp * (rate * t).cos(), w_perp * (rate * t).sin(), w3);
         assert_relative_eq!(w, expected, epsilon = 1e-9);
     }
+}
+
+/// The near-separatrix body of the references (I = (3, 5, 9), m(0) = (0, 2, 0.01)): the
+/// interval between flips is 2K/λ = 59.0554435 s, in the caller's time whatever the scaling
+/// the exact attitude uses inside.
+#[test]
+fn the_flip_interval_is_the_published_one() {
+    let moments = Vector3::new(3.0, 5.0, 9.0);
+    let s0 = FreeState {
+        omega_principal: Vector3::new(0.0, 2.0, 0.01).component_div(&moments),
+        ..FreeState::at_rest()
+    };
+    let exact = FreeExact::new(&moments, &Vector3::zeros(), 0.0, &s0).unwrap();
+    assert_relative_eq!(exact.flip_interval().unwrap(), 59.055_443_5, max_relative = 1e-8);
 }
