@@ -68,3 +68,8 @@ pub mod __private {
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/free-bodies.md")]
+#[cfg(doctest)]
+pub struct FreeBodiesDoctests;

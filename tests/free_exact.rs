@@ -121,5 +121,9 @@ fn the_flip_interval_is_the_published_one() {
         ..FreeState::at_rest()
     };
     let exact = FreeExact::new(&moments, &Vector3::zeros(), 0.0, &s0).unwrap();
-    assert_relative_eq!(exact.flip_interval().unwrap(), 59.055_443_5, max_relative = 1e-8);
+    assert_relative_eq!(
+        exact.flip_interval().unwrap(),
+        59.055_443_5,
+        max_relative = 1e-8
+    );
 }
