@@ -23,9 +23,11 @@ fn throw() -> FreeState {
 #[test]
 fn the_macro_finds_the_moments_summed_by_hand() {
     let p = THandle.principal_cm();
-    for k in 0..3 {
-        assert_relative_eq!(p.moments[k], T_HANDLE_MOMENTS[k], max_relative = 1e-14);
-    }
+    assert_relative_eq!(
+        p.moments,
+        Vector3::from(T_HANDLE_MOMENTS),
+        max_relative = 1e-14
+    );
     assert_relative_eq!(THandle.gravity(), Vector3::new(0.0, 0.0, -9.81));
 }
 
