@@ -40,6 +40,7 @@ pub mod prelude {
         About, Axis, Body, BodyBuilder, BodyError, Matrix3, Orientation, Principal, RigidBody,
         Rotation3, Shape, Vector3,
     };
+    pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{
@@ -56,6 +57,7 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Orientation, Part, Principal, RigidBody,
         Rotation3, Shape, Vector3, euler_rhs_diagonal, principal_frame,
     };
+    pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{TopDynamics, TopParameters};
@@ -66,3 +68,8 @@ pub mod __private {
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/free-bodies.md")]
+#[cfg(doctest)]
+pub struct FreeBodiesDoctests;

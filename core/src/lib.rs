@@ -9,6 +9,7 @@
 pub mod body;
 pub mod codegen;
 pub mod exact;
+pub mod free;
 pub mod lagrange;
 pub mod linalg;
 pub mod ode;

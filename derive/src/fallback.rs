@@ -6,7 +6,7 @@ use proc_macro2::TokenStream;
 use syn::DeriveInput;
 
 use crate::keys;
-use crate::{rigid, top};
+use crate::{free, rigid, top};
 
 /// The errors as `compile_error!` invocations and the stub impls for `input`.
 pub fn expand(input: &DeriveInput, errors: &[syn::Error]) -> TokenStream {
@@ -14,6 +14,9 @@ pub fn expand(input: &DeriveInput, errors: &[syn::Error]) -> TokenStream {
     out.extend(rigid::fallback::stub(input));
     if input.attrs.iter().any(|a| a.path().is_ident(keys::TOP)) {
         out.extend(top::fallback::stub(input));
+    }
+    if input.attrs.iter().any(|a| a.path().is_ident(keys::FREE)) {
+        out.extend(free::fallback::stub(input));
     }
     out
 }

@@ -197,6 +197,36 @@ pub const ANGLES: &str = "angles";
 /// The keys of `#[top(...)]`, in the order the docs list them.
 pub const TOP_KEYS: &[&str] = &[GRAVITY, BODY_TORQUE, SPACE_TORQUE, DAMPING, TORQUE, ANGLES];
 
+/// `#[free(...)]`: the body as a free body under the declared forces.
+pub const FREE: &str = "free";
+/// A force fixed in the body at a body point (a thruster), a part of `#[free]`.
+pub const BODY_FORCE: &str = "body_force";
+/// A force fixed in space at a body point, a part of `#[free]`.
+pub const SPACE_FORCE: &str = "space_force";
+/// Linear drag on the centre of mass, −c v.
+pub const DRAG: &str = "drag";
+/// The force of a force part; at the top level of `#[free]`, a user force function.
+pub const FORCE: &str = "force";
+/// Where a force part acts: `[x, y, z]` or `center`.
+pub const FORCE_AT: &str = "at";
+/// The value of [`FORCE_AT`] naming the centre of mass.
+pub const CENTER_POINT: &str = "center";
+
+/// The `key = value` settings of `#[free(...)]`, in the order the docs list them.
+pub const FREE_KEYS: &[&str] = &[
+    GRAVITY,
+    BODY_TORQUE,
+    SPACE_TORQUE,
+    DRAG,
+    DAMPING,
+    FORCE,
+    TORQUE,
+];
+/// The force parts of `#[free(...)]`, `name(force = [..], at = [..])`.
+pub const FREE_FORCES: &[&str] = &[BODY_FORCE, SPACE_FORCE];
+/// The keys of a force part: both required.
+pub const FORCE_KEYS: &[&str] = &[FORCE, FORCE_AT];
+
 /// The keys `#[rigid(...)]` takes beside its parts.
 pub const RIGID_KEYS: &[&str] = &[PIVOT];
 

@@ -4,9 +4,10 @@
 //! mass properties, principal frame and Euler's equations with precess-core's symbolic
 //! engine while it expands, and emits a `RigidBody` impl specialised to the body: constants
 //! for literal values, straight-line code in the fields for parametric ones. With
-//! `#[top(...)]` it also derives the top's equations of motion and emits a `TopDynamics` impl.
+//! `#[top(...)]` it also derives the top's equations of motion and emits a `TopDynamics` impl;
+//! with `#[free(...)]`, a free body's, and a `FreeDynamics` impl.
 //!
-//! Each attribute is a folder with the same phases (`rigid/`, `top/`: ast → attr → check →
+//! Each attribute is a folder with the same phases (`rigid/`, `top/`, `free/`: ast → attr → check →
 //! expand → fallback). Shared by all: `ctxt` (every error of one expansion, checked once),
 //! `keys` (the language's words), `symbols` (the one map from symbols to the Rust that reads
 //! them), `private` (the hidden path generated code names), `fallback` (errors plus stubs).
@@ -15,6 +16,7 @@
 
 mod ctxt;
 mod fallback;
+mod free;
 mod keys;
 mod private;
 mod rigid;
@@ -31,11 +33,12 @@ use rigid::ast::Input;
 use rigid::check::Checker;
 use symbols::FieldParameters;
 
-/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, and `TopDynamics`
-/// when a `#[top(...)]` attribute declares the body a top about its pivot.
+/// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, `TopDynamics`
+/// when a `#[top(...)]` attribute declares the body a top about its pivot, and `FreeDynamics`
+/// when a `#[free(...)]` attribute declares it a free body.
 ///
 /// See the `precess` crate for examples and `docs/attributes.md` for the language.
-#[proc_macro_derive(RigidBody, attributes(rigid, top))]
+#[proc_macro_derive(RigidBody, attributes(rigid, top, free))]
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     derive(&input).into()
@@ -61,12 +64,16 @@ fn derive(input: &DeriveInput) -> proc_macro2::TokenStream {
     }
 }
 
-/// Every phase of both attributes. Syntax and meaning are checked for both before either
-/// is expanded, so one pass reports the errors of `#[rigid]` and `#[top]` together.
+/// Every phase of every attribute. Syntax and meaning are checked for all before any is
+/// expanded, so one pass reports the errors of `#[rigid]`, `#[top]` and `#[free]` together.
 fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<proc_macro2::TokenStream> {
     let ast = Input::from_syn(cx, input)?;
     let rigid_items = rigid::attr::parse(cx, &ast.rigid);
     let top_items = top::attr::parse(cx, &ast.top);
+    let free_attrs: Vec<&syn::Attribute> = (input.attrs.iter())
+        .filter(|a| a.path().is_ident(keys::FREE))
+        .collect();
+    let free_items = free::attr::parse(cx, &free_attrs);
     let mut arena = Arena::new();
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
@@ -78,15 +85,22 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<proc_macro2::TokenStream> {
         rigid::check::declares_pivot(&rigid_items)
     };
     let settings = top::check::check(&mut ck, &top_items, pivot);
-    let (body, settings) = (body?, settings?);
+    let free_settings = free::check::check(&mut ck, &free_attrs, &free_items);
+    let (body, settings, free_settings) = (body?, settings?, free_settings?);
     let top = match &settings {
         Some(settings) => {
             top::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
         }
         None => proc_macro2::TokenStream::new(),
     };
+    let free = match &free_settings {
+        Some(settings) => {
+            free::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
+        }
+        None => proc_macro2::TokenStream::new(),
+    };
     let rigid = rigid::expand::expand(cx, ast.ident, &mut arena, &parameters, &body)?;
-    Some(quote!(#rigid #top))
+    Some(quote!(#rigid #top #free))
 }
 
 #[cfg(test)]

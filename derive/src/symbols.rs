@@ -132,6 +132,11 @@ impl FieldParameters {
         self.fields.is_empty()
     }
 
+    /// The fields read, in the order first used.
+    pub fn fields(&self) -> impl Iterator<Item = &Ident> + '_ {
+        self.fields.iter().map(|(_, f)| f)
+    }
+
     /// The map reading each field as `self.field`.
     pub fn tokens(&self) -> SymbolTokens {
         let mut map = SymbolTokens::default();

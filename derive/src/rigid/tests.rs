@@ -135,7 +135,7 @@ fn literal_rotations_fold_to_constants() {
         "inertia_cm",
         "center_of_mass",
         "principal",
-        "euler_rhs",
+        "euler_rhs_principal",
     ] {
         let m = method(&code, name);
         for f in ["sin", "cos", "sqrt"] {

@@ -1,0 +1,98 @@
+//! Typed errors of the free-body scene: bad states, bad parameters, a derivation that cannot
+//! be formed, and the failures of the steppers and exact flows it runs on.
+
+use thiserror::Error;
+
+use crate::body::BodyError;
+use crate::exact::ExactError;
+use crate::ode::OdeError;
+
+/// Why a free body could not be derived, set up, integrated or answered.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FreeError {
+    /// The attitude quaternion of a state is zero, so it names no attitude.
+    #[error(
+        "the attitude quaternion {quaternion:?} is zero; a state needs a non-zero quaternion \
+         (FreeState::to_array builds one from a UnitQuaternion)"
+    )]
+    ZeroQuaternion {
+        /// The quaternion as stored, `[w, x, y, z]`.
+        quaternion: [f64; 4],
+    },
+    /// A part of a state holds NaN or ±∞.
+    #[error("non-finite {quantity}: {values:?}")]
+    NonFinite {
+        /// Which part: the position, the velocity, the attitude quaternion or ω.
+        quantity: &'static str,
+        /// Its values.
+        values: Vec<f64>,
+    },
+    /// A parameter of the body or of its forces is NaN or ±∞.
+    #[error("parameter `{name}` = {value} is not finite")]
+    NonFiniteParameter {
+        /// The parameter (a field of the struct, or a name of a run-time model).
+        name: String,
+        /// Its value.
+        value: f64,
+    },
+    /// The mass or a principal moment is not finite and positive.
+    #[error(
+        "mass and principal moments must be finite and > 0: mass = {mass}, moments = {moments:?}"
+    )]
+    InvalidInertia {
+        /// The mass.
+        mass: f64,
+        /// The principal moments about the centre of mass.
+        moments: [f64; 3],
+    },
+    /// The scene's mass or a principal moment is zero as an expression: the equations of
+    /// motion divide by it.
+    #[error("the {quantity} is identically zero: the equations of motion divide by it")]
+    ZeroInertia {
+        /// Which: "mass" or "principal moment I1" …
+        quantity: &'static str,
+    },
+    /// The exact flow was asked of a body under forces other than uniform gravity.
+    #[error(
+        "the exact flow needs a body under uniform gravity alone, but it also declares {declared}"
+    )]
+    NotExact {
+        /// The other forces and torques declared.
+        declared: &'static str,
+    },
+    /// No parameter of that name appears in the derivation.
+    #[error("no parameter named `{name}` in this free body (parameters: {known})")]
+    UnknownParameter {
+        /// The name asked for.
+        name: String,
+        /// The parameters that exist, comma-separated.
+        known: String,
+    },
+    /// A parameter the derivation reads was not given a value.
+    #[error("parameter `{name}` is not set: give a value for each of {known}")]
+    UnsetParameter {
+        /// The parameter.
+        name: String,
+        /// The parameters the derivation reads, comma-separated.
+        known: String,
+    },
+    /// The derivation reads a value fed in at evaluation (a user force or torque), which the
+    /// interpreted model has no way to supply.
+    #[error(
+        "the derivation reads `{name}`, a run-time input (a user force or torque): the \
+         interpreted model cannot supply it; derive the body with #[free(force = .., torque = ..)]"
+    )]
+    RunTimeInput {
+        /// The input symbol's name.
+        name: String,
+    },
+    /// The body's description breaks a rule for the current parameter values.
+    #[error(transparent)]
+    Body(#[from] BodyError),
+    /// A stepper failed, or a stop time is not finite or lies in the past.
+    #[error(transparent)]
+    Ode(#[from] OdeError),
+    /// The exact attitude could not be set up or evaluated.
+    #[error(transparent)]
+    Exact(#[from] ExactError),
+}

@@ -1,0 +1,36 @@
+//! The free body: the centre of mass and the attitude under declared forces.
+//!
+//! A scene over the engine, in one place:
+//! - [`FreeScene`] holds the forces and torques as data (uniform gravity, body- and
+//!   space-fixed forces at body points, body- and space-fixed torques, linear drag on the
+//!   centre of mass and on the rotation, user functions) and [`FreeScene::derive`] derives the
+//!   right-hand side, the wrench, the energy, its power balance and the momenta symbolically,
+//!   so only what is declared appears; [`cm_frame`] decides the principal frame about the
+//!   centre of mass.
+//! - [`FreeState`] is the state with its frames in its names; [`layout`] places it in the
+//!   array of [`STATE_LEN`] numbers the steppers integrate.
+//! - [`FreeDynamics`] is the trait `#[free(...)]` implements; [`FreeSystem`] and
+//!   [`FreeLie`] run a derived body with the adaptive pairs, RK4 and RKMK4, and
+//!   [`FreeFlight`] integrates it with the quaternion projected after every step.
+//! - [`FreeExact`] is the exact motion under uniform gravity alone (parabola and torque-free
+//!   attitude); [`FreeModel`] a derivation interpreted at run time.
+
+mod dynamics;
+mod error;
+mod exact;
+mod flight;
+mod frame;
+mod interpreted;
+mod scene;
+mod state;
+mod system;
+
+pub use dynamics::{FreeDynamics, Wrench};
+pub use error::FreeError;
+pub use exact::FreeExact;
+pub use flight::{FreeFlight, Projection};
+pub use frame::{CmFrame, cm_frame};
+pub use interpreted::FreeModel;
+pub use scene::{AppliedForce, ForcePoint, FreeDerivation, FreeScene};
+pub use state::{FreeState, STATE_LEN, attitude_of, layout};
+pub use system::{FreeLie, FreeSystem};

@@ -1,0 +1,279 @@
+//! Meaning of the `#[free(...)]` items: keys against the table in `keys.rs`, values with the
+//! `#[rigid]` value rules in the same arena, one function per rule with its reason.
+
+use precess_core::free::{AppliedForce, ForcePoint};
+use precess_core::sym::ExprId;
+use syn::{Attribute, Expr, Ident};
+
+use super::attr::FreeItem;
+use crate::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
+use crate::rigid::attr::{KeyValue, Parsed};
+use crate::rigid::check::Checker;
+
+/// The checked `#[free(...)]` settings: what acts on the body.
+#[derive(Default)]
+pub struct FreeSettings {
+    /// Uniform gravity, space axes.
+    pub gravity: Option<[ExprId; 3]>,
+    /// Forces fixed in the body at body points.
+    pub body_forces: Vec<AppliedForce>,
+    /// Forces fixed in space at body points.
+    pub space_forces: Vec<AppliedForce>,
+    /// A constant torque fixed in the body (description axes).
+    pub body_torque: Option<[ExprId; 3]>,
+    /// A constant torque fixed in space.
+    pub space_torque: Option<[ExprId; 3]>,
+    /// Linear drag −c v.
+    pub drag: Option<ExprId>,
+    /// Linear damping of the rotation −c ω.
+    pub damping: Option<ExprId>,
+    /// The path of a user force function (space axes).
+    pub force: Option<syn::Path>,
+    /// The path of a user torque function (description axes).
+    pub torque: Option<syn::Path>,
+}
+
+/// Checks the `#[free]` items, if the struct has any attribute. `None` after an error
+/// (recorded), `Some(None)` when the struct declares no free body.
+pub fn check(
+    ck: &mut Checker,
+    attrs: &[&Attribute],
+    items: &Parsed<FreeItem>,
+) -> Option<Option<FreeSettings>> {
+    let Some(&first) = attrs.first() else {
+        return Some(None);
+    };
+    let errors_before = ck.cx.error_count();
+    // A top turns about a fixed pivot, a free body about its moving centre of mass: one
+    // struct cannot be both, and two sets of equations would disagree on what the state is.
+    if !ck.input.top.is_empty() {
+        ck.cx.error_spanned_by(
+            first,
+            format!(
+                "`#[{}]` cannot be combined with `#[{}]` on one struct: a top turns about its fixed pivot, a free body about its centre of mass; derive each on its own struct",
+                keys::FREE,
+                keys::TOP
+            ),
+        );
+    }
+    let mut settings = FreeSettings::default();
+    let mut seen: Vec<&Ident> = Vec::new();
+    for item in &items.items {
+        match item {
+            FreeItem::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
+            FreeItem::Force { name, keys } => {
+                if let Some((space, force)) = force_part(ck, name, keys) {
+                    if space {
+                        settings.space_forces.push(force);
+                    } else {
+                        settings.body_forces.push(force);
+                    }
+                }
+            }
+        }
+    }
+    let ok = items.complete && ck.cx.error_count() == errors_before;
+    ok.then_some(Some(settings))
+}
+
+/// One `key = value` setting.
+fn setting<'a>(
+    ck: &mut Checker,
+    settings: &mut FreeSettings,
+    seen: &mut Vec<&'a Ident>,
+    KeyValue { key, value }: &'a KeyValue,
+) {
+    // Each setting once: two gravities or two drags would be ambiguous.
+    if seen.contains(&key) {
+        ck.cx
+            .error_spanned_by(key, format!("duplicate key `{key}` in `#[{}]`", keys::FREE));
+        return;
+    }
+    seen.push(key);
+    match FREE_KEYS.iter().find(|&&k| key == k).copied() {
+        Some(keys::GRAVITY) => settings.gravity = gravity(ck, value),
+        Some(keys::DRAG) => settings.drag = non_negative(ck, value, keys::DRAG),
+        Some(keys::DAMPING) => settings.damping = non_negative(ck, value, keys::DAMPING),
+        Some(keys::BODY_TORQUE) => settings.body_torque = ck.vector(value),
+        Some(keys::SPACE_TORQUE) => settings.space_torque = ck.vector(value),
+        Some(keys::FORCE) => settings.force = user_fn(ck, value, keys::FORCE),
+        Some(keys::TORQUE) => settings.torque = user_fn(ck, value, keys::TORQUE),
+        _ if FREE_FORCES.iter().any(|&f| key == f) => ck.cx.error_spanned_by(
+            key,
+            format!(
+                "`{key}` is a force at a point: write `{key}({} = [x, y, z], {} = [x, y, z])`",
+                keys::FORCE,
+                keys::FORCE_AT
+            ),
+        ),
+        _ => ck.cx.error_spanned_by(key, unknown(key)),
+    }
+}
+
+/// The message for a key `#[free]` does not know, listing what it does.
+fn unknown(key: &Ident) -> String {
+    let forces: Vec<String> = FREE_FORCES
+        .iter()
+        .map(|f| format!("{f}({}, {})", keys::FORCE, keys::FORCE_AT))
+        .collect();
+    let written = key.to_string();
+    let known = FREE_KEYS.iter().chain(FREE_FORCES).copied();
+    format!(
+        "unknown key `{key}` in `#[{}]`: expected {}, or a force {}{}",
+        keys::FREE,
+        FREE_KEYS.join(", "),
+        forces.join(" or "),
+        keys::did_you_mean(&written, known)
+    )
+}
+
+/// `body_force(force = [..], at = [..])` or `space_force(...)`: `(is space-fixed, force)`.
+fn force_part(ck: &mut Checker, name: &Ident, kvs: &[KeyValue]) -> Option<(bool, AppliedForce)> {
+    let Some(&kind) = FREE_FORCES.iter().find(|&&f| name == f) else {
+        ck.cx.error_spanned_by(
+            name,
+            if FREE_KEYS.iter().any(|&k| name == k) {
+                format!("`{name}` is a setting: write `{name} = value`")
+            } else {
+                unknown(name)
+            },
+        );
+        return None;
+    };
+    let mut force: Option<&Expr> = None;
+    let mut at: Option<&Expr> = None;
+    let mut ok = true;
+    for KeyValue { key, value } in kvs {
+        let slot = if key == keys::FORCE {
+            &mut force
+        } else if key == keys::FORCE_AT {
+            &mut at
+        } else {
+            ck.cx.error_spanned_by(
+                key,
+                format!(
+                    "unknown key `{key}` for `{kind}`: allowed keys are {}{}",
+                    FORCE_KEYS.join(", "),
+                    keys::did_you_mean(&key.to_string(), FORCE_KEYS.iter().copied())
+                ),
+            );
+            ok = false;
+            continue;
+        };
+        // Each key once: two forces in one part are ambiguous.
+        if slot.is_some() {
+            ck.cx
+                .error_spanned_by(key, format!("duplicate key `{key}` in `{kind}`"));
+            ok = false;
+            continue;
+        }
+        *slot = Some(value);
+    }
+    // The force needs its point: off the centre of mass it also turns the body, and which
+    // way depends on where it acts.
+    let Some(at) = at else {
+        ck.cx.error_spanned_by(
+            name,
+            format!(
+                "`{kind}` needs `{} = [x, y, z]`, the point of the body it acts at (description axes), or `{} = {}` for a force through the centre of mass",
+                keys::FORCE_AT,
+                keys::FORCE_AT,
+                keys::CENTER_POINT
+            ),
+        );
+        return None;
+    };
+    let Some(force) = force else {
+        ck.cx.error_spanned_by(
+            name,
+            format!("`{kind}` needs `{} = [x, y, z]`", keys::FORCE),
+        );
+        return None;
+    };
+    let force = ck.vector(force);
+    let at = point(ck, at);
+    let (force, at) = (force?, at?);
+    ok.then_some((kind == keys::SPACE_FORCE, AppliedForce { force, at }))
+}
+
+/// `[x, y, z]` (description axes) or `center`.
+fn point(ck: &mut Checker, value: &Expr) -> Option<ForcePoint> {
+    if let Expr::Path(p) = value
+        && p.path.is_ident(keys::CENTER_POINT)
+    {
+        return Some(ForcePoint::Center);
+    }
+    if !matches!(value, Expr::Array(_)) {
+        ck.cx.error_spanned_by(
+            value,
+            format!(
+                "expected a point `[x, y, z]` of the body (description axes) or `{}`",
+                keys::CENTER_POINT
+            ),
+        );
+        return None;
+    }
+    ck.vector(value).map(ForcePoint::Body)
+}
+
+/// `gravity = g` (magnitude, along −z in space) or `gravity = [gx, gy, gz]` (space axes).
+fn gravity(ck: &mut Checker, value: &Expr) -> Option<[ExprId; 3]> {
+    if matches!(value, Expr::Array(_)) {
+        return ck.vector(value);
+    }
+    let g = ck.scalar(value)?;
+    // A magnitude along −z: a negative one would be gravity pointing up, written twice
+    // over; give the vector for any direction.
+    if let Some(r) = ck.arena.as_rational(g)
+        && (r.is_negative() || r.is_zero())
+    {
+        ck.cx.error_spanned_by(
+            value,
+            format!(
+                "`{}` is {}: a magnitude must be positive (it acts along −z); give `[gx, gy, gz]` for any other direction",
+                keys::GRAVITY,
+                r.to_f64()
+            ),
+        );
+        return None;
+    }
+    let z = ck.arena.zero();
+    Some([z, z, ck.arena.neg(g)])
+}
+
+/// A coefficient that must not be negative: a negative drag or damping feeds energy in.
+fn non_negative(ck: &mut Checker, value: &Expr, what: &str) -> Option<ExprId> {
+    let v = ck.scalar(value)?;
+    if let Some(r) = ck.arena.as_rational(v)
+        && r.is_negative()
+    {
+        ck.cx.error_spanned_by(
+            value,
+            format!(
+                "`{what}` is {}: it must be zero or positive (a negative one feeds energy in)",
+                r.to_f64()
+            ),
+        );
+        return None;
+    }
+    Some(v)
+}
+
+/// The path of a user function.
+fn user_fn(ck: &mut Checker, value: &Expr, what: &str) -> Option<syn::Path> {
+    match value {
+        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
+        _ => {
+            let returns = if what == keys::FORCE {
+                "the force on the centre of mass, space axes"
+            } else {
+                "the torque about the centre of mass, description axes"
+            };
+            ck.cx.error_spanned_by(
+                value,
+                format!("`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → {returns})"),
+            );
+            None
+        }
+    }
+}

@@ -1,0 +1,307 @@
+//! Expansion of `#[free]`: the scene derived by precess-core (the right-hand side, wrench,
+//! energy, power and momenta over the state array), each method one straight-line block,
+//! quoted into `impl FreeDynamics for …`.
+
+use precess_core::codegen::{Emitted, f64_literal};
+use precess_core::free::{CmFrame, FreeDerivation, FreeScene, STATE_LEN, cm_frame};
+use precess_core::sym::mat3::Mat3;
+use precess_core::sym::{Arena, ExprId, SymbolId};
+use proc_macro2::TokenStream;
+use quote::{ToTokens, quote};
+use syn::{Ident, LitStr};
+
+use super::check::FreeSettings;
+use crate::ctxt::Ctxt;
+use crate::private::Private;
+use crate::rigid::check::CheckedBody;
+use crate::symbols::{FieldParameters, Lowering, SymbolTokens};
+
+/// The values generated code computes before a method's straight-line block, each emitted
+/// only where the block reads it.
+struct Preludes {
+    /// The principal frame decomposed at run time: its moments and rotation symbols.
+    principal: Vec<ExprId>,
+    /// The user force function and the symbols of its value.
+    force: Option<(TokenStream, [ExprId; 3])>,
+    /// The user torque function and the symbols of its value.
+    torque: Option<(TokenStream, [ExprId; 3])>,
+}
+
+impl Preludes {
+    /// The statements `outputs` need.
+    fn for_outputs(&self, arena: &Arena, outputs: &[ExprId]) -> TokenStream {
+        let p = Private;
+        let read: Vec<SymbolId> = outputs
+            .iter()
+            .flat_map(|&o| arena.free_symbols(o))
+            .collect();
+        let reads = |symbols: &[ExprId]| {
+            symbols
+                .iter()
+                .filter_map(|&e| arena.as_symbol(e))
+                .any(|s| read.contains(&s))
+        };
+        let mut out = TokenStream::new();
+        if reads(&self.principal) {
+            out.extend(quote!(let __pr = #p::FreeDynamics::principal_cm(self);));
+        }
+        let calls: Vec<TokenStream> = [(&self.force, quote!(__f)), (&self.torque, quote!(__u))]
+            .into_iter()
+            .filter_map(|(user, local)| {
+                let (path, symbols) = user.as_ref()?;
+                reads(symbols)
+                    .then(|| quote!(let #local: #p::Vector3<f64> = #path(self, t, &__state);))
+            })
+            .collect();
+        if !calls.is_empty() {
+            out.extend(quote!(let __state = #p::FreeState::from_array_unchecked(y);));
+            out.extend(calls);
+        }
+        out
+    }
+}
+
+/// The scene of the checked body and settings, with the symbols generated code must supply
+/// (the run-time principal frame, the user functions' values) recorded in `symbols`.
+fn scene(
+    arena: &mut Arena,
+    checked: &CheckedBody,
+    settings: &FreeSettings,
+    frame: &CmFrame,
+    symbols: &mut SymbolTokens,
+) -> (FreeScene, Preludes) {
+    let props = &checked.body.props;
+    let mut scene = FreeScene::new(arena, props.mass, [props.mass; 3]);
+    scene.center = props.center;
+    let mut preludes = Preludes {
+        principal: Vec::new(),
+        force: None,
+        torque: None,
+    };
+    match frame {
+        CmFrame::Diagonal(m) => scene.moments = *m,
+        CmFrame::Constant(pr) => {
+            let r = pr.rotation.matrix();
+            let constant =
+                |arena: &mut Arena, x: f64| arena.float(x).unwrap_or_else(|_| arena.zero());
+            scene.moments = std::array::from_fn(|k| constant(arena, pr.moments[k]));
+            scene.principal_rotation =
+                std::array::from_fn(|i| std::array::from_fn(|j| constant(arena, r[(i, j)])));
+        }
+        CmFrame::AtRunTime => {
+            let moments: [ExprId; 3] =
+                std::array::from_fn(|k| arena.input(&format!("I_{}", k + 1)));
+            let rotation: Mat3 = std::array::from_fn(|i| {
+                std::array::from_fn(|j| arena.input(&format!("R_pd_{i}{j}")))
+            });
+            for (k, &m) in moments.iter().enumerate() {
+                symbols.insert_expr(arena, m, quote!(__pr.moments[#k]));
+            }
+            for (i, row) in rotation.iter().enumerate() {
+                for (j, &r) in row.iter().enumerate() {
+                    symbols.insert_expr(arena, r, quote!(__pr.rotation.matrix()[(#i, #j)]));
+                }
+            }
+            preludes.principal = moments
+                .into_iter()
+                .chain(rotation.into_iter().flatten())
+                .collect();
+            scene.moments = moments;
+            scene.principal_rotation = rotation;
+        }
+    }
+    scene.gravity = settings.gravity;
+    scene.body_forces = settings.body_forces.clone();
+    scene.space_forces = settings.space_forces.clone();
+    scene.body_torque = settings.body_torque;
+    scene.space_torque = settings.space_torque;
+    scene.drag = settings.drag;
+    scene.damping = settings.damping;
+    // A user function's value enters the derivation as three input symbols.
+    let mut user = |arena: &mut Arena, path: &Option<syn::Path>, local: TokenStream, name: &str| {
+        let path = path.as_ref()?;
+        let u: [ExprId; 3] = std::array::from_fn(|k| arena.input(&format!("{name}{k}")));
+        for (k, &e) in u.iter().enumerate() {
+            symbols.insert_expr(arena, e, quote!(#local[#k]));
+        }
+        Some((path.to_token_stream(), u))
+    };
+    preludes.force = user(arena, &settings.force, quote!(__f), "f_user_");
+    preludes.torque = user(arena, &settings.torque, quote!(__u), "tau_user_");
+    scene.user_force = preludes.force.as_ref().map(|(_, u)| *u);
+    scene.user_torque = preludes.torque.as_ref().map(|(_, u)| *u);
+    (scene, preludes)
+}
+
+/// `impl FreeDynamics for …`, or `None` after recording why the equations could not be
+/// derived.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &mut Arena,
+    parameters: &FieldParameters,
+    checked: &CheckedBody,
+    settings: &FreeSettings,
+) -> Option<TokenStream> {
+    let p = Private;
+    let failed = |e: &dyn std::fmt::Display| {
+        cx.error_spanned_by(
+            ident,
+            format!("cannot derive the free body's equations of motion: {e}"),
+        );
+    };
+    let frame = cm_frame(arena, &checked.body.props.inertia_cm)
+        .map_err(|e| failed(&e))
+        .ok()?;
+    let mut symbols = parameters.tokens();
+    let (scene, preludes) = scene(arena, checked, settings, &frame, &mut symbols);
+    let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
+    let low = Lowering::new(cx, ident, symbols);
+    let method = Method {
+        low: &low,
+        preludes: &preludes,
+        state: &derivation.state,
+    };
+    let FreeDerivation {
+        rhs,
+        force,
+        torque,
+        energy,
+        power,
+        linear_momentum,
+        angular_momentum,
+        ..
+    } = &derivation;
+    let rhs = method.body(arena, rhs, |o| quote!(*dydt = [#(#o),*];));
+    let wrench_outputs: Vec<ExprId> = force.iter().chain(torque).copied().collect();
+    let wrench = method.body(arena, &wrench_outputs, |o| {
+        let (f, t) = o.split_at(3);
+        quote!(#p::Wrench { force_space: #p::Vector3::new(#(#f),*), torque_principal: #p::Vector3::new(#(#t),*) })
+    });
+    let energy = method.body(arena, &[*energy], |o| quote!(#(#o)*));
+    let power = method.body(arena, &[*power], |o| quote!(#(#o)*));
+    let vector = |o: &[TokenStream]| quote!(#p::Vector3::new(#(#o),*));
+    let linear = method.body(arena, linear_momentum, vector);
+    let angular = method.body(arena, angular_momentum, vector);
+    let principal = principal(&low, arena, &frame);
+    let gravity = match settings.gravity {
+        Some(g) => method.body(arena, &g, vector),
+        None => quote!({ #p::Vector3::zeros() }),
+    };
+    let beyond = match scene.declared_beyond_gravity() {
+        Some(name) => quote!(::core::option::Option::Some(#name)),
+        None => quote!(::core::option::Option::None),
+    };
+    let check = check_parameters(parameters);
+    Some(quote! {
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::FreeDynamics for #ident {
+            const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond;
+
+            #[inline]
+            fn principal_cm(&self) -> #p::Principal { #principal }
+
+            #[inline]
+            fn gravity(&self) -> #p::Vector3<f64> #gravity
+
+            #[inline]
+            fn free_rhs(&self, t: f64, y: &[f64; #STATE_LEN], dydt: &mut [f64; #STATE_LEN]) #rhs
+
+            #[inline]
+            fn wrench(&self, t: f64, y: &[f64; #STATE_LEN]) -> #p::Wrench #wrench
+
+            fn energy(&self, y: &[f64; #STATE_LEN]) -> f64 #energy
+
+            fn power(&self, t: f64, y: &[f64; #STATE_LEN]) -> f64 #power
+
+            fn linear_momentum(&self, y: &[f64; #STATE_LEN]) -> #p::Vector3<f64> #linear
+
+            fn angular_momentum_origin(&self, y: &[f64; #STATE_LEN]) -> #p::Vector3<f64> #angular
+
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> #check
+        }
+    })
+}
+
+/// Lowers one method's outputs over the state array `y`.
+struct Method<'a> {
+    low: &'a Lowering<'a>,
+    preludes: &'a Preludes,
+    state: &'a [ExprId; STATE_LEN],
+}
+
+impl Method<'_> {
+    /// `{ preludes; lets; build(outputs) }`.
+    fn body(
+        &self,
+        arena: &mut Arena,
+        outputs: &[ExprId],
+        build: impl FnOnce(&[TokenStream]) -> TokenStream,
+    ) -> TokenStream {
+        let reads: Vec<(ExprId, TokenStream)> = self
+            .state
+            .iter()
+            .enumerate()
+            .map(|(k, &e)| (e, quote!(y[#k])))
+            .collect();
+        let pre = self.preludes.for_outputs(arena, outputs);
+        let Emitted { lets, outputs } = self.low.lower_reading(arena, outputs, &reads);
+        let out = build(&outputs);
+        quote!({ #pre #lets #out })
+    }
+}
+
+/// The body of `principal_cm`: the moments of a diagonal tensor, a constant frame, or the
+/// decomposition at run time.
+fn principal(low: &Lowering, arena: &mut Arena, frame: &CmFrame) -> TokenStream {
+    let p = Private;
+    match frame {
+        CmFrame::Diagonal(m) => {
+            let Emitted { lets, outputs } = low.lower(arena, m);
+            quote!(#lets #p::Principal::diagonal(#p::Vector3::new(#(#outputs),*)))
+        }
+        CmFrame::Constant(pr) => {
+            let m = pr.moments.iter().map(|&x| f64_literal(x));
+            let r = pr.rotation.matrix();
+            let rows = (0..3)
+                .flat_map(|i| (0..3).map(move |j| (i, j)))
+                .map(|(i, j)| f64_literal(r[(i, j)]));
+            quote!(#p::Principal {
+                moments: #p::Vector3::new(#(#m),*),
+                rotation: #p::Rotation3::from_matrix_unchecked(#p::Matrix3::new(#(#rows),*)),
+            })
+        }
+        CmFrame::AtRunTime => quote!(#p::principal_frame(&#p::RigidBody::inertia_cm(self))),
+    }
+}
+
+/// The body of `check_parameters`: every field the body and its forces read is finite, the
+/// description keeps its rules, and the mass and principal moments are positive.
+fn check_parameters(parameters: &FieldParameters) -> TokenStream {
+    let p = Private;
+    let fields = parameters.fields().map(|f| {
+        let name = LitStr::new(&f.to_string(), f.span());
+        quote! {
+            if !self.#f.is_finite() {
+                return ::core::result::Result::Err(#p::FreeError::NonFiniteParameter {
+                    name: ::std::string::ToString::to_string(#name),
+                    value: self.#f,
+                });
+            }
+        }
+    });
+    quote!({
+        #(#fields)*
+        #p::RigidBody::validate(self)?;
+        let __mass = #p::RigidBody::mass(self);
+        let __m = #p::FreeDynamics::principal_cm(self).moments;
+        if !(__mass.is_finite() && __mass > 0.0 && __m.iter().all(|v| v.is_finite() && *v > 0.0)) {
+            return ::core::result::Result::Err(#p::FreeError::InvalidInertia {
+                mass: __mass,
+                moments: [__m.x, __m.y, __m.z],
+            });
+        }
+        ::core::result::Result::Ok(())
+    })
+}

@@ -1,0 +1,31 @@
+//! The stub `impl FreeDynamics` emitted next to the errors when the struct declares a free
+//! body, so code using the trait does not add errors to the real ones.
+
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::DeriveInput;
+
+use crate::private::Private;
+
+/// A stub `impl FreeDynamics` for `input`.
+pub fn stub(input: &DeriveInput) -> TokenStream {
+    let p = Private;
+    let ident = &input.ident;
+    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
+    let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
+    quote! {
+        #[automatically_derived]
+        impl #impl_generics #p::FreeDynamics for #ident #ty_generics #where_clause {
+            const BEYOND_GRAVITY: ::core::option::Option<&'static str> = ::core::option::Option::None;
+            fn principal_cm(&self) -> #p::Principal { #stub }
+            fn gravity(&self) -> #p::Vector3<f64> { #stub }
+            fn free_rhs(&self, _: f64, _: &[f64; 13], _: &mut [f64; 13]) { #stub }
+            fn wrench(&self, _: f64, _: &[f64; 13]) -> #p::Wrench { #stub }
+            fn energy(&self, _: &[f64; 13]) -> f64 { #stub }
+            fn power(&self, _: f64, _: &[f64; 13]) -> f64 { #stub }
+            fn linear_momentum(&self, _: &[f64; 13]) -> #p::Vector3<f64> { #stub }
+            fn angular_momentum_origin(&self, _: &[f64; 13]) -> #p::Vector3<f64> { #stub }
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> { #stub }
+        }
+    }
+}

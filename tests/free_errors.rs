@@ -1,0 +1,140 @@
+//! Item 5 at run time: bad states and parameters are typed errors naming the quantity.
+
+use precess::free::{
+    FreeDynamics, FreeError, FreeExact, FreeFlight, FreeModel, FreeScene, FreeState, FreeSystem,
+};
+use precess::ode::{AdaptiveConfig, OdeError};
+use precess::prelude::*;
+use precess::sym::Arena;
+
+#[derive(Debug, RigidBody)]
+#[rigid(sphere(mass = m, radius = 0.1))]
+#[free(gravity = 9.81, drag = c)]
+struct Ball {
+    m: f64,
+    c: f64,
+}
+
+#[test]
+fn a_zero_or_non_finite_quaternion_is_refused_by_name() {
+    let mut y = FreeState::at_rest().to_array();
+    y[6..10].copy_from_slice(&[0.0; 4]);
+    assert!(matches!(
+        FreeState::from_array(&y),
+        Err(FreeError::ZeroQuaternion { .. })
+    ));
+    y[6] = f64::NAN;
+    assert!(matches!(
+        FreeState::from_array(&y),
+        Err(FreeError::NonFinite {
+            quantity: "attitude quaternion",
+            ..
+        })
+    ));
+    // A tiny quaternion still names its attitude.
+    y[6..10].copy_from_slice(&[1e-300, 0.0, 0.0, 0.0]);
+    assert_eq!(
+        FreeState::from_array(&y).unwrap().attitude,
+        UnitQuaternion::identity()
+    );
+}
+
+#[test]
+fn a_non_finite_state_is_refused_by_part() {
+    let mut y = FreeState::at_rest().to_array();
+    y[4] = f64::INFINITY;
+    let e = FreeState::from_array(&y).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            FreeError::NonFinite {
+                quantity: "velocity",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    let s = FreeState {
+        omega_principal: Vector3::new(0.0, f64::NAN, 0.0),
+        ..FreeState::at_rest()
+    };
+    let ball = Ball { m: 1.0, c: 0.1 };
+    let e = FreeFlight::new(FreeSystem(&ball), 0.0, &s, AdaptiveConfig::default()).unwrap_err();
+    assert!(e.to_string().contains("ω"), "{e}");
+}
+
+#[test]
+fn a_non_finite_field_is_named() {
+    let ball = Ball {
+        m: 1.0,
+        c: f64::NAN,
+    };
+    let e = ball.check_parameters().unwrap_err();
+    assert!(
+        matches!(&e, FreeError::NonFiniteParameter { name, .. } if name == "c"),
+        "{e}"
+    );
+    // Integrating it fails at the start rather than computing NaN.
+    let e = FreeFlight::new(
+        FreeSystem(&ball),
+        0.0,
+        &FreeState::at_rest(),
+        AdaptiveConfig::default(),
+    );
+    assert!(
+        matches!(e, Err(FreeError::Ode(OdeError::NonFiniteState { .. }))),
+        "{e:?}"
+    );
+    // A negative mass breaks the body's rules.
+    let e = Ball { m: -1.0, c: 0.1 }.check_parameters().unwrap_err();
+    assert!(matches!(e, FreeError::Body(_)), "{e}");
+}
+
+#[test]
+fn the_exact_flow_is_refused_under_other_forces() {
+    let ball = Ball { m: 1.0, c: 0.1 };
+    let e = ball.exact(0.0, &FreeState::at_rest()).unwrap_err();
+    assert_eq!(e, FreeError::NotExact { declared: "drag" });
+    let bad = FreeExact::new(
+        &Vector3::new(1.0, -1.0, 1.0),
+        &Vector3::zeros(),
+        0.0,
+        &FreeState::at_rest(),
+    );
+    assert!(matches!(bad, Err(FreeError::InvalidInertia { .. })));
+}
+
+#[test]
+fn the_interpreted_model_names_its_parameters() {
+    let mut a = Arena::new();
+    let (m, i) = (a.parameter("M"), a.parameter("I"));
+    let mut scene = FreeScene::new(&mut a, m, [i, i, i]);
+    scene.drag = Some(a.parameter("c"));
+    let d = scene.derive(&mut a).unwrap();
+    let e = FreeModel::new(&mut a, &d, &[("M", 1.0), ("I", 1.0)]).unwrap_err();
+    assert!(
+        matches!(&e, FreeError::UnsetParameter { name, .. } if name == "c"),
+        "{e}"
+    );
+    let e = FreeModel::new(
+        &mut a,
+        &d,
+        &[("M", 1.0), ("I", 1.0), ("c", 0.1), ("k", 2.0)],
+    )
+    .unwrap_err();
+    assert!(
+        matches!(&e, FreeError::UnknownParameter { name, .. } if name == "k"),
+        "{e}"
+    );
+    let e = FreeModel::new(&mut a, &d, &[("M", 1.0), ("I", f64::NAN), ("c", 0.1)]).unwrap_err();
+    assert!(
+        matches!(&e, FreeError::NonFiniteParameter { name, .. } if name == "I"),
+        "{e}"
+    );
+    // A zero mass has no equations.
+    let z = a.zero();
+    let e = FreeScene::new(&mut a, z, [i, i, i])
+        .derive(&mut a)
+        .unwrap_err();
+    assert_eq!(e, FreeError::ZeroInertia { quantity: "mass" });
+}
