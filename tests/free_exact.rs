@@ -31,7 +31,12 @@ fn the_macro_finds_the_moments_summed_by_hand() {
     assert_relative_eq!(THandle.gravity(), Vector3::new(0.0, 0.0, -9.81));
 }
 
-/// Item 4(a): DOP853 at rtol 1e-12 against the exact parabola and exact attitude at T = 100.
+/// Item 4(a): DOP853 against the exact parabola and exact attitude at T = 100, to 1e-9.
+///
+/// The issue names rtol 1e-12, measured with the earlier PI gains (2.0e-10 rad in 134 053
+/// evaluations). DOP853 now uses `dop853.f`'s gains, which take longer steps at a given
+/// tolerance: 1.4e-8 rad in 86 970 evaluations at 1e-12, and 2.7e-10 rad in 130 479 at
+/// 3e-14 — the same work and accuracy as before, under a different tolerance.
 #[test]
 fn near_the_intermediate_axis_the_integration_follows_the_exact_motion_to_1e9() {
     let s0 = throw();
@@ -41,7 +46,7 @@ fn near_the_intermediate_axis_the_integration_follows_the_exact_motion_to_1e9() 
     assert!(100.0 / flips > 5.0, "flip interval {flips}");
     let cfg = AdaptiveConfig {
         max_steps: 1_000_000,
-        ..AdaptiveConfig::with_tol(1e-12, 1e-12)
+        ..AdaptiveConfig::with_tol(3e-14, 3e-14)
     };
     let mut flight = FreeFlight::new(FreeSystem(&THandle), 0.0, &s0, cfg).unwrap();
     let t_end = 100.0;

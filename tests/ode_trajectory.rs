@@ -155,8 +155,9 @@ fn derived_quantities_and_csv_read_back() {
         .integrate()
         .unwrap();
     let tr = &mut out.trajectory;
+    // The global error over two radians is a few times rtol = 1e-13 (2.2e-13 measured).
     for e in tr.column("energy").unwrap() {
-        assert_relative_eq!(e, 0.5, max_relative = 1e-13);
+        assert_relative_eq!(e, 0.5, max_relative = 1e-12);
     }
     assert_eq!(tr.column("phase, rad").unwrap(), tr.times());
     assert!(tr.column("missing").is_none());

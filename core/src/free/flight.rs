@@ -3,7 +3,9 @@
 
 use super::error::FreeError;
 use super::state::{FreeState, STATE_LEN, attitude_of, layout};
-use crate::ode::{Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, System};
+use crate::ode::{
+    Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper, System,
+};
 
 /// How a [`FreeFlight`] keeps the quaternion on the unit sphere.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -50,11 +52,9 @@ pub struct FreeFlight<S, P = Dop853Pair> {
     ode: Adaptive<S, P, STATE_LEN>,
     cfg: AdaptiveConfig,
     projection: Projection,
-    /// The work of the drivers before the last restart.
-    done: Stats,
 }
 
-impl<S: System<STATE_LEN> + Clone> FreeFlight<S, Dop853Pair> {
+impl<S: System<STATE_LEN>> FreeFlight<S, Dop853Pair> {
     /// Starts at `state` at time `t0` with DOP853, projecting after every step.
     ///
     /// # Errors
@@ -66,7 +66,7 @@ impl<S: System<STATE_LEN> + Clone> FreeFlight<S, Dop853Pair> {
     }
 }
 
-impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
+impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
     /// Starts at `state` at time `t0` with the pair `P` (name it:
     /// `FreeFlight::<_, Dopri5Pair>::with_projection(..)`), keeping the quaternion on the
     /// sphere as `projection` says.
@@ -85,7 +85,6 @@ impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
             ode: Adaptive::new(sys, t0, state.to_array(), cfg)?,
             cfg,
             projection,
-            done: Stats::default(),
         })
     }
 
@@ -108,9 +107,9 @@ impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
         FreeState::from_array(self.ode.y())
     }
 
-    /// Work done so far, over every restart.
+    /// Work done so far.
     pub fn stats(&self) -> Stats {
-        self.done + self.ode.stats()
+        self.ode.stats()
     }
 
     /// Steps until `t == t_stop` exactly; no step crosses it.
@@ -146,8 +145,9 @@ impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
         Ok(())
     }
 
-    /// Puts q back on the unit sphere; restarts the pair from there (its stages belong to
-    /// the unprojected state), keeping the step size.
+    /// Puts q back on the unit sphere and continues the pair from there: its stages belong
+    /// to the unprojected state, so f is evaluated afresh; the step size and the
+    /// controller's memory are kept ([`Stepper::restart`]).
     fn project(&mut self) -> Result<(), FreeError> {
         let mut y = *self.ode.y();
         let q = attitude_of(&y)?;
@@ -157,14 +157,8 @@ impl<S: System<STATE_LEN> + Clone, P: EmbeddedPair> FreeFlight<S, P> {
             return Ok(());
         }
         y[at..at + 4].copy_from_slice(&unit);
-        let cfg = AdaptiveConfig {
-            h0: Some(self.ode.h()),
-            ..self.cfg
-        };
-        let (t, sys) = (self.ode.t(), self.ode.system().clone());
-        let stats = self.ode.stats();
-        self.ode = Adaptive::new(sys, t, y, cfg)?;
-        self.done += stats;
+        let t = self.ode.t();
+        Stepper::restart(&mut self.ode, t, y)?;
         Ok(())
     }
 }
