@@ -40,6 +40,7 @@ pub mod prelude {
         About, Axis, Body, BodyBuilder, BodyError, Matrix3, Principal, RigidBody, Rotation3, Shape,
         Vector3,
     };
+    pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{
@@ -56,9 +57,11 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Part, Principal, RigidBody, Rotation3, Shape,
         Vector3, euler_rhs_principal, principal_frame,
     };
+    pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::TopDynamics;
+    pub use std::borrow::Cow;
     pub use std::vec;
 }
 

@@ -5,6 +5,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
 use super::rates::{check_chart, rates_from_omega};
+use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
@@ -79,6 +80,12 @@ pub trait TopDynamics {
         attitude: &UnitQuaternion<f64>,
         omega: &Vector3<f64>,
     ) -> Vector3<f64>;
+
+    /// The scene's equations as a paper prints them (L, the equations of motion, q̈, the
+    /// conserved momenta, one LaTeX string each) and the operation counts of the generated
+    /// methods, computed when the derive expanded: `'static` data, nothing computed at run
+    /// time. [`super::TopScene::typeset`] gives equal strings for a scene built at run time.
+    fn equations(&self) -> &'static Typeset;
 
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
     /// [`TopDynamics::try_angle_accel`]).

@@ -136,6 +136,7 @@ pub fn expand(
             return None;
         }
     };
+    let equations = super::equations::method(cx, ident, arena, &scene);
     let declared_t = sequence_tokens(scene.sequence);
     let Methods {
         arms:
@@ -186,6 +187,8 @@ pub fn expand(
                 attitude: &#p::UnitQuaternion<f64>,
                 omega: &#p::Vector3<f64>,
             ) -> #p::Vector3<f64> #eulerian
+
+            #equations
         }
     })
 }
