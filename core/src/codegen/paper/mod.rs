@@ -26,7 +26,9 @@ use print::Printer;
 use super::latex::latex;
 use crate::sym::{Arena, ExprId, Node, SymbolId};
 
-/// `e` in paper form as LaTeX (see the [module docs](self)).
+/// `e` in paper form as LaTeX: terms grouped by parameter with each group's common factor
+/// outside, the shorter of sin² u and 1 − cos² u per group, perfect squares and quotients
+/// printed whole, everything ordered by name (`docs/equations.md` has the rules in full).
 ///
 /// ```
 /// use precess_core::{codegen::paper_latex, sym::Arena};
