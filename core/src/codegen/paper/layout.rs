@@ -7,6 +7,7 @@ use std::rc::Rc;
 
 use super::poly::{Atom, Mono, Reduce, Term, angles, is_parameter, reduce};
 use super::print::Printer;
+use super::square::{perfect_square, square_modulo_trig};
 use crate::sym::{Rational, SymbolKind};
 
 /// Largest coefficient left inside a group's parentheses when a rational factor is taken
@@ -185,16 +186,47 @@ impl Printer<'_> {
             }
             candidates.push(best);
         }
+        // A square that shows only modulo sin² + cos² = 1, (θ̇ cos ψ + φ̇ sin θ sin ψ)² say.
+        let square = (!params.is_empty())
+            .then(|| square_modulo_trig(terms, &candidates, &us))
+            .flatten()
+            .map(|(c, a, b)| Group {
+                negative: c.is_negative(),
+                coef: c.abs_value(),
+                prefix: self.display_order(params),
+                inner: self.square(a, b),
+            });
         // The first of equal lengths wins: the engine's own form unless another is shorter.
         let mut best: Option<(usize, Vec<Group>)> = None;
-        for c in candidates {
-            let groups = self.bucket_groups(params, &c);
+        let layouts = candidates
+            .iter()
+            .map(|c| self.bucket_groups(params, c))
+            .chain(square.map(|g| vec![g]));
+        for groups in layouts {
             let len = self.sum(&groups).len();
             if best.as_ref().is_none_or(|(l, _)| len < *l) {
                 best = Some((len, groups));
             }
         }
         best.map(|(_, g)| g).unwrap_or_default()
+    }
+
+    /// `(a ± b)²` with the terms in display order and the sign on the second
+    /// ((a − b)² = (b − a)²).
+    fn square(&self, a: Term, b: Term) -> Inner {
+        let minus = b.coef.is_negative();
+        let b = Term {
+            coef: b.coef.abs_value(),
+            ..b
+        };
+        let (first, mut second) = match self.term_key(&a).cmp(&self.term_key(&b)) {
+            Ordering::Greater => (b, a),
+            _ => (a, b),
+        };
+        if minus {
+            second.coef = -second.coef;
+        }
+        Inner::Square(first, second)
     }
 
     fn bucket_len(&self, params: &[(Atom, i64)], terms: &[Term]) -> usize {
@@ -268,22 +300,7 @@ impl Printer<'_> {
         };
         self.sort_terms(&mut inner);
         let inner = match perfect_square(&inner) {
-            Some((a, b)) => {
-                // (a − b)² = (b − a)²: the terms in display order, the sign on the second.
-                let minus = b.coef.is_negative();
-                let b = Term {
-                    coef: b.coef.abs_value(),
-                    ..b
-                };
-                let (first, mut second) = match self.term_key(&a).cmp(&self.term_key(&b)) {
-                    Ordering::Greater => (b, a),
-                    _ => (a, b),
-                };
-                if minus {
-                    second.coef = -second.coef;
-                }
-                Inner::Square(first, second)
-            }
+            Some((a, b)) => self.square(a, b),
             None => Inner::Sum(inner),
         };
         Group {
@@ -320,38 +337,4 @@ fn gcd(mut a: i128, mut b: i128) -> i128 {
         (a, b) = (b, a % b);
     }
     a.abs()
-}
-
-/// `(a, ±b)` with `a² ± 2ab + b²` equal to the three terms, a and b with positive
-/// coefficients.
-fn perfect_square(terms: &[Term]) -> Option<(Term, Term)> {
-    let [x, y, z] = terms else {
-        return None;
-    };
-    let root = |t: &Term| -> Option<Term> {
-        let coef = t.coef.sqrt_exact()?;
-        let mono = t
-            .mono
-            .iter()
-            .map(|&(a, n)| (n % 2 == 0).then_some((a, n / 2)))
-            .collect::<Option<Vec<_>>>()?;
-        Some(Term { coef, mono })
-    };
-    for (p, q, cross) in [(x, y, z), (x, z, y), (y, z, x)] {
-        let (Some(a), Some(b)) = (root(p), root(q)) else {
-            continue;
-        };
-        let ab = a.times(&b)?;
-        let two_ab = Term {
-            coef: ab.coef.checked_mul(Rational::integer(2))?,
-            mono: ab.mono,
-        };
-        if two_ab.mono == cross.mono && two_ab.coef == cross.coef {
-            return Some((a, b));
-        }
-        if two_ab.mono == cross.mono && two_ab.coef == -cross.coef {
-            return Some((a, Term { coef: -b.coef, ..b }));
-        }
-    }
-    None
 }

@@ -16,6 +16,7 @@
 mod layout;
 mod poly;
 mod print;
+mod square;
 #[cfg(test)]
 mod tests;
 

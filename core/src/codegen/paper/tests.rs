@@ -179,3 +179,24 @@ fn deep_and_large_expressions_print() {
     let e = a.product(&[sp, sq, f.theta_dot]);
     assert_eq!(paper_latex(a, e).matches(r"\left(").count(), 2);
 }
+
+/// ½ a (θ̇ cos φ + φ̇ sin φ sin θ)², a square only modulo sin² + cos² = 1 (its engine form
+/// has six terms), prints as the square.
+#[test]
+fn squares_modulo_the_trigonometric_identity_print_as_squares() {
+    let mut f = fixture();
+    let a = &mut f.a;
+    let phi = a.coordinate("phi");
+    let (cp, sp, st) = (a.cos(phi), a.sin(phi), a.sin(f.theta));
+    let x = a.mul(f.theta_dot, cp);
+    let y = a.product(&[f.phi_dot, st, sp]);
+    let w = a.add(x, y);
+    let w2 = pow(a, w, 2);
+    let half = a.number("0.5").unwrap_or(f.pa);
+    let e = a.product(&[half, f.pa, w2]);
+    let e = a.expand(e);
+    assert_eq!(
+        paper_latex(a, e),
+        r"\frac{1}{2} a \left(\dot{\theta} \cos\phi + \dot{\phi} \sin\phi \sin\theta\right)^{2}"
+    );
+}
