@@ -350,6 +350,20 @@ fn sin_squared_is_printed_where_shorter() {
     assert!(eq.accelerations[2].contains(r"\left(1 + \cos^{2}\theta\right)"));
 }
 
+/// A general top's kinetic energy prints as ½ (A ω₁² + B ω₂² + C ω₃²) plus the products of
+/// inertia's terms, with Goldstein's body rates (eq. 4.87): ω₁ = φ̇ sin θ sin ψ + θ̇ cos ψ,
+/// ω₂ = φ̇ sin θ cos ψ − θ̇ sin ψ (printed squared as (θ̇ sin ψ − φ̇ sin θ cos ψ)²),
+/// ω₃ = φ̇ cos θ + ψ̇; the engine's form holds none of these squares.
+#[test]
+fn general_kinetic_energy_prints_in_body_rates() {
+    let l = &GENERAL.equations().lagrangian;
+    let squares = r"L = \frac{1}{2} A \left(\dot{\theta} \cos\psi + \dot{\phi} \sin\theta \sin\psi\right)^{2} + \frac{1}{2} B \left(\dot{\theta} \sin\psi - \dot{\phi} \sin\theta \cos\psi\right)^{2} + \frac{1}{2} C \left(\dot{\psi} + \dot{\phi} \cos\theta\right)^{2} - D ";
+    assert!(l.starts_with(squares), "{l}");
+    assert!(
+        l.ends_with(r"- M g x \sin\theta \sin\psi - M g y \sin\theta \cos\psi - M g z \cos\theta")
+    );
+}
+
 /// The counts a scene prints are those of the programs lowered here from the same
 /// derivation, counted by this test's own loop; a derived struct's are those of the run-time
 /// derivation of its scene (the counts of the emitted Rust itself are checked on its tokens
