@@ -12,7 +12,7 @@ use crate::sym::{Rational, SymbolKind};
 
 /// Largest coefficient left inside a group's parentheses when a rational factor is taken
 /// out; past it the factor stays with the terms (`½ (a + b)` yes, `1/1000 (30 a + 7 b)` no).
-const MAX_INNER_COEFFICIENT: i128 = 64;
+const MAX_INNER_COEFFICIENT: u128 = 64;
 
 /// How many angles have both of their forms tried together (2ⁿ layouts); past it each angle
 /// is chosen on its own.
@@ -327,7 +327,7 @@ fn rational_content(terms: &[Term]) -> Option<Rational> {
         t.coef
             .checked_mul(c.recip().unwrap_or(Rational::ONE))
             .and_then(Rational::fraction)
-            .is_some_and(|(n, d)| d == 1 && n.abs() <= MAX_INNER_COEFFICIENT)
+            .is_some_and(|(n, d)| d == 1 && n.unsigned_abs() <= MAX_INNER_COEFFICIENT)
     });
     small.then_some(c)
 }

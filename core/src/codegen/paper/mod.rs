@@ -21,7 +21,7 @@ mod square;
 mod tests;
 
 use layout::Group;
-use poly::{Term, product, terms};
+use poly::{Term, power, product, terms};
 use print::Printer;
 
 use super::latex::latex;
@@ -138,9 +138,7 @@ fn quotient(arena: &Arena, e: ExprId) -> Option<(Vec<Term>, Vec<Term>)> {
         match arena.node(f) {
             Node::Pow(b, n) if *n < 0 => {
                 let base = terms(arena, *b)?;
-                for _ in 0..n.unsigned_abs() {
-                    den = product(&den, &base)?;
-                }
+                den = product(&den, &power(arena, *b, n.checked_neg()?, &base)?)?;
             }
             _ => num = product(&num, &terms(arena, f)?)?,
         }

@@ -7,6 +7,10 @@ use crate::sym::{Arena, ExprId, IdMap, Node, Rational, SymbolKind};
 /// Past this many terms a product of sums is left unexpanded (an opaque factor).
 const MAX_TERMS: usize = 4096;
 
+/// Largest power of an atom the view holds; an expression with a larger one prints in the
+/// engine's form (so the arithmetic on powers here never overflows).
+const MAX_POWER: i64 = 1 << 20;
+
 /// A factor of a monomial.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub(super) enum Atom {
@@ -51,12 +55,13 @@ impl Term {
         }
     }
 
-    /// The product of two terms; `None` if the coefficient overflows.
+    /// The product of two terms; `None` if the coefficient overflows or a power passes
+    /// [`MAX_POWER`].
     pub fn times(&self, other: &Term) -> Option<Term> {
         let mut mono = self.mono.clone();
         for &(a, n) in &other.mono {
             match mono.iter_mut().find(|(b, _)| *b == a) {
-                Some((_, m)) => *m += n,
+                Some((_, m)) => *m = bounded(m.checked_add(n)?)?,
                 None => mono.push((a, n)),
             }
         }
@@ -185,13 +190,18 @@ pub(super) fn terms(arena: &Arena, e: ExprId) -> Option<Vec<Term>> {
 
 /// `b^n` from the terms of `b`: an atom's power when `b` is one term, the sum multiplied
 /// out for a small positive power, else an opaque atom.
-fn power(arena: &Arena, b: ExprId, n: i64, base: &[Term]) -> Option<Vec<Term>> {
+pub(super) fn power(arena: &Arena, b: ExprId, n: i64, base: &[Term]) -> Option<Vec<Term>> {
     if let [t] = base {
         // (c · Π aᵏ)ⁿ = cⁿ · Π aᵏⁿ, exact.
         let coef = t.coef.checked_pow(n)?;
-        let mono = t.mono.iter().map(|&(a, k)| (a, k * n)).collect();
+        let mono = t
+            .mono
+            .iter()
+            .map(|&(a, k)| Some((a, bounded(k.checked_mul(n)?)?)))
+            .collect::<Option<_>>()?;
         return Some(vec![Term { coef, mono }]);
     }
+    let n = bounded(n)?;
     if (2..=4).contains(&n) {
         let mut acc = base.to_vec();
         for _ in 1..n {
@@ -203,6 +213,11 @@ fn power(arena: &Arena, b: ExprId, n: i64, base: &[Term]) -> Option<Vec<Term>> {
         return Some(acc);
     }
     Some(vec![Term::atom(opaque(arena, b), n)])
+}
+
+/// `n` if it is a power the view holds.
+fn bounded(n: i64) -> Option<i64> {
+    (n.checked_abs()? <= MAX_POWER).then_some(n)
 }
 
 fn opaque(arena: &Arena, b: ExprId) -> Atom {

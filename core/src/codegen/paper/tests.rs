@@ -200,3 +200,19 @@ fn squares_modulo_the_trigonometric_identity_print_as_squares() {
         r"\frac{1}{2} a \left(\dot{\theta} \cos\phi + \dot{\phi} \sin\phi \sin\theta\right)^{2}"
     );
 }
+
+/// Powers past what the view holds (or whose product would overflow) print in the engine's
+/// form rather than wrapping or looping.
+#[test]
+fn huge_powers_fall_back_to_the_engine_form() {
+    let mut f = fixture();
+    let a = &mut f.a;
+    let big = pow(a, f.pa, i64::MAX);
+    let e = a.mul(big, f.theta_dot);
+    let printed = paper_latex(a, e);
+    assert!(printed.contains(&i64::MAX.to_string()), "{printed}");
+    let sum = a.add(f.pa, f.theta_dot);
+    let inv = pow(a, sum, -(1 << 40));
+    let e = a.product(&[inv, sum, f.pb]);
+    assert!(!paper_latex(a, e).is_empty());
+}
