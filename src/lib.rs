@@ -40,6 +40,7 @@ pub mod prelude {
         About, Axis, Body, BodyBuilder, BodyError, Matrix3, Orientation, Principal, RigidBody,
         Rotation3, Shape, Vector3,
     };
+    pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
@@ -57,10 +58,12 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Orientation, Part, Principal, RigidBody,
         Rotation3, Shape, Vector3, euler_rhs_diagonal, principal_frame,
     };
+    pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::top::{TopDynamics, TopParameters};
+    pub use std::borrow::Cow;
     pub use std::vec;
 }
 

@@ -217,7 +217,7 @@ fn rational(r: Rational) -> String {
 
 /// Numerator and denominator of |r|; beyond ratios of i128s, the numerator carries the
 /// powers: n · 10^k · 2^a (or 5^b).
-fn fraction(r: Rational) -> (String, String) {
+pub(super) fn fraction(r: Rational) -> (String, String) {
     let (n, d, two, five) = r.abs_value().scaled();
     let ten = if two.signum() == five.signum() {
         two.signum() * two.abs().min(five.abs())

@@ -6,15 +6,21 @@
 //! - interpreted in f64 ([`Program::eval`]), the oracle the emitted code is tested against;
 //! - counted ([`Program::op_count`]), the cost model the reports print.
 //!
-//! [`latex`] renders an expression for a reader.
+//! [`latex()`] renders an expression for a reader in the engine's canonical form,
+//! [`paper_latex`] as a paper prints it (grouped by parameter, sin² where shorter).
 
 mod count;
 mod interp;
 mod latex;
+mod paper;
 mod program;
 mod tokens;
+mod typeset;
 
 pub use count::OpCount;
 pub use latex::latex;
+pub(crate) use paper::Paper;
+pub use paper::{paper_equation, paper_latex};
 pub use program::{Op, Program, Slot};
 pub use tokens::{Emitted, f64_literal};
+pub use typeset::{ALIGN_WIDTH, Lines, MethodCost, Typeset};

@@ -35,6 +35,7 @@ mod scene;
 mod theory;
 mod top_chart;
 mod top_trait;
+mod typeset;
 
 pub use angle_chart::AngleChart;
 pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};

@@ -7,6 +7,7 @@ use super::error::TopError;
 use super::parameters::TopParameters;
 use super::rates::{check_chart, rates_from_omega};
 use crate::body::RigidBody;
+use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
@@ -123,6 +124,39 @@ pub trait TopDynamics {
         self.validate_top()?;
         Ok(self)
     }
+
+    /// The scene's equations as a paper prints them (L, the equations of motion, q̈, the
+    /// conserved momenta, one LaTeX string each) and the operation counts of the generated
+    /// methods, computed when the derive expanded: `'static` data, nothing computed at run
+    /// time. [`super::TopScene::typeset`] gives equal strings for a scene built at run time.
+    /// `docs/equations.md` describes the form.
+    ///
+    /// # Examples
+    ///
+    /// The heavy symmetric top: p_ψ = I₃ (ψ̇ + φ̇ cos θ) = I₃ ω₃ is conserved, and q̈ costs
+    /// 34 operations (one of them a paired `sin_cos`).
+    ///
+    /// ```
+    /// use precess::prelude::*;
+    ///
+    /// #[allow(non_snake_case)]
+    /// #[derive(RigidBody)]
+    /// #[rigid(
+    ///     body(mass = M, at = [0.0, 0.0, l], inertia = diag(I_1, I_1, I_3), about = pivot),
+    ///     pivot = [0.0, 0.0, 0.0],
+    /// )]
+    /// #[top(gravity = g)]
+    /// struct HeavyTop { I_1: f64, I_3: f64, M: f64, g: f64, l: f64 }
+    ///
+    /// let eq = HeavyTop { I_1: 1.0, I_3: 0.5, M: 1.0, g: 9.81, l: 0.1 }.equations();
+    /// assert_eq!(
+    ///     eq.conserved[1],
+    ///     r"p_{\psi} = I_{3} \left(\dot{\psi} + \dot{\phi} \cos\theta\right)"
+    /// );
+    /// let accel = eq.cost("angle_accel").unwrap();
+    /// assert_eq!((accel.total(), accel.sin_cos), (34, 1));
+    /// ```
+    fn equations(&self) -> &'static Typeset;
 
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
     /// [`TopDynamics::try_angle_accel`]).

@@ -151,6 +151,7 @@ pub fn expand(
             return None;
         }
     };
+    let equations = super::equations::method(cx, ident, arena, &scene);
     let declared_t = sequence_tokens(scene.sequence);
     let parameters = top_parameters(&low, arena, settings);
     let Methods {
@@ -204,6 +205,8 @@ pub fn expand(
                 attitude: &#p::UnitQuaternion<f64>,
                 omega: &#p::Vector3<f64>,
             ) -> #p::Vector3<f64> #eulerian
+
+            #equations
         }
     })
 }

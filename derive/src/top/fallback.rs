@@ -25,6 +25,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             fn angle_jacobian(&self, _: f64, _: &[f64; 3], _: &[f64; 3]) -> [[f64; 6]; 3] { #stub }
             fn conserved_momenta(&self, _: &[f64; 3], _: &[f64; 3]) -> [::core::option::Option<f64>; 3] { #stub }
             fn eulerian_rhs(&self, _: f64, _: &#p::UnitQuaternion<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
+            fn equations(&self) -> &'static #p::Typeset { #stub }
         }
     }
 }

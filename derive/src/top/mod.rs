@@ -5,6 +5,7 @@
 
 pub mod attr;
 pub mod check;
+pub mod equations;
 pub mod expand;
 pub mod fallback;
 

@@ -1,0 +1,206 @@
+//! A top's equations typeset for a reader and the cost of the code `#[top]` generates: the
+//! one function behind both a derived struct's [`super::TopDynamics::equations`] (the macro
+//! calls it while it expands) and the run-time [`TopScene::typeset`].
+
+use std::borrow::Cow;
+
+use super::scene::{TopDerivation, TopScene};
+use crate::codegen::{Lines, MethodCost, Paper, Program, Typeset};
+use crate::lagrange::LagrangeError;
+use crate::sym::mat3::Mat3;
+use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
+
+impl TopScene {
+    /// The scene's equations in paper form (grouped by parameter, sin² θ where it prints
+    /// shorter, one string per equation) with the operation counts of the code `#[top]`
+    /// generates for the declared angle sequence: what a derived struct with the same
+    /// description returns from [`super::TopDynamics::equations`], string for string.
+    ///
+    /// The lines are L = T − V; `Σⱼ Mᵢⱼ q̈ⱼ = fᵢ` per coordinate; q̈ᵢ; the conserved momenta;
+    /// the definitions of the abbreviated mass properties they name. The costs are those
+    /// of `angle_accel`, `angle_jacobian`, `energy`, `conserved_momenta`, `rotation_in`,
+    /// `rate_matrix_in` (for [`TopScene::sequence`]) and `eulerian_rhs`, not counting a
+    /// call to a user torque function.
+    ///
+    /// ```
+    /// use precess_core::sym::Arena;
+    /// use precess_core::top::TopScene;
+    ///
+    /// let mut a = Arena::new();
+    /// let (i1, i3) = (a.parameter("I_1"), a.parameter("I_3"));
+    /// let z = a.zero();
+    /// let mut scene = TopScene::free(&mut a, [[i1, z, z], [z, i1, z], [z, z, i3]]);
+    /// scene.mass = a.parameter("M");
+    /// scene.center = [z, z, a.parameter("l")];
+    /// scene.gravity = Some(a.parameter("g"));
+    /// let eq = scene.typeset(&mut a)?;
+    /// assert_eq!(
+    ///     eq.lagrangian,
+    ///     r"L = \frac{1}{2} I_{1} \left(\dot{\theta}^{2} + \dot{\phi}^{2} \sin^{2}\theta\right) + \frac{1}{2} I_{3} \left(\dot{\psi} + \dot{\phi} \cos\theta\right)^{2} - M g l \cos\theta"
+    /// );
+    /// assert_eq!(eq.conserved[1], r"p_{\psi} = I_{3} \left(\dot{\psi} + \dot{\phi} \cos\theta\right)");
+    /// # Ok::<(), precess_core::lagrange::LagrangeError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`TopScene::derive`] and [`TopScene::eulerian_rhs`].
+    pub fn typeset(&self, arena: &mut Arena) -> Result<Typeset, LagrangeError> {
+        let attitude: Mat3 =
+            std::array::from_fn(|i| std::array::from_fn(|j| arena.input(&format!("R{i}{j}"))));
+        let omega = [arena.input("w0"), arena.input("w1"), arena.input("w2")];
+        self.typeset_reading(arena, &attitude, &omega)
+    }
+
+    /// [`TopScene::typeset`], the Eulerian form counted as the program over the given
+    /// symbols for the attitude matrix (body to space) and ω.
+    ///
+    /// The operation count of generated code depends on the order its expressions were
+    /// built in (the canonical order of a sum is the order its terms were made, and lowering
+    /// follows it), so the derive passes the very symbols its `eulerian_rhs` reads: the
+    /// count is then of the program it emitted. The angle-form expressions need no such
+    /// care: rebuilt in the same arena they are the same expressions.
+    ///
+    /// # Errors
+    /// As [`TopScene::typeset`].
+    pub fn typeset_reading(
+        &self,
+        arena: &mut Arena,
+        attitude: &Mat3,
+        omega: &[ExprId; 3],
+    ) -> Result<Typeset, LagrangeError> {
+        let top = self.derive(arena)?;
+        let costs = self.costs(arena, &top, attitude, omega)?;
+        let lagrangian = arena.sub(top.kinetic, top.potential);
+        let c = top.coords().clone();
+        let mut equations = Vec::with_capacity(c.len());
+        for (row, &f) in top.equations.mass.iter().zip(&top.equations.forcing) {
+            let products: Vec<ExprId> = row
+                .iter()
+                .zip(&c.accels)
+                .map(|(&m, &a)| arena.mul(m, a))
+                .collect();
+            equations.push((arena.sum(&products), f));
+        }
+        let paper = self.paper(arena);
+        let lagrangian = format!("L = {}", paper.latex(lagrangian));
+        let equations = equations
+            .into_iter()
+            .map(|(lhs, rhs)| paper.equation(lhs, rhs))
+            .collect();
+        let accelerations = c
+            .accels
+            .iter()
+            .zip(&top.accelerations.accel)
+            .map(|(&q_ddot, &value)| {
+                format!("{} = {}", latex_of(arena, q_ddot), paper.latex(value))
+            })
+            .collect();
+        let conserved: Vec<String> =
+            c.q.iter()
+                .zip(&top.conserved_momenta)
+                .filter_map(|(&q, p)| {
+                    let p = (*p)?;
+                    Some(format!("p_{{{}}} = {}", latex_of(arena, q), paper.latex(p)))
+                })
+                .collect();
+        let definitions = definitions(arena, &paper, &top);
+        Ok(Typeset {
+            lagrangian: Cow::Owned(lagrangian),
+            equations: owned(equations),
+            accelerations: owned(accelerations),
+            conserved: owned(conserved),
+            definitions: owned(definitions),
+            costs: Cow::Owned(costs),
+        })
+    }
+
+    /// The paper-form printer of this scene: a user torque's inputs show as τ₁, τ₂, τ₃ (its
+    /// components in body axes) whatever the caller named them, primed (τ′₁) if a symbol
+    /// of the arena already prints so.
+    fn paper<'a>(&self, arena: &'a Arena) -> Paper<'a> {
+        let mut paper = Paper::new(arena);
+        let taken = |latex: &str| arena.symbols().any(|(_, s)| s.latex == latex);
+        let mut head = "\\tau".to_owned();
+        while (1..=3).any(|k| taken(&format!("{head}_{{{k}}}"))) {
+            head.push('\'');
+        }
+        for (k, &u) in self.user_torque.iter().flatten().enumerate() {
+            if let Some(s) = arena.as_symbol(u) {
+                paper = paper.rename(s, format!("{head}_{{{}}}", k + 1));
+            }
+        }
+        paper
+    }
+
+    /// The operation counts of the methods `#[top]` generates, lowered from the same
+    /// expressions the macro lowers.
+    fn costs(
+        &self,
+        arena: &mut Arena,
+        top: &TopDerivation,
+        attitude: &Mat3,
+        omega: &[ExprId; 3],
+    ) -> Result<Vec<MethodCost>, LagrangeError> {
+        let energy = top.energy(arena);
+        let jacobian = top.jacobian(arena);
+        let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
+        let eulerian = self.eulerian_rhs(arena, attitude, omega)?;
+        let programs: [(&'static str, &[ExprId]); 7] = [
+            ("angle_accel", &top.accelerations.accel),
+            ("angle_jacobian", jacobian.as_flattened()),
+            ("energy", &[energy]),
+            ("conserved_momenta", &conserved),
+            ("rotation_in", top.rotation.as_flattened()),
+            ("rate_matrix_in", top.rate_matrix.as_flattened()),
+            ("eulerian_rhs", &eulerian),
+        ];
+        Ok(programs
+            .into_iter()
+            .map(|(method, outputs)| MethodCost {
+                method: Cow::Borrowed(method),
+                ops: Program::lower(arena, outputs).op_count(),
+            })
+            .collect())
+    }
+}
+
+fn owned(lines: Vec<String>) -> Lines {
+    lines.into_iter().map(Cow::Owned).collect()
+}
+
+/// The LaTeX name of a bare symbol (coordinates and their derivatives are).
+fn latex_of(arena: &Arena, e: ExprId) -> String {
+    match arena.as_symbol(e) {
+        Some(s) => arena.symbol(s).latex.clone(),
+        None => crate::codegen::latex(arena, e),
+    }
+}
+
+/// `name = definition` for every abbreviation the derivation's lines name, and those their
+/// definitions name in turn, in order of name.
+fn definitions(arena: &Arena, paper: &Paper<'_>, top: &TopDerivation) -> Vec<String> {
+    let mut queue: Vec<ExprId> = vec![top.kinetic, top.potential];
+    queue.extend(top.forces.iter().copied());
+    let mut found: Vec<SymbolId> = Vec::new();
+    while let Some(e) = queue.pop() {
+        for s in arena.free_symbols(e) {
+            if arena.symbol(s).kind == SymbolKind::Abbreviation && !found.contains(&s) {
+                found.push(s);
+                queue.extend(arena.definition(s));
+            }
+        }
+    }
+    let mut lines: Vec<(String, String)> = found
+        .into_iter()
+        .filter_map(|s| {
+            let d = arena.definition(s)?;
+            let symbol = arena.symbol(s);
+            Some((
+                symbol.name.clone(),
+                format!("{} = {}", symbol.latex, paper.latex(d)),
+            ))
+        })
+        .collect();
+    lines.sort();
+    lines.into_iter().map(|(_, l)| l).collect()
+}
