@@ -7,10 +7,11 @@
 //! (conserved: gravity makes no torque about the centre of mass and has a potential).
 //!
 //! ```text
-//! cargo run --release --example thrown_wrench [path.svg]
+//! cargo run --release --example thrown_wrench [directory or path.svg]
 //! ```
 //!
-//! It writes a plot of ω(t) and of the centre of mass's path to the path given, by default
+//! It writes a plot of ω(t) and of the centre of mass's path to the path given (into it as
+//! `thrown_wrench.svg` if it is a directory, as for the other examples), by default
 //! `target/precess-plots/thrown_wrench.svg`.
 
 use std::error::Error;
@@ -210,10 +211,13 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     println!("\nwork: {:?}", flight.stats());
 
-    let path = std::env::args()
+    let mut path = std::env::args()
         .nth(1)
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from("target/precess-plots/thrown_wrench.svg"));
+        .unwrap_or_else(|| PathBuf::from("target/precess-plots"));
+    if path.extension().is_none_or(|e| e != "svg") {
+        path.push("thrown_wrench.svg");
+    }
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)?;
     }
