@@ -5,20 +5,12 @@
 mod free_bodies;
 
 use approx::assert_relative_eq;
-use free_bodies::{T_HANDLE_MOMENTS, THandle};
+use free_bodies::{T_HANDLE_MOMENTS, THandle, throw};
 use precess::free::{FreeDynamics, FreeExact, FreeFlight, FreeState, FreeSystem};
 use precess::ode::AdaptiveConfig;
 use precess::prelude::*;
 
 /// A throw of the T-handle spinning near its intermediate axis (the bar, x).
-fn throw() -> FreeState {
-    FreeState {
-        position: Vector3::new(0.0, 0.0, 1.5),
-        velocity: Vector3::new(0.5, 0.0, 4.0),
-        attitude: UnitQuaternion::from_euler_angles(0.1, -0.2, 0.3),
-        omega_principal: Vector3::new(20.0, 0.5, 0.75),
-    }
-}
 
 #[test]
 fn the_macro_finds_the_moments_summed_by_hand() {

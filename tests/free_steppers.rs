@@ -4,20 +4,11 @@
 
 mod free_bodies;
 
-use free_bodies::{T_HANDLE_MOMENTS, THandle};
+use free_bodies::{T_HANDLE_MOMENTS, THandle, throw};
 use precess::free::{FreeDynamics, FreeState, FreeSystem};
 use precess::ode::{FixedStepConfig, Rk4};
 use precess::prelude::*;
 use precess::rigid::{FreeBodySplitting, SplittingOrder};
-
-fn throw() -> FreeState {
-    FreeState {
-        position: Vector3::new(0.0, 0.0, 1.5),
-        velocity: Vector3::new(0.5, 0.0, 4.0),
-        attitude: UnitQuaternion::from_euler_angles(0.1, -0.2, 0.3),
-        omega_principal: Vector3::new(20.0, 0.5, 0.75),
-    }
-}
 
 /// RK4 is fourth order on the whole free body: halving h divides the attitude error by 16.
 #[test]
