@@ -88,6 +88,13 @@ fn a_non_finite_field_is_named() {
     // A negative mass breaks the body's rules.
     let e = Ball { m: -1.0, c: 0.1 }.check_parameters().unwrap_err();
     assert!(matches!(e, FreeError::Body(_)), "{e}");
+    // A field drag meets the rule a literal meets at compile time (tests/ui/free_negative_drag).
+    let e = Ball { m: 1.0, c: -0.1 }.check_parameters().unwrap_err();
+    assert!(
+        matches!(e, FreeError::NegativeCoefficient { name: "drag", value } if value == -0.1),
+        "{e}"
+    );
+    assert!(Ball { m: 1.0, c: 0.0 }.check_parameters().is_ok());
 }
 
 #[test]

@@ -9,6 +9,7 @@
 //! [`latex()`] renders an expression for a reader in the engine's canonical form,
 //! [`paper_latex`] as a paper prints it (grouped by parameter, sin² where shorter).
 
+mod bindings;
 mod count;
 mod interp;
 mod latex;
@@ -17,6 +18,7 @@ mod program;
 mod tokens;
 mod typeset;
 
+pub use bindings::{BindingError, Bindings};
 pub use count::OpCount;
 pub use latex::latex;
 pub(crate) use paper::Paper;

@@ -4,6 +4,7 @@
 use thiserror::Error;
 
 use crate::body::BodyError;
+use crate::codegen::BindingError;
 use crate::exact::ExactError;
 use crate::ode::OdeError;
 
@@ -60,6 +61,15 @@ pub enum FreeError {
         /// The other forces and torques declared.
         declared: &'static str,
     },
+    /// A drag or damping coefficient below zero, read from a field: the rule a literal meets
+    /// at compile time (a negative one feeds energy in).
+    #[error("`{name}` is {value}: it must be zero or positive (a negative one feeds energy in)")]
+    NegativeCoefficient {
+        /// `drag` or `damping`.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// No parameter of that name appears in the derivation.
     #[error("no parameter named `{name}` in this free body (parameters: {known})")]
     UnknownParameter {
@@ -95,4 +105,21 @@ pub enum FreeError {
     /// The exact attitude could not be set up or evaluated.
     #[error(transparent)]
     Exact(#[from] ExactError),
+}
+
+impl From<BindingError> for FreeError {
+    fn from(e: BindingError) -> Self {
+        match e {
+            BindingError::UnknownParameter { name, known } => {
+                FreeError::UnknownParameter { name, known }
+            }
+            BindingError::UnsetParameter { name, known } => {
+                FreeError::UnsetParameter { name, known }
+            }
+            BindingError::NonFinite { name, value } => {
+                FreeError::NonFiniteParameter { name, value }
+            }
+            BindingError::RunTimeInput { name } => FreeError::RunTimeInput { name },
+        }
+    }
 }

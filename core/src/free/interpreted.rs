@@ -1,17 +1,15 @@
 //! A free-body derivation evaluated at run time through the code generator's interpreter:
 //! the path for scenes built at run time, and a reference for the generated code.
 
-use std::cell::RefCell;
-
 use nalgebra::Vector3;
 
 use super::dynamics::Wrench;
 use super::error::FreeError;
 use super::scene::FreeDerivation;
 use super::state::STATE_LEN;
-use crate::codegen::Program;
+use crate::codegen::{Bindings, Program};
 use crate::ode::System;
-use crate::sym::{Arena, SymbolId, SymbolKind};
+use crate::sym::{Arena, SymbolId};
 
 /// A free body's equations, lowered once and interpreted.
 ///
@@ -48,10 +46,8 @@ pub struct FreeModel {
     power: Program,
     momenta: Program,
     state: [SymbolId; STATE_LEN],
-    /// The parameters the programs read, by name.
-    parameters: Vec<(String, SymbolId)>,
-    env: RefCell<Vec<f64>>,
-    scratch: RefCell<Vec<f64>>,
+    /// The parameters by name and the environment the programs run in.
+    bindings: Bindings,
 }
 
 impl FreeModel {
@@ -88,63 +84,23 @@ impl FreeModel {
             Program::lower(arena, &[d.power]),
             Program::lower(arena, &momenta),
         ];
-        let mut read: Vec<(String, SymbolId)> = Vec::new();
-        for s in programs.iter().flat_map(Program::inputs) {
-            let symbol = arena.symbol(s);
-            match symbol.kind {
-                SymbolKind::Parameter if !read.iter().any(|&(_, r)| r == s) => {
-                    read.push((symbol.name.clone(), s));
-                }
-                SymbolKind::Input if !state.contains(&s) => {
-                    return Err(FreeError::RunTimeInput {
-                        name: symbol.name.clone(),
-                    });
-                }
-                _ => {}
-            }
-        }
-        read.sort();
+        let bindings =
+            Bindings::new(arena, &programs, &state, parameters).map_err(FreeError::from)?;
         let [rhs, wrench, energy, power, momenta] = programs;
-        let mut model = FreeModel {
+        Ok(FreeModel {
             rhs,
             wrench,
             energy,
             power,
             momenta,
             state,
-            parameters: read,
-            env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
-            scratch: RefCell::new(Vec::new()),
-        };
-        for &(name, value) in parameters {
-            model.set(name, value)?;
-        }
-        let env = model.env.get_mut();
-        if let Some((name, _)) = model
-            .parameters
-            .iter()
-            .find(|(_, s)| env[s.index()].is_nan())
-        {
-            return Err(FreeError::UnsetParameter {
-                name: name.clone(),
-                known: model.known(),
-            });
-        }
-        Ok(model)
+            bindings,
+        })
     }
 
     /// The names of the parameters the derivation reads, in alphabetical order.
     pub fn parameters(&self) -> impl ExactSizeIterator<Item = &str> + '_ {
-        self.parameters.iter().map(|(n, _)| n.as_str())
-    }
-
-    fn known(&self) -> String {
-        let known: Vec<&str> = self.parameters().collect();
-        if known.is_empty() {
-            "none".to_owned()
-        } else {
-            known.join(", ")
-        }
+        self.bindings.parameters()
     }
 
     /// Sets the parameter `name`.
@@ -153,28 +109,13 @@ impl FreeModel {
     /// [`FreeError::UnknownParameter`] for a name the derivation does not read,
     /// [`FreeError::NonFiniteParameter`] for NaN or ±∞.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, FreeError> {
-        let Some(&(_, s)) = self.parameters.iter().find(|(n, _)| n == name) else {
-            return Err(FreeError::UnknownParameter {
-                name: name.to_owned(),
-                known: self.known(),
-            });
-        };
-        if !value.is_finite() {
-            return Err(FreeError::NonFiniteParameter {
-                name: name.to_owned(),
-                value,
-            });
-        }
-        self.env.get_mut()[s.index()] = value;
+        self.bindings.set(name, value)?;
         Ok(self)
     }
 
     fn run(&self, p: &Program, y: &[f64; STATE_LEN], out: &mut [f64]) {
-        let mut env = self.env.borrow_mut();
-        for (s, v) in self.state.iter().zip(y) {
-            env[s.index()] = *v;
-        }
-        p.eval_into(&env, &mut self.scratch.borrow_mut(), out);
+        self.bindings
+            .eval(p, self.state.iter().copied().zip(*y), out);
     }
 
     /// The total force (space axes) and torque about the centre of mass (principal axes).

@@ -4,6 +4,7 @@
 use thiserror::Error;
 
 use crate::body::BodyError;
+use crate::codegen::BindingError;
 use crate::ode::OdeError;
 use crate::rigid::AngleSequence;
 
@@ -175,4 +176,19 @@ pub enum ModelError {
         /// The input symbol's name.
         name: String,
     },
+}
+
+impl From<BindingError> for ModelError {
+    fn from(e: BindingError) -> Self {
+        match e {
+            BindingError::UnknownParameter { name, known } => {
+                ModelError::UnknownParameter { name, known }
+            }
+            BindingError::UnsetParameter { name, known } => {
+                ModelError::UnsetParameter { name, known }
+            }
+            BindingError::NonFinite { name, value } => ModelError::NonFinite { name, value },
+            BindingError::RunTimeInput { name } => ModelError::RunTimeInput { name },
+        }
+    }
 }

@@ -2,8 +2,6 @@
 //! any stepper of [`crate::ode`]. The derive macro emits the same programs as compiled Rust;
 //! this is the path for scenes built at run time and the reference the tests use.
 
-use std::cell::RefCell;
-
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
@@ -11,10 +9,10 @@ use super::error::{ModelError, TopError};
 use super::rates::check_chart;
 use super::scene::TopDerivation;
 use super::top_trait::check_state;
-use crate::codegen::Program;
+use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::rigid::AngleSequence;
-use crate::sym::{Arena, SymbolId, SymbolKind};
+use crate::sym::{Arena, SymbolId};
 
 /// A top's angle-form equations, lowered once and interpreted.
 ///
@@ -69,10 +67,8 @@ pub struct TopModel {
     q: [SymbolId; 3],
     rates: [SymbolId; 3],
     time: Option<SymbolId>,
-    /// The parameters the programs read, by name.
-    parameters: Vec<(String, SymbolId)>,
-    env: RefCell<Vec<f64>>,
-    scratch: RefCell<Vec<f64>>,
+    /// The parameters by name and the environment the programs run in.
+    bindings: Bindings,
 }
 
 impl TopModel {
@@ -107,24 +103,11 @@ impl TopModel {
             Program::lower(arena, top.rotation.as_flattened()),
             Program::lower(arena, top.rate_matrix.as_flattened()),
         ];
-        let mut read: Vec<(String, SymbolId)> = Vec::new();
-        for s in programs.iter().flat_map(Program::inputs) {
-            let symbol = arena.symbol(s);
-            match symbol.kind {
-                SymbolKind::Parameter if !read.iter().any(|&(_, r)| r == s) => {
-                    read.push((symbol.name.clone(), s));
-                }
-                SymbolKind::Input => {
-                    return Err(ModelError::RunTimeInput {
-                        name: symbol.name.clone(),
-                    });
-                }
-                _ => {}
-            }
-        }
-        read.sort();
+        let supplied = [q[0], q[1], q[2], rates[0], rates[1], rates[2]];
+        let bindings =
+            Bindings::new(arena, &programs, &supplied, parameters).map_err(ModelError::from)?;
         let [accel, energy, omega, momenta, rotation, rate_matrix] = programs;
-        let mut model = TopModel {
+        Ok(TopModel {
             accel,
             energy,
             omega,
@@ -135,39 +118,13 @@ impl TopModel {
             q,
             rates,
             time: arena.time_symbol(),
-            parameters: read,
-            env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
-            scratch: RefCell::new(Vec::new()),
-        };
-        for &(name, value) in parameters {
-            model.set(name, value)?;
-        }
-        let env = model.env.get_mut();
-        if let Some((name, _)) = model
-            .parameters
-            .iter()
-            .find(|(_, s)| env[s.index()].is_nan())
-        {
-            return Err(ModelError::UnsetParameter {
-                name: name.clone(),
-                known: model.known(),
-            });
-        }
-        Ok(model)
+            bindings,
+        })
     }
 
     /// The names of the parameters the derivation reads, in alphabetical order.
     pub fn parameters(&self) -> impl ExactSizeIterator<Item = &str> + '_ {
-        self.parameters.iter().map(|(n, _)| n.as_str())
-    }
-
-    fn known(&self) -> String {
-        let known: Vec<&str> = self.parameters().collect();
-        if known.is_empty() {
-            "none".to_owned()
-        } else {
-            known.join(", ")
-        }
+        self.bindings.parameters()
     }
 
     /// Sets the parameter `name`.
@@ -176,33 +133,15 @@ impl TopModel {
     /// [`ModelError::UnknownParameter`] for a name the derivation does not read,
     /// [`ModelError::NonFinite`] for NaN or ±∞.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, ModelError> {
-        let Some(&(_, s)) = self.parameters.iter().find(|(n, _)| n == name) else {
-            return Err(ModelError::UnknownParameter {
-                name: name.to_owned(),
-                known: self.known(),
-            });
-        };
-        if !value.is_finite() {
-            return Err(ModelError::NonFinite {
-                name: name.to_owned(),
-                value,
-            });
-        }
-        self.env.get_mut()[s.index()] = value;
+        self.bindings.set(name, value)?;
         Ok(self)
     }
 
     fn run<const K: usize>(&self, p: &Program, t: f64, state: &[f64; 6]) -> [f64; K] {
-        let mut env = self.env.borrow_mut();
-        for k in 0..3 {
-            env[self.q[k].index()] = state[k];
-            env[self.rates[k].index()] = state[3 + k];
-        }
-        if let Some(ts) = self.time {
-            env[ts.index()] = t;
-        }
+        let coordinates = self.q.iter().chain(&self.rates).copied().zip(*state);
+        let time = self.time.map(|s| (s, t));
         let mut out = [0.0; K];
-        p.eval_into(&env, &mut self.scratch.borrow_mut(), &mut out);
+        self.bindings.eval(p, coordinates.chain(time), &mut out);
         out
     }
 

@@ -12,6 +12,7 @@ use syn::{Ident, LitStr};
 
 use super::check::FreeSettings;
 use crate::ctxt::Ctxt;
+use crate::keys;
 use crate::private::Private;
 use crate::rigid::check::CheckedBody;
 use crate::symbols::{FieldParameters, Lowering, SymbolTokens};
@@ -192,7 +193,7 @@ pub fn expand(
         Some(name) => quote!(::core::option::Option::Some(#name)),
         None => quote!(::core::option::Option::None),
     };
-    let check = check_parameters(parameters);
+    let check = check_parameters(parameters, &low, arena, settings);
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -276,10 +277,36 @@ fn principal(low: &Lowering, arena: &mut Arena, frame: &CmFrame) -> TokenStream 
     }
 }
 
-/// The body of `check_parameters`: every field the body and its forces read is finite, the
-/// description keeps its rules, and the mass and principal moments are positive.
-fn check_parameters(parameters: &FieldParameters) -> TokenStream {
+/// The body of `check_parameters`: every field the body and its forces read is finite, drag
+/// and damping are not negative (the rule literals meet at compile time), the description
+/// keeps its rules, and the mass and principal moments are positive.
+fn check_parameters(
+    parameters: &FieldParameters,
+    low: &Lowering,
+    arena: &Arena,
+    settings: &FreeSettings,
+) -> TokenStream {
     let p = Private;
+    let coefficients: Vec<(&str, ExprId)> = [
+        (keys::DRAG, settings.drag),
+        (keys::DAMPING, settings.damping),
+    ]
+    .into_iter()
+    .filter_map(|(name, c)| c.map(|c| (name, c)))
+    .collect();
+    let values: Vec<ExprId> = coefficients.iter().map(|&(_, c)| c).collect();
+    let Emitted { lets, outputs } = low.lower(arena, &values);
+    let signs = coefficients.iter().zip(outputs).map(|(&(name, _), value)| {
+        quote! {
+            let __c: f64 = #value;
+            if __c < 0.0 {
+                return ::core::result::Result::Err(#p::FreeError::NegativeCoefficient {
+                    name: #name,
+                    value: __c,
+                });
+            }
+        }
+    });
     let fields = parameters.fields().map(|f| {
         let name = LitStr::new(&f.to_string(), f.span());
         quote! {
@@ -293,6 +320,8 @@ fn check_parameters(parameters: &FieldParameters) -> TokenStream {
     });
     quote!({
         #(#fields)*
+        #lets
+        #(#signs)*
         #p::RigidBody::validate(self)?;
         let __mass = #p::RigidBody::mass(self);
         let __m = #p::FreeDynamics::principal_cm(self).moments;
