@@ -12,9 +12,11 @@ pub mod exact;
 pub mod free;
 pub mod lagrange;
 pub mod linalg;
+pub mod mechanism;
 pub mod ode;
 pub mod rigid;
 pub mod sym;
+pub mod taylor;
 pub mod top;
 
 /// The linear-algebra crate precess's types come from, re-exported so users and generated
