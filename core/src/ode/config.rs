@@ -131,6 +131,11 @@ pub struct FixedStepConfig {
     /// minutes. Unlike the adaptive driver's budget this is per call, since the count is
     /// known in advance.
     pub max_steps: u64,
+    /// Compensated summation of the state update (default `true`): RK4 carries the low-order
+    /// bits that y + h·Σbᵢkᵢ rounds away beside the state and adds them back at the next
+    /// step (TwoSum), so round-off grows like √n·h·ε instead of √n·ε and the error keeps
+    /// falling with h. `false` is the plain update, kept to measure the difference.
+    pub compensated: bool,
 }
 
 impl Default for FixedStepConfig {
@@ -138,6 +143,7 @@ impl Default for FixedStepConfig {
         Self {
             h: 1e-2,
             max_steps: Self::MAX_STEPS,
+            compensated: true,
         }
     }
 }
@@ -153,6 +159,7 @@ impl FixedStepConfig {
     /// let c = precess_core::ode::FixedStepConfig::with_step(1e-3);
     /// approx::assert_relative_eq!(c.h, 1e-3);
     /// assert_eq!(c.max_steps, 100_000_000);
+    /// assert!(c.compensated);
     /// ```
     pub fn with_step(h: f64) -> Self {
         Self {

@@ -228,6 +228,15 @@ impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
     }
 }
 
+/// Knuth's TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly, whatever the
+/// magnitudes; the compensated updates keep `e` beside the state and add it back next step.
+#[inline]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
 /// Checks that `t` is finite and inside the last step `[t_prev, t_now]`.
 ///
 /// # Errors

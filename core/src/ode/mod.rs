@@ -37,6 +37,7 @@ pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span};
 pub use events::{Direction, Event, EventHit};
+pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
 pub use pairs::{
     ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,

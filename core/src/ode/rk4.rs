@@ -2,7 +2,7 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::fixed::{StepGrid, check_inside};
+use super::fixed::{StepGrid, check_inside, two_sum};
 use super::stepper::Stepper;
 use super::system::{Stats, System, all_finite};
 
@@ -11,7 +11,8 @@ use super::system::{Stats, System, all_finite};
 const CHECK_BLOCK: u64 = 8;
 
 /// Classical RK4: y₁ = y₀ + h (k₁ + 2k₂ + 2k₃ + k₄)/6, four evaluations per step, global
-/// error O(h⁴).
+/// error O(h⁴); the update is summed with compensation unless
+/// [`FixedStepConfig::compensated`] is off, so round-off does not grow as h shrinks.
 ///
 /// ```
 /// use precess_core::ode::{FixedStepConfig, FnSystem, Rk4};
@@ -27,11 +28,14 @@ pub struct Rk4<S, const N: usize> {
     cfg: FixedStepConfig,
     t: f64,
     y: [f64; N],
+    /// The low-order bits of y that compensated summation carries (0 when plain).
+    y_lo: [f64; N],
     stats: Stats,
     /// The last step of [`Stepper::step`] (start, state, stage-time cap), for the partial
     /// steps of [`Stepper::state_at`]; after [`Rk4::advance_to`] it is the current state.
     t_prev: f64,
     y_prev: [f64; N],
+    y_prev_lo: [f64; N],
     t_hi: f64,
     grid: Option<StepGrid>,
 }
@@ -51,9 +55,11 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             cfg,
             t: t0,
             y: y0,
+            y_lo: [0.0; N],
             stats: Stats::default(),
             t_prev: t0,
             y_prev: y0,
+            y_prev_lo: [0.0; N],
             t_hi: f64::INFINITY,
             grid: None,
         })
@@ -74,12 +80,11 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         self.stats
     }
 
-    /// One step of size `h` from `(t, y)` (no checks; the caller guarantees h > 0), returned
-    /// rather than stored so that a non-finite result can leave the state as it was; stage
-    /// times are capped at `t_hi` so a step ending on a stop samples a switch from its own
-    /// side.
+    /// The increment h (k₁ + 2k₂ + 2k₃ + k₄)/6 of one step of size `h` from `(t, y)` (no
+    /// checks; the caller guarantees h > 0); stage times are capped at `t_hi` so a step ending
+    /// on a stop samples a switch from its own side.
     #[inline]
-    fn step_from(sys: &S, t: f64, y: &[f64; N], h: f64, t_hi: f64) -> [f64; N] {
+    fn increment(sys: &S, t: f64, y: &[f64; N], h: f64, t_hi: f64) -> [f64; N] {
         let (mut k1, mut k2, mut k3, mut k4, mut ys) =
             ([0.0; N], [0.0; N], [0.0; N], [0.0; N], [0.0; N]);
         sys.rhs(t, y, &mut k1);
@@ -95,11 +100,38 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
             ys[i] = y[i] + h * k3[i];
         }
         sys.rhs((t + h).min(t_hi), &ys, &mut k4);
-        let mut y_new = [0.0; N];
+        let mut dy = [0.0; N];
         for i in 0..N {
-            y_new[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+            dy[i] = h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         }
-        y_new
+        dy
+    }
+
+    /// One step from `(t, y)` with the low-order bits `lo` of y, returned as the new
+    /// `(y, lo)` rather than stored so that a non-finite result can leave the state as it
+    /// was. Compensated, y + lo + Δ is summed by TwoSum and its rounding error kept in the new
+    /// lo (the stages see y alone: their error is multiplied by h); plain, lo stays 0.
+    #[inline]
+    fn step_from(
+        &self,
+        t: f64,
+        y: &[f64; N],
+        lo: &[f64; N],
+        h: f64,
+        t_hi: f64,
+    ) -> ([f64; N], [f64; N]) {
+        let dy = Self::increment(&self.sys, t, y, h, t_hi);
+        let (mut y_new, mut lo_new) = ([0.0; N], [0.0; N]);
+        if self.cfg.compensated {
+            for i in 0..N {
+                (y_new[i], lo_new[i]) = two_sum(y[i], dy[i] + lo[i]);
+            }
+        } else {
+            for i in 0..N {
+                y_new[i] = y[i] + dy[i];
+            }
+        }
+        (y_new, lo_new)
     }
 
     /// Advances to exactly `t_stop` in equal steps no longer than the configured `h`.
@@ -117,38 +149,40 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         let t0 = self.t;
         let t_hi = t_stop.next_down();
         // The loop runs on locals; the integrator is updated once at the end or on error.
-        let (mut t, mut y) = (t0, self.y);
+        let (mut t, mut y, mut lo) = (t0, self.y, self.y_lo);
         let mut done = 0;
         while done < n {
             // The state is checked after each block of a few steps: a non-finite component
             // stays non-finite (∞ + finite = ∞, anything with NaN is NaN), so a blow-up is
             // caught within the block at a fraction of a per-step check's cost.
             let len = CHECK_BLOCK.min(n - done);
-            let (t_start, y_start) = (t, y);
+            let (t_start, y_start, lo_start) = (t, y, lo);
             for i in done + 1..=done + len {
-                y = Self::step_from(&self.sys, t, &y, h, t_hi);
+                (y, lo) = self.step_from(t, &y, &lo, h, t_hi);
                 t = t0 + i as f64 * h;
             }
             if !all_finite(&y) {
                 // Replay the block (the same arithmetic) to stop at its first bad step.
-                (t, y) = (t_start, y_start);
+                (t, y, lo) = (t_start, y_start, lo_start);
                 for i in done + 1..=done + len {
-                    let y_new = Self::step_from(&self.sys, t, &y, h, t_hi);
+                    let (y_new, lo_new) = self.step_from(t, &y, &lo, h, t_hi);
                     if !all_finite(&y_new) {
                         self.t = t;
                         self.y = y;
+                        self.y_lo = lo;
                         self.stats.steps += i - 1;
                         self.stats.rhs_evals += 4 * (len + i);
                         self.forget_last_step();
                         return Err(OdeError::NonFiniteState { t });
                     }
-                    y = y_new;
+                    (y, lo) = (y_new, lo_new);
                     t = t0 + i as f64 * h;
                 }
             }
             done += len;
         }
         self.y = y;
+        self.y_lo = lo;
         self.t = t_stop;
         self.stats.steps += n;
         self.stats.rhs_evals += 4 * n;
@@ -160,6 +194,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     fn forget_last_step(&mut self) {
         self.t_prev = self.t;
         self.y_prev = self.y;
+        self.y_prev_lo = self.y_lo;
         self.grid = None;
     }
 }
@@ -187,14 +222,14 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
             return Ok(());
         };
         let t_hi = t_limit.next_down();
-        let y_new = Self::step_from(&self.sys, self.t, &self.y, h, t_hi);
+        let (y_new, lo_new) = self.step_from(self.t, &self.y, &self.y_lo, h, t_hi);
         self.stats.rhs_evals += 4;
         if !all_finite(&y_new) {
             return Err(OdeError::NonFiniteState { t: self.t });
         }
         StepGrid::advance(&mut self.grid);
-        (self.t_prev, self.y_prev, self.t_hi) = (self.t, self.y, t_hi);
-        (self.t, self.y) = (t_new, y_new);
+        (self.t_prev, self.y_prev, self.y_prev_lo, self.t_hi) = (self.t, self.y, self.y_lo, t_hi);
+        (self.t, self.y, self.y_lo) = (t_new, y_new, lo_new);
         self.stats.steps += 1;
         Ok(())
     }
@@ -211,10 +246,10 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         if t == self.t_prev {
             return Ok(self.y_prev);
         }
-        let y = Self::step_from(
-            &self.sys,
+        let (y, _) = self.step_from(
             self.t_prev,
             &self.y_prev,
+            &self.y_prev_lo,
             t - self.t_prev,
             self.t_hi,
         );
@@ -229,7 +264,7 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
     fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
         check_span(t, t)?;
         check_finite(&state)?;
-        (self.t, self.y) = (t, state);
+        (self.t, self.y, self.y_lo) = (t, state, [0.0; N]);
         self.forget_last_step();
         Ok(())
     }
