@@ -64,7 +64,10 @@ fn rk4_at_a_million_steps_is_at_the_rounding_level() {
     let compensated = rk4_error(2e-4, true);
     assert!(compensated < 2e-13, "compensated RK4 error {compensated:e}");
     let plain = rk4_error(2e-4, false);
-    assert!(plain > 2e-13, "plain RK4 error {plain:e} (the bound guards nothing)");
+    assert!(
+        plain > 2e-13,
+        "plain RK4 error {plain:e} (the bound guards nothing)"
+    );
 }
 
 #[test]
@@ -97,7 +100,10 @@ fn order_four_splitting_reaches_below_1e_12() {
     // h = 1e-3 (2·10⁵ steps): measured 6.6e-13 (m) and 4.7e-13 (q) compensated, 2.0e-9 and
     // 1.4e-9 plain.
     let (m, q) = split_errors(SplittingOrder::Four, 1e-3, true);
-    assert!(m < 2e-12 && q < 2e-12, "order 4 compensated: m {m:e}, q {q:e}");
+    assert!(
+        m < 2e-12 && q < 2e-12,
+        "order 4 compensated: m {m:e}, q {q:e}"
+    );
     let (m, _) = split_errors(SplittingOrder::Four, 1e-3, false);
     assert!(m > 2e-12, "order 4 plain: {m:e}");
 }

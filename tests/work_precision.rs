@@ -52,7 +52,9 @@ fn quick_rungs_measure_small_errors_and_write_the_report() {
     work_precision::report::write(&dir, &rows).unwrap();
     let text = std::fs::read_to_string(&doc).unwrap();
     assert!(text.starts_with("# Performance\n\nkept above\n"));
-    assert!(text.ends_with("<!-- work-precision:end -->\n\n## Mechanisms at scale\n\nkept below\n"));
+    assert!(
+        text.ends_with("<!-- work-precision:end -->\n\n## Mechanisms at scale\n\nkept below\n")
+    );
     assert!(!text.contains("\nold\n"));
     assert!(text.contains("### (a) Torque-free body"));
     for p in Problem::ALL {

@@ -181,7 +181,12 @@ fn forms_run<P: EmbeddedPair + 'static>(eulerian: bool, heavy: TopCase) -> Probl
             if eulerian {
                 let y0 = EulerianTop::<SpinningTop>::state(&heavy.q0(), &heavy.omega0());
                 let (y, e, s) = adaptive::<P, _, 7>(EulerianTop(&top), y0, heavy.t_end, tol)?;
-                Ok(top_outcome(&heavy, (attitude7(&y) * Vector3::z()).z, Some(e), s))
+                Ok(top_outcome(
+                    &heavy,
+                    (attitude7(&y) * Vector3::z()).z,
+                    Some(e),
+                    s,
+                ))
             } else {
                 let chart = TopChart::declared(&top);
                 let (y, e, s) = adaptive::<P, _, 6>(&chart, heavy.angles0(), heavy.t_end, tol)?;
@@ -238,7 +243,8 @@ fn free_splitting_runs(order: SplittingOrder, compensated: bool) -> Vec<ProblemR
         SplittingOrder::Four => (vec![0.1, 0.03, 0.01, 3e-3, 1e-3], 0.1),
         SplittingOrder::Six => (vec![0.1, 0.03, 0.01, 3e-3, 1e-3], 0.1),
     };
-    let split = move || FreeBodySplitting::new(SEP_I, order).map(|s| s.with_compensation(compensated));
+    let split =
+        move || FreeBodySplitting::new(SEP_I, order).map(|s| s.with_compensation(compensated));
     let start = || BodyMomentum {
         q: UnitQuaternion::identity(),
         m: Vector3::from(SEP_M0),
@@ -275,7 +281,11 @@ fn long_run(
         ladder: vec![1e-2],
         quick: 1e-2,
         run: Box::new(move |h| {
-            let n = if super::quick_mode() { 10_000 } else { 1_000_000 };
+            let n = if super::quick_mode() {
+                10_000
+            } else {
+                1_000_000
+            };
             let m = final_m(h, n)?;
             let (g0, e0) = invariants(&SEP_M0);
             let (g, e) = invariants(&m);
@@ -358,7 +368,8 @@ fn rkmk4_runs(heavy: TopCase) -> Vec<ProblemRun> {
                     q: UnitQuaternion::identity(),
                     omega,
                 };
-                let mut m = Rkmk4::new(FreeAttitude(SEP_I), 0.0, s0, FixedStepConfig::with_step(h))?;
+                let mut m =
+                    Rkmk4::new(FreeAttitude(SEP_I), 0.0, s0, FixedStepConfig::with_step(h))?;
                 m.advance_to(SEP_T)?;
                 let w = m.state().omega;
                 let y = [w.x * SEP_I[0], w.y * SEP_I[1], w.z * SEP_I[2]];
@@ -430,7 +441,8 @@ fn exact_runs(heavy: TopCase) -> Vec<ProblemRun> {
             Problem::HeavyTop,
             Box::new(move |_| {
                 let theory = HeavyTopTheory::new(heavy.i1, heavy.i3, heavy.mgl)?;
-                let motion = theory.motion_from_angles(&[0.0, heavy.theta0, 0.0], &[0.0, 0.0, heavy.omega3])?;
+                let motion = theory
+                    .motion_from_angles(&[0.0, heavy.theta0, 0.0], &[0.0, 0.0, heavy.omega3])?;
                 std::hint::black_box(motion.cos_theta_at(std::hint::black_box(heavy.t_end))?);
                 Ok(Outcome {
                     error: f64::NAN,
@@ -456,9 +468,7 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
     dop853.push(forms_run::<Dop853Pair>(false, heavy));
     let mut vern9 = pair_runs::<Vern9Pair>(&tols, 1e-8, heavy, fast);
     vern9.push(forms_run::<Vern9Pair>(false, heavy));
-    let eulerian = vec![
-        forms_run::<Dop853Pair>(true, heavy),
-    ];
+    let eulerian = vec![forms_run::<Dop853Pair>(true, heavy)];
     let eulerian9 = vec![forms_run::<Vern9Pair>(true, heavy)];
     let exact_flow = ExactFreeFlow::new([heavy.i1, heavy.i1, heavy.i3])?;
     let exact_flow_fast = ExactFreeFlow::new([fast.i1, fast.i1, fast.i3])?;
@@ -481,14 +491,49 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
         m("DOP853, Eulerian form", Setting::Tolerance, false, eulerian),
         m("Vern9, Eulerian form", Setting::Tolerance, false, eulerian9),
         m("RK4", Setting::Step, false, rk4_runs(true, heavy)),
-        m("RK4, plain sums", Setting::Step, true, rk4_runs(false, heavy)),
+        m(
+            "RK4, plain sums",
+            Setting::Step,
+            true,
+            rk4_runs(false, heavy),
+        ),
         m("RKMK4", Setting::Step, false, rkmk4_runs(heavy)),
-        m("split2", Setting::Step, false, free_splitting_runs(SplittingOrder::Two, true)),
-        m("split2, plain sums", Setting::Step, true, free_splitting_runs(SplittingOrder::Two, false)),
-        m("split4", Setting::Step, false, free_splitting_runs(SplittingOrder::Four, true)),
-        m("split4, plain sums", Setting::Step, true, free_splitting_runs(SplittingOrder::Four, false)),
-        m("split6", Setting::Step, false, free_splitting_runs(SplittingOrder::Six, true)),
-        m("split6, plain sums", Setting::Step, true, free_splitting_runs(SplittingOrder::Six, false)),
+        m(
+            "split2",
+            Setting::Step,
+            false,
+            free_splitting_runs(SplittingOrder::Two, true),
+        ),
+        m(
+            "split2, plain sums",
+            Setting::Step,
+            true,
+            free_splitting_runs(SplittingOrder::Two, false),
+        ),
+        m(
+            "split4",
+            Setting::Step,
+            false,
+            free_splitting_runs(SplittingOrder::Four, true),
+        ),
+        m(
+            "split4, plain sums",
+            Setting::Step,
+            true,
+            free_splitting_runs(SplittingOrder::Four, false),
+        ),
+        m(
+            "split6",
+            Setting::Step,
+            false,
+            free_splitting_runs(SplittingOrder::Six, true),
+        ),
+        m(
+            "split6, plain sums",
+            Setting::Step,
+            true,
+            free_splitting_runs(SplittingOrder::Six, false),
+        ),
         m(
             "exact free flow + kicks",
             Setting::Step,
@@ -502,8 +547,18 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
             "axis splitting + kicks",
             Setting::Step,
             false,
-            vec![top_splitting_run(Problem::HeavyTop, heavy, axis_flow, &per_heavy)],
+            vec![top_splitting_run(
+                Problem::HeavyTop,
+                heavy,
+                axis_flow,
+                &per_heavy,
+            )],
         ),
-        m("exact (closed form)", Setting::None, false, exact_runs(heavy)),
+        m(
+            "exact (closed form)",
+            Setting::None,
+            false,
+            exact_runs(heavy),
+        ),
     ])
 }

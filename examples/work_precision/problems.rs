@@ -52,7 +52,9 @@ impl Problem {
     /// The heading in the report.
     pub fn title(self) -> &'static str {
         match self {
-            Problem::Separatrix => "(a) Torque-free body I = (3, 5, 9), m(0) = (0, 2, 0.01), T = 200",
+            Problem::Separatrix => {
+                "(a) Torque-free body I = (3, 5, 9), m(0) = (0, 2, 0.01), T = 200"
+            }
             Problem::B5 => "(b) DETEST B5 to t = 20",
             Problem::HeavyTop => "(c) Heavy top (examples/heavy_top.rs), 10¼ nutation periods",
             Problem::FastTop => "(d) Fast top, ω3 = 1000 rad/s, 10¼ nutation periods",

@@ -230,13 +230,19 @@ pub fn write(root: &Path, rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
         if mine.is_empty() {
             continue;
         }
-        let theirs: Vec<&PeerRow> = peers.iter().filter(|p| p.problem == problem.key()).collect();
+        let theirs: Vec<&PeerRow> = peers
+            .iter()
+            .filter(|p| p.problem == problem.key())
+            .collect();
         let svg = format!("img/perf/{}.svg", problem.key());
         figure(&docs.join(&svg), problem, &mine, &theirs)?;
         writeln!(md, "\n### {}\n", problem.title())?;
         writeln!(md, "Error: {}.\n", problem.error_meaning())?;
         writeln!(md, "![work-precision, {}]({svg})\n", problem.key())?;
-        writeln!(md, "| method | setting | error | evaluations | steps | median time |")?;
+        writeln!(
+            md,
+            "| method | setting | error | evaluations | steps | median time |"
+        )?;
         writeln!(md, "|---|---|---|---|---|---|")?;
         for r in &mine {
             writeln!(
@@ -251,8 +257,14 @@ pub fn write(root: &Path, rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
             )?;
         }
         if !theirs.is_empty() {
-            writeln!(md, "\nPeers (`scripts/peers.py`; times include Python call overhead):\n")?;
-            writeln!(md, "| peer | method | setting | error | evaluations | median time |")?;
+            writeln!(
+                md,
+                "\nPeers (`scripts/peers.py`; times include Python call overhead):\n"
+            )?;
+            writeln!(
+                md,
+                "| peer | method | setting | error | evaluations | median time |"
+            )?;
             writeln!(md, "|---|---|---|---|---|---|")?;
             for p in &theirs {
                 writeln!(
@@ -282,7 +294,11 @@ pub fn write(root: &Path, rows: &[Row]) -> Result<PathBuf, Box<dyn Error>> {
         return Err(format!("{} lacks the markers {BEGIN} … {END}", path.display()).into());
     };
     if e < b {
-        return Err(format!("{}: the end marker precedes the begin marker", path.display()).into());
+        return Err(format!(
+            "{}: the end marker precedes the begin marker",
+            path.display()
+        )
+        .into());
     }
     let new = format!("{}{BEGIN}\n{md}\n{}", &old[..b], &old[e..]);
     std::fs::write(&path, new)?;
@@ -306,7 +322,11 @@ fn section_intro(md: &mut String, rows: &[Row], peers: &[PeerRow]) -> Result<(),
          floor. The reference of (a) at T = 200 is the exact motion with its phase λt + u₀, \
          the moduli and D₁, D₂, D₃ in double-double (`docs/exact.md`); the tops' reference is \
          the elliptic closed form of `HeavyTopMotion` (cos θ(t)).",
-        if quick { " in `--quick` mode (one rung per problem, one repeat)" } else { "" },
+        if quick {
+            " in `--quick` mode (one rung per problem, one repeat)"
+        } else {
+            ""
+        },
         if quick { 1 } else { 5 }
     )?;
     let mut present: Vec<String> = peers.iter().map(|p| p.peer.clone()).collect();
@@ -320,8 +340,16 @@ fn section_intro(md: &mut String, rows: &[Row], peers: &[PeerRow]) -> Result<(),
         md,
         "\nPeers (`python3 scripts/peers.py`, read from `docs/perf/peers.csv`): present {}; \
          absent {}. Their times include Python call overhead.",
-        if present.is_empty() { "none".into() } else { present.join(", ") },
-        if absent.is_empty() { "none".into() } else { absent.join(", ") }
+        if present.is_empty() {
+            "none".into()
+        } else {
+            present.join(", ")
+        },
+        if absent.is_empty() {
+            "none".into()
+        } else {
+            absent.join(", ")
+        }
     )?;
     writeln!(md, "\nRungs measured: {}.", rows.len())?;
     Ok(())
@@ -329,13 +357,22 @@ fn section_intro(md: &mut String, rows: &[Row], peers: &[PeerRow]) -> Result<(),
 
 /// The before/after of compensated summation on problem (a).
 fn floor_table(md: &mut String, rows: &[Row]) -> Result<(), Box<dyn Error>> {
-    writeln!(md, "\n### The numerical floor: plain against compensated sums on (a) and (e)\n")?;
-    writeln!(md, "| method | h | steps | error, plain | error, compensated | time, plain | time, compensated |")?;
+    writeln!(
+        md,
+        "\n### The numerical floor: plain against compensated sums on (a) and (e)\n"
+    )?;
+    writeln!(
+        md,
+        "| method | h | steps | error, plain | error, compensated | time, plain | time, compensated |"
+    )?;
     writeln!(md, "|---|---|---|---|---|---|---|")?;
     for before in rows.iter().filter(|r| r.before) {
         let base = before.method.trim_end_matches(", plain sums");
         let Some(after) = rows.iter().find(|r| {
-            !r.before && r.method == base && r.problem == before.problem && r.setting == before.setting
+            !r.before
+                && r.method == base
+                && r.problem == before.problem
+                && r.setting == before.setting
         }) else {
             continue;
         };
@@ -387,8 +424,15 @@ const PALETTE: [RGBColor; 10] = [
 
 /// The log-log figure of error against median time: a line per method, hollow markers
 /// for peers.
-fn figure(path: &Path, problem: Problem, mine: &[&Row], theirs: &[&PeerRow]) -> Result<(), Box<dyn Error>> {
-    let mut series: Vec<(String, Vec<(f64, f64)>, bool)> = Vec::new();
+fn figure(
+    path: &Path,
+    problem: Problem,
+    mine: &[&Row],
+    theirs: &[&PeerRow],
+) -> Result<(), Box<dyn Error>> {
+    // (legend, points, a peer's).
+    type Curve = (String, Vec<(f64, f64)>, bool);
+    let mut series: Vec<Curve> = Vec::new();
     for r in mine {
         let p = (r.seconds, r.outcome.error);
         if !(p.0 > 0.0 && p.1 > 0.0 && p.1.is_finite()) {
@@ -442,13 +486,20 @@ fn figure(path: &Path, problem: Problem, mine: &[&Row], theirs: &[&PeerRow]) -> 
         sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
         if *peer {
             chart
-                .draw_series(sorted.iter().map(|&p| TriangleMarker::new(p, 6, color.stroke_width(2))))?
+                .draw_series(
+                    sorted
+                        .iter()
+                        .map(|&p| TriangleMarker::new(p, 6, color.stroke_width(2))),
+                )?
                 .label(label.as_str())
                 .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 6, color.stroke_width(2)));
         } else {
             chart.draw_series(sorted.iter().map(|&p| Circle::new(p, 3, color.filled())))?;
             chart
-                .draw_series(LineSeries::new(sorted.iter().copied(), color.stroke_width(2)))?
+                .draw_series(LineSeries::new(
+                    sorted.iter().copied(),
+                    color.stroke_width(2),
+                ))?
                 .label(label.as_str())
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
         }
