@@ -1,0 +1,93 @@
+//! Derivation times and operation counts per route for n-link chains, printed (not asserted:
+//! speed belongs in benches). Run with `cargo test --test mechanism_timing -- --ignored
+//! --nocapture`.
+
+use std::time::Instant;
+
+use precess::codegen::Program;
+use precess::mechanism::{JointKind, MechanismScene, Parent, Route};
+use precess::sym::{Arena, ExprId};
+
+/// An n-link chain of uniform rods with parameter masses and lengths; `spatial` alternates
+/// the hinge axes between x and y, otherwise every hinge is about x (a planar chain).
+pub fn chain(arena: &mut Arena, n: usize, spatial: bool) -> MechanismScene {
+    let (o, z) = (arena.one(), arena.zero());
+    let mut scene = MechanismScene::new();
+    for i in 0..n {
+        let axis = if spatial && i % 2 == 1 {
+            [z, o, z]
+        } else {
+            [o, z, z]
+        };
+        let parent = if i == 0 {
+            Parent::Ground
+        } else {
+            Parent::Body(i - 1)
+        };
+        let name = format!("q{i}");
+        let mut b = MechanismScene::body(
+            arena,
+            &format!("link{i}"),
+            parent,
+            JointKind::Revolute { axis },
+            &[&name],
+        );
+        let m = arena.parameter(&format!("m{i}"));
+        let l = arena.parameter(&format!("l{i}"));
+        let half = arena.number("-0.5").unwrap_or(z);
+        b.mass = m;
+        b.center = [z, z, arena.mul(half, l)];
+        let ml2 = arena.product(&[m, l, l]);
+        let twelfth = arena
+            .number("0.0833333333333333333333333333333333")
+            .unwrap_or(z);
+        let i_rod = arena.mul(twelfth, ml2);
+        b.inertia = [[i_rod, z, z], [z, i_rod, z], [z, z, z]];
+        if i > 0 {
+            let prev = arena.parameter(&format!("l{}", i - 1));
+            b.joint.at = [z, z, arena.neg(prev)];
+        }
+        scene.bodies.push(b);
+    }
+    let g = arena.parameter("g");
+    scene.gravity = Some([z, z, arena.neg(g)]);
+    scene
+}
+
+fn ops(arena: &Arena, outputs: &[ExprId]) -> usize {
+    Program::lower(arena, outputs).op_count().total()
+}
+
+#[test]
+#[ignore = "prints timings"]
+fn derivation_times_per_route() {
+    for spatial in [false, true] {
+        for n in 1..=5 {
+            for route in [Route::Symbolic, Route::Factored, Route::Auto] {
+                if route == Route::Symbolic && n > 4 {
+                    continue;
+                }
+                let mut a = Arena::new();
+                let scene = chain(&mut a, n, spatial);
+                let start = Instant::now();
+                let d = scene.derive(&mut a, route);
+                let elapsed = start.elapsed();
+                match d {
+                    Ok(d) => {
+                        let outputs: Vec<ExprId> =
+                            d.accelerations.iter().chain(&d.pivots).copied().collect();
+                        println!(
+                            "{} n={n} {:?}->{:?}: {:.3} ms, {} ops",
+                            if spatial { "spatial" } else { "planar" },
+                            route,
+                            d.route,
+                            elapsed.as_secs_f64() * 1e3,
+                            ops(&a, &outputs)
+                        );
+                    }
+                    Err(e) => println!("n={n} {route:?}: {e}"),
+                }
+            }
+        }
+    }
+}
