@@ -60,6 +60,33 @@ fn ops(arena: &Arena, outputs: &[ExprId]) -> usize {
 
 #[test]
 #[ignore = "prints timings"]
+fn derivation_stages() {
+    for spatial in [false, true] {
+        for n in [4, 5] {
+            let mut a = Arena::new();
+            let scene = chain(&mut a, n, spatial);
+            let start = Instant::now();
+            let order = scene.validate(&a).expect("valid");
+            let names = scene.coordinate_names();
+            let c = precess::lagrange::Coordinates::new(&mut a, &names);
+            let _ = scene.kinematics(&mut a, &order, &c).expect("kinematics");
+            let kin = start.elapsed();
+            let mut a = Arena::new();
+            let scene = chain(&mut a, n, spatial);
+            let start = Instant::now();
+            let _ = scene.mass_matrix(&mut a).expect("mass matrix");
+            let mm = start.elapsed();
+            println!(
+                "spatial={spatial} n={n}: kinematics {:.1} ms, M and f {:.1} ms",
+                kin.as_secs_f64() * 1e3,
+                mm.as_secs_f64() * 1e3
+            );
+        }
+    }
+}
+
+#[test]
+#[ignore = "prints timings"]
 fn derivation_times_per_route() {
     for spatial in [false, true] {
         for n in 1..=5 {
