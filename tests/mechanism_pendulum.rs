@@ -216,3 +216,87 @@ fn dampers_and_springs_change_the_energy_by_the_integrated_power() {
     assert!(y[6] < -0.1, "the dampers dissipate: W = {}", y[6]);
     assert_relative_eq!(e - e0, y[6], max_relative = 1e-8);
 }
+
+/// A point mass m on a massless rod l with a damper c: θ̈ = −(g/l) sin θ − c θ̇ / (m l²).
+fn damped_pendulum(a: &mut Arena) -> MechanismScene {
+    let (o, z) = (a.one(), a.zero());
+    let mut bob = MechanismScene::body(
+        a,
+        "bob",
+        Parent::Ground,
+        JointKind::Revolute { axis: [o, z, z] },
+        &["theta"],
+    );
+    bob.mass = a.parameter("m");
+    let l = a.parameter("l");
+    bob.center = [z, z, a.neg(l)];
+    bob.joint.loads[0].damper = Some(a.parameter("c"));
+    let mut scene = MechanismScene::new();
+    scene.bodies.push(bob);
+    let g = a.parameter("g");
+    scene.gravity = Some([z, z, a.neg(g)]);
+    scene
+}
+
+#[test]
+fn the_jacobian_of_a_damped_pendulum_is_the_closed_form() {
+    let mut a = Arena::new();
+    let scene = damped_pendulum(&mut a);
+    let d = scene.derive(&mut a, Route::Auto).expect("derives");
+    let jac = scene.jacobian(&mut a, &d);
+    let (m, l, g, c, theta, rate) = (1.5, 0.8, 9.81, 0.3, 0.7, -1.1);
+    let mut env = vec![f64::NAN; a.symbol_count()];
+    for (name, v) in [("m", m), ("l", l), ("g", g), ("c", c)] {
+        env[a.find_parameter(name).expect("read").index()] = v;
+    }
+    let q = a.as_symbol(d.coordinates.q[0]).expect("symbol");
+    let qd = a.as_symbol(d.coordinates.rates[0]).expect("symbol");
+    env[q.index()] = theta;
+    env[qd.index()] = rate;
+    let value: Vec<Vec<f64>> = jac
+        .iter()
+        .map(|row| row.iter().map(|&e| a.eval(e, &env)).collect())
+        .collect();
+    assert_eq!(value[0], vec![0.0, 1.0]);
+    assert_relative_eq!(value[1][0], -(g / l) * theta.cos(), max_relative = 1e-14);
+    assert_relative_eq!(value[1][1], -c / (m * l * l), max_relative = 1e-14);
+    // The damper's power is −c θ̇², and θ is not cyclic (gravity and the damper act on it).
+    let model = MechanismModel::from_derivation(&a, &d, &[("m", m), ("l", l), ("g", g), ("c", c)])
+        .expect("binds");
+    assert_relative_eq!(
+        model.power(0.0, &[theta], &[rate]).expect("finite"),
+        -c * rate * rate
+    );
+    assert!(d.cyclic_momenta.is_empty());
+}
+
+#[test]
+fn a_turntable_conserves_its_angular_momentum() {
+    // A body turning about the vertical z axis under gravity along −z: the angle is cyclic
+    // and p = (I_zz + m (x² + y²)) q̇ for its centre at (x, y, z).
+    let mut a = Arena::new();
+    let (o, z) = (a.one(), a.zero());
+    let mut table = MechanismScene::body(
+        &mut a,
+        "table",
+        Parent::Ground,
+        JointKind::Revolute { axis: [z, z, o] },
+        &["phi"],
+    );
+    table.mass = a.number("2").expect("literal");
+    table.center = [
+        a.number("0.3").expect("literal"),
+        a.number("-0.4").expect("literal"),
+        o,
+    ];
+    let izz = a.number("0.5").expect("literal");
+    table.inertia = [[o, z, z], [z, o, z], [z, z, izz]];
+    let mut scene = MechanismScene::new();
+    scene.bodies.push(table);
+    scene.gravity = Some([z, z, a.number("-9.81").expect("literal")]);
+    let model = MechanismModel::new(&mut a, &scene, Route::Auto, &[]).expect("derives");
+    let p = model.cyclic_momenta(0.0, &[1.2], &[3.0]).expect("finite");
+    assert_eq!(p.len(), 1);
+    assert_eq!(p[0].0, 0);
+    assert_relative_eq!(p[0].1, (0.5 + 2.0 * 0.25) * 3.0, max_relative = 1e-15);
+}

@@ -18,9 +18,9 @@ use crate::sym::{Arena, ExprId, SymbolId};
 ///
 /// # Examples
 ///
-/// Two equal point masses on massless rods hinged about x, at rest and horizontal: the
-/// upper rod starts with θ̈₁ = −(3/2) g/l... of the textbook formula, here checked through
-/// its energy instead: E = T + V with V = −m g z.
+/// Two unit point masses on massless unit rods hinged about x, hanging straight down at
+/// rest: an equilibrium (q̈ = 0) with energy E = V = −Σ m g·r = −(1 + 2) g for gravity
+/// g ẑ, g = −9.81.
 ///
 /// ```
 /// use approx::assert_relative_eq;
@@ -68,12 +68,10 @@ pub struct MechanismModel {
 }
 
 fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {
-    arena
-        .as_symbol(e)
-        .ok_or_else(|| MechanismError::RouteUnavailable {
-            route: "interpreted",
-            reason: "a coordinate or the time is not a symbol",
-        })
+    arena.as_symbol(e).ok_or(MechanismError::RouteUnavailable {
+        route: "interpreted",
+        reason: "a coordinate or the time is not a symbol",
+    })
 }
 
 impl MechanismModel {
@@ -166,7 +164,7 @@ impl MechanismModel {
         let mut out = vec![0.0; self.axis_joints.len()];
         self.bindings.eval(&self.axes, [], &mut out);
         for (joint, &v) in self.axis_joints.iter().zip(&out) {
-            if !(v > 0.0) {
+            if v.is_nan() || v <= 0.0 {
                 return Err(MechanismError::ZeroAxis {
                     joint: joint.clone(),
                     squared_length: Some(v),
@@ -260,7 +258,11 @@ impl MechanismModel {
         let mut out = vec![0.0; self.pivot_count + self.dof()];
         self.run(&self.accel, t, q, qdot, &mut out);
         let (pivots, qdd) = out.split_at(self.pivot_count);
-        if let Some((pivot, &value)) = pivots.iter().enumerate().find(|&(_, &p)| !(p > 0.0)) {
+        if let Some((pivot, &value)) = pivots
+            .iter()
+            .enumerate()
+            .find(|&(_, &p)| p.is_nan() || p <= 0.0)
+        {
             return Err(MechanismError::SingularMassMatrix { pivot, value });
         }
         if !qdd.iter().all(|x| x.is_finite()) {
