@@ -1,8 +1,32 @@
 //! Mechanisms: trees of rigid bodies joined by revolute, prismatic, universal and spherical
 //! joints, derived to `M(q) q̈ = f(q, q̇, t)` and solved by the cheapest exact route.
 //!
-//! - [`MechanismScene`] describes the tree and its loads (see `scene.rs` for the frames).
+//! - [`MechanismScene`] describes the tree and its loads (see `scene.rs` for the frames);
+//!   [`MechanismScene::validate`] checks it and orders it parents first.
+//! - [`MechanismScene::kinematics`] gives every body's attitude, origin, centre of mass,
+//!   angular velocity and centre velocity as expressions in q and q̇.
+//! - [`MechanismScene::derive`] forms T and V, the generalised forces of dampers, efforts
+//!   and torques, the Euler–Lagrange equations, and solves them by a [`Route`]: the symbolic
+//!   adjugate for few coordinates, an unexpanded LDLᵀ otherwise, whichever lowers to fewer
+//!   operations.
+//! - [`MechanismModel`] lowers a derivation and interprets it at run time, with typed
+//!   [`MechanismError`]s for singular mass matrices and bad states, and an ODE adapter.
 
+mod derive;
+mod error;
+mod factored;
+mod kinematics;
+mod model;
 mod scene;
+mod validate;
 
+#[allow(
+    unused_imports,
+    reason = "the recursive route's input, wired at the merge"
+)]
+pub(crate) use derive::joint_forces;
+pub use derive::{MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use error::MechanismError;
+pub use kinematics::BodyKinematics;
+pub use model::{MechanismModel, MechanismSystem};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};

@@ -1,0 +1,358 @@
+//! A derived mechanism evaluated at run time through the code generator's interpreter: the
+//! path for mechanisms built without the macro, and the reference the tests use.
+
+use std::cell::RefCell;
+
+use super::derive::{MechanismDerivation, Route};
+use super::error::MechanismError;
+use super::scene::{JointKind, MechanismScene};
+use crate::codegen::{Bindings, Program};
+use crate::ode::System;
+use crate::sym::{Arena, ExprId, SymbolId};
+
+/// A mechanism's q̈, pivots, energy and momenta, lowered once and interpreted.
+///
+/// Parameters are bound by name ([`MechanismModel::set`] changes one). The state is q and q̇
+/// in [`MechanismScene::coordinate_names`] order; [`MechanismModel::system`] adapts the
+/// model to the steppers of [`crate::ode`] over `[q, q̇]`.
+///
+/// # Examples
+///
+/// Two unit point masses on massless unit rods hinged about x, hanging straight down at
+/// rest: an equilibrium (q̈ = 0) with energy E = V = −Σ m g·r = −(1 + 2) g for gravity
+/// g ẑ, g = −9.81.
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess_core::mechanism::{JointKind, MechanismModel, MechanismScene, Parent, Route};
+/// use precess_core::sym::Arena;
+/// let mut a = Arena::new();
+/// let (o, z) = (a.one(), a.zero());
+/// let down = a.integer(-1);
+/// let hinge = JointKind::Revolute { axis: [o, z, z] };
+/// let mut scene = MechanismScene::new();
+/// for (i, parent) in [Parent::Ground, Parent::Body(0)].into_iter().enumerate() {
+///     let mut b = MechanismScene::body(&mut a, &format!("rod{i}"), parent, hinge.clone(),
+///         &[&format!("theta{i}")]);
+///     b.mass = o;
+///     b.center = [z, z, down];
+///     if i == 1 { b.joint.at = [z, z, down]; }
+///     scene.bodies.push(b);
+/// }
+/// scene.gravity = Some([z, z, a.parameter("g")]);
+/// let model = MechanismModel::new(&mut a, &scene, Route::Auto, &[("g", -9.81)])?;
+/// // Hanging straight down and at rest: V = −m g z summed = 9.81·(−1) + 9.81·(−2).
+/// assert_relative_eq!(model.energy(0.0, &[0.0, 0.0], &[0.0, 0.0])?, -3.0 * 9.81, epsilon = 1e-12);
+/// assert_eq!(model.accelerations(0.0, &[0.0, 0.0], &[0.0, 0.0])?, vec![0.0, 0.0]);
+/// # Ok::<(), precess_core::mechanism::MechanismError>(())
+/// ```
+#[derive(Debug)]
+pub struct MechanismModel {
+    /// Outputs: the pivots, then q̈.
+    accel: Program,
+    pivot_count: usize,
+    /// Outputs: T, V, E, power.
+    energy: Program,
+    /// Outputs: the conserved momenta.
+    momenta: Program,
+    cyclic: Vec<usize>,
+    /// Outputs: |axis|² of every axis built of parameters, named by `axis_joints`.
+    axes: Program,
+    axis_joints: Vec<String>,
+    q: Vec<SymbolId>,
+    rates: Vec<SymbolId>,
+    time: SymbolId,
+    route: Route,
+    bindings: Bindings,
+    buffer: RefCell<Vec<f64>>,
+}
+
+fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {
+    arena.as_symbol(e).ok_or(MechanismError::RouteUnavailable {
+        route: "interpreted",
+        reason: "a coordinate or the time is not a symbol",
+    })
+}
+
+impl MechanismModel {
+    /// Derives `scene` by `route` and lowers it with a value for each parameter
+    /// (`(name, value)` pairs), checking every axis made of parameters has non-zero length.
+    ///
+    /// # Errors
+    /// As [`MechanismScene::derive`] and [`MechanismModel::from_derivation`];
+    /// [`MechanismError::ZeroAxis`] for an axis of zero length at the values given.
+    pub fn new(
+        arena: &mut Arena,
+        scene: &MechanismScene,
+        route: Route,
+        parameters: &[(&str, f64)],
+    ) -> Result<MechanismModel, MechanismError> {
+        let derivation = scene.derive(arena, route)?;
+        let mut squared = Vec::new();
+        let mut names = Vec::new();
+        for body in &scene.bodies {
+            let axes: Vec<[ExprId; 3]> = match &body.joint.kind {
+                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => vec![*axis],
+                JointKind::Universal { axes } => axes.to_vec(),
+                JointKind::Spherical { .. } => Vec::new(),
+            };
+            for axis in axes {
+                if axis.iter().all(|&e| arena.as_rational(e).is_some()) {
+                    continue;
+                }
+                let terms: Vec<ExprId> = axis.iter().map(|&x| arena.mul(x, x)).collect();
+                squared.push(arena.sum(&terms));
+                names.push(body.joint.name.clone());
+            }
+        }
+        let mut model = Self::from_derivation(arena, &derivation, parameters)?;
+        model.axes = Program::lower(arena, &squared);
+        model.axis_joints = names;
+        model.check_axes()?;
+        Ok(model)
+    }
+
+    /// Lowers a derivation with a value for each parameter it reads.
+    ///
+    /// # Errors
+    /// [`MechanismError::Binding`] for a parameter left out, an unknown name, a non-finite
+    /// value, or a user function's input (which the interpreter cannot supply).
+    pub fn from_derivation(
+        arena: &Arena,
+        d: &MechanismDerivation,
+        parameters: &[(&str, f64)],
+    ) -> Result<MechanismModel, MechanismError> {
+        let c = &d.coordinates;
+        let q =
+            c.q.iter()
+                .map(|&e| symbol(arena, e))
+                .collect::<Result<Vec<_>, _>>()?;
+        let rates = c
+            .rates
+            .iter()
+            .map(|&e| symbol(arena, e))
+            .collect::<Result<Vec<_>, _>>()?;
+        let time = symbol(arena, d.time)?;
+        let outputs: Vec<ExprId> = d.pivots.iter().chain(&d.accelerations).copied().collect();
+        let accel = Program::lower(arena, &outputs);
+        let energy = Program::lower(arena, &[d.kinetic, d.potential, d.energy, d.power]);
+        let momenta: Vec<ExprId> = d.cyclic_momenta.iter().map(|&(_, p)| p).collect();
+        let momenta = Program::lower(arena, &momenta);
+        let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).copied().collect();
+        supplied.push(time);
+        let programs = [accel, energy, momenta];
+        let bindings = Bindings::new(arena, &programs, &supplied, parameters)?;
+        let [accel, energy, momenta] = programs;
+        Ok(MechanismModel {
+            accel,
+            pivot_count: d.pivots.len(),
+            energy,
+            momenta,
+            cyclic: d.cyclic_momenta.iter().map(|&(i, _)| i).collect(),
+            axes: Program::lower(arena, &[]),
+            axis_joints: Vec::new(),
+            buffer: RefCell::new(vec![0.0; outputs.len()]),
+            q,
+            rates,
+            time,
+            route: d.route,
+            bindings,
+        })
+    }
+
+    fn check_axes(&self) -> Result<(), MechanismError> {
+        let mut out = vec![0.0; self.axis_joints.len()];
+        self.bindings.eval(&self.axes, [], &mut out);
+        for (joint, &v) in self.axis_joints.iter().zip(&out) {
+            if v.is_nan() || v <= 0.0 {
+                return Err(MechanismError::ZeroAxis {
+                    joint: joint.clone(),
+                    squared_length: Some(v),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The number of coordinates n.
+    pub fn dof(&self) -> usize {
+        self.q.len()
+    }
+
+    /// The route the derivation took.
+    pub fn route(&self) -> Route {
+        self.route
+    }
+
+    /// The operation count of the program computing the pivots and q̈.
+    pub fn op_count(&self) -> crate::codegen::OpCount {
+        self.accel.op_count()
+    }
+
+    /// The names of the parameters the model reads, in alphabetical order.
+    pub fn parameters(&self) -> impl ExactSizeIterator<Item = &str> + '_ {
+        self.bindings.parameters()
+    }
+
+    /// Sets the parameter `name`.
+    ///
+    /// # Errors
+    /// [`MechanismError::Binding`] for an unknown name or a non-finite value;
+    /// [`MechanismError::ZeroAxis`] if an axis becomes zero (the value is kept; set another).
+    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
+        self.bindings.set(name, value)?;
+        self.check_axes()?;
+        Ok(self)
+    }
+
+    fn check_state(&self, t: f64, q: &[f64], qdot: &[f64]) -> Result<(), MechanismError> {
+        let n = self.dof();
+        for (quantity, v) in [("q", q), ("q̇", qdot)] {
+            if v.len() != n {
+                return Err(MechanismError::StateLength {
+                    quantity,
+                    expected: n,
+                    got: v.len(),
+                });
+            }
+            if !v.iter().all(|x| x.is_finite()) {
+                return Err(MechanismError::NonFinite {
+                    quantity,
+                    values: v.to_vec(),
+                });
+            }
+        }
+        if !t.is_finite() {
+            return Err(MechanismError::NonFinite {
+                quantity: "t",
+                values: vec![t],
+            });
+        }
+        Ok(())
+    }
+
+    fn run(&self, program: &Program, t: f64, q: &[f64], qdot: &[f64], out: &mut [f64]) {
+        let state = self
+            .q
+            .iter()
+            .zip(q)
+            .chain(self.rates.iter().zip(qdot))
+            .map(|(&s, &v)| (s, v));
+        let time = std::iter::once((self.time, t));
+        self.bindings.eval(program, state.chain(time), out);
+    }
+
+    /// q̈ at time t and state (q, q̇).
+    ///
+    /// # Errors
+    /// [`MechanismError::StateLength`] or [`MechanismError::NonFinite`] for a bad state;
+    /// [`MechanismError::SingularMassMatrix`] when a pivot is not positive (a massless chain,
+    /// or a configuration where M degenerates); [`MechanismError::NonFinite`] if q̈ overflows.
+    pub fn accelerations(
+        &self,
+        t: f64,
+        q: &[f64],
+        qdot: &[f64],
+    ) -> Result<Vec<f64>, MechanismError> {
+        self.check_state(t, q, qdot)?;
+        let mut out = vec![0.0; self.pivot_count + self.dof()];
+        self.run(&self.accel, t, q, qdot, &mut out);
+        let (pivots, qdd) = out.split_at(self.pivot_count);
+        if let Some((pivot, &value)) = pivots
+            .iter()
+            .enumerate()
+            .find(|&(_, &p)| p.is_nan() || p <= 0.0)
+        {
+            return Err(MechanismError::SingularMassMatrix { pivot, value });
+        }
+        if !qdd.iter().all(|x| x.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "q̈",
+                values: qdd.to_vec(),
+            });
+        }
+        Ok(qdd.to_vec())
+    }
+
+    fn energies(&self, t: f64, q: &[f64], qdot: &[f64]) -> Result<[f64; 4], MechanismError> {
+        self.check_state(t, q, qdot)?;
+        let mut out = [0.0; 4];
+        self.run(&self.energy, t, q, qdot, &mut out);
+        Ok(out)
+    }
+
+    /// The energy E = T + V (gravity and springs in V).
+    ///
+    /// # Errors
+    /// As the state checks of [`MechanismModel::accelerations`].
+    pub fn energy(&self, t: f64, q: &[f64], qdot: &[f64]) -> Result<f64, MechanismError> {
+        Ok(self.energies(t, q, qdot)?[2])
+    }
+
+    /// The kinetic energy T.
+    ///
+    /// # Errors
+    /// As the state checks of [`MechanismModel::accelerations`].
+    pub fn kinetic(&self, t: f64, q: &[f64], qdot: &[f64]) -> Result<f64, MechanismError> {
+        Ok(self.energies(t, q, qdot)?[0])
+    }
+
+    /// dE/dt from the non-conservative loads, Σ Q_i q̇_i.
+    ///
+    /// # Errors
+    /// As the state checks of [`MechanismModel::accelerations`].
+    pub fn power(&self, t: f64, q: &[f64], qdot: &[f64]) -> Result<f64, MechanismError> {
+        Ok(self.energies(t, q, qdot)?[3])
+    }
+
+    /// `(i, p_i)` for each conserved momentum of a cyclic coordinate.
+    ///
+    /// # Errors
+    /// As the state checks of [`MechanismModel::accelerations`].
+    pub fn cyclic_momenta(
+        &self,
+        t: f64,
+        q: &[f64],
+        qdot: &[f64],
+    ) -> Result<Vec<(usize, f64)>, MechanismError> {
+        self.check_state(t, q, qdot)?;
+        let mut out = vec![0.0; self.cyclic.len()];
+        self.run(&self.momenta, t, q, qdot, &mut out);
+        Ok(self.cyclic.iter().copied().zip(out).collect())
+    }
+
+    /// The model as an ODE system over `[q, q̇]` with `N = 2n` entries.
+    ///
+    /// # Errors
+    /// [`MechanismError::StateLength`] if N ≠ 2n.
+    pub fn system<const N: usize>(&self) -> Result<MechanismSystem<'_, N>, MechanismError> {
+        if N != 2 * self.dof() {
+            return Err(MechanismError::StateLength {
+                quantity: "the ODE state",
+                expected: 2 * self.dof(),
+                got: N,
+            });
+        }
+        Ok(MechanismSystem { model: self })
+    }
+}
+
+/// A [`MechanismModel`] as an [`crate::ode::System`] over `[q, q̇]`: unchecked, for the
+/// steppers' inner loop (a singular M gives NaN, which the adaptive drivers reject).
+#[derive(Debug, Clone, Copy)]
+pub struct MechanismSystem<'a, const N: usize> {
+    model: &'a MechanismModel,
+}
+
+impl<const N: usize> System<N> for MechanismSystem<'_, N> {
+    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
+        let m = self.model;
+        let n = m.dof();
+        let (q, qdot) = y.split_at(n);
+        let mut buffer = m.buffer.borrow_mut();
+        m.run(&m.accel, t, q, qdot, &mut buffer);
+        let (rates, accelerations) = dydt.split_at_mut(n);
+        rates.copy_from_slice(qdot);
+        accelerations.copy_from_slice(&buffer[m.pivot_count..]);
+    }
+}
