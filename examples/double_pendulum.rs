@@ -17,8 +17,8 @@
 //! ω² = g [(m1 + m2)(l1 + l2) ± √((m1 + m2)²(l1 + l2)² − 4 (m1 + m2) m1 l1 l2)] / (2 m1 l1 l2).
 //!
 //! Started in a mode with amplitude 1e-4 rad, each frequency is measured from the zero
-//! crossings of θ1 over twenty periods; the nonlinear shift, of order amplitude²/16, is
-//! below 1e-9. The chaotic swing starts with both rods horizontal-ish and runs 30 s with
+//! crossings of θ1 over twenty periods; the nonlinear shift (of order the amplitude
+//! squared) and the crossings' interpolation leave a few parts in 1e9. The chaotic swing starts with both rods horizontal-ish and runs 30 s with
 //! Dop853 at rtol = 1e-12: the energy, conserved by the equations, is its measure of error.
 
 mod common;

@@ -117,7 +117,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     // above the top's.
     let mut rates = Vec::new();
     let theta = std::f64::consts::FRAC_PI_3;
-    let spin = 40.0;
+    let spin = 60.0;
     for m_inner in [0.0, 0.05, 0.1, 0.2, 0.4] {
         let gyro = Gyroscope {
             m_outer: 0.3,

@@ -251,8 +251,8 @@ fn tree(ck: &Checker, specs: &[LinkSpec]) -> Option<Vec<Parent>> {
                         ck.cx.error_spanned_by(
                             tokens,
                             format!(
-                                "the bodies form a cycle, {}: a mechanism is a tree whose every chain of parents ends at `{}`",
-                                names.join(" → child of "),
+                                "the bodies form a cycle, each hanging from the next: {}; a mechanism is a tree whose every chain of parents ends at `{}`",
+                                names.join(" → "),
                                 keys::GROUND
                             ),
                         );
