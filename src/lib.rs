@@ -79,3 +79,8 @@ pub struct ReadmeDoctests;
 #[doc = include_str!("../docs/free-bodies.md")]
 #[cfg(doctest)]
 pub struct FreeBodiesDoctests;
+
+/// The mechanism guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/mechanisms.md")]
+#[cfg(doctest)]
+pub struct MechanismsDoctests;
