@@ -387,3 +387,75 @@ fn the_derived_code_is_the_run_time_model() {
         );
     }
 }
+
+/// A rod on a hinge about x under a body-fixed and a space-fixed torque.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(rod, joint = revolute(axis = x), q = theta, body_torque = [0.3, 0.2, 0.1],
+       space_torque = [0.5, 0.0, 0.7], parts(rod(mass = 2.0, length = 1.0, at = [0.0, 0.0, -0.5])))]
+struct Torqued;
+
+#[test]
+fn torques_act_through_the_joint_axis() {
+    // Only the components along the hinge (x in both frames) turn it.
+    let i = 2.0 / 3.0;
+    for (th, w) in [(0.3, 1.0), (-2.0, 0.5), (1.4, -3.0)] {
+        let want = (-2.0 * G * 0.5 * f64::sin(th) + 0.3 + 0.5) / i;
+        let got = Torqued.accelerations(0.0, &[th], &[w]).expect("regular")[0];
+        assert_relative_eq!(got, want, max_relative = 1e-13);
+        assert_relative_eq!(
+            Torqued.power(0.0, &[th], &[w]),
+            0.8 * w,
+            max_relative = 1e-13
+        );
+    }
+}
+
+/// A ball on a universal joint at its centre, loads on each coordinate.
+#[derive(Mechanism)]
+#[body(ball, joint = universal(axes = [x, y]), q = [a, b],
+       spring(k = [2.0, 3.0], rest = [0.1, -0.2]), damper = [0.5, c], effort = [push, 0.25],
+       parts(sphere(mass = 1.0, radius = 0.1)))]
+struct LoadedGimbal {
+    c: f64,
+}
+
+fn push(_: &LoadedGimbal, t: f64, q: &[f64; 2], _qdot: &[f64; 2]) -> f64 {
+    t * q[1]
+}
+
+#[test]
+fn each_coordinate_of_a_gimbal_has_its_own_loads() {
+    // A ball about its centre: I = 2/5 m r² on every axis, so T = ½ I (ȧ² + ḃ²) (x and the
+    // turned y are perpendicular) and the coordinates decouple.
+    let g = LoadedGimbal { c: 0.7 };
+    let i = 0.4 * 0.01;
+    let mut rng = Rng::new(21);
+    for _ in 0..100 {
+        let t = rng.uniform(0.0, 3.0);
+        let q = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)];
+        let qd = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)];
+        let got = g.accelerations(t, &q, &qd).expect("regular");
+        let a = (-2.0 * (q[0] - 0.1) - 0.5 * qd[0] + t * q[1]) / i;
+        let b = (-3.0 * (q[1] + 0.2) - 0.7 * qd[1] + 0.25) / i;
+        assert_relative_eq!(
+            got[LoadedGimbal::A],
+            a,
+            max_relative = 1e-12,
+            epsilon = 1e-9
+        );
+        assert_relative_eq!(
+            got[LoadedGimbal::B],
+            b,
+            max_relative = 1e-12,
+            epsilon = 1e-9
+        );
+        let v = 0.5 * 2.0 * (q[0] - 0.1).powi(2) + 0.5 * 3.0 * (q[1] + 0.2).powi(2);
+        assert_relative_eq!(
+            g.potential(&q) - g.potential(&[0.0, 0.0]),
+            v - 0.5 * 2.0 * 0.01 - 0.5 * 3.0 * 0.04,
+            max_relative = 1e-12,
+            epsilon = 1e-12
+        );
+    }
+}

@@ -67,8 +67,8 @@ pub trait MechanismDynamics<const N: usize> {
     /// The kinetic energy T(q, q̇).
     fn kinetic(&self, q: &[f64; N], qdot: &[f64; N]) -> f64;
 
-    /// The potential energy V(q) of gravity and the springs (zero at q = 0 and at the
-    /// springs' rest values).
+    /// The potential energy V(q): −Σ m g·r of the bodies' centres r in ground coordinates
+    /// (zero on the ground frame's origin) and ½ k (q − rest)² of each spring.
     fn potential(&self, q: &[f64; N]) -> f64;
 
     /// The energy E = T + V.
