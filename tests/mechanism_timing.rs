@@ -60,11 +60,38 @@ fn ops(arena: &Arena, outputs: &[ExprId]) -> usize {
 
 #[test]
 #[ignore = "prints timings"]
+fn derivation_stages() {
+    for spatial in [false, true] {
+        for n in [4, 5] {
+            let mut a = Arena::new();
+            let scene = chain(&mut a, n, spatial);
+            let start = Instant::now();
+            let order = scene.validate(&a).expect("valid");
+            let names = scene.coordinate_names();
+            let c = precess::lagrange::Coordinates::new(&mut a, &names);
+            let _ = scene.kinematics(&mut a, &order, &c).expect("kinematics");
+            let kin = start.elapsed();
+            let mut a = Arena::new();
+            let scene = chain(&mut a, n, spatial);
+            let start = Instant::now();
+            let _ = scene.mass_matrix(&mut a).expect("mass matrix");
+            let mm = start.elapsed();
+            println!(
+                "spatial={spatial} n={n}: kinematics {:.1} ms, M and f {:.1} ms",
+                kin.as_secs_f64() * 1e3,
+                mm.as_secs_f64() * 1e3
+            );
+        }
+    }
+}
+
+#[test]
+#[ignore = "prints timings"]
 fn derivation_times_per_route() {
     for spatial in [false, true] {
         for n in 1..=5 {
             for route in [Route::Symbolic, Route::Factored, Route::Auto] {
-                if route == Route::Symbolic && n > 4 {
+                if route == Route::Symbolic && n > 3 {
                     continue;
                 }
                 let mut a = Arena::new();
@@ -88,6 +115,47 @@ fn derivation_times_per_route() {
                     Err(e) => println!("n={n} {route:?}: {e}"),
                 }
             }
+        }
+    }
+}
+
+#[path = "mechanism_support/mod.rs"]
+mod mechanism_support;
+
+/// A universal joint and a tilted revolute, every mass property a parameter: the case where
+/// the symbolic route's expanded adjugate is slowest.
+#[test]
+#[ignore = "prints timings"]
+fn parametric_spatial_chain_per_route() {
+    use mechanism_support::{NumBody, NumJoint, NumMechanism, Values, scene};
+    let mut root = NumBody::new(
+        None,
+        [0.0; 3],
+        NumJoint::Universal([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+    );
+    root.center = [0.0, 0.1, -0.5];
+    let mut tip = NumBody::new(
+        Some(0),
+        [0.0, 0.0, -1.0],
+        NumJoint::Revolute([0.0, 0.6, 0.8]),
+    );
+    tip.center = [0.2, 0.0, -0.3];
+    let m = NumMechanism {
+        bodies: vec![root, tip],
+        gravity: [0.0, 0.0, -9.81],
+    };
+    for values in [Values::Literals, Values::Parameters] {
+        for route in [Route::Factored, Route::Symbolic] {
+            let mut a = Arena::new();
+            let (s, _) = scene(&mut a, &m, values);
+            let start = Instant::now();
+            let d = s.derive(&mut a, route).expect("derives");
+            let outputs: Vec<ExprId> = d.accelerations.iter().chain(&d.pivots).copied().collect();
+            println!(
+                "{values:?} {route:?}: {:.1} ms, {} ops",
+                start.elapsed().as_secs_f64() * 1e3,
+                ops(&a, &outputs)
+            );
         }
     }
 }

@@ -90,6 +90,12 @@ pub enum Values {
     Parameters,
 }
 
+/// The decimal `x` prints as, exactly (0.6 is 3/5, so 0.6² + 0.8² is 1 and the axis's
+/// length folds); within half an ulp of `x`, far below the tests' tolerances.
+pub fn exact(arena: &mut Arena, x: f64) -> ExprId {
+    arena.number(&format!("{x:?}")).expect("a finite decimal")
+}
+
 /// The symbolic scene of `m`, with the `(name, value)` pairs to bind (empty for literals).
 /// Axes and joint positions are always literals; masses, centres, inertias, loads and
 /// gravity follow `values`.
@@ -101,14 +107,14 @@ pub fn scene(
     let mut bound: Vec<(String, f64)> = Vec::new();
     let mut value = |arena: &mut Arena, name: String, x: f64| -> ExprId {
         match values {
-            Values::Literals => arena.float(x).expect("finite"),
+            Values::Literals => exact(arena, x),
             Values::Parameters => {
                 bound.push((name.clone(), x));
                 arena.parameter(&name)
             }
         }
     };
-    let lit = |arena: &mut Arena, v: [f64; 3]| v.map(|x| arena.float(x).expect("finite"));
+    let lit = |arena: &mut Arena, v: [f64; 3]| v.map(|x| exact(arena, x));
     let mut scene = MechanismScene::new();
     let mut coordinate = 0;
     for (i, b) in m.bodies.iter().enumerate() {
