@@ -1,17 +1,15 @@
-//! Meaning of the `#[body(...)]` and `#[mechanism(...)]` items: each link's keys, joint,
-//! coordinates, loads and parts (the parts with the `#[rigid]` rules), then the tree: names
-//! unique, parents known, no cycle. Every error is recorded, spanned on the offending tokens,
+//! Meaning of the `#[body(...)]` and `#[mechanism(...)]` items: each body's keys,
+//! coordinates and parts (the parts with the `#[rigid]` rules) here, its joint in `joint.rs`,
+//! its loads in `loads.rs`, then the tree's rules in `tree.rs`. Every error is recorded, spanned on the offending tokens,
 //! before any is given up on.
 
 use precess_core::body::{Description, check_part, evaluate, mass_properties};
-use precess_core::mechanism::{
-    CoordinateLoad, JointKind, MechanismBody, MechanismScene, Parent, Spring,
-};
-use precess_core::rigid::AngleSequence;
+use precess_core::mechanism::{JointKind, MechanismBody, MechanismScene, Parent};
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
+use super::joint::path_ident;
 use crate::keys::{self, part_list};
 use crate::rigid::attr::{Item, KeyValue, Parsed};
 use crate::rigid::check::Checker;
@@ -52,15 +50,19 @@ pub struct CheckedMechanism {
 }
 
 /// One link as read, before the tree is checked.
-struct LinkSpec<'a> {
-    name: &'a Ident,
+pub(super) struct LinkSpec<'a> {
+    /// The body's name.
+    pub(super) name: &'a Ident,
     /// `None` for the ground.
-    parent: Option<&'a Ident>,
-    joint_name: Ident,
-    /// False when the joint is named after its link.
-    joint_named: bool,
-    coordinates: Vec<Ident>,
-    body: MechanismBody,
+    pub(super) parent: Option<&'a Ident>,
+    /// The joint's name.
+    pub(super) joint_name: Ident,
+    /// False when the joint is named after its body.
+    pub(super) joint_named: bool,
+    /// The joint's coordinates.
+    pub(super) coordinates: Vec<Ident>,
+    /// The body for the scene (its parent set once the tree is checked).
+    pub(super) body: MechanismBody,
 }
 
 /// Checks every attribute; `None` after recording why the mechanism cannot be derived.
@@ -95,7 +97,7 @@ pub fn check(
     if !links.complete || !settings.complete || ck.cx.error_count() > errors_before {
         return None;
     }
-    let parents = tree(ck, &specs)?;
+    let parents = super::tree::tree(ck, &specs)?;
     let coordinates: Vec<Ident> = specs
         .iter()
         .flat_map(|s| s.coordinates.iter().cloned())
@@ -148,138 +150,18 @@ fn mechanism_settings(
     (gravity, route)
 }
 
-/// The parent of each link: names unique, parents known, every chain reaching the ground.
-fn tree(ck: &Checker, specs: &[LinkSpec]) -> Option<Vec<Parent>> {
-    let errors_before = ck.cx.error_count();
-    // Links, joints and coordinates each name one thing: two of a name are ambiguous.
-    let mut seen_links: Vec<String> = Vec::new();
-    let mut seen_joints: Vec<String> = Vec::new();
-    let mut seen_coordinates: Vec<String> = Vec::new();
-    for spec in specs {
-        let name = spec.name.to_string();
-        let duplicate_link = seen_links.contains(&name);
-        if name == keys::GROUND {
-            ck.cx.error_spanned_by(
-                spec.name,
-                format!(
-                    "a body cannot be called `{}`: the name is the inertial frame's",
-                    keys::GROUND
-                ),
-            );
-        } else if seen_links.contains(&name) {
-            ck.cx.error_spanned_by(
-                spec.name,
-                format!("duplicate body name `{name}`: each body needs its own name"),
-            );
-        }
-        seen_links.push(name);
-        let joint = spec.joint_name.to_string();
-        // A joint named after a duplicate link is that one mistake, reported once.
-        if seen_joints.contains(&joint) && (spec.joint_named || !duplicate_link) {
-            ck.cx.error_spanned_by(
-                &spec.joint_name,
-                format!("duplicate joint name `{joint}`: each joint needs its own name (a joint is named after its body unless given `{} = ...`)", keys::NAME),
-            );
-        }
-        seen_joints.push(joint);
-        for c in &spec.coordinates {
-            // The coordinates become associated consts in capitals: `theta` and `Theta`
-            // would be one const.
-            let upper = c.to_string().to_uppercase();
-            if seen_coordinates.contains(&upper) {
-                ck.cx.error_spanned_by(
-                    c,
-                    format!("duplicate coordinate name `{c}`: each coordinate needs its own name (case aside: they become the consts `Self::{upper}`)"),
-                );
-            }
-            seen_coordinates.push(upper);
-        }
-    }
-    let mut parents = Vec::with_capacity(specs.len());
-    for spec in specs {
-        let parent = match spec.parent {
-            None => Some(Parent::Ground),
-            Some(p) => match specs.iter().position(|s| s.name == p) {
-                Some(i) => Some(Parent::Body(i)),
-                None => {
-                    let known = specs
-                        .iter()
-                        .map(|s| s.name.to_string())
-                        .chain([keys::GROUND.to_owned()])
-                        .collect::<Vec<_>>();
-                    ck.cx.error_spanned_by(
-                        p,
-                        format!(
-                            "unknown parent `{p}`: a parent is `{}` or another body ({}){}",
-                            keys::GROUND,
-                            known
-                                .iter()
-                                .map(|k| format!("`{k}`"))
-                                .collect::<Vec<_>>()
-                                .join(", "),
-                            keys::did_you_mean(&p.to_string(), known.iter().map(String::as_str))
-                        ),
-                    );
-                    None
-                }
-            },
-        };
-        parents.push(parent);
-    }
-    if ck.cx.error_count() > errors_before {
-        return None;
-    }
-    let parents: Vec<Parent> = parents.into_iter().flatten().collect();
-    // A chain of parents that never reaches the ground is a loop, not a tree: report each
-    // loop once, on the parent of its first link.
-    let mut reported: Vec<usize> = Vec::new();
-    for start in 0..specs.len() {
-        let mut path = vec![start];
-        let mut at = start;
-        while let Some(Parent::Body(next)) = parents.get(at).copied() {
-            if let Some(k) = path.iter().position(|&p| p == next) {
-                let cycle: Vec<usize> = path.split_off(k);
-                if !cycle.iter().any(|c| reported.contains(c)) {
-                    let first = cycle.iter().copied().min().unwrap_or(next);
-                    let names: Vec<String> = cycle
-                        .iter()
-                        .chain(cycle.first())
-                        .filter_map(|&c| specs.get(c))
-                        .map(|s| format!("`{}`", s.name))
-                        .collect();
-                    if let Some(tokens) = specs.get(first).and_then(|s| s.parent) {
-                        ck.cx.error_spanned_by(
-                            tokens,
-                            format!(
-                                "the bodies form a cycle, each hanging from the next: {}; a mechanism is a tree whose every chain of parents ends at `{}`",
-                                names.join(" → "),
-                                keys::GROUND
-                            ),
-                        );
-                    }
-                    reported.extend(cycle);
-                }
-                break;
-            }
-            path.push(next);
-            at = next;
-        }
-    }
-    (ck.cx.error_count() == errors_before).then_some(parents)
-}
-
 /// Values of one link as written, by key.
 #[derive(Default)]
-struct LinkKeys<'a> {
-    parent: Option<&'a Expr>,
-    joint: Option<&'a Expr>,
-    coordinates: Option<&'a Expr>,
-    damper: Option<&'a Expr>,
-    effort: Option<&'a Expr>,
-    body_torque: Option<&'a Expr>,
-    space_torque: Option<&'a Expr>,
-    spring: Option<(&'a Ident, &'a [KeyValue])>,
-    parts: Option<(&'a Ident, &'a [Item])>,
+pub(super) struct LinkKeys<'a> {
+    pub(super) parent: Option<&'a Expr>,
+    pub(super) joint: Option<&'a Expr>,
+    pub(super) coordinates: Option<&'a Expr>,
+    pub(super) damper: Option<&'a Expr>,
+    pub(super) effort: Option<&'a Expr>,
+    pub(super) body_torque: Option<&'a Expr>,
+    pub(super) space_torque: Option<&'a Expr>,
+    pub(super) spring: Option<(&'a Ident, &'a [KeyValue])>,
+    pub(super) parts: Option<(&'a Ident, &'a [Item])>,
 }
 
 impl Checker<'_> {
@@ -568,438 +450,5 @@ impl Checker<'_> {
             }
         }
         Some(out)
-    }
-
-    /// The loads of a joint's coordinates: spring, damper and effort, one value each per
-    /// coordinate (`[a, b]` for a joint of two).
-    fn loads(
-        &mut self,
-        k: &LinkKeys,
-        dof: usize,
-        efforts: &mut Vec<UserEffort>,
-    ) -> Option<Vec<CoordinateLoad>> {
-        let mut loads = vec![CoordinateLoad::default(); dof];
-        let mut ok = true;
-        if let Some(e) = k.damper {
-            match self.per_coordinate(e, dof, keys::DAMPER) {
-                Some(values) => {
-                    for (load, v) in loads.iter_mut().zip(values) {
-                        load.damper = self.non_negative(v, keys::DAMPER);
-                        ok &= load.damper.is_some();
-                    }
-                }
-                None => ok = false,
-            }
-        }
-        if let Some(e) = k.effort {
-            match self.per_coordinate(e, dof, keys::EFFORT) {
-                Some(values) => {
-                    for (load, v) in loads.iter_mut().zip(values) {
-                        load.effort = self.effort(v, efforts);
-                        ok &= load.effort.is_some();
-                    }
-                }
-                None => ok = false,
-            }
-        }
-        if let Some((name, list)) = k.spring {
-            let mut stiffness = None;
-            let mut rest = None;
-            for kv in list {
-                let slot = match kv.key.to_string().as_str() {
-                    keys::STIFFNESS => &mut stiffness,
-                    keys::REST => &mut rest,
-                    _ => {
-                        let known = [keys::STIFFNESS, keys::REST];
-                        self.cx.error_spanned_by(
-                            &kv.key,
-                            format!(
-                                "unknown key `{}` for `{}`: allowed keys are {}, {}{}",
-                                kv.key,
-                                keys::SPRING,
-                                keys::STIFFNESS,
-                                keys::REST,
-                                keys::did_you_mean(&kv.key.to_string(), known)
-                            ),
-                        );
-                        ok = false;
-                        continue;
-                    }
-                };
-                if slot.is_some() {
-                    self.cx.error_spanned_by(
-                        &kv.key,
-                        format!("duplicate key `{}` in `{}`", kv.key, keys::SPRING),
-                    );
-                    ok = false;
-                }
-                *slot = Some(&kv.value);
-            }
-            match stiffness {
-                None => {
-                    self.cx.error_spanned_by(
-                        name,
-                        format!(
-                            "`{}` needs its stiffness `{} = ..` (the rest value defaults to 0)",
-                            keys::SPRING,
-                            keys::STIFFNESS
-                        ),
-                    );
-                    ok = false;
-                }
-                Some(ke) => {
-                    let ks = self.per_coordinate(ke, dof, keys::STIFFNESS);
-                    let rests = match rest {
-                        Some(r) => self.per_coordinate(r, dof, keys::REST),
-                        None => None,
-                    };
-                    match ks {
-                        Some(ks) => {
-                            for (i, (load, kv)) in loads.iter_mut().zip(ks).enumerate() {
-                                let stiffness = self.non_negative(kv, keys::STIFFNESS);
-                                let rest = match (&rests, rest) {
-                                    (Some(r), _) => r.get(i).and_then(|&r| self.scalar(r)),
-                                    (None, None) => Some(self.arena.zero()),
-                                    (None, Some(_)) => None,
-                                };
-                                match (stiffness, rest) {
-                                    (Some(stiffness), Some(rest)) => {
-                                        load.spring = Some(Spring { stiffness, rest });
-                                    }
-                                    _ => ok = false,
-                                }
-                            }
-                        }
-                        None => ok = false,
-                    }
-                }
-            }
-        }
-        ok.then_some(loads)
-    }
-
-    /// The values of a load key, one per coordinate.
-    fn per_coordinate<'e>(&mut self, e: &'e Expr, dof: usize, key: &str) -> Option<Vec<&'e Expr>> {
-        if dof == 1 {
-            return Some(vec![e]);
-        }
-        match e {
-            Expr::Array(a) if a.elems.len() == dof => Some(a.elems.iter().collect()),
-            _ => {
-                self.cx.error_spanned_by(
-                    e,
-                    format!("`{key}` of a joint with {dof} coordinates takes one value per coordinate, `[{}]`", vec!["..";dof].join(", ")),
-                );
-                None
-            }
-        }
-    }
-
-    /// A coefficient that is a literal must not be negative (a field's sign is the user's).
-    fn non_negative(&mut self, e: &Expr, key: &str) -> Option<ExprId> {
-        let v = self.scalar(e)?;
-        match self.arena.as_rational(v) {
-            Some(r) if r.to_f64() < 0.0 => {
-                self.cx.error_spanned_by(
-                    e,
-                    format!("`{key}` must not be negative, got {}", r.to_f64()),
-                );
-                None
-            }
-            _ => Some(v),
-        }
-    }
-
-    /// An effort: a value, or the path of a function `f(&self, t, &q, &qdot) -> f64`. A
-    /// single name is a field when the struct has one by that name, else a function.
-    fn effort(&mut self, e: &Expr, efforts: &mut Vec<UserEffort>) -> Option<ExprId> {
-        let function = match e {
-            Expr::Path(p) if p.qself.is_none() => match p.path.get_ident() {
-                Some(i) => self.input.field(i).is_none(),
-                None => true,
-            },
-            _ => false,
-        };
-        if !function {
-            return self.scalar(e);
-        }
-        let Expr::Path(p) = e else { return None };
-        let index = efforts.len();
-        let symbol = self.arena.input(&format!("effort_user_{index}"));
-        efforts.push(UserEffort {
-            path: p.path.clone(),
-            symbol,
-            index,
-        });
-        Some(symbol)
-    }
-
-    /// `gravity = g` (along −z) or `[gx, gy, gz]`.
-    fn gravity(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
-        if let Expr::Array(_) = e {
-            return self.vector(e);
-        }
-        let g = self.scalar(e)?;
-        let z = self.arena.zero();
-        Some([z, z, self.arena.neg(g)])
-    }
-
-    fn route(&mut self, e: &Expr) -> RouteChoice {
-        match path_ident(e).map(|i| i.to_string()).as_deref() {
-            Some("auto") => RouteChoice::Auto,
-            Some("symbolic") => RouteChoice::Symbolic,
-            Some("factored") => RouteChoice::Factored,
-            Some("recursive") => RouteChoice::Recursive,
-            _ => {
-                self.cx.error_spanned_by(
-                    e,
-                    format!(
-                        "`{}` expects one of {}",
-                        keys::ROUTE,
-                        keys::ROUTES.join(", ")
-                    ),
-                );
-                RouteChoice::Auto
-            }
-        }
-    }
-}
-
-/// A joint as read.
-struct JointSpec {
-    /// `None`: named after its link.
-    name: Option<Ident>,
-    at: [ExprId; 3],
-    kind: JointKind,
-}
-
-impl Checker<'_> {
-    /// `kind(name = .., axis = .., at = ..)`.
-    fn joint(&mut self, e: &Expr) -> Option<JointSpec> {
-        const EXPECTED: &str = "expected a joint `revolute(axis = x, at = [x, y, z])`, `prismatic(axis = ..)`, `universal(axes = [x, y])` or `spherical(sequence = zxz)`";
-        let (kind_ident, args): (&Ident, Vec<&Expr>) = match e {
-            Expr::Call(c) => match path_ident(&c.func) {
-                Some(i) => (i, c.args.iter().collect()),
-                None => {
-                    self.cx.error_spanned_by(e, EXPECTED);
-                    return None;
-                }
-            },
-            Expr::Path(_) => match path_ident(e) {
-                Some(i) => (i, Vec::new()),
-                None => {
-                    self.cx.error_spanned_by(e, EXPECTED);
-                    return None;
-                }
-            },
-            _ => {
-                self.cx.error_spanned_by(e, EXPECTED);
-                return None;
-            }
-        };
-        let kind_name = kind_ident.to_string();
-        let allowed: &[&str] = match kind_name.as_str() {
-            "revolute" | "prismatic" => &[keys::NAME, keys::AXIS, keys::AT],
-            "universal" => &[keys::NAME, keys::AXES, keys::AT],
-            "spherical" => &[keys::NAME, keys::SEQUENCE, keys::AT],
-            _ => {
-                self.cx.error_spanned_by(
-                    kind_ident,
-                    format!(
-                        "unknown joint `{kind_name}`: expected one of {}{}",
-                        keys::JOINT_KINDS.join(", "),
-                        keys::did_you_mean(&kind_name, keys::JOINT_KINDS.iter().copied())
-                    ),
-                );
-                return None;
-            }
-        };
-        let mut given: Vec<(&Ident, &Expr)> = Vec::new();
-        let mut ok = true;
-        for arg in args {
-            let Expr::Assign(a) = arg else {
-                self.cx.error_spanned_by(
-                    arg,
-                    format!(
-                        "expected `key = value` in `{kind_name}(...)`: its keys are {}",
-                        allowed.join(", ")
-                    ),
-                );
-                ok = false;
-                continue;
-            };
-            let Some(key) = path_ident(&a.left) else {
-                self.cx.error_spanned_by(
-                    &a.left,
-                    format!("expected a key of `{kind_name}`: {}", allowed.join(", ")),
-                );
-                ok = false;
-                continue;
-            };
-            if !allowed.iter().any(|k| key == k) {
-                self.cx.error_spanned_by(
-                    key,
-                    format!(
-                        "unknown key `{key}` for `{kind_name}`: allowed keys are {}{}",
-                        allowed.join(", "),
-                        keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                    ),
-                );
-                ok = false;
-                continue;
-            }
-            if given.iter().any(|(g, _)| *g == key) {
-                self.cx
-                    .error_spanned_by(key, format!("duplicate key `{key}` in `{kind_name}`"));
-                ok = false;
-                continue;
-            }
-            given.push((key, &a.right));
-        }
-        let value = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, v)| *v);
-        let name = match value(keys::NAME) {
-            Some(v) => match path_ident(v) {
-                Some(i) => Some(i.clone()),
-                None => {
-                    self.cx
-                        .error_spanned_by(v, "expected the joint's name, such as `shoulder`");
-                    None
-                }
-            },
-            None => None,
-        };
-        let at = match value(keys::AT) {
-            Some(v) => self.vector(v),
-            None => Some([self.arena.zero(); 3]),
-        };
-        let kind = match kind_name.as_str() {
-            "revolute" | "prismatic" => {
-                let axis = match value(keys::AXIS) {
-                    Some(v) => self.joint_axis(v),
-                    None => {
-                        self.cx.error_spanned_by(kind_ident, format!("`{kind_name}` needs its `{}`: `x`, `y`, `z` or `[x, y, z]` in the parent's frame", keys::AXIS));
-                        None
-                    }
-                };
-                axis.map(|axis| {
-                    if kind_name == "revolute" {
-                        JointKind::Revolute { axis }
-                    } else {
-                        JointKind::Prismatic { axis }
-                    }
-                })
-            }
-            "universal" => match value(keys::AXES) {
-                Some(Expr::Array(a)) if a.elems.len() == 2 => {
-                    let first = a.elems.first().and_then(|x| self.joint_axis(x));
-                    let second = a.elems.last().and_then(|x| self.joint_axis(x));
-                    Some(JointKind::Universal {
-                        axes: [first?, second?],
-                    })
-                }
-                Some(v) => {
-                    self.cx.error_spanned_by(v, "expected the two axes of the universal joint, `[outer, inner]`, such as `[x, y]`");
-                    None
-                }
-                None => {
-                    self.cx.error_spanned_by(
-                        kind_ident,
-                        format!(
-                            "`universal` needs its `{}`: `[outer, inner]`, such as `[x, y]`",
-                            keys::AXES
-                        ),
-                    );
-                    None
-                }
-            },
-            _ => match value(keys::SEQUENCE) {
-                None => Some(JointKind::Spherical {
-                    sequence: AngleSequence::Zxz,
-                }),
-                Some(v) => match path_ident(v).map(|i| i.to_string()).as_deref() {
-                    Some("zxz") => Some(JointKind::Spherical {
-                        sequence: AngleSequence::Zxz,
-                    }),
-                    Some("zyx") => Some(JointKind::Spherical {
-                        sequence: AngleSequence::Zyx,
-                    }),
-                    _ => {
-                        self.cx.error_spanned_by(
-                            v,
-                            format!(
-                                "`{}` expects `zxz` (φ, θ, ψ) or `zyx` (yaw, pitch, roll)",
-                                keys::SEQUENCE
-                            ),
-                        );
-                        None
-                    }
-                },
-            },
-        };
-        if !ok {
-            return None;
-        }
-        if name.is_none() && value(keys::NAME).is_some() {
-            return None;
-        }
-        Some(JointSpec {
-            name,
-            at: at?,
-            kind: kind?,
-        })
-    }
-
-    /// `x`, `y`, `z` (or negated) or `[x, y, z]`; a literal axis of zero length has no
-    /// direction.
-    fn joint_axis(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
-        let (inner, negated) = match e {
-            Expr::Unary(u) if matches!(u.op, syn::UnOp::Neg(_)) => (&*u.expr, true),
-            _ => (e, false),
-        };
-        if let Some(i) = path_ident(inner) {
-            let k = match i.to_string().as_str() {
-                "x" => 0,
-                "y" => 1,
-                "z" => 2,
-                _ => {
-                    // Not an axis name: a field, and the scalar's error says so.
-                    self.cx.error_spanned_by(
-                        e,
-                        "expected an axis `x`, `y`, `z` (or `-x`, …) or a vector `[x, y, z]`",
-                    );
-                    return None;
-                }
-            };
-            let (z, one) = (self.arena.zero(), self.arena.one());
-            let one = if negated { self.arena.neg(one) } else { one };
-            let mut axis = [z; 3];
-            axis[k] = one;
-            return Some(axis);
-        }
-        if !matches!(e, Expr::Array(_)) {
-            self.cx.error_spanned_by(
-                e,
-                "expected an axis `x`, `y`, `z` (or `-x`, …) or a vector `[x, y, z]`",
-            );
-            return None;
-        }
-        let axis = self.vector(e)?;
-        let zero = self.arena.zero();
-        if axis.iter().all(|&c| self.arena.expand(c) == zero) {
-            self.cx.error_spanned_by(
-                e,
-                "the axis has zero length and so no direction: give a non-zero axis such as [0.0, 0.0, 1.0]",
-            );
-            return None;
-        }
-        Some(axis)
-    }
-}
-
-/// The single identifier a path expression is, if it is one.
-fn path_ident(e: &Expr) -> Option<&Ident> {
-    match e {
-        Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
-        _ => None,
     }
 }

@@ -6,6 +6,9 @@
 pub mod attr;
 pub mod check;
 pub mod expand;
+mod joint;
+mod loads;
+mod tree;
 
 use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
