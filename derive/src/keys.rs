@@ -230,6 +230,58 @@ pub const FORCE_KEYS: &[&str] = &[FORCE, FORCE_AT];
 /// The keys `#[rigid(...)]` takes beside its parts.
 pub const RIGID_KEYS: &[&str] = &[PIVOT];
 
+/// `#[mechanism(...)]`: settings of the whole mechanism (gravity, route).
+pub const MECHANISM: &str = "mechanism";
+/// `#[body(name, ...)]`: one body of a mechanism with the joint to its parent (not
+/// `link`, which is a built-in attribute of Rust).
+pub const LINK: &str = "body";
+/// The body a link hangs from: another link's name or [`GROUND`].
+pub const PARENT: &str = "parent";
+/// The inertial frame, as a parent.
+pub const GROUND: &str = "ground";
+/// The joint of a link, `kind(key = value, ...)`.
+pub const JOINT: &str = "joint";
+/// The name(s) of a joint's coordinate(s).
+pub const COORDINATES: &str = "q";
+/// A linear spring on a joint coordinate, `spring(k = .., rest = ..)`.
+pub const SPRING: &str = "spring";
+/// A spring's stiffness.
+pub const STIFFNESS: &str = "k";
+/// A spring's rest value.
+pub const REST: &str = "rest";
+/// A linear damper −c q̇ on a joint coordinate.
+pub const DAMPER: &str = "damper";
+/// A generalised force on a joint coordinate: a value or a user function.
+pub const EFFORT: &str = "effort";
+/// The parts of a link, `parts(particle(..), rod(..), ...)`.
+pub const PARTS_GROUP: &str = "parts";
+/// A joint's name (it defaults to its link's).
+pub const NAME: &str = "name";
+/// The two axes of a universal joint.
+pub const AXES: &str = "axes";
+/// The Euler-angle sequence of a spherical joint.
+pub const SEQUENCE: &str = "sequence";
+/// How the accelerations are solved: `auto`, `symbolic`, `factored` or `recursive`.
+pub const ROUTE: &str = "route";
+/// The joint kinds.
+pub const JOINT_KINDS: &[&str] = &["revolute", "prismatic", "universal", "spherical"];
+/// The `key = value` settings of `#[link(...)]` (besides its name and its groups).
+pub const LINK_KEYS: &[&str] = &[
+    PARENT,
+    JOINT,
+    COORDINATES,
+    DAMPER,
+    EFFORT,
+    BODY_TORQUE,
+    SPACE_TORQUE,
+];
+/// The `name(...)` groups of `#[link(...)]`.
+pub const LINK_GROUPS: &[&str] = &[PARTS_GROUP, SPRING];
+/// The keys of `#[mechanism(...)]`.
+pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE];
+/// The routes of [`ROUTE`].
+pub const ROUTES: &[&str] = &["auto", "symbolic", "factored", "recursive"];
+
 /// `; did you mean `…`?` when exactly one of `known` is close to `written` (see
 /// [`closest`]), else nothing: the suffix every "unknown part" and "unknown key" message
 /// ends with, for any table of this file (parts, part keys, `#[rigid]` and `#[top]` keys).

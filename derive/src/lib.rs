@@ -18,6 +18,7 @@ mod ctxt;
 mod fallback;
 mod free;
 mod keys;
+mod mechanism;
 mod private;
 mod rigid;
 mod symbols;
@@ -42,6 +43,17 @@ use symbols::FieldParameters;
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     derive(&input).into()
+}
+
+/// Derives `MechanismDynamics<N>` (and the ODE `System<2N>`) for a tree of rigid bodies
+/// described by `#[body(...)]` attributes, one per body with the joint to its parent, and
+/// `#[mechanism(...)]` settings (gravity).
+///
+/// See `docs/mechanisms.md` for the language.
+#[proc_macro_derive(Mechanism, attributes(mechanism, body))]
+pub fn derive_mechanism(input: TokenStream) -> TokenStream {
+    let input = parse_macro_input!(input as DeriveInput);
+    mechanism::derive(&input).into()
 }
 
 /// The whole derive: the impls, or every error and stub impls.

@@ -13,6 +13,7 @@
 //!   [`MechanismError`]s for singular mass matrices and bad states, and an ODE adapter.
 
 mod derive;
+mod dynamics;
 mod error;
 mod factored;
 mod kinematics;
@@ -26,6 +27,7 @@ mod validate;
 )]
 pub(crate) use derive::joint_forces;
 pub use derive::{MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use kinematics::BodyKinematics;
 pub use model::{MechanismModel, MechanismSystem};

@@ -26,7 +26,7 @@ pub struct CheckedBody {
 }
 
 /// The tokens of each key's value in one part.
-type KeySpans = Vec<(&'static str, TokenStream)>;
+pub(crate) type KeySpans = Vec<(&'static str, TokenStream)>;
 
 /// Tokens of each value, to span errors found on the whole body.
 struct Spans {
@@ -276,7 +276,11 @@ pub(super) fn message(e: &BodyError) -> String {
 
 impl Checker<'_> {
     /// One part: known name, known and unique keys, every required key, then its values.
-    fn part(&mut self, name: &Ident, keys: &[KeyValue]) -> Option<(Part<ExprId>, KeySpans)> {
+    pub(crate) fn part(
+        &mut self,
+        name: &Ident,
+        keys: &[KeyValue],
+    ) -> Option<(Part<ExprId>, KeySpans)> {
         let Some(table) = keys::find_part(&name.to_string()) else {
             self.cx.error_spanned_by(
                 name,

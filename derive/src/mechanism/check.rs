@@ -1,0 +1,454 @@
+//! Meaning of the `#[body(...)]` and `#[mechanism(...)]` items: each body's keys,
+//! coordinates and parts (the parts with the `#[rigid]` rules) here, its joint in `joint.rs`,
+//! its loads in `loads.rs`, then the tree's rules in `tree.rs`. Every error is recorded, spanned on the offending tokens,
+//! before any is given up on.
+
+use precess_core::body::{Description, check_part, evaluate, mass_properties};
+use precess_core::mechanism::{JointKind, MechanismBody, MechanismScene, Parent};
+use precess_core::sym::ExprId;
+use syn::{Expr, Ident};
+
+use super::attr::{LinkAttr, LinkItem, Links};
+use super::joint::path_ident;
+use crate::keys::{self, part_list};
+use crate::rigid::attr::{Item, KeyValue, Parsed};
+use crate::rigid::check::Checker;
+
+/// How the accelerations are to be solved, as the user asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RouteChoice {
+    /// The cheapest by the engine's estimate.
+    Auto,
+    /// Symbolic inverse of the mass matrix.
+    Symbolic,
+    /// LDLᵀ of the mass matrix, unrolled.
+    Factored,
+    /// Articulated-body recursion, unrolled.
+    Recursive,
+}
+
+/// A coordinate's generalised force computed by a user function `f(&self, t, &q, &qdot)`.
+pub struct UserEffort {
+    /// The function's path.
+    pub path: syn::Path,
+    /// The input symbol standing for its value in the derivation.
+    pub symbol: ExprId,
+    /// Its number among the mechanism's user efforts.
+    pub index: usize,
+}
+
+/// The checked mechanism: the scene and what the generated code names.
+pub struct CheckedMechanism {
+    /// The scene for the engine.
+    pub scene: MechanismScene,
+    /// The coordinates as written, in state order.
+    pub coordinates: Vec<Ident>,
+    /// The user functions giving efforts.
+    pub efforts: Vec<UserEffort>,
+    /// The route asked for.
+    pub route: RouteChoice,
+}
+
+/// One link as read, before the tree is checked.
+pub(super) struct LinkSpec<'a> {
+    /// The body's name.
+    pub(super) name: &'a Ident,
+    /// `None` for the ground.
+    pub(super) parent: Option<&'a Ident>,
+    /// The joint's name.
+    pub(super) joint_name: Ident,
+    /// False when the joint is named after its body.
+    pub(super) joint_named: bool,
+    /// The joint's coordinates.
+    pub(super) coordinates: Vec<Ident>,
+    /// The body for the scene (its parent set once the tree is checked).
+    pub(super) body: MechanismBody,
+}
+
+/// Checks every attribute; `None` after recording why the mechanism cannot be derived.
+pub fn check(
+    ck: &mut Checker,
+    settings: &Parsed<KeyValue>,
+    links: &Links,
+) -> Option<CheckedMechanism> {
+    let errors_before = ck.cx.error_count();
+    let (gravity, route) = mechanism_settings(ck, settings);
+    let mut specs: Vec<LinkSpec> = Vec::new();
+    let mut efforts = Vec::new();
+    for link in &links.links {
+        if let Some(spec) = ck.link(link, &mut efforts) {
+            specs.push(spec);
+        }
+    }
+    if links.links.is_empty() && links.complete {
+        ck.cx.error_spanned_by(
+            ck.input.ident,
+            format!(
+                "a mechanism needs at least one moving joint: add `#[{}(name, {} = {}, {} = revolute(axis = x), {} = theta, {}(...))]`",
+                keys::LINK,
+                keys::PARENT,
+                keys::GROUND,
+                keys::JOINT,
+                keys::COORDINATES,
+                keys::PARTS_GROUP
+            ),
+        );
+    }
+    if !links.complete || !settings.complete || ck.cx.error_count() > errors_before {
+        return None;
+    }
+    let parents = super::tree::tree(ck, &specs)?;
+    let coordinates: Vec<Ident> = specs
+        .iter()
+        .flat_map(|s| s.coordinates.iter().cloned())
+        .collect();
+    let bodies = specs
+        .into_iter()
+        .zip(parents)
+        .map(|(mut spec, parent)| {
+            spec.body.joint.parent = parent;
+            spec.body
+        })
+        .collect();
+    Some(CheckedMechanism {
+        scene: MechanismScene { bodies, gravity },
+        coordinates,
+        efforts,
+        route,
+    })
+}
+
+/// `gravity = g` (along −z) or `gravity = [gx, gy, gz]`, and `route = ...`.
+fn mechanism_settings(
+    ck: &mut Checker,
+    settings: &Parsed<KeyValue>,
+) -> (Option<[ExprId; 3]>, RouteChoice) {
+    let mut gravity = None;
+    let mut route = RouteChoice::Auto;
+    let mut seen: Vec<&Ident> = Vec::new();
+    for KeyValue { key, value } in &settings.items {
+        if seen.contains(&key) {
+            ck.cx
+                .error_spanned_by(key, format!("duplicate key `{key}`"));
+            continue;
+        }
+        seen.push(key);
+        match keys::MECHANISM_KEYS.iter().find(|&&k| key == k).copied() {
+            Some(keys::GRAVITY) => gravity = ck.gravity(value),
+            Some(keys::ROUTE) => route = ck.route(value),
+            _ => ck.cx.error_spanned_by(
+                key,
+                format!(
+                    "unknown key `{key}` in `#[{}]`: expected {}{}",
+                    keys::MECHANISM,
+                    keys::MECHANISM_KEYS.join(", "),
+                    keys::did_you_mean(&key.to_string(), keys::MECHANISM_KEYS.iter().copied())
+                ),
+            ),
+        }
+    }
+    (gravity, route)
+}
+
+/// Values of one link as written, by key.
+#[derive(Default)]
+pub(super) struct LinkKeys<'a> {
+    pub(super) parent: Option<&'a Expr>,
+    pub(super) joint: Option<&'a Expr>,
+    pub(super) coordinates: Option<&'a Expr>,
+    pub(super) damper: Option<&'a Expr>,
+    pub(super) effort: Option<&'a Expr>,
+    pub(super) body_torque: Option<&'a Expr>,
+    pub(super) space_torque: Option<&'a Expr>,
+    pub(super) spring: Option<(&'a Ident, &'a [KeyValue])>,
+    pub(super) parts: Option<(&'a Ident, &'a [Item])>,
+}
+
+impl Checker<'_> {
+    /// One link: its name first, its keys and groups, then their values.
+    fn link<'l>(
+        &mut self,
+        link: &'l LinkAttr,
+        efforts: &mut Vec<UserEffort>,
+    ) -> Option<LinkSpec<'l>> {
+        let errors_before = self.cx.error_count();
+        let mut name: Option<&Ident> = None;
+        let mut k = LinkKeys::default();
+        let mut seen: Vec<&Ident> = Vec::new();
+        let known = || keys::LINK_KEYS.iter().chain(keys::LINK_GROUPS).copied();
+        for (index, item) in link.items.iter().enumerate() {
+            let key = match item {
+                LinkItem::Name(n) if index == 0 => {
+                    name = Some(n);
+                    continue;
+                }
+                LinkItem::Name(n) => {
+                    self.cx.error_spanned_by(
+                        n,
+                        format!("expected `key = value` or `group(...)`: only the body's name, first in the list, stands alone{}", keys::did_you_mean(&n.to_string(), known())),
+                    );
+                    continue;
+                }
+                LinkItem::Setting(kv) => &kv.key,
+                LinkItem::Parts { keyword, .. } => keyword,
+                LinkItem::Group { name, .. } => name,
+            };
+            if seen.contains(&key) {
+                self.cx
+                    .error_spanned_by(key, format!("duplicate key `{key}` in `#[{}]`", keys::LINK));
+                continue;
+            }
+            seen.push(key);
+            match item {
+                LinkItem::Name(_) => {}
+                LinkItem::Parts { keyword, items } => k.parts = Some((keyword, items)),
+                LinkItem::Group { name, keys: list } if name == keys::SPRING => {
+                    k.spring = Some((name, list));
+                }
+                LinkItem::Group { name, .. } => self.cx.error_spanned_by(
+                    name,
+                    format!(
+                        "unknown group `{name}(...)` in `#[{}]`: expected `{}(...)` or `{}({} = .., {} = ..)`{}",
+                        keys::LINK,
+                        keys::PARTS_GROUP,
+                        keys::SPRING,
+                        keys::STIFFNESS,
+                        keys::REST,
+                        keys::did_you_mean(&name.to_string(), known())
+                    ),
+                ),
+                LinkItem::Setting(kv) => {
+                    let slot = match kv.key.to_string().as_str() {
+                        keys::PARENT => &mut k.parent,
+                        keys::JOINT => &mut k.joint,
+                        keys::COORDINATES => &mut k.coordinates,
+                        keys::DAMPER => &mut k.damper,
+                        keys::EFFORT => &mut k.effort,
+                        keys::BODY_TORQUE => &mut k.body_torque,
+                        keys::SPACE_TORQUE => &mut k.space_torque,
+                        _ => {
+                            self.cx.error_spanned_by(
+                                &kv.key,
+                                format!(
+                                    "unknown key `{}` in `#[{}]`: expected {}, or the groups {}(...), {}(...){}",
+                                    kv.key,
+                                    keys::LINK,
+                                    keys::LINK_KEYS.join(", "),
+                                    keys::PARTS_GROUP,
+                                    keys::SPRING,
+                                    keys::did_you_mean(&kv.key.to_string(), known())
+                                ),
+                            );
+                            continue;
+                        }
+                    };
+                    *slot = Some(&kv.value);
+                }
+            }
+        }
+        let Some(name) = name else {
+            self.cx.error_spanned_by(
+                link.attr,
+                format!(
+                    "a body starts with its name: `#[{}(name, ...)]`",
+                    keys::LINK
+                ),
+            );
+            return None;
+        };
+        let parent = match k.parent {
+            None => None,
+            Some(e) => match path_ident(e) {
+                Some(p) if p == keys::GROUND => None,
+                Some(p) => Some(p),
+                None => {
+                    self.cx.error_spanned_by(
+                        e,
+                        format!("expected `{}` or the name of another body", keys::GROUND),
+                    );
+                    None
+                }
+            },
+        };
+        let joint = match k.joint {
+            Some(e) => self.joint(e),
+            None => {
+                self.cx.error_spanned_by(
+                    name,
+                    format!("body `{name}` has no joint: add `{} = revolute(axis = x)` (or prismatic, universal, spherical)", keys::JOINT),
+                );
+                None
+            }
+        };
+        let coordinates = match (k.coordinates, &joint) {
+            (Some(e), Some(j)) => self.coordinates(e, &j.kind),
+            (None, _) => {
+                self.cx.error_spanned_by(
+                    name,
+                    format!("body `{name}` does not name its joint's coordinates: add `{} = name` (or `{} = [a, b]`, `[a, b, c]` for universal and spherical joints)", keys::COORDINATES, keys::COORDINATES),
+                );
+                None
+            }
+            (Some(_), None) => None,
+        };
+        let dof = joint.as_ref().map_or(1, |j| j.kind.dof());
+        let loads = self.loads(&k, dof, efforts);
+        let body_torque = k.body_torque.map(|e| self.vector(e));
+        let space_torque = k.space_torque.map(|e| self.vector(e));
+        let parts = match k.parts {
+            Some((keyword, items)) => self.link_parts(keyword, items),
+            None => {
+                self.cx.error_spanned_by(
+                    name,
+                    format!(
+                        "body `{name}` has no parts: describe it with `{}(...)`, in its own frame whose origin is its joint: {}",
+                        keys::PARTS_GROUP,
+                        part_list()
+                    ),
+                );
+                None
+            }
+        };
+        if self.cx.error_count() > errors_before {
+            return None;
+        }
+        let (joint, coordinates, loads, parts) = (joint?, coordinates?, loads?, parts?);
+        let joint_named = joint.name.is_some();
+        let joint_name = joint.name.unwrap_or_else(|| name.clone());
+        let mut body = MechanismBody {
+            name: name.to_string(),
+            mass: parts.0,
+            center: parts.1,
+            inertia: parts.2,
+            joint: precess_core::mechanism::Joint {
+                name: joint_name.to_string(),
+                parent: Parent::Ground,
+                at: joint.at,
+                kind: joint.kind,
+                coordinates: coordinates.iter().map(Ident::to_string).collect(),
+                loads,
+            },
+            body_torque: None,
+            space_torque: None,
+        };
+        body.body_torque = body_torque.flatten();
+        body.space_torque = space_torque.flatten();
+        Some(LinkSpec {
+            name,
+            parent,
+            joint_name,
+            joint_named,
+            coordinates,
+            body,
+        })
+    }
+
+    /// The mass, centre and inertia about the centre of a link's parts, in its frame. Literal
+    /// parts meet the `#[rigid]` rules now; a massless link (field masses that are zero) is
+    /// the run time's singular mass matrix.
+    fn link_parts(
+        &mut self,
+        keyword: &Ident,
+        items: &[Item],
+    ) -> Option<(ExprId, [ExprId; 3], [[ExprId; 3]; 3])> {
+        let mut description = Description::default();
+        let mut ok = true;
+        for item in items {
+            match item {
+                Item::Part { name, keys } => match self.part(name, keys) {
+                    Some((part, _)) => {
+                        let single = Description {
+                            parts: vec![part.clone()],
+                            pivot: None,
+                        };
+                        if let Some(numeric) = evaluate(self.arena, &single)
+                            && let Some(p) = numeric.parts.first()
+                            && let Err(e) = check_part(0, p)
+                        {
+                            // Core numbers the part; the span shows it.
+                            let text = e.to_string();
+                            let text = match text.split_once("): ") {
+                                Some((head, rest)) if head.starts_with("part ") => rest.to_owned(),
+                                _ => text,
+                            };
+                            self.cx.error_spanned_by(name, format!("`{name}`: {text}"));
+                            ok = false;
+                        }
+                        description.parts.push(part);
+                    }
+                    None => ok = false,
+                },
+                Item::Setting(kv) => {
+                    self.cx.error_spanned_by(
+                        &kv.key,
+                        format!(
+                            "`{}` is not a part: a body's parts are {} (a body of a mechanism turns about its joint, so it has no pivot)",
+                            kv.key,
+                            part_list()
+                        ),
+                    );
+                    ok = false;
+                }
+            }
+        }
+        if description.parts.is_empty() && ok {
+            self.cx.error_spanned_by(
+                keyword,
+                format!(
+                    "`{}()` is empty: a body needs at least one part: {}",
+                    keys::PARTS_GROUP,
+                    part_list()
+                ),
+            );
+            return None;
+        }
+        if !ok {
+            return None;
+        }
+        match mass_properties(self.arena, &description) {
+            Ok(props) => Some((props.mass, props.center, props.inertia_cm)),
+            Err(e) => {
+                self.cx.error_spanned_by(keyword, e);
+                None
+            }
+        }
+    }
+
+    /// `q = name` for one coordinate, `q = [a, b]` or `[a, b, c]` for more.
+    fn coordinates(&mut self, e: &Expr, kind: &JointKind) -> Option<Vec<Ident>> {
+        let dof = kind.dof();
+        let names: Vec<&Expr> = match e {
+            Expr::Array(a) => a.elems.iter().collect(),
+            other => vec![other],
+        };
+        if names.len() != dof {
+            let expected = match dof {
+                1 => format!("`{} = name`", keys::COORDINATES),
+                2 => format!("`{} = [a, b]`", keys::COORDINATES),
+                _ => format!("`{} = [a, b, c]`", keys::COORDINATES),
+            };
+            self.cx.error_spanned_by(
+                e,
+                format!(
+                    "a {} joint has {dof} coordinate{}, got {}: write {expected}",
+                    kind.name(),
+                    if dof == 1 { "" } else { "s" },
+                    names.len()
+                ),
+            );
+            return None;
+        }
+        let mut out = Vec::with_capacity(dof);
+        for n in names {
+            match path_ident(n) {
+                Some(i) => out.push(i.clone()),
+                None => {
+                    self.cx
+                        .error_spanned_by(n, "expected the name of a coordinate, such as `theta`");
+                    return None;
+                }
+            }
+        }
+        Some(out)
+    }
+}

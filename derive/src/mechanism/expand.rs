@@ -1,0 +1,224 @@
+//! Expansion of `#[derive(Mechanism)]`: the scene derived by precess-core (q̈ by the route
+//! it picks, the pivots that say whether M is regular, T, V, the power and the cyclic
+//! momenta), each method one straight-line block, quoted into `impl MechanismDynamics<N>`,
+//! the ODE `System<2N>` on the struct, and a const per coordinate.
+
+use precess_core::codegen::Emitted;
+use precess_core::mechanism::{MechanismDerivation, Route};
+use precess_core::sym::{Arena, ExprId, SymbolId};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::{Ident, LitStr};
+
+use super::check::{CheckedMechanism, RouteChoice, UserEffort};
+use crate::ctxt::Ctxt;
+use crate::private::Private;
+use crate::symbols::{FieldParameters, Lowering};
+
+/// `impl MechanismDynamics<N>` and the rest, or `None` after recording why the equations
+/// could not be derived.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &mut Arena,
+    parameters: &FieldParameters,
+    checked: &CheckedMechanism,
+) -> Option<TokenStream> {
+    let p = Private;
+    let route = match checked.route {
+        RouteChoice::Auto => Route::Auto,
+        RouteChoice::Symbolic => Route::Symbolic,
+        RouteChoice::Factored => Route::Factored,
+        RouteChoice::Recursive => Route::Recursive,
+    };
+    let derivation = match checked.scene.derive(arena, route) {
+        Ok(d) => d,
+        Err(e) => {
+            cx.error_spanned_by(
+                ident,
+                format!("cannot derive the mechanism's equations of motion: {e}"),
+            );
+            return None;
+        }
+    };
+    let n = checked.coordinates.len();
+    let s = 2 * n;
+    let mut symbols = parameters.tokens();
+    for effort in &checked.efforts {
+        let local = local_of(effort);
+        symbols.insert_expr(arena, effort.symbol, quote!(#local));
+    }
+    let low = Lowering::new(cx, ident, symbols);
+    let method = Method {
+        low: &low,
+        derivation: &derivation,
+        efforts: &checked.efforts,
+    };
+    let MechanismDerivation {
+        accelerations,
+        pivots,
+        kinetic,
+        potential,
+        power,
+        cyclic_momenta,
+        ..
+    } = &derivation;
+    let checked_outputs: Vec<ExprId> = pivots.iter().chain(accelerations).copied().collect();
+    let np = pivots.len();
+    let checked_body = method.body(arena, &checked_outputs, |o| {
+        let (pv, acc) = o.split_at(np.min(o.len()));
+        quote! {
+            let __pivots: [f64; #np] = [#(#pv),*];
+            for (__k, &__v) in __pivots.iter().enumerate() {
+                // Not `__v <= 0.0`: a NaN pivot is no regular mass matrix either.
+                if !(__v > 0.0) {
+                    return ::core::result::Result::Err(#p::MechanismError::SingularMassMatrix { pivot: __k, value: __v });
+                }
+            }
+            let __a: [f64; #n] = [#(#acc),*];
+            if !__a.iter().all(|__v| __v.is_finite()) {
+                return ::core::result::Result::Err(#p::MechanismError::NonFinite {
+                    quantity: "accelerations",
+                    values: __a.to_vec(),
+                });
+            }
+            ::core::result::Result::Ok(__a)
+        }
+    });
+    let unchecked = method.body(arena, accelerations, |o| quote!([#(#o),*]));
+    let kinetic = method.body(arena, &[*kinetic], |o| quote!(#(#o)*));
+    let potential = method.body(arena, &[*potential], |o| quote!(#(#o)*));
+    let power = method.body(arena, &[*power], |o| quote!(#(#o)*));
+    let cyclic_exprs: Vec<ExprId> = cyclic_momenta.iter().map(|&(_, e)| e).collect();
+    let cyclic_index: Vec<usize> = cyclic_momenta.iter().map(|&(i, _)| i).collect();
+    let cyclic = method.body(arena, &cyclic_exprs, |o| {
+        let sets = cyclic_index
+            .iter()
+            .zip(o)
+            .map(|(i, v)| quote!(__m[#i] = ::core::option::Option::Some(#v);));
+        quote! {
+            let mut __m: [::core::option::Option<f64>; #n] = [::core::option::Option::None; #n];
+            #(#sets)*
+            __m
+        }
+    });
+    let names = checked
+        .coordinates
+        .iter()
+        .map(|c| LitStr::new(&c.to_string(), c.span()));
+    let consts = checked.coordinates.iter().enumerate().map(|(k, c)| {
+        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
+        let doc = format!("The index of the coordinate `{c}` in q and q̇ (and of q̈).");
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #k;
+        }
+    });
+    let route_name = derivation.route.name();
+    let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
+        .map(|k| {
+            let j = k + n;
+            (quote!(y[#k]), quote!(y[#j]))
+        })
+        .unzip();
+    let dydt = (0..n)
+        .map(|k| {
+            let j = k + n;
+            quote!(y[#j])
+        })
+        .chain((0..n).map(|k| quote!(__a[#k])));
+    Some(quote! {
+        #[automatically_derived]
+        impl #ident {
+            #(#consts)*
+        }
+
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::MechanismDynamics<#n> for #ident {
+            const COORDINATES: [&'static str; #n] = [#(#names),*];
+            const ROUTE: &'static str = #route_name;
+
+            fn accelerations(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ::core::result::Result<[f64; #n], #p::MechanismError> {
+                if !(t.is_finite() && q.iter().chain(qdot.iter()).all(|__v| __v.is_finite())) {
+                    let mut __values = [t].to_vec();
+                    __values.extend_from_slice(q);
+                    __values.extend_from_slice(qdot);
+                    return ::core::result::Result::Err(#p::MechanismError::NonFinite {
+                        quantity: "time, coordinates or rates",
+                        values: __values,
+                    });
+                }
+                #checked_body
+            }
+
+            #[inline]
+            fn accelerations_unchecked(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> [f64; #n] #unchecked
+
+            fn kinetic(&self, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #kinetic
+
+            fn potential(&self, q: &[f64; #n]) -> f64 #potential
+
+            fn power(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #power
+
+            fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
+        }
+
+        #[automatically_derived]
+        impl #p::System<#s> for #ident {
+            #[inline]
+            fn rhs(&self, t: f64, y: &[f64; #s], dydt: &mut [f64; #s]) {
+                let __a = #p::MechanismDynamics::<#n>::accelerations_unchecked(
+                    self, t, &[#(#q_of_y),*], &[#(#qdot_of_y),*],
+                );
+                *dydt = [#(#dydt),*];
+            }
+        }
+    })
+}
+
+/// The local a user effort's value is held in.
+fn local_of(effort: &UserEffort) -> Ident {
+    format_ident!("__effort_{}", effort.index)
+}
+
+/// Lowers one method's outputs over `t`, `q` and `qdot`.
+struct Method<'a> {
+    low: &'a Lowering<'a>,
+    derivation: &'a MechanismDerivation,
+    efforts: &'a [UserEffort],
+}
+
+impl Method<'_> {
+    /// `{ user calls; lets; build(outputs) }`.
+    fn body(
+        &self,
+        arena: &mut Arena,
+        outputs: &[ExprId],
+        build: impl FnOnce(&[TokenStream]) -> TokenStream,
+    ) -> TokenStream {
+        let c = &self.derivation.coordinates;
+        let mut reads: Vec<(ExprId, TokenStream)> = Vec::new();
+        for (k, (&q, &v)) in c.q.iter().zip(&c.rates).enumerate() {
+            reads.push((q, quote!(q[#k])));
+            reads.push((v, quote!(qdot[#k])));
+        }
+        reads.push((self.derivation.time, quote!(t)));
+        let read: Vec<SymbolId> = outputs
+            .iter()
+            .flat_map(|&o| arena.free_symbols(o))
+            .collect();
+        // A user function is called only by the methods whose result reads its value.
+        let calls = self.efforts.iter().filter_map(|e| {
+            let s = arena.as_symbol(e.symbol)?;
+            read.contains(&s).then(|| {
+                let (local, path) = (local_of(e), &e.path);
+                quote!(let #local: f64 = #path(self, t, q, qdot);)
+            })
+        });
+        let calls: TokenStream = calls.collect();
+        let Emitted { lets, outputs } = self.low.lower_reading(arena, outputs, &reads);
+        let out = build(&outputs);
+        quote!({ #calls #lets #out })
+    }
+}

@@ -1,0 +1,212 @@
+//! The loads of a body's joint (springs, dampers, efforts, user functions) and the
+//! mechanism's settings (gravity, route), each value checked as `#[rigid]` values are.
+
+use precess_core::mechanism::{CoordinateLoad, Spring};
+use precess_core::sym::ExprId;
+use syn::Expr;
+
+use super::check::{LinkKeys, RouteChoice, UserEffort};
+use super::joint::path_ident;
+use crate::keys;
+use crate::rigid::check::Checker;
+
+impl Checker<'_> {
+    /// The loads of a joint's coordinates: spring, damper and effort, one value each per
+    /// coordinate (`[a, b]` for a joint of two).
+    pub(super) fn loads(
+        &mut self,
+        k: &LinkKeys,
+        dof: usize,
+        efforts: &mut Vec<UserEffort>,
+    ) -> Option<Vec<CoordinateLoad>> {
+        let mut loads = vec![CoordinateLoad::default(); dof];
+        let mut ok = true;
+        if let Some(e) = k.damper {
+            match self.per_coordinate(e, dof, keys::DAMPER) {
+                Some(values) => {
+                    for (load, v) in loads.iter_mut().zip(values) {
+                        load.damper = self.non_negative(v, keys::DAMPER);
+                        ok &= load.damper.is_some();
+                    }
+                }
+                None => ok = false,
+            }
+        }
+        if let Some(e) = k.effort {
+            match self.per_coordinate(e, dof, keys::EFFORT) {
+                Some(values) => {
+                    for (load, v) in loads.iter_mut().zip(values) {
+                        load.effort = self.effort(v, efforts);
+                        ok &= load.effort.is_some();
+                    }
+                }
+                None => ok = false,
+            }
+        }
+        if let Some((name, list)) = k.spring {
+            let mut stiffness = None;
+            let mut rest = None;
+            for kv in list {
+                let slot = match kv.key.to_string().as_str() {
+                    keys::STIFFNESS => &mut stiffness,
+                    keys::REST => &mut rest,
+                    _ => {
+                        let known = [keys::STIFFNESS, keys::REST];
+                        self.cx.error_spanned_by(
+                            &kv.key,
+                            format!(
+                                "unknown key `{}` for `{}`: allowed keys are {}, {}{}",
+                                kv.key,
+                                keys::SPRING,
+                                keys::STIFFNESS,
+                                keys::REST,
+                                keys::did_you_mean(&kv.key.to_string(), known)
+                            ),
+                        );
+                        ok = false;
+                        continue;
+                    }
+                };
+                if slot.is_some() {
+                    self.cx.error_spanned_by(
+                        &kv.key,
+                        format!("duplicate key `{}` in `{}`", kv.key, keys::SPRING),
+                    );
+                    ok = false;
+                }
+                *slot = Some(&kv.value);
+            }
+            match stiffness {
+                None => {
+                    self.cx.error_spanned_by(
+                        name,
+                        format!(
+                            "`{}` needs its stiffness `{} = ..` (the rest value defaults to 0)",
+                            keys::SPRING,
+                            keys::STIFFNESS
+                        ),
+                    );
+                    ok = false;
+                }
+                Some(ke) => {
+                    let ks = self.per_coordinate(ke, dof, keys::STIFFNESS);
+                    let rests = match rest {
+                        Some(r) => self.per_coordinate(r, dof, keys::REST),
+                        None => None,
+                    };
+                    match ks {
+                        Some(ks) => {
+                            for (i, (load, kv)) in loads.iter_mut().zip(ks).enumerate() {
+                                let stiffness = self.non_negative(kv, keys::STIFFNESS);
+                                let rest = match (&rests, rest) {
+                                    (Some(r), _) => r.get(i).and_then(|&r| self.scalar(r)),
+                                    (None, None) => Some(self.arena.zero()),
+                                    (None, Some(_)) => None,
+                                };
+                                match (stiffness, rest) {
+                                    (Some(stiffness), Some(rest)) => {
+                                        load.spring = Some(Spring { stiffness, rest });
+                                    }
+                                    _ => ok = false,
+                                }
+                            }
+                        }
+                        None => ok = false,
+                    }
+                }
+            }
+        }
+        ok.then_some(loads)
+    }
+
+    /// The values of a load key, one per coordinate.
+    pub(super) fn per_coordinate<'e>(
+        &mut self,
+        e: &'e Expr,
+        dof: usize,
+        key: &str,
+    ) -> Option<Vec<&'e Expr>> {
+        if dof == 1 {
+            return Some(vec![e]);
+        }
+        match e {
+            Expr::Array(a) if a.elems.len() == dof => Some(a.elems.iter().collect()),
+            _ => {
+                self.cx.error_spanned_by(
+                    e,
+                    format!("`{key}` of a joint with {dof} coordinates takes one value per coordinate, `[{}]`", vec!["..";dof].join(", ")),
+                );
+                None
+            }
+        }
+    }
+
+    /// A coefficient that is a literal must not be negative (a field's sign is the user's).
+    pub(super) fn non_negative(&mut self, e: &Expr, key: &str) -> Option<ExprId> {
+        let v = self.scalar(e)?;
+        match self.arena.as_rational(v) {
+            Some(r) if r.to_f64() < 0.0 => {
+                self.cx.error_spanned_by(
+                    e,
+                    format!("`{key}` must not be negative, got {}", r.to_f64()),
+                );
+                None
+            }
+            _ => Some(v),
+        }
+    }
+
+    /// An effort: a value, or the path of a function `f(&self, t, &q, &qdot) -> f64`. A
+    /// single name is a field when the struct has one by that name, else a function.
+    pub(super) fn effort(&mut self, e: &Expr, efforts: &mut Vec<UserEffort>) -> Option<ExprId> {
+        let function = match e {
+            Expr::Path(p) if p.qself.is_none() => match p.path.get_ident() {
+                Some(i) => self.input.field(i).is_none(),
+                None => true,
+            },
+            _ => false,
+        };
+        if !function {
+            return self.scalar(e);
+        }
+        let Expr::Path(p) = e else { return None };
+        let index = efforts.len();
+        let symbol = self.arena.input(&format!("effort_user_{index}"));
+        efforts.push(UserEffort {
+            path: p.path.clone(),
+            symbol,
+            index,
+        });
+        Some(symbol)
+    }
+
+    /// `gravity = g` (along −z) or `[gx, gy, gz]`.
+    pub(super) fn gravity(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
+        if let Expr::Array(_) = e {
+            return self.vector(e);
+        }
+        let g = self.scalar(e)?;
+        let z = self.arena.zero();
+        Some([z, z, self.arena.neg(g)])
+    }
+
+    pub(super) fn route(&mut self, e: &Expr) -> RouteChoice {
+        match path_ident(e).map(|i| i.to_string()).as_deref() {
+            Some("auto") => RouteChoice::Auto,
+            Some("symbolic") => RouteChoice::Symbolic,
+            Some("factored") => RouteChoice::Factored,
+            Some("recursive") => RouteChoice::Recursive,
+            _ => {
+                self.cx.error_spanned_by(
+                    e,
+                    format!(
+                        "`{}` expects one of {}",
+                        keys::ROUTE,
+                        keys::ROUTES.join(", ")
+                    ),
+                );
+                RouteChoice::Auto
+            }
+        }
+    }
+}
