@@ -4,6 +4,12 @@
 //!
 //! - [`TaylorSystem`] is what the integrator asks of a system: the coefficients
 //!   y⁽ᵏ⁾(t)/k! of the solution through (t, y) up to an order.
+//! - [`Taylor`] steps with them: order and step from the tolerance, dense output from the
+//!   step polynomial, compensated sums; [`solve`] and [`solve_dense`] drive it in one call.
+
+mod integrator;
+
+pub use integrator::{Taylor, TaylorConfig, solve, solve_dense};
 
 /// A system `y' = f(t, y)` on `ℝᴺ` that gives the normalised Taylor coefficients of its
 /// solution, `c_k = y⁽ᵏ⁾(t)/k!` for `k = 0, …, order` (so `c_0 = y`, `c_1 = f(t, y)`).
