@@ -1,0 +1,459 @@
+//! The Taylor integrator against DOP853 and Vern9 at matched error, on DETEST B5 to t = 20,
+//! the torque-free bodies I = (3, 5, 7) and (3, 5, 9) from m0 = (0, 2, 0.01) to T = 200, and
+//! the heavy top of `examples/heavy_top.rs` over 10 nutation periods with its nutation maxima
+//! as events (in Euler–Poisson form, ω and the vertical γ in body axes: a polynomial system,
+//! so its Taylor recurrences are Cauchy products written by hand here, as are B5's and the
+//! free body's).
+//!
+//! `cargo bench --bench taylor` prints the table (error against the closed form, steps,
+//! evaluations, the median time of one whole integration over many repeats) and then times a
+//! few configurations with criterion (`-- jet` for the cost of a jet against one evaluation
+//! of f). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
+//! the same problems and tolerances.
+// Reference constants are quoted with all their published digits.
+#![allow(clippy::excessive_precision)]
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::Criterion;
+use precess::exact::FreeBodyExact;
+use precess::ode::{
+    AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
+};
+use precess::prelude::*;
+use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use precess::top::HeavyTopTheory;
+
+/// DETEST B5 y(20), 30-digit reference (Hull et al. 1972).
+const B5_Y20: [f64; 3] = [
+    -0.939_657_079_872_920_396_19,
+    -0.342_117_775_400_074_906_53,
+    0.741_412_659_619_995_300_78,
+];
+
+/// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2).
+struct B5;
+impl System<3> for B5 {
+    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
+        *d = [y[1] * y[2], -y[0] * y[2], -0.51 * y[0] * y[1]];
+    }
+}
+impl TaylorSystem<3> for B5 {
+    fn max_order(&self) -> usize {
+        60
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+        c[0] = *y;
+        for k in 0..order {
+            let [mut p12, mut p02, mut p01] = [0.0; 3];
+            for j in 0..=k {
+                let (a, b) = (c[j], c[k - j]);
+                p12 += a[1] * b[2];
+                p02 += a[0] * b[2];
+                p01 += a[0] * b[1];
+            }
+            let d = 1.0 / (k + 1) as f64;
+            c[k + 1] = [p12 * d, -p02 * d, -0.51 * p01 * d];
+        }
+    }
+}
+
+/// The torque-free body in body momentum: ṁ = m × (I⁻¹ m) = (a0 m1 m2, a1 m2 m0, a2 m0 m1).
+struct FreeBody([f64; 3]);
+impl FreeBody {
+    fn a(&self) -> [f64; 3] {
+        let i = self.0;
+        [
+            1.0 / i[2] - 1.0 / i[1],
+            1.0 / i[0] - 1.0 / i[2],
+            1.0 / i[1] - 1.0 / i[0],
+        ]
+    }
+}
+impl System<3> for FreeBody {
+    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
+        let a = self.a();
+        *d = [a[0] * m[1] * m[2], a[1] * m[2] * m[0], a[2] * m[0] * m[1]];
+    }
+}
+impl TaylorSystem<3> for FreeBody {
+    fn max_order(&self) -> usize {
+        60
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+        let a = self.a();
+        c[0] = *y;
+        for k in 0..order {
+            let [mut p12, mut p20, mut p01] = [0.0; 3];
+            for j in 0..=k {
+                let (u, v) = (c[j], c[k - j]);
+                p12 += u[1] * v[2];
+                p20 += u[2] * v[0];
+                p01 += u[0] * v[1];
+            }
+            let d = 1.0 / (k + 1) as f64;
+            c[k + 1] = [a[0] * p12 * d, a[1] * p20 * d, a[2] * p01 * d];
+        }
+    }
+}
+
+/// The symmetric heavy top about its fixed tip in Euler–Poisson form, state (ω, γ) in body
+/// axes, γ the upward vertical: I1 ω̇1 = (I1 − I3) ω2 ω3 + Mgl γ2,
+/// I1 ω̇2 = (I3 − I1) ω3 ω1 − Mgl γ1, ω̇3 = 0, γ̇ = γ × ω. cos θ = γ3, and θ̇ has the sign
+/// of γ2 ω1 − γ1 ω2.
+#[derive(Clone, Copy)]
+struct EulerPoisson {
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+}
+impl System<6> for EulerPoisson {
+    fn rhs(&self, _t: f64, y: &[f64; 6], d: &mut [f64; 6]) {
+        let [w1, w2, w3, g1, g2, g3] = *y;
+        let (r, s) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
+        *d = [
+            r * w2 * w3 + s * g2,
+            -r * w3 * w1 - s * g1,
+            0.0,
+            g2 * w3 - g3 * w2,
+            g3 * w1 - g1 * w3,
+            g1 * w2 - g2 * w1,
+        ];
+    }
+}
+impl TaylorSystem<6> for EulerPoisson {
+    fn max_order(&self) -> usize {
+        60
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 6], order: usize, c: &mut [[f64; 6]]) {
+        let (r, s) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
+        c[0] = *y;
+        for k in 0..order {
+            // Products w2w3, w3w1, g2w3, g3w2, g3w1, g1w3, g1w2, g2w1.
+            let mut p = [0.0; 8];
+            for j in 0..=k {
+                let (u, v) = (c[j], c[k - j]);
+                p[0] += u[1] * v[2];
+                p[1] += u[2] * v[0];
+                p[2] += u[4] * v[2];
+                p[3] += u[5] * v[1];
+                p[4] += u[5] * v[0];
+                p[5] += u[3] * v[2];
+                p[6] += u[3] * v[1];
+                p[7] += u[4] * v[0];
+            }
+            let d = 1.0 / (k + 1) as f64;
+            let ck = c[k];
+            c[k + 1] = [
+                (r * p[0] + s * ck[4]) * d,
+                (-r * p[1] - s * ck[3]) * d,
+                0.0,
+                (p[2] - p[3]) * d,
+                (p[4] - p[5]) * d,
+                (p[6] - p[7]) * d,
+            ];
+        }
+    }
+}
+
+/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm): `examples/heavy_top.rs`.
+#[derive(RigidBody)]
+#[rigid(
+    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
+    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
+    pivot = [0.0, 0.0, 0.0],
+)]
+struct SpinningTop;
+
+/// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system,
+/// initial state, exact nutation period and the span of 10 periods.
+struct HeavyTop {
+    sys: EulerPoisson,
+    y0: [f64; 6],
+    period: f64,
+}
+
+impl HeavyTop {
+    fn new() -> Self {
+        let top = SpinningTop;
+        let moments = top.principal().moments;
+        let (i1, i3) = (moments[0], moments[2]);
+        let mgl = top.mass() * 9.81 * top.center_of_mass().z;
+        let (theta0, w3) = (20f64.to_radians(), 150.0);
+        let theory = HeavyTopTheory::new(i1, i3, mgl).unwrap();
+        let period = theory
+            .motion_from_angles(&[0.0, theta0, 0.0], &[0.0, 0.0, w3])
+            .unwrap()
+            .nutation_period();
+        // ZXZ (0, θ0, 0): R = Rx(θ0), γ = Rᵀ ẑ = (0, sin θ0, cos θ0).
+        let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
+        Self {
+            sys: EulerPoisson { i1, i3, mgl },
+            y0,
+            period,
+        }
+    }
+}
+
+/// θ̇ up to a positive factor: its falling zeros are the nutation maxima.
+fn theta_rate(y: &[f64; 6]) -> f64 {
+    y[4] * y[0] - y[3] * y[1]
+}
+
+/// The nutation period from the maxima of θ over 10 periods (the first to the last of the
+/// ten) and the work done.
+fn heavy_top_period<S: Stepper<State = [f64; 6]>>(
+    stepper: &mut S,
+    t_end: f64,
+) -> Result<(f64, u64, u64), OdeError> {
+    let out = Run::new(stepper, t_end)
+        .sample_none()
+        .event(Event::new("maximum").falling(), |_t, y| theta_rate(y))
+        .integrate()?;
+    let maxima: Vec<f64> = out
+        .events
+        .iter()
+        .filter(|h| h.direction == Direction::Falling)
+        .map(|h| h.t)
+        .collect();
+    let period = match maxima.as_slice() {
+        [first, .., last] => (last - first) / (maxima.len() - 1) as f64,
+        _ => f64::NAN,
+    };
+    Ok((period, out.stats.steps, out.stats.rhs_evals))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Problem {
+    B5,
+    Free357,
+    Free359,
+    HeavyTop,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Method {
+    Taylor(f64),
+    Dop853(f64),
+    Vern9(f64),
+}
+
+impl Method {
+    fn label(&self) -> String {
+        match self {
+            Method::Taylor(t) => format!("Taylor tol {t:.0e}"),
+            Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
+            Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
+        }
+    }
+}
+
+/// One whole integration: (final state or period, steps, rhs evaluations).
+fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
+    sys: S,
+    y0: [f64; N],
+    t_end: f64,
+    m: Method,
+) -> ([f64; N], u64, u64) {
+    fn done<St: Stepper<State = [f64; N]>, const N: usize>(
+        mut s: St,
+        t_end: f64,
+    ) -> ([f64; N], u64, u64) {
+        while s.t() < t_end {
+            s.step(t_end).unwrap();
+        }
+        let st = s.stats();
+        (*s.state(), st.steps, st.rhs_evals)
+    }
+    match m {
+        Method::Taylor(tol) => done(
+            Taylor::new(sys, 0.0, y0, TaylorConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+        Method::Dop853(tol) => done(
+            Dop853::new(sys, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+        Method::Vern9(tol) => done(
+            Vern9::new(sys, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+    }
+}
+
+/// Runs `m` on problem `p`: (error against the reference, steps, rhs evaluations).
+fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u64) {
+    let free = |inertia: [f64; 3], exact: &[f64; 3]| {
+        let (y, s, e) = integrate(FreeBody(inertia), [0.0, 2.0, 0.01], 200.0, m);
+        (max_err(&y, exact), s, e)
+    };
+    match p {
+        Problem::B5 => {
+            let (y, s, e) = integrate(B5, [0.0, 1.0, 1.0], 20.0, m);
+            (max_err(&y, &B5_Y20), s, e)
+        }
+        Problem::Free357 => free([3.0, 5.0, 7.0], &refs.free357),
+        Problem::Free359 => free([3.0, 5.0, 9.0], &refs.free359),
+        Problem::HeavyTop => {
+            let t_end = 10.0 * top.period;
+            let (period, s, e) = match m {
+                Method::Taylor(tol) => heavy_top_period(
+                    &mut Taylor::new(top.sys, 0.0, top.y0, TaylorConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+                Method::Dop853(tol) => heavy_top_period(
+                    &mut Dop853::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+                Method::Vern9(tol) => heavy_top_period(
+                    &mut Vern9::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+            }
+            .unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+    }
+}
+
+/// The exact torque-free states at T = 200.
+struct References {
+    free357: [f64; 3],
+    free359: [f64; 3],
+}
+
+impl References {
+    fn new() -> Self {
+        let at = |i: [f64; 3]| -> [f64; 3] {
+            FreeBodyExact::new(i, [0.0, 2.0, 0.01])
+                .unwrap()
+                .m_at(200.0)
+                .unwrap()
+                .into()
+        };
+        Self {
+            free357: at([3.0, 5.0, 7.0]),
+            free359: at([3.0, 5.0, 9.0]),
+        }
+    }
+}
+
+fn max_err<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The median over 21 batches of the time of one call, each batch at least 2 ms long.
+fn median_time(mut f: impl FnMut()) -> Duration {
+    let start = Instant::now();
+    f();
+    let once = start.elapsed().max(Duration::from_nanos(100));
+    let reps = (Duration::from_millis(2).as_nanos() / once.as_nanos()).max(1) as u32;
+    let mut times: Vec<Duration> = (0..21)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            start.elapsed() / reps
+        })
+        .collect();
+    times.sort();
+    times[times.len() / 2]
+}
+
+fn methods() -> Vec<Method> {
+    let tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
+    let mut v: Vec<Method> = tols.iter().map(|&t| Method::Taylor(t)).collect();
+    v.extend([1e-15, 1e-16].map(Method::Taylor));
+    v.extend(tols.map(Method::Dop853));
+    v.extend(tols.map(Method::Vern9));
+    v.push(Method::Vern9(1e-15));
+    v
+}
+
+const PROBLEMS: [Problem; 4] = [
+    Problem::B5,
+    Problem::Free357,
+    Problem::Free359,
+    Problem::HeavyTop,
+];
+
+fn table(top: &HeavyTop, refs: &References) {
+    println!(
+        "heavy top: I1 = {:.17e}, I3 = {:.17e}, Mgl = {:.17e}, period = {:.17e}",
+        top.sys.i1, top.sys.i3, top.sys.mgl, top.period
+    );
+    println!(
+        "{:<10} {:<18} {:>10} {:>8} {:>9} {:>11}",
+        "problem", "method", "error", "steps", "evals", "median µs"
+    );
+    for p in PROBLEMS {
+        for m in methods() {
+            let (err, steps, evals) = run(p, m, top, refs);
+            let t = median_time(|| {
+                black_box(run(black_box(p), black_box(m), top, refs));
+            });
+            println!(
+                "{:<10} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2}",
+                format!("{p:?}"),
+                m.label(),
+                err,
+                steps,
+                evals,
+                t.as_secs_f64() * 1e6
+            );
+        }
+    }
+}
+
+fn main() {
+    let top = HeavyTop::new();
+    let refs = References::new();
+    if std::env::var("PRECESS_TAYLOR_TABLE").as_deref() != Ok("0") {
+        table(&top, &refs);
+    }
+    let mut c = Criterion::default()
+        .sample_size(20)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .configure_from_args();
+    let mut g = c.benchmark_group("jet");
+    let y = [0.3, 0.9, 0.95];
+    let mut coeffs = [[0.0; 3]; 41];
+    g.bench_function("B5 rhs", |b| {
+        b.iter(|| {
+            let mut d = [0.0; 3];
+            System::rhs(&B5, 0.0, black_box(&y), &mut d);
+            d
+        })
+    });
+    for order in [10, 20] {
+        g.bench_function(format!("B5 coefficients order {order}"), |b| {
+            b.iter(|| {
+                B5.coefficients(0.0, black_box(&y), order, &mut coeffs);
+                coeffs[order]
+            })
+        });
+    }
+    g.finish();
+    for p in PROBLEMS {
+        let mut g = c.benchmark_group(format!("taylor/{p:?}"));
+        for m in [
+            Method::Taylor(1e-10),
+            Method::Taylor(1e-15),
+            Method::Dop853(1e-12),
+            Method::Vern9(1e-12),
+        ] {
+            g.bench_function(m.label(), |b| b.iter(|| run(p, black_box(m), &top, &refs)));
+        }
+        g.finish();
+    }
+    c.final_summary();
+}
