@@ -32,6 +32,45 @@ const B5_Y20: [f64; 3] = [
     0.741_412_659_619_995_300_78,
 ];
 
+/// The highest order of the hand-written recurrences.
+const MAX_ORDER: usize = 60;
+
+/// Σ_{j=0}^{k} a_j b_{k−j} for k = a.len() − 1 (the k-th coefficient of a product), with two
+/// accumulators so that the additions do not wait on each other.
+#[inline(always)]
+fn cauchy(a: &[f64], b: &[f64]) -> f64 {
+    let (mut even, mut odd) = (0.0, 0.0);
+    let mut pairs = a.iter().zip(b.iter().rev());
+    while let (Some((x0, y0)), Some((x1, y1))) = (pairs.next(), pairs.next()) {
+        even += x0 * y0;
+        odd += x1 * y1;
+    }
+    if a.len() % 2 == 1
+        && let (Some(x), Some(y)) = (a.last(), b.first())
+    {
+        even += x * y;
+    }
+    even + odd
+}
+
+/// Coefficient series per variable (the layout the Cauchy products want), copied into the
+/// order-major layout of [`TaylorSystem::coefficients`] at the end.
+fn series<const N: usize>(y: &[f64; N]) -> [[f64; MAX_ORDER + 1]; N] {
+    let mut s = [[0.0; MAX_ORDER + 1]; N];
+    for (si, yi) in s.iter_mut().zip(y) {
+        si[0] = *yi;
+    }
+    s
+}
+
+fn write_out<const N: usize>(s: &[[f64; MAX_ORDER + 1]; N], order: usize, c: &mut [[f64; N]]) {
+    for (k, ck) in c.iter_mut().enumerate().take(order + 1) {
+        for (i, v) in ck.iter_mut().enumerate() {
+            *v = s[i][k];
+        }
+    }
+}
+
 /// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2).
 struct B5;
 impl System<3> for B5 {
@@ -41,21 +80,23 @@ impl System<3> for B5 {
 }
 impl TaylorSystem<3> for B5 {
     fn max_order(&self) -> usize {
-        60
+        MAX_ORDER
     }
     fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
-        c[0] = *y;
+        let mut s = series(y);
         for k in 0..order {
-            let [mut p12, mut p02, mut p01] = [0.0; 3];
-            for j in 0..=k {
-                let (a, b) = (c[j], c[k - j]);
-                p12 += a[1] * b[2];
-                p02 += a[0] * b[2];
-                p01 += a[0] * b[1];
-            }
             let d = 1.0 / (k + 1) as f64;
-            c[k + 1] = [p12 * d, -p02 * d, -0.51 * p01 * d];
+            let [a0, a1, a2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
+            let next = [
+                cauchy(a1, a2) * d,
+                -cauchy(a0, a2) * d,
+                -0.51 * cauchy(a0, a1) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
         }
+        write_out(&s, order, c);
     }
 }
 
@@ -79,22 +120,24 @@ impl System<3> for FreeBody {
 }
 impl TaylorSystem<3> for FreeBody {
     fn max_order(&self) -> usize {
-        60
+        MAX_ORDER
     }
     fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
         let a = self.a();
-        c[0] = *y;
+        let mut s = series(y);
         for k in 0..order {
-            let [mut p12, mut p20, mut p01] = [0.0; 3];
-            for j in 0..=k {
-                let (u, v) = (c[j], c[k - j]);
-                p12 += u[1] * v[2];
-                p20 += u[2] * v[0];
-                p01 += u[0] * v[1];
-            }
             let d = 1.0 / (k + 1) as f64;
-            c[k + 1] = [a[0] * p12 * d, a[1] * p20 * d, a[2] * p01 * d];
+            let [m0, m1, m2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
+            let next = [
+                a[0] * cauchy(m1, m2) * d,
+                a[1] * cauchy(m2, m0) * d,
+                a[2] * cauchy(m0, m1) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
         }
+        write_out(&s, order, c);
     }
 }
 
@@ -124,36 +167,34 @@ impl System<6> for EulerPoisson {
 }
 impl TaylorSystem<6> for EulerPoisson {
     fn max_order(&self) -> usize {
-        60
+        MAX_ORDER
     }
     fn coefficients(&self, _t: f64, y: &[f64; 6], order: usize, c: &mut [[f64; 6]]) {
-        let (r, s) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
-        c[0] = *y;
+        let (r, sg) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
+        let mut s = series(y);
         for k in 0..order {
-            // Products w2w3, w3w1, g2w3, g3w2, g3w1, g1w3, g1w2, g2w1.
-            let mut p = [0.0; 8];
-            for j in 0..=k {
-                let (u, v) = (c[j], c[k - j]);
-                p[0] += u[1] * v[2];
-                p[1] += u[2] * v[0];
-                p[2] += u[4] * v[2];
-                p[3] += u[5] * v[1];
-                p[4] += u[5] * v[0];
-                p[5] += u[3] * v[2];
-                p[6] += u[3] * v[1];
-                p[7] += u[4] * v[0];
-            }
             let d = 1.0 / (k + 1) as f64;
-            let ck = c[k];
-            c[k + 1] = [
-                (r * p[0] + s * ck[4]) * d,
-                (-r * p[1] - s * ck[3]) * d,
-                0.0,
-                (p[2] - p[3]) * d,
-                (p[4] - p[5]) * d,
-                (p[6] - p[7]) * d,
+            let [w1, w2, w3, g1, g2, g3] = [
+                &s[0][..=k],
+                &s[1][..=k],
+                &s[2][..=k],
+                &s[3][..=k],
+                &s[4][..=k],
+                &s[5][..=k],
             ];
+            let next = [
+                (r * cauchy(w2, w3) + sg * g2[k]) * d,
+                (-r * cauchy(w3, w1) - sg * g1[k]) * d,
+                0.0,
+                (cauchy(g2, w3) - cauchy(g3, w2)) * d,
+                (cauchy(g3, w1) - cauchy(g1, w3)) * d,
+                (cauchy(g1, w2) - cauchy(g2, w1)) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
         }
+        write_out(&s, order, c);
     }
 }
 
@@ -389,6 +430,10 @@ fn table(top: &HeavyTop, refs: &References) {
     println!(
         "heavy top: I1 = {:.17e}, I3 = {:.17e}, Mgl = {:.17e}, period = {:.17e}",
         top.sys.i1, top.sys.i3, top.sys.mgl, top.period
+    );
+    println!(
+        "free body m(200): I = (3,5,7) {:?}, I = (3,5,9) {:?}",
+        refs.free357, refs.free359
     );
     println!(
         "{:<10} {:<18} {:>10} {:>8} {:>9} {:>11}",
