@@ -116,7 +116,15 @@ fn fixed_order_and_step_converge_at_the_order() {
     let exact = b5_exact(4.0);
     for p in [3, 4, 6] {
         let err = |h: f64| {
-            let s = solve(B5, 0.0, [0.0, 1.0, 1.0], 4.0, &[], TaylorConfig::fixed(p, h)).unwrap();
+            let s = solve(
+                B5,
+                0.0,
+                [0.0, 1.0, 1.0],
+                4.0,
+                &[],
+                TaylorConfig::fixed(p, h),
+            )
+            .unwrap();
             max_err(&s.y, &exact)
         };
         let (e1, e2) = (err(0.1), err(0.05));
@@ -219,7 +227,11 @@ fn flips_near_the_separatrix_are_events_2k_over_lambda_apart() {
             (hit.t - expected).abs() / expected
         );
         assert_relative_eq!(hit.t, expected, max_relative = 1e-12);
-        assert!(hit.state[1].abs() <= 1e-13, "m2 at the flip {}", hit.state[1]);
+        assert!(
+            hit.state[1].abs() <= 1e-13,
+            "m2 at the flip {}",
+            hit.state[1]
+        );
     }
 }
 

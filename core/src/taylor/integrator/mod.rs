@@ -212,7 +212,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let relative = self.cfg.rtol * norm > self.cfg.atol;
-        let eps = if relative { self.cfg.rtol } else { self.cfg.atol };
+        let eps = if relative {
+            self.cfg.rtol
+        } else {
+            self.cfg.atol
+        };
         let p = self.cfg.order_for(eps, self.system_max);
         let Some(c) = self.coeffs.get_mut(..=p) else {
             // order_for never exceeds the order allocated for the tighter tolerance.
@@ -248,7 +252,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let remaining = (t_limit - self.t) - self.t_lo;
         let clamped = natural >= remaining;
         let h = if clamped { remaining } else { natural };
-        if !(h > 0.0) || (!clamped && self.t + h == self.t) {
+        if h <= 0.0 || (!clamped && self.t + h == self.t) {
             return Err(OdeError::StepSizeUnderflow { t: self.t, h });
         }
         let mut y_new = self.y;
