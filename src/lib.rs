@@ -44,6 +44,7 @@ pub mod prelude {
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::top::{
         ChartConfig, ChartError, ChartedTop, EulerianTop, TopChart, TopDynamics, TopError,
     };
