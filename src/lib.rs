@@ -44,7 +44,6 @@ pub mod prelude {
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::top::{
         ChartConfig, ChartError, ChartedTop, EulerianTop, TopChart, TopDynamics, TopError,
     };
@@ -63,6 +62,7 @@ pub mod __private {
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::top::{TopDynamics, TopParameters};
     pub use std::borrow::Cow;
     pub use std::vec;
