@@ -51,8 +51,13 @@ fn interpreted_top() -> TaylorTape<6> {
     let d = scene.derive(&mut a).unwrap();
     let co = d.coords();
     let state: [ExprId; 6] = std::array::from_fn(|k| if k < 3 { co.q[k] } else { co.rates[k - 3] });
-    let rhs: [ExprId; 6] =
-        std::array::from_fn(|k| if k < 3 { co.rates[k] } else { d.accelerations.accel[k - 3] });
+    let rhs: [ExprId; 6] = std::array::from_fn(|k| {
+        if k < 3 {
+            co.rates[k]
+        } else {
+            d.accelerations.accel[k - 3]
+        }
+    });
     TaylorTape::new(&a, state, rhs, None, &[], ORDER).unwrap()
 }
 

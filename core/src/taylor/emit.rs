@@ -28,7 +28,29 @@ pub struct TaylorTokens {
     pub series: usize,
 }
 
+impl TaylorTokens {
+    /// The number of tokens of the body (a delimited group counts its two delimiters): the
+    /// size the compiler parses, for the price reports.
+    pub fn token_count(&self) -> usize {
+        fn count(ts: TokenStream) -> usize {
+            ts.into_iter()
+                .map(|t| match t {
+                    proc_macro2::TokenTree::Group(g) => 2 + count(g.stream()),
+                    _ => 1,
+                })
+                .sum()
+        }
+        count(self.body.clone())
+    }
+}
+
 impl Tape {
+    /// The code [`Tape::to_tokens`] emits up to `max_order`, with every scalar symbol read
+    /// as one field access: its size is the scene's (for the price reports).
+    pub fn emitted(&self, max_order: usize) -> TaylorTokens {
+        self.to_tokens(max_order, &mut |_| quote!(self.p))
+    }
+
     /// Emits the coefficients' body up to the compile-time order bound `max_order`; `symbol`
     /// gives the Rust expression of each symbol read as a scalar (e.g. `self.m`).
     ///
