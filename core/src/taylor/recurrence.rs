@@ -25,7 +25,7 @@ fn folded(c: &[f64], st: usize, a: usize, k: usize, lo: usize) -> f64 {
         acc += x[j] * x[k - j];
     }
     acc *= 2.0;
-    if k % 2 == 0 {
+    if k.is_multiple_of(2) {
         acc += x[k / 2] * x[k / 2];
     }
     acc
