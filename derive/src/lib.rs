@@ -21,6 +21,7 @@ mod keys;
 mod private;
 mod rigid;
 mod symbols;
+mod taylor;
 mod top;
 
 use precess_core::sym::Arena;
