@@ -1,9 +1,10 @@
 //! The Taylor integrator against DOP853 and Vern9 at matched error, on DETEST B5 to t = 20,
 //! the torque-free bodies I = (3, 5, 7) and (3, 5, 9) from m0 = (0, 2, 0.01) to T = 200, and
 //! the heavy top of `examples/heavy_top.rs` over 10 nutation periods with its nutation maxima
-//! as events (in Euler–Poisson form, ω and the vertical γ in body axes: a polynomial system,
-//! so its Taylor recurrences are Cauchy products written by hand here, as are B5's and the
-//! free body's).
+//! as events, twice: in Euler–Poisson form (ω and the vertical γ in body axes: a polynomial
+//! system, so its Taylor recurrences are Cauchy products written by hand here, as are B5's
+//! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
+//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates).
 //!
 //! `cargo bench --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
@@ -198,13 +199,15 @@ impl TaylorSystem<6> for EulerPoisson {
     }
 }
 
-/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm): `examples/heavy_top.rs`.
+/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm): `examples/heavy_top.rs`,
+/// with its generated angle equations and their generated Taylor recurrences to order 20.
 #[derive(RigidBody)]
 #[rigid(
     disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
     cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
     pivot = [0.0, 0.0, 0.0],
 )]
+#[top(gravity = 9.81, taylor = 20)]
 struct SpinningTop;
 
 /// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system,
@@ -248,9 +251,18 @@ fn heavy_top_period<S: Stepper<State = [f64; 6]>>(
     stepper: &mut S,
     t_end: f64,
 ) -> Result<(f64, u64, u64), OdeError> {
+    heavy_top_period_with(stepper, t_end, theta_rate)
+}
+
+/// As [`heavy_top_period`], with θ̇ (up to a positive factor) read by `rate`.
+fn heavy_top_period_with<S: Stepper<State = [f64; 6]>>(
+    stepper: &mut S,
+    t_end: f64,
+    rate: fn(&[f64; 6]) -> f64,
+) -> Result<(f64, u64, u64), OdeError> {
     let out = Run::new(stepper, t_end)
         .sample_none()
-        .event(Event::new("maximum").falling(), |_t, y| theta_rate(y))
+        .event(Event::new("maximum").falling(), |_t, y| rate(y))
         .integrate()?;
     let maxima: Vec<f64> = out
         .events
@@ -271,6 +283,7 @@ enum Problem {
     Free357,
     Free359,
     HeavyTop,
+    TopAngles,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -358,6 +371,32 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             .unwrap();
             ((period - top.period).abs() / top.period, s, e)
         }
+        Problem::TopAngles => {
+            // The generated angle form (ZXZ; θ̇ = y[4]) and its generated recurrences.
+            let t_end = 10.0 * top.period;
+            let y0 = [0.0, 20f64.to_radians(), 0.0, 0.0, 0.0, 150.0];
+            let chart = TopChart::declared(&SpinningTop);
+            let (period, s, e) = match m {
+                Method::Taylor(tol) => heavy_top_period_with(
+                    &mut Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+                Method::Dop853(tol) => heavy_top_period_with(
+                    &mut Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+                Method::Vern9(tol) => heavy_top_period_with(
+                    &mut Vern9::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+            }
+            .unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
     }
 }
 
@@ -420,11 +459,12 @@ fn methods() -> Vec<Method> {
     v
 }
 
-const PROBLEMS: [Problem; 4] = [
+const PROBLEMS: [Problem; 5] = [
     Problem::B5,
     Problem::Free357,
     Problem::Free359,
     Problem::HeavyTop,
+    Problem::TopAngles,
 ];
 
 fn table(top: &HeavyTop, refs: &References) {
@@ -440,7 +480,14 @@ fn table(top: &HeavyTop, refs: &References) {
         "{:<10} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
         "problem", "method", "error", "steps", "evals", "median µs", "min µs"
     );
+    // PRECESS_TAYLOR_PROBLEMS=HeavyTop,TopAngles limits the table to those problems.
+    let only = std::env::var("PRECESS_TAYLOR_PROBLEMS").ok();
     for p in PROBLEMS {
+        if let Some(list) = &only
+            && !list.split(',').any(|name| name == format!("{p:?}"))
+        {
+            continue;
+        }
         for m in methods() {
             let (err, steps, evals) = run(p, m, top, refs);
             let (t, t_min) = median_time(|| {
