@@ -65,6 +65,7 @@ pub mod __private {
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;
+    pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::top::{TopDynamics, TopParameters};
     pub use std::borrow::Cow;
     pub use std::vec;

@@ -194,8 +194,19 @@ pub const TORQUE: &str = "torque";
 /// The angle sequence of the generalised coordinates.
 pub const ANGLES: &str = "angles";
 
+/// The maximum order of the generated Taylor recurrences (`impl TaylorSystem`).
+pub const TAYLOR: &str = "taylor";
+
 /// The keys of `#[top(...)]`, in the order the docs list them.
-pub const TOP_KEYS: &[&str] = &[GRAVITY, BODY_TORQUE, SPACE_TORQUE, DAMPING, TORQUE, ANGLES];
+pub const TOP_KEYS: &[&str] = &[
+    GRAVITY,
+    BODY_TORQUE,
+    SPACE_TORQUE,
+    DAMPING,
+    TORQUE,
+    ANGLES,
+    TAYLOR,
+];
 
 /// `#[free(...)]`: the body as a free body under the declared forces.
 pub const FREE: &str = "free";
@@ -221,6 +232,7 @@ pub const FREE_KEYS: &[&str] = &[
     DAMPING,
     FORCE,
     TORQUE,
+    TAYLOR,
 ];
 /// The force parts of `#[free(...)]`, `name(force = [..], at = [..])`.
 pub const FREE_FORCES: &[&str] = &[BODY_FORCE, SPACE_FORCE];

@@ -22,6 +22,7 @@ mod mechanism;
 mod private;
 mod rigid;
 mod symbols;
+mod taylor;
 mod top;
 
 use precess_core::sym::Arena;

@@ -34,7 +34,8 @@ impl SymbolTokens {
         }
     }
 
-    fn get(&self, s: SymbolId) -> Option<TokenStream> {
+    /// The Rust that reads `s`, if the map knows it.
+    pub fn get(&self, s: SymbolId) -> Option<TokenStream> {
         self.entries
             .iter()
             .find(|(k, _)| *k == s)

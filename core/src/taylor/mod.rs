@@ -4,6 +4,27 @@
 //!
 //! - [`TaylorSystem`] is what the integrator asks of a system: the coefficients
 //!   y⁽ᵏ⁾(t)/k! of the solution through (t, y) up to an order.
+//! - [`Tape`] decomposes a symbolic right-hand side into elementary operations on series,
+//!   each with its automatic-differentiation recurrence; [`TaylorTape`] interprets it at run
+//!   time and [`Tape::to_tokens`] emits it as Rust for the derive macros (`taylor = K`).
+//! - [`Taylor`] steps with them: order and step from the tolerance, dense output from the
+//!   step polynomial, compensated sums; [`solve`] and [`solve_dense`] drive it in one call.
+
+mod emit;
+mod integrator;
+mod interpreted;
+mod recurrence;
+mod tape;
+
+pub use emit::TaylorTokens;
+pub use integrator::{Taylor, TaylorConfig, solve, solve_dense};
+pub use interpreted::{TaylorError, TaylorTape};
+pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};
+
+/// The largest maximum order a [`TaylorTape`] or a `taylor = K` key accepts. Double
+/// precision needs about `−½ ln ε + 1 ≈ 19`; past 100 the coefficient table only costs
+/// memory and time.
+pub const MAX_TAYLOR_ORDER: usize = 100;
 
 /// A system `y' = f(t, y)` on `ℝᴺ` that gives the normalised Taylor coefficients of its
 /// solution, `c_k = y⁽ᵏ⁾(t)/k!` for `k = 0, …, order` (so `c_0 = y`, `c_1 = f(t, y)`).
@@ -47,3 +68,6 @@ impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
         (**self).coefficients(t, y, order, coeffs)
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -31,6 +31,8 @@ pub struct FreeSettings {
     pub force: Option<syn::Path>,
     /// The path of a user torque function (description axes).
     pub torque: Option<syn::Path>,
+    /// The maximum order of the generated Taylor recurrences, if asked for.
+    pub taylor: Option<usize>,
 }
 
 /// Checks the `#[free]` items, if the struct has any attribute. `None` after an error
@@ -58,8 +60,13 @@ pub fn check(
     }
     let mut settings = FreeSettings::default();
     let mut seen: Vec<&Ident> = Vec::new();
+    let mut taylor = None;
     for item in &items.items {
         match item {
+            FreeItem::Setting(kv) if kv.key == keys::TAYLOR && !seen.contains(&&kv.key) => {
+                seen.push(&kv.key);
+                taylor = Some(&kv.value);
+            }
             FreeItem::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
             FreeItem::Force { name, keys } => {
                 if let Some((space, force)) = force_part(ck, name, keys) {
@@ -71,6 +78,13 @@ pub fn check(
                 }
             }
         }
+    }
+    if let Some(value) = taylor {
+        let user = [
+            (keys::FORCE, settings.force.is_some()),
+            (keys::TORQUE, settings.torque.is_some()),
+        ];
+        settings.taylor = crate::taylor::check(ck.cx, value, &user);
     }
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))

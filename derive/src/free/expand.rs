@@ -157,6 +157,19 @@ pub fn expand(
     let mut symbols = parameters.tokens();
     let (scene, preludes) = scene(arena, checked, settings, &frame, &mut symbols);
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
+    let taylor = settings.taylor.map(|order| {
+        let prelude = preludes.for_outputs(arena, &derivation.rhs);
+        crate::taylor::expand(
+            cx,
+            ident,
+            arena,
+            &symbols,
+            &derivation.state,
+            &derivation.rhs,
+            prelude,
+            order,
+        )
+    });
     let low = Lowering::new(cx, ident, symbols);
     let method = Method {
         low: &low,
@@ -195,6 +208,8 @@ pub fn expand(
     };
     let check = check_parameters(parameters, &low, arena, settings);
     Some(quote! {
+        #taylor
+
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::FreeDynamics for #ident {

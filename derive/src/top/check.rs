@@ -27,6 +27,8 @@ pub struct TopSettings {
     pub torque: Option<syn::Path>,
     /// The declared angle sequence.
     pub angles: AngleSequence,
+    /// The maximum order of the generated Taylor recurrences, if asked for.
+    pub taylor: Option<usize>,
 }
 
 /// Checks the `#[top]` items, if the struct has any. `None` after an error (recorded),
@@ -60,7 +62,9 @@ pub fn check(
         damping: None,
         torque: None,
         angles: AngleSequence::Zxz,
+        taylor: None,
     };
+    let mut taylor = None;
     let mut seen: Vec<&Ident> = Vec::new();
     for KeyValue { key, value } in &items.items {
         // Each setting once: two gravities or two dampings would be ambiguous.
@@ -125,6 +129,7 @@ pub fn check(
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
+            Some(keys::TAYLOR) => taylor = Some(value),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
@@ -135,6 +140,10 @@ pub fn check(
                 ),
             ),
         }
+    }
+    if let Some(value) = taylor {
+        let user = [(keys::TORQUE, settings.torque.is_some())];
+        settings.taylor = crate::taylor::check(ck.cx, value, &user);
     }
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))

@@ -140,6 +140,7 @@ pub fn expand(
         }
         scene.user_torque = Some(u);
     }
+    let taylor_symbols = symbols.clone();
     let low = Lowering::new(cx, ident, symbols);
     let methods = match methods(&low, arena, &scene, &user) {
         Ok(methods) => methods,
@@ -165,8 +166,25 @@ pub fn expand(
         jacobian,
         momenta,
         eulerian,
+        lagrangian,
     } = methods;
+    // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
+    let taylor = settings.taylor.map(|order| {
+        let (state, rhs) = lagrangian;
+        crate::taylor::expand(
+            cx,
+            ident,
+            arena,
+            &taylor_symbols,
+            &state,
+            &rhs,
+            TokenStream::new(),
+            order,
+        )
+    });
     Some(quote! {
+        #taylor
+
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::TopDynamics for #ident {
@@ -254,6 +272,8 @@ struct Methods {
     jacobian: TokenStream,
     momenta: TokenStream,
     eulerian: TokenStream,
+    /// The declared chart's state [q, q̇] and right-hand side (q̇, q̈), for `taylor = K`.
+    lagrangian: (Vec<ExprId>, Vec<ExprId>),
 }
 
 /// Derives the scene in both charts and in Eulerian form and lowers every method.
@@ -281,11 +301,20 @@ fn methods(
     };
     let (jacobian, momenta) = declared_chart(low, arena, declared, user);
     let eulerian = eulerian(low, arena, scene, user)?;
+    let c = declared.coords();
+    let state = c.q.iter().chain(&c.rates).copied().collect();
+    let rhs = c
+        .rates
+        .iter()
+        .chain(&declared.accelerations.accel)
+        .copied()
+        .collect();
     Ok(Methods {
         arms,
         jacobian,
         momenta,
         eulerian,
+        lagrangian: (state, rhs),
     })
 }
 

@@ -1,0 +1,553 @@
+//! The Taylor integrator against DOP853 and Vern9 at matched error, on DETEST B5 to t = 20,
+//! the torque-free bodies I = (3, 5, 7) and (3, 5, 9) from m0 = (0, 2, 0.01) to T = 200, and
+//! the heavy top of `examples/heavy_top.rs` over 10 nutation periods with its nutation maxima
+//! as events, twice: in Euler–Poisson form (ω and the vertical γ in body axes: a polynomial
+//! system, so its Taylor recurrences are Cauchy products written by hand here, as are B5's
+//! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
+//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates).
+//!
+//! `cargo bench --bench taylor` prints the table (error against the closed form, steps,
+//! evaluations, the median time of one whole integration over many repeats) and then times a
+//! few configurations with criterion (`-- jet` for the cost of a jet against one evaluation
+//! of f). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
+//! the same problems and tolerances.
+// Reference constants are quoted with all their published digits.
+#![allow(clippy::excessive_precision)]
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::Criterion;
+use precess::exact::FreeBodyExact;
+use precess::ode::{
+    AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
+};
+use precess::prelude::*;
+use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use precess::top::HeavyTopTheory;
+
+/// DETEST B5 y(20), 30-digit reference (Hull et al. 1972).
+const B5_Y20: [f64; 3] = [
+    -0.939_657_079_872_920_396_19,
+    -0.342_117_775_400_074_906_53,
+    0.741_412_659_619_995_300_78,
+];
+
+/// The highest order of the hand-written recurrences.
+const MAX_ORDER: usize = 60;
+
+/// Σ_{j=0}^{k} a_j b_{k−j} for k = a.len() − 1 (the k-th coefficient of a product), with two
+/// accumulators so that the additions do not wait on each other.
+#[inline(always)]
+fn cauchy(a: &[f64], b: &[f64]) -> f64 {
+    let (mut even, mut odd) = (0.0, 0.0);
+    let mut pairs = a.iter().zip(b.iter().rev());
+    while let (Some((x0, y0)), Some((x1, y1))) = (pairs.next(), pairs.next()) {
+        even += x0 * y0;
+        odd += x1 * y1;
+    }
+    if a.len() % 2 == 1
+        && let (Some(x), Some(y)) = (a.last(), b.first())
+    {
+        even += x * y;
+    }
+    even + odd
+}
+
+/// Coefficient series per variable (the layout the Cauchy products want), copied into the
+/// order-major layout of [`TaylorSystem::coefficients`] at the end.
+fn series<const N: usize>(y: &[f64; N]) -> [[f64; MAX_ORDER + 1]; N] {
+    let mut s = [[0.0; MAX_ORDER + 1]; N];
+    for (si, yi) in s.iter_mut().zip(y) {
+        si[0] = *yi;
+    }
+    s
+}
+
+fn write_out<const N: usize>(s: &[[f64; MAX_ORDER + 1]; N], order: usize, c: &mut [[f64; N]]) {
+    for (k, ck) in c.iter_mut().enumerate().take(order + 1) {
+        for (i, v) in ck.iter_mut().enumerate() {
+            *v = s[i][k];
+        }
+    }
+}
+
+/// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2).
+struct B5;
+impl System<3> for B5 {
+    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
+        *d = [y[1] * y[2], -y[0] * y[2], -0.51 * y[0] * y[1]];
+    }
+}
+impl TaylorSystem<3> for B5 {
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+        let mut s = series(y);
+        for k in 0..order {
+            let d = 1.0 / (k + 1) as f64;
+            let [a0, a1, a2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
+            let next = [
+                cauchy(a1, a2) * d,
+                -cauchy(a0, a2) * d,
+                -0.51 * cauchy(a0, a1) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
+        }
+        write_out(&s, order, c);
+    }
+}
+
+/// The torque-free body in body momentum: ṁ = m × (I⁻¹ m) = (a0 m1 m2, a1 m2 m0, a2 m0 m1).
+struct FreeBody([f64; 3]);
+impl FreeBody {
+    fn a(&self) -> [f64; 3] {
+        let i = self.0;
+        [
+            1.0 / i[2] - 1.0 / i[1],
+            1.0 / i[0] - 1.0 / i[2],
+            1.0 / i[1] - 1.0 / i[0],
+        ]
+    }
+}
+impl System<3> for FreeBody {
+    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
+        let a = self.a();
+        *d = [a[0] * m[1] * m[2], a[1] * m[2] * m[0], a[2] * m[0] * m[1]];
+    }
+}
+impl TaylorSystem<3> for FreeBody {
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+        let a = self.a();
+        let mut s = series(y);
+        for k in 0..order {
+            let d = 1.0 / (k + 1) as f64;
+            let [m0, m1, m2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
+            let next = [
+                a[0] * cauchy(m1, m2) * d,
+                a[1] * cauchy(m2, m0) * d,
+                a[2] * cauchy(m0, m1) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
+        }
+        write_out(&s, order, c);
+    }
+}
+
+/// The symmetric heavy top about its fixed tip in Euler–Poisson form, state (ω, γ) in body
+/// axes, γ the upward vertical: I1 ω̇1 = (I1 − I3) ω2 ω3 + Mgl γ2,
+/// I1 ω̇2 = (I3 − I1) ω3 ω1 − Mgl γ1, ω̇3 = 0, γ̇ = γ × ω. cos θ = γ3, and θ̇ has the sign
+/// of γ2 ω1 − γ1 ω2.
+#[derive(Clone, Copy)]
+struct EulerPoisson {
+    i1: f64,
+    i3: f64,
+    mgl: f64,
+}
+impl System<6> for EulerPoisson {
+    fn rhs(&self, _t: f64, y: &[f64; 6], d: &mut [f64; 6]) {
+        let [w1, w2, w3, g1, g2, g3] = *y;
+        let (r, s) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
+        *d = [
+            r * w2 * w3 + s * g2,
+            -r * w3 * w1 - s * g1,
+            0.0,
+            g2 * w3 - g3 * w2,
+            g3 * w1 - g1 * w3,
+            g1 * w2 - g2 * w1,
+        ];
+    }
+}
+impl TaylorSystem<6> for EulerPoisson {
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients(&self, _t: f64, y: &[f64; 6], order: usize, c: &mut [[f64; 6]]) {
+        let (r, sg) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
+        let mut s = series(y);
+        for k in 0..order {
+            let d = 1.0 / (k + 1) as f64;
+            let [w1, w2, w3, g1, g2, g3] = [
+                &s[0][..=k],
+                &s[1][..=k],
+                &s[2][..=k],
+                &s[3][..=k],
+                &s[4][..=k],
+                &s[5][..=k],
+            ];
+            let next = [
+                (r * cauchy(w2, w3) + sg * g2[k]) * d,
+                (-r * cauchy(w3, w1) - sg * g1[k]) * d,
+                0.0,
+                (cauchy(g2, w3) - cauchy(g3, w2)) * d,
+                (cauchy(g3, w1) - cauchy(g1, w3)) * d,
+                (cauchy(g1, w2) - cauchy(g2, w1)) * d,
+            ];
+            for (si, v) in s.iter_mut().zip(next) {
+                si[k + 1] = v;
+            }
+        }
+        write_out(&s, order, c);
+    }
+}
+
+/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm): `examples/heavy_top.rs`,
+/// with its generated angle equations and their generated Taylor recurrences to order 20.
+#[derive(RigidBody)]
+#[rigid(
+    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
+    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 9.81, taylor = 20)]
+struct SpinningTop;
+
+/// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system,
+/// initial state, exact nutation period and the span of 10 periods.
+struct HeavyTop {
+    sys: EulerPoisson,
+    y0: [f64; 6],
+    period: f64,
+}
+
+impl HeavyTop {
+    fn new() -> Self {
+        let top = SpinningTop;
+        let moments = top.principal().moments;
+        let (i1, i3) = (moments[0], moments[2]);
+        let mgl = top.mass() * 9.81 * top.center_of_mass().z;
+        let (theta0, w3) = (20f64.to_radians(), 150.0);
+        let theory = HeavyTopTheory::new(i1, i3, mgl).unwrap();
+        let period = theory
+            .motion_from_angles(&[0.0, theta0, 0.0], &[0.0, 0.0, w3])
+            .unwrap()
+            .nutation_period();
+        // ZXZ (0, θ0, 0): R = Rx(θ0), γ = Rᵀ ẑ = (0, sin θ0, cos θ0).
+        let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
+        Self {
+            sys: EulerPoisson { i1, i3, mgl },
+            y0,
+            period,
+        }
+    }
+}
+
+/// θ̇ up to a positive factor: its falling zeros are the nutation maxima.
+fn theta_rate(y: &[f64; 6]) -> f64 {
+    y[4] * y[0] - y[3] * y[1]
+}
+
+/// The nutation period from the maxima of θ over 10 periods (the first to the last of the
+/// ten) and the work done.
+fn heavy_top_period<S: Stepper<State = [f64; 6]>>(
+    stepper: &mut S,
+    t_end: f64,
+) -> Result<(f64, u64, u64), OdeError> {
+    heavy_top_period_with(stepper, t_end, theta_rate)
+}
+
+/// As [`heavy_top_period`], with θ̇ (up to a positive factor) read by `rate`.
+fn heavy_top_period_with<S: Stepper<State = [f64; 6]>>(
+    stepper: &mut S,
+    t_end: f64,
+    rate: fn(&[f64; 6]) -> f64,
+) -> Result<(f64, u64, u64), OdeError> {
+    let out = Run::new(stepper, t_end)
+        .sample_none()
+        .event(Event::new("maximum").falling(), |_t, y| rate(y))
+        .integrate()?;
+    let maxima: Vec<f64> = out
+        .events
+        .iter()
+        .filter(|h| h.direction == Direction::Falling)
+        .map(|h| h.t)
+        .collect();
+    let period = match maxima.as_slice() {
+        [first, .., last] => (last - first) / (maxima.len() - 1) as f64,
+        _ => f64::NAN,
+    };
+    Ok((period, out.stats.steps, out.stats.rhs_evals))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Problem {
+    B5,
+    Free357,
+    Free359,
+    HeavyTop,
+    TopAngles,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Method {
+    Taylor(f64),
+    Dop853(f64),
+    Vern9(f64),
+}
+
+impl Method {
+    fn label(&self) -> String {
+        match self {
+            Method::Taylor(t) => format!("Taylor tol {t:.0e}"),
+            Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
+            Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
+        }
+    }
+}
+
+/// One whole integration: (final state or period, steps, rhs evaluations).
+fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
+    sys: S,
+    y0: [f64; N],
+    t_end: f64,
+    m: Method,
+) -> ([f64; N], u64, u64) {
+    fn done<St: Stepper<State = [f64; N]>, const N: usize>(
+        mut s: St,
+        t_end: f64,
+    ) -> ([f64; N], u64, u64) {
+        while s.t() < t_end {
+            s.step(t_end).unwrap();
+        }
+        let st = s.stats();
+        (*s.state(), st.steps, st.rhs_evals)
+    }
+    match m {
+        Method::Taylor(tol) => done(
+            Taylor::new(sys, 0.0, y0, TaylorConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+        Method::Dop853(tol) => done(
+            Dop853::new(sys, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+        Method::Vern9(tol) => done(
+            Vern9::new(sys, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+            t_end,
+        ),
+    }
+}
+
+/// Runs `m` on problem `p`: (error against the reference, steps, rhs evaluations).
+fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u64) {
+    let free = |inertia: [f64; 3], exact: &[f64; 3]| {
+        let (y, s, e) = integrate(FreeBody(inertia), [0.0, 2.0, 0.01], 200.0, m);
+        (max_err(&y, exact), s, e)
+    };
+    match p {
+        Problem::B5 => {
+            let (y, s, e) = integrate(B5, [0.0, 1.0, 1.0], 20.0, m);
+            (max_err(&y, &B5_Y20), s, e)
+        }
+        Problem::Free357 => free([3.0, 5.0, 7.0], &refs.free357),
+        Problem::Free359 => free([3.0, 5.0, 9.0], &refs.free359),
+        Problem::HeavyTop => {
+            let t_end = 10.0 * top.period;
+            let (period, s, e) = match m {
+                Method::Taylor(tol) => heavy_top_period(
+                    &mut Taylor::new(top.sys, 0.0, top.y0, TaylorConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+                Method::Dop853(tol) => heavy_top_period(
+                    &mut Dop853::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+                Method::Vern9(tol) => heavy_top_period(
+                    &mut Vern9::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                ),
+            }
+            .unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+        Problem::TopAngles => {
+            // The generated angle form (ZXZ; θ̇ = y[4]) and its generated recurrences.
+            let t_end = 10.0 * top.period;
+            let y0 = [0.0, 20f64.to_radians(), 0.0, 0.0, 0.0, 150.0];
+            let chart = TopChart::declared(&SpinningTop);
+            let (period, s, e) = match m {
+                Method::Taylor(tol) => heavy_top_period_with(
+                    &mut Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
+                        .unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+                Method::Dop853(tol) => heavy_top_period_with(
+                    &mut Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+                Method::Vern9(tol) => heavy_top_period_with(
+                    &mut Vern9::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
+            }
+            .unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+    }
+}
+
+/// The exact torque-free states at T = 200.
+struct References {
+    free357: [f64; 3],
+    free359: [f64; 3],
+}
+
+impl References {
+    fn new() -> Self {
+        let at = |i: [f64; 3]| -> [f64; 3] {
+            FreeBodyExact::new(i, [0.0, 2.0, 0.01])
+                .unwrap()
+                .m_at(200.0)
+                .unwrap()
+                .into()
+        };
+        Self {
+            free357: at([3.0, 5.0, 7.0]),
+            free359: at([3.0, 5.0, 9.0]),
+        }
+    }
+}
+
+fn max_err<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The median and the minimum over 21 batches of the time of one call, each batch at least
+/// 2 ms long (on a loaded machine the minimum is the closer to the unloaded time).
+fn median_time(mut f: impl FnMut()) -> (Duration, Duration) {
+    let start = Instant::now();
+    f();
+    let once = start.elapsed().max(Duration::from_nanos(100));
+    let reps = (Duration::from_millis(2).as_nanos() / once.as_nanos()).max(1) as u32;
+    let mut times: Vec<Duration> = (0..21)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            start.elapsed() / reps
+        })
+        .collect();
+    times.sort();
+    (times[times.len() / 2], times[0])
+}
+
+fn methods() -> Vec<Method> {
+    let tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
+    let mut v: Vec<Method> = tols.iter().map(|&t| Method::Taylor(t)).collect();
+    v.extend([1e-15, 1e-16].map(Method::Taylor));
+    v.extend(tols.map(Method::Dop853));
+    v.extend(tols.map(Method::Vern9));
+    v.push(Method::Vern9(1e-15));
+    v
+}
+
+const PROBLEMS: [Problem; 5] = [
+    Problem::B5,
+    Problem::Free357,
+    Problem::Free359,
+    Problem::HeavyTop,
+    Problem::TopAngles,
+];
+
+fn table(top: &HeavyTop, refs: &References) {
+    println!(
+        "heavy top: I1 = {:.17e}, I3 = {:.17e}, Mgl = {:.17e}, period = {:.17e}",
+        top.sys.i1, top.sys.i3, top.sys.mgl, top.period
+    );
+    println!(
+        "free body m(200): I = (3,5,7) {:?}, I = (3,5,9) {:?}",
+        refs.free357, refs.free359
+    );
+    println!(
+        "{:<10} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
+        "problem", "method", "error", "steps", "evals", "median µs", "min µs"
+    );
+    // PRECESS_TAYLOR_PROBLEMS=HeavyTop,TopAngles limits the table to those problems.
+    let only = std::env::var("PRECESS_TAYLOR_PROBLEMS").ok();
+    for p in PROBLEMS {
+        if let Some(list) = &only
+            && !list.split(',').any(|name| name == format!("{p:?}"))
+        {
+            continue;
+        }
+        for m in methods() {
+            let (err, steps, evals) = run(p, m, top, refs);
+            let (t, t_min) = median_time(|| {
+                black_box(run(black_box(p), black_box(m), top, refs));
+            });
+            println!(
+                "{:<10} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2} {:>9.2}",
+                format!("{p:?}"),
+                m.label(),
+                err,
+                steps,
+                evals,
+                t.as_secs_f64() * 1e6,
+                t_min.as_secs_f64() * 1e6
+            );
+        }
+    }
+}
+
+fn main() {
+    let top = HeavyTop::new();
+    let refs = References::new();
+    if std::env::var("PRECESS_TAYLOR_TABLE").as_deref() != Ok("0") {
+        table(&top, &refs);
+    }
+    let mut c = Criterion::default()
+        .sample_size(20)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .configure_from_args();
+    let mut g = c.benchmark_group("jet");
+    let y = [0.3, 0.9, 0.95];
+    let mut coeffs = [[0.0; 3]; 41];
+    g.bench_function("B5 rhs", |b| {
+        b.iter(|| {
+            let mut d = [0.0; 3];
+            System::rhs(&B5, 0.0, black_box(&y), &mut d);
+            d
+        })
+    });
+    for order in [10, 20] {
+        g.bench_function(format!("B5 coefficients order {order}"), |b| {
+            b.iter(|| {
+                B5.coefficients(0.0, black_box(&y), order, &mut coeffs);
+                coeffs[order]
+            })
+        });
+    }
+    g.finish();
+    for p in PROBLEMS {
+        let mut g = c.benchmark_group(format!("taylor/{p:?}"));
+        for m in [
+            Method::Taylor(1e-10),
+            Method::Taylor(1e-15),
+            Method::Dop853(1e-12),
+            Method::Vern9(1e-12),
+        ] {
+            g.bench_function(m.label(), |b| b.iter(|| run(p, black_box(m), &top, &refs)));
+        }
+        g.finish();
+    }
+    c.final_summary();
+}

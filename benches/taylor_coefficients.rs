@@ -1,0 +1,109 @@
+//! The price of one coefficient evaluation at order 20: the recurrences `taylor = 20`
+//! generates for a heavy top (6 components) and a free body (13), against the same
+//! recurrences interpreted from a tape built at run time ([`TaylorTape`]).
+//!
+//! Run with `cargo bench --bench taylor_coefficients -- --warm-up-time 1 --measurement-time 3`.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use precess::prelude::*;
+use precess::sym::{Arena, ExprId};
+use precess::taylor::{TaylorSystem, TaylorTape};
+use precess::top::TopScene;
+use std::hint::black_box;
+
+/// The heavy top of `examples/heavy_top.rs`.
+#[derive(RigidBody)]
+#[rigid(
+    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
+    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 9.81, taylor = 20)]
+struct SpinningTop;
+
+/// A torque-free body with moments (3, 5, 7), as a free body under gravity.
+#[derive(RigidBody)]
+#[rigid(body(mass = 1.0, center = [0.0, 0.0, 0.0], inertia = [[3.0, 0.0, 0.0], [0.0, 5.0, 0.0], [0.0, 0.0, 7.0]]))]
+#[free(gravity = 9.81, taylor = 20)]
+struct Body357;
+
+const ORDER: usize = 20;
+
+fn interpreted_top() -> TaylorTape<6> {
+    let top = SpinningTop;
+    let mut a = Arena::new();
+    let num = |a: &mut Arena, x: f64| a.float(x).unwrap();
+    let i = top.inertia();
+    let c = top.center_of_mass() - top.reference_point();
+    let inertia = std::array::from_fn(|r| std::array::from_fn(|k| num(&mut a, i[(r, k)])));
+    let center = std::array::from_fn(|k| num(&mut a, c[k]));
+    let scene = TopScene {
+        sequence: AngleSequence::Zxz,
+        inertia,
+        mass: num(&mut a, top.mass()),
+        center,
+        gravity: Some(num(&mut a, 9.81)),
+        body_torque: None,
+        space_torque: None,
+        damping: None,
+        user_torque: None,
+    };
+    let d = scene.derive(&mut a).unwrap();
+    let co = d.coords();
+    let state: [ExprId; 6] = std::array::from_fn(|k| if k < 3 { co.q[k] } else { co.rates[k - 3] });
+    let rhs: [ExprId; 6] = std::array::from_fn(|k| {
+        if k < 3 {
+            co.rates[k]
+        } else {
+            d.accelerations.accel[k - 3]
+        }
+    });
+    TaylorTape::new(&a, state, rhs, None, &[], ORDER).unwrap()
+}
+
+fn interpreted_free() -> TaylorTape<13> {
+    use precess::free::FreeScene;
+    let mut a = Arena::new();
+    let num = |a: &mut Arena, x: f64| a.float(x).unwrap();
+    let mass = num(&mut a, 1.0);
+    let moments = [3.0, 5.0, 7.0].map(|x| num(&mut a, x));
+    let mut scene = FreeScene::new(&mut a, mass, moments);
+    let (z, g) = (a.zero(), num(&mut a, -9.81));
+    scene.gravity = Some([z, z, g]);
+    let d = scene.derive(&mut a).unwrap();
+    TaylorTape::new(&a, d.state, d.rhs, None, &[], ORDER).unwrap()
+}
+
+fn bench(c: &mut Criterion) {
+    let mut group = c.benchmark_group("taylor_coefficients");
+    let y6 = [0.3, 0.5, -0.2, 0.8, -0.4, 150.0];
+    let mut c6 = [[0.0; 6]; ORDER + 1];
+    group.bench_function("top/generated", |b| {
+        b.iter(|| SpinningTop.coefficients(0.0, black_box(&y6), ORDER, &mut c6))
+    });
+    let top = interpreted_top();
+    group.bench_function("top/interpreted", |b| {
+        b.iter(|| top.coefficients(0.0, black_box(&y6), ORDER, &mut c6))
+    });
+    group.bench_function("top/rhs", |b| {
+        b.iter(|| SpinningTop.accel_in(AngleSequence::Zxz, 0.0, black_box(&y6)))
+    });
+    let y13 = [
+        0.0, 0.0, 1.0, 0.5, 0.0, 4.0, 0.9, 0.1, -0.3, 0.2, 0.0, 2.0, 0.01,
+    ];
+    let norm = (y13[6..10].iter().map(|v| v * v).sum::<f64>()).sqrt();
+    let mut y13 = y13;
+    y13[6..10].iter_mut().for_each(|v| *v /= norm);
+    let mut c13 = [[0.0; 13]; ORDER + 1];
+    group.bench_function("free/generated", |b| {
+        b.iter(|| Body357.coefficients(0.0, black_box(&y13), ORDER, &mut c13))
+    });
+    let free = interpreted_free();
+    group.bench_function("free/interpreted", |b| {
+        b.iter(|| free.coefficients(0.0, black_box(&y13), ORDER, &mut c13))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,152 @@
+//! The settings of the Taylor integrator and the Jorba–Zou rules that turn a tolerance into an
+//! order and a step.
+
+use crate::ode::OdeError;
+
+/// Settings of [`Taylor`](super::Taylor). Every field has a documented default
+/// (`TaylorConfig::default()`), so callers override only what they mean.
+///
+/// The tolerances play the part they play in heyoka and TIDES: each step is in the relative
+/// mode, with ε = `rtol` and the coefficients measured against ‖y‖∞, when `rtol·‖y‖∞ > atol`,
+/// and in the absolute mode with ε = `atol` otherwise. The mode's ε gives the order
+/// p = ⌈1 − ½ ln ε⌉ (Jorba & Zou 2005), capped by [`TaylorConfig::max_order`] and by the
+/// system's own [`TaylorSystem::max_order`](crate::taylor::TaylorSystem::max_order).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TaylorConfig {
+    /// Relative tolerance (default 1e-6).
+    pub rtol: f64,
+    /// Absolute tolerance (default 1e-9).
+    pub atol: f64,
+    /// Highest order used (default 40; at least 2). Below the Jorba–Zou order of the
+    /// tolerance the step is shortened to keep the estimated error at ε (see
+    /// [`TaylorConfig::step_factor`]).
+    pub max_order: usize,
+    /// A fixed order instead of the tolerance's (default `None`): for convergence studies.
+    pub order: Option<usize>,
+    /// A fixed step instead of the adaptive one (default `None`): for convergence studies.
+    /// Stop times are still landed on exactly, with a shorter last step.
+    pub fixed_step: Option<f64>,
+    /// Largest step (default +∞).
+    pub h_max: f64,
+    /// Largest number of steps before [`OdeError::MaxStepsExceeded`] (default 100 000). The
+    /// Taylor step is never rejected, so steps and attempts are the same.
+    pub max_steps: u64,
+}
+
+impl Default for TaylorConfig {
+    fn default() -> Self {
+        Self {
+            rtol: 1e-6,
+            atol: 1e-9,
+            max_order: 40,
+            order: None,
+            fixed_step: None,
+            h_max: f64::INFINITY,
+            max_steps: 100_000,
+        }
+    }
+}
+
+impl TaylorConfig {
+    /// The default configuration with the given tolerances.
+    ///
+    /// ```
+    /// let c = precess_core::taylor::TaylorConfig::with_tol(1e-12, 1e-14);
+    /// assert_eq!(c.max_order, 40);
+    /// approx::assert_relative_eq!(c.atol, 1e-14);
+    /// ```
+    pub fn with_tol(rtol: f64, atol: f64) -> Self {
+        Self {
+            rtol,
+            atol,
+            ..Self::default()
+        }
+    }
+
+    /// Fixed order `order` and fixed step `h` (the tolerances are then unused).
+    ///
+    /// ```
+    /// let c = precess_core::taylor::TaylorConfig::fixed(8, 0.1);
+    /// assert_eq!((c.order, c.fixed_step), (Some(8), Some(0.1)));
+    /// ```
+    pub fn fixed(order: usize, h: f64) -> Self {
+        Self {
+            order: Some(order),
+            fixed_step: Some(h),
+            ..Self::default()
+        }
+    }
+
+    /// Checks every field.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidTolerance`], [`OdeError::InvalidStep`] or
+    /// [`OdeError::InvalidParameter`] (`max_order` or `order` below 2) for the first field
+    /// out of range.
+    pub fn validate(&self) -> Result<(), OdeError> {
+        let pos = |v: f64| v.is_finite() && v > 0.0;
+        if !pos(self.rtol) || !pos(self.atol) {
+            return Err(OdeError::InvalidTolerance {
+                rtol: self.rtol,
+                atol: self.atol,
+            });
+        }
+        if let Some(h) = self.fixed_step
+            && !pos(h)
+        {
+            return Err(OdeError::InvalidStep { h });
+        }
+        if self.h_max.is_nan() || self.h_max <= 0.0 {
+            return Err(OdeError::InvalidStep { h: self.h_max });
+        }
+        if self.max_order < 2 {
+            return Err(OdeError::InvalidParameter {
+                name: "max_order",
+                value: self.max_order as f64,
+            });
+        }
+        if let Some(p) = self.order
+            && p < 2
+        {
+            return Err(OdeError::InvalidParameter {
+                name: "order",
+                value: p as f64,
+            });
+        }
+        Ok(())
+    }
+
+    /// The Jorba–Zou order of a tolerance, p = ⌈1 − ½ ln ε⌉, before any cap.
+    ///
+    /// ```
+    /// use precess_core::taylor::TaylorConfig;
+    /// assert_eq!(TaylorConfig::jorba_zou_order(1e-16), 20);
+    /// assert_eq!(TaylorConfig::jorba_zou_order(1e-6), 8);
+    /// ```
+    pub fn jorba_zou_order(eps: f64) -> usize {
+        (1.0 - 0.5 * eps.ln()).ceil().max(2.0) as usize
+    }
+
+    /// The order a step uses at tolerance `eps`, with the caps of the configuration and of
+    /// the system (`system_max`) applied; at least 2 when the system allows it.
+    pub(crate) fn order_for(&self, eps: f64, system_max: usize) -> usize {
+        let wanted = self.order.unwrap_or_else(|| Self::jorba_zou_order(eps));
+        wanted.min(self.max_order).min(system_max)
+    }
+
+    /// The factor κ of the step h = κ·ρ, ρ the radius of convergence estimated from the last
+    /// two coefficients.
+    ///
+    /// At the Jorba–Zou order it is heyoka's and TIDES' e⁻²·e^(−0.7/(p−1)): the truncation
+    /// error ≈ (h/ρ)^(p+1) then stays below ε. At a lower order (capped or fixed) the same
+    /// balance gives κ = ε^(1/(p−1))·e^(−0.7/(p−1)), which is e⁻² again at the rule's order.
+    pub(crate) fn step_factor(eps: f64, order: usize) -> f64 {
+        let pm1 = (order.max(2) - 1) as f64;
+        let damp = (-0.7 / pm1).exp();
+        if order >= Self::jorba_zou_order(eps) {
+            (-2.0f64).exp() * damp
+        } else {
+            (eps.ln() / pm1).exp() * damp
+        }
+    }
+}

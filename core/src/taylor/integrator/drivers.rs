@@ -1,0 +1,139 @@
+//! The Taylor integrator as the rest of precess sees a stepper: [`Stepper`] for
+//! [`Run`](crate::ode::Run), and the one-call drivers in the shape of [`crate::ode::solve`].
+
+use super::{Taylor, TaylorConfig};
+use crate::ode::{OdeError, Solution, Stats, Stepper, check_finite, check_span};
+use crate::taylor::TaylorSystem;
+
+impl<S: TaylorSystem<N>, const N: usize> Stepper for Taylor<S, N> {
+    type State = [f64; N];
+
+    fn t(&self) -> f64 {
+        Taylor::t(self)
+    }
+
+    fn state(&self) -> &[f64; N] {
+        self.y()
+    }
+
+    fn stats(&self) -> Stats {
+        Taylor::stats(self)
+    }
+
+    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        Taylor::step(self, t_limit)
+    }
+
+    fn step_start(&self) -> f64 {
+        self.last_step_start()
+    }
+
+    fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
+        self.dense_at(t)
+    }
+
+    fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        check_finite(&state)?;
+        self.reset_state(t, state);
+        Ok(())
+    }
+}
+
+/// Integrates from `(t0, y0)` to `t_end` with the Taylor integrator, stopping exactly at
+/// each time in `stops` (ascending; those past `t_end` are ignored), as
+/// [`ode::solve`](crate::ode::solve) does for the pairs.
+///
+/// ```
+/// use precess_core::taylor::{TaylorConfig, TaylorSystem, solve};
+/// /// The harmonic oscillator x'' = −x as (x, v): c_{k+1} = (v_k, −x_k)/(k + 1).
+/// struct Oscillator;
+/// impl TaylorSystem<2> for Oscillator {
+///     fn max_order(&self) -> usize { 40 }
+///     fn coefficients(&self, _t: f64, y: &[f64; 2], order: usize, c: &mut [[f64; 2]]) {
+///         c[0] = *y;
+///         for k in 0..order {
+///             let d = (k + 1) as f64;
+///             c[k + 1] = [c[k][1] / d, -c[k][0] / d];
+///         }
+///     }
+/// }
+/// let cfg = TaylorConfig::with_tol(1e-15, 1e-15);
+/// let s = solve(Oscillator, 0.0, [1.0, 0.0], 100.0, &[50.0], cfg)?;
+/// approx::assert_relative_eq!(s.y[0], 100.0f64.cos(), epsilon = 1e-13);
+/// # Ok::<(), precess_core::ode::OdeError>(())
+/// ```
+///
+/// # Errors
+/// Bad input ([`OdeError::EndBeforeStart`], an invalid configuration, non-finite values,
+/// unsorted stops as [`OdeError::StopBeforeCurrent`]) before any work; then the stepping
+/// errors of [`Taylor::step`].
+pub fn solve<S: TaylorSystem<N>, const N: usize>(
+    sys: S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    stops: &[f64],
+    cfg: TaylorConfig,
+) -> Result<Solution<N>, OdeError> {
+    check_span(t0, t_end)?;
+    check_sorted(t0, stops)?;
+    let mut ode = Taylor::new(sys, t0, y0, cfg)?;
+    for &s in stops.iter().filter(|&&s| s < t_end) {
+        ode.advance_to(s)?;
+    }
+    ode.advance_to(t_end)?;
+    Ok(Solution {
+        t: ode.t(),
+        y: *ode.y(),
+        stats: ode.stats(),
+    })
+}
+
+/// Integrates from `(t0, y0)` and writes the state at each of `times` (ascending, ≥ t0),
+/// from the step polynomials, into `out`; the steps are the integrator's own.
+///
+/// # Errors
+/// As [`solve`], and [`OdeError::InvalidParameter`] if `out` is shorter than `times`.
+pub fn solve_dense<S: TaylorSystem<N>, const N: usize>(
+    sys: S,
+    t0: f64,
+    y0: [f64; N],
+    times: &[f64],
+    out: &mut [[f64; N]],
+    cfg: TaylorConfig,
+) -> Result<Stats, OdeError> {
+    check_sorted(t0, times)?;
+    if out.len() < times.len() {
+        return Err(OdeError::InvalidParameter {
+            name: "out.len()",
+            value: out.len() as f64,
+        });
+    }
+    let mut ode = Taylor::new(sys, t0, y0, cfg)?;
+    let t_end = times.last().copied().unwrap_or(t0);
+    for (ti, o) in times.iter().zip(out.iter_mut()) {
+        while ode.t() < *ti {
+            ode.step(t_end)?;
+        }
+        *o = if *ti == t0 { y0 } else { ode.dense_at(*ti)? };
+    }
+    Ok(ode.stats())
+}
+
+/// Checks that `times` are finite, ascending and not before `t0`.
+fn check_sorted(t0: f64, times: &[f64]) -> Result<(), OdeError> {
+    let mut last = t0;
+    for &s in times {
+        if !s.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: s });
+        }
+        if s < last {
+            return Err(OdeError::StopBeforeCurrent { stop: s, t: last });
+        }
+        last = s;
+    }
+    Ok(())
+}

@@ -1,0 +1,352 @@
+//! The adaptive Taylor integrator: each step computes the normalised Taylor coefficients of
+//! the solution at the step's start (a [`TaylorSystem`]), chooses order and step from the
+//! tolerance by the Jorba–Zou rules, and sums the step polynomial.
+//!
+//! - Order p = ⌈1 − ½ ln ε⌉ and step h = e⁻²·e^(−0.7/(p−1))·ρ, ρ = min over k ∈ {p−1, p} of
+//!   (s/‖c_k‖∞)^(1/k), with s = ‖y‖∞ in the relative mode and 1 in the absolute one (as heyoka
+//!   and TIDES do; see [`TaylorConfig`]). No step is rejected: the error estimate comes before
+//!   the step, from the coefficients the step needs anyway.
+//! - The step polynomial Σ c_k θᵏ is summed by Horner for the increment, and the increment is
+//!   added to the state with Kahan's compensated summation, the time too: rounding does not
+//!   gather over millions of steps.
+//! - Dense output inside the last step is the same polynomial at θ = t − t_start: no extra
+//!   evaluation, the accuracy of the step itself. Events of [`Run`](crate::ode::Run) are
+//!   located on it.
+
+mod config;
+mod drivers;
+
+pub use config::TaylorConfig;
+pub use drivers::{solve, solve_dense};
+
+use super::TaylorSystem;
+use crate::ode::{OdeError, Stats, check_finite};
+
+/// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
+///
+/// Owns its coefficient storage (allocated once, for the highest order the tolerances can
+/// ask), so stepping never allocates. It implements [`Stepper`](crate::ode::Stepper):
+/// [`Run`](crate::ode::Run) gives it samples, trajectories and events.
+///
+/// [`Stats::rhs_evals`] counts each computation of the coefficients to order p (a *jet*) as
+/// p right-hand-side evaluations, so that work counts compare with the Runge–Kutta pairs';
+/// [`Taylor::jets`] counts the jets themselves. The recurrence of a product costs k + 1
+/// multiply-adds at order k, so a jet costs about p²/2 products per product of f while its
+/// linear parts cost p; the measured ratio (jet time over one evaluation of f, both
+/// hand-written, on B5) is in `docs/taylor-integrator.md`, with the command that measures it.
+///
+/// ```
+/// use precess_core::taylor::{Taylor, TaylorConfig, TaylorSystem};
+/// /// y' = −y: c_k = (−1)ᵏ y/k!.
+/// struct Decay;
+/// impl TaylorSystem<1> for Decay {
+///     fn max_order(&self) -> usize { 40 }
+///     fn coefficients(&self, _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+///         c[0] = *y;
+///         for k in 1..=order {
+///             c[k][0] = -c[k - 1][0] / k as f64;
+///         }
+///     }
+/// }
+/// let mut ode = Taylor::new(Decay, 0.0, [1.0], TaylorConfig::with_tol(1e-15, 1e-15))?;
+/// ode.advance_to(10.0)?;
+/// approx::assert_relative_eq!(ode.y()[0], (-10.0f64).exp(), max_relative = 1e-14);
+/// # Ok::<(), precess_core::ode::OdeError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Taylor<S, const N: usize> {
+    sys: S,
+    cfg: TaylorConfig,
+    /// The highest order the system computes.
+    system_max: usize,
+    /// Time as an unevaluated sum t + t_lo.
+    t: f64,
+    t_lo: f64,
+    y: [f64; N],
+    /// Kahan compensation of y: the rounding of the last additions, to subtract next time.
+    y_comp: [f64; N],
+    /// c_k of the last step, k = 0, …, `last_order`.
+    coeffs: Vec<[f64; N]>,
+    last: LastStep<N>,
+    stats: Stats,
+    jets: u64,
+}
+
+/// What the dense output needs of the last step.
+#[derive(Debug, Clone, Copy)]
+struct LastStep<const N: usize> {
+    t: f64,
+    t_lo: f64,
+    y: [f64; N],
+    y_comp: [f64; N],
+    h: f64,
+    order: usize,
+}
+
+impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
+    /// Starts at `(t0, y0)`; validates everything before any work.
+    ///
+    /// # Errors
+    /// An invalid configuration ([`TaylorConfig::validate`]), a system whose
+    /// [`TaylorSystem::max_order`] is below 2 ([`OdeError::InvalidParameter`] naming
+    /// `TaylorSystem::max_order`), a non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
+    /// ([`OdeError::NonFiniteInitialState`]).
+    pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: TaylorConfig) -> Result<Self, OdeError> {
+        cfg.validate()?;
+        if !t0.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t0 });
+        }
+        check_finite(&y0)?;
+        let system_max = sys.max_order();
+        if system_max < 2 {
+            return Err(OdeError::InvalidParameter {
+                name: "TaylorSystem::max_order",
+                value: system_max as f64,
+            });
+        }
+        // The tighter tolerance asks the highest order.
+        let highest = cfg.order_for(cfg.rtol.min(cfg.atol), system_max);
+        Ok(Self {
+            sys,
+            cfg,
+            system_max,
+            t: t0,
+            t_lo: 0.0,
+            y: y0,
+            y_comp: [0.0; N],
+            coeffs: vec![[0.0; N]; highest + 1],
+            last: LastStep {
+                t: t0,
+                t_lo: 0.0,
+                y: y0,
+                y_comp: [0.0; N],
+                h: 0.0,
+                order: 0,
+            },
+            stats: Stats::default(),
+            jets: 0,
+        })
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Current state.
+    pub fn y(&self) -> &[f64; N] {
+        &self.y
+    }
+
+    /// Work done so far (a jet of order p counts as p evaluations).
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// Computations of the Taylor coefficients so far (one per step).
+    pub fn jets(&self) -> u64 {
+        self.jets
+    }
+
+    /// The system being integrated.
+    pub fn system(&self) -> &S {
+        &self.sys
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &TaylorConfig {
+        &self.cfg
+    }
+
+    /// Order and size of the last step (`(0, 0.0)` before any step and after a restart).
+    pub fn last_step(&self) -> (usize, f64) {
+        (self.last.order, self.last.h)
+    }
+
+    /// Start of the last step: dense output covers `[last_step_start, t]`.
+    pub fn last_step_start(&self) -> f64 {
+        self.last.t
+    }
+
+    /// Puts the integrator at `(t, y)` (the caller checks the values): no dense output
+    /// before it, compensations cleared.
+    pub(crate) fn reset_state(&mut self, t: f64, y: [f64; N]) {
+        (self.t, self.t_lo, self.y, self.y_comp) = (t, 0.0, y, [0.0; N]);
+        self.last = LastStep {
+            t,
+            t_lo: 0.0,
+            y,
+            y_comp: [0.0; N],
+            h: 0.0,
+            order: 0,
+        };
+    }
+
+    /// Takes one step that does not pass `t_limit`, landing on it exactly when the natural
+    /// step would reach it.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_limit`,
+    /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::MaxStepsExceeded`],
+    /// [`OdeError::NonFiniteState`] for non-finite coefficients or state,
+    /// [`OdeError::StepSizeUnderflow`] when the step no longer changes t. The state is left
+    /// as it was on error.
+    pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        if !t_limit.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_limit });
+        }
+        if t_limit < self.t {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_limit,
+                t: self.t,
+            });
+        }
+        if t_limit == self.t {
+            return Ok(());
+        }
+        if self.stats.steps >= self.cfg.max_steps {
+            return Err(OdeError::MaxStepsExceeded {
+                t: self.t,
+                max_steps: self.cfg.max_steps,
+            });
+        }
+        let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let relative = self.cfg.rtol * norm > self.cfg.atol;
+        let eps = if relative {
+            self.cfg.rtol
+        } else {
+            self.cfg.atol
+        };
+        let p = self.cfg.order_for(eps, self.system_max);
+        let Some(c) = self.coeffs.get_mut(..=p) else {
+            // order_for never exceeds the order allocated for the tighter tolerance.
+            return Err(OdeError::InvalidParameter {
+                name: "order",
+                value: p as f64,
+            });
+        };
+        self.sys.coefficients(self.t, &self.y, p, c);
+        self.jets += 1;
+        self.stats.rhs_evals += p as u64;
+        if c.iter().any(|ck| ck.iter().any(|v| !v.is_finite())) {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        let natural = match self.cfg.fixed_step {
+            Some(h) => h,
+            None => {
+                let scale = if relative { norm } else { 1.0 };
+                let radius = [p - 1, p]
+                    .iter()
+                    .map(|&k| {
+                        let ck = c[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                        (scale / ck).powf(1.0 / k as f64)
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                TaylorConfig::step_factor(eps, p) * radius
+            }
+        }
+        .min(self.cfg.h_max);
+        if natural.is_nan() {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        let remaining = (t_limit - self.t) - self.t_lo;
+        let clamped = natural >= remaining;
+        let h = if clamped { remaining } else { natural };
+        if h <= 0.0 || (!clamped && self.t + h == self.t) {
+            return Err(OdeError::StepSizeUnderflow { t: self.t, h });
+        }
+        let mut y_new = self.y;
+        let mut comp_new = self.y_comp;
+        for i in 0..N {
+            // Horner for the increment Σ_{k≥1} c_k hᵏ, then a compensated addition.
+            let mut s = c[p][i];
+            for ck in c[1..p].iter().rev() {
+                s = s * h + ck[i];
+            }
+            let inc = s * h - comp_new[i];
+            let sum = y_new[i] + inc;
+            comp_new[i] = (sum - y_new[i]) - inc;
+            y_new[i] = sum;
+        }
+        if y_new.iter().any(|v| !v.is_finite()) {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        self.last = LastStep {
+            t: self.t,
+            t_lo: self.t_lo,
+            y: self.y,
+            y_comp: self.y_comp,
+            h,
+            order: p,
+        };
+        if clamped {
+            (self.t, self.t_lo) = (t_limit, 0.0);
+        } else {
+            // Two-sum of t + h, its rounding kept in t_lo.
+            let s = self.t + h;
+            let b = s - self.t;
+            let err = (self.t - (s - b)) + (h - b);
+            let lo = self.t_lo + err;
+            let hi = s + lo;
+            (self.t, self.t_lo) = (hi, lo - (hi - s));
+        }
+        self.y = y_new;
+        self.y_comp = comp_new;
+        self.stats.steps += 1;
+        Ok(())
+    }
+
+    /// Steps until `t == t_stop` exactly; no step crosses `t_stop`.
+    ///
+    /// # Errors
+    /// As [`Taylor::step`].
+    pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
+        if !t_stop.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_stop });
+        }
+        if t_stop < self.t {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_stop,
+                t: self.t,
+            });
+        }
+        while self.t < t_stop {
+            self.step(t_stop)?;
+        }
+        Ok(())
+    }
+
+    /// The solution at `t` inside the last step, from the step's own polynomial (no
+    /// evaluation of the system).
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`], [`OdeError::OutsideLastStep`].
+    pub fn dense_at(&self, t: f64) -> Result<[f64; N], OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        if !(t >= self.last.t && t <= self.t) {
+            return Err(OdeError::OutsideLastStep {
+                t,
+                t_prev: self.last.t,
+                t_now: self.t,
+            });
+        }
+        if t == self.t || self.last.order == 0 {
+            return Ok(self.y);
+        }
+        let theta = ((t - self.last.t) - self.last.t_lo).clamp(0.0, self.last.h);
+        let p = self.last.order;
+        let mut out = self.last.y;
+        if let Some(c) = self.coeffs.get(..=p) {
+            for (i, o) in out.iter_mut().enumerate() {
+                let mut s = c[p][i];
+                for ck in c[1..p].iter().rev() {
+                    s = s * theta + ck[i];
+                }
+                *o += s * theta - self.last.y_comp[i];
+            }
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,229 @@
+//! [`TaylorTape`]: the recurrences of any symbolic system, interpreted at run time.
+
+use std::cell::RefCell;
+
+use thiserror::Error;
+
+use super::recurrence;
+use super::tape::{ScalarOp, Tape, Value};
+use super::{MAX_TAYLOR_ORDER, TaylorSystem};
+use crate::codegen::{BindingError, Bindings, Program};
+use crate::sym::{Arena, ExprId};
+
+/// Why a [`TaylorTape`] could not be built.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TaylorError {
+    /// A state entry that is not a bare symbol (a coordinate, a rate, an input).
+    #[error("state entry {index} is not a bare symbol")]
+    StateNotASymbol {
+        /// Its position in the state.
+        index: usize,
+    },
+    /// A maximum order outside `1 ..= MAX_TAYLOR_ORDER`.
+    #[error("maximum Taylor order {order} is outside 1..={max}")]
+    Order {
+        /// The order asked for.
+        order: usize,
+        /// The largest order allowed ([`MAX_TAYLOR_ORDER`]).
+        max: usize,
+    },
+    /// A parameter name the right-hand side does not read.
+    #[error("unknown parameter `{name}` (the right-hand side reads: {known})")]
+    UnknownParameter {
+        /// The name given.
+        name: String,
+        /// The parameters read, comma-separated.
+        known: String,
+    },
+    /// A parameter the right-hand side reads that was given no value.
+    #[error("parameter `{name}` is not set (the right-hand side reads: {known})")]
+    UnsetParameter {
+        /// The parameter left out.
+        name: String,
+        /// The parameters read, comma-separated.
+        known: String,
+    },
+    /// NaN or ±∞ for a parameter.
+    #[error("parameter `{name}` = {value} is not finite")]
+    NonFinite {
+        /// The parameter.
+        name: String,
+        /// The value given.
+        value: f64,
+    },
+    /// The right-hand side reads an input that is neither state, time nor parameter.
+    #[error("the right-hand side reads the input `{name}`, which is not in the state")]
+    RunTimeInput {
+        /// The input's name.
+        name: String,
+    },
+}
+
+impl From<BindingError> for TaylorError {
+    fn from(e: BindingError) -> Self {
+        match e {
+            BindingError::UnknownParameter { name, known } => {
+                TaylorError::UnknownParameter { name, known }
+            }
+            BindingError::UnsetParameter { name, known } => {
+                TaylorError::UnsetParameter { name, known }
+            }
+            BindingError::NonFinite { name, value } => TaylorError::NonFinite { name, value },
+            BindingError::RunTimeInput { name } => TaylorError::RunTimeInput { name },
+        }
+    }
+}
+
+/// The Taylor coefficients of `y' = f(t, y)` for a right-hand side given as expressions,
+/// computed by interpreting its [`Tape`].
+///
+/// Parameters are bound once, at construction; a call allocates nothing (the coefficient
+/// table, `series × (max_order + 1)` values, is sized at construction and reused, so a
+/// `TaylorTape` is not `Sync`: give each thread its own).
+///
+/// # Examples
+/// The harmonic oscillator `x' = v`, `v' = −ω² x` from `x = 1`, `v = 0`: `x = cos ωt`.
+/// ```
+/// use precess_core::sym::Arena;
+/// use precess_core::taylor::{TaylorSystem, TaylorTape};
+/// let mut a = Arena::new();
+/// let x = a.coordinate("x");
+/// let v = a.coordinate("v");
+/// let w = a.parameter("omega");
+/// let w2 = a.mul(w, w);
+/// let ax = a.mul(w2, x);
+/// let acc = a.neg(ax);
+/// let tape = TaylorTape::new(&a, [x, v], [v, acc], None, &[("omega", 2.0)], 10).unwrap();
+/// let mut c = [[0.0; 2]; 5];
+/// tape.coefficients(0.0, &[1.0, 0.0], 4, &mut c);
+/// approx::assert_relative_eq!(c[2][0], -2.0); // −ω²/2!
+/// approx::assert_relative_eq!(c[4][0], 16.0 / 24.0); // ω⁴/4!
+/// ```
+#[derive(Debug)]
+pub struct TaylorTape<const N: usize> {
+    tape: Tape,
+    scalars: Vec<f64>,
+    max_order: usize,
+    table: RefCell<Vec<f64>>,
+}
+
+impl<const N: usize> TaylorTape<N> {
+    /// The recurrences of `y' = rhs(t, y)` for the state symbols `state`, with `time` the
+    /// time symbol if `rhs` reads one, parameters bound by name from `values`, up to
+    /// `max_order`.
+    ///
+    /// # Errors
+    /// [`TaylorError::StateNotASymbol`], [`TaylorError::Order`], then the binding errors
+    /// (an unknown, unset or non-finite parameter, an input outside the state).
+    pub fn new(
+        arena: &Arena,
+        state: [ExprId; N],
+        rhs: [ExprId; N],
+        time: Option<ExprId>,
+        values: &[(&str, f64)],
+        max_order: usize,
+    ) -> Result<Self, TaylorError> {
+        let mut symbols = Vec::with_capacity(N + 1);
+        for (index, &e) in state.iter().enumerate() {
+            symbols.push(
+                arena
+                    .as_symbol(e)
+                    .ok_or(TaylorError::StateNotASymbol { index })?,
+            );
+        }
+        if !(1..=MAX_TAYLOR_ORDER).contains(&max_order) {
+            return Err(TaylorError::Order {
+                order: max_order,
+                max: MAX_TAYLOR_ORDER,
+            });
+        }
+        let time = time.and_then(|t| arena.as_symbol(t));
+        let program = Program::lower(arena, &rhs);
+        let tape = Tape::from_program(&program, &symbols, time);
+        symbols.extend(time);
+        // Bindings judges the names and values; the values are then read here by name.
+        Bindings::new(arena, std::slice::from_ref(&program), &symbols, values)?;
+        let value_of = |s| {
+            let name = &arena.symbol(s).name;
+            values
+                .iter()
+                .rev()
+                .find(|(n, _)| n == name)
+                .map_or(f64::NAN, |&(_, v)| v)
+        };
+        let mut scalars: Vec<f64> = Vec::with_capacity(tape.scalars.len());
+        for op in &tape.scalars {
+            let x = |i: u32| scalars[i as usize];
+            let v = match *op {
+                ScalarOp::Const(c) => c,
+                ScalarOp::Symbol(s) => value_of(s),
+                ScalarOp::Add(a, b) => x(a) + x(b),
+                ScalarOp::Sub(a, b) => x(a) - x(b),
+                ScalarOp::Mul(a, b) => x(a) * x(b),
+                ScalarOp::Div(a, b) => x(a) / x(b),
+                ScalarOp::Neg(a) => -x(a),
+                ScalarOp::Sqrt(a) => x(a).sqrt(),
+                ScalarOp::Sin(a) => x(a).sin(),
+                ScalarOp::Cos(a) => x(a).cos(),
+            };
+            scalars.push(v);
+        }
+        let stride = max_order + 1;
+        let mut table = vec![0.0; tape.series_count() * stride];
+        // The time series is t + τ: its order-1 coefficient is one, the higher ones zero.
+        if let Some(ti) = tape.time() {
+            table[ti as usize * stride + 1] = 1.0;
+        }
+        Ok(TaylorTape {
+            tape,
+            scalars,
+            max_order,
+            table: RefCell::new(table),
+        })
+    }
+
+    /// The decomposed right-hand side.
+    pub fn tape(&self) -> &Tape {
+        &self.tape
+    }
+}
+
+impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
+    fn max_order(&self) -> usize {
+        self.max_order
+    }
+
+    fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]) {
+        let Some(top) = coeffs.len().checked_sub(1) else {
+            return;
+        };
+        let order = order.min(self.max_order).min(top);
+        let st = self.max_order + 1;
+        let mut table = self.table.borrow_mut();
+        let c = table.as_mut_slice();
+        for (i, &yi) in y.iter().enumerate() {
+            c[i * st] = yi;
+        }
+        if let Some(ti) = self.tape.time() {
+            c[ti as usize * st] = t;
+        }
+        coeffs[0] = *y;
+        // The steps at order k give f's coefficient k, which only order k + 1 reads: the
+        // last order needs none.
+        for k in 0..order {
+            for s in &self.tape.steps {
+                recurrence::step(c, st, &self.scalars, s, k);
+            }
+            let inv = 1.0 / (k + 1) as f64;
+            for (i, out) in self.tape.outputs.iter().enumerate() {
+                let fk = match *out {
+                    Value::Series(x) => c[x as usize * st + k],
+                    Value::Scalar(x) if k == 0 => self.scalars[x as usize],
+                    Value::Scalar(_) => 0.0,
+                };
+                c[i * st + k + 1] = fk * inv;
+                coeffs[k + 1][i] = fk * inv;
+            }
+        }
+    }
+}

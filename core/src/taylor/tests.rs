@@ -1,0 +1,141 @@
+//! Each recurrence against the closed-form series of a scalar equation that exercises it.
+
+use approx::assert_relative_eq;
+
+use super::{SeriesOp, TaylorError, TaylorSystem, TaylorTape};
+use crate::sym::{Arena, ExprId};
+
+/// The coefficients of the scalar `x' = f(t, x)` from `x(t0) = x0`, up to `order`.
+fn coefficients(
+    build: impl FnOnce(&mut Arena, ExprId, ExprId) -> ExprId,
+    t0: f64,
+    x0: f64,
+    order: usize,
+) -> Vec<f64> {
+    let mut a = Arena::new();
+    let x = a.coordinate("x");
+    let t = a.time();
+    let rhs = build(&mut a, x, t);
+    let values: &[(&str, f64)] = match a.find_parameter("k") {
+        Some(_) => &[("k", 0.75)],
+        None => &[],
+    };
+    let tape = TaylorTape::new(&a, [x], [rhs], Some(t), values, 30).unwrap();
+    let mut c = vec![[0.0]; order + 1];
+    tape.coefficients(t0, &[x0], order, &mut c);
+    c.into_iter().map(|[v]| v).collect()
+}
+
+#[test]
+fn square_gives_the_geometric_series() {
+    // x' = x², x(0) = a: x = a/(1 − a t), c_k = a^{k+1}.
+    let c = coefficients(|a, x, _| a.mul(x, x), 0.0, 0.7, 20);
+    for (k, ck) in c.iter().enumerate() {
+        assert_relative_eq!(*ck, 0.7f64.powi(k as i32 + 1), max_relative = 1e-14);
+    }
+}
+
+#[test]
+fn scaling_by_a_parameter_gives_the_exponential() {
+    // x' = k x: c_j = x0 k^j / j!.
+    let c = coefficients(
+        |a, x, _| {
+            let k = a.parameter("k");
+            a.mul(k, x)
+        },
+        0.0,
+        2.0,
+        20,
+    );
+    let mut expect = 2.0;
+    for (j, cj) in c.iter().enumerate() {
+        if j > 0 {
+            expect *= 0.75 / j as f64;
+        }
+        assert_relative_eq!(*cj, expect, max_relative = 1e-14);
+    }
+}
+
+#[test]
+fn quotient_and_square_root_match_their_closed_forms() {
+    // x' = 1/x, x(0) = 1: x = √(1 + 2t), c_k = binom(1/2, k) 2^k.
+    let c = coefficients(
+        |a, x, _| {
+            let one = a.one();
+            a.div(one, x).unwrap()
+        },
+        0.0,
+        1.0,
+        20,
+    );
+    let mut b = 1.0;
+    for (k, ck) in c.iter().enumerate() {
+        if k > 0 {
+            b *= (0.5 - (k - 1) as f64) / k as f64 * 2.0;
+        }
+        assert_relative_eq!(*ck, b, max_relative = 1e-13);
+    }
+    // x' = √x, x(0) = 1: x = (1 + t/2)², c = (1, 1, 1/4, 0, …).
+    let c = coefficients(|a, x, _| a.sqrt(x).unwrap(), 0.0, 1.0, 12);
+    assert_relative_eq!(c[1], 1.0, max_relative = 1e-15);
+    assert_relative_eq!(c[2], 0.25, max_relative = 1e-15);
+    for ck in &c[3..] {
+        assert!(ck.abs() < 1e-15, "{c:?}");
+    }
+}
+
+#[test]
+fn sine_and_cosine_of_time_and_state() {
+    // x' = cos t: x = sin t + const, from t0 = 0.3.
+    let t0: f64 = 0.3;
+    let c = coefficients(|a, _, t| a.cos(t), t0, 0.0, 16);
+    let mut fact = 1.0;
+    for (k, ck) in c.iter().enumerate().skip(1) {
+        fact *= k as f64;
+        // d^k sin t/dt^k = sin(t + kπ/2).
+        let d = (t0 + k as f64 * std::f64::consts::FRAC_PI_2).sin();
+        assert_relative_eq!(*ck, d / fact, max_relative = 1e-12, epsilon = 1e-18);
+    }
+    // x' = sin x from x(0) = π/2: x = 2 atan(eᵗ), whose series is x = π/2 + t − t³/6 + t⁵/24 − 61 t⁷/5040.
+    let c = coefficients(|a, x, _| a.sin(x), 0.0, std::f64::consts::FRAC_PI_2, 7);
+    let expect = [1.0, 0.0, -1.0 / 6.0, 0.0, 1.0 / 24.0, 0.0, -61.0 / 5040.0];
+    for (ck, e) in c[1..].iter().zip(expect) {
+        assert_relative_eq!(*ck, e, epsilon = 1e-15);
+    }
+}
+
+#[test]
+fn a_product_with_a_constant_is_a_scaling_and_sin_cos_a_pair() {
+    let mut a = Arena::new();
+    let x = a.coordinate("x");
+    let v = a.coordinate("v");
+    let k = a.parameter("k");
+    let kx = a.mul(k, x);
+    let s = a.sin(x);
+    let acc = a.add(kx, s);
+    let tape = TaylorTape::new(&a, [x, v], [v, acc], None, &[("k", 1.0)], 20).unwrap();
+    let steps: Vec<SeriesOp> = tape.tape().steps().iter().map(|s| s.op).collect();
+    assert!(steps.iter().any(|op| matches!(op, SeriesOp::Scale(..))));
+    assert!(steps.iter().any(|op| matches!(op, SeriesOp::SinCos(_))));
+    assert!(!steps.iter().any(|op| matches!(op, SeriesOp::Mul(..))));
+}
+
+#[test]
+fn bad_input_is_refused_with_the_numbers() {
+    let mut a = Arena::new();
+    let x = a.coordinate("x");
+    let k = a.parameter("k");
+    let rhs = a.mul(k, x);
+    let e = TaylorTape::new(&a, [x], [rhs], None, &[("k", 1.0)], 0).unwrap_err();
+    assert_eq!(e, TaylorError::Order { order: 0, max: 100 });
+    let e = TaylorTape::new(&a, [x], [rhs], None, &[], 20).unwrap_err();
+    assert!(matches!(e, TaylorError::UnsetParameter { ref name, .. } if name == "k"));
+    let e = TaylorTape::new(&a, [x], [rhs], None, &[("k", f64::NAN)], 20).unwrap_err();
+    assert!(matches!(e, TaylorError::NonFinite { .. }));
+    let e = TaylorTape::new(&a, [rhs], [rhs], None, &[("k", 1.0)], 20).unwrap_err();
+    assert_eq!(e, TaylorError::StateNotASymbol { index: 0 });
+    let u = a.input("u");
+    let rhs = a.mul(u, x);
+    let e = TaylorTape::new(&a, [x], [rhs], None, &[], 20).unwrap_err();
+    assert!(matches!(e, TaylorError::RunTimeInput { .. }));
+}

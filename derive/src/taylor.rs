@@ -1,0 +1,103 @@
+//! The `taylor = K` key of `#[top(...)]` and `#[free(...)]`: its check, and the
+//! `impl TaylorSystem<N>` emitted from the scene's right-hand side through precess-core's
+//! Taylor tape (`precess_core::taylor::Tape::to_tokens`), so the generated and the
+//! interpreted recurrences are one decomposition. Scenes without the key emit nothing here.
+
+use precess_core::sym::{Arena, ExprId};
+use precess_core::taylor::{MAX_TAYLOR_ORDER, Tape};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::{Expr, ExprLit, Ident, Lit};
+
+use crate::ctxt::Ctxt;
+use crate::keys;
+use crate::private::Private;
+use crate::symbols::SymbolTokens;
+
+/// The maximum order of `taylor = K`: an integer literal in `1 ..= MAX_TAYLOR_ORDER`, and no
+/// user function among `user_fns` (`(key, declared)`): a function's value has no Taylor
+/// coefficients the recurrences could know. `None` after recording the error on `value`.
+pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize> {
+    let order = match value {
+        Expr::Lit(ExprLit {
+            lit: Lit::Int(i), ..
+        }) => i.base10_parse::<usize>().ok(),
+        _ => None,
+    };
+    let Some(order) = order.filter(|k| (1..=MAX_TAYLOR_ORDER).contains(k)) else {
+        cx.error_spanned_by(
+            value,
+            format!(
+                "`{}` expects the maximum Taylor order, an integer from 1 to {MAX_TAYLOR_ORDER} (about 20 reaches double precision)",
+                keys::TAYLOR
+            ),
+        );
+        return None;
+    };
+    if let Some((name, _)) = user_fns.iter().find(|(_, declared)| *declared) {
+        cx.error_spanned_by(
+            value,
+            format!(
+                "`{}` cannot be combined with `{name} = …`: the Taylor recurrences need the right-hand side as expressions, and a user function's derivatives are unknown",
+                keys::TAYLOR
+            ),
+        );
+        return None;
+    }
+    Some(order)
+}
+
+/// `impl TaylorSystem<N> for ident` with `N = state.len()`: `y' = rhs(y)` over the state
+/// symbols, the other symbols read through `symbols` after `prelude` (statements binding
+/// what those read). A symbol the map does not know is an internal error spanned on
+/// `ident`, as in `symbols.rs`.
+#[allow(clippy::too_many_arguments)]
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &Arena,
+    symbols: &SymbolTokens,
+    state: &[ExprId],
+    rhs: &[ExprId],
+    prelude: TokenStream,
+    order: usize,
+) -> TokenStream {
+    let p = Private;
+    let n = state.len();
+    let Some(tape) = Tape::new(arena, state, None, rhs) else {
+        cx.error_spanned_by(
+            ident,
+            "internal error of the derive: the state of the Taylor recurrences is not a list of symbols; please report this",
+        );
+        return TokenStream::new();
+    };
+    let code = tape.to_tokens(order, &mut |s| match symbols.get(s) {
+        Some(tokens) => tokens,
+        None => {
+            cx.error_spanned_by(
+                ident,
+                format!(
+                    "internal error of the derive: the Taylor recurrences read the symbol `{}`, which has no value; please report this",
+                    arena.symbol(s).name
+                ),
+            );
+            quote!(0.0)
+        }
+    });
+    let body = code.body;
+    quote! {
+        #[automatically_derived]
+        #[allow(unused_variables, unused_mut, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::TaylorSystem<#n> for #ident {
+            #[inline]
+            fn max_order(&self) -> usize {
+                #order
+            }
+
+            fn coefficients(&self, t: f64, y: &[f64; #n], order: usize, coeffs: &mut [[f64; #n]]) {
+                #prelude
+                #body
+            }
+        }
+    }
+}
