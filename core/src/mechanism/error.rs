@@ -1,0 +1,131 @@
+//! Errors of the mechanism engine: a malformed tree, a derivation that cannot be solved, and
+//! run-time values the model refuses.
+
+use thiserror::Error;
+
+use crate::codegen::BindingError;
+use crate::lagrange::LagrangeError;
+use crate::sym::SymError;
+
+/// What can go wrong describing, deriving or evaluating a mechanism.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum MechanismError {
+    /// A mechanism needs at least one joint with a coordinate.
+    #[error("the mechanism has no moving joint (declare at least one body with its joint)")]
+    NoMovingJoint,
+    /// A joint names a parent body that does not exist.
+    #[error("body `{body}` hangs from body number {parent}, but there are only {count} bodies")]
+    UnknownParent {
+        /// The child body.
+        body: String,
+        /// The parent index given.
+        parent: usize,
+        /// How many bodies the mechanism has.
+        count: usize,
+    },
+    /// The joints do not form a tree: following parents from these bodies returns to them.
+    #[error("the joints form a cycle through the bodies {}", bodies.join(" → "))]
+    Cycle {
+        /// The bodies on the cycle, in parent order.
+        bodies: Vec<String>,
+    },
+    /// Two bodies, joints or coordinates share a name.
+    #[error("two {kind}s are both named `{name}`")]
+    DuplicateName {
+        /// `"body"`, `"joint"` or `"coordinate"`.
+        kind: &'static str,
+        /// The repeated name.
+        name: String,
+    },
+    /// A joint axis that is the zero vector (identically, or for the parameter values given).
+    #[error("joint `{joint}` has an axis of zero length{}", detail(*squared_length))]
+    ZeroAxis {
+        /// The joint.
+        joint: String,
+        /// |axis|² at the parameter values, when known (`None`: identically zero).
+        squared_length: Option<f64>,
+    },
+    /// A joint with the wrong number of coordinate names.
+    #[error("joint `{joint}` ({kind}) has {got} coordinate names, expected {expected}")]
+    WrongCoordinateCount {
+        /// The joint.
+        joint: String,
+        /// Its kind.
+        kind: &'static str,
+        /// Its degrees of freedom.
+        expected: usize,
+        /// The names given.
+        got: usize,
+    },
+    /// A joint with the wrong number of coordinate loads.
+    #[error("joint `{joint}` ({kind}) has {got} coordinate loads, expected {expected}")]
+    WrongLoadCount {
+        /// The joint.
+        joint: String,
+        /// Its kind.
+        kind: &'static str,
+        /// Its degrees of freedom.
+        expected: usize,
+        /// The loads given.
+        got: usize,
+    },
+    /// The mass matrix is singular: a pivot of its factorisation (a block determinant on the
+    /// symbolic route) is not positive. Massless links cause this.
+    #[error(
+        "the mass matrix is singular: pivot {pivot} is {value:e} (a massless or inertia-free link?)"
+    )]
+    SingularMassMatrix {
+        /// Which pivot (0-based).
+        pivot: usize,
+        /// Its value (`0` when identically zero).
+        value: f64,
+    },
+    /// NaN or ±∞ in a state, a time or a result.
+    #[error("non-finite {quantity}: {values:?}")]
+    NonFinite {
+        /// What held the value.
+        quantity: &'static str,
+        /// The values.
+        values: Vec<f64>,
+    },
+    /// A state of the wrong length.
+    #[error("{quantity} has {got} entries, the mechanism has {expected} coordinates")]
+    StateLength {
+        /// What was given.
+        quantity: &'static str,
+        /// The coordinate count.
+        expected: usize,
+        /// The entries given.
+        got: usize,
+    },
+    /// A route that this build cannot take.
+    #[error("the {route} route is not available: {reason}")]
+    RouteUnavailable {
+        /// The route.
+        route: &'static str,
+        /// Why.
+        reason: &'static str,
+    },
+    /// A parameter could not be bound.
+    #[error("parameter binding: {0:?}")]
+    Binding(BindingError),
+    /// The Euler–Lagrange engine failed.
+    #[error(transparent)]
+    Lagrange(#[from] LagrangeError),
+    /// A constructor of the symbolic engine failed.
+    #[error(transparent)]
+    Sym(#[from] SymError),
+}
+
+fn detail(squared_length: Option<f64>) -> String {
+    match squared_length {
+        Some(v) => format!(" (|axis|² = {v:e} at the parameter values)"),
+        None => String::new(),
+    }
+}
+
+impl From<BindingError> for MechanismError {
+    fn from(e: BindingError) -> MechanismError {
+        MechanismError::Binding(e)
+    }
+}
