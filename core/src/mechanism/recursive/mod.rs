@@ -19,6 +19,8 @@
 //!
 //! Multi-dof joints are chains of revolutes through massless frames (see `links.rs` for why).
 
+mod bind;
+pub mod chains;
 mod links;
 mod spatial;
 
@@ -27,6 +29,7 @@ use crate::mechanism::{MechanismError, MechanismScene};
 use crate::sym::mat3::{self, Mat3};
 use crate::sym::{Arena, ExprId};
 
+use bind::Binder;
 pub(crate) use links::{Link, Motion, flatten};
 use spatial::{Inertia, Pair, V3};
 
@@ -172,6 +175,7 @@ pub fn recursive_accelerations(
     }
     let (links, _) = flatten(arena, scene)?;
     let n = links.len();
+    let mut binder = Binder::default();
 
     // Pass 1: kinematics, velocities and bias forces.
     let mut places = Vec::with_capacity(n);
@@ -194,7 +198,9 @@ pub fn recursive_accelerations(
         let carried =
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_v);
         let v = carried.add(arena, &vj);
+        let v = binder.pair(arena, &v);
         let c = spatial::cross_motion(arena, &v, &vj);
+        let c = binder.pair(arena, &c);
         if needs_space {
             let parent_r = link.parent.and_then(|p| to_ground[p]);
             let r = match (parent_r, place.rotation) {
@@ -237,11 +243,13 @@ pub fn recursive_accelerations(
     let mut pivots = vec![arena.zero(); dof];
     for i in (0..n).rev() {
         let link = &links[i];
-        let ia = art[i];
-        let pa = bias_force[i];
+        let ia = binder.inertia(arena, &art[i]);
+        let pa = binder.pair(arena, &bias_force[i]);
         let s1 = subspace(arena, link, arena.one());
         let u = ia.apply(arena, &s1);
+        let u = binder.pair(arena, &u);
         let d = project(arena, link, &u);
+        let d = binder.bind(arena, d);
         pivots[link.coordinate] = d;
         if d == arena.zero() {
             return Err(MechanismError::SingularMassMatrix {
@@ -252,18 +260,22 @@ pub fn recursive_accelerations(
         let d_inv = arena.pow_nonzero_base(d, -1);
         let sp = project(arena, link, &pa);
         let uu = arena.sub(joint_forces[link.coordinate], sp);
+        let uu = binder.bind(arena, uu);
         if let Some(parent) = link.parent {
             let w = Pair {
                 ang: spatial::scale3(arena, d_inv, &u.ang),
                 lin: spatial::scale3(arena, d_inv, &u.lin),
             };
+            let w = binder.pair(arena, &w);
             let reduced = ia.minus_outer(arena, &w, &u);
+            let reduced = binder.inertia(arena, &reduced);
             let ic = reduced.apply(arena, &bias_accel[i]);
             let wu = Pair {
                 ang: spatial::scale3(arena, uu, &w.ang),
                 lin: spatial::scale3(arena, uu, &w.lin),
             };
             let pa_child = pa.add(arena, &ic).add(arena, &wu);
+            let pa_child = binder.pair(arena, &pa_child);
             let place = &places[i];
             let i_up = reduced.to_parent(arena, place.rotation.as_ref(), &place.origin);
             let p_up =
@@ -295,12 +307,15 @@ pub fn recursive_accelerations(
         let carried =
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_a);
         let a_prime = carried.add(arena, &bias_accel[i]);
+        let a_prime = binder.pair(arena, &a_prime);
         let ua = spatial::dot_pair(arena, &u_force[i], &a_prime);
         let num = arena.sub(u_scalar[i], ua);
         let x = arena.mul(num, inv_pivot[i]);
+        let x = binder.bind(arena, x);
         qdd[link.coordinate] = x;
         let sx = subspace(arena, link, x);
-        accel.push(a_prime.add(arena, &sx));
+        let a = a_prime.add(arena, &sx);
+        accel.push(binder.pair(arena, &a));
     }
     Ok(RecursiveForm {
         accelerations: qdd,
