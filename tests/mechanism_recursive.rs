@@ -565,3 +565,108 @@ fn malformed_trees_are_typed_errors() {
         Err(MechanismError::NoMovingJoint)
     );
 }
+
+/// The committed generated chains of the scale benchmark (`benches/generated/`).
+#[allow(clippy::all, clippy::pedantic, unused_parens)]
+mod generated {
+    pub mod planar_5 {
+        include!("../benches/generated/planar_5.rs");
+    }
+    pub mod spatial_5 {
+        include!("../benches/generated/spatial_5.rs");
+    }
+    pub mod planar_25 {
+        include!("../benches/generated/planar_25.rs");
+    }
+    pub mod spatial_25 {
+        include!("../benches/generated/spatial_25.rs");
+    }
+}
+
+#[test]
+fn generated_chains_are_current() {
+    use precess_core::mechanism::recursive::chains::{ChainKind, generated_source};
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/benches/generated");
+    let bless = std::env::var_os("PRECESS_BLESS").is_some();
+    for kind in [ChainKind::Planar, ChainKind::Spatial] {
+        for n in [2, 5, 10, 25] {
+            let path = format!("{dir}/{}_{n}.rs", kind.name());
+            let fresh = generated_source(kind, n).expect("derives");
+            if bless {
+                std::fs::write(&path, &fresh).expect("writable");
+            }
+            let committed = std::fs::read_to_string(&path).unwrap_or_default();
+            assert!(
+                committed == fresh,
+                "{path} differs from what the engine emits now: rerun with PRECESS_BLESS=1"
+            );
+        }
+    }
+}
+
+/// The parameter values of the planar chains: masses 1 + i/10, lengths 1/2 + i/20, g, F.
+fn planar_value(name: &str) -> f64 {
+    let index = |s: &str| s.parse::<f64>().unwrap_or(0.0);
+    match name {
+        "g" => 9.81,
+        "F" => 0.7,
+        _ if name.starts_with('m') => 1.0 + index(&name[1..]) / 10.0,
+        _ if name.starts_with('l') => 0.5 + index(&name[1..]) / 20.0,
+        _ => f64::NAN,
+    }
+}
+
+fn check_generated<const D: usize, const P: usize>(
+    kind: precess_core::mechanism::recursive::chains::ChainKind,
+    n: usize,
+    parameters: [&str; P],
+    generated: fn(&[f64; D], &[f64; D], &[f64; P]) -> [f64; D],
+) {
+    let mut a = Arena::new();
+    let scene = kind.scene(&mut a, n);
+    let mut env = vec![0.0; a.symbol_count()];
+    let p = parameters.map(planar_value);
+    for (name, &x) in parameters.iter().zip(&p) {
+        env[a.find_parameter(name).expect("declared").index()] = x;
+    }
+    let mut aba = MechanismAba::new(&mut a, &scene, &env).expect("binds");
+    let mut rng = Rng::new(n as u64);
+    let mut expected = [0.0; D];
+    for _ in 0..50 {
+        let q: [f64; D] = std::array::from_fn(|_| rng.uniform(-3.0, 3.0));
+        let qd: [f64; D] = std::array::from_fn(|_| rng.uniform(-2.0, 2.0));
+        let got = generated(&q, &qd, &p);
+        aba.accelerations(&q, &qd, &mut expected).expect("regular");
+        let e = relative(&got, &DVector::from_row_slice(&expected));
+        assert!(e <= 1e-12, "{kind:?} {n}: {e:e}");
+    }
+}
+
+#[test]
+fn generated_chains_agree_with_the_numeric_aba() {
+    use precess_core::mechanism::recursive::chains::ChainKind;
+    check_generated(
+        ChainKind::Planar,
+        5,
+        generated::planar_5::PARAMETERS,
+        generated::planar_5::accelerations,
+    );
+    check_generated(
+        ChainKind::Spatial,
+        5,
+        generated::spatial_5::PARAMETERS,
+        generated::spatial_5::accelerations,
+    );
+    check_generated(
+        ChainKind::Planar,
+        25,
+        generated::planar_25::PARAMETERS,
+        generated::planar_25::accelerations,
+    );
+    check_generated(
+        ChainKind::Spatial,
+        25,
+        generated::spatial_25::PARAMETERS,
+        generated::spatial_25::accelerations,
+    );
+}
