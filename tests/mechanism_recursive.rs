@@ -616,11 +616,14 @@ fn planar_value(name: &str) -> f64 {
     }
 }
 
+/// A generated `accelerations(q, q̇, p)`.
+type Generated<const D: usize, const P: usize> = fn(&[f64; D], &[f64; D], &[f64; P]) -> [f64; D];
+
 fn check_generated<const D: usize, const P: usize>(
     kind: precess_core::mechanism::recursive::chains::ChainKind,
     n: usize,
     parameters: [&str; P],
-    generated: fn(&[f64; D], &[f64; D], &[f64; P]) -> [f64; D],
+    generated: Generated<D, P>,
 ) {
     let mut a = Arena::new();
     let scene = kind.scene(&mut a, n);

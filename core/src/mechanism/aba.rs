@@ -366,7 +366,7 @@ impl MechanismAba {
                 + load.effort;
             let u = tau - sp;
             self.pivots[l.coordinate] = d;
-            if !(d > 0.0) {
+            if d.is_nan() || d <= 0.0 {
                 return Err(MechanismError::SingularMassMatrix {
                     pivot: l.coordinate,
                     value: d,

@@ -277,7 +277,7 @@ pub fn recursive_accelerations(
             let pa_child = pa.add(arena, &ic).add(arena, &wu);
             let pa_child = binder.pair(arena, &pa_child);
             let place = &places[i];
-            let i_up = reduced.to_parent(arena, place.rotation.as_ref(), &place.origin);
+            let i_up = reduced.seen_from_parent(arena, place.rotation.as_ref(), &place.origin);
             let p_up =
                 spatial::force_to_parent(arena, place.rotation.as_ref(), &place.origin, &pa_child);
             art[parent] = art[parent].add(arena, &i_up);

@@ -2,6 +2,9 @@
 //! articulated inertias as 3×3 blocks, each entry an unexpanded expression so products with
 //! exact zeros (an axis along x, a centre on an axis) vanish in the canonical constructors.
 
+// Index loops over 3×3 blocks read as the matrix algebra they implement.
+#![allow(clippy::needless_range_loop)]
+
 use crate::sym::mat3::{self, Mat3};
 use crate::sym::{Arena, ExprId};
 
@@ -195,7 +198,7 @@ impl Inertia {
     /// axes, `None` for none), then moved from the child's origin to the parent's, the child
     /// origin sitting at `p` in the parent frame:
     /// A' = A − B[p] + [p]Bᵀ − [p]C[p], B' = B + [p]C, C' = C.
-    pub(crate) fn to_parent(&self, a: &mut Arena, r: Option<&Mat3>, p: &V3) -> Inertia {
+    pub(crate) fn seen_from_parent(&self, a: &mut Arena, r: Option<&Mat3>, p: &V3) -> Inertia {
         let (ra, rb, rc) = match r {
             Some(r) => (
                 rotate(a, r, &self.a, true),
