@@ -52,6 +52,13 @@ impl Route {
 /// at two the symbolic route is as fast and sometimes a few operations smaller.
 pub const MAX_SYMBOLIC: usize = 2;
 
+/// The most coordinates for which [`Route::Auto`] forms the Euler–Lagrange equations and
+/// compares the Lagrangian routes with the recursive one. Past it the expanded M and f grow
+/// faster than the chain (planar chains: 1,046 weighted operations factored against 454
+/// recursive at five coordinates, and five to eight times the derivation time per link),
+/// so Auto takes the recursive route without deriving them.
+pub const MAX_LAGRANGIAN: usize = 3;
+
 /// Everything derived from a mechanism.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MechanismDerivation {
@@ -114,7 +121,6 @@ fn half(arena: &mut Arena) -> ExprId {
 
 /// The per-coordinate loads: −k (q − rest) − c q̇ + effort, in state order (the recursive
 /// route applies gravity and torques itself and takes these as joint forces).
-#[allow(dead_code, reason = "the recursive route's input, wired at the merge")]
 pub(crate) fn joint_forces(
     arena: &mut Arena,
     scene: &MechanismScene,
@@ -254,7 +260,6 @@ impl MechanismScene {
     /// # Errors
     /// As [`MechanismScene::validate`]; [`MechanismError::SingularMassMatrix`] if M is
     /// singular everywhere (a pivot or block determinant is identically zero);
-    /// [`MechanismError::RouteUnavailable`] for [`Route::Recursive`] until it is wired;
     /// [`MechanismError::Lagrange`] for a coupled block too large for [`Route::Symbolic`].
     ///
     /// # Examples
@@ -294,10 +299,8 @@ impl MechanismScene {
         let n = coords.len();
         let (accelerations, pivots, route) = match route {
             Route::Recursive => {
-                return Err(MechanismError::RouteUnavailable {
-                    route: "recursive",
-                    reason: "the recursive algorithm is not wired into this build",
-                });
+                let (a, p) = self.recursive(arena, &coords)?;
+                (a, p, Route::Recursive)
             }
             Route::Symbolic => {
                 let eom = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
@@ -309,6 +312,10 @@ impl MechanismScene {
                 let (a, p) = ldlt_solve(arena, &eom.mass, &eom.forcing)?;
                 (a, p, Route::Factored)
             }
+            Route::Auto if n > MAX_LAGRANGIAN => {
+                let (a, p) = self.recursive(arena, &coords)?;
+                (a, p, Route::Recursive)
+            }
             Route::Auto => {
                 let eom = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
                 let (fa, fp) = ldlt_solve(arena, &eom.mass, &eom.forcing)?;
@@ -318,6 +325,10 @@ impl MechanismScene {
                     if cost(arena, &sa, &sp) < cost(arena, &best.0, &best.1) {
                         best = (sa, sp, Route::Symbolic);
                     }
+                }
+                let (ra, rp) = self.recursive(arena, &coords)?;
+                if cost(arena, &ra, &rp) < cost(arena, &best.0, &best.1) {
+                    best = (ra, rp, Route::Recursive);
                 }
                 best
             }
@@ -339,9 +350,20 @@ impl MechanismScene {
             ) else {
                 continue;
             };
-            let dl = arena.diff(l, qs);
-            let dl = arena.expand(dl);
-            if dl == arena.zero() && lag.forces[i] == arena.zero() {
+            if lag.forces[i] != arena.zero() {
+                continue;
+            }
+            // A coordinate L does not read is cyclic; one it reads may still cancel, which
+            // only the expansion shows, affordable for few coordinates.
+            let cyclic = if !arena.free_symbols(l).contains(&qs) {
+                true
+            } else if n <= MAX_LAGRANGIAN {
+                let dl = arena.diff(l, qs);
+                arena.expand(dl) == arena.zero()
+            } else {
+                false
+            };
+            if cyclic {
                 let p = arena.diff(l, rs);
                 cyclic_momenta.push((i, arena.expand(p)));
             }
@@ -358,6 +380,17 @@ impl MechanismScene {
             cyclic_momenta,
             route,
         })
+    }
+
+    /// q̈ and the pivots by the recursive (articulated-body) route.
+    fn recursive(
+        &self,
+        arena: &mut Arena,
+        coords: &Coordinates,
+    ) -> Result<(Vec<ExprId>, Vec<ExprId>), MechanismError> {
+        let forces = joint_forces(arena, self, coords);
+        let form = super::recursive::recursive_accelerations(arena, self, coords, &forces)?;
+        Ok((form.accelerations, form.pivots))
     }
 
     /// The Jacobian of the state derivative `(q̇, q̈)` with respect to the state `(q, q̇)`:

@@ -11,24 +11,27 @@
 //!   operations.
 //! - [`MechanismModel`] lowers a derivation and interprets it at run time, with typed
 //!   [`MechanismError`]s for singular mass matrices and bad states, and an ODE adapter.
+//! - [`recursive_accelerations`] is the recursive route (the articulated-body algorithm,
+//!   symbolic, O(n) operations), [`MechanismAba`] the same algorithm numerically, the
+//!   generic O(n) reference the benchmarks compare against.
 
+mod aba;
 mod derive;
 mod dynamics;
 mod error;
 mod factored;
 mod kinematics;
 mod model;
+pub mod recursive;
 mod scene;
 mod validate;
 
-#[allow(
-    unused_imports,
-    reason = "the recursive route's input, wired at the merge"
-)]
+pub use aba::MechanismAba;
 pub(crate) use derive::joint_forces;
 pub use derive::{MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use kinematics::BodyKinematics;
 pub use model::{MechanismModel, MechanismSystem};
+pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};

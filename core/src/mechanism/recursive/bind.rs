@@ -1,0 +1,62 @@
+//! Named intermediates: each quantity the algorithm hands from one link to the next is bound
+//! to a symbol standing for its expression, so later sums hold it as one atom.
+//!
+//! Without this the canonical constructors undo the sharing the recursion relies on: a sum is
+//! flattened into every sum it enters and a rational times a sum is distributed over its terms
+//! (right for a canonical form, wrong for O(n)), so the articulated inertia of the root would
+//! hold every descendant's terms and the code would grow as n². A bound intermediate is an
+//! abbreviation in the arena's sense: evaluation, lowering, differentiation and zero tests
+//! look through it to its definition, and `Program::lower` computes it once. Unlike
+//! [`Arena::abbreviate`] the definitions here depend on q and q̇: they are meant for
+//! lowering, evaluation and `diff`, not for `Arena::dt` (which treats abbreviations as
+//! constants).
+
+use super::spatial::{Inertia, Pair, V3};
+use crate::sym::{Arena, ExprId, IdMap, Node, SymbolKind};
+
+/// Binds expressions to symbols, each distinct expression once.
+#[derive(Default)]
+pub(crate) struct Binder {
+    bound: IdMap<ExprId, ExprId>,
+}
+
+impl Binder {
+    /// `e` itself if it is already an atom (a constant or a symbol), else its symbol.
+    pub(crate) fn bind(&mut self, arena: &mut Arena, e: ExprId) -> ExprId {
+        if matches!(arena.node(e), Node::Const(_) | Node::Sym(_)) {
+            return e;
+        }
+        if let Some(&s) = self.bound.get(&e) {
+            return s;
+        }
+        let name = format!("aba{}", self.bound.len());
+        let s = arena.new_symbol(&name, name.clone(), SymbolKind::Abbreviation);
+        arena.definitions.insert(s, e);
+        let x = arena.symbol_expr(s);
+        self.bound.insert(e, x);
+        x
+    }
+
+    pub(crate) fn bind3(&mut self, arena: &mut Arena, v: &V3) -> V3 {
+        v.map(|e| self.bind(arena, e))
+    }
+
+    pub(crate) fn pair(&mut self, arena: &mut Arena, p: &Pair) -> Pair {
+        Pair {
+            ang: self.bind3(arena, &p.ang),
+            lin: self.bind3(arena, &p.lin),
+        }
+    }
+
+    pub(crate) fn inertia(&mut self, arena: &mut Arena, i: &Inertia) -> Inertia {
+        let mut out = *i;
+        for (o, m) in [(&mut out.a, &i.a), (&mut out.b, &i.b), (&mut out.c, &i.c)] {
+            for (orow, mrow) in o.iter_mut().zip(m) {
+                for (oe, &me) in orow.iter_mut().zip(mrow) {
+                    *oe = self.bind(arena, me);
+                }
+            }
+        }
+        out
+    }
+}

@@ -1,0 +1,304 @@
+//! Spatial algebra written as pairs of symbolic 3-vectors: motions (ω, v), forces (n, f) and
+//! articulated inertias as 3×3 blocks, each entry an unexpanded expression so products with
+//! exact zeros (an axis along x, a centre on an axis) vanish in the canonical constructors.
+
+// Index loops over 3×3 blocks read as the matrix algebra they implement.
+#![allow(clippy::needless_range_loop)]
+
+use crate::sym::mat3::{self, Mat3};
+use crate::sym::{Arena, ExprId};
+
+/// A 3-vector of expressions.
+pub(crate) type V3 = [ExprId; 3];
+
+pub(crate) fn add3(a: &mut Arena, x: &V3, y: &V3) -> V3 {
+    [a.add(x[0], y[0]), a.add(x[1], y[1]), a.add(x[2], y[2])]
+}
+
+pub(crate) fn sub3(a: &mut Arena, x: &V3, y: &V3) -> V3 {
+    [a.sub(x[0], y[0]), a.sub(x[1], y[1]), a.sub(x[2], y[2])]
+}
+
+pub(crate) fn scale3(a: &mut Arena, s: ExprId, x: &V3) -> V3 {
+    [a.mul(s, x[0]), a.mul(s, x[1]), a.mul(s, x[2])]
+}
+
+pub(crate) fn neg3(a: &mut Arena, x: &V3) -> V3 {
+    [a.neg(x[0]), a.neg(x[1]), a.neg(x[2])]
+}
+
+/// `mᵀ v`.
+pub(crate) fn mat_t_vec(a: &mut Arena, m: &Mat3, v: &V3) -> V3 {
+    mat3::mat_vec(a, &mat3::transpose(m), v)
+}
+
+/// A motion (ω, v) or a force (n, f): angular part first.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pair {
+    pub ang: V3,
+    pub lin: V3,
+}
+
+impl Pair {
+    pub(crate) fn zero(a: &Arena) -> Pair {
+        Pair {
+            ang: [a.zero(); 3],
+            lin: [a.zero(); 3],
+        }
+    }
+
+    pub(crate) fn add(&self, a: &mut Arena, o: &Pair) -> Pair {
+        Pair {
+            ang: add3(a, &self.ang, &o.ang),
+            lin: add3(a, &self.lin, &o.lin),
+        }
+    }
+}
+
+/// A symmetric spatial inertia `[[A, B], [Bᵀ, C]]` acting on motions (ω, v):
+/// n = A ω + B v, f = Bᵀ ω + C v. A and C are kept symmetric entry by entry.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Inertia {
+    pub a: Mat3,
+    pub b: Mat3,
+    pub c: Mat3,
+}
+
+/// The 3×3 matrix `[x]×` with `[x]× y = x × y`.
+pub(crate) fn cross_matrix(a: &mut Arena, x: &V3) -> Mat3 {
+    let z = a.zero();
+    let n = neg3(a, x);
+    [[z, n[2], x[1]], [x[2], z, n[0]], [n[1], x[0], z]]
+}
+
+/// The symmetric part of a matrix known to be symmetric: the upper triangle mirrored, so
+/// equal entries are equal ids.
+fn mirror(m: &mut Mat3) {
+    for i in 0..3 {
+        for j in 0..i {
+            m[i][j] = m[j][i];
+        }
+    }
+}
+
+/// `x yᵀ` summed over pairs, entries of the upper triangle only when `symmetric`.
+fn outer(a: &mut Arena, x: &V3, y: &V3, symmetric: bool) -> Mat3 {
+    let mut m = [[a.zero(); 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            if !symmetric || j >= i {
+                m[i][j] = a.mul(x[i], y[j]);
+            }
+        }
+    }
+    if symmetric {
+        mirror(&mut m);
+    }
+    m
+}
+
+fn mat_add(a: &mut Arena, x: &Mat3, y: &Mat3, symmetric: bool) -> Mat3 {
+    let mut m = [[a.zero(); 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            if !symmetric || j >= i {
+                m[i][j] = a.add(x[i][j], y[i][j]);
+            }
+        }
+    }
+    if symmetric {
+        mirror(&mut m);
+    }
+    m
+}
+
+fn mat_sub(a: &mut Arena, x: &Mat3, y: &Mat3, symmetric: bool) -> Mat3 {
+    let mut m = [[a.zero(); 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            if !symmetric || j >= i {
+                m[i][j] = a.sub(x[i][j], y[i][j]);
+            }
+        }
+    }
+    if symmetric {
+        mirror(&mut m);
+    }
+    m
+}
+
+/// `r m rᵀ` (symmetric result) or `r m rᵀ` for a general `m`.
+fn rotate(a: &mut Arena, r: &Mat3, m: &Mat3, symmetric: bool) -> Mat3 {
+    let rm = mat3::mat_mul(a, r, m);
+    let mut out = [[a.zero(); 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            if !symmetric || j >= i {
+                let terms: Vec<ExprId> = (0..3).map(|k| a.mul(rm[i][k], r[j][k])).collect();
+                out[i][j] = a.sum(&terms);
+            }
+        }
+    }
+    if symmetric {
+        mirror(&mut out);
+    }
+    out
+}
+
+impl Inertia {
+    /// The rigid-body inertia about a frame's origin: mass m, first moment h = m c, rotational
+    /// inertia I_O about the origin: `[[I_O, [h]×], [[h]×ᵀ, m 1]]`.
+    pub(crate) fn rigid(a: &mut Arena, m: ExprId, h: &V3, inertia_origin: &Mat3) -> Inertia {
+        let z = a.zero();
+        Inertia {
+            a: *inertia_origin,
+            b: cross_matrix(a, h),
+            c: [[m, z, z], [z, m, z], [z, z, m]],
+        }
+    }
+
+    pub(crate) fn zero(a: &Arena) -> Inertia {
+        let z = [[a.zero(); 3]; 3];
+        Inertia { a: z, b: z, c: z }
+    }
+
+    /// `I x` for a motion x.
+    pub(crate) fn apply(&self, a: &mut Arena, x: &Pair) -> Pair {
+        let aw = mat3::mat_vec(a, &self.a, &x.ang);
+        let bv = mat3::mat_vec(a, &self.b, &x.lin);
+        let btw = mat_t_vec(a, &self.b, &x.ang);
+        let cv = mat3::mat_vec(a, &self.c, &x.lin);
+        Pair {
+            ang: add3(a, &aw, &bv),
+            lin: add3(a, &btw, &cv),
+        }
+    }
+
+    pub(crate) fn add(&self, a: &mut Arena, o: &Inertia) -> Inertia {
+        Inertia {
+            a: mat_add(a, &self.a, &o.a, true),
+            b: mat_add(a, &self.b, &o.b, false),
+            c: mat_add(a, &self.c, &o.c, true),
+        }
+    }
+
+    /// `I − w uᵀ` for the force pair u = I S and w = u / D (a symmetric rank-one update).
+    pub(crate) fn minus_outer(&self, a: &mut Arena, w: &Pair, u: &Pair) -> Inertia {
+        let wa = outer(a, &w.ang, &u.ang, true);
+        let wb = outer(a, &w.ang, &u.lin, false);
+        let wc = outer(a, &w.lin, &u.lin, true);
+        Inertia {
+            a: mat_sub(a, &self.a, &wa, true),
+            b: mat_sub(a, &self.b, &wb, false),
+            c: mat_sub(a, &self.c, &wc, true),
+        }
+    }
+
+    /// The same inertia seen from the parent frame: its blocks turned by `r` (child → parent
+    /// axes, `None` for none), then moved from the child's origin to the parent's, the child
+    /// origin sitting at `p` in the parent frame:
+    /// A' = A − B[p] + [p]Bᵀ − [p]C[p], B' = B + [p]C, C' = C.
+    pub(crate) fn seen_from_parent(&self, a: &mut Arena, r: Option<&Mat3>, p: &V3) -> Inertia {
+        let (ra, rb, rc) = match r {
+            Some(r) => (
+                rotate(a, r, &self.a, true),
+                rotate(a, r, &self.b, false),
+                rotate(a, r, &self.c, true),
+            ),
+            None => (self.a, self.b, self.c),
+        };
+        let px = cross_matrix(a, p);
+        let pc = mat3::mat_mul(a, &px, &rc);
+        let b_new = mat_add(a, &rb, &pc, false);
+        // A − B[p] + [p]Bᵀ − [p]C[p] = A + [p]Bᵀ + ([p]Bᵀ)ᵀ − [p]C[p], upper triangle only.
+        let pbt = mat3::mat_mul(a, &px, &mat3::transpose(&rb));
+        let pcp = mat3::mat_mul(a, &pc, &px);
+        let mut a_new = [[a.zero(); 3]; 3];
+        for i in 0..3 {
+            for j in i..3 {
+                let s = a.sum(&[ra[i][j], pbt[i][j], pbt[j][i]]);
+                a_new[i][j] = a.sub(s, pcp[i][j]);
+            }
+        }
+        mirror(&mut a_new);
+        Inertia {
+            a: a_new,
+            b: b_new,
+            c: rc,
+        }
+    }
+}
+
+/// A force (n, f) at the child's origin in child axes, seen at the parent's origin in parent
+/// axes: f' = r f, n' = r n + p × f'.
+pub(crate) fn force_to_parent(a: &mut Arena, r: Option<&Mat3>, p: &V3, x: &Pair) -> Pair {
+    let (n, f) = match r {
+        Some(r) => (mat3::mat_vec(a, r, &x.ang), mat3::mat_vec(a, r, &x.lin)),
+        None => (x.ang, x.lin),
+    };
+    let pf = mat3::cross(a, p, &f);
+    Pair {
+        ang: add3(a, &n, &pf),
+        lin: f,
+    }
+}
+
+/// A motion (ω, v) at the parent's origin in parent axes, seen at the child's origin in child
+/// axes: ω' = rᵀ ω, v' = rᵀ (v + ω × p).
+pub(crate) fn motion_to_child(a: &mut Arena, r: Option<&Mat3>, p: &V3, x: &Pair) -> Pair {
+    let wp = mat3::cross(a, &x.ang, p);
+    let v = add3(a, &x.lin, &wp);
+    match r {
+        Some(r) => Pair {
+            ang: mat_t_vec(a, r, &x.ang),
+            lin: mat_t_vec(a, r, &v),
+        },
+        None => Pair { ang: x.ang, lin: v },
+    }
+}
+
+/// The spatial motion cross product `x ×ₘ y = (ω × ω_y, ω × v_y + v × ω_y)`.
+pub(crate) fn cross_motion(a: &mut Arena, x: &Pair, y: &Pair) -> Pair {
+    let ang = mat3::cross(a, &x.ang, &y.ang);
+    let l1 = mat3::cross(a, &x.ang, &y.lin);
+    let l2 = mat3::cross(a, &x.lin, &y.ang);
+    Pair {
+        ang,
+        lin: add3(a, &l1, &l2),
+    }
+}
+
+/// The spatial force cross product `x ×* f = (ω × n + v × f, ω × f)`.
+pub(crate) fn cross_force(a: &mut Arena, x: &Pair, f: &Pair) -> Pair {
+    let n1 = mat3::cross(a, &x.ang, &f.ang);
+    let n2 = mat3::cross(a, &x.lin, &f.lin);
+    Pair {
+        ang: add3(a, &n1, &n2),
+        lin: mat3::cross(a, &x.ang, &f.lin),
+    }
+}
+
+/// `x · y` of a force and a motion (or of two pairs), both parts.
+pub(crate) fn dot_pair(a: &mut Arena, x: &Pair, y: &Pair) -> ExprId {
+    let d1 = mat3::dot(a, &x.ang, &y.ang);
+    let d2 = mat3::dot(a, &x.lin, &y.lin);
+    a.add(d1, d2)
+}
+
+/// The rotation by angle q (sine s, cosine c) about the unit axis k, child → parent axes:
+/// `c 1 + s [k]× + (1 − c) k kᵀ`.
+pub(crate) fn axis_rotation(a: &mut Arena, k: &V3, s: ExprId, c: ExprId) -> Mat3 {
+    let one = a.one();
+    let one_minus_c = a.sub(one, c);
+    let kx = cross_matrix(a, k);
+    let mut r = [[a.zero(); 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            let diag = if i == j { c } else { a.zero() };
+            let skew = a.mul(s, kx[i][j]);
+            let kk = a.product(&[one_minus_c, k[i], k[j]]);
+            r[i][j] = a.sum(&[diag, skew, kk]);
+        }
+    }
+    r
+}
