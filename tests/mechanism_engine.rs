@@ -69,7 +69,7 @@ fn worst(m: &NumMechanism, model: &MechanismModel, seed: u64) -> f64 {
 fn check_all_routes(m: &NumMechanism, seed: u64) {
     for values in [Values::Literals, Values::Parameters] {
         // Auto takes one of these two (tests/mechanism_pendulum.rs runs it).
-        for route in [Route::Factored, Route::Symbolic] {
+        for route in [Route::Factored, Route::Symbolic, Route::Recursive] {
             if route == Route::Symbolic && m.dof() > 3 {
                 continue;
             }

@@ -70,7 +70,12 @@ fn double_pendulum_matches_the_textbook_formula() {
         ("l1", l[1]),
         ("g", g),
     ];
-    for route in [Route::Symbolic, Route::Factored, Route::Auto] {
+    for route in [
+        Route::Symbolic,
+        Route::Factored,
+        Route::Recursive,
+        Route::Auto,
+    ] {
         let mut a = Arena::new();
         let scene = double_pendulum(&mut a, ["l0", "l1"]);
         let model = MechanismModel::new(&mut a, &scene, route, &values).expect("derives");

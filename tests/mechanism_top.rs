@@ -102,7 +102,7 @@ fn a_spherical_joint_reproduces_the_heavy_top() {
     ];
     for seq in [AngleSequence::Zxz, AngleSequence::Zyx] {
         let top = top_model(seq, &values);
-        for route in [Route::Symbolic, Route::Factored] {
+        for route in [Route::Symbolic, Route::Factored, Route::Recursive] {
             let mech = mechanism_model(seq, route, &values);
             let mut rng = Rng::new(21);
             let mut worst: f64 = 0.0;

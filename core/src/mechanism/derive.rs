@@ -119,28 +119,6 @@ fn half(arena: &mut Arena) -> ExprId {
     arena.constant(Rational::new(1, 2).unwrap_or(Rational::ONE))
 }
 
-/// The per-coordinate loads: −k (q − rest) − c q̇ + effort, in state order (the recursive
-/// route applies gravity and torques itself and takes these as joint forces).
-pub(crate) fn joint_forces(
-    arena: &mut Arena,
-    scene: &MechanismScene,
-    coords: &Coordinates,
-) -> Vec<ExprId> {
-    let mut out = non_conservative_joint_forces(arena, scene, coords);
-    let mut i = 0;
-    for body in &scene.bodies {
-        for load in &body.joint.loads {
-            if let (Some(spring), Some(f)) = (load.spring, out.get_mut(i)) {
-                let stretch = arena.sub(coords.q[i], spring.rest);
-                let t = arena.mul(spring.stiffness, stretch);
-                *f = arena.sub(*f, t);
-            }
-            i += 1;
-        }
-    }
-    out
-}
-
 /// −c q̇ + effort per coordinate (no springs: they are in V).
 fn non_conservative_joint_forces(
     arena: &mut Arena,
@@ -388,7 +366,9 @@ impl MechanismScene {
         arena: &mut Arena,
         coords: &Coordinates,
     ) -> Result<(Vec<ExprId>, Vec<ExprId>), MechanismError> {
-        let forces = joint_forces(arena, self, coords);
+        // The recursive algorithm applies gravity and torques itself; the joint loads,
+        // springs included, enter as forces along the coordinates.
+        let forces = super::recursive::coordinate_forces(arena, self, coords);
         let form = super::recursive::recursive_accelerations(arena, self, coords, &forces)?;
         Ok((form.accelerations, form.pivots))
     }

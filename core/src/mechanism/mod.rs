@@ -27,7 +27,6 @@ mod scene;
 mod validate;
 
 pub use aba::MechanismAba;
-pub(crate) use derive::joint_forces;
 pub use derive::{MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
