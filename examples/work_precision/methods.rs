@@ -481,6 +481,12 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
     };
     Ok(vec![
         m("DOP853", Setting::Tolerance, false, dop853),
+        m(
+            "Taylor",
+            Setting::Tolerance,
+            false,
+            super::taylor::taylor_runs(heavy, fast)?,
+        ),
         m("Vern9", Setting::Tolerance, false, vern9),
         m(
             "DOPRI5",

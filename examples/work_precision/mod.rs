@@ -10,6 +10,7 @@
 pub mod methods;
 pub mod problems;
 pub mod report;
+pub mod taylor;
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -151,7 +151,7 @@ pub fn separatrix_reference() -> [f64; 3] {
     cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
     pivot = [0.0, 0.0, 0.0],
 )]
-#[top(gravity = 9.81)]
+#[top(gravity = 9.81, taylor = 20)]
 pub struct SpinningTop;
 
 /// Gravity on the top as a torque model in principal axes (for RKMK4):

@@ -401,10 +401,12 @@ fn adding_a_method(md: &mut String) -> Result<(), Box<dyn Error>> {
          {{ problem, ladder, quick, run }}` per problem it applies to; `run` is a closure that \
          integrates one setting and returns an `Outcome {{ error, evals, steps }}` measured \
          against the problem's reference (`problems.rs`: `separatrix_reference()`, `B5_Y20`, \
-         `TopCase::u_end`). For the Taylor integrator of issue 15: push \
-         `Method {{ name: \"Taylor\", setting: Setting::Tolerance, before: false, problems: \
-         vec![…] }}` with runs for `Problem::Separatrix`, `B5`, `HeavyTop`, `FastTop`; tables, \
-         figures, `--quick` and `tests/work_precision.rs` pick it up with no other change."
+         `TopCase::u_end`). The Taylor integrator is such an entry (`examples/work_precision/\
+         taylor.rs`): on (a) and (b) its recurrences are built at run time from the \
+         right-hand side written symbolically and interpreted (`TaylorTape`), on (c) and (d) \
+         they are the ones the derive generates for the report's top (`taylor = 20`); \
+         tables, figures, `--quick` and `tests/work_precision.rs` pick a new entry up with \
+         no other change."
     )?;
     Ok(())
 }

@@ -22,7 +22,8 @@ use crate::sym::{Arena, ExprId, Rational, SymbolKind};
 /// How q̈ is solved from M q̈ = f.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Route {
-    /// Lower every available route and keep the one with the fewest weighted operations.
+    /// Up to [`MAX_LAGRANGIAN`] coordinates, lower every route and keep the one with the
+    /// fewest weighted operations; past it, the recursive route.
     #[default]
     Auto,
     /// The block adjugate solve of [`EquationsOfMotion::solve`], for few coordinates.

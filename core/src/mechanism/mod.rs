@@ -27,7 +27,7 @@ mod scene;
 mod validate;
 
 pub use aba::MechanismAba;
-pub use derive::{MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use derive::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use kinematics::BodyKinematics;
