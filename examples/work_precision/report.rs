@@ -411,6 +411,9 @@ fn adding_a_method(md: &mut String) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// How a plain-sums variant's label ends.
+const PLAIN_SUFFIX: &str = ", plain sums";
+
 const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -482,8 +485,20 @@ fn figure(
         .x_label_formatter(&|v| format!("{v:.0e}"))
         .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()?;
-    for (k, (label, points, peer)) in series.iter().enumerate() {
+    // A plain-sums variant shares its method's colour and is dashed, so the before and after
+    // of the numerical floor read as one method, and colours do not run out.
+    let mut bases: Vec<&str> = Vec::new();
+    for (label, points, peer) in &series {
+        let base = label.strip_suffix(PLAIN_SUFFIX).unwrap_or(label);
+        let k = match bases.iter().position(|b| *b == base) {
+            Some(k) => k,
+            None => {
+                bases.push(base);
+                bases.len() - 1
+            }
+        };
         let color = PALETTE[k % PALETTE.len()];
+        let plain = label.ends_with(PLAIN_SUFFIX);
         let mut sorted = points.clone();
         sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
         if *peer {
@@ -497,13 +512,25 @@ fn figure(
                 .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 6, color.stroke_width(2)));
         } else {
             chart.draw_series(sorted.iter().map(|&p| Circle::new(p, 3, color.filled())))?;
-            chart
-                .draw_series(LineSeries::new(
+            let annotated = if plain {
+                chart.draw_series(DashedLineSeries::new(
+                    sorted.iter().copied(),
+                    6,
+                    4,
+                    color.stroke_width(2),
+                ))?
+            } else {
+                chart.draw_series(LineSeries::new(
                     sorted.iter().copied(),
                     color.stroke_width(2),
                 ))?
-                .label(label.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
+            };
+            annotated.label(label.as_str()).legend(move |(x, y)| {
+                PathElement::new(
+                    vec![(x, y), (x + 20, y)],
+                    color.stroke_width(if plain { 1 } else { 2 }),
+                )
+            });
         }
     }
     chart
