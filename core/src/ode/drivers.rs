@@ -5,6 +5,7 @@ use super::adaptive::Adaptive;
 use super::config::AdaptiveConfig;
 use super::error::{OdeError, check_span};
 use super::pairs::{Dop853Pair, Dopri5Pair, EmbeddedPair, Vern9Pair};
+use super::stepper::Stepper;
 use super::system::{Stats, System};
 
 /// The Dormand–Prince 5(4) driver: [`Adaptive`] with [`Dopri5Pair`].
@@ -61,15 +62,7 @@ pub fn solve<P: EmbeddedPair, S: System<N>, const N: usize>(
     check_span(t0, t_end)?;
     check_sorted(t0, stops)?;
     let mut ode = Adaptive::<S, P, N>::new(sys, t0, y0, cfg)?;
-    for &s in stops.iter().filter(|&&s| s < t_end) {
-        ode.advance_to(s)?;
-    }
-    ode.advance_to(t_end)?;
-    Ok(Solution {
-        t: ode.t(),
-        y: *ode.y(),
-        stats: ode.stats(),
-    })
+    through_stops(&mut ode, t_end, stops)
 }
 
 /// Integrates from `(t0, y0)` and writes the dense-output state at each of `times`
@@ -85,6 +78,39 @@ pub fn solve_dense<P: EmbeddedPair, S: System<N>, const N: usize>(
     out: &mut [[f64; N]],
     cfg: AdaptiveConfig,
 ) -> Result<Stats, OdeError> {
+    check_sampling(t0, times, out)?;
+    let mut ode = Adaptive::<S, P, N>::new(sys, t0, y0, cfg)?;
+    sample(&mut ode, times, out)
+}
+
+/// The body of every `solve`: steps `ode` to each stop before `t_end`, landing on it, then
+/// to `t_end`. The stops are checked ([`check_sorted`]) by the caller.
+pub(crate) fn through_stops<St, const N: usize>(
+    ode: &mut St,
+    t_end: f64,
+    stops: &[f64],
+) -> Result<Solution<N>, OdeError>
+where
+    St: Stepper<State = [f64; N]>,
+{
+    for &stop in stops.iter().filter(|&&s| s < t_end).chain([&t_end]) {
+        while ode.t() < stop {
+            ode.step(stop)?;
+        }
+    }
+    Ok(Solution {
+        t: ode.t(),
+        y: *ode.state(),
+        stats: ode.stats(),
+    })
+}
+
+/// Checks the sample times and the room for them, before any work.
+pub(crate) fn check_sampling<const N: usize>(
+    t0: f64,
+    times: &[f64],
+    out: &[[f64; N]],
+) -> Result<(), OdeError> {
     check_sorted(t0, times)?;
     if out.len() < times.len() {
         return Err(OdeError::InvalidParameter {
@@ -92,23 +118,36 @@ pub fn solve_dense<P: EmbeddedPair, S: System<N>, const N: usize>(
             value: out.len() as f64,
         });
     }
-    let mut ode = Adaptive::<S, P, N>::new(sys, t0, y0, cfg)?;
+    Ok(())
+}
+
+/// The body of every `solve_dense`: the stepper's own steps up to the last time, each
+/// sample from its solution inside the step that holds it (the start state at `t0`).
+pub(crate) fn sample<St, const N: usize>(
+    ode: &mut St,
+    times: &[f64],
+    out: &mut [[f64; N]],
+) -> Result<Stats, OdeError>
+where
+    St: Stepper<State = [f64; N]>,
+{
+    let t0 = ode.t();
     let t_end = times.last().copied().unwrap_or(t0);
-    for (ti, o) in times.iter().zip(out.iter_mut()) {
-        if *ti == t0 {
-            *o = y0;
+    for (&ti, o) in times.iter().zip(out.iter_mut()) {
+        if ti == t0 {
+            *o = *ode.state();
             continue;
         }
-        while ode.t() < *ti {
+        while ode.t() < ti {
             ode.step(t_end)?;
         }
-        *o = ode.dense_at(*ti)?;
+        *o = ode.state_at(ti)?;
     }
     Ok(ode.stats())
 }
 
 /// Checks that `times` are finite, ascending and not before `t0`.
-fn check_sorted(t0: f64, times: &[f64]) -> Result<(), OdeError> {
+pub(crate) fn check_sorted(t0: f64, times: &[f64]) -> Result<(), OdeError> {
     let mut last = t0;
     for &s in times {
         if !s.is_finite() {

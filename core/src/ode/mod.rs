@@ -18,7 +18,7 @@
 mod adaptive;
 mod config;
 mod controller;
-mod drivers;
+pub(crate) mod drivers;
 mod error;
 mod events;
 mod fixed;

@@ -12,16 +12,13 @@ mod tree;
 
 use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
-use syn::{Data, DeriveInput, Fields};
+use syn::DeriveInput;
 
 use crate::ctxt::Ctxt;
 use crate::keys;
-use crate::rigid::ast::{Field, Input};
+use crate::rigid::ast::Input;
 use crate::rigid::check::Checker;
 use crate::symbols::FieldParameters;
-
-const SUPPORTED: &str =
-    "`Mechanism` can be derived only for a struct with named f64 fields (or no fields)";
 
 /// The whole derive: the impls, or every error.
 pub fn derive(input: &DeriveInput) -> TokenStream {
@@ -43,7 +40,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 
 /// Every phase: syntax and meaning of all attributes, then the expansion.
 fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
-    let ast = view(cx, input)?;
+    let ast = Input::for_derive(cx, input, "Mechanism")?;
     let attrs = |name: &str| -> Vec<&syn::Attribute> {
         input
             .attrs
@@ -58,64 +55,4 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let checked = check::check(&mut ck, &settings, &links)?;
     expand::expand(cx, &input.ident, &mut arena, &parameters, &checked)
-}
-
-/// The struct as the value checker sees it: its name and named fields.
-fn view<'a>(cx: &Ctxt, input: &'a DeriveInput) -> Option<Input<'a>> {
-    if !input.generics.params.is_empty() {
-        cx.error_spanned_by(
-            &input.generics,
-            format!("{SUPPORTED}; generic structs are not supported"),
-        );
-        return None;
-    }
-    if let Some(clause) = &input.generics.where_clause {
-        cx.error_spanned_by(
-            clause,
-            format!("{SUPPORTED}; where clauses are not supported: remove it"),
-        );
-        return None;
-    }
-    let fields = match &input.data {
-        Data::Struct(s) => match &s.fields {
-            Fields::Named(named) => named
-                .named
-                .iter()
-                .filter_map(|f| {
-                    Some(Field {
-                        ident: f.ident.as_ref()?,
-                        ty: &f.ty,
-                    })
-                })
-                .collect(),
-            Fields::Unit => Vec::new(),
-            Fields::Unnamed(unnamed) => {
-                cx.error_spanned_by(
-                    unnamed,
-                    format!("{SUPPORTED}; tuple structs are not supported: name the fields"),
-                );
-                return None;
-            }
-        },
-        Data::Enum(e) => {
-            cx.error_spanned_by(
-                e.enum_token,
-                format!("{SUPPORTED}; enums are not supported"),
-            );
-            return None;
-        }
-        Data::Union(u) => {
-            cx.error_spanned_by(
-                u.union_token,
-                format!("{SUPPORTED}; unions are not supported"),
-            );
-            return None;
-        }
-    };
-    Some(Input {
-        ident: &input.ident,
-        fields,
-        rigid: Vec::new(),
-        top: Vec::new(),
-    })
 }

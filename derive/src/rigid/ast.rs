@@ -56,17 +56,22 @@ impl Field<'_> {
     }
 }
 
-const SUPPORTED: &str =
-    "`RigidBody` can be derived only for a struct with named f64 fields (or no fields)";
-
 impl<'a> Input<'a> {
     /// The view of `input`, or `None` after recording why the derive does not apply.
     pub fn from_syn(cx: &Ctxt, input: &'a DeriveInput) -> Option<Input<'a>> {
+        Self::for_derive(cx, input, "RigidBody")
+    }
+
+    /// The view of `input` for the derive named `derive` (its name in the errors).
+    pub fn for_derive(cx: &Ctxt, input: &'a DeriveInput, derive: &str) -> Option<Input<'a>> {
+        let supported = format!(
+            "`{derive}` can be derived only for a struct with named f64 fields (or no fields)"
+        );
         // A generic struct has no single set of field values to describe a body with.
         if !input.generics.params.is_empty() {
             cx.error_spanned_by(
                 &input.generics,
-                format!("{SUPPORTED}; generic structs are not supported"),
+                format!("{supported}; generic structs are not supported"),
             );
             return None;
         }
@@ -74,7 +79,7 @@ impl<'a> Input<'a> {
         if let Some(clause) = &input.generics.where_clause {
             cx.error_spanned_by(
                 clause,
-                format!("{SUPPORTED}; where clauses are not supported: remove it"),
+                format!("{supported}; where clauses are not supported: remove it"),
             );
             return None;
         }
@@ -94,7 +99,7 @@ impl<'a> Input<'a> {
                 Fields::Unnamed(unnamed) => {
                     cx.error_spanned_by(
                         unnamed,
-                        format!("{SUPPORTED}; tuple structs are not supported: name the fields"),
+                        format!("{supported}; tuple structs are not supported: name the fields"),
                     );
                     return None;
                 }
@@ -102,14 +107,14 @@ impl<'a> Input<'a> {
             Data::Enum(e) => {
                 cx.error_spanned_by(
                     e.enum_token,
-                    format!("{SUPPORTED}; enums are not supported"),
+                    format!("{supported}; enums are not supported"),
                 );
                 return None;
             }
             Data::Union(u) => {
                 cx.error_spanned_by(
                     u.union_token,
-                    format!("{SUPPORTED}; unions are not supported"),
+                    format!("{supported}; unions are not supported"),
                 );
                 return None;
             }

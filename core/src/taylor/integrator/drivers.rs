@@ -2,6 +2,7 @@
 //! [`Run`](crate::ode::Run), and the one-call drivers in the shape of [`crate::ode::solve`].
 
 use super::{Taylor, TaylorConfig};
+use crate::ode::drivers::{check_sampling, check_sorted, sample, through_stops};
 use crate::ode::{OdeError, Solution, Stats, Stepper, check_finite, check_span};
 use crate::taylor::TaylorSystem;
 
@@ -81,15 +82,7 @@ pub fn solve<S: TaylorSystem<N>, const N: usize>(
     check_span(t0, t_end)?;
     check_sorted(t0, stops)?;
     let mut ode = Taylor::new(sys, t0, y0, cfg)?;
-    for &s in stops.iter().filter(|&&s| s < t_end) {
-        ode.advance_to(s)?;
-    }
-    ode.advance_to(t_end)?;
-    Ok(Solution {
-        t: ode.t(),
-        y: *ode.y(),
-        stats: ode.stats(),
-    })
+    through_stops(&mut ode, t_end, stops)
 }
 
 /// Integrates from `(t0, y0)` and writes the state at each of `times` (ascending, ≥ t0),
@@ -105,35 +98,7 @@ pub fn solve_dense<S: TaylorSystem<N>, const N: usize>(
     out: &mut [[f64; N]],
     cfg: TaylorConfig,
 ) -> Result<Stats, OdeError> {
-    check_sorted(t0, times)?;
-    if out.len() < times.len() {
-        return Err(OdeError::InvalidParameter {
-            name: "out.len()",
-            value: out.len() as f64,
-        });
-    }
+    check_sampling(t0, times, out)?;
     let mut ode = Taylor::new(sys, t0, y0, cfg)?;
-    let t_end = times.last().copied().unwrap_or(t0);
-    for (ti, o) in times.iter().zip(out.iter_mut()) {
-        while ode.t() < *ti {
-            ode.step(t_end)?;
-        }
-        *o = if *ti == t0 { y0 } else { ode.dense_at(*ti)? };
-    }
-    Ok(ode.stats())
-}
-
-/// Checks that `times` are finite, ascending and not before `t0`.
-fn check_sorted(t0: f64, times: &[f64]) -> Result<(), OdeError> {
-    let mut last = t0;
-    for &s in times {
-        if !s.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: s });
-        }
-        if s < last {
-            return Err(OdeError::StopBeforeCurrent { stop: s, t: last });
-        }
-        last = s;
-    }
-    Ok(())
+    sample(&mut ode, times, out)
 }
