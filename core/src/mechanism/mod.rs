@@ -14,8 +14,11 @@
 //! - [`recursive_accelerations`] is the recursive route (the articulated-body algorithm,
 //!   symbolic, O(n) operations), [`MechanismAba`] the same algorithm numerically, the
 //!   generic O(n) reference the benchmarks compare against.
+//! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
+//!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
 
 mod aba;
+pub mod charts;
 mod derive;
 mod dynamics;
 mod error;
@@ -27,6 +30,7 @@ mod scene;
 mod validate;
 
 pub use aba::MechanismAba;
+pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts};
 pub use derive::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;

@@ -272,7 +272,7 @@ fn state_in<C: AngleChart>(
 }
 
 /// Checks that `r` is a finite rotation matrix within [`ROTATION_TOLERANCE`].
-fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
+pub(crate) fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
     let orthogonality = (r.transpose() * r - Matrix3::identity()).abs().max();
     let det = r.determinant();
     // Written so that NaN fails both tests.

@@ -39,6 +39,7 @@ mod typeset;
 
 pub use angle_chart::AngleChart;
 pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
+pub(crate) use charted_top::check_rotation;
 pub use error::{ChartError, ModelError, TopError};
 pub use eulerian::EulerianTop;
 pub use fast_top::FastTop;

@@ -15,6 +15,8 @@ use crate::ctxt::Ctxt;
 use crate::private::Private;
 use crate::symbols::{FieldParameters, Lowering};
 
+mod charts;
+
 /// `impl MechanismDynamics<N>` and the rest, or `None` after recording why the equations
 /// could not be derived.
 pub fn expand(
@@ -127,6 +129,7 @@ pub fn expand(
             quote!(y[#j])
         })
         .chain((0..n).map(|k| quote!(__a[#k])));
+    let charts = charts::expand_charts(cx, ident, arena, &low, checked, route)?;
     Some(quote! {
         #[automatically_derived]
         impl #ident {
@@ -174,6 +177,8 @@ pub fn expand(
                 *dydt = [#(#dydt),*];
             }
         }
+
+        #charts
     })
 }
 

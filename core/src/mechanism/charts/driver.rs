@@ -1,0 +1,329 @@
+//! [`ChartedMechanism`]: DOP853 over a mechanism in one chart set, moving each spherical
+//! joint to its partner chart between steps when its `|det B_j|` falls below the threshold.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::error::MechanismChartError;
+use super::joint_map::{joint_rate_matrix, joint_rotation, map_to_partner, state_in_chart};
+use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
+use crate::ode::{Dop853, OdeError, Stats, System};
+use crate::rigid::AngleSequence;
+use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
+
+/// A mechanism integrated with DOP853 in whichever chart of each spherical joint is regular.
+///
+/// Between steps, every switchable spherical joint j whose `|det B_j|` is below
+/// [`ChartConfig::switch_below`] moves to its partner sequence when that is better
+/// conditioned and the resulting chart set is available ([`super::chart_variants`]): its
+/// three angles and rates are mapped exactly through the joint's attitude J_j and relative
+/// angular velocity ω_j ([`map_to_partner`]), the other coordinates are untouched, and the
+/// stepper restarts from the mapped state. The mechanism's physical state is the same in
+/// every chart, so energy and the bodies' motion carry straight through a switch.
+///
+/// # Examples
+///
+/// See `docs/mechanisms.md` (a sleeping top standing exactly upright on a spherical joint,
+/// where its declared ZXZ chart cannot even start).
+pub struct ChartedMechanism<D, const S: usize> {
+    ode: Dop853<InCharts<D>, S>,
+    joints: Vec<SphericalJoint>,
+    config: ChartConfig,
+    switches: usize,
+}
+
+/// The dynamics and the current chart set as one ODE system, so that a switch only changes
+/// `charts`.
+struct InCharts<D> {
+    dynamics: D,
+    charts: ChartSet,
+}
+
+impl<D: ChartedDynamics<S>, const S: usize> System<S> for InCharts<D> {
+    fn rhs(&self, t: f64, y: &[f64; S], dydt: &mut [f64; S]) {
+        self.dynamics.rhs_in(self.charts, t, y, dydt);
+    }
+}
+
+/// A joint's three angles or rates from the state (`offset` 0 for q, n for q̇).
+fn triple<const S: usize>(y: &[f64; S], at: usize) -> Option<[f64; 3]> {
+    y.get(at..at + 3)?.try_into().ok()
+}
+
+fn put<const S: usize>(y: &mut [f64; S], at: usize, v: &[f64; 3]) {
+    if let Some(slot) = y.get_mut(at..at + 3) {
+        slot.copy_from_slice(v);
+    }
+}
+
+impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
+    /// Starts from the state `y0 = [q, q̇]` given in the chart set `charts`.
+    ///
+    /// # Errors
+    /// [`MechanismChartError::InvalidSwitch`] for a `switch_below` that is not finite and
+    /// positive; [`MechanismChartError::StateLength`] if S ≠ 2n;
+    /// [`MechanismChartError::TooManyJoints`]; [`MechanismChartError::UnavailableCharts`] for
+    /// a chart set the mechanism does not provide; [`MechanismChartError::NonFinite`] for a
+    /// NaN or infinite state; [`MechanismChartError::Joint`] for a spherical joint at its
+    /// chart's gimbal lock (start it with [`ChartedMechanism::from_attitudes`]); the
+    /// stepper's errors.
+    pub fn new(
+        dynamics: D,
+        t0: f64,
+        y0: [f64; S],
+        charts: ChartSet,
+        config: ChartConfig,
+    ) -> Result<Self, MechanismChartError> {
+        let joints = check_setup(&dynamics, &config)?;
+        if !dynamics.has_charts(charts) {
+            return Err(MechanismChartError::UnavailableCharts { charts: charts.0 });
+        }
+        if !y0.iter().all(|v| v.is_finite()) {
+            return Err(MechanismChartError::NonFinite { values: y0.to_vec() });
+        }
+        for (j, joint) in joints.iter().enumerate() {
+            let q = triple(&y0, joint.first).unwrap_or_default();
+            let sequence = charts.sequence(j, joint.declared);
+            check_chart(sequence, &joint_rate_matrix(sequence, &q), &q).map_err(|source| {
+                MechanismChartError::Joint {
+                    joint: joint.name.clone(),
+                    source,
+                }
+            })?;
+        }
+        let ode = Dop853::new(InCharts { dynamics, charts }, t0, y0, config.stepper)?;
+        Ok(ChartedMechanism {
+            ode,
+            joints,
+            config,
+            switches: 0,
+        })
+    }
+
+    /// Starts with each spherical joint j at the relative attitude `attitudes[j].0` (child
+    /// axes to parent axes) turning at the relative angular velocity `attitudes[j].1` (child
+    /// axes), in the better conditioned of its charts; the other coordinates and rates are
+    /// taken from `y0` (whose spherical joints' slots are ignored).
+    ///
+    /// # Errors
+    /// As [`ChartedMechanism::new`]; [`MechanismChartError::AttitudeCount`] unless there is
+    /// one attitude per spherical joint; [`MechanismChartError::Attitude`] for a matrix that
+    /// is not a rotation within [`crate::top::ROTATION_TOLERANCE`] or a non-finite ω.
+    pub fn from_attitudes(
+        dynamics: D,
+        t0: f64,
+        y0: [f64; S],
+        attitudes: &[(Matrix3<f64>, Vector3<f64>)],
+        config: ChartConfig,
+    ) -> Result<Self, MechanismChartError> {
+        let joints = check_setup(&dynamics, &config)?;
+        if attitudes.len() != joints.len() {
+            return Err(MechanismChartError::AttitudeCount {
+                expected: joints.len(),
+                got: attitudes.len(),
+            });
+        }
+        let n = S / 2;
+        // Each joint's state and |det B| in its declared and its partner chart.
+        let mut placed = Vec::with_capacity(joints.len());
+        for (joint, (r, w)) in joints.iter().zip(attitudes) {
+            let attitude = |source| MechanismChartError::Attitude {
+                joint: joint.name.clone(),
+                source,
+            };
+            check_rotation(r).map_err(attitude)?;
+            if !w.iter().all(|v| v.is_finite()) {
+                return Err(attitude(ChartError::NonFiniteOmega {
+                    omega: [w.x, w.y, w.z],
+                }));
+            }
+            let declared = state_in_chart(joint.declared, r, w);
+            let partner = state_in_chart(joint.declared.other(), r, w);
+            placed.push((declared, partner));
+        }
+        let det = |s: &Result<([f64; 3], [f64; 3], f64), _>| s.as_ref().map_or(0.0, |s| s.2);
+        // The worst-conditioned joints choose first, so that under the k + 1 rule the
+        // one switch available goes where it is needed most.
+        let mut by_need: Vec<usize> = (0..joints.len()).collect();
+        by_need.sort_by(|&a, &b| det(&placed[a].0).total_cmp(&det(&placed[b].0)));
+        let mut charts = ChartSet::DECLARED;
+        for &j in &by_need {
+            let (declared, partner) = &placed[j];
+            let better = det(partner) > det(declared);
+            if joints[j].switchable && better && dynamics.has_charts(charts.toggled(j)) {
+                charts = charts.toggled(j);
+            }
+        }
+        let mut y = y0;
+        for (j, joint) in joints.iter().enumerate() {
+            let (declared, partner) = &placed[j];
+            let chosen = if charts.is_switched(j) {
+                partner
+            } else {
+                declared
+            };
+            let (q, qd, _) = chosen
+                .clone()
+                .map_err(|source| MechanismChartError::Joint {
+                    joint: joint.name.clone(),
+                    source,
+                })?;
+            put(&mut y, joint.first, &q);
+            put(&mut y, joint.first + n, &qd);
+        }
+        Self::new(dynamics, t0, y, charts, config)
+    }
+
+    /// Integrates to `t_end`, switching charts between steps as needed. A stop at the
+    /// current time does nothing.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_end`,
+    /// [`OdeError::StopBeforeCurrent`] for one before the current time, and the stepper's
+    /// errors (a joint that reaches gimbal lock with no chart to switch to makes the
+    /// step fail).
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), MechanismChartError> {
+        if !t_end.is_finite() {
+            return Err(OdeError::NonFiniteTime { t: t_end }.into());
+        }
+        if t_end < self.ode.t() {
+            return Err(OdeError::StopBeforeCurrent {
+                stop: t_end,
+                t: self.ode.t(),
+            }
+            .into());
+        }
+        while self.ode.t() < t_end {
+            self.ode.step(t_end)?;
+            self.maybe_switch()?;
+        }
+        Ok(())
+    }
+
+    /// Moves each joint near its chart's lock to its partner chart when that is better
+    /// conditioned and available; restarts the stepper once if any moved.
+    fn maybe_switch(&mut self) -> Result<(), MechanismChartError> {
+        let n = S / 2;
+        let mut y = *self.ode.y();
+        let system = self.ode.system();
+        let mut charts = system.charts;
+        for (j, joint) in self.joints.iter().enumerate() {
+            if !joint.switchable {
+                continue;
+            }
+            let (Some(q), Some(qd)) = (triple(&y, joint.first), triple(&y, joint.first + n))
+            else {
+                continue;
+            };
+            let here = charts.sequence(j, joint.declared);
+            let det_here = joint_rate_matrix(here, &q).determinant().abs();
+            if det_here >= self.config.switch_below
+                || !system.dynamics.has_charts(charts.toggled(j))
+            {
+                continue;
+            }
+            let Ok((p, pd, det_other)) = map_to_partner(here, &q, &qd) else {
+                continue;
+            };
+            if det_other <= det_here {
+                continue;
+            }
+            put(&mut y, joint.first, &p);
+            put(&mut y, joint.first + n, &pd);
+            charts = charts.toggled(j);
+            self.switches += 1;
+        }
+        if charts != self.ode.system().charts {
+            // A fresh start in the new chart set, its first step size from its own f.
+            let t = self.ode.t();
+            self.ode.modify_system(|s| s.charts = charts);
+            self.ode.reinitialise(t, y)?;
+        }
+        Ok(())
+    }
+
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.ode.t()
+    }
+
+    /// The state `[q, q̇]` in the current chart set.
+    pub fn state(&self) -> &[f64; S] {
+        self.ode.y()
+    }
+
+    /// The current chart set.
+    pub fn charts(&self) -> ChartSet {
+        self.ode.system().charts
+    }
+
+    /// The spherical joints, in the order of the chart set's bits.
+    pub fn joints(&self) -> &[SphericalJoint] {
+        &self.joints
+    }
+
+    /// The sequence spherical joint `j` is integrated in now (`None` past the last joint).
+    pub fn sequence(&self, j: usize) -> Option<AngleSequence> {
+        let joint = self.joints.get(j)?;
+        Some(self.charts().sequence(j, joint.declared))
+    }
+
+    /// The relative attitude J_j of spherical joint `j` (its child's axes to its parent's).
+    pub fn joint_rotation(&self, j: usize) -> Option<Matrix3<f64>> {
+        let q = triple(self.ode.y(), self.joints.get(j)?.first)?;
+        Some(joint_rotation(self.sequence(j)?, &q))
+    }
+
+    /// The relative angular velocity ω_j of spherical joint `j`, in its child's axes.
+    pub fn joint_omega(&self, j: usize) -> Option<Vector3<f64>> {
+        let first = self.joints.get(j)?.first;
+        let q = triple(self.ode.y(), first)?;
+        let qd = triple(self.ode.y(), first + S / 2)?;
+        Some(joint_rate_matrix(self.sequence(j)?, &q) * Vector3::from(qd))
+    }
+
+    /// The energy T + V.
+    pub fn energy(&self) -> f64 {
+        let system = self.ode.system();
+        system
+            .dynamics
+            .energy_in(system.charts, self.ode.t(), self.ode.y())
+    }
+
+    /// The dynamics being integrated.
+    pub fn dynamics(&self) -> &D {
+        &self.ode.system().dynamics
+    }
+
+    /// The work done so far, over every chart set.
+    pub fn stats(&self) -> Stats {
+        self.ode.stats()
+    }
+
+    /// How many joint switches the driver made.
+    pub fn switches(&self) -> usize {
+        self.switches
+    }
+}
+
+/// Checks the configuration and the dynamics' shape; returns the spherical joints.
+fn check_setup<D: ChartedDynamics<S>, const S: usize>(
+    dynamics: &D,
+    config: &ChartConfig,
+) -> Result<Vec<SphericalJoint>, MechanismChartError> {
+    let switch = config.switch_below;
+    if !(switch.is_finite() && switch > 0.0) {
+        return Err(MechanismChartError::InvalidSwitch { value: switch });
+    }
+    let expected = 2 * dynamics.dof();
+    if S != expected {
+        return Err(MechanismChartError::StateLength { expected, got: S });
+    }
+    let joints = dynamics.spherical_joints();
+    if joints.len() > MAX_SPHERICAL_JOINTS {
+        return Err(MechanismChartError::TooManyJoints {
+            count: joints.len(),
+            max: MAX_SPHERICAL_JOINTS,
+        });
+    }
+    Ok(joints)
+}
