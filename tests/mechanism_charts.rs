@@ -330,3 +330,101 @@ fn bad_settings_and_states_are_typed_errors() {
     assert_eq!((joints[0].name.as_str(), joints[0].first), ("top", 0));
     assert!(ChartedDynamics::<6>::has_charts(&UprightTop, ChartSet(1)));
 }
+
+/// Two rods on ball joints, one hanging from the other: two spherical joints, so the derive
+/// emits all four chart sets.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, joint = spherical(sequence = zxz), q = [phi1, theta1, psi1],
+       parts(rod(mass = 1.0, length = 1.0, at = [0.0, 0.0, -0.5]),
+             sphere(mass = 0.2, radius = 0.1, at = [0.0, 0.0, -1.0])))]
+#[body(lower, parent = upper, joint = spherical(sequence = zxz, at = [0.0, 0.0, -1.0]),
+       q = [phi2, theta2, psi2],
+       parts(rod(mass = 0.5, length = 0.8, at = [0.0, 0.0, -0.4]),
+             sphere(mass = 0.2, radius = 0.1, at = [0.0, 0.0, -0.8])))]
+struct TwoBalls;
+
+#[test]
+fn two_ball_joints_switch_each_on_its_own_and_agree_with_the_all_zyx_start() {
+    for charts in 0..4 {
+        assert!(ChartedDynamics::<12>::has_charts(&TwoBalls, ChartSet(charts)));
+    }
+    let (q1, qd1) = ([0.2, 0.35, -0.1], [0.1, -1.2, 0.4]);
+    let (q2, qd2) = ([-0.4, 0.3, 0.5], [-0.2, 1.0, -0.3]);
+    let state = |a: [f64; 3], ad: [f64; 3], b: [f64; 3], bd: [f64; 3]| {
+        let mut y = [0.0; 12];
+        y[..3].copy_from_slice(&a);
+        y[3..6].copy_from_slice(&b);
+        y[6..9].copy_from_slice(&ad);
+        y[9..].copy_from_slice(&bd);
+        y
+    };
+    let y0 = state(q1, qd1, q2, qd2);
+    let mut declared =
+        ChartedMechanism::new(&TwoBalls, 0.0, y0, ChartSet::DECLARED, tight()).unwrap();
+    let (p1, pd1, _) = map_to_partner(AngleSequence::Zxz, &q1, &qd1).unwrap();
+    let (p2, pd2, _) = map_to_partner(AngleSequence::Zxz, &q2, &qd2).unwrap();
+    let y1 = state(p1, pd1, p2, pd2);
+    let mut partner = ChartedMechanism::new(&TwoBalls, 0.0, y1, ChartSet(3), tight()).unwrap();
+    let e0 = declared.energy();
+    assert_relative_eq!(partner.energy(), e0, max_relative = 1e-14);
+    let mut t = 0.0;
+    while t < 2.0 {
+        t += 0.05;
+        declared.advance_to(t).unwrap();
+        partner.advance_to(t).unwrap();
+        assert_relative_eq!(declared.energy(), e0, max_relative = 1e-9);
+        assert_relative_eq!(partner.energy(), e0, max_relative = 1e-9);
+    }
+    assert!(declared.switches() >= 2, "switched {} times", declared.switches());
+    for j in 0..2 {
+        assert_relative_eq!(
+            declared.joint_rotation(j).unwrap(),
+            partner.joint_rotation(j).unwrap(),
+            epsilon = 1e-7
+        );
+        assert_relative_eq!(
+            declared.joint_omega(j).unwrap(),
+            partner.joint_omega(j).unwrap(),
+            epsilon = 1e-6
+        );
+    }
+}
+
+#[test]
+fn past_two_ball_joints_each_switches_alone_and_loaded_joints_never() {
+    let mut arena = Arena::new();
+    let (o, z) = (arena.one(), arena.zero());
+    let down = arena.integer(-1);
+    let tenth = {
+        let ten = arena.integer(10);
+        arena.recip(ten).unwrap()
+    };
+    // Four bodies each on its own ball joint to the ground: the rule is the same as for a
+    // chain, and the derivations stay cheap.
+    let mut scene = MechanismScene::new();
+    for i in 0..4 {
+        let ball = JointKind::Spherical {
+            sequence: AngleSequence::Zyx,
+        };
+        let names = [0, 1, 2].map(|k| format!("q{i}{k}"));
+        let names = names.each_ref().map(String::as_str);
+        let mut b =
+            MechanismScene::body(&mut arena, &format!("b{i}"), Parent::Ground, ball, &names);
+        b.mass = o;
+        b.center = [z, z, down];
+        b.inertia = [[tenth, z, z], [z, tenth, z], [z, z, tenth]];
+        scene.bodies.push(b);
+    }
+    // A damper on the last joint's first angle ties it to its declared chart.
+    scene.bodies[3].joint.loads[0].damper = Some(tenth);
+    scene.gravity = Some([z, z, arena.integer(-1)]);
+    let charts = MechanismCharts::new(&mut arena, &scene, Route::Auto, &[]).unwrap();
+    let joints = ChartedDynamics::<24>::spherical_joints(&charts);
+    let switchable: Vec<bool> = joints.iter().map(|j| j.switchable).collect();
+    assert_eq!(switchable, [true, true, true, false]);
+    let available: Vec<u32> = (0..16)
+        .filter(|&c| ChartedDynamics::<24>::has_charts(&charts, ChartSet(c)))
+        .collect();
+    assert_eq!(available, [0, 1, 2, 4]);
+}
