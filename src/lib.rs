@@ -64,7 +64,9 @@ pub mod __private {
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::mechanism::charts::SphericalJoint;
-    pub use precess_core::mechanism::{ChartSet, ChartedDynamics, MechanismDynamics, MechanismError};
+    pub use precess_core::mechanism::{
+        ChartSet, ChartedDynamics, MechanismDynamics, MechanismError,
+    };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;

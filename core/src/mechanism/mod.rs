@@ -30,7 +30,9 @@ mod scene;
 mod validate;
 
 pub use aba::MechanismAba;
-pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts};
+pub use charts::{
+    ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
+};
 pub use derive::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;

@@ -38,8 +38,8 @@ mod top_trait;
 mod typeset;
 
 pub use angle_chart::AngleChart;
-pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
 pub(crate) use charted_top::check_rotation;
+pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
 pub use error::{ChartError, ModelError, TopError};
 pub use eulerian::EulerianTop;
 pub use fast_top::FastTop;

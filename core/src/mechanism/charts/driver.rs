@@ -78,7 +78,9 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
             return Err(MechanismChartError::UnavailableCharts { charts: charts.0 });
         }
         if !y0.iter().all(|v| v.is_finite()) {
-            return Err(MechanismChartError::NonFinite { values: y0.to_vec() });
+            return Err(MechanismChartError::NonFinite {
+                values: y0.to_vec(),
+            });
         }
         for (j, joint) in joints.iter().enumerate() {
             let q = triple(&y0, joint.first).unwrap_or_default();
@@ -210,8 +212,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
             if !joint.switchable {
                 continue;
             }
-            let (Some(q), Some(qd)) = (triple(&y, joint.first), triple(&y, joint.first + n))
-            else {
+            let (Some(q), Some(qd)) = (triple(&y, joint.first), triple(&y, joint.first + n)) else {
                 continue;
             };
             let here = charts.sequence(j, joint.declared);

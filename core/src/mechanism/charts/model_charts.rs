@@ -14,8 +14,9 @@ use crate::sym::Arena;
 ///
 /// # Examples
 ///
-/// A pendulum on a spherical joint (a unit point mass a unit length below the joint, g = 1)
-/// has the equations of both of its charts; hanging straight down it is at rest in either:
+/// A pendulum on a spherical joint (a unit mass a unit length below the joint, I = 1 about
+/// its centre, g = 1) has the equations of both of its charts; hanging straight down it is
+/// at rest in either:
 ///
 /// ```
 /// use precess_core::mechanism::charts::{ChartSet, ChartedDynamics, MechanismCharts};
@@ -28,6 +29,7 @@ use crate::sym::Arena;
 /// let mut bob = MechanismScene::body(&mut a, "bob", Parent::Ground, ball, &["phi", "theta", "psi"]);
 /// bob.mass = o;
 /// bob.center = [z, z, a.integer(-1)];
+/// bob.inertia = [[o, z, z], [z, o, z], [z, z, o]];
 /// let mut scene = MechanismScene::new();
 /// scene.bodies.push(bob);
 /// scene.gravity = Some([z, z, a.integer(-1)]);
@@ -35,7 +37,7 @@ use crate::sym::Arena;
 /// assert!(charts.has_charts(ChartSet(1)));
 /// let mut dydt = [1.0; 6];
 /// // ZYX at zero angles: the bob straight down.
-/// charts.rhs_in(ChartSet(1), 0.0, &[0.0; 6], &mut dydt);
+/// ChartedDynamics::<6>::rhs_in(&charts, ChartSet(1), 0.0, &[0.0; 6], &mut dydt);
 /// assert_eq!(dydt, [0.0; 6]);
 /// # Ok::<(), precess_core::mechanism::charts::MechanismChartError>(())
 /// ```
@@ -84,6 +86,21 @@ impl MechanismCharts {
             .map(|(_, m)| m)
     }
 
+    /// Whether the equations of `charts` are available ([`chart_variants`]).
+    pub fn has_charts(&self, charts: ChartSet) -> bool {
+        self.model(charts).is_some()
+    }
+
+    /// The spherical joints, in body order.
+    pub fn spherical_joints(&self) -> &[SphericalJoint] {
+        &self.joints
+    }
+
+    /// The number of coordinates n.
+    pub fn dof(&self) -> usize {
+        self.models.first().map_or(0, |(_, m)| m.dof())
+    }
+
     /// Sets the parameter `name` in every chart's model.
     ///
     /// # Errors
@@ -98,7 +115,7 @@ impl MechanismCharts {
 
 impl<const S: usize> ChartedDynamics<S> for MechanismCharts {
     fn dof(&self) -> usize {
-        self.models.first().map_or(0, |(_, m)| m.dof())
+        MechanismCharts::dof(self)
     }
 
     fn spherical_joints(&self) -> Vec<SphericalJoint> {
@@ -106,7 +123,7 @@ impl<const S: usize> ChartedDynamics<S> for MechanismCharts {
     }
 
     fn has_charts(&self, charts: ChartSet) -> bool {
-        self.model(charts).is_some()
+        MechanismCharts::has_charts(self, charts)
     }
 
     fn rhs_in(&self, charts: ChartSet, t: f64, y: &[f64; S], dydt: &mut [f64; S]) {
