@@ -22,8 +22,39 @@ use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
 ///
 /// # Examples
 ///
-/// See `docs/mechanisms.md` (a sleeping top standing exactly upright on a spherical joint,
-/// where its declared ZXZ chart cannot even start).
+/// A pendulum on a ball joint (unit mass a unit length down, I = 1/10 about its centre,
+/// g = 1) released from a 0.8 rad swing in the y–z plane passes straight below the joint,
+/// ZXZ's lock, where the driver moves it to ZYX; its energy stays −cos 0.8:
+///
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess_core::mechanism::charts::{ChartSet, ChartedMechanism, MechanismCharts};
+/// use precess_core::mechanism::{JointKind, MechanismScene, Parent, Route};
+/// use precess_core::rigid::AngleSequence;
+/// use precess_core::sym::Arena;
+/// use precess_core::top::ChartConfig;
+/// let mut a = Arena::new();
+/// let (o, z) = (a.one(), a.zero());
+/// let tenth = { let ten = a.integer(10); a.recip(ten).unwrap() };
+/// let ball = JointKind::Spherical { sequence: AngleSequence::Zxz };
+/// let mut bob = MechanismScene::body(&mut a, "bob", Parent::Ground, ball, &["phi", "theta", "psi"]);
+/// bob.mass = o;
+/// bob.center = [z, z, a.integer(-1)];
+/// bob.inertia = [[tenth, z, z], [z, tenth, z], [z, z, tenth]];
+/// let mut scene = MechanismScene::new();
+/// scene.bodies.push(bob);
+/// scene.gravity = Some([z, z, a.integer(-1)]);
+/// let charts = MechanismCharts::new(&mut a, &scene, Route::Auto, &[])?;
+/// let y0 = [0.0, 0.8, 0.0, 0.0, 0.0, 0.0]; // Rz(0) Rx(0.8) Rz(0), at rest
+/// let mut swing = ChartedMechanism::new(&charts, 0.0, y0, ChartSet::DECLARED, ChartConfig::default())?;
+/// swing.advance_to(2.0)?;
+/// assert_eq!((swing.switches(), swing.charts()), (1, ChartSet(1)));
+/// assert_relative_eq!(swing.energy(), -0.8f64.cos(), max_relative = 1e-9);
+/// # Ok::<(), precess_core::mechanism::charts::MechanismChartError>(())
+/// ```
+///
+/// `docs/mechanisms.md` starts a sleeping top standing exactly upright, where its declared
+/// ZXZ chart cannot even start, with [`ChartedMechanism::from_attitudes`].
 pub struct ChartedMechanism<D, const S: usize> {
     ode: Dop853<InCharts<D>, S>,
     joints: Vec<SphericalJoint>,
