@@ -448,3 +448,40 @@ fn past_two_ball_joints_each_switches_alone_and_loaded_joints_never() {
         .collect();
     assert_eq!(available, [0, 1, 2, 4]);
 }
+
+/// A top with a damper on its spin angle, and one whose hinge is driven by a user function
+/// (on the factored route: with a user function the recursive route's expansion does not
+/// compile yet, `__effort_0` not found, with or without the chart impl).
+#[derive(Mechanism)]
+#[mechanism(gravity = 1.0)]
+#[body(top, joint = spherical(sequence = zxz), q = [phi, theta, psi], damper = [0.0, 0.0, 0.1],
+       parts(body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(0.25, 0.25, 0.5))))]
+struct DampedSpin;
+
+#[derive(Mechanism)]
+#[mechanism(gravity = 1.0, route = factored)]
+#[body(top, joint = spherical(sequence = zxz), q = [phi, theta, psi],
+       parts(body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(0.25, 0.25, 0.5))))]
+#[body(flap, parent = top, joint = revolute(axis = x, at = [0.0, 0.0, 1.0]), q = alpha,
+       effort = drive, parts(particle(mass = 0.1, at = [0.0, 0.0, 0.2])))]
+struct DrivenFlap;
+
+fn drive(_: &DrivenFlap, t: f64, _q: &[f64; 4], _qdot: &[f64; 4]) -> f64 {
+    0.01 * t.sin()
+}
+
+#[test]
+fn loads_on_angles_and_user_functions_keep_the_declared_charts() {
+    let damped = ChartedDynamics::<6>::spherical_joints(&DampedSpin);
+    assert!(!damped[0].switchable);
+    assert!(!ChartedDynamics::<6>::has_charts(&DampedSpin, ChartSet(1)));
+    let driven = ChartedDynamics::<8>::spherical_joints(&DrivenFlap);
+    assert!(!driven[0].switchable);
+    assert!(!ChartedDynamics::<8>::has_charts(&DrivenFlap, ChartSet(1)));
+    // It still runs in its declared chart, away from the lock.
+    let y0 = [0.0, 1.0, 0.0, 0.2, 0.0, 0.0, 0.0, 0.0];
+    let mut flap =
+        ChartedMechanism::new(&DrivenFlap, 0.0, y0, ChartSet::DECLARED, tight()).unwrap();
+    flap.advance_to(0.5).unwrap();
+    assert_eq!((flap.switches(), flap.charts()), (0, ChartSet::DECLARED));
+}
