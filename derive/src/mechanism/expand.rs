@@ -187,6 +187,21 @@ fn local_of(effort: &UserEffort) -> Ident {
     format_ident!("__effort_{}", effort.index)
 }
 
+/// The symbols `outputs` read, looking through bound intermediates (the recursive route's
+/// abbreviations, leaves to `free_symbols`) to their definitions, as the lowering does.
+fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> std::collections::HashSet<SymbolId> {
+    let mut read = std::collections::HashSet::new();
+    let mut pending: Vec<ExprId> = outputs.to_vec();
+    while let Some(e) = pending.pop() {
+        for s in arena.free_symbols(e) {
+            if read.insert(s) {
+                pending.extend(arena.definition(s));
+            }
+        }
+    }
+    read
+}
+
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
 struct Method<'a> {
     low: &'a Lowering<'a>,
@@ -209,10 +224,7 @@ impl Method<'_> {
             reads.push((v, quote!(qdot[#k])));
         }
         reads.push((self.derivation.time, quote!(t)));
-        let read: Vec<SymbolId> = outputs
-            .iter()
-            .flat_map(|&o| arena.free_symbols(o))
-            .collect();
+        let read = symbols_read(arena, outputs);
         // A user function is called only by the methods whose result reads its value.
         let calls = self.efforts.iter().filter_map(|e| {
             let s = arena.as_symbol(e.symbol)?;
