@@ -485,3 +485,73 @@ fn loads_on_angles_and_user_functions_keep_the_declared_charts() {
     flap.advance_to(0.5).unwrap();
     assert_eq!((flap.switches(), flap.charts()), (0, ChartSet::DECLARED));
 }
+
+/// The relative angular acceleration ω̇ = B q̈ + Ḃ q̇ of a joint, Ḃ q̇ by central differences
+/// along q̇.
+fn joint_omega_dot(
+    sequence: AngleSequence,
+    q: [f64; 3],
+    qd: [f64; 3],
+    qdd: [f64; 3],
+) -> Vector3<f64> {
+    let h = 1e-6;
+    let at = |s: f64| [0, 1, 2].map(|k| q[k] + s * qd[k]);
+    let b_dot =
+        (joint_rate_matrix(sequence, &at(h)) - joint_rate_matrix(sequence, &at(-h))) / (2.0 * h);
+    joint_rate_matrix(sequence, &q) * Vector3::from(qdd) + b_dot * Vector3::from(qd)
+}
+
+#[test]
+fn every_chart_arm_of_the_derive_is_the_same_motion() {
+    // At random states, the state mapped into each chart set gives the same angular
+    // accelerations of both joints and the same energy as the declared charts.
+    let mut rng = Rng::new(7);
+    let part = |y: &[f64; 12], at: usize| [y[at], y[at + 1], y[at + 2]];
+    for _ in 0..100 {
+        let mut y = [0.0; 12];
+        for (k, v) in y.iter_mut().enumerate() {
+            *v = match k {
+                1 | 4 => rng.uniform(0.4, 2.7),
+                0..6 => rng.uniform(-3.0, 3.0),
+                _ => rng.uniform(-2.0, 2.0),
+            };
+        }
+        let mut dydt = [0.0; 12];
+        TwoBalls.rhs_in(ChartSet::DECLARED, 0.0, &y, &mut dydt);
+        let e = TwoBalls.energy_in(ChartSet::DECLARED, 0.0, &y);
+        let omega_dot = [0, 3].map(|at| {
+            joint_omega_dot(
+                AngleSequence::Zxz,
+                part(&y, at),
+                part(&y, at + 6),
+                part(&dydt, at + 6),
+            )
+        });
+        for charts in 1..4 {
+            let charts = ChartSet(charts);
+            let mut z = y;
+            for (j, at) in [0, 3].into_iter().enumerate() {
+                if charts.is_switched(j) {
+                    let (p, pd, _) =
+                        map_to_partner(AngleSequence::Zxz, &part(&y, at), &part(&y, at + 6))
+                            .unwrap();
+                    z[at..at + 3].copy_from_slice(&p);
+                    z[at + 6..at + 9].copy_from_slice(&pd);
+                }
+            }
+            let mut dzdt = [0.0; 12];
+            TwoBalls.rhs_in(charts, 0.0, &z, &mut dzdt);
+            assert_relative_eq!(TwoBalls.energy_in(charts, 0.0, &z), e, max_relative = 1e-12);
+            for (j, at) in [0, 3].into_iter().enumerate() {
+                let sequence = charts.sequence(j, AngleSequence::Zxz);
+                let w = joint_omega_dot(
+                    sequence,
+                    part(&z, at),
+                    part(&z, at + 6),
+                    part(&dzdt, at + 6),
+                );
+                assert_relative_eq!(w, omega_dot[j], epsilon = 1e-6, max_relative = 1e-6);
+            }
+        }
+    }
+}
