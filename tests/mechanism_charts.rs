@@ -152,6 +152,7 @@ fn a_pendulum_on_a_ball_joint_swings_through_lock_in_either_starting_chart() {
     let e0 = zxz.energy();
     assert_relative_eq!(zyx.energy(), e0, max_relative = 1e-14);
     let mut closest = f64::INFINITY;
+    let mut drift = 0.0f64;
     let mut t = 0.0;
     while t < 3.0 {
         t += 0.01;
@@ -160,9 +161,14 @@ fn a_pendulum_on_a_ball_joint_swings_through_lock_in_either_starting_chart() {
         let r = zxz.joint_rotation(0).unwrap();
         // The ZXZ lock is the body z axis vertical, |det B| = sin θ = |R e_z × e_z|.
         closest = closest.min(r[(0, 2)].hypot(r[(1, 2)]));
-        assert_relative_eq!(zxz.energy(), e0, max_relative = 1e-9);
-        assert_relative_eq!(zyx.energy(), e0, max_relative = 1e-9);
+        drift = drift.max(((zxz.energy() - e0) / e0).abs());
+        drift = drift.max(((zyx.energy() - e0) / e0).abs());
     }
+    println!(
+        "ball and hinge: max |ΔE/E| {drift:e}, closest sin θ {closest:e}, switches {}",
+        zxz.switches()
+    );
+    assert!(drift <= 1e-9, "energy drift {drift:e}");
     assert!(closest < 0.1, "never came near the lock: sin θ ≥ {closest}");
     assert!(zxz.switches() >= 1);
     assert_relative_eq!(
@@ -384,14 +390,20 @@ fn two_ball_joints_switch_each_on_its_own_and_agree_with_the_all_zyx_start() {
     let mut partner = ChartedMechanism::new(&TwoBalls, 0.0, y1, ChartSet(3), tight()).unwrap();
     let e0 = declared.energy();
     assert_relative_eq!(partner.energy(), e0, max_relative = 1e-14);
+    let mut drift = 0.0f64;
     let mut t = 0.0;
     while t < 2.0 {
         t += 0.05;
         declared.advance_to(t).unwrap();
         partner.advance_to(t).unwrap();
-        assert_relative_eq!(declared.energy(), e0, max_relative = 1e-9);
-        assert_relative_eq!(partner.energy(), e0, max_relative = 1e-9);
+        drift = drift.max(((declared.energy() - e0) / e0).abs());
+        drift = drift.max(((partner.energy() - e0) / e0).abs());
     }
+    println!(
+        "two balls: max |ΔE/E| {drift:e}, switches {}",
+        declared.switches()
+    );
+    assert!(drift <= 1e-9, "energy drift {drift:e}");
     assert!(
         declared.switches() >= 2,
         "switched {} times",
