@@ -6,6 +6,7 @@
 pub mod attr;
 pub mod check;
 pub mod expand;
+mod fallback;
 mod joint;
 mod loads;
 mod tree;
@@ -32,9 +33,11 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             )
             .to_compile_error()
         }),
-        // No stub impls: `MechanismDynamics<N>` needs the coordinate count the errors may
-        // hide, and a wrong N would add errors of its own.
-        Err(errors) => errors.iter().map(syn::Error::to_compile_error).collect(),
+        Err(errors) => {
+            let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
+            out.extend(fallback::stub(input));
+            out
+        }
     }
 }
 
