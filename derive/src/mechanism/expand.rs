@@ -114,6 +114,7 @@ pub fn expand(
             pub const #upper: usize = #k;
         }
     });
+    let check_parameters = super::parameters::method(&low, arena, checked);
     let route_name = derivation.route.name();
     let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
         .map(|k| {
@@ -149,6 +150,7 @@ pub fn expand(
                         values: __values,
                     });
                 }
+                #p::MechanismDynamics::<#n>::check_parameters(self)?;
                 #checked_body
             }
 
@@ -162,6 +164,8 @@ pub fn expand(
             fn power(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #power
 
             fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
+
+            #check_parameters
         }
 
         #[automatically_derived]

@@ -9,6 +9,7 @@ pub mod expand;
 mod fallback;
 mod joint;
 mod loads;
+mod parameters;
 mod tree;
 
 use precess_core::sym::Arena;
