@@ -115,6 +115,7 @@ pub fn expand(
         }
     });
     let check_parameters = super::parameters::method(&low, arena, checked);
+    let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
     let route_name = derivation.route.name();
     let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
         .map(|k| {
@@ -166,6 +167,8 @@ pub fn expand(
             fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
 
             #check_parameters
+
+            #jacobian
         }
 
         #[automatically_derived]
@@ -187,7 +190,7 @@ fn local_of(effort: &UserEffort) -> Ident {
 }
 
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
-struct Method<'a> {
+pub(super) struct Method<'a> {
     low: &'a Lowering<'a>,
     derivation: &'a MechanismDerivation,
     efforts: &'a [UserEffort],
@@ -195,7 +198,7 @@ struct Method<'a> {
 
 impl Method<'_> {
     /// `{ user calls; lets; build(outputs) }`.
-    fn body(
+    pub(super) fn body(
         &self,
         arena: &mut Arena,
         outputs: &[ExprId],

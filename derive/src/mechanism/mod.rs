@@ -7,6 +7,7 @@ pub mod attr;
 pub mod check;
 pub mod expand;
 mod fallback;
+mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
