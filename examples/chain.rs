@@ -23,7 +23,6 @@ use precess::mechanism::{
     JointKind, MechanismDynamics, MechanismModel, MechanismScene, Parent, Route,
 };
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 use precess::sym::Arena;
 
 #[path = "mechanisms/chain.rs"]

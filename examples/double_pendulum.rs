@@ -28,7 +28,6 @@ use std::error::Error;
 use common::{Axes, Series, Table, plot};
 use precess::mechanism::MechanismDynamics;
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 
 const G: f64 = 9.81;
 

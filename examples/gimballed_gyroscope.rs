@@ -31,7 +31,6 @@ use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 use precess::top::HeavyTopTheory;
 
 const G: f64 = 9.81;
