@@ -24,7 +24,16 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
     let coordinates = written_coordinates(input);
-    let consts = coordinates.iter().enumerate().map(|(k, c)| {
+    // Each name once as a const (case aside, as the consts are named), N counting every one
+    // written: a duplicate is its own error, and the uses are sized for what was written.
+    let mut named: Vec<String> = Vec::new();
+    let unique = coordinates.iter().enumerate().filter(|(_, c)| {
+        let upper = c.to_string().to_uppercase();
+        let new = !named.contains(&upper);
+        named.push(upper);
+        new
+    });
+    let consts = unique.map(|(k, c)| {
         let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
         quote! {
             #[doc(hidden)]
@@ -76,8 +85,8 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     }
 }
 
-/// The coordinate names the `q = ...` keys of the `#[body(...)]` attributes write, each once
-/// (case aside, as their consts are), whatever else is wrong with the attributes.
+/// The coordinate names the `q = ...` keys of the `#[body(...)]` attributes write, in order,
+/// whatever else is wrong with the attributes.
 fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
     let mut names: Vec<Ident> = Vec::new();
     let lists = input
@@ -100,12 +109,7 @@ fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
                 Expr::Array(a) => a.elems.iter().collect(),
                 other => vec![other],
             };
-            for name in written.into_iter().filter_map(path_ident) {
-                let upper = name.to_string().to_uppercase();
-                if !names.iter().any(|n| n.to_string().to_uppercase() == upper) {
-                    names.push(name.clone());
-                }
-            }
+            names.extend(written.into_iter().filter_map(path_ident).cloned());
         }
     }
     names
