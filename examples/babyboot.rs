@@ -28,15 +28,9 @@ use common::{Axes, Series, Table, plot};
 use precess::ode::{AdaptiveConfig, Dop853, Vern9};
 use precess::prelude::*;
 
-/// Rod A on a horizontal hinge, plate B on a hinge along A.
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81)]
-#[body(rod, parent = ground, joint = revolute(axis = x), q = q_a,
-       parts(body(mass = 0.01, at = [0.0, 0.0, -0.075],
-                  inertia = diag(5.0e-6, 5.0e-6, 1.0e-7))))]
-#[body(plate, parent = rod, joint = revolute(axis = z, at = [0.0, 0.0, -0.2]), q = q_b,
-       parts(body(mass = 0.1, inertia = diag(2.5e-4, 5.0e-5, 2.0e-4))))]
-struct Babyboot;
+#[path = "mechanisms/babyboot.rs"]
+mod mechanism;
+use mechanism::Babyboot;
 
 /// MotionGenesis's state at t = 10 s: qA, qB [rad], q̇A, q̇B [rad/s].
 const REFERENCE: [f64; 4] = [

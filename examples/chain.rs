@@ -23,23 +23,11 @@ use precess::mechanism::{
     JointKind, MechanismDynamics, MechanismModel, MechanismScene, Parent, Route,
 };
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 use precess::sym::Arena;
 
-/// Four rods on universal joints.
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81)]
-#[body(link1, parent = ground, joint = universal(axes = [x, y]), q = [a1, b1],
-       parts(rod(mass = 1.0, length = 0.5, at = [0.0, 0.0, -0.25])))]
-#[body(link2, parent = link1, joint = universal(axes = [x, y], at = [0.0, 0.0, -0.5]),
-       q = [a2, b2], parts(rod(mass = 1.0, length = 0.5, at = [0.0, 0.0, -0.25])))]
-#[body(link3, parent = link2, joint = universal(axes = [x, y], at = [0.0, 0.0, -0.5]),
-       q = [a3, b3], parts(rod(mass = 1.0, length = 0.5, at = [0.0, 0.0, -0.25])))]
-#[body(link4, parent = link3, joint = universal(axes = [x, y], at = [0.0, 0.0, -0.5]),
-       q = [a4, b4], parts(rod(mass = 1.0, length = 0.5, at = [0.0, 0.0, -0.25])))]
-struct Chain;
-
-const LINKS: usize = 4;
+#[path = "mechanisms/chain.rs"]
+mod mechanism;
+use mechanism::{Chain, LINKS};
 
 /// The same chain built at run time.
 fn scene(a: &mut Arena) -> Result<MechanismScene, Box<dyn Error>> {

@@ -28,23 +28,12 @@ use std::error::Error;
 use common::{Axes, Series, Table, plot};
 use precess::mechanism::MechanismDynamics;
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 
 const G: f64 = 9.81;
 
-/// Two point masses on massless rods swinging about x.
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81)]
-#[body(upper, parent = ground, joint = revolute(name = shoulder, axis = x), q = theta1,
-       parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
-#[body(lower, parent = upper, joint = revolute(name = elbow, axis = x, at = [0.0, 0.0, -l1]),
-       q = theta2, parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
-struct DoublePendulum {
-    m1: f64,
-    l1: f64,
-    m2: f64,
-    l2: f64,
-}
+#[path = "mechanisms/double_pendulum.rs"]
+mod mechanism;
+use mechanism::DoublePendulum;
 
 impl DoublePendulum {
     /// The normal-mode frequencies (slow, fast) of the linearised pendulum.

@@ -31,7 +31,6 @@ use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess::prelude::*;
 use precess::top::HeavyTopTheory;
 
 const G: f64 = 9.81;
@@ -40,20 +39,9 @@ const RADIUS: f64 = 0.05;
 const L: f64 = 0.04;
 const RING: f64 = 0.07;
 
-/// The rotor in an inner and an outer gimbal; the gimbals' masses are fields, so they can
-/// be zero.
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81)]
-#[body(outer, parent = ground, joint = revolute(axis = z), q = phi,
-       parts(ring(mass = m_outer, radius = 0.08, axis = y)))]
-#[body(inner, parent = outer, joint = revolute(axis = x), q = theta,
-       parts(ring(mass = m_inner, radius = 0.07, axis = y)))]
-#[body(rotor, parent = inner, joint = revolute(axis = z), q = psi,
-       parts(disk(mass = 0.4, radius = 0.05, at = [0.0, 0.0, 0.04])))]
-struct Gyroscope {
-    m_outer: f64,
-    m_inner: f64,
-}
+#[path = "mechanisms/gimballed_gyroscope.rs"]
+mod mechanism;
+use mechanism::Gyroscope;
 
 /// The top's moments about the gimbal centre and M g l.
 fn top_theory() -> Result<HeavyTopTheory, Box<dyn Error>> {

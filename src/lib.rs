@@ -59,7 +59,7 @@ pub mod prelude {
 pub mod __private {
     pub use precess_core::body::{
         About, Axis, BodyError, Description, Matrix3, Orientation, Part, Principal, RigidBody,
-        Rotation3, Shape, Vector3, euler_rhs_diagonal, principal_frame,
+        Rotation3, Shape, Vector3, check_part, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};

@@ -3,6 +3,7 @@
 
 use thiserror::Error;
 
+use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::lagrange::LagrangeError;
 use crate::sym::SymError;
@@ -105,6 +106,38 @@ pub enum MechanismError {
         route: &'static str,
         /// Why.
         reason: &'static str,
+    },
+    /// A value the struct's fields give a quantity is NaN or infinite.
+    #[error("{owner}: {quantity} is {value} from the struct's fields; it must be finite")]
+    NonFiniteParameter {
+        /// The body or joint holding the quantity (`` body `arm` ``, `` joint `elbow` ``), or
+        /// `the mechanism` for gravity.
+        owner: String,
+        /// The quantity and component (`at[2]`, `stiffness of theta`, …).
+        quantity: String,
+        /// Its value.
+        value: f64,
+    },
+    /// A spring stiffness or a damper coefficient the struct's fields make negative (it would
+    /// feed energy in); literals are refused by the derive.
+    #[error("{owner}: {quantity} must not be negative, got {value:e} from the struct's fields")]
+    NegativeParameter {
+        /// The joint.
+        owner: String,
+        /// The coefficient and its coordinate (`damper of theta`).
+        quantity: String,
+        /// Its value.
+        value: f64,
+    },
+    /// A part of a body breaks, for the values of the struct's fields, a rule of the body
+    /// language that literal parts meet at compile time (a zero mass is allowed: a massless
+    /// link is the singular mass matrix's concern).
+    #[error("body `{body}`: {error}")]
+    Part {
+        /// The body.
+        body: String,
+        /// The rule broken, numbering the part within the body.
+        error: BodyError,
     },
     /// A parameter could not be bound.
     #[error("parameter binding: {0:?}")]

@@ -47,6 +47,9 @@ pub struct CheckedMechanism {
     pub efforts: Vec<UserEffort>,
     /// The route asked for.
     pub route: RouteChoice,
+    /// Each body's parts as written, in the order of `scene.bodies`: those made of fields are
+    /// checked at run time with the rules literal parts met here.
+    pub parts: Vec<Description<ExprId>>,
 }
 
 /// One link as read, before the tree is checked.
@@ -63,6 +66,8 @@ pub(super) struct LinkSpec<'a> {
     pub(super) coordinates: Vec<Ident>,
     /// The body for the scene (its parent set once the tree is checked).
     pub(super) body: MechanismBody,
+    /// Its parts as written.
+    pub(super) parts: Description<ExprId>,
 }
 
 /// Checks every attribute; `None` after recording why the mechanism cannot be derived.
@@ -102,19 +107,20 @@ pub fn check(
         .iter()
         .flat_map(|s| s.coordinates.iter().cloned())
         .collect();
-    let bodies = specs
+    let (bodies, parts) = specs
         .into_iter()
         .zip(parents)
         .map(|(mut spec, parent)| {
             spec.body.joint.parent = parent;
-            spec.body
+            (spec.body, spec.parts)
         })
-        .collect();
+        .unzip();
     Some(CheckedMechanism {
         scene: MechanismScene { bodies, gravity },
         coordinates,
         efforts,
         route,
+        parts,
     })
 }
 
@@ -149,6 +155,9 @@ fn mechanism_settings(
     }
     (gravity, route)
 }
+
+/// A link's mass, centre and inertia about the centre, and its parts as written.
+type LinkParts = (ExprId, [ExprId; 3], [[ExprId; 3]; 3], Description<ExprId>);
 
 /// Values of one link as written, by key.
 #[derive(Default)]
@@ -315,11 +324,12 @@ impl Checker<'_> {
         let (joint, coordinates, loads, parts) = (joint?, coordinates?, loads?, parts?);
         let joint_named = joint.name.is_some();
         let joint_name = joint.name.unwrap_or_else(|| name.clone());
+        let (mass, center, inertia, description) = parts;
         let mut body = MechanismBody {
             name: name.to_string(),
-            mass: parts.0,
-            center: parts.1,
-            inertia: parts.2,
+            mass,
+            center,
+            inertia,
             joint: precess_core::mechanism::Joint {
                 name: joint_name.to_string(),
                 parent: Parent::Ground,
@@ -340,17 +350,14 @@ impl Checker<'_> {
             joint_named,
             coordinates,
             body,
+            parts: description,
         })
     }
 
     /// The mass, centre and inertia about the centre of a link's parts, in its frame. Literal
     /// parts meet the `#[rigid]` rules now; a massless link (field masses that are zero) is
     /// the run time's singular mass matrix.
-    fn link_parts(
-        &mut self,
-        keyword: &Ident,
-        items: &[Item],
-    ) -> Option<(ExprId, [ExprId; 3], [[ExprId; 3]; 3])> {
+    fn link_parts(&mut self, keyword: &Ident, items: &[Item]) -> Option<LinkParts> {
         let mut description = Description::default();
         let mut ok = true;
         for item in items {
@@ -406,7 +413,7 @@ impl Checker<'_> {
             return None;
         }
         match mass_properties(self.arena, &description) {
-            Ok(props) => Some((props.mass, props.center, props.inertia_cm)),
+            Ok(props) => Some((props.mass, props.center, props.inertia_cm, description)),
             Err(e) => {
                 self.cx.error_spanned_by(keyword, e);
                 None

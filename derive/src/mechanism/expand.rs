@@ -116,6 +116,8 @@ pub fn expand(
             pub const #upper: usize = #k;
         }
     });
+    let check_parameters = super::parameters::method(&low, arena, checked);
+    let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
     let route_name = derivation.route.name();
     let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
         .map(|k| {
@@ -152,6 +154,7 @@ pub fn expand(
                         values: __values,
                     });
                 }
+                #p::MechanismDynamics::<#n>::check_parameters(self)?;
                 #checked_body
             }
 
@@ -165,6 +168,10 @@ pub fn expand(
             fn power(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #power
 
             fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
+
+            #check_parameters
+
+            #jacobian
         }
 
         #[automatically_derived]
@@ -203,7 +210,7 @@ fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> std::collections::HashSet<
 }
 
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
-struct Method<'a> {
+pub(super) struct Method<'a> {
     low: &'a Lowering<'a>,
     derivation: &'a MechanismDerivation,
     efforts: &'a [UserEffort],
@@ -211,7 +218,7 @@ struct Method<'a> {
 
 impl Method<'_> {
     /// `{ user calls; lets; build(outputs) }`.
-    fn body(
+    pub(super) fn body(
         &self,
         arena: &mut Arena,
         outputs: &[ExprId],

@@ -6,8 +6,11 @@
 pub mod attr;
 pub mod check;
 pub mod expand;
+mod fallback;
+mod jacobian;
 mod joint;
 mod loads;
+mod parameters;
 mod tree;
 
 use precess_core::sym::Arena;
@@ -32,9 +35,11 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             )
             .to_compile_error()
         }),
-        // No stub impls: `MechanismDynamics<N>` needs the coordinate count the errors may
-        // hide, and a wrong N would add errors of its own.
-        Err(errors) => errors.iter().map(syn::Error::to_compile_error).collect(),
+        Err(errors) => {
+            let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
+            out.extend(fallback::stub(input));
+            out
+        }
     }
 }
 

@@ -191,7 +191,7 @@ fn axis(a: Axis) -> TokenStream {
     }
 }
 
-fn orientation(o: &Orientation<TokenStream>) -> TokenStream {
+pub(crate) fn orientation(o: &Orientation<TokenStream>) -> TokenStream {
     let p = quote!(#Private::Orientation);
     match o {
         Orientation::AxisAngle { axis, angle } => {
@@ -211,7 +211,7 @@ fn orientation(o: &Orientation<TokenStream>) -> TokenStream {
     }
 }
 
-fn shape(s: &Shape<TokenStream>) -> TokenStream {
+pub(crate) fn shape(s: &Shape<TokenStream>) -> TokenStream {
     let p = quote!(#Private::Shape);
     match s {
         Shape::Particle { mass } => quote!(#p::Particle { mass: #mass }),

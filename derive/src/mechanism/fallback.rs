@@ -1,0 +1,116 @@
+//! The stub impls emitted next to the errors of `#[derive(Mechanism)]`, so code using the
+//! struct (its `MechanismDynamics` methods, its coordinate consts, a solver over it) does not
+//! add a cascade of "not implemented" and "no associated item" errors to the real ones.
+//!
+//! The coordinate count the errors may hide is read from the `q = ...` keys as written: the
+//! stubs implement `MechanismDynamics<N>` and `System<2N>` for that N, or, when no coordinate
+//! could be read, for every N (the uses then fix it).
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::punctuated::Punctuated;
+use syn::{DeriveInput, Expr, Ident, Token};
+
+use super::attr::LinkItem;
+use super::joint::path_ident;
+use crate::keys;
+use crate::private::Private;
+
+/// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
+pub fn stub(input: &DeriveInput) -> TokenStream {
+    if !input.generics.params.is_empty() {
+        return TokenStream::new();
+    }
+    let p = Private;
+    let ident = &input.ident;
+    let coordinates = written_coordinates(input);
+    // Each name once as a const (case aside, as the consts are named), N counting every one
+    // written: a duplicate is its own error, and the uses are sized for what was written.
+    let mut named: Vec<String> = Vec::new();
+    let unique = coordinates.iter().enumerate().filter(|(_, c)| {
+        let upper = c.to_string().to_uppercase();
+        let new = !named.contains(&upper);
+        named.push(upper);
+        new
+    });
+    let consts = unique.map(|(k, c)| {
+        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
+        quote! {
+            #[doc(hidden)]
+            pub const #upper: usize = #k;
+        }
+    });
+    let stub = quote!(::core::unimplemented!(
+        "the #[derive(Mechanism)] description has errors"
+    ));
+    let n = coordinates.len();
+    let (dynamics_generics, system_generics, n, s) = if n == 0 {
+        (
+            quote!(<const __N: usize>),
+            quote!(<const __S: usize>),
+            quote!(__N),
+            quote!(__S),
+        )
+    } else {
+        let s = 2 * n;
+        (
+            TokenStream::new(),
+            TokenStream::new(),
+            quote!(#n),
+            quote!(#s),
+        )
+    };
+    quote! {
+        #[automatically_derived]
+        impl #ident {
+            #(#consts)*
+        }
+
+        #[automatically_derived]
+        impl #dynamics_generics #p::MechanismDynamics<#n> for #ident {
+            const COORDINATES: [&'static str; #n] = [""; #n];
+            const ROUTE: &'static str = "";
+            fn accelerations(&self, _: f64, _: &[f64; #n], _: &[f64; #n]) -> ::core::result::Result<[f64; #n], #p::MechanismError> { #stub }
+            fn accelerations_unchecked(&self, _: f64, _: &[f64; #n], _: &[f64; #n]) -> [f64; #n] { #stub }
+            fn kinetic(&self, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
+            fn potential(&self, _: &[f64; #n]) -> f64 { #stub }
+            fn power(&self, _: f64, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
+            fn cyclic_momenta(&self, _: &[f64; #n], _: &[f64; #n]) -> [::core::option::Option<f64>; #n] { #stub }
+        }
+
+        #[automatically_derived]
+        impl #system_generics #p::System<#s> for #ident {
+            fn rhs(&self, _: f64, _: &[f64; #s], _: &mut [f64; #s]) { #stub }
+        }
+    }
+}
+
+/// The coordinate names the `q = ...` keys of the `#[body(...)]` attributes write, in order,
+/// whatever else is wrong with the attributes.
+fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
+    let mut names: Vec<Ident> = Vec::new();
+    let lists = input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident(keys::LINK))
+        .filter_map(|a| {
+            a.parse_args_with(Punctuated::<LinkItem, Token![,]>::parse_terminated)
+                .ok()
+        });
+    for list in lists {
+        for item in list {
+            let LinkItem::Setting(kv) = item else {
+                continue;
+            };
+            if kv.key != keys::COORDINATES {
+                continue;
+            }
+            let written: Vec<&Expr> = match &kv.value {
+                Expr::Array(a) => a.elems.iter().collect(),
+                other => vec![other],
+            };
+            names.extend(written.into_iter().filter_map(path_ident).cloned());
+        }
+    }
+    names
+}

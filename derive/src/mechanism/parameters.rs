@@ -1,0 +1,251 @@
+//! `check_parameters` of the mechanism derive: the values the struct's fields give the
+//! mechanism meet, at run time, the rules literals meet at compile time — each part the body
+//! language's rules (`check_part`, a zero mass aside: a massless link is allowed), every
+//! other value finite, axes of non-zero length, springs and dampers not negative. Only what
+//! reads a field is checked: literals were checked while expanding.
+
+use precess_core::body::{Description, Part, evaluate};
+use precess_core::codegen::Emitted;
+use precess_core::mechanism::{JointKind, MechanismScene};
+use precess_core::sym::{Arena, ExprId};
+use proc_macro2::TokenStream;
+use quote::quote;
+
+use super::check::CheckedMechanism;
+use crate::private::Private;
+use crate::rigid::expand::{orientation, shape};
+use crate::symbols::Lowering;
+
+/// `fn check_parameters(&self)`, or nothing when no checked value reads a field.
+pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> TokenStream {
+    let p = Private;
+    let user = |e: ExprId| checked.efforts.iter().any(|u| u.symbol == e);
+    let mut checks = Checks::default();
+    let scene: &MechanismScene = &checked.scene;
+    if let Some(g) = &scene.gravity {
+        for (k, &e) in g.iter().enumerate() {
+            checks.finite(arena, "the mechanism", format!("gravity[{k}]"), e);
+        }
+    }
+    for (body, parts) in scene.bodies.iter().zip(&checked.parts) {
+        let joint = &body.joint;
+        let owner = format!("joint `{}`", joint.name);
+        for (k, &e) in joint.at.iter().enumerate() {
+            checks.finite(arena, &owner, format!("at[{k}]"), e);
+        }
+        let axes: Vec<(String, &[ExprId; 3])> = match &joint.kind {
+            JointKind::Revolute { axis } | JointKind::Prismatic { axis } => {
+                vec![("axis".to_owned(), axis)]
+            }
+            JointKind::Universal { axes } => axes
+                .iter()
+                .enumerate()
+                .map(|(i, a)| (format!("axes[{i}]"), a))
+                .collect(),
+            JointKind::Spherical { .. } => Vec::new(),
+        };
+        for (name, axis) in axes {
+            checks.axis(arena, &joint.name, &name, axis);
+        }
+        for (coordinate, load) in joint.coordinates.iter().zip(&joint.loads) {
+            if let Some(spring) = &load.spring {
+                let of = |what: &str| format!("{what} of `{coordinate}`");
+                checks.non_negative(arena, &owner, of("spring stiffness"), spring.stiffness);
+                checks.finite(arena, &owner, of("spring rest"), spring.rest);
+            }
+            if let Some(c) = load.damper {
+                checks.non_negative(arena, &owner, format!("damper of `{coordinate}`"), c);
+            }
+            if let Some(e) = load.effort.filter(|&e| !user(e)) {
+                checks.finite(arena, &owner, format!("effort on `{coordinate}`"), e);
+            }
+        }
+        let owner = format!("body `{}`", body.name);
+        for (name, torque) in [
+            ("body_torque", &body.body_torque),
+            ("space_torque", &body.space_torque),
+        ] {
+            for (k, &e) in torque.iter().flatten().enumerate() {
+                checks.finite(arena, &owner, format!("{name}[{k}]"), e);
+            }
+        }
+        for (index, part) in parts.parts.iter().enumerate() {
+            checks.part(arena, &body.name, index, part);
+        }
+    }
+    if checks.values.is_empty() {
+        return TokenStream::new();
+    }
+    let Emitted { lets, outputs } = low.lower(arena, &checks.values);
+    let tests = checks.tests.iter().map(|test| test(&outputs));
+    quote! {
+        fn check_parameters(&self) -> ::core::result::Result<(), #p::MechanismError> {
+            #lets
+            #(#tests)*
+            ::core::result::Result::Ok(())
+        }
+    }
+}
+
+/// A test over the lowered values (by their index in `Checks::values`).
+type Test = Box<dyn Fn(&[TokenStream]) -> TokenStream>;
+
+/// The values to compute and the tests on them.
+#[derive(Default)]
+struct Checks {
+    values: Vec<ExprId>,
+    tests: Vec<Test>,
+}
+
+/// Whether `e` reads a field (a literal was checked while expanding).
+fn reads_field(arena: &Arena, e: ExprId) -> bool {
+    !arena.free_symbols(e).is_empty()
+}
+
+impl Checks {
+    /// Adds a value; its index among the outputs.
+    fn value(&mut self, e: ExprId) -> usize {
+        self.values.push(e);
+        self.values.len() - 1
+    }
+
+    fn finite(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
+        if !reads_field(arena, e) {
+            return;
+        }
+        let i = self.value(e);
+        let owner = owner.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
+            quote! {{
+                let __v: f64 = #v;
+                if !__v.is_finite() {
+                    return ::core::result::Result::Err(#p::MechanismError::NonFiniteParameter {
+                        owner: ::std::string::String::from(#owner),
+                        quantity: ::std::string::String::from(#quantity),
+                        value: __v,
+                    });
+                }
+            }}
+        }));
+    }
+
+    fn non_negative(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
+        if !reads_field(arena, e) {
+            return;
+        }
+        self.finite(arena, owner, quantity.clone(), e);
+        let i = self.values.len() - 1;
+        let owner = owner.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
+            quote! {{
+                let __v: f64 = #v;
+                if __v < 0.0 {
+                    return ::core::result::Result::Err(#p::MechanismError::NegativeParameter {
+                        owner: ::std::string::String::from(#owner),
+                        quantity: ::std::string::String::from(#quantity),
+                        value: __v,
+                    });
+                }
+            }}
+        }));
+    }
+
+    /// Each component finite, and |axis|² a normal positive number (the engine divides by
+    /// it and by its root).
+    fn axis(&mut self, arena: &Arena, joint: &str, name: &str, axis: &[ExprId; 3]) {
+        if !axis.iter().any(|&e| reads_field(arena, e)) {
+            return;
+        }
+        let owner = format!("joint `{joint}`");
+        let first = self.values.len();
+        for (k, &e) in axis.iter().enumerate() {
+            self.values.push(e);
+            let i = first + k;
+            let (owner, quantity) = (owner.clone(), format!("{name}[{k}]"));
+            self.tests.push(Box::new(move |o| {
+                let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
+                quote! {{
+                    let __v: f64 = #v;
+                    if !__v.is_finite() {
+                        return ::core::result::Result::Err(#p::MechanismError::NonFiniteParameter {
+                            owner: ::std::string::String::from(#owner),
+                            quantity: ::std::string::String::from(#quantity),
+                            value: __v,
+                        });
+                    }
+                }}
+            }));
+        }
+        let joint = joint.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let p = Private;
+            let c: Vec<TokenStream> = (first..first + 3)
+                .map(|i| o.get(i).cloned().unwrap_or_default())
+                .collect();
+            quote! {{
+                let __c: [f64; 3] = [#(#c),*];
+                let __squared = __c[0] * __c[0] + __c[1] * __c[1] + __c[2] * __c[2];
+                if !(__squared >= f64::MIN_POSITIVE) {
+                    return ::core::result::Result::Err(#p::MechanismError::ZeroAxis {
+                        joint: ::std::string::String::from(#joint),
+                        squared_length: ::core::option::Option::Some(__squared),
+                    });
+                }
+            }}
+        }));
+    }
+
+    /// A part that reads a field, built from the fields and put to `check_part` (its mass
+    /// put to 1 when it is zero, so a massless link's geometry is still checked).
+    fn part(&mut self, arena: &Arena, body: &str, index: usize, part: &Part<ExprId>) {
+        let single = Description {
+            parts: vec![part.clone()],
+            pivot: None,
+        };
+        if evaluate(arena, &single).is_some() {
+            return;
+        }
+        let indexed: Description<usize> = single.map(&mut |&e| {
+            self.values.push(e);
+            self.values.len() - 1
+        });
+        let Some(indexed) = indexed.parts.into_iter().next() else {
+            return;
+        };
+        let body = body.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let p = Private;
+            let mass_index = *indexed.shape.mass();
+            let mass = o.get(mass_index).cloned().unwrap_or_default();
+            let token = |&i: &usize| {
+                if i == mass_index {
+                    quote!(__checked_mass)
+                } else {
+                    o.get(i).cloned().unwrap_or_default()
+                }
+            };
+            let shape = shape(&indexed.shape.map(&mut |i| token(i)));
+            let at: Vec<TokenStream> = indexed.at.iter().map(token).collect();
+            let orientation = match &indexed.orientation {
+                Some(or) => {
+                    let or = orientation(&or.map(&mut |i| token(i)));
+                    quote!(::core::option::Option::Some(#or))
+                }
+                None => quote!(::core::option::Option::None),
+            };
+            quote! {{
+                let __mass: f64 = #mass;
+                let __checked_mass = if __mass == 0.0 { 1.0 } else { __mass };
+                let __part = #p::Part { shape: #shape, at: [#(#at),*], orientation: #orientation };
+                if let ::core::result::Result::Err(error) = #p::check_part(#index, &__part) {
+                    return ::core::result::Result::Err(#p::MechanismError::Part {
+                        body: ::std::string::String::from(#body),
+                        error,
+                    });
+                }
+            }}
+        }));
+    }
+}
