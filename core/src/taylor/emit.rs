@@ -35,7 +35,8 @@ pub struct TaylorTokens {
     pub body: TokenStream,
     /// The type of `TaylorSystem::Workspace` the body expects (`Vec<[f64; K + 1]>`).
     pub workspace: TokenStream,
-    /// The number of series rows the workspace holds.
+    /// The number of series rows the workspace holds (the tape's series less those the code
+    /// keeps in `let`s).
     pub series: usize,
 }
 
@@ -74,7 +75,7 @@ impl Tape {
     /// let tape = Tape::new(&a, &[x], None, &[rhs]).unwrap();
     /// let code = tape.to_tokens(20, &mut |_| quote::quote!(0.0));
     /// assert!(code.body.to_string().contains("20usize"));
-    /// assert_eq!(code.series, 2); // x and x²
+    /// assert_eq!(code.series, 1); // x; x² is read once, at its own order: a `let`
     /// ```
     pub fn to_tokens(
         &self,
@@ -111,8 +112,12 @@ impl Tape {
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
             scalars.extend(quote!(let #id: f64 = #rhs;));
         }
-        let rows = self.series_count as usize;
-        let bindings = (0..self.series_count).map(series);
+        let local = self.local_series();
+        let is_local = |x: u32| local.get(x as usize).copied().unwrap_or(false);
+        // Only the series that are not `let`s get a row: fewer rows, a smaller workspace.
+        let with_row: Vec<u32> = (0..self.series_count).filter(|&x| !is_local(x)).collect();
+        let rows = with_row.len();
+        let bindings = with_row.iter().map(|&x| series(x));
         let load = (0..self.dimension).map(|i| {
             let id = series(i as u32);
             quote!(#id[0] = y[#i];)
@@ -123,8 +128,6 @@ impl Tape {
             let id = series(ti);
             quote!(*#id = [0.0f64; __K + 1]; #id[0] = t; #id[1] = 1.0;)
         });
-        let local = self.local_series();
-        let is_local = |x: u32| local.get(x as usize).copied().unwrap_or(false);
         let first = self
             .steps
             .iter()

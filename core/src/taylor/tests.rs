@@ -188,3 +188,25 @@ fn a_workspace_that_served_another_tape_gives_the_same_coefficients() {
     assert_eq!(c[..3], [[1.0], [2.0], [0.5]]);
     assert!(c[3..].iter().all(|ck| ck[0] == 0.0), "{c:?}");
 }
+
+#[test]
+fn the_emitted_code_keeps_rows_only_for_series_read_over_their_orders() {
+    // B5: y' = (y2 y3, −y1 y3, −m y1 y2). Each product and its sign or scaling is read once,
+    // at its own order, so only the three state rows remain; a quotient reads its own past
+    // and keeps its row.
+    let mut a = Arena::new();
+    let y: [ExprId; 3] = [a.coordinate("y1"), a.coordinate("y2"), a.coordinate("y3")];
+    let m = a.parameter("m");
+    let f1 = a.mul(y[1], y[2]);
+    let p = a.mul(y[0], y[2]);
+    let f2 = a.neg(p);
+    let q = a.mul(y[0], y[1]);
+    let mq = a.mul(m, q);
+    let f3 = a.neg(mq);
+    let b5 = super::Tape::new(&a, &y, None, &[f1, f2, f3]).unwrap();
+    assert_eq!(b5.series_count(), 9);
+    assert_eq!(b5.emitted(20).series, 3);
+    let quotient = a.div(y[1], y[2]).unwrap();
+    let tape = super::Tape::new(&a, &y, None, &[quotient, f2, f3]).unwrap();
+    assert_eq!(tape.emitted(20).series, 4);
+}
