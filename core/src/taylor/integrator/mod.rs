@@ -25,7 +25,7 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
 ///
 /// Owns its coefficient storage (allocated once, for the highest order the tolerances can
-/// ask), so stepping never allocates. It implements [`Stepper`](crate::ode::Stepper):
+/// ask) and the system's [`TaylorSystem::Workspace`], so stepping never allocates. It implements [`Stepper`](crate::ode::Stepper):
 /// [`Run`](crate::ode::Run) gives it samples, trajectories and events.
 ///
 /// [`Stats::rhs_evals`] counts each computation of the coefficients to order p (a *jet*) as
@@ -41,7 +41,8 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// struct Decay;
 /// impl TaylorSystem<1> for Decay {
 ///     fn max_order(&self) -> usize { 40 }
-///     fn coefficients(&self, _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+///     type Workspace = ();
+///     fn coefficients_into(&self, _ws: &mut (), _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
 ///         c[0] = *y;
 ///         for k in 1..=order {
 ///             c[k][0] = -c[k - 1][0] / k as f64;
@@ -54,11 +55,13 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// # Ok::<(), precess_core::ode::OdeError>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct Taylor<S, const N: usize> {
+pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     sys: S,
     cfg: TaylorConfig,
-    /// The highest order the system computes.
-    system_max: usize,
+    /// Order and step factor of the relative mode ([0], ε = rtol) and of the absolute one
+    /// ([1], ε = atol): fixed by the configuration, so computed once, not per step (they
+    /// cost a logarithm and two exponentials).
+    rules: [(usize, f64); 2],
     /// Time as an unevaluated sum t + t_lo.
     t: f64,
     t_lo: f64,
@@ -67,6 +70,8 @@ pub struct Taylor<S, const N: usize> {
     y_comp: [f64; N],
     /// c_k of the last step, k = 0, …, `last_order`.
     coeffs: Vec<[f64; N]>,
+    /// The system's scratch, kept across steps so that a jet neither allocates nor zeroes.
+    ws: S::Workspace,
     last: LastStep<N>,
     stats: Stats,
     jets: u64,
@@ -104,17 +109,22 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 value: system_max as f64,
             });
         }
-        // The tighter tolerance asks the highest order.
-        let highest = cfg.order_for(cfg.rtol.min(cfg.atol), system_max);
+        let rule = |eps: f64| {
+            let p = cfg.order_for(eps, system_max);
+            (p, TaylorConfig::step_factor(eps, p))
+        };
+        let rules = [rule(cfg.rtol), rule(cfg.atol)];
+        let highest = rules[0].0.max(rules[1].0);
         Ok(Self {
             sys,
             cfg,
-            system_max,
+            rules,
             t: t0,
             t_lo: 0.0,
             y: y0,
             y_comp: [0.0; N],
             coeffs: vec![[0.0; N]; highest + 1],
+            ws: S::Workspace::default(),
             last: LastStep {
                 t: t0,
                 t_lo: 0.0,
@@ -212,12 +222,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let relative = self.cfg.rtol * norm > self.cfg.atol;
-        let eps = if relative {
-            self.cfg.rtol
-        } else {
-            self.cfg.atol
-        };
-        let p = self.cfg.order_for(eps, self.system_max);
+        let (p, factor) = self.rules[usize::from(!relative)];
         let Some(c) = self.coeffs.get_mut(..=p) else {
             // order_for never exceeds the order allocated for the tighter tolerance.
             return Err(OdeError::InvalidParameter {
@@ -225,7 +230,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 value: p as f64,
             });
         };
-        self.sys.coefficients(self.t, &self.y, p, c);
+        self.sys
+            .coefficients_into(&mut self.ws, self.t, &self.y, p, c);
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
         if c.iter().any(|ck| ck.iter().any(|v| !v.is_finite())) {
@@ -235,14 +241,17 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             Some(h) => h,
             None => {
                 let scale = if relative { norm } else { 1.0 };
-                let radius = [p - 1, p]
+                // ρ = min over k of (s/‖c_k‖)^(1/k), as exp of the least logarithm: one
+                // exponential instead of two powers.
+                let log_radius = [p - 1, p]
                     .iter()
                     .map(|&k| {
                         let ck = c[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                        (scale / ck).powf(1.0 / k as f64)
+                        (scale / ck).ln() / k as f64
                     })
                     .fold(f64::INFINITY, f64::min);
-                TaylorConfig::step_factor(eps, p) * radius
+                let radius = log_radius.exp();
+                factor * radius
             }
         }
         .min(self.cfg.h_max);
