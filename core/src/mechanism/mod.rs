@@ -14,6 +14,8 @@
 //! - [`recursive_accelerations`] is the recursive route (the articulated-body algorithm,
 //!   symbolic, O(n) operations), [`MechanismAba`] the same algorithm numerically, the
 //!   generic O(n) reference the benchmarks compare against.
+//! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
+//!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
 mod aba;
 mod derive;
@@ -24,6 +26,7 @@ mod kinematics;
 mod model;
 pub mod recursive;
 mod scene;
+mod taylor;
 mod validate;
 
 pub use aba::MechanismAba;
@@ -34,3 +37,4 @@ pub use kinematics::BodyKinematics;
 pub use model::{MechanismModel, MechanismSystem};
 pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};
+pub use taylor::MechanismTaylorError;

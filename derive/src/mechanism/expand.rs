@@ -23,6 +23,7 @@ pub fn expand(
     arena: &mut Arena,
     parameters: &FieldParameters,
     checked: &CheckedMechanism,
+    taylor: Option<usize>,
 ) -> Option<TokenStream> {
     let p = Private;
     let route = match checked.route {
@@ -41,6 +42,8 @@ pub fn expand(
             return None;
         }
     };
+    let taylor =
+        taylor.map(|k| super::taylor::expand(cx, ident, arena, parameters, &derivation, k));
     let n = checked.coordinates.len();
     let s = 2 * n;
     let mut symbols = parameters.tokens();
@@ -128,6 +131,8 @@ pub fn expand(
         })
         .chain((0..n).map(|k| quote!(__a[#k])));
     Some(quote! {
+        #taylor
+
         #[automatically_derived]
         impl #ident {
             #(#consts)*
