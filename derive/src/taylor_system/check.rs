@@ -80,6 +80,10 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
     let mut by_state: Vec<Option<&Expr>> = vec![None; state.len()];
     for (name, value) in equations {
         let Some(i) = state.iter().position(|s| *s == name) else {
+            if names.contains(name) {
+                // A state variable already refused above.
+                continue;
+            }
             let known = state.iter().map(|s| s.to_string()).collect::<Vec<_>>();
             cx.error_spanned_by(
                 name,
@@ -147,7 +151,8 @@ fn fields<'a>(cx: &Ctxt, fields: &'a Fields) -> Vec<&'a Ident> {
     }
 }
 
-/// The state variables: at least one, distinct, neither a field nor the time.
+/// The state variables: at least one, distinct, neither a field nor the time. Returns the
+/// valid ones, so an error here is not repeated as a missing equation.
 fn state_names<'a>(
     cx: &Ctxt,
     keyword: &Ident,
@@ -160,9 +165,9 @@ fn state_names<'a>(
             "the state needs at least one variable: `state [x, …];`",
         );
     }
-    let mut seen: Vec<&Ident> = Vec::new();
-    for name in names {
-        if seen.contains(&name) {
+    let mut valid: Vec<&Ident> = Vec::new();
+    for (i, name) in names.iter().enumerate() {
+        if names.iter().take(i).any(|n| n == name) {
             cx.error_spanned_by(name, format!("`{name}` appears twice in the state"));
         } else if fields.contains(&name) {
             cx.error_spanned_by(
@@ -174,8 +179,9 @@ fn state_names<'a>(
                 name,
                 format!("`{TIME}` is the time: name the state variable otherwise"),
             );
+        } else {
+            valid.push(name);
         }
-        seen.push(name);
     }
-    names.iter().collect()
+    valid
 }
