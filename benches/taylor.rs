@@ -83,7 +83,15 @@ impl TaylorSystem<3> for B5 {
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
         let mut s = series(y);
         for k in 0..order {
             let d = 1.0 / (k + 1) as f64;
@@ -123,7 +131,15 @@ impl TaylorSystem<3> for FreeBody {
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
         let a = self.a();
         let mut s = series(y);
         for k in 0..order {
@@ -170,7 +186,15 @@ impl TaylorSystem<6> for EulerPoisson {
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 6], order: usize, c: &mut [[f64; 6]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 6],
+        order: usize,
+        c: &mut [[f64; 6]],
+    ) {
         let (r, sg) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
         let mut s = series(y);
         for k in 0..order {

@@ -23,7 +23,15 @@ impl TaylorSystem<3> for B5 {
     fn max_order(&self) -> usize {
         60
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
         c[0] = *y;
         for k in 0..order {
             let d = (k + 1) as f64;
@@ -42,7 +50,15 @@ impl TaylorSystem<3> for FreeBody {
     fn max_order(&self) -> usize {
         60
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 3], order: usize, c: &mut [[f64; 3]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
         let i = self.0;
         let a = [
             1.0 / i[2] - 1.0 / i[1],
@@ -67,7 +83,15 @@ impl TaylorSystem<2> for Oscillator {
     fn max_order(&self) -> usize {
         40
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 2], order: usize, c: &mut [[f64; 2]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 2],
+        order: usize,
+        c: &mut [[f64; 2]],
+    ) {
         c[0] = *y;
         for k in 0..order {
             let d = (k + 1) as f64;
@@ -82,7 +106,15 @@ impl TaylorSystem<1> for BlowUp {
     fn max_order(&self) -> usize {
         30
     }
-    fn coefficients(&self, _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 1],
+        order: usize,
+        c: &mut [[f64; 1]],
+    ) {
         c[0] = *y;
         for k in 0..order {
             c[k + 1][0] = cauchy(c, 0, 0, k) / (k + 1) as f64;

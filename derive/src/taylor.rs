@@ -47,10 +47,12 @@ pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize
     Some(order)
 }
 
-/// `impl TaylorSystem<N> for ident` with `N = state.len()`: `y' = rhs(y)` over the state
-/// symbols, the other symbols read through `symbols` after `prelude` (statements binding
-/// what those read). A symbol the map does not know is an internal error spanned on
-/// `ident`, as in `symbols.rs`.
+/// The complete `impl TaylorSystem<N> for ident` with `N = state.len()`: `y' = rhs(y)` over
+/// the state symbols, the other symbols read through `symbols` after `prelude` (statements
+/// binding what those read, which may use `self`). Its `Workspace` is the emitted rows
+/// (`Vec<[f64; K + 1]>`) and its `coefficients_into` the emitted recurrences. A symbol the
+/// map does not know is an internal error spanned on `ident`, as in `symbols.rs`. The one
+/// entry point of every scene's `taylor = K`.
 #[allow(clippy::too_many_arguments)]
 pub fn expand(
     cx: &Ctxt,
@@ -84,17 +86,26 @@ pub fn expand(
             quote!(0.0)
         }
     });
-    let body = code.body;
+    let (body, workspace) = (code.body, code.workspace);
     quote! {
         #[automatically_derived]
         #[allow(unused_variables, unused_mut, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::TaylorSystem<#n> for #ident {
+            type Workspace = #workspace;
+
             #[inline]
             fn max_order(&self) -> usize {
                 #order
             }
 
-            fn coefficients(&self, t: f64, y: &[f64; #n], order: usize, coeffs: &mut [[f64; #n]]) {
+            fn coefficients_into(
+                &self,
+                ws: &mut Self::Workspace,
+                t: f64,
+                y: &[f64; #n],
+                order: usize,
+                coeffs: &mut [[f64; #n]],
+            ) {
                 #prelude
                 #body
             }

@@ -2,10 +2,13 @@
 //! specialised to one right-hand side, which the derive macros splice into
 //! `impl TaylorSystem<N>` for a scene that asks (`taylor = K`).
 //!
-//! The code has one `[f64; K + 1]` array per series on the stack (`K` a constant), the
-//! scalars as `let`s computed once (literals inlined, so the compiler folds them), and one
-//! loop over the orders whose body runs every step's recurrence; the sums of the Cauchy
-//! products are loops over slices of those arrays.
+//! The series live in the caller's workspace, `Vec<[f64; K + 1]>` (one row per series, `K`
+//! a constant), bound row by row with one slice pattern so that every index is checked
+//! against a length the compiler knows; nothing is zeroed or allocated per call (the rows
+//! are sized once, on the first call). The scalars are `let`s computed once (literals
+//! inlined, so the compiler folds them); order 0 (the values themselves: `sin_cos`, `sqrt`,
+//! quotients) is straight-line code before the loop, and the loop over the orders k ≥ 1 runs
+//! each step's recurrence, its sums through [`super::kernels`].
 
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -18,13 +21,21 @@ fn series(x: u32) -> Ident {
     Ident::new(&format!("__x{x}"), Span::call_site())
 }
 
+/// The path generated code reaches the kernels by: the facade re-exports precess-core.
+fn kernel(name: &str) -> TokenStream {
+    let f = Ident::new(name, Span::call_site());
+    quote!(::precess::taylor::kernels::#f)
+}
+
 /// The emitted code of a tape, with its size for the price reports.
 #[derive(Clone, Debug)]
 pub struct TaylorTokens {
-    /// The body of `fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs:
-    /// &mut [[f64; N]])`: it reads those four names.
+    /// The body of `fn coefficients(&self, ws: &mut Self::Workspace, t: f64, y: &[f64; N],
+    /// order: usize, coeffs: &mut [[f64; N]])`: it reads those five names.
     pub body: TokenStream,
-    /// The number of series arrays the body keeps on the stack.
+    /// The type of `TaylorSystem::Workspace` the body expects (`Vec<[f64; K + 1]>`).
+    pub workspace: TokenStream,
+    /// The number of series rows the workspace holds.
     pub series: usize,
 }
 
@@ -61,8 +72,9 @@ impl Tape {
     /// let x = a.coordinate("x");
     /// let rhs = a.mul(x, x); // x' = x²
     /// let tape = Tape::new(&a, &[x], None, &[rhs]).unwrap();
-    /// let code = tape.to_tokens(20, &mut |_| quote::quote!(0.0)).body.to_string();
-    /// assert!(code.contains("20usize"));
+    /// let code = tape.to_tokens(20, &mut |_| quote::quote!(0.0));
+    /// assert!(code.body.to_string().contains("20usize"));
+    /// assert_eq!(code.series, 2); // x and x²
     /// ```
     pub fn to_tokens(
         &self,
@@ -99,40 +111,58 @@ impl Tape {
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
             scalars.extend(quote!(let #id: f64 = #rhs;));
         }
-        let arrays = (0..self.series_count).map(|x| {
-            let id = series(x);
-            quote!(let mut #id = [0.0f64; __K + 1];)
-        });
+        let rows = self.series_count as usize;
+        let bindings = (0..self.series_count).map(series);
         let load = (0..self.dimension).map(|i| {
             let id = series(i as u32);
             quote!(#id[0] = y[#i];)
         });
+        // A workspace of the same type may have served another system: the time's row is
+        // the only one read beyond what this call writes, so it is written whole.
         let time = self.time.map(|ti| {
             let id = series(ti);
-            quote!(#id[0] = t; #id[1] = 1.0;)
+            quote!(*#id = [0.0f64; __K + 1]; #id[0] = t; #id[1] = 1.0;)
         });
+        let first = self
+            .steps
+            .iter()
+            .map(|st| order_zero(st.out, st.op, scalar_operand));
         let steps = self
             .steps
             .iter()
-            .map(|st| step_tokens(st.out, st.op, scalar_operand));
-        let outputs = self.outputs.iter().enumerate().map(|(i, out)| {
-            let state = series(i as u32);
-            let f = match *out {
-                Value::Series(x) => {
-                    let id = series(x);
-                    quote!(#id[__k])
+            .map(|st| order_k(st.out, st.op, scalar_operand));
+        // f's order-k coefficient into the state's order k + 1: at order 0 as it is, at
+        // order k ≥ 1 divided by k + 1 (`__inv`); a scalar output has order 0 only.
+        let output = |order_zero: bool| {
+            let f = self.outputs.iter().enumerate().map(move |(i, out)| {
+                let state = series(i as u32);
+                match (*out, order_zero) {
+                    (Value::Series(x), true) => {
+                        let id = series(x);
+                        quote!(#state[1] = #id[0];)
+                    }
+                    (Value::Series(x), false) => {
+                        let id = series(x);
+                        quote!(#state[__k + 1] = #id[__k] * __inv;)
+                    }
+                    (Value::Scalar(x), true) => {
+                        let v = scalar_operand(x);
+                        quote!(#state[1] = #v;)
+                    }
+                    (Value::Scalar(_), false) => quote!(#state[__k + 1] = 0.0;),
                 }
-                Value::Scalar(x) => {
-                    let v = scalar_operand(x);
-                    quote!(if __k == 0 { #v } else { 0.0 })
-                }
-            };
-            quote!(#state[__k + 1] = #f * __inv;)
-        });
-        let next = (0..self.dimension).map(|i| {
-            let id = series(i as u32);
-            quote!(#id[__k + 1])
-        });
+            });
+            quote!(#(#f)*)
+        };
+        let (outputs_zero, outputs_k) = (output(true), output(false));
+        let next = |k: TokenStream| {
+            let ids = (0..self.dimension).map(|i| {
+                let id = series(i as u32);
+                quote!(#id[#k + 1])
+            });
+            quote!([#(#ids),*])
+        };
+        let (next_zero, next_k) = (next(quote!(0)), next(quote!(__k)));
         let body = quote! {
             const __K: usize = #max_order;
             let ::core::option::Option::Some(__top) = coeffs.len().checked_sub(1) else {
@@ -140,29 +170,77 @@ impl Tape {
             };
             let __n: usize = if order < __K { order } else { __K };
             let __n: usize = if __n < __top { __n } else { __top };
+            if ws.len() != #rows {
+                ws.clear();
+                ws.resize(#rows, [0.0f64; __K + 1]);
+            }
+            let [#(#bindings),*] = &mut ws[..] else {
+                return;
+            };
             #scalars
-            #(#arrays)*
             #(#load)*
             #time
             coeffs[0] = *y;
-            for __k in 0..__n {
+            if __n == 0 {
+                return;
+            }
+            #(#first)*
+            #outputs_zero
+            coeffs[1] = #next_zero;
+            for __k in 1..__n {
                 #(#steps)*
                 let __inv: f64 = 1.0 / ((__k + 1) as f64);
-                #(#outputs)*
-                coeffs[__k + 1] = [#(#next),*];
+                #outputs_k
+                coeffs[__k + 1] = #next_k;
             }
         };
         TaylorTokens {
             body,
-            series: self.series_count as usize,
+            workspace: quote!(::std::vec::Vec<[f64; #max_order + 1]>),
+            series: rows,
         }
     }
 }
 
-/// One step's recurrence at the order `__k` (a `usize` in scope).
-fn step_tokens(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStream {
+/// One step's value at order 0 (the values themselves).
+fn order_zero(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStream {
+    let o = series(out);
+    let x = |i: u32| {
+        let id = series(i);
+        quote!(#id[0])
+    };
+    let value = match op {
+        SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
+        SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
+        SeriesOp::AddScalar(a, c) => binary(x(a), quote!(+), s(c)),
+        SeriesOp::SubScalar(a, c) => binary(x(a), quote!(-), s(c)),
+        SeriesOp::ScalarSub(c, a) => binary(s(c), quote!(-), x(a)),
+        SeriesOp::Neg(a) => {
+            let a = x(a);
+            quote!(-#a)
+        }
+        SeriesOp::Scale(a, c) => binary(s(c), quote!(*), x(a)),
+        SeriesOp::DivScalar(a, c) => binary(x(a), quote!(/), s(c)),
+        SeriesOp::Mul(a, b) => binary(x(a), quote!(*), x(b)),
+        SeriesOp::Square(a) => binary(x(a), quote!(*), x(a)),
+        SeriesOp::Div(a, b) => binary(x(a), quote!(/), x(b)),
+        SeriesOp::ScalarDiv(c, a) => binary(s(c), quote!(/), x(a)),
+        SeriesOp::Sqrt(a) => method(x(a), "sqrt"),
+        SeriesOp::SinCos(a) => {
+            let (a, c) = (x(a), series(out + 1));
+            return quote! {
+                (#o[0], #c[0]) = f64::sin_cos(#a);
+            };
+        }
+    };
+    quote!(#o[0] = #value;)
+}
+
+/// One step's recurrence at the order `__k ≥ 1` (a `usize` in scope).
+fn order_k(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStream {
     let o = series(out);
     let x = series;
+    let (cauchy, square) = (kernel("cauchy"), kernel("square"));
     let value = match op {
         SeriesOp::Add(a, b) => {
             let (a, b) = (x(a), x(b));
@@ -172,19 +250,11 @@ fn step_tokens(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenS
             let (a, b) = (x(a), x(b));
             quote!(#a[__k] - #b[__k])
         }
-        SeriesOp::AddScalar(a, c) => {
-            let (a, c) = (x(a), s(c));
-            quote!(if __k == 0 { #a[0] + #c } else { #a[__k] })
+        SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => {
+            let a = x(a);
+            quote!(#a[__k])
         }
-        SeriesOp::SubScalar(a, c) => {
-            let (a, c) = (x(a), s(c));
-            quote!(if __k == 0 { #a[0] - #c } else { #a[__k] })
-        }
-        SeriesOp::ScalarSub(c, a) => {
-            let (a, c) = (x(a), s(c));
-            quote!(if __k == 0 { #c - #a[0] } else { -#a[__k] })
-        }
-        SeriesOp::Neg(a) => {
+        SeriesOp::ScalarSub(_, a) | SeriesOp::Neg(a) => {
             let a = x(a);
             quote!(-#a[__k])
         }
@@ -198,70 +268,37 @@ fn step_tokens(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenS
         }
         SeriesOp::Mul(a, b) => {
             let (a, b) = (x(a), x(b));
-            quote!({
-                let mut __acc = 0.0f64;
-                for __j in 0..=__k { __acc += #a[__j] * #b[__k - __j]; }
-                __acc
-            })
+            quote!(#cauchy(&#a[..=__k], &#b[..=__k]))
         }
         SeriesOp::Square(a) => {
             let a = x(a);
-            quote!({
-                let mut __acc = 0.0f64;
-                for __j in 0..(__k + 1) / 2 { __acc += #a[__j] * #a[__k - __j]; }
-                __acc *= 2.0;
-                if __k % 2 == 0 { __acc += #a[__k / 2] * #a[__k / 2]; }
-                __acc
-            })
+            quote!(#square(&#a[..=__k]))
         }
         SeriesOp::Div(a, b) => {
             let (a, b) = (x(a), x(b));
-            quote!({
-                let mut __acc = #a[__k];
-                for __j in 1..=__k { __acc -= #b[__j] * #o[__k - __j]; }
-                __acc / #b[0]
-            })
+            quote!((#a[__k] - #cauchy(&#b[1..=__k], &#o[..__k])) / #b[0])
         }
-        SeriesOp::ScalarDiv(c, a) => {
-            let (a, c) = (x(a), s(c));
-            quote!(if __k == 0 { #c / #a[0] } else {
-                let mut __acc = 0.0f64;
-                for __j in 1..=__k { __acc -= #a[__j] * #o[__k - __j]; }
-                __acc / #a[0]
-            })
+        SeriesOp::ScalarDiv(_, a) => {
+            let a = x(a);
+            quote!(-#cauchy(&#a[1..=__k], &#o[..__k]) / #a[0])
         }
         SeriesOp::Sqrt(a) => {
             let a = x(a);
-            quote!(if __k == 0 { f64::sqrt(#a[0]) } else {
-                let mut __acc = 0.0f64;
-                for __j in 1..(__k + 1) / 2 { __acc += #o[__j] * #o[__k - __j]; }
-                __acc *= 2.0;
-                if __k % 2 == 0 { __acc += #o[__k / 2] * #o[__k / 2]; }
-                (#a[__k] - __acc) / (2.0 * #o[0])
-            })
+            quote!((#a[__k] - #square(&#o[1..__k])) / (2.0 * #o[0]))
         }
         SeriesOp::SinCos(a) => {
-            let (a, c) = (x(a), series(out + 1));
+            let (a, c, d) = (x(a), series(out + 1), series(out + 2));
             return quote! {
-                if __k == 0 {
-                    let (__sv, __cv) = f64::sin_cos(#a[0]);
-                    #o[0] = __sv;
-                    #c[0] = __cv;
-                } else {
-                    let (mut __ss, mut __cc) = (0.0f64, 0.0f64);
-                    for __j in 1..=__k {
-                        let __ja = (__j as f64) * #a[__j];
-                        __ss += __ja * #c[__k - __j];
-                        __cc += __ja * #o[__k - __j];
-                    }
-                    let __inv_k = 1.0 / (__k as f64);
-                    #o[__k] = __ss * __inv_k;
-                    #c[__k] = -__cc * __inv_k;
-                }
+                #d[__k] = (__k as f64) * #a[__k];
+                let __inv_k = 1.0 / (__k as f64);
+                let __sv = #cauchy(&#d[1..=__k], &#c[..__k]) * __inv_k;
+                let __cv = -#cauchy(&#d[1..=__k], &#o[..__k]) * __inv_k;
+                #o[__k] = __sv;
+                #c[__k] = __cv;
             };
         }
     };
-    quote!(#o[__k] = #value;)
+    quote!(let __v: f64 = #value; #o[__k] = __v;)
 }
 
 fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {

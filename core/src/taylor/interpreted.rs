@@ -1,7 +1,5 @@
 //! [`TaylorTape`]: the recurrences of any symbolic system, interpreted at run time.
 
-use std::cell::RefCell;
-
 use thiserror::Error;
 
 use super::recurrence;
@@ -77,9 +75,9 @@ impl From<BindingError> for TaylorError {
 /// The Taylor coefficients of `y' = f(t, y)` for a right-hand side given as expressions,
 /// computed by interpreting its [`Tape`].
 ///
-/// Parameters are bound once, at construction; a call allocates nothing (the coefficient
-/// table, `series × (max_order + 1)` values, is sized at construction and reused, so a
-/// `TaylorTape` is not `Sync`: give each thread its own).
+/// Parameters are bound once, at construction. The coefficient table, `series ×
+/// (max_order + 1)` values, is the [`TaylorSystem::Workspace`]: sized on the first call
+/// into a workspace, then reused, so a call through the integrator allocates nothing.
 ///
 /// # Examples
 /// The harmonic oscillator `x' = v`, `v' = −ω² x` from `x = 1`, `v = 0`: `x = cos ωt`.
@@ -104,7 +102,6 @@ pub struct TaylorTape<const N: usize> {
     tape: Tape,
     scalars: Vec<f64>,
     max_order: usize,
-    table: RefCell<Vec<f64>>,
 }
 
 impl<const N: usize> TaylorTape<N> {
@@ -168,17 +165,10 @@ impl<const N: usize> TaylorTape<N> {
             };
             scalars.push(v);
         }
-        let stride = max_order + 1;
-        let mut table = vec![0.0; tape.series_count() * stride];
-        // The time series is t + τ: its order-1 coefficient is one, the higher ones zero.
-        if let Some(ti) = tape.time() {
-            table[ti as usize * stride + 1] = 1.0;
-        }
         Ok(TaylorTape {
             tape,
             scalars,
             max_order,
-            table: RefCell::new(table),
         })
     }
 
@@ -189,23 +179,41 @@ impl<const N: usize> TaylorTape<N> {
 }
 
 impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
+    type Workspace = Vec<f64>;
+
     fn max_order(&self) -> usize {
         self.max_order
     }
 
-    fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]) {
+    fn coefficients_into(
+        &self,
+        ws: &mut Vec<f64>,
+        t: f64,
+        y: &[f64; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+    ) {
         let Some(top) = coeffs.len().checked_sub(1) else {
             return;
         };
         let order = order.min(self.max_order).min(top);
         let st = self.max_order + 1;
-        let mut table = self.table.borrow_mut();
-        let c = table.as_mut_slice();
+        let len = self.tape.series_count() * st;
+        if ws.len() != len {
+            ws.clear();
+            ws.resize(len, 0.0);
+        }
+        let c = ws.as_mut_slice();
         for (i, &yi) in y.iter().enumerate() {
             c[i * st] = yi;
         }
+        // The time series is t + τ. Its row is the only one read beyond what this call
+        // writes, so it is written whole: the workspace may have served another tape.
         if let Some(ti) = self.tape.time() {
-            c[ti as usize * st] = t;
+            let row = &mut c[ti as usize * st..(ti as usize + 1) * st];
+            row.fill(0.0);
+            row[0] = t;
+            row[1] = 1.0;
         }
         coeffs[0] = *y;
         // The steps at order k give f's coefficient k, which only order k + 1 reads: the

@@ -13,6 +13,7 @@
 mod emit;
 mod integrator;
 mod interpreted;
+pub mod kernels;
 mod recurrence;
 mod tape;
 
@@ -32,13 +33,20 @@ pub const MAX_TAYLOR_ORDER: usize = 100;
 /// Implemented by the recurrences generated for a scene (`taylor = …` on its attribute), by
 /// the interpreted recurrences of any symbolic system, and by hand.
 ///
+/// The coefficients of the intermediate series live in a [`TaylorSystem::Workspace`] the
+/// caller owns and passes to every call (the integrator keeps one), so that a call neither
+/// allocates nor zeroes: an implementation sizes it on its first use and then only writes
+/// what it reads. A workspace carries no state between calls; any value of the type,
+/// `Default::default()` included, gives the same coefficients.
+///
 /// ```
 /// use precess_core::taylor::TaylorSystem;
 /// /// y' = y: c_k = y/k!.
 /// struct Growth;
 /// impl TaylorSystem<1> for Growth {
+///     type Workspace = ();
 ///     fn max_order(&self) -> usize { 30 }
-///     fn coefficients(&self, _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+///     fn coefficients_into(&self, _ws: &mut (), _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
 ///         c[0] = *y;
 ///         for k in 1..=order {
 ///             c[k][0] = c[k - 1][0] / k as f64;
@@ -50,22 +58,48 @@ pub const MAX_TAYLOR_ORDER: usize = 100;
 /// approx::assert_relative_eq!(c[3][0], 2.0 / 6.0);
 /// ```
 pub trait TaylorSystem<const N: usize> {
-    /// The highest order [`TaylorSystem::coefficients`] can compute.
+    /// Scratch storage for the series of one computation (`()` when there is none).
+    type Workspace: Default + Clone + std::fmt::Debug;
+
+    /// The highest order [`TaylorSystem::coefficients_into`] can compute.
     fn max_order(&self) -> usize;
 
-    /// Writes `c_k = y⁽ᵏ⁾(t)/k!` into `coeffs[k]` for `k = 0, …, order`.
+    /// Writes `c_k = y⁽ᵏ⁾(t)/k!` into `coeffs[k]` for `k = 0, …, order`, with `ws` as
+    /// scratch.
     ///
     /// The caller guarantees `order ≤ self.max_order()` and `coeffs.len() > order`.
-    fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]);
+    fn coefficients_into(
+        &self,
+        ws: &mut Self::Workspace,
+        t: f64,
+        y: &[f64; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+    );
+
+    /// [`TaylorSystem::coefficients_into`] with a workspace made for this one call: for a
+    /// single computation; repeated ones should keep a workspace.
+    fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]) {
+        self.coefficients_into(&mut Self::Workspace::default(), t, y, order, coeffs);
+    }
 }
 
 impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
+    type Workspace = S::Workspace;
+
     fn max_order(&self) -> usize {
         (**self).max_order()
     }
 
-    fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]) {
-        (**self).coefficients(t, y, order, coeffs)
+    fn coefficients_into(
+        &self,
+        ws: &mut Self::Workspace,
+        t: f64,
+        y: &[f64; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+    ) {
+        (**self).coefficients_into(ws, t, y, order, coeffs)
     }
 }
 

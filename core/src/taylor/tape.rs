@@ -76,15 +76,17 @@ pub enum SeriesOp {
     Neg(u32),
     /// `√a`: `c_k = (a_k − Σⱼ₌₁ᵏ⁻¹ c_j c_{k−j}) / (2 c_0)` (the sum folded as in `Square`).
     Sqrt(u32),
-    /// `(sin a, cos a)` as a pair, into the series `out` and `out + 1`:
-    /// `s_k = (1/k) Σⱼ₌₁ᵏ j a_j c_{k−j}`, `c_k = −(1/k) Σⱼ₌₁ᵏ j a_j s_{k−j}`.
+    /// `(sin a, cos a)` as a pair, into the series `out` and `out + 1`, with the
+    /// derivative's coefficients d_j = j a_j in `out + 2` (made once, read by both sums):
+    /// `s_k = (1/k) Σⱼ₌₁ᵏ d_j c_{k−j}`, `c_k = −(1/k) Σⱼ₌₁ᵏ d_j s_{k−j}`.
     SinCos(u32),
 }
 
 /// One step of the recurrences: the series it writes and how.
 #[derive(Clone, Copy, PartialEq, Debug)]
 pub struct SeriesStep {
-    /// The series written (for [`SeriesOp::SinCos`], the sine; the cosine is `out + 1`).
+    /// The series written (for [`SeriesOp::SinCos`], the sine; the cosine is `out + 1`, the
+    /// derivative of the argument `out + 2`).
     pub out: u32,
     /// The operation.
     pub op: SeriesOp,
@@ -187,7 +189,8 @@ impl Tape {
         &self.steps
     }
 
-    /// The number of series (state, time, and one per step; two for a sine–cosine pair).
+    /// The number of series (state, time, and one per step; three for a sine–cosine pair:
+    /// sine, cosine and the argument's derivative).
     pub fn series_count(&self) -> usize {
         self.series_count as usize
     }
@@ -291,7 +294,7 @@ impl Builder {
     fn series_index(&mut self, op: SeriesOp) -> u32 {
         let out = self.tape.series_count;
         self.tape.series_count += if matches!(op, SeriesOp::SinCos(_)) {
-            2
+            3
         } else {
             1
         };

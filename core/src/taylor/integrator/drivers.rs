@@ -53,7 +53,8 @@ impl<S: TaylorSystem<N>, const N: usize> Stepper for Taylor<S, N> {
 /// struct Oscillator;
 /// impl TaylorSystem<2> for Oscillator {
 ///     fn max_order(&self) -> usize { 40 }
-///     fn coefficients(&self, _t: f64, y: &[f64; 2], order: usize, c: &mut [[f64; 2]]) {
+///     type Workspace = ();
+///     fn coefficients_into(&self, _ws: &mut (), _t: f64, y: &[f64; 2], order: usize, c: &mut [[f64; 2]]) {
 ///         c[0] = *y;
 ///         for k in 0..order {
 ///             let d = (k + 1) as f64;

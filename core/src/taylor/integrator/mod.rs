@@ -25,7 +25,7 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
 ///
 /// Owns its coefficient storage (allocated once, for the highest order the tolerances can
-/// ask), so stepping never allocates. It implements [`Stepper`](crate::ode::Stepper):
+/// ask) and the system's [`TaylorSystem::Workspace`], so stepping never allocates. It implements [`Stepper`](crate::ode::Stepper):
 /// [`Run`](crate::ode::Run) gives it samples, trajectories and events.
 ///
 /// [`Stats::rhs_evals`] counts each computation of the coefficients to order p (a *jet*) as
@@ -41,7 +41,8 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// struct Decay;
 /// impl TaylorSystem<1> for Decay {
 ///     fn max_order(&self) -> usize { 40 }
-///     fn coefficients(&self, _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+///     type Workspace = ();
+///     fn coefficients_into(&self, _ws: &mut (), _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
 ///         c[0] = *y;
 ///         for k in 1..=order {
 ///             c[k][0] = -c[k - 1][0] / k as f64;
@@ -54,7 +55,7 @@ use crate::ode::{OdeError, Stats, check_finite};
 /// # Ok::<(), precess_core::ode::OdeError>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct Taylor<S, const N: usize> {
+pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     sys: S,
     cfg: TaylorConfig,
     /// The highest order the system computes.
@@ -67,6 +68,8 @@ pub struct Taylor<S, const N: usize> {
     y_comp: [f64; N],
     /// c_k of the last step, k = 0, …, `last_order`.
     coeffs: Vec<[f64; N]>,
+    /// The system's scratch, kept across steps so that a jet neither allocates nor zeroes.
+    ws: S::Workspace,
     last: LastStep<N>,
     stats: Stats,
     jets: u64,
@@ -115,6 +118,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y: y0,
             y_comp: [0.0; N],
             coeffs: vec![[0.0; N]; highest + 1],
+            ws: S::Workspace::default(),
             last: LastStep {
                 t: t0,
                 t_lo: 0.0,
@@ -225,7 +229,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 value: p as f64,
             });
         };
-        self.sys.coefficients(self.t, &self.y, p, c);
+        self.sys
+            .coefficients_into(&mut self.ws, self.t, &self.y, p, c);
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
         if c.iter().any(|ck| ck.iter().any(|v| !v.is_finite())) {
