@@ -85,18 +85,24 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         },
     };
     let rhs: Vec<Option<ExprId>> = checked.equations.iter().map(|e| lowerer.expr(e)).collect();
-    let time = lowerer.names.time;
     let rhs: Vec<ExprId> = rhs.into_iter().collect::<Option<_>>()?;
+    // The scenes' emitter takes autonomous systems only (its tape has no time series).
+    if let Some((_, at)) = &lowerer.names.time {
+        cx.error_spanned_by(
+            at,
+            "the Taylor recurrences of `taylor_system!` do not read the time yet: make the system autonomous with a state variable for it (`state [.., tau]; d/dt tau = 1.0;`)",
+        );
+        return None;
+    }
     let mut symbols = SymbolTokens::default();
     for (field, &e) in checked.fields.iter().zip(&fields) {
         symbols.insert_expr(&arena, e, quote!(self.#field));
     }
     let n = state.len();
-    let mut reads: Vec<(ExprId, TokenStream)> = (0..n)
+    let reads: Vec<(ExprId, TokenStream)> = (0..n)
         .zip(&state)
         .map(|(i, &s)| (s, quote!(y[#i])))
         .collect();
-    reads.extend(time.map(|t| (t, quote!(t))));
     let emitted = Lowering::new(cx, ident, symbols.clone()).lower_reading(&arena, &rhs, &reads);
     let (lets, outputs) = (emitted.lets, emitted.outputs);
     let taylor = crate::taylor::expand(
