@@ -23,6 +23,7 @@ use precess::ode::{
     AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
 };
 use precess::prelude::*;
+use precess::taylor::kernels::cauchy;
 use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
 use precess::top::HeavyTopTheory;
 
@@ -36,10 +37,30 @@ const B5_Y20: [f64; 3] = [
 /// The highest order of the hand-written recurrences.
 const MAX_ORDER: usize = 60;
 
+/// The series rows a hand-written system keeps in its workspace (as the generated code does).
+type Rows = Vec<[f64; MAX_ORDER + 1]>;
+
+/// The workspace's `N` rows, sized on first use, with y loaded at order 0.
+fn rows<'w, const N: usize>(
+    ws: &'w mut Rows,
+    y: &[f64; N],
+) -> Option<[&'w mut [f64; MAX_ORDER + 1]; N]> {
+    if ws.len() != N {
+        ws.clear();
+        ws.resize(N, [0.0; MAX_ORDER + 1]);
+    }
+    let mut rows = ws.get_disjoint_mut(std::array::from_fn(|i| i)).ok()?;
+    for (row, yi) in rows.iter_mut().zip(y) {
+        row[0] = *yi;
+    }
+    Some(rows)
+}
+
 /// Σ_{j=0}^{k} a_j b_{k−j} for k = a.len() − 1 (the k-th coefficient of a product), with two
-/// accumulators so that the additions do not wait on each other.
+/// accumulators so that the additions do not wait on each other: the bench's own sum before
+/// `precess::taylor::kernels::cauchy` (kept for the `jet` group's before/after).
 #[inline(always)]
-fn cauchy(a: &[f64], b: &[f64]) -> f64 {
+fn cauchy_two(a: &[f64], b: &[f64]) -> f64 {
     let (mut even, mut odd) = (0.0, 0.0);
     let mut pairs = a.iter().zip(b.iter().rev());
     while let (Some((x0, y0)), Some((x1, y1))) = (pairs.next(), pairs.next()) {
@@ -80,10 +101,43 @@ impl System<3> for B5 {
     }
 }
 impl TaylorSystem<3> for B5 {
+    type Workspace = Rows;
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
+    fn coefficients_into(
+        &self,
+        ws: &mut Rows,
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
+        let Some([s0, s1, s2]) = rows(ws, y) else {
+            return;
+        };
+        c[0] = *y;
+        for k in 0..order {
+            let d = 1.0 / (k + 1) as f64;
+            let next = [
+                cauchy(&s1[..=k], &s2[..=k]) * d,
+                -cauchy(&s0[..=k], &s2[..=k]) * d,
+                -0.51 * cauchy(&s0[..=k], &s1[..=k]) * d,
+            ];
+            (s0[k + 1], s1[k + 1], s2[k + 1]) = (next[0], next[1], next[2]);
+            c[k + 1] = next;
+        }
+    }
+}
+
+/// B5's recurrences as they were before the workspace and the kernels: the series zeroed on
+/// the stack each call, two accumulators, the output copied at the end (for the `jet` group).
+struct B5Before;
+impl TaylorSystem<3> for B5Before {
     type Workspace = ();
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
     fn coefficients_into(
         &self,
         _ws: &mut (),
@@ -97,9 +151,9 @@ impl TaylorSystem<3> for B5 {
             let d = 1.0 / (k + 1) as f64;
             let [a0, a1, a2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
             let next = [
-                cauchy(a1, a2) * d,
-                -cauchy(a0, a2) * d,
-                -0.51 * cauchy(a0, a1) * d,
+                cauchy_two(a1, a2) * d,
+                -cauchy_two(a0, a2) * d,
+                -0.51 * cauchy_two(a0, a1) * d,
             ];
             for (si, v) in s.iter_mut().zip(next) {
                 si[k + 1] = v;
@@ -128,33 +182,33 @@ impl System<3> for FreeBody {
     }
 }
 impl TaylorSystem<3> for FreeBody {
+    type Workspace = Rows;
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
-    type Workspace = ();
     fn coefficients_into(
         &self,
-        _ws: &mut (),
+        ws: &mut Rows,
         _t: f64,
         y: &[f64; 3],
         order: usize,
         c: &mut [[f64; 3]],
     ) {
         let a = self.a();
-        let mut s = series(y);
+        let Some([m0, m1, m2]) = rows(ws, y) else {
+            return;
+        };
+        c[0] = *y;
         for k in 0..order {
             let d = 1.0 / (k + 1) as f64;
-            let [m0, m1, m2] = [&s[0][..=k], &s[1][..=k], &s[2][..=k]];
             let next = [
-                a[0] * cauchy(m1, m2) * d,
-                a[1] * cauchy(m2, m0) * d,
-                a[2] * cauchy(m0, m1) * d,
+                a[0] * d * cauchy(&m1[..=k], &m2[..=k]),
+                a[1] * d * cauchy(&m2[..=k], &m0[..=k]),
+                a[2] * d * cauchy(&m0[..=k], &m1[..=k]),
             ];
-            for (si, v) in s.iter_mut().zip(next) {
-                si[k + 1] = v;
-            }
+            (m0[k + 1], m1[k + 1], m2[k + 1]) = (next[0], next[1], next[2]);
+            c[k + 1] = next;
         }
-        write_out(&s, order, c);
     }
 }
 
@@ -183,43 +237,43 @@ impl System<6> for EulerPoisson {
     }
 }
 impl TaylorSystem<6> for EulerPoisson {
+    type Workspace = Rows;
     fn max_order(&self) -> usize {
         MAX_ORDER
     }
-    type Workspace = ();
     fn coefficients_into(
         &self,
-        _ws: &mut (),
+        ws: &mut Rows,
         _t: f64,
         y: &[f64; 6],
         order: usize,
         c: &mut [[f64; 6]],
     ) {
         let (r, sg) = ((self.i1 - self.i3) / self.i1, self.mgl / self.i1);
-        let mut s = series(y);
+        let Some([w1, w2, w3, g1, g2, g3]) = rows(ws, y) else {
+            return;
+        };
+        c[0] = *y;
         for k in 0..order {
             let d = 1.0 / (k + 1) as f64;
-            let [w1, w2, w3, g1, g2, g3] = [
-                &s[0][..=k],
-                &s[1][..=k],
-                &s[2][..=k],
-                &s[3][..=k],
-                &s[4][..=k],
-                &s[5][..=k],
-            ];
+            let (w1k, w2k, w3k) = (&w1[..=k], &w2[..=k], &w3[..=k]);
+            let (g1k, g2k, g3k) = (&g1[..=k], &g2[..=k], &g3[..=k]);
             let next = [
-                (r * cauchy(w2, w3) + sg * g2[k]) * d,
-                (-r * cauchy(w3, w1) - sg * g1[k]) * d,
+                (r * cauchy(w2k, w3k) + sg * g2k[k]) * d,
+                (-r * cauchy(w3k, w1k) - sg * g1k[k]) * d,
                 0.0,
-                (cauchy(g2, w3) - cauchy(g3, w2)) * d,
-                (cauchy(g3, w1) - cauchy(g1, w3)) * d,
-                (cauchy(g1, w2) - cauchy(g2, w1)) * d,
+                (cauchy(g2k, w3k) - cauchy(g3k, w2k)) * d,
+                (cauchy(g3k, w1k) - cauchy(g1k, w3k)) * d,
+                (cauchy(g1k, w2k) - cauchy(g2k, w1k)) * d,
             ];
-            for (si, v) in s.iter_mut().zip(next) {
-                si[k + 1] = v;
+            for (row, v) in [&mut *w1, &mut *w2, &mut *w3, &mut *g1, &mut *g2, &mut *g3]
+                .into_iter()
+                .zip(next)
+            {
+                row[k + 1] = v;
             }
+            c[k + 1] = next;
         }
-        write_out(&s, order, c);
     }
 }
 
@@ -552,10 +606,17 @@ fn main() {
             d
         })
     });
-    for order in [10, 20] {
+    let mut ws = Rows::new();
+    for order in [10, 13, 20] {
         g.bench_function(format!("B5 coefficients order {order}"), |b| {
             b.iter(|| {
-                B5.coefficients(0.0, black_box(&y), order, &mut coeffs);
+                B5.coefficients_into(&mut ws, 0.0, black_box(&y), order, &mut coeffs);
+                coeffs[order]
+            })
+        });
+        g.bench_function(format!("B5 coefficients before order {order}"), |b| {
+            b.iter(|| {
+                B5Before.coefficients_into(&mut (), 0.0, black_box(&y), order, &mut coeffs);
                 coeffs[order]
             })
         });

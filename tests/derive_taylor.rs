@@ -189,3 +189,33 @@ fn the_orders_are_bounded_by_the_key_and_the_buffer() {
     SpinningTop.coefficients(0.0, &y, 20, &mut long);
     assert_eq!(short[..], long[..3]);
 }
+
+#[test]
+fn a_workspace_kept_across_calls_gives_what_a_fresh_one_gives() {
+    // The integrator keeps one workspace for every step: what a call leaves in it must not
+    // reach the next call's coefficients, at any order, even when the next asks fewer.
+    let top = interpreted_top(&SpinningTop, 9.81, 20);
+    let mut ws = Vec::new();
+    let mut kept = [[0.0; 6]; 21];
+    let mut fresh = [[0.0; 6]; 21];
+    let states = [
+        [0.3, 0.5, -0.2, 0.8, -0.4, 60.0],
+        [1.1, 0.2, 0.7, -3.0, 2.0, 150.0],
+        [0.3, 0.5, -0.2, 0.8, -0.4, 60.0],
+    ];
+    for (y, order) in states.iter().zip([20, 20, 9]) {
+        SpinningTop.coefficients_into(&mut ws, 0.0, y, order, &mut kept);
+        top.coefficients(0.0, y, order, &mut fresh);
+        for k in 0..=order {
+            let scale = fresh[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            for n in 0..6 {
+                assert!(
+                    (kept[k][n] - fresh[k][n]).abs() <= 1e-12 * scale,
+                    "order {k}, component {n}: {} vs {}",
+                    kept[k][n],
+                    fresh[k][n]
+                );
+            }
+        }
+    }
+}

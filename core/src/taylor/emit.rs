@@ -35,7 +35,8 @@ pub struct TaylorTokens {
     pub body: TokenStream,
     /// The type of `TaylorSystem::Workspace` the body expects (`Vec<[f64; K + 1]>`).
     pub workspace: TokenStream,
-    /// The number of series rows the workspace holds.
+    /// The number of series rows the workspace holds (the tape's series less those the code
+    /// keeps in `let`s).
     pub series: usize,
 }
 
@@ -74,7 +75,7 @@ impl Tape {
     /// let tape = Tape::new(&a, &[x], None, &[rhs]).unwrap();
     /// let code = tape.to_tokens(20, &mut |_| quote::quote!(0.0));
     /// assert!(code.body.to_string().contains("20usize"));
-    /// assert_eq!(code.series, 2); // x and x²
+    /// assert_eq!(code.series, 1); // x; x² is read once, at its own order: a `let`
     /// ```
     pub fn to_tokens(
         &self,
@@ -111,8 +112,12 @@ impl Tape {
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
             scalars.extend(quote!(let #id: f64 = #rhs;));
         }
-        let rows = self.series_count as usize;
-        let bindings = (0..self.series_count).map(series);
+        let local = self.local_series();
+        let is_local = |x: u32| local.get(x as usize).copied().unwrap_or(false);
+        // Only the series that are not `let`s get a row: fewer rows, a smaller workspace.
+        let with_row: Vec<u32> = (0..self.series_count).filter(|&x| !is_local(x)).collect();
+        let rows = with_row.len();
+        let bindings = with_row.iter().map(|&x| series(x));
         let load = (0..self.dimension).map(|i| {
             let id = series(i as u32);
             quote!(#id[0] = y[#i];)
@@ -126,11 +131,11 @@ impl Tape {
         let first = self
             .steps
             .iter()
-            .map(|st| order_zero(st.out, st.op, scalar_operand));
+            .map(|st| order_zero(st.out, st.op, scalar_operand, &is_local));
         let steps = self
             .steps
             .iter()
-            .map(|st| order_k(st.out, st.op, scalar_operand));
+            .map(|st| order_k(st.out, st.op, scalar_operand, &is_local));
         // f's order-k coefficient into the state's order k + 1: at order 0 as it is, at
         // order k ≥ 1 divided by k + 1 (`__inv`); a scalar output has order 0 only.
         let output = |order_zero: bool| {
@@ -138,12 +143,12 @@ impl Tape {
                 let state = series(i as u32);
                 match (*out, order_zero) {
                     (Value::Series(x), true) => {
-                        let id = series(x);
-                        quote!(#state[1] = #id[0];)
+                        let v = pointwise(x, &is_local, quote!(0));
+                        quote!(#state[1] = #v;)
                     }
                     (Value::Series(x), false) => {
-                        let id = series(x);
-                        quote!(#state[__k + 1] = #id[__k] * __inv;)
+                        let v = pointwise(x, &is_local, quote!(__k));
+                        quote!(#state[__k + 1] = #v * __inv;)
                     }
                     (Value::Scalar(x), true) => {
                         let v = scalar_operand(x);
@@ -202,13 +207,107 @@ impl Tape {
     }
 }
 
+impl Tape {
+    /// The series that need no row: made by a step whose recurrence does not read its own
+    /// lower orders, and read once, at the current order only (by a sum, a scaling, the
+    /// numerator of a quotient, a root's or a sine's argument, or an output). Such a
+    /// series is a `let` at each order, e.g. the product in `−0.51 y₁ y₂`.
+    fn local_series(&self) -> Vec<bool> {
+        let n = self.series_count as usize;
+        let mut reads = vec![0u32; n];
+        let mut ranged = vec![false; n];
+        let mut count = |x: u32, whole: bool| {
+            if let Some(r) = reads.get_mut(x as usize) {
+                *r += 1;
+            }
+            if whole && let Some(r) = ranged.get_mut(x as usize) {
+                *r = true;
+            }
+        };
+        for st in &self.steps {
+            match st.op {
+                SeriesOp::Add(a, b) | SeriesOp::Sub(a, b) => {
+                    count(a, false);
+                    count(b, false);
+                }
+                SeriesOp::AddScalar(a, _)
+                | SeriesOp::SubScalar(a, _)
+                | SeriesOp::ScalarSub(_, a)
+                | SeriesOp::Neg(a)
+                | SeriesOp::Scale(a, _)
+                | SeriesOp::DivScalar(a, _)
+                | SeriesOp::Sqrt(a)
+                | SeriesOp::SinCos(a) => count(a, false),
+                SeriesOp::Div(a, b) => {
+                    count(a, false);
+                    count(b, true);
+                }
+                SeriesOp::Mul(a, b) => {
+                    count(a, true);
+                    count(b, true);
+                }
+                SeriesOp::Square(a) | SeriesOp::ScalarDiv(_, a) => count(a, true),
+            }
+        }
+        for out in &self.outputs {
+            if let Value::Series(x) = *out {
+                count(x, false);
+            }
+        }
+        let mut local = vec![false; n];
+        for st in &self.steps {
+            let own_history = matches!(
+                st.op,
+                SeriesOp::Div(..)
+                    | SeriesOp::ScalarDiv(..)
+                    | SeriesOp::Sqrt(_)
+                    | SeriesOp::SinCos(_)
+            );
+            let x = st.out as usize;
+            if !own_history && reads.get(x) == Some(&1) && ranged.get(x) == Some(&false) {
+                local[x] = true;
+            }
+        }
+        local
+    }
+}
+
+/// Series `x` at the current order `k`: its row's entry, or its `let` if it has no row.
+fn pointwise(x: u32, is_local: &dyn Fn(u32) -> bool, k: TokenStream) -> TokenStream {
+    if is_local(x) {
+        let v = Ident::new(&format!("__v{x}"), Span::call_site());
+        quote!(#v)
+    } else {
+        let id = series(x);
+        quote!(#id[#k])
+    }
+}
+
+/// Stores a step's value at the current order `k`: into its row, or as its `let`.
+fn store(
+    out: u32,
+    is_local: &dyn Fn(u32) -> bool,
+    k: TokenStream,
+    value: TokenStream,
+) -> TokenStream {
+    if is_local(out) {
+        let v = Ident::new(&format!("__v{out}"), Span::call_site());
+        quote!(let #v: f64 = #value;)
+    } else {
+        let o = series(out);
+        quote!(let __v: f64 = #value; #o[#k] = __v;)
+    }
+}
+
 /// One step's value at order 0 (the values themselves).
-fn order_zero(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStream {
+fn order_zero(
+    out: u32,
+    op: SeriesOp,
+    s: impl Fn(u32) -> TokenStream,
+    is_local: &dyn Fn(u32) -> bool,
+) -> TokenStream {
     let o = series(out);
-    let x = |i: u32| {
-        let id = series(i);
-        quote!(#id[0])
-    };
+    let x = |i: u32| pointwise(i, is_local, quote!(0));
     let value = match op {
         SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
         SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
@@ -233,39 +332,31 @@ fn order_zero(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenSt
             };
         }
     };
-    quote!(#o[0] = #value;)
+    store(out, is_local, quote!(0), value)
 }
 
 /// One step's recurrence at the order `__k ≥ 1` (a `usize` in scope).
-fn order_k(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStream {
+fn order_k(
+    out: u32,
+    op: SeriesOp,
+    s: impl Fn(u32) -> TokenStream,
+    is_local: &dyn Fn(u32) -> bool,
+) -> TokenStream {
     let o = series(out);
     let x = series;
+    // A pointwise read: the operand's row at k, or its `let`.
+    let at = |i: u32| pointwise(i, is_local, quote!(__k));
     let (cauchy, square) = (kernel("cauchy"), kernel("square"));
     let value = match op {
-        SeriesOp::Add(a, b) => {
-            let (a, b) = (x(a), x(b));
-            quote!(#a[__k] + #b[__k])
-        }
-        SeriesOp::Sub(a, b) => {
-            let (a, b) = (x(a), x(b));
-            quote!(#a[__k] - #b[__k])
-        }
-        SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => {
-            let a = x(a);
-            quote!(#a[__k])
-        }
+        SeriesOp::Add(a, b) => binary(at(a), quote!(+), at(b)),
+        SeriesOp::Sub(a, b) => binary(at(a), quote!(-), at(b)),
+        SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => at(a),
         SeriesOp::ScalarSub(_, a) | SeriesOp::Neg(a) => {
-            let a = x(a);
-            quote!(-#a[__k])
+            let a = at(a);
+            quote!(-#a)
         }
-        SeriesOp::Scale(a, c) => {
-            let (a, c) = (x(a), s(c));
-            quote!(#c * #a[__k])
-        }
-        SeriesOp::DivScalar(a, c) => {
-            let (a, c) = (x(a), s(c));
-            quote!(#a[__k] / #c)
-        }
+        SeriesOp::Scale(a, c) => binary(s(c), quote!(*), at(a)),
+        SeriesOp::DivScalar(a, c) => binary(at(a), quote!(/), s(c)),
         SeriesOp::Mul(a, b) => {
             let (a, b) = (x(a), x(b));
             quote!(#cauchy(&#a[..=__k], &#b[..=__k]))
@@ -275,21 +366,21 @@ fn order_k(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStrea
             quote!(#square(&#a[..=__k]))
         }
         SeriesOp::Div(a, b) => {
-            let (a, b) = (x(a), x(b));
-            quote!((#a[__k] - #cauchy(&#b[1..=__k], &#o[..__k])) / #b[0])
+            let (a, b) = (at(a), x(b));
+            quote!((#a - #cauchy(&#b[1..=__k], &#o[..__k])) / #b[0])
         }
         SeriesOp::ScalarDiv(_, a) => {
             let a = x(a);
             quote!(-#cauchy(&#a[1..=__k], &#o[..__k]) / #a[0])
         }
         SeriesOp::Sqrt(a) => {
-            let a = x(a);
-            quote!((#a[__k] - #square(&#o[1..__k])) / (2.0 * #o[0]))
+            let a = at(a);
+            quote!((#a - #square(&#o[1..__k])) / (2.0 * #o[0]))
         }
         SeriesOp::SinCos(a) => {
-            let (a, c, d) = (x(a), series(out + 1), series(out + 2));
+            let (a, c, d) = (at(a), series(out + 1), series(out + 2));
             return quote! {
-                #d[__k] = (__k as f64) * #a[__k];
+                #d[__k] = (__k as f64) * #a;
                 let __inv_k = 1.0 / (__k as f64);
                 let __sv = #cauchy(&#d[1..=__k], &#c[..__k]) * __inv_k;
                 let __cv = -#cauchy(&#d[1..=__k], &#o[..__k]) * __inv_k;
@@ -298,7 +389,7 @@ fn order_k(out: u32, op: SeriesOp, s: impl Fn(u32) -> TokenStream) -> TokenStrea
             };
         }
     };
-    quote!(let __v: f64 = #value; #o[__k] = __v;)
+    store(out, is_local, quote!(__k), value)
 }
 
 fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {

@@ -139,3 +139,74 @@ fn bad_input_is_refused_with_the_numbers() {
     let e = TaylorTape::new(&a, [x], [rhs], None, &[], 20).unwrap_err();
     assert!(matches!(e, TaylorError::RunTimeInput { .. }));
 }
+
+#[test]
+fn the_kernels_match_closed_form_sums() {
+    use super::kernels::{cauchy, square};
+    for n in 1..30usize {
+        let ones = vec![1.0; n];
+        // Σ 1·1 over n terms.
+        assert_eq!(cauchy(&ones, &ones), n as f64);
+        // Σⱼ (j + 1)(n − j) = n(n + 1)(n + 2)/6.
+        let ramp: Vec<f64> = (1..=n).map(|j| j as f64).collect();
+        let want = (n * (n + 1) * (n + 2) / 6) as f64;
+        assert_eq!(cauchy(&ramp, &ramp), want);
+        // The square of the geometric series rʲ at order k = n − 1: (k + 1) rᵏ.
+        let r = 0.5f64;
+        let geo: Vec<f64> = (0..n).map(|j| r.powi(j as i32)).collect();
+        let k = n - 1;
+        assert_relative_eq!(
+            square(&geo),
+            (k + 1) as f64 * r.powi(k as i32),
+            max_relative = 1e-15
+        );
+    }
+    // Unequal lengths: the shorter decides, the longer is read from its end's order.
+    assert_eq!(cauchy(&[1.0, 2.0, 3.0], &[4.0, 5.0]), 1.0 * 5.0 + 2.0 * 4.0);
+    assert_eq!(cauchy(&[], &[1.0]), 0.0);
+    assert_eq!(square(&[]), 0.0);
+}
+
+#[test]
+fn a_workspace_that_served_another_tape_gives_the_same_coefficients() {
+    // Two tapes with the same number of series and the same order share a workspace type
+    // and size: x' = x² leaves x²'s coefficients in row 1, which is the time's row of
+    // x' = t. The time's row must be rewritten whole, or x's coefficients past order 2
+    // pick up x²'s.
+    let mut a = Arena::new();
+    let x = a.coordinate("x");
+    let t = a.time();
+    let sq = a.mul(x, x);
+    let squares = TaylorTape::new(&a, [x], [sq], None, &[], 12).unwrap();
+    let clock = TaylorTape::new(&a, [x], [t], Some(t), &[], 12).unwrap();
+    assert_eq!(squares.tape().series_count(), clock.tape().series_count());
+    let mut ws = Vec::new();
+    let mut c = [[0.0; 1]; 13];
+    squares.coefficients_into(&mut ws, 0.0, &[0.5], 12, &mut c);
+    clock.coefficients_into(&mut ws, 2.0, &[1.0], 12, &mut c);
+    // x(2 + τ) = 1 + 2τ + τ²/2.
+    assert_eq!(c[..3], [[1.0], [2.0], [0.5]]);
+    assert!(c[3..].iter().all(|ck| ck[0] == 0.0), "{c:?}");
+}
+
+#[test]
+fn the_emitted_code_keeps_rows_only_for_series_read_over_their_orders() {
+    // B5: y' = (y2 y3, −y1 y3, −m y1 y2). Each product and its sign or scaling is read once,
+    // at its own order, so only the three state rows remain; a quotient reads its own past
+    // and keeps its row.
+    let mut a = Arena::new();
+    let y: [ExprId; 3] = [a.coordinate("y1"), a.coordinate("y2"), a.coordinate("y3")];
+    let m = a.parameter("m");
+    let f1 = a.mul(y[1], y[2]);
+    let p = a.mul(y[0], y[2]);
+    let f2 = a.neg(p);
+    let q = a.mul(y[0], y[1]);
+    let mq = a.mul(m, q);
+    let f3 = a.neg(mq);
+    let b5 = super::Tape::new(&a, &y, None, &[f1, f2, f3]).unwrap();
+    assert_eq!(b5.series_count(), 9);
+    assert_eq!(b5.emitted(20).series, 3);
+    let quotient = a.div(y[1], y[2]).unwrap();
+    let tape = super::Tape::new(&a, &y, None, &[quotient, f2, f3]).unwrap();
+    assert_eq!(tape.emitted(20).series, 4);
+}

@@ -58,8 +58,10 @@ use crate::ode::{OdeError, Stats, check_finite};
 pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     sys: S,
     cfg: TaylorConfig,
-    /// The highest order the system computes.
-    system_max: usize,
+    /// Order and step factor of the relative mode ([0], ε = rtol) and of the absolute one
+    /// ([1], ε = atol): fixed by the configuration, so computed once, not per step (they
+    /// cost a logarithm and two exponentials).
+    rules: [(usize, f64); 2],
     /// Time as an unevaluated sum t + t_lo.
     t: f64,
     t_lo: f64,
@@ -107,12 +109,16 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 value: system_max as f64,
             });
         }
-        // The tighter tolerance asks the highest order.
-        let highest = cfg.order_for(cfg.rtol.min(cfg.atol), system_max);
+        let rule = |eps: f64| {
+            let p = cfg.order_for(eps, system_max);
+            (p, TaylorConfig::step_factor(eps, p))
+        };
+        let rules = [rule(cfg.rtol), rule(cfg.atol)];
+        let highest = rules[0].0.max(rules[1].0);
         Ok(Self {
             sys,
             cfg,
-            system_max,
+            rules,
             t: t0,
             t_lo: 0.0,
             y: y0,
@@ -216,12 +222,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let relative = self.cfg.rtol * norm > self.cfg.atol;
-        let eps = if relative {
-            self.cfg.rtol
-        } else {
-            self.cfg.atol
-        };
-        let p = self.cfg.order_for(eps, self.system_max);
+        let (p, factor) = self.rules[usize::from(!relative)];
         let Some(c) = self.coeffs.get_mut(..=p) else {
             // order_for never exceeds the order allocated for the tighter tolerance.
             return Err(OdeError::InvalidParameter {
@@ -240,14 +241,17 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             Some(h) => h,
             None => {
                 let scale = if relative { norm } else { 1.0 };
-                let radius = [p - 1, p]
+                // ρ = min over k of (s/‖c_k‖)^(1/k), as exp of the least logarithm: one
+                // exponential instead of two powers.
+                let log_radius = [p - 1, p]
                     .iter()
                     .map(|&k| {
                         let ck = c[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                        (scale / ck).powf(1.0 / k as f64)
+                        (scale / ck).ln() / k as f64
                     })
                     .fold(f64::INFINITY, f64::min);
-                TaylorConfig::step_factor(eps, p) * radius
+                let radius = log_radius.exp();
+                factor * radius
             }
         }
         .min(self.cfg.h_max);
