@@ -1,11 +1,15 @@
 //! The size of the Taylor recurrences `taylor = K` generates: for a general top (a full
-//! inertia tensor, the centre of mass off the axis, in the Lagrangian state [q, q̇]) and a
-//! free body (13 components), the steps of the tape by kind, the flops of one coefficient
-//! evaluation at order 20, and the size of the emitted Rust (tokens and characters).
+//! inertia tensor, the centre of mass off the axis, in the Lagrangian state [q, q̇]), a
+//! free body (13 components) and a 10-link 3D chain (`chains::spatial_chain`, the recursive
+//! route, state [q, q̇] of 20 components), the steps of the tape by kind, the flops of one
+//! coefficient evaluation at order 20, and the size of the emitted Rust (tokens and
+//! characters).
 //!
 //! Run with `cargo run --example taylor_price`.
 
 use precess::free::FreeScene;
+use precess::mechanism::Route;
+use precess::mechanism::recursive::chains::spatial_chain;
 use precess::rigid::AngleSequence;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::Tape;
@@ -71,6 +75,18 @@ fn main() {
     report(
         "free body",
         &Tape::new(&a, &d.state, None, &d.rhs).unwrap(),
+        ops,
+    );
+
+    let mut a = Arena::new();
+    let d = spatial_chain(&mut a, 10)
+        .derive(&mut a, Route::Auto)
+        .unwrap();
+    let (state, rhs) = d.first_order::<20>().unwrap();
+    let ops = precess::codegen::Program::lower(&a, &rhs).ops().len();
+    report(
+        &format!("10-link 3D chain ({} route)", d.route.name()),
+        &Tape::new(&a, &state, None, &rhs).unwrap(),
         ops,
     );
 }

@@ -34,6 +34,39 @@
 
 pub use precess_core::*;
 
+/// An ODE written as equations, with its right-hand side and its Taylor recurrences
+/// generated at compile time (see `docs/taylor.md`).
+///
+/// # Examples
+/// DETEST B5, whose solution from (0, 1, 1) is Jacobi's (sn, cn, dn)(t | 0.51): the
+/// coefficient of order 1 is the right-hand side, those of orders 2 and 3 follow from it.
+/// ```
+/// use approx::assert_relative_eq;
+/// use precess::ode::System;
+/// use precess::taylor::TaylorSystem;
+/// precess::taylor_system! {
+///     /// DETEST B5.
+///     struct B5;
+///     state [y1, y2, y3];
+///     taylor = 20;
+///     d/dt y1 = y2 * y3;
+///     d/dt y2 = -y1 * y3;
+///     d/dt y3 = -0.51 * y1 * y2;
+/// }
+/// let mut c = [[0.0; 3]; 4];
+/// B5.coefficients(0.0, &[0.0, 1.0, 1.0], 3, &mut c);
+/// let mut f = [0.0; 3];
+/// B5.rhs(0.0, &[0.0, 1.0, 1.0], &mut f);
+/// for i in 0..3 {
+///     assert_relative_eq!(c[1][i], f[i], epsilon = 1e-15);
+/// }
+/// // sn t = t − (1 + k²) t³/6 + …, cn t = 1 − t²/2 + …, dn t = 1 − k² t²/2 + …
+/// assert_relative_eq!(c[2][1], -0.5);
+/// assert_relative_eq!(c[2][2], -0.51 / 2.0);
+/// assert_relative_eq!(c[3][0], -(1.0 + 0.51) / 6.0);
+/// ```
+pub use precess_derive::taylor_system;
+
 /// The derive and the types a user of it needs.
 pub mod prelude {
     pub use precess_core::body::{

@@ -290,7 +290,7 @@ pub const LINK_KEYS: &[&str] = &[
 /// The `name(...)` groups of `#[link(...)]`.
 pub const LINK_GROUPS: &[&str] = &[PARTS_GROUP, SPRING];
 /// The keys of `#[mechanism(...)]`.
-pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE];
+pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE, TAYLOR];
 /// The routes of [`ROUTE`].
 pub const ROUTES: &[&str] = &["auto", "symbolic", "factored", "recursive"];
 

@@ -487,6 +487,12 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
             false,
             super::taylor::taylor_runs(heavy, fast)?,
         ),
+        m(
+            "Taylor, interpreted",
+            Setting::Tolerance,
+            false,
+            super::taylor::interpreted_runs(),
+        ),
         m("Vern9", Setting::Tolerance, false, vern9),
         m(
             "DOPRI5",

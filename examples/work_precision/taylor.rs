@@ -1,7 +1,8 @@
 //! The Taylor integrator of issue 15 on every problem it applies to: (a) and (b) through
-//! recurrences built at run time from the right-hand side written symbolically
-//! ([`TaylorTape`]), (c) and (d) through the recurrences the derive generates for the
-//! report's top (`taylor = 20` on its `#[top]`).
+//! the recurrences `taylor_system!` generates from their equations written in the source,
+//! and, for comparison, the same equations built at run time and interpreted
+//! ([`TaylorTape`], the curve "Taylor, interpreted"); (c) and (d) through the recurrences
+//! the derive generates for the report's top (`taylor = 20` on its `#[top]`).
 
 use std::error::Error;
 
@@ -13,36 +14,67 @@ use super::problems::{
     B5_T, B5_Y0, B5_Y20, Problem, SEP_I, SEP_M0, SEP_T, SpinningTop, TopCase, max_diff,
 };
 
-/// Euler's torque-free equations ṁ = m × I⁻¹m, or DETEST B5 (ẏ = (y₂y₃, −y₁y₃, −0.51 y₁y₂)),
-/// as symbolic right-hand sides over three state symbols.
+/// The highest order of (a) and (b)'s recurrences: the integrator picks ≈ 17 at 1e-14.
+const ORDER: usize = 24;
+
+precess::taylor_system! {
+    /// Euler's torque-free equations ṁ = m × I⁻¹m in principal axes (problem (a)): each
+    /// component one product of the other two, scaled by a difference of inverse moments.
+    pub struct EulerBody {
+        i1: f64,
+        i2: f64,
+        i3: f64,
+    }
+    state [m1, m2, m3];
+    taylor = 24;
+    d/dt m1 = (1.0 / i3 - 1.0 / i2) * m2 * m3;
+    d/dt m2 = (1.0 / i1 - 1.0 / i3) * m3 * m1;
+    d/dt m3 = (1.0 / i2 - 1.0 / i1) * m1 * m2;
+}
+
+precess::taylor_system! {
+    /// DETEST B5 (problem (b)).
+    pub struct B5;
+    state [y1, y2, y3];
+    taylor = 24;
+    d/dt y1 = y2 * y3;
+    d/dt y2 = -y1 * y3;
+    d/dt y3 = -0.51 * y1 * y2;
+}
+
+/// The body of problem (a).
+fn euler_body() -> EulerBody {
+    let [i1, i2, i3] = SEP_I;
+    EulerBody { i1, i2, i3 }
+}
+
+/// The same equations as [`EulerBody`] (`b5` false, with I = `SEP_I`) or [`B5`], built in
+/// the engine at run time and interpreted.
 fn tape(b5: bool) -> Result<TaylorTape<3>, Box<dyn Error>> {
     let mut a = Arena::new();
     let y: [ExprId; 3] = ["y1", "y2", "y3"].map(|n| a.coordinate(n));
-    let rhs: [ExprId; 3] = if b5 {
+    // Component i is c_i · y_j · y_k for (i, j, k) cyclic.
+    let scales: [ExprId; 3] = if b5 {
         let k = a.number("0.51")?;
-        let p12 = a.mul(y[0], y[1]);
-        let p13 = a.mul(y[0], y[2]);
-        let kp12 = a.mul(k, p12);
-        [a.mul(y[1], y[2]), a.neg(p13), a.neg(kp12)]
+        [a.one(), a.integer(-1), a.neg(k)]
     } else {
-        let inv = SEP_I.map(|i| 1.0 / i);
-        let [i1, i2, i3] = ["inv_i1", "inv_i2", "inv_i3"].map(|n| a.parameter(n));
-        let w = [a.mul(i1, y[0]), a.mul(i2, y[1]), a.mul(i3, y[2])];
-        // ṁ = m × ω, component i = m_j ω_k − m_k ω_j for (i, j, k) cyclic.
-        let cross = |a: &mut Arena, j: usize, k: usize| {
-            let l = a.mul(y[j], w[k]);
-            let r = a.mul(y[k], w[j]);
-            a.sub(l, r)
-        };
-        let out = [
-            cross(&mut a, 1, 2),
-            cross(&mut a, 2, 0),
-            cross(&mut a, 0, 1),
-        ];
-        let values = [("inv_i1", inv[0]), ("inv_i2", inv[1]), ("inv_i3", inv[2])];
-        return Ok(TaylorTape::new(&a, y, out, None, &values, 40)?);
+        let inv = ["inv_i1", "inv_i2", "inv_i3"].map(|n| a.parameter(n));
+        [
+            a.sub(inv[2], inv[1]),
+            a.sub(inv[0], inv[2]),
+            a.sub(inv[1], inv[0]),
+        ]
     };
-    Ok(TaylorTape::new(&a, y, rhs, None, &[], 40)?)
+    let mut rhs = [a.zero(); 3];
+    for (i, out) in rhs.iter_mut().enumerate() {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let scaled = a.mul(scales[i], y[j]);
+        *out = a.mul(scaled, y[k]);
+    }
+    let inv = SEP_I.map(|i| 1.0 / i);
+    let values = [("inv_i1", inv[0]), ("inv_i2", inv[1]), ("inv_i3", inv[2])];
+    let values: &[(&str, f64)] = if b5 { &[] } else { &values };
+    Ok(TaylorTape::new(&a, y, rhs, None, values, ORDER)?)
 }
 
 fn config(tol: f64) -> TaylorConfig {
@@ -62,9 +94,34 @@ fn run<S: TaylorSystem<N>, const N: usize>(
     Ok((s.y, s.stats.rhs_evals, s.stats.steps))
 }
 
-/// Taylor's method on (a), (b), (c) and (d).
+/// Taylor's method on (a), (b), (c) and (d), the recurrences generated at compile time.
 pub fn taylor_runs(heavy: TopCase, fast: TopCase) -> Result<Vec<ProblemRun>, Box<dyn Error>> {
-    let ladder = vec![1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
+    let sep: Runner = Box::new(|tol| {
+        let reference = super::problems::separatrix_reference();
+        let (y, e, s) = run(euler_body(), SEP_M0, SEP_T, tol)?;
+        Ok(outcome(max_diff(&y, &reference), e, s))
+    });
+    let b5: Runner = Box::new(|tol| {
+        let (y, e, s) = run(B5, B5_Y0, B5_T, tol)?;
+        Ok(outcome(max_diff(&y, &B5_Y20), e, s))
+    });
+    let top = |case: TopCase| -> Runner {
+        Box::new(move |tol| {
+            let (y, e, s) = run(SpinningTop, case.angles0(), case.t_end, tol)?;
+            Ok(outcome((y[1].cos() - case.u_end).abs(), e, s))
+        })
+    };
+    Ok(problem_runs(vec![
+        (Problem::Separatrix, sep),
+        (Problem::B5, b5),
+        (Problem::HeavyTop, top(heavy)),
+        (Problem::FastTop, top(fast)),
+    ]))
+}
+
+/// Taylor's method on (a) and (b) with the same equations interpreted ([`TaylorTape`]),
+/// the price of not generating them.
+pub fn interpreted_runs() -> Vec<ProblemRun> {
     let sep: Runner = Box::new(|tol| {
         let reference = super::problems::separatrix_reference();
         let (y, e, s) = run(tape(false)?, SEP_M0, SEP_T, tol)?;
@@ -74,26 +131,19 @@ pub fn taylor_runs(heavy: TopCase, fast: TopCase) -> Result<Vec<ProblemRun>, Box
         let (y, e, s) = run(tape(true)?, B5_Y0, B5_T, tol)?;
         Ok(outcome(max_diff(&y, &B5_Y20), e, s))
     });
-    let top = |case: TopCase| -> Runner {
-        Box::new(move |tol| {
-            let (y, e, s) = run(SpinningTop, case.angles0(), case.t_end, tol)?;
-            Ok(outcome((y[1].cos() - case.u_end).abs(), e, s))
+    problem_runs(vec![(Problem::Separatrix, sep), (Problem::B5, b5)])
+}
+
+fn problem_runs(runs: Vec<(Problem, Runner)>) -> Vec<ProblemRun> {
+    let ladder = vec![1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
+    runs.into_iter()
+        .map(|(problem, run)| ProblemRun {
+            problem,
+            ladder: ladder.clone(),
+            quick: 1e-8,
+            run,
         })
-    };
-    Ok([
-        (Problem::Separatrix, sep),
-        (Problem::B5, b5),
-        (Problem::HeavyTop, top(heavy)),
-        (Problem::FastTop, top(fast)),
-    ]
-    .into_iter()
-    .map(|(problem, run)| ProblemRun {
-        problem,
-        ladder: ladder.clone(),
-        quick: 1e-8,
-        run,
-    })
-    .collect())
+        .collect()
 }
 
 fn outcome(error: f64, evals: u64, steps: u64) -> Outcome {

@@ -16,6 +16,8 @@
 //!   generic O(n) reference the benchmarks compare against.
 //! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
+//! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
+//!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
 mod aba;
 pub mod charts;
@@ -27,6 +29,7 @@ mod kinematics;
 mod model;
 pub mod recursive;
 mod scene;
+mod taylor;
 mod validate;
 
 pub use aba::MechanismAba;
@@ -40,3 +43,4 @@ pub use kinematics::BodyKinematics;
 pub use model::{MechanismModel, MechanismSystem};
 pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};
+pub use taylor::MechanismTaylorError;

@@ -5,7 +5,7 @@
 use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{Attribute, Ident, Meta, Token, parenthesized};
+use syn::{Attribute, Expr, Ident, Meta, Token, parenthesized};
 
 use crate::ctxt::Ctxt;
 use crate::keys;
@@ -121,4 +121,24 @@ pub fn parse_settings(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<KeyValue> {
         Meta::Path(_) => Ok(Punctuated::new()),
         _ => a.parse_args_with(Punctuated::<KeyValue, Token![,]>::parse_terminated),
     })
+}
+
+/// Takes the `taylor = K` items out of the `#[mechanism(...)]` settings (so the other keys
+/// are checked as before) and returns the first one's value; a repeat is an error on its key.
+/// The value is judged by `crate::taylor::check` once the links are known, since a user
+/// function among the efforts rules the key out.
+pub fn take_taylor(cx: &Ctxt, settings: &mut Parsed<KeyValue>) -> Option<Expr> {
+    let mut value: Option<Expr> = None;
+    settings.items.retain(|kv| {
+        if kv.key != keys::TAYLOR {
+            return true;
+        }
+        if value.is_some() {
+            cx.error_spanned_by(&kv.key, format!("duplicate key `{}`", kv.key));
+        } else {
+            value = Some(kv.value.clone());
+        }
+        false
+    });
+    value
 }

@@ -25,6 +25,7 @@ pub fn expand(
     arena: &mut Arena,
     parameters: &FieldParameters,
     checked: &CheckedMechanism,
+    taylor: Option<usize>,
 ) -> Option<TokenStream> {
     let p = Private;
     let route = match checked.route {
@@ -43,6 +44,8 @@ pub fn expand(
             return None;
         }
     };
+    let taylor =
+        taylor.map(|k| super::taylor::expand(cx, ident, arena, parameters, &derivation, k));
     let n = checked.coordinates.len();
     let s = 2 * n;
     let mut symbols = parameters.tokens();
@@ -133,6 +136,8 @@ pub fn expand(
         .chain((0..n).map(|k| quote!(__a[#k])));
     let charts = charts::expand_charts(cx, ident, arena, &low, checked, route)?;
     Some(quote! {
+        #taylor
+
         #[automatically_derived]
         impl #ident {
             #(#consts)*

@@ -11,6 +11,7 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
+mod taylor;
 mod tree;
 
 use precess_core::sym::Arena;
@@ -53,11 +54,13 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
             .filter(|a| a.path().is_ident(name))
             .collect()
     };
-    let settings = attr::parse_settings(cx, &attrs(keys::MECHANISM));
+    let mut settings = attr::parse_settings(cx, &attrs(keys::MECHANISM));
+    let taylor = attr::take_taylor(cx, &mut settings);
     let links = attr::parse_links(cx, &attrs(keys::LINK));
     let mut arena = Arena::new();
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let checked = check::check(&mut ck, &settings, &links)?;
-    expand::expand(cx, &input.ident, &mut arena, &parameters, &checked)
+    let taylor = taylor::check(cx, taylor.as_ref(), &checked);
+    expand::expand(cx, &input.ident, &mut arena, &parameters, &checked, taylor)
 }

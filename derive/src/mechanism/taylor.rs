@@ -1,0 +1,50 @@
+//! `taylor = K` on `#[mechanism(...)]`: the key's check (after the links, since an effort
+//! computed by a user function rules it out) and `impl TaylorSystem<2N>` for the first-order
+//! system `(q, q̇)' = (q̇, q̈)` of the route's q̈, emitted by the same function as the tops'
+//! and free bodies' (`crate::taylor`). Mechanisms without the key emit nothing here.
+
+use precess_core::mechanism::MechanismDerivation;
+use precess_core::sym::{Arena, ExprId};
+use proc_macro2::TokenStream;
+use syn::{Expr, Ident};
+
+use super::check::CheckedMechanism;
+use crate::ctxt::Ctxt;
+use crate::keys;
+use crate::symbols::FieldParameters;
+
+/// The order of `taylor = K`, or `None` without the key or after recording its error.
+pub fn check(cx: &Ctxt, value: Option<&Expr>, checked: &CheckedMechanism) -> Option<usize> {
+    let user = [(keys::EFFORT, !checked.efforts.is_empty())];
+    crate::taylor::check(cx, value?, &user)
+}
+
+/// `impl TaylorSystem<2n>` over the state `[q, q̇]`, reading the fields as the other
+/// methods do.
+pub fn expand(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &Arena,
+    parameters: &FieldParameters,
+    derivation: &MechanismDerivation,
+    order: usize,
+) -> TokenStream {
+    let c = &derivation.coordinates;
+    let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
+    let rhs: Vec<ExprId> = c
+        .rates
+        .iter()
+        .chain(&derivation.accelerations)
+        .copied()
+        .collect();
+    crate::taylor::expand(
+        cx,
+        ident,
+        arena,
+        &parameters.tokens(),
+        &state,
+        &rhs,
+        TokenStream::new(),
+        order,
+    )
+}

@@ -1,0 +1,254 @@
+//! A right-hand side of `taylor_system!` as written (a Rust expression) into the symbolic
+//! engine: numbers exactly, state variables, the struct's fields and the time as symbols,
+//! `+ − × ÷` and unary `−` (the time `t` is recognised, and refused in `mod.rs`), and the functions the Taylor recurrences know (`sin`, `cos`,
+//! `sqrt`, `powi` with an integer literal), as methods (`x.sin()`) or calls (`sin(x)`).
+//! Anything else is an error spanned on it.
+
+use precess_core::sym::{Arena, ExprId};
+use syn::{BinOp, Expr, Ident, Lit, UnOp};
+
+use super::parse::TIME;
+use crate::ctxt::Ctxt;
+use crate::keys::did_you_mean;
+
+/// What a right-hand side may use, listed in the errors.
+const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`";
+/// The functions known, with their argument counts besides the receiver.
+const FUNCTIONS: &[(&str, usize)] = &[("sin", 0), ("cos", 0), ("sqrt", 0), ("powi", 1)];
+
+/// The names a right-hand side reads and the symbols they stand for.
+pub struct Names {
+    /// The state variables, in state order.
+    pub state: Vec<(Ident, ExprId)>,
+    /// The struct's f64 fields.
+    pub fields: Vec<(Ident, ExprId)>,
+    /// The time and where it was first read, once a right-hand side reads `t`.
+    pub time: Option<(ExprId, Ident)>,
+}
+
+/// Lowers right-hand sides into one arena, recording every error.
+pub struct Lowerer<'a> {
+    /// Where errors go.
+    pub cx: &'a Ctxt,
+    /// The arena the symbols live in.
+    pub arena: &'a mut Arena,
+    /// The names known.
+    pub names: Names,
+}
+
+impl Lowerer<'_> {
+    /// `e` as an expression of the engine, or `None` after recording why not.
+    pub fn expr(&mut self, e: &Expr) -> Option<ExprId> {
+        match e {
+            Expr::Lit(l) => self.literal(&l.lit),
+            Expr::Paren(p) => self.expr(&p.expr),
+            Expr::Group(g) => self.expr(&g.expr),
+            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => {
+                let v = self.expr(&u.expr)?;
+                Some(self.arena.neg(v))
+            }
+            Expr::Binary(b) => {
+                let (l, r) = (self.expr(&b.left), self.expr(&b.right));
+                let (l, r) = (l?, r?);
+                match b.op {
+                    BinOp::Add(_) => Some(self.arena.add(l, r)),
+                    BinOp::Sub(_) => Some(self.arena.sub(l, r)),
+                    BinOp::Mul(_) => Some(self.arena.mul(l, r)),
+                    BinOp::Div(_) => {
+                        let v = self.arena_div(l, r);
+                        self.checked(v, &b.right)
+                    }
+                    _ => {
+                        self.cx
+                            .error_spanned_by(b.op, format!("unsupported operator: {ALLOWED}"));
+                        None
+                    }
+                }
+            }
+            Expr::Path(p) => match p.path.get_ident() {
+                Some(ident) => self.name(ident),
+                None => {
+                    self.cx
+                        .error_spanned_by(e, format!("unsupported name: {ALLOWED}"));
+                    None
+                }
+            },
+            Expr::MethodCall(m) => {
+                let args: Vec<&Expr> = m.args.iter().collect();
+                self.function(&m.method, &m.receiver, &args, e)
+            }
+            Expr::Call(c) => {
+                let Expr::Path(p) = &*c.func else {
+                    self.cx
+                        .error_spanned_by(&c.func, format!("unsupported call: {ALLOWED}"));
+                    return None;
+                };
+                let Some(function) = p.path.get_ident() else {
+                    self.cx
+                        .error_spanned_by(&c.func, format!("unsupported call: {ALLOWED}"));
+                    return None;
+                };
+                let args: Vec<&Expr> = c.args.iter().collect();
+                match args.split_first() {
+                    Some((receiver, rest)) => self.function(function, receiver, rest, e),
+                    None => self.function_error(function, 0, e),
+                }
+            }
+            _ => {
+                self.cx
+                    .error_spanned_by(e, format!("unsupported expression: {ALLOWED}"));
+                None
+            }
+        }
+    }
+
+    fn arena_div(&mut self, l: ExprId, r: ExprId) -> Result<ExprId, String> {
+        self.arena
+            .div(l, r)
+            .map_err(|_| "division by a value that is identically zero".to_owned())
+    }
+
+    fn checked(&self, value: Result<ExprId, String>, at: &Expr) -> Option<ExprId> {
+        value
+            .map_err(|message| self.cx.error_spanned_by(at, message))
+            .ok()
+    }
+
+    /// `function(receiver, args…)`, written as a method or a call (`whole`, for spans).
+    fn function(
+        &mut self,
+        function: &Ident,
+        receiver: &Expr,
+        args: &[&Expr],
+        whole: &Expr,
+    ) -> Option<ExprId> {
+        let name = function.to_string();
+        let Some(&(_, count)) = FUNCTIONS.iter().find(|(f, _)| *f == name) else {
+            self.cx.error_spanned_by(
+                function,
+                format!(
+                    "unsupported function `{name}`: the Taylor recurrences know `sin`, `cos`, `sqrt` and `powi` (an integer power){}",
+                    did_you_mean(&name, FUNCTIONS.iter().map(|(f, _)| *f))
+                ),
+            );
+            return None;
+        };
+        if args.len() != count {
+            return self.function_error(function, args.len() + 1, whole);
+        }
+        let x = self.expr(receiver)?;
+        match (name.as_str(), args.first()) {
+            ("sin", _) => Some(self.arena.sin(x)),
+            ("cos", _) => Some(self.arena.cos(x)),
+            ("sqrt", _) => {
+                let v = self.arena.sqrt(x).map_err(|e| e.to_string());
+                self.checked(v, receiver)
+            }
+            (_, Some(exponent)) => {
+                let Some(n) = integer(exponent) else {
+                    self.cx.error_spanned_by(
+                        exponent,
+                        "`powi` expects an integer literal exponent (`x.powi(3)`, `x.powi(-2)`)",
+                    );
+                    return None;
+                };
+                let v = self.arena.powi(x, n).map_err(|e| e.to_string());
+                self.checked(v, whole)
+            }
+            _ => self.function_error(function, args.len() + 1, whole),
+        }
+    }
+
+    fn function_error(&self, function: &Ident, given: usize, whole: &Expr) -> Option<ExprId> {
+        let expected = FUNCTIONS
+            .iter()
+            .find(|(f, _)| function == f)
+            .map_or(1, |(_, n)| n + 1);
+        self.cx.error_spanned_by(
+            whole,
+            format!("`{function}` takes {expected} argument(s) counting the receiver, not {given}"),
+        );
+        None
+    }
+
+    /// A state variable, a field, or the time.
+    fn name(&mut self, ident: &Ident) -> Option<ExprId> {
+        let names = &self.names;
+        if let Some((_, e)) = names
+            .state
+            .iter()
+            .chain(&names.fields)
+            .find(|(n, _)| n == ident)
+        {
+            return Some(*e);
+        }
+        if ident == TIME {
+            let (t, _) = self
+                .names
+                .time
+                .get_or_insert_with(|| (self.arena.time(), ident.clone()));
+            return Some(*t);
+        }
+        let known: Vec<String> = names
+            .state
+            .iter()
+            .chain(&names.fields)
+            .map(|(n, _)| n.to_string())
+            .collect();
+        self.cx.error_spanned_by(
+            ident,
+            format!(
+                "unknown name `{ident}`: a right-hand side reads the state variables and the struct's f64 fields{}",
+                did_you_mean(&ident.to_string(), known.iter().map(String::as_str))
+            ),
+        );
+        None
+    }
+
+    /// A number literal, exactly (`0.51` is 51/100), finite in f64.
+    fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
+        let (digits, suffix) = match lit {
+            Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
+            Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
+            _ => {
+                self.cx
+                    .error_spanned_by(lit, format!("expected a number: {ALLOWED}"));
+                return None;
+            }
+        };
+        if !suffix.is_empty() && suffix != "f64" {
+            self.cx.error_spanned_by(
+                lit,
+                format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
+            );
+            return None;
+        }
+        let finite = |a: &Arena, e| a.as_rational(e).is_some_and(|r| r.to_f64().is_finite());
+        match self.arena.number(&digits) {
+            Ok(e) if finite(self.arena, e) => Some(e),
+            _ => {
+                self.cx.error_spanned_by(
+                    lit,
+                    "literal out of range: a number has at most 38 significant digits and lies within f64's range (about 4.9e-324 to 1.8e308)",
+                );
+                None
+            }
+        }
+    }
+}
+
+/// An integer literal, possibly negated or parenthesised.
+fn integer(e: &Expr) -> Option<i64> {
+    match e {
+        Expr::Lit(l) => match &l.lit {
+            Lit::Int(i) if i.suffix().is_empty() || i.suffix() == "i32" => {
+                i.base10_parse::<i64>().ok()
+            }
+            _ => None,
+        },
+        Expr::Paren(p) => integer(&p.expr),
+        Expr::Group(g) => integer(&g.expr),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => integer(&u.expr)?.checked_neg(),
+        _ => None,
+    }
+}

@@ -1,0 +1,141 @@
+//! `taylor_system!`: an ODE `y' = f(t, y)` the user writes as equations, turned into the
+//! symbolic engine's expressions while the macro expands, and emitted as the struct with
+//! `impl System<N>` (the right-hand side as straight-line code) and `impl TaylorSystem<N>`
+//! (the recurrences, by the same function as `taylor = K` on the scenes). Phases as in the
+//! derives: `parse` (syntax), `check` (names and counts), `lower` (expressions), then here.
+
+mod check;
+mod lower;
+mod parse;
+
+use precess_core::sym::{Arena, ExprId};
+use proc_macro2::TokenStream;
+use quote::{ToTokens, quote};
+use syn::LitStr;
+
+use crate::ctxt::Ctxt;
+use crate::private::Private;
+use crate::symbols::{Lowering, SymbolTokens};
+use check::CheckedSystem;
+use lower::{Lowerer, Names};
+use parse::SystemInput;
+
+/// The whole macro: the struct and its impls, or the struct and every error.
+pub fn expand(input: TokenStream) -> TokenStream {
+    let input: SystemInput = match syn::parse2(input) {
+        Ok(input) => input,
+        Err(e) => return e.to_compile_error(),
+    };
+    let cx = Ctxt::new();
+    let impls = check::check(&cx, &input).and_then(|c| impls(&cx, &input, &c));
+    let item = input.item.to_token_stream();
+    match cx.check() {
+        Ok(()) => match impls {
+            Some(impls) => quote!(#item #impls),
+            None => {
+                let e = syn::Error::new_spanned(
+                    &input.item.ident,
+                    "internal error of `taylor_system!`: it stopped without an error; please report this",
+                );
+                let e = e.to_compile_error();
+                quote!(#item #e)
+            }
+        },
+        // The struct is still emitted, so its uses elsewhere raise no errors of their own.
+        Err(errors) => {
+            let errors = errors.iter().map(syn::Error::to_compile_error);
+            quote!(#item #(#errors)*)
+        }
+    }
+}
+
+/// `impl System<N>`, `impl TaylorSystem<N>` and the names of the state, or `None` after
+/// recording why a right-hand side could not be read.
+fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<TokenStream> {
+    let p = Private;
+    let ident = &input.item.ident;
+    let mut arena = Arena::new();
+    let state: Vec<ExprId> = checked
+        .state
+        .iter()
+        .map(|s| arena.coordinate(&s.to_string()))
+        .collect();
+    let fields: Vec<ExprId> = checked
+        .fields
+        .iter()
+        .map(|f| arena.parameter(&f.to_string()))
+        .collect();
+    let mut lowerer = Lowerer {
+        cx,
+        arena: &mut arena,
+        names: Names {
+            state: checked
+                .state
+                .iter()
+                .map(|&s| s.clone())
+                .zip(state.clone())
+                .collect(),
+            fields: checked
+                .fields
+                .iter()
+                .map(|&f| f.clone())
+                .zip(fields.clone())
+                .collect(),
+            time: None,
+        },
+    };
+    let rhs: Vec<Option<ExprId>> = checked.equations.iter().map(|e| lowerer.expr(e)).collect();
+    let rhs: Vec<ExprId> = rhs.into_iter().collect::<Option<_>>()?;
+    // The scenes' emitter takes autonomous systems only (its tape has no time series).
+    if let Some((_, at)) = &lowerer.names.time {
+        cx.error_spanned_by(
+            at,
+            "the Taylor recurrences of `taylor_system!` do not read the time yet: make the system autonomous with a state variable for it (`state [.., tau]; d/dt tau = 1.0;`)",
+        );
+        return None;
+    }
+    let mut symbols = SymbolTokens::default();
+    for (field, &e) in checked.fields.iter().zip(&fields) {
+        symbols.insert_expr(&arena, e, quote!(self.#field));
+    }
+    let n = state.len();
+    let reads: Vec<(ExprId, TokenStream)> = (0..n)
+        .zip(&state)
+        .map(|(i, &s)| (s, quote!(y[#i])))
+        .collect();
+    let emitted = Lowering::new(cx, ident, symbols.clone()).lower_reading(&arena, &rhs, &reads);
+    let (lets, outputs) = (emitted.lets, emitted.outputs);
+    let taylor = crate::taylor::expand(
+        cx,
+        ident,
+        &arena,
+        &symbols,
+        &state,
+        &rhs,
+        TokenStream::new(),
+        checked.order,
+    );
+    let names = checked
+        .state
+        .iter()
+        .map(|s| LitStr::new(&s.to_string(), s.span()));
+    Some(quote! {
+        #[automatically_derived]
+        impl #ident {
+            /// The state variables, in the order of the state vector.
+            pub const STATE: [&'static str; #n] = [#(#names),*];
+        }
+
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::System<#n> for #ident {
+            #[inline]
+            fn rhs(&self, t: f64, y: &[f64; #n], dydt: &mut [f64; #n]) {
+                #lets
+                *dydt = [#(#outputs),*];
+            }
+        }
+
+        #taylor
+    })
+}
