@@ -346,9 +346,32 @@ pub fn recursive_accelerations(
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_a);
         let a_prime = carried.add(arena, &bias_accel[i]);
         let a_prime = binder.pair(arena, &a_prime);
-        let ua = spatial::dot_pair(arena, &u_force[i], &a_prime);
-        let num = arena.sub(u_scalar[i], ua);
-        let x = arena.mul(num, inv_pivot[i]);
+        let x = match spatial::unit_axis(arena, &link.axis) {
+            // S = e_k (of the angular or the linear part): U's entry there is D itself, so
+            // (u − Uᵀa′)/D = (u − Σ_{other} U a′)/D − a′_k, and the bracket is the new
+            // acceleration's k-th entry as it stands (a_k = a′_k + q̈).
+            Some(k) => {
+                let mut u_rest = u_force[i];
+                let mut a_k = a_prime.ang[k];
+                match link.motion {
+                    Motion::Turn => u_rest.ang[k] = arena.zero(),
+                    Motion::Slide => {
+                        u_rest.lin[k] = arena.zero();
+                        a_k = a_prime.lin[k];
+                    }
+                }
+                let ua = spatial::dot_pair(arena, &u_rest, &a_prime);
+                let num = arena.sub(u_scalar[i], ua);
+                let y = arena.mul(num, inv_pivot[i]);
+                let y = binder.bind(arena, y);
+                arena.sub(y, a_k)
+            }
+            None => {
+                let ua = spatial::dot_pair(arena, &u_force[i], &a_prime);
+                let num = arena.sub(u_scalar[i], ua);
+                arena.mul(num, inv_pivot[i])
+            }
+        };
         let x = binder.bind(arena, x);
         qdd[link.coordinate] = x;
         let sx = subspace(arena, link, x);

@@ -326,6 +326,16 @@ pub(crate) fn axis_rotation(a: &mut Arena, k: &V3, s: ExprId, c: ExprId) -> Mat3
     r
 }
 
+/// k if `axis` is exactly the k-th coordinate axis e_k.
+pub(crate) fn unit_axis(a: &Arena, axis: &V3) -> Option<usize> {
+    let (zero, one) = (a.zero(), a.one());
+    (0..3).find(|&k| {
+        axis.iter()
+            .enumerate()
+            .all(|(m, &e)| e == if m == k { one } else { zero })
+    })
+}
+
 /// A joint's rotation (child → parent axes) and, when its axis is a coordinate axis, the
 /// bound scalars of the cheap form of `r m rᵀ` ([`AxisTurn`]).
 #[derive(Clone, Copy, Debug)]
@@ -357,13 +367,7 @@ impl Turn {
     /// The rotation by q (sine s, cosine c) about the unit axis `axis`.
     pub(crate) fn new(a: &mut Arena, binder: &mut Binder, axis: &V3, s: ExprId, c: ExprId) -> Turn {
         let matrix = axis_rotation(a, axis, s, c);
-        let (zero, one) = (a.zero(), a.one());
-        let along = (0..3).find(|&k| {
-            axis.iter()
-                .enumerate()
-                .all(|(m, &e)| e == if m == k { one } else { zero })
-        });
-        let about = along.map(|k| {
+        let about = unit_axis(a, axis).map(|k| {
             let ss = a.mul(s, s);
             let ss = binder.bind(a, ss);
             let sc = a.mul(s, c);
