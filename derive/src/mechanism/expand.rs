@@ -3,6 +3,8 @@
 //! momenta), each method one straight-line block, quoted into `impl MechanismDynamics<N>`,
 //! the ODE `System<2N>` on the struct, and a const per coordinate.
 
+use std::collections::HashSet;
+
 use precess_core::codegen::Emitted;
 use precess_core::mechanism::{MechanismDerivation, Route};
 use precess_core::sym::{Arena, ExprId, SymbolId};
@@ -182,6 +184,24 @@ fn local_of(effort: &UserEffort) -> Ident {
     format_ident!("__effort_{}", effort.index)
 }
 
+/// The symbols `outputs` read, looking through abbreviations to what they stand for (the
+/// recursive route binds its intermediates, so a user effort may appear only there).
+fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
+    let mut read: HashSet<SymbolId> = HashSet::new();
+    let mut pending: Vec<ExprId> = outputs.to_vec();
+    while let Some(e) = pending.pop() {
+        for s in arena.free_symbols(e) {
+            if !read.insert(s) {
+                continue;
+            }
+            if let Some(d) = arena.definition(s) {
+                pending.push(d);
+            }
+        }
+    }
+    read
+}
+
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
 struct Method<'a> {
     low: &'a Lowering<'a>,
@@ -204,10 +224,7 @@ impl Method<'_> {
             reads.push((v, quote!(qdot[#k])));
         }
         reads.push((self.derivation.time, quote!(t)));
-        let read: Vec<SymbolId> = outputs
-            .iter()
-            .flat_map(|&o| arena.free_symbols(o))
-            .collect();
+        let read = symbols_read(arena, outputs);
         // A user function is called only by the methods whose result reads its value.
         let calls = self.efforts.iter().filter_map(|e| {
             let s = arena.as_symbol(e.symbol)?;
