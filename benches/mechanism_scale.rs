@@ -146,7 +146,13 @@ fn print_fastest() {
         let Some(mut aba) = numeric_aba(chain, n) else {
             continue;
         };
-        let aba_ns = fastest_ns(|| black_box(aba.run()), 2000, 50);
+        let aba_ns = fastest_ns(
+            || {
+                black_box(aba.run());
+            },
+            2000,
+            50,
+        );
         eprintln!(
             "  {kind:8} {n:2}  {generated_ns:8.1}  {aba_ns:8.1}  {:5.1}",
             aba_ns / generated_ns
