@@ -7,13 +7,17 @@
 //! - `aba`: the generic numeric articulated-body algorithm ([`MechanismAba`]) on the same
 //!   chain with the same parameters.
 //!
-//! The operation count of each lowered program is printed first.
+//! The operation count of each lowered program is printed first. With `PRECESS_FASTEST=1` the
+//! benchmark also prints, for `generated` and `aba`, the fastest of many short batches of
+//! calls: a figure a loaded machine inflates far less than criterion's medians (a batch that
+//! ran without being preempted), for comparing the two in one run.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use precess_core::mechanism::MechanismAba;
 use precess_core::mechanism::recursive::chains::{ChainKind, generated_source, lowered_chain};
 use precess_core::sym::Arena;
 use std::hint::black_box;
+use std::time::Instant;
 
 #[allow(clippy::all, clippy::pedantic, unused_parens)]
 mod generated {
@@ -87,7 +91,110 @@ fn bench_derive(c: &mut Criterion) {
     group.finish();
 }
 
+/// The fastest of `batches` batches of `calls` calls of `f`, in ns per call.
+fn fastest_ns(mut f: impl FnMut(), batches: usize, calls: usize) -> f64 {
+    let mut best = f64::INFINITY;
+    for _ in 0..batches {
+        let start = Instant::now();
+        for _ in 0..calls {
+            f();
+        }
+        best = best.min(start.elapsed().as_nanos() as f64 / calls as f64);
+    }
+    best
+}
+
+/// The fastest-batch figure of the generated q̈ and of the numeric ABA on each chain.
+fn print_fastest() {
+    if std::env::var_os("PRECESS_FASTEST").is_none() {
+        return;
+    }
+    let mut generated_ns = Vec::new();
+    macro_rules! time {
+        ($kind:literal, $n:literal, $module:ident) => {{
+            let p = generated::$module::PARAMETERS.map(planar_value);
+            let (q, qd) = state();
+            let ns = fastest_ns(
+                || {
+                    black_box(generated::$module::accelerations(
+                        black_box(&q),
+                        black_box(&qd),
+                        black_box(&p),
+                    ));
+                },
+                2000,
+                50,
+            );
+            generated_ns.push(($kind, $n, ns));
+        }};
+    }
+    time!("planar", 2, planar_2);
+    time!("planar", 5, planar_5);
+    time!("planar", 10, planar_10);
+    time!("planar", 25, planar_25);
+    time!("spatial", 2, spatial_2);
+    time!("spatial", 5, spatial_5);
+    time!("spatial", 10, spatial_10);
+    time!("spatial", 25, spatial_25);
+    eprintln!("fastest batch (ns per q̈): chain, n, generated, numeric ABA, ratio");
+    for (kind, n, generated_ns) in generated_ns {
+        let chain = if kind == "planar" {
+            ChainKind::Planar
+        } else {
+            ChainKind::Spatial
+        };
+        let Some(mut aba) = numeric_aba(chain, n) else {
+            continue;
+        };
+        let aba_ns = fastest_ns(
+            || {
+                black_box(aba.run());
+            },
+            2000,
+            50,
+        );
+        eprintln!(
+            "  {kind:8} {n:2}  {generated_ns:8.1}  {aba_ns:8.1}  {:5.1}",
+            aba_ns / generated_ns
+        );
+    }
+}
+
+/// The numeric ABA of a chain at the benchmark state, ready to run.
+struct NumericChain {
+    aba: MechanismAba,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    qdd: Vec<f64>,
+}
+
+impl NumericChain {
+    fn run(&mut self) -> f64 {
+        self.aba
+            .accelerations(black_box(&self.q), black_box(&self.qd), &mut self.qdd)
+            .map_or(f64::NAN, |_| self.qdd[0])
+    }
+}
+
+fn numeric_aba(kind: ChainKind, n: usize) -> Option<NumericChain> {
+    let mut arena = Arena::new();
+    let scene = kind.scene(&mut arena, n);
+    let mut env = vec![0.0; arena.symbol_count()];
+    for (s, symbol) in arena.symbols() {
+        env[s.index()] = planar_value(&symbol.name);
+    }
+    let aba = MechanismAba::new(&mut arena, &scene, &env).ok()?;
+    let dof = aba.dof();
+    Some(NumericChain {
+        aba,
+        q: (0..dof).map(|i| 0.3 + i as f64 / 7.0).collect(),
+        qd: (0..dof).map(|i| 0.5 - i as f64 / 11.0).collect(),
+        qdd: vec![0.0; dof],
+    })
+}
+
 fn bench_generated(c: &mut Criterion) {
+    print_fastest();
     let mut group = c.benchmark_group("mechanism_scale/generated");
     macro_rules! run {
         ($kind:literal, $n:literal, $module:ident) => {{
@@ -122,25 +229,10 @@ fn bench_aba(c: &mut Criterion) {
     let mut group = c.benchmark_group("mechanism_scale/aba");
     for kind in [ChainKind::Planar, ChainKind::Spatial] {
         for n in SIZES {
-            let mut arena = Arena::new();
-            let scene = kind.scene(&mut arena, n);
-            let mut env = vec![0.0; arena.symbol_count()];
-            for (s, symbol) in arena.symbols() {
-                env[s.index()] = planar_value(&symbol.name);
-            }
-            let Ok(mut aba) = MechanismAba::new(&mut arena, &scene, &env) else {
+            let Some(mut chain) = numeric_aba(kind, n) else {
                 continue;
             };
-            let dof = aba.dof();
-            let q: Vec<f64> = (0..dof).map(|i| 0.3 + i as f64 / 7.0).collect();
-            let qd: Vec<f64> = (0..dof).map(|i| 0.5 - i as f64 / 11.0).collect();
-            let mut qdd = vec![0.0; dof];
-            group.bench_function(BenchmarkId::new(kind.name(), n), |b| {
-                b.iter(|| {
-                    aba.accelerations(black_box(&q), black_box(&qd), &mut qdd)
-                        .map(|_| qdd[0])
-                })
-            });
+            group.bench_function(BenchmarkId::new(kind.name(), n), |b| b.iter(|| chain.run()));
         }
     }
     group.finish();

@@ -156,6 +156,16 @@ impl MechanismScene {
         let time = arena.time();
         let kin = self.kinematics(arena, &order, &coords)?;
         let h = half(arena);
+        // The expanded T of a 3D chain grows far faster than the chain (a 10-link one did
+        // not expand in minutes); past MAX_LAGRANGIAN coordinates only the energy reads T
+        // and V, and their unexpanded, hash-consed forms lower to the same values.
+        let expand = |arena: &mut Arena, e: ExprId| {
+            if coords.len() <= MAX_LAGRANGIAN {
+                arena.expand(e)
+            } else {
+                e
+            }
+        };
         let mut t_terms = Vec::new();
         let mut v_terms = Vec::new();
         for (body, k) in self.bodies.iter().zip(&kin) {
@@ -165,12 +175,12 @@ impl MechanismScene {
             let translational = arena.product(&[h, body.mass, v2]);
             let rotational = arena.mul(h, w2);
             let t = arena.add(translational, rotational);
-            t_terms.push(arena.expand(t));
+            t_terms.push(expand(arena, t));
             if let Some(g) = self.gravity {
                 let height = dot(arena, &g, &k.center);
                 let v = arena.mul(body.mass, height);
                 let v = arena.neg(v);
-                v_terms.push(arena.expand(v));
+                v_terms.push(expand(arena, v));
             }
         }
         let mut i = 0;
@@ -179,7 +189,7 @@ impl MechanismScene {
                 if let Some(spring) = load.spring {
                     let stretch = arena.sub(coords.q[i], spring.rest);
                     let v = arena.product(&[h, spring.stiffness, stretch, stretch]);
-                    v_terms.push(arena.expand(v));
+                    v_terms.push(expand(arena, v));
                 }
                 i += 1;
             }

@@ -3,6 +3,8 @@
 //! momenta), each method one straight-line block, quoted into `impl MechanismDynamics<N>`,
 //! the ODE `System<2N>` on the struct, and a const per coordinate.
 
+use std::collections::HashSet;
+
 use precess_core::codegen::Emitted;
 use precess_core::mechanism::{MechanismDerivation, Route};
 use precess_core::sym::{Arena, ExprId, SymbolId};
@@ -201,8 +203,8 @@ fn local_of(effort: &UserEffort) -> Ident {
 
 /// The symbols `outputs` read, looking through bound intermediates (the recursive route's
 /// abbreviations, leaves to `free_symbols`) to their definitions, as the lowering does.
-fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> std::collections::HashSet<SymbolId> {
-    let mut read = std::collections::HashSet::new();
+fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
+    let mut read = HashSet::new();
     let mut pending: Vec<ExprId> = outputs.to_vec();
     while let Some(e) = pending.pop() {
         for s in arena.free_symbols(e) {

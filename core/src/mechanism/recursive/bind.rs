@@ -26,6 +26,14 @@ impl Binder {
         if matches!(arena.node(e), Node::Const(_) | Node::Sym(_)) {
             return e;
         }
+        // A negative expression is bound as −(its magnitude): the sign then stays visible to
+        // the canonical constructors, so x + (−x) cancels and a sum subtracts the atom
+        // instead of the code negating it first.
+        if is_negative(arena, e) {
+            let magnitude = arena.neg(e);
+            let s = self.bind(arena, magnitude);
+            return arena.neg(s);
+        }
         if let Some(&s) = self.bound.get(&e) {
             return s;
         }
@@ -58,5 +66,19 @@ impl Binder {
             }
         }
         out
+    }
+}
+
+/// Whether `e` reads as negative: a product with a negative rational coefficient, or a sum
+/// whose every term does.
+fn is_negative(arena: &Arena, e: ExprId) -> bool {
+    match arena.node(e) {
+        Node::Mul(factors) => {
+            matches!(factors.first().map(|&f| arena.node(f)), Some(Node::Const(r)) if r.is_negative())
+        }
+        Node::Add(terms) => terms
+            .iter()
+            .all(|&t| matches!(arena.node(t), Node::Mul(_)) && is_negative(arena, t)),
+        _ => false,
     }
 }

@@ -31,7 +31,7 @@ use crate::sym::{Arena, ExprId};
 
 use bind::Binder;
 pub(crate) use links::{Link, Motion, flatten};
-use spatial::{Inertia, Pair, V3};
+use spatial::{Inertia, Pair, Turn, V3};
 
 /// The accelerations of the recursive route and the pivots that must be positive.
 #[derive(Clone, Debug, PartialEq)]
@@ -46,16 +46,16 @@ pub struct RecursiveForm {
 /// The joint's kinematics for one link at coordinate q: its rotation (child → parent, `None`
 /// for a slide) and its origin in the parent frame.
 struct Placement {
-    rotation: Option<Mat3>,
+    rotation: Option<Turn>,
     origin: V3,
 }
 
-fn placement(arena: &mut Arena, link: &Link, q: ExprId) -> Placement {
+fn placement(arena: &mut Arena, binder: &mut Binder, link: &Link, q: ExprId) -> Placement {
     match link.motion {
         Motion::Turn => {
             let (s, c) = (arena.sin(q), arena.cos(q));
             Placement {
-                rotation: Some(spatial::axis_rotation(arena, &link.axis, s, c)),
+                rotation: Some(Turn::new(arena, binder, &link.axis, s, c)),
                 origin: link.at,
             }
         }
@@ -109,6 +109,35 @@ fn body_inertia(arena: &mut Arena, scene: &MechanismScene, b: usize) -> Inertia 
         }
     }
     Inertia::rigid(arena, m, &h, &io)
+}
+
+/// The velocity-product force v ×* (I v) of body `b` moving at v (in its frame), written
+/// about its centre of mass c: with the centre's velocity v_c = v + ω × c,
+/// f = m ω × v_c and n = ω × I_G ω + c × f. This equals the spatial cross product with the
+/// inertia about the origin (v × m v_c = −(ω × c) × m v_c and the Jacobi identity), at
+/// about half its operations: the momenta about the origin are never formed.
+fn velocity_product_force(
+    arena: &mut Arena,
+    binder: &mut Binder,
+    scene: &MechanismScene,
+    b: usize,
+    v: &Pair,
+) -> Pair {
+    let body = &scene.bodies[b];
+    let w = v.ang;
+    let wc = mat3::cross(arena, &w, &body.center);
+    let vc = spatial::add3(arena, &v.lin, &wc);
+    let vc = binder.bind3(arena, &vc);
+    let wvc = mat3::cross(arena, &w, &vc);
+    let wvc = binder.bind3(arena, &wvc);
+    let f = spatial::scale3(arena, body.mass, &wvc);
+    let iw = mat3::mat_vec(arena, &body.inertia, &w);
+    let gyro = mat3::cross(arena, &w, &iw);
+    let cf = mat3::cross(arena, &body.center, &f);
+    Pair {
+        ang: spatial::add3(arena, &gyro, &cf),
+        lin: f,
+    }
 }
 
 /// q̈ of `scene` by the articulated-body algorithm, with `joint_forces[i]` the generalised
@@ -189,7 +218,7 @@ pub fn recursive_accelerations(
     for link in &links {
         let q = coords.q[link.coordinate];
         let qd = coords.rates[link.coordinate];
-        let place = placement(arena, link, q);
+        let place = placement(arena, &mut binder, link, q);
         let parent_v = match link.parent {
             Some(p) => velocity[p],
             None => Pair::zero(arena),
@@ -203,7 +232,7 @@ pub fn recursive_accelerations(
         let c = binder.pair(arena, &c);
         if needs_space {
             let parent_r = link.parent.and_then(|p| to_ground[p]);
-            let r = match (parent_r, place.rotation) {
+            let r = match (parent_r, place.rotation.map(|t| t.matrix)) {
                 (Some(pr), Some(r)) => Some(mat3::mat_mul(arena, &pr, &r)),
                 (pr, r) => pr.or(r),
             };
@@ -212,8 +241,7 @@ pub fn recursive_accelerations(
         let (inertia, p) = match link.body {
             Some(b) => {
                 let inertia = body_inertia(arena, scene, b);
-                let iv = inertia.apply(arena, &v);
-                let mut p = spatial::cross_force(arena, &v, &iv);
+                let mut p = velocity_product_force(arena, &mut binder, scene, b, &v);
                 let body = &scene.bodies[b];
                 if let Some(t) = body.body_torque {
                     p.ang = spatial::sub3(arena, &p.ang, &t);
@@ -277,9 +305,19 @@ pub fn recursive_accelerations(
             let pa_child = pa.add(arena, &ic).add(arena, &wu);
             let pa_child = binder.pair(arena, &pa_child);
             let place = &places[i];
-            let i_up = reduced.seen_from_parent(arena, place.rotation.as_ref(), &place.origin);
-            let p_up =
-                spatial::force_to_parent(arena, place.rotation.as_ref(), &place.origin, &pa_child);
+            let i_up = reduced.seen_from_parent(
+                arena,
+                &mut binder,
+                place.rotation.as_ref(),
+                &place.origin,
+            );
+            let p_up = spatial::force_to_parent(
+                arena,
+                &mut binder,
+                place.rotation.as_ref(),
+                &place.origin,
+                &pa_child,
+            );
             art[parent] = art[parent].add(arena, &i_up);
             bias_force[parent] = bias_force[parent].add(arena, &p_up);
         }
@@ -308,9 +346,32 @@ pub fn recursive_accelerations(
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_a);
         let a_prime = carried.add(arena, &bias_accel[i]);
         let a_prime = binder.pair(arena, &a_prime);
-        let ua = spatial::dot_pair(arena, &u_force[i], &a_prime);
-        let num = arena.sub(u_scalar[i], ua);
-        let x = arena.mul(num, inv_pivot[i]);
+        let x = match spatial::unit_axis(arena, &link.axis) {
+            // S = e_k (of the angular or the linear part): U's entry there is D itself, so
+            // (u − Uᵀa′)/D = (u − Σ_{other} U a′)/D − a′_k, and the bracket is the new
+            // acceleration's k-th entry as it stands (a_k = a′_k + q̈).
+            Some(k) => {
+                let mut u_rest = u_force[i];
+                let mut a_k = a_prime.ang[k];
+                match link.motion {
+                    Motion::Turn => u_rest.ang[k] = arena.zero(),
+                    Motion::Slide => {
+                        u_rest.lin[k] = arena.zero();
+                        a_k = a_prime.lin[k];
+                    }
+                }
+                let ua = spatial::dot_pair(arena, &u_rest, &a_prime);
+                let num = arena.sub(u_scalar[i], ua);
+                let y = arena.mul(num, inv_pivot[i]);
+                let y = binder.bind(arena, y);
+                arena.sub(y, a_k)
+            }
+            None => {
+                let ua = spatial::dot_pair(arena, &u_force[i], &a_prime);
+                let num = arena.sub(u_scalar[i], ua);
+                arena.mul(num, inv_pivot[i])
+            }
+        };
         let x = binder.bind(arena, x);
         qdd[link.coordinate] = x;
         let sx = subspace(arena, link, x);
