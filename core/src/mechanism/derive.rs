@@ -214,7 +214,7 @@ impl MechanismScene {
                 let partial = k.omega.map(|w| arena.diff(w, s));
                 let q = dot(arena, &tau, &partial);
                 let total = arena.add(*f, q);
-                *f = arena.expand(total);
+                *f = expand(arena, total);
             }
         }
         Ok((
@@ -330,7 +330,12 @@ impl MechanismScene {
             .map(|(&f, &r)| arena.mul(f, r))
             .collect();
         let power = arena.sum(&power_terms);
-        let power = arena.expand(power);
+        // Expanded only where the kinematics are (see `MechanismScene::kinematics`).
+        let power = if n <= MAX_LAGRANGIAN {
+            arena.expand(power)
+        } else {
+            power
+        };
         let mut cyclic_momenta = Vec::new();
         for i in 0..n {
             let (Some(qs), Some(rs)) = (

@@ -24,7 +24,10 @@ use crate::rigid::elementary;
 use crate::sym::mat3::{Mat3, mat_mul, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, SymError};
 
-/// The motion of one body, every entry expanded to the engine's canonical form.
+/// The motion of one body: every entry expanded to the engine's canonical form for
+/// mechanisms of at most [`super::MAX_LAGRANGIAN`] coordinates (the Lagrangian routes
+/// differentiate and compare them), hash-consed but unexpanded past it (see
+/// [`MechanismScene::kinematics`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct BodyKinematics {
     /// R_b, the body's axes to ground axes.
@@ -176,14 +179,16 @@ fn joint_motion(
     })
 }
 
-fn expand3(arena: &mut Arena, v: [ExprId; 3]) -> [ExprId; 3] {
-    v.map(|e| arena.expand(e))
-}
-
 impl MechanismScene {
     /// The kinematics of every body (indexed as [`MechanismScene::bodies`]), computed in the
     /// topological `order` that [`MechanismScene::validate`] returns, with the body's
     /// coordinates taken from `coords` in [`MechanismScene::coordinate_names`] order.
+    ///
+    /// Past [`super::MAX_LAGRANGIAN`] coordinates only the energy reads these (q̈ comes from
+    /// the recursive route), so they are left unexpanded: a body's expanded rotation holds
+    /// about twice the terms of its parent's, which made the derive of a 15-link 3D chain
+    /// take seconds and a 25-link one never finish, while the hash-consed forms grow with the
+    /// chain and lower, shared subexpressions and all, to the same values.
     ///
     /// # Errors
     /// [`MechanismError::Sym`] if an axis normalisation divides by an identically zero
@@ -195,6 +200,14 @@ impl MechanismScene {
         coords: &Coordinates,
     ) -> Result<Vec<BodyKinematics>, MechanismError> {
         let offsets = self.coordinate_offsets();
+        let expanded = coords.q.len() <= super::MAX_LAGRANGIAN;
+        let expand3 = |arena: &mut Arena, v: [ExprId; 3]| {
+            if expanded {
+                v.map(|e| arena.expand(e))
+            } else {
+                v
+            }
+        };
         let mut out: Vec<Option<BodyKinematics>> = vec![None; self.bodies.len()];
         let z = arena.zero();
         let o = arena.one();
