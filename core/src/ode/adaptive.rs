@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 
 use super::config::AdaptiveConfig;
 use super::controller::PiController;
-use super::error::{OdeError, check_finite, check_span};
+use super::error::{OdeError, check_finite, check_span, check_stop};
 use super::pairs::{DenseCoeffs, EmbeddedPair, Stages};
 use super::system::{Stats, System, all_finite};
 
@@ -229,15 +229,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::StepSizeUnderflow`],
     /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`].
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        if !t_limit.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_limit });
-        }
-        if t_limit < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_limit,
-                t: self.t,
-            });
-        }
+        check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(());
         }
@@ -311,15 +303,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// As [`Self::step`]: a NaN or infinite `t_stop` is [`OdeError::NonFiniteTime`] before
     /// any work.
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
-        if t_stop < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t,
-            });
-        }
+        check_stop(self.t, t_stop)?;
         while self.t < t_stop {
             self.step(t_stop)?;
         }

@@ -1,7 +1,7 @@
 //! Named settings of the steppers, with documented defaults: the adaptive driver's and the
 //! one fixed-step configuration shared by RK4 and the Lie-group RKMK4.
 
-use super::error::OdeError;
+use super::error::{OdeError, check_stop};
 #[cfg(doc)]
 use super::pairs::ControllerGains;
 
@@ -187,12 +187,7 @@ impl FixedStepConfig {
     /// [`OdeError::NonFiniteTime`] for a NaN or infinite stop, [`OdeError::StopBeforeCurrent`],
     /// [`OdeError::TooManySteps`] beyond [`FixedStepConfig::max_steps`].
     pub(crate) fn plan(&self, t: f64, t_stop: f64) -> Result<Option<(u64, f64)>, OdeError> {
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
-        if t_stop < t {
-            return Err(OdeError::StopBeforeCurrent { stop: t_stop, t });
-        }
+        check_stop(t, t_stop)?;
         let span = t_stop - t;
         if span == 0.0 {
             return Ok(None);

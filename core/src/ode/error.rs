@@ -198,6 +198,20 @@ pub(crate) fn check_span(t_start: f64, t_end: f64) -> Result<(), OdeError> {
     Ok(())
 }
 
+/// Checks that a stepper at time `t` may be sent to `stop`: finite and not before `t`.
+///
+/// # Errors
+/// [`OdeError::NonFiniteTime`] or [`OdeError::StopBeforeCurrent`].
+pub(crate) fn check_stop(t: f64, stop: f64) -> Result<(), OdeError> {
+    if !stop.is_finite() {
+        return Err(OdeError::NonFiniteTime { t: stop });
+    }
+    if stop < t {
+        return Err(OdeError::StopBeforeCurrent { stop, t });
+    }
+    Ok(())
+}
+
 /// Checks that mass and principal moments are finite and positive.
 ///
 /// # Errors

@@ -35,7 +35,7 @@ pub use config::{AdaptiveConfig, FixedStepConfig};
 pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
-pub(crate) use error::{check_finite, check_inertia, check_span};
+pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub use events::{Direction, Event, EventHit};
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};

@@ -1,7 +1,7 @@
 //! A run of any [`Stepper`] to an end time, with samples, derived quantities, an observer of
 //! every accepted step, events and progress reports.
 
-use super::error::OdeError;
+use super::error::{OdeError, check_stop};
 use super::events::{Event, EventHit, EventSlot, locate_root};
 use super::sampling::{SampleClock, Sampling};
 use super::stepper::Stepper;
@@ -216,12 +216,7 @@ impl<'a, S: Stepper> Run<'a, S> {
     pub fn integrate(mut self) -> Result<Outcome<S::State>, OdeError> {
         let t0 = self.stepper.t();
         let t_end = self.t_end;
-        if !t_end.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_end });
-        }
-        if t_end < t0 {
-            return Err(OdeError::StopBeforeCurrent { stop: t_end, t: t0 });
-        }
+        check_stop(t0, t_end)?;
         let sampling = core::mem::replace(&mut self.sampling, Sampling::Steps);
         let mut samples = SampleClock::new(sampling, t0, t_end)?;
         let y0 = self.stepper.state().clone();

@@ -14,7 +14,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::angle_chart::AngleChart;
 use super::error::{ChartError, TopError};
 use super::rates::rates_from_omega;
-use crate::ode::{AdaptiveConfig, Dop853, OdeError, Stats, System};
+use crate::ode::{AdaptiveConfig, Dop853, Stats, System, check_stop};
 use crate::rigid::{AngleSequence, angles_from_rotation};
 
 /// When to switch charts, and the integrator settings.
@@ -166,20 +166,11 @@ impl<C: AngleChart> ChartedTop<C> {
     /// current time does nothing.
     ///
     /// # Errors
-    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_end`,
-    /// [`OdeError::StopBeforeCurrent`] for one before the current time, and the stepper's
+    /// [`OdeError::NonFiniteTime`](crate::ode::OdeError::NonFiniteTime) for a NaN or infinite `t_end`,
+    /// [`OdeError::StopBeforeCurrent`](crate::ode::OdeError::StopBeforeCurrent) for one before the current time, and the stepper's
     /// errors (in [`ChartError::Ode`]).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), ChartError> {
-        if !t_end.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_end }.into());
-        }
-        if t_end < self.ode.t() {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_end,
-                t: self.ode.t(),
-            }
-            .into());
-        }
+        check_stop(self.ode.t(), t_end)?;
         while self.ode.t() < t_end {
             self.ode.step(t_end)?;
             self.maybe_switch()?;

@@ -7,7 +7,7 @@ pub mod attr;
 pub mod check;
 pub mod expand;
 pub mod fallback;
-mod values;
+pub(crate) mod values;
 
 #[cfg(test)]
 mod tests;

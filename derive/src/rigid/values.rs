@@ -3,11 +3,12 @@
 //! the same context with the same wording.
 
 use precess_core::body::{About, Axis, Orientation, check_orientation};
-use precess_core::sym::{ExprId, SymError, parse_decimal};
+use precess_core::sym::{Arena, ExprId, SymError, parse_decimal};
 use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
 use super::check::Checker;
+use crate::ctxt::Ctxt;
 
 const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
 
@@ -269,47 +270,7 @@ impl Checker<'_> {
 
     /// A number literal, exactly (`0.03` is 3/100).
     fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
-        let (digits, suffix) = match lit {
-            Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
-            Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
-            _ => {
-                self.cx
-                    .error_spanned_by(lit, format!("expected a number: {VALUES}"));
-                return None;
-            }
-        };
-        // Values are f64: another suffix would silently change the type the user wrote.
-        if !suffix.is_empty() && suffix != "f64" {
-            self.cx.error_spanned_by(
-                lit,
-                format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
-            );
-            return None;
-        }
-        match parse_decimal(&digits) {
-            // Exact, but the generated code and the checks use the f64 it rounds to.
-            Ok(r) if !r.to_f64().is_finite() => {
-                self.cx.error_spanned_by(
-                    lit,
-                    format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"),
-                );
-                None
-            }
-            Ok(r) if r.to_f64() == 0.0 && !r.is_zero() => {
-                self.cx.error_spanned_by(lit, format!("`{digits}` underflows f64 to zero: the smallest positive f64 is about 4.9e-324"));
-                None
-            }
-            Ok(r) => Some(self.arena.constant(r)),
-            Err(SymError::LiteralOutOfRange { .. }) => {
-                self.cx.error_spanned_by(lit, "literal out of range: values have at most 38 significant digits and lie within f64's range (about 4.9e-324 to 1.8e308)");
-                None
-            }
-            Err(_) => {
-                self.cx
-                    .error_spanned_by(lit, format!("expected a decimal number: {VALUES}"));
-                None
-            }
-        }
+        number_literal(self.cx, self.arena, lit, VALUES)
     }
 
     /// A field name: it must exist and be an f64 (the body's parameters are f64).
@@ -362,5 +323,59 @@ fn path_ident(e: &Expr) -> Option<&Ident> {
     match e {
         Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
         _ => None,
+    }
+}
+
+/// A number literal, exactly (`0.03` is 3/100), finite and not flushed to zero in f64; a
+/// spanned error otherwise, ending with `allowed` (what the caller's values may be).
+pub(crate) fn number_literal(
+    cx: &Ctxt,
+    arena: &mut Arena,
+    lit: &Lit,
+    allowed: &str,
+) -> Option<ExprId> {
+    let (digits, suffix) = match lit {
+        Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
+        Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
+        _ => {
+            cx.error_spanned_by(lit, format!("expected a number: {allowed}"));
+            return None;
+        }
+    };
+    // Values are f64: another suffix would silently change the type the user wrote.
+    if !suffix.is_empty() && suffix != "f64" {
+        cx.error_spanned_by(
+            lit,
+            format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
+        );
+        return None;
+    }
+    match parse_decimal(&digits) {
+        // Exact, but the generated code and the checks use the f64 it rounds to.
+        Ok(r) if !r.to_f64().is_finite() => {
+            cx.error_spanned_by(
+                lit,
+                format!("`{digits}` overflows f64: the largest finite f64 is about 1.8e308"),
+            );
+            None
+        }
+        Ok(r) if r.to_f64() == 0.0 && !r.is_zero() => {
+            cx.error_spanned_by(
+                lit,
+                format!(
+                    "`{digits}` underflows f64 to zero: the smallest positive f64 is about 4.9e-324"
+                ),
+            );
+            None
+        }
+        Ok(r) => Some(arena.constant(r)),
+        Err(SymError::LiteralOutOfRange { .. }) => {
+            cx.error_spanned_by(lit, "literal out of range: values have at most 38 significant digits and lie within f64's range (about 4.9e-324 to 1.8e308)");
+            None
+        }
+        Err(_) => {
+            cx.error_spanned_by(lit, format!("expected a decimal number: {allowed}"));
+            None
+        }
     }
 }

@@ -10,6 +10,7 @@ use syn::{BinOp, Expr, Ident, Lit, UnOp};
 use super::parse::TIME;
 use crate::ctxt::Ctxt;
 use crate::keys::did_you_mean;
+use crate::rigid::values::number_literal;
 
 /// What a right-hand side may use, listed in the errors.
 const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`";
@@ -207,33 +208,7 @@ impl Lowerer<'_> {
 
     /// A number literal, exactly (`0.51` is 51/100), finite in f64.
     fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
-        let (digits, suffix) = match lit {
-            Lit::Float(f) => (f.base10_digits().to_owned(), f.suffix().to_owned()),
-            Lit::Int(i) => (i.base10_digits().to_owned(), i.suffix().to_owned()),
-            _ => {
-                self.cx
-                    .error_spanned_by(lit, format!("expected a number: {ALLOWED}"));
-                return None;
-            }
-        };
-        if !suffix.is_empty() && suffix != "f64" {
-            self.cx.error_spanned_by(
-                lit,
-                format!("unsupported suffix `{suffix}`: write a plain number or an `f64` one"),
-            );
-            return None;
-        }
-        let finite = |a: &Arena, e| a.as_rational(e).is_some_and(|r| r.to_f64().is_finite());
-        match self.arena.number(&digits) {
-            Ok(e) if finite(self.arena, e) => Some(e),
-            _ => {
-                self.cx.error_spanned_by(
-                    lit,
-                    "literal out of range: a number has at most 38 significant digits and lies within f64's range (about 4.9e-324 to 1.8e308)",
-                );
-                None
-            }
-        }
+        number_literal(self.cx, self.arena, lit, ALLOWED)
     }
 }
 

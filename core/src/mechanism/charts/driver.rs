@@ -6,7 +6,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::error::MechanismChartError;
 use super::joint_map::{joint_rate_matrix, joint_rotation, map_to_partner, state_in_chart};
 use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
-use crate::ode::{Dop853, OdeError, Stats, System};
+use crate::ode::{Dop853, Stats, System, check_stop};
 use crate::rigid::AngleSequence;
 use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
 
@@ -210,21 +210,12 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// current time does nothing.
     ///
     /// # Errors
-    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_end`,
-    /// [`OdeError::StopBeforeCurrent`] for one before the current time, and the stepper's
+    /// [`OdeError::NonFiniteTime`](crate::ode::OdeError::NonFiniteTime) for a NaN or infinite `t_end`,
+    /// [`OdeError::StopBeforeCurrent`](crate::ode::OdeError::StopBeforeCurrent) for one before the current time, and the stepper's
     /// errors (a joint that reaches gimbal lock with no chart to switch to makes the
     /// step fail).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), MechanismChartError> {
-        if !t_end.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_end }.into());
-        }
-        if t_end < self.ode.t() {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_end,
-                t: self.ode.t(),
-            }
-            .into());
-        }
+        check_stop(self.ode.t(), t_end)?;
         while self.ode.t() < t_end {
             self.ode.step(t_end)?;
             self.maybe_switch()?;

@@ -20,7 +20,7 @@ pub use config::TaylorConfig;
 pub use drivers::{solve, solve_dense};
 
 use super::TaylorSystem;
-use crate::ode::{OdeError, Stats, check_finite};
+use crate::ode::{OdeError, Stats, check_finite, check_stop};
 
 /// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
 ///
@@ -202,15 +202,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`OdeError::StepSizeUnderflow`] when the step no longer changes t. The state is left
     /// as it was on error.
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        if !t_limit.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_limit });
-        }
-        if t_limit < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_limit,
-                t: self.t,
-            });
-        }
+        check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(());
         }
@@ -310,15 +302,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// # Errors
     /// As [`Taylor::step`].
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), OdeError> {
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop });
-        }
-        if t_stop < self.t {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t,
-            });
-        }
+        check_stop(self.t, t_stop)?;
         while self.t < t_stop {
             self.step(t_stop)?;
         }
