@@ -324,3 +324,124 @@ fn a_massless_part_is_allowed_its_geometry_still_checked() {
         })
     );
 }
+
+/// The run-time model gives parameters the same mass-property checks: a pendulum whose mass
+/// and inertia are parameters (`m`, and `a`, `b`, `c` on the diagonal), on a hinge about x
+/// (which reads only `m` and `a`) or on a ball joint (which reads them all).
+mod run_time {
+    use precess::mechanism::{JointKind, MechanismModel, MechanismScene, Parent, Route};
+    use precess::rigid::AngleSequence;
+    use precess::sym::Arena;
+
+    use super::*;
+
+    fn model(ball: bool, values: &[(&str, f64)]) -> Result<MechanismModel, MechanismError> {
+        let mut a = Arena::new();
+        let (o, z) = (a.one(), a.zero());
+        let (kind, names) = if ball {
+            let sequence = AngleSequence::Zyx;
+            (
+                JointKind::Spherical { sequence },
+                vec!["yaw", "pitch", "roll"],
+            )
+        } else {
+            (JointKind::Revolute { axis: [o, z, z] }, vec!["theta"])
+        };
+        let mut body = MechanismScene::body(&mut a, "bob", Parent::Ground, kind, &names);
+        body.mass = a.parameter("m");
+        let down = a.integer(-1);
+        body.center = [z, z, down];
+        let (ia, ib, ic) = (a.parameter("a"), a.parameter("b"), a.parameter("c"));
+        body.inertia = [[ia, z, z], [z, ib, z], [z, z, ic]];
+        let mut scene = MechanismScene::new();
+        scene.bodies.push(body);
+        let g = a.integer(-10);
+        scene.gravity = Some([z, z, g]);
+        MechanismModel::new(&mut a, &scene, Route::Auto, values)
+    }
+
+    const GOOD: [(&str, f64); 4] = [("m", 2.0), ("a", 0.5), ("b", 0.4), ("c", 0.3)];
+
+    fn ball_with(changes: &[(&str, f64)]) -> Result<MechanismModel, MechanismError> {
+        let mut values = GOOD.to_vec();
+        for &(name, v) in changes {
+            if let Some(slot) = values.iter_mut().find(|(n, _)| *n == name) {
+                slot.1 = v;
+            }
+        }
+        model(true, &values)
+    }
+
+    #[test]
+    fn good_values_give_the_pendulum() {
+        let hinge = model(false, &GOOD[..2]).expect("a body");
+        // (m l² + a) θ̈ = −m g l sin θ with l = 1, g = 10.
+        let qdd = hinge.accelerations(0.0, &[0.3], &[0.0]).expect("finite");
+        let expected = -2.0 * 10.0 * 0.3f64.sin() / (2.0 + 0.5);
+        assert!(
+            (qdd[0] - expected).abs() < 1e-14,
+            "{} vs {expected}",
+            qdd[0]
+        );
+        // The ball joint rolled by 0.3 about x swings back the same way.
+        let ball = ball_with(&[]).expect("a body");
+        let qdd = ball
+            .accelerations(0.0, &[0.0, 0.0, 0.3], &[0.0; 3])
+            .expect("finite");
+        assert!((qdd[2] - expected).abs() < 1e-14, "{qdd:?} vs {expected}");
+        // A point mass (no inertia about its centre) is a body too.
+        ball_with(&[("a", 0.0), ("b", 0.0), ("c", 0.0)]).expect("a point mass");
+    }
+
+    #[test]
+    fn a_negative_mass_is_refused_at_construction_and_by_set() {
+        match ball_with(&[("m", -1.0)]) {
+            Err(MechanismError::NegativeParameter {
+                owner,
+                quantity,
+                value,
+            }) => {
+                assert_eq!((owner.as_str(), quantity.as_str()), ("body `bob`", "mass"));
+                assert_eq!(value, -1.0);
+            }
+            other => panic!("expected a negative mass, got {other:?}"),
+        }
+        let mut hinge = model(false, &GOOD[..2]).expect("a body");
+        assert!(matches!(
+            hinge.set("m", -3.0),
+            Err(MechanismError::NegativeParameter { value, .. }) if value == -3.0
+        ));
+    }
+
+    #[test]
+    fn impossible_inertias_are_refused() {
+        // 0.1 + 0.2 < 0.9: no mass distribution has these principal moments.
+        match ball_with(&[("a", 0.1), ("b", 0.2), ("c", 0.9)]) {
+            Err(MechanismError::Part {
+                body,
+                error: BodyError::TriangleInequality { moments, .. },
+            }) => {
+                assert_eq!(body, "bob");
+                assert_eq!(moments, [0.1, 0.2, 0.9]);
+            }
+            other => panic!("expected the triangle inequality, got {other:?}"),
+        }
+        assert!(matches!(
+            ball_with(&[("b", -0.4)]),
+            Err(MechanismError::Part {
+                error: BodyError::NotPositiveDefinite { .. },
+                ..
+            })
+        ));
+        let mut ball = ball_with(&[]).expect("a body");
+        assert!(matches!(
+            ball.set("c", 5.0),
+            Err(MechanismError::Part {
+                error: BodyError::TriangleInequality { .. },
+                ..
+            })
+        ));
+        // The hinge reads only `a`: the moments across it are not its concern.
+        model(false, &[("m", 2.0), ("a", 0.5)]).expect("b and c unread");
+    }
+}

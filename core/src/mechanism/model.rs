@@ -3,12 +3,15 @@
 
 use std::cell::RefCell;
 
+use nalgebra::Matrix3;
+
 use super::derive::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene};
+use crate::body::BodyError;
 use crate::codegen::{Bindings, Program};
 use crate::ode::System;
-use crate::sym::{Arena, ExprId, SymbolId};
+use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 
 /// A mechanism's q̈, pivots, energy and momenta, lowered once and interpreted.
 ///
@@ -59,12 +62,55 @@ pub struct MechanismModel {
     /// Outputs: |axis|² of every axis built of parameters, named by `axis_joints`.
     axes: Program,
     axis_joints: Vec<String>,
+    /// Outputs: the mass and the nine inertia entries of every body whose mass properties
+    /// read a parameter, named by `mass_bodies`.
+    mass_properties: Program,
+    mass_bodies: Vec<String>,
     q: Vec<SymbolId>,
     rates: Vec<SymbolId>,
     time: SymbolId,
     route: Route,
     bindings: Bindings,
     buffer: RefCell<Vec<f64>>,
+}
+
+/// A body's inertia about its centre (row-major `entries`): finite, symmetric, principal
+/// moments not negative and meeting I1 + I2 ≥ I3, all to a relative 1e-12 of its largest
+/// entry. Errors number the body's part 0: the tensor is the body's sum of parts.
+fn check_inertia(entries: &[f64]) -> Result<(), BodyError> {
+    const TOL: f64 = 1e-12;
+    let kind = "body";
+    if let Some(&value) = entries.iter().find(|v| !v.is_finite()) {
+        return Err(BodyError::NonFinite {
+            part: 0,
+            kind,
+            key: "inertia",
+            value,
+        });
+    }
+    let m = Matrix3::from_row_slice(entries);
+    let scale = m.amax();
+    for (row, col) in [(0, 1), (0, 2), (1, 2)] {
+        let (upper, lower) = (m[(row, col)], m[(col, row)]);
+        if (upper - lower).abs() > TOL * scale {
+            return Err(BodyError::NotSymmetric {
+                part: 0,
+                row,
+                col,
+                upper,
+                lower,
+            });
+        }
+    }
+    let mut moments: [f64; 3] = m.symmetric_eigenvalues().into();
+    moments.sort_by(f64::total_cmp);
+    if moments[0] < -TOL * scale {
+        return Err(BodyError::NotPositiveDefinite { part: 0, moments });
+    }
+    if moments[0] + moments[1] < moments[2] - TOL * scale {
+        return Err(BodyError::TriangleInequality { part: 0, moments });
+    }
+    Ok(())
 }
 
 fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {
@@ -80,7 +126,10 @@ impl MechanismModel {
     ///
     /// # Errors
     /// As [`MechanismScene::derive`] and [`MechanismModel::from_derivation`];
-    /// [`MechanismError::ZeroAxis`] for an axis of zero length at the values given.
+    /// [`MechanismError::ZeroAxis`] for an axis of zero length at the values given;
+    /// [`MechanismError::NonFiniteParameter`] or [`MechanismError::NegativeParameter`] for a
+    /// mass, [`MechanismError::Part`] for an inertia, made of parameters, that no body can
+    /// have (see [`MechanismModel::set`]).
     pub fn new(
         arena: &mut Arena,
         scene: &MechanismScene,
@@ -106,9 +155,40 @@ impl MechanismModel {
             }
         }
         let mut model = Self::from_derivation(arena, &derivation, parameters)?;
+        // Mass properties from parameters get the checks literal parts get at compile time.
+        // An inertia the motion never reads (a hinge's moments across its axis) has no
+        // values to check: the model binds only the parameters the derivation reads.
+        let known = derivation.parameters(arena);
+        let bound = |arena: &Arena, e: ExprId| {
+            arena.free_symbols(e).iter().all(|&s| {
+                let symbol = arena.symbol(s);
+                symbol.kind != SymbolKind::Parameter || known.contains(&symbol.name)
+            })
+        };
+        let zero = arena.zero();
+        let mut properties = Vec::new();
+        let mut mass_bodies = Vec::new();
+        for body in &scene.bodies {
+            let mut entries: Vec<ExprId> = std::iter::once(body.mass)
+                .chain(body.inertia.iter().flatten().copied())
+                .collect();
+            if entries.iter().all(|&e| arena.as_rational(e).is_some()) {
+                continue;
+            }
+            if !bound(arena, entries[0]) {
+                entries[0] = zero;
+            }
+            if !entries[1..].iter().all(|&e| bound(arena, e)) {
+                entries[1..].fill(zero);
+            }
+            properties.extend(entries);
+            mass_bodies.push(body.name.clone());
+        }
         model.axes = Program::lower(arena, &squared);
         model.axis_joints = names;
-        model.check_axes()?;
+        model.mass_properties = Program::lower(arena, &properties);
+        model.mass_bodies = mass_bodies;
+        model.check_parameters()?;
         Ok(model)
     }
 
@@ -151,6 +231,8 @@ impl MechanismModel {
             cyclic: d.cyclic_momenta.iter().map(|&(i, _)| i).collect(),
             axes: Program::lower(arena, &[]),
             axis_joints: Vec::new(),
+            mass_properties: Program::lower(arena, &[]),
+            mass_bodies: Vec::new(),
             buffer: RefCell::new(vec![0.0; outputs.len()]),
             q,
             rates,
@@ -158,6 +240,41 @@ impl MechanismModel {
             route: d.route,
             bindings,
         })
+    }
+
+    /// The checks of [`MechanismModel::new`] and [`MechanismModel::set`]: every axis made of
+    /// parameters has a length, every mass made of parameters is finite and not negative,
+    /// and every inertia made of parameters is finite and symmetric, with principal moments
+    /// that are not negative and meet the triangle inequality I1 + I2 ≥ I3 (zero moments
+    /// stay allowed: point masses and thin rods have them, and a body with no inertia at all
+    /// is the singular mass matrix's concern).
+    fn check_parameters(&self) -> Result<(), MechanismError> {
+        self.check_axes()?;
+        let mut out = vec![0.0; 10 * self.mass_bodies.len()];
+        self.bindings.eval(&self.mass_properties, [], &mut out);
+        for (body, values) in self.mass_bodies.iter().zip(out.chunks_exact(10)) {
+            let owner = format!("body `{body}`");
+            let mass = values[0];
+            if !mass.is_finite() {
+                return Err(MechanismError::NonFiniteParameter {
+                    owner,
+                    quantity: "mass".into(),
+                    value: mass,
+                });
+            }
+            if mass < 0.0 {
+                return Err(MechanismError::NegativeParameter {
+                    owner,
+                    quantity: "mass".into(),
+                    value: mass,
+                });
+            }
+            check_inertia(&values[1..]).map_err(|error| MechanismError::Part {
+                body: body.clone(),
+                error,
+            })?;
+        }
+        Ok(())
     }
 
     fn check_axes(&self) -> Result<(), MechanismError> {
@@ -198,10 +315,14 @@ impl MechanismModel {
     ///
     /// # Errors
     /// [`MechanismError::Binding`] for an unknown name or a non-finite value;
-    /// [`MechanismError::ZeroAxis`] if an axis becomes zero (the value is kept; set another).
+    /// [`MechanismError::ZeroAxis`] if an axis becomes zero,
+    /// [`MechanismError::NegativeParameter`] if a mass becomes negative (non-finite:
+    /// [`MechanismError::NonFiniteParameter`]), [`MechanismError::Part`] if an inertia
+    /// becomes non-finite, asymmetric, has a negative principal moment or breaks
+    /// I1 + I2 ≥ I3 (in each case the value is kept; set another).
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
         self.bindings.set(name, value)?;
-        self.check_axes()?;
+        self.check_parameters()?;
         Ok(self)
     }
 
