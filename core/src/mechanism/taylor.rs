@@ -91,6 +91,14 @@ impl MechanismDerivation {
         )?)
     }
 
+    /// The state `[q, q̇]` and right-hand side `(q̇, q̈)`, 2n expressions each.
+    pub fn first_order_system(&self) -> (Vec<ExprId>, Vec<ExprId>) {
+        let c = &self.coordinates;
+        let state = c.q.iter().chain(&c.rates).copied().collect();
+        let rhs = c.rates.iter().chain(&self.accelerations).copied().collect();
+        (state, rhs)
+    }
+
     /// The state `[q, q̇]` and right-hand side `(q̇, q̈)` as arrays of `S = 2n` expressions.
     ///
     /// # Errors
@@ -104,8 +112,7 @@ impl MechanismDerivation {
             found: S,
             coordinates: c.q.len(),
         };
-        let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
-        let rhs: Vec<ExprId> = c.rates.iter().chain(&self.accelerations).copied().collect();
+        let (state, rhs) = self.first_order_system();
         let state: [ExprId; S] = state.try_into().map_err(|_| dimension.clone())?;
         let rhs: [ExprId; S] = rhs.try_into().map_err(|_| dimension)?;
         Ok((state, rhs))

@@ -110,11 +110,14 @@ impl Checks {
     }
 
     fn finite(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
-        if !reads_field(arena, e) {
-            return;
+        if reads_field(arena, e) {
+            let i = self.value(e);
+            self.finite_at(i, owner.to_owned(), quantity);
         }
-        let i = self.value(e);
-        let owner = owner.to_owned();
+    }
+
+    /// The test that output `i` is finite.
+    fn finite_at(&mut self, i: usize, owner: String, quantity: String) {
         self.tests.push(Box::new(move |o| {
             let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
             quote! {{
@@ -161,22 +164,8 @@ impl Checks {
         let owner = format!("joint `{joint}`");
         let first = self.values.len();
         for (k, &e) in axis.iter().enumerate() {
-            self.values.push(e);
-            let i = first + k;
-            let (owner, quantity) = (owner.clone(), format!("{name}[{k}]"));
-            self.tests.push(Box::new(move |o| {
-                let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
-                quote! {{
-                    let __v: f64 = #v;
-                    if !__v.is_finite() {
-                        return ::core::result::Result::Err(#p::MechanismError::NonFiniteParameter {
-                            owner: ::std::string::String::from(#owner),
-                            quantity: ::std::string::String::from(#quantity),
-                            value: __v,
-                        });
-                    }
-                }}
-            }));
+            let i = self.value(e);
+            self.finite_at(i, owner.clone(), format!("{name}[{k}]"));
         }
         let joint = joint.to_owned();
         self.tests.push(Box::new(move |o| {

@@ -4,7 +4,7 @@
 //! and free bodies' (`crate::taylor`). Mechanisms without the key emit nothing here.
 
 use precess_core::mechanism::MechanismDerivation;
-use precess_core::sym::{Arena, ExprId};
+use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
 use syn::{Expr, Ident};
 
@@ -29,14 +29,7 @@ pub fn expand(
     derivation: &MechanismDerivation,
     order: usize,
 ) -> TokenStream {
-    let c = &derivation.coordinates;
-    let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
-    let rhs: Vec<ExprId> = c
-        .rates
-        .iter()
-        .chain(&derivation.accelerations)
-        .copied()
-        .collect();
+    let (state, rhs) = derivation.first_order_system();
     crate::taylor::expand(
         cx,
         ident,
