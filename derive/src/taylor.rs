@@ -3,7 +3,8 @@
 //! Taylor tape (`precess_core::taylor::Tape::to_tokens`), so the generated and the
 //! interpreted recurrences are one decomposition. Scenes without the key emit nothing here.
 
-use precess_core::sym::{Arena, ExprId};
+use precess_core::codegen::Program;
+use precess_core::sym::{Arena, ExprId, SymbolId};
 use precess_core::taylor::{MAX_TAYLOR_ORDER, Tape};
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -47,10 +48,11 @@ pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize
     Some(order)
 }
 
-/// The complete `impl TaylorSystem<N> for ident` with `N = state.len()`: `y' = rhs(y)` over
-/// the state symbols, the other symbols read through `symbols` after `prelude` (statements
-/// binding what those read, which may use `self`). Its `Workspace` is the emitted rows
-/// (`Vec<[f64; K + 1]>`) and its `coefficients_into` the emitted recurrences. A symbol the
+/// The complete `impl TaylorSystem<N> for ident` with `N = state.len()`: `y' = rhs(t, y)`
+/// over the state symbols and the arena's time symbol (a series, read from the `t` argument,
+/// when `rhs` reads it), the other symbols read through `symbols` after `prelude`
+/// (statements binding what those read, which may use `self`). Its `Workspace` is the
+/// emitted rows (`Vec<[f64; K + 1]>`) and its `coefficients_into` the emitted recurrences. A symbol the
 /// map does not know is an internal error spanned on `ident`, as in `symbols.rs`. The one
 /// entry point of every scene's `taylor = K`.
 #[allow(clippy::too_many_arguments)]
@@ -66,13 +68,22 @@ pub fn expand(
 ) -> TokenStream {
     let p = Private;
     let n = state.len();
-    let Some(tape) = Tape::new(arena, state, None, rhs) else {
+    let state: Option<Vec<SymbolId>> = state.iter().map(|&e| arena.as_symbol(e)).collect();
+    let Some(state) = state.filter(|s| s.len() == rhs.len()) else {
         cx.error_spanned_by(
             ident,
             "internal error of the derive: the state of the Taylor recurrences is not a list of symbols; please report this",
         );
         return TokenStream::new();
     };
+    let program = Program::lower(arena, rhs);
+    // The time is a series only where the program reads it (through an abbreviation too):
+    // an autonomous scene whose arena made the symbol anyway (a mechanism's derivation does)
+    // keeps no time row.
+    let time = arena
+        .time_symbol()
+        .filter(|s| program.inputs().contains(s));
+    let tape = Tape::from_program(&program, &state, time);
     let code = tape.to_tokens(order, &mut |s| match symbols.get(s) {
         Some(tokens) => tokens,
         None => {

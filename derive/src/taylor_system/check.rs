@@ -1,6 +1,7 @@
-//! Meaning of `taylor_system!`'s statements: the struct's fields are its f64 parameters;
-//! one `state [...]` of distinct new names; one `taylor = K`; exactly one equation per state
-//! variable. Every error is recorded, spanned on the offending tokens, before giving up.
+//! Meaning of `taylor_system!`'s statements: the struct's fields are its f64 parameters
+//! (none named `t`, the time); one `state [...]` of distinct new names; one `taylor = K`;
+//! exactly one equation per state variable. Every error is recorded, spanned on the
+//! offending tokens, before giving up.
 
 use syn::{Expr, Fields, Ident, Type};
 
@@ -145,7 +146,17 @@ fn fields<'a>(cx: &Ctxt, fields: &'a Fields) -> Vec<&'a Ident> {
                         "a field of a `taylor_system!` struct is a parameter: its type must be `f64`",
                     );
                 }
-                f.ident.as_ref()
+                let ident = f.ident.as_ref()?;
+                // `t` in a right-hand side is the time: a parameter of that name could
+                // never be read, and would silently shadow the time if it were.
+                if ident == TIME {
+                    cx.error_spanned_by(
+                        ident,
+                        format!("`{TIME}` is the time in a right-hand side: name the field otherwise"),
+                    );
+                    return None;
+                }
+                Some(ident)
             })
             .collect(),
     }

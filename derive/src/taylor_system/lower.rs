@@ -1,7 +1,7 @@
 //! A right-hand side of `taylor_system!` as written (a Rust expression) into the symbolic
-//! engine: numbers exactly, state variables, the struct's fields and the time as symbols,
-//! `+ − × ÷` and unary `−` (the time `t` is recognised, and refused in `mod.rs`), and the functions the Taylor recurrences know (`sin`, `cos`,
-//! `sqrt`, `powi` with an integer literal), as methods (`x.sin()`) or calls (`sin(x)`).
+//! engine: numbers exactly, state variables, the struct's fields and the time `t` as
+//! symbols, `+ − × ÷` and unary `−`, and the functions the Taylor recurrences know (`sin`,
+//! `cos`, `sqrt`, `powi` with an integer literal), as methods (`x.sin()`) or calls (`sin(x)`).
 //! Anything else is an error spanned on it.
 
 use precess_core::sym::{Arena, ExprId};
@@ -13,7 +13,7 @@ use crate::keys::did_you_mean;
 use crate::rigid::values::number_literal;
 
 /// What a right-hand side may use, listed in the errors.
-const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`";
+const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`";
 /// The functions known, with their argument counts besides the receiver.
 const FUNCTIONS: &[(&str, usize)] = &[("sin", 0), ("cos", 0), ("sqrt", 0), ("powi", 1)];
 
@@ -23,8 +23,8 @@ pub struct Names {
     pub state: Vec<(Ident, ExprId)>,
     /// The struct's f64 fields.
     pub fields: Vec<(Ident, ExprId)>,
-    /// The time and where it was first read, once a right-hand side reads `t`.
-    pub time: Option<(ExprId, Ident)>,
+    /// The time, once a right-hand side reads `t`.
+    pub time: Option<ExprId>,
 }
 
 /// Lowers right-hand sides into one arena, recording every error.
@@ -184,11 +184,10 @@ impl Lowerer<'_> {
             return Some(*e);
         }
         if ident == TIME {
-            let (t, _) = self
-                .names
-                .time
-                .get_or_insert_with(|| (self.arena.time(), ident.clone()));
-            return Some(*t);
+            // One time symbol per arena: every `t` is the same series.
+            let t = self.arena.time();
+            self.names.time = Some(t);
+            return Some(t);
         }
         let known: Vec<String> = names
             .state
@@ -199,7 +198,7 @@ impl Lowerer<'_> {
         self.cx.error_spanned_by(
             ident,
             format!(
-                "unknown name `{ident}`: a right-hand side reads the state variables and the struct's f64 fields{}",
+                "unknown name `{ident}`: a right-hand side reads the state variables, the struct's f64 fields and the time `{TIME}`{}",
                 did_you_mean(&ident.to_string(), known.iter().map(String::as_str))
             ),
         );

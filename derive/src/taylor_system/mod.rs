@@ -86,17 +86,15 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
     };
     let rhs: Vec<Option<ExprId>> = checked.equations.iter().map(|e| lowerer.expr(e)).collect();
     let rhs: Vec<ExprId> = rhs.into_iter().collect::<Option<_>>()?;
-    // The scenes' emitter takes autonomous systems only (its tape has no time series).
-    if let Some((_, at)) = &lowerer.names.time {
-        cx.error_spanned_by(
-            at,
-            "the Taylor recurrences of `taylor_system!` do not read the time yet: make the system autonomous with a state variable for it (`state [.., tau]; d/dt tau = 1.0;`)",
-        );
-        return None;
-    }
+    let time = lowerer.names.time;
     let mut symbols = SymbolTokens::default();
     for (field, &e) in checked.fields.iter().zip(&fields) {
         symbols.insert_expr(&arena, e, quote!(self.#field));
+    }
+    // The time is the `t` argument of `System::rhs`; in the recurrences it is the tape's time
+    // series (t₀, 1, 0, …), which `crate::taylor::expand` makes of the arena's time symbol.
+    if let Some(time) = time {
+        symbols.insert_expr(&arena, time, quote!(t));
     }
     let n = state.len();
     let reads: Vec<(ExprId, TokenStream)> = (0..n)
