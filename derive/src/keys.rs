@@ -240,7 +240,7 @@ pub const FREE_FORCES: &[&str] = &[BODY_FORCE, SPACE_FORCE];
 pub const FORCE_KEYS: &[&str] = &[FORCE, FORCE_AT];
 
 /// The keys `#[rigid(...)]` takes beside its parts.
-pub const RIGID_KEYS: &[&str] = &[PIVOT];
+pub const RIGID_KEYS: &[&str] = &[PIVOT, TAYLOR];
 
 /// `#[mechanism(...)]`: settings of the whole mechanism (gravity, route).
 pub const MECHANISM: &str = "mechanism";

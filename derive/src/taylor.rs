@@ -80,9 +80,7 @@ pub fn expand(
     // The time is a series only where the program reads it (through an abbreviation too):
     // an autonomous scene whose arena made the symbol anyway (a mechanism's derivation does)
     // keeps no time row.
-    let time = arena
-        .time_symbol()
-        .filter(|s| program.inputs().contains(s));
+    let time = arena.time_symbol().filter(|s| program.inputs().contains(s));
     let tape = Tape::from_program(&program, &state, time);
     let code = tape.to_tokens(order, &mut |s| match symbols.get(s) {
         Some(tokens) => tokens,

@@ -1,7 +1,8 @@
-//! Syntax of the `#[rigid(...)]` list: parts `name(key = value, ...)` and `pivot = [..]`,
-//! parsed with syn into raw items whose meaning `check.rs` decides. (A custom syn parser
-//! rather than `parse_nested_meta`, so an unknown part or key is reported and skipped and
-//! every error in the list is collected.) `#[top]` lists are `key = value` items too.
+//! Syntax of the `#[rigid(...)]` list: parts `name(key = value, ...)`, `pivot = [..]` and
+//! `taylor = K`, parsed with syn into raw items whose meaning `check.rs` decides. (A custom
+//! syn parser rather than `parse_nested_meta`, so an unknown part or key is reported and
+//! skipped and every error in the list is collected.) `#[top]` lists are `key = value`
+//! items too.
 
 use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};
@@ -20,7 +21,8 @@ pub enum Item {
         /// Its keys in order.
         keys: Vec<KeyValue>,
     },
-    /// `key = value` at the top level (only [`keys::PIVOT`] is meaningful).
+    /// `key = value` at the top level (only [`keys::PIVOT`] and [`keys::TAYLOR`] are
+    /// meaningful).
     Setting(Box<KeyValue>),
 }
 
@@ -64,8 +66,9 @@ impl Parse for Item {
             Err(syn::Error::new(
                 name.span(),
                 format!(
-                    "expected a part `{name}(key = value, ...)` or `{} = [x, y, z]`",
-                    keys::PIVOT
+                    "expected a part `{name}(key = value, ...)`, `{} = [x, y, z]` or `{} = K`",
+                    keys::PIVOT,
+                    keys::TAYLOR
                 ),
             ))
         }

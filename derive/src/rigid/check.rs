@@ -23,6 +23,9 @@ pub struct CheckedBody {
     pub description: Description<ExprId>,
     /// The symbolic body computed from it.
     pub body: SymbolicBody,
+    /// The maximum order of `taylor = K`, the Taylor recurrences of the torque-free Euler
+    /// equations, if asked for.
+    pub taylor: Option<usize>,
 }
 
 /// The tokens of each key's value in one part.
@@ -113,6 +116,8 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
         whole: input.rigid_tokens(),
     };
     let mut pivot_key: Option<&Ident> = None;
+    let mut taylor_key: Option<&Ident> = None;
+    let mut taylor = None;
     for item in &items.items {
         match item {
             Item::Part { name, keys } => {
@@ -135,13 +140,28 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                 description.pivot = ck.vector(value);
                 spans.pivot = Some(value.to_token_stream());
             }
+            Item::Setting(setting) if setting.key == keys::TAYLOR => {
+                let KeyValue { key, value } = &**setting;
+                // One order: two would leave the generated recurrences ambiguous.
+                if taylor_key.is_some() {
+                    ck.cx.error_spanned_by(
+                        key,
+                        format!("duplicate key `{key}` in `#[{}]`", keys::RIGID),
+                    );
+                    continue;
+                }
+                taylor_key = Some(key);
+                // No user function can enter Euler's torque-free equations.
+                taylor = crate::taylor::check(ck.cx, value, &[]);
+            }
             Item::Setting(setting) => {
                 let key = &setting.key;
                 ck.cx.error_spanned_by(
                     key,
                     format!(
-                        "unknown key `{key}`: at the top level only `{} = [x, y, z]` and parts ({}) are allowed{}",
+                        "unknown key `{key}`: at the top level only `{} = [x, y, z]`, `{} = K` and parts ({}) are allowed{}",
                         keys::PIVOT,
+                        keys::TAYLOR,
                         part_list(),
                         keys::did_you_mean(&key.to_string(), keys::RIGID_KEYS.iter().copied())
                     ),
@@ -154,7 +174,9 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
     if !items.complete || ck.cx.error_count() > errors_before {
         return None;
     }
-    validate(ck.cx, ck.arena, description, &spans)
+    let mut checked = validate(ck.cx, ck.arena, description, &spans)?;
+    checked.taylor = taylor;
+    Some(checked)
 }
 
 /// Runs the body rules: each part whose values are all literals now, then the whole body.
@@ -197,7 +219,11 @@ fn validate(
         return None;
     }
     match SymbolicBody::new(arena, &description) {
-        Ok(body) => Some(CheckedBody { description, body }),
+        Ok(body) => Some(CheckedBody {
+            description,
+            body,
+            taylor: None,
+        }),
         Err(e) => {
             report(cx, spans, &e);
             None

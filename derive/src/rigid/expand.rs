@@ -1,5 +1,6 @@
 //! Expansion of `#[rigid]`: the checked body's expressions lowered by precess-core's code
-//! generator and quoted into a `RigidBody` impl. Constants become literals; a field becomes
+//! generator and quoted into a `RigidBody` impl (and, with `taylor = K`, the impls of
+//! `taylor.rs`). Constants become literals; a field becomes
 //! `self.field`; generated code names everything through the hidden path.
 
 use precess_core::body::{About, Axis, Description, Frame, Orientation, Shape};
@@ -123,7 +124,13 @@ pub fn expand(
         // The trait's default checks the description built from the fields.
         TokenStream::new()
     };
+    // `taylor = K`: the torque-free Euler equations as a system of their own.
+    let taylor = checked
+        .taylor
+        .map(|order| super::taylor::expand(cx, ident, arena, parameters, checked, order));
     Some(quote! {
+        #taylor
+
         #[automatically_derived]
         #[allow(clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::RigidBody for #ident {
