@@ -45,6 +45,16 @@ struct Wobbly {
     tilt: f64,
 }
 
+/// A symmetric body (I₁ = I₂): ω₃'s equation folds to zero.
+#[derive(RigidBody)]
+#[rigid(cylinder(mass = 0.5, radius = 0.1, length = 0.6), taylor = 16)]
+struct Symmetric;
+
+/// Three equal moments: every equation folds to zero.
+#[derive(RigidBody)]
+#[rigid(sphere(mass = 2.0, radius = 0.3), taylor = 8)]
+struct Ball;
+
 /// A body without the key.
 #[derive(RigidBody)]
 #[rigid(body(mass = 1.0, inertia = diag(3.0, 5.0, 7.0)))]
@@ -182,6 +192,39 @@ fn bodies_of_fields_match_the_exact_motion() {
         check_coefficients(&wobbly, w0, t0);
     }
     check_integration(&wobbly, w0, 1e-13);
+}
+
+#[test]
+fn symmetric_bodies_precess_and_spheres_keep_their_rate() {
+    // I₁ = I₂: ω₃ is constant and (ω₁, ω₂) turns at a = (I₁ − I₃) ω₃ / I₁:
+    // ω₁ = ω₁₀ cos at + ω₂₀ sin at, ω₂ = ω₂₀ cos at − ω₁₀ sin at.
+    let i = Symmetric.principal().moments;
+    assert!((i[0] - i[1]).abs() < 1e-15 && (i[0] - i[2]).abs() > 1e-3);
+    let w0 = [0.7, -0.3, 2.5];
+    let a = (i[0] - i[2]) * w0[2] / i[0];
+    let t_end = 50.0;
+    let cfg = TaylorConfig::with_tol(1e-15, 1e-15);
+    let s = precess::taylor::solve(&Symmetric, 0.0, w0, t_end, &[], cfg).expect("a run");
+    let (c, sn) = ((a * t_end).cos(), (a * t_end).sin());
+    let want = [w0[0] * c + w0[1] * sn, w0[1] * c - w0[0] * sn, w0[2]];
+    for n in 0..3 {
+        assert!(
+            (s.y[n] - want[n]).abs() <= 1e-13 * 2.5,
+            "component {n}: {} against {}",
+            s.y[n],
+            want[n]
+        );
+    }
+    let mut k = [[f64::NAN; 3]; 17];
+    Symmetric.coefficients(0.0, &w0, 16, &mut k);
+    assert!(k[1..].iter().all(|ck| ck[2] == 0.0));
+    // A sphere: every coefficient past the state is zero, the state never moves.
+    let mut k = [[f64::NAN; 3]; 9];
+    Ball.coefficients(0.0, &w0, 8, &mut k);
+    assert_eq!(k[0], w0);
+    assert!(k[1..].iter().flatten().all(|&v| v == 0.0));
+    let s = precess::taylor::solve(&Ball, 0.0, w0, t_end, &[], cfg).expect("a run");
+    assert_eq!(s.y, w0);
 }
 
 /// `Probe::<T>::TAYLOR` is the inherent constant when `T: TaylorSystem<3>` and the trait's
