@@ -138,12 +138,10 @@ fn check_integration<B: RigidBody + TaylorSystem<3>>(body: &B, w0: [f64; 3], bou
         "I = {inertia:?}, ω0 = {w0:?}: relative error {error:.1e} at T = 50, {:?}",
         s.stats
     );
-    for n in 0..3 {
+    for (n, (got, want)) in s.y.iter().zip(want).enumerate() {
         assert!(
-            (s.y[n] - want[n]).abs() <= bound * scale,
-            "component {n}: Taylor {} against exact {}",
-            s.y[n],
-            want[n]
+            (got - want).abs() <= bound * scale,
+            "component {n}: Taylor {got} against exact {want}"
         );
     }
 }
@@ -207,12 +205,10 @@ fn symmetric_bodies_precess_and_spheres_keep_their_rate() {
     let s = precess::taylor::solve(&Symmetric, 0.0, w0, t_end, &[], cfg).expect("a run");
     let (c, sn) = ((a * t_end).cos(), (a * t_end).sin());
     let want = [w0[0] * c + w0[1] * sn, w0[1] * c - w0[0] * sn, w0[2]];
-    for n in 0..3 {
+    for (n, (got, want)) in s.y.iter().zip(want).enumerate() {
         assert!(
-            (s.y[n] - want[n]).abs() <= 1e-13 * 2.5,
-            "component {n}: {} against {}",
-            s.y[n],
-            want[n]
+            (got - want).abs() <= 1e-13 * 2.5,
+            "component {n}: {got} against {want}"
         );
     }
     let mut k = [[f64::NAN; 3]; 17];
@@ -240,9 +236,10 @@ impl<T: TaylorSystem<3> + System<3>> Probe<T> {
 
 #[test]
 fn the_key_absent_emits_no_impl() {
-    assert!(!Probe::<Plain>::TAYLOR);
-    assert!(Probe::<Asymmetric>::TAYLOR);
-    assert!(Probe::<Wobbly>::TAYLOR);
+    // Decided at compile time: a wrong answer does not compile.
+    const { assert!(!Probe::<Plain>::TAYLOR) };
+    const { assert!(Probe::<Asymmetric>::TAYLOR) };
+    const { assert!(Probe::<Wobbly>::TAYLOR) };
     // The body itself is the same without the key.
     assert_eq!(Plain.principal().moments, Asymmetric.principal().moments);
 }

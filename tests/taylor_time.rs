@@ -37,6 +37,15 @@ precess::taylor_system! {
     d/dt x = t.sin() * x + k * t * t - x / (2.0 + cos(t));
 }
 
+precess::taylor_system! {
+    /// The time as an output itself and squared: x = x₀ + (t² − t₀²)/2, y = y₀ + t³ − t₀³.
+    struct Clock;
+    state [x, y];
+    taylor = 6;
+    d/dt x = t;
+    d/dt y = 3.0 * t * t;
+}
+
 const FORCED: Forced = Forced { w: 1.3, big_w: 0.7 };
 /// x(0), v(0) of the forced runs.
 const X0: [f64; 2] = [0.4, -0.9];
@@ -101,6 +110,25 @@ fn gaussian_integrated_by_taylor_matches_its_closed_form() {
 }
 
 #[test]
+fn clock_coefficients_are_the_polynomials_of_the_time() {
+    // x(t₀ + τ) = x₀ + t₀ τ + τ²/2; y(t₀ + τ) = y₀ + 3t₀² τ + 3t₀ τ² + τ³: exact in f64.
+    for t0 in [0.0, 1.5, -2.25] {
+        let mut c = [[f64::NAN; 2]; 7];
+        Clock.coefficients(t0, &[0.5, -1.0], 6, &mut c);
+        let want = [
+            [0.5, -1.0],
+            [t0, 3.0 * t0 * t0],
+            [0.5, 3.0 * t0],
+            [0.0, 1.0],
+            [0.0, 0.0],
+            [0.0, 0.0],
+            [0.0, 0.0],
+        ];
+        assert_eq!(c, want, "t0 = {t0}");
+    }
+}
+
+#[test]
 fn forced_oscillator_coefficients_are_its_derivatives_over_factorials() {
     for t0 in [0.0, 2.3, -7.1] {
         let y = [forced_derivative(t0, 0), forced_derivative(t0, 1)];
@@ -152,18 +180,15 @@ fn forced_oscillator_integrated_by_taylor_and_dop853_matches_its_closed_form() {
         AdaptiveConfig::with_tol(1e-13, 1e-13),
     )
     .expect("DOP853 integrates the forced oscillator");
-    for i in 0..2 {
+    for (i, want) in exact.into_iter().enumerate() {
+        let (ours, pair) = (taylor.y[i], dop.y[i]);
         assert!(
-            (taylor.y[i] - exact[i]).abs() <= 1e-12 * exact[i].abs().max(1.0),
-            "Taylor, component {i}: {} against {}",
-            taylor.y[i],
-            exact[i]
+            (ours - want).abs() <= 1e-12 * want.abs().max(1.0),
+            "Taylor, component {i}: {ours} against {want}"
         );
         assert!(
-            (dop.y[i] - exact[i]).abs() <= 1e-9 * exact[i].abs().max(1.0),
-            "DOP853, component {i}: {} against {}",
-            dop.y[i],
-            exact[i]
+            (pair - want).abs() <= 1e-9 * want.abs().max(1.0),
+            "DOP853, component {i}: {pair} against {want}"
         );
     }
 }
