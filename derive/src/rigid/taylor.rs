@@ -10,6 +10,8 @@
 //! top's `TaylorSystem<6>` or a free body's `<13>`, and `Taylor::new(&body, t0, ω0, cfg)`
 //! then reads as what it is. Bodies without the key emit nothing here.
 
+use std::borrow::Cow;
+
 use precess_core::body::Frame;
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -48,9 +50,9 @@ pub fn expand(
             }
             body.frame = Frame::Diagonal(moments);
             let prelude = quote!(let __pr = #p::RigidBody::principal(self););
-            (body, prelude)
+            (Cow::Owned(body), prelude)
         }
-        _ => (checked.body.clone(), TokenStream::new()),
+        _ => (Cow::Borrowed(&checked.body), TokenStream::new()),
     };
     let rhs = match body.euler_rhs_principal(arena, omega, zero) {
         Ok(Some(rhs)) => rhs,
