@@ -15,11 +15,13 @@
 
 mod config;
 mod drivers;
+mod extended;
 
 pub use config::TaylorConfig;
 pub use drivers::{solve, solve_dense};
 
 use super::TaylorSystem;
+use crate::exact::Dd;
 use crate::ode::{OdeError, Stats, check_finite, check_stop};
 
 /// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
@@ -72,6 +74,8 @@ pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     coeffs: Vec<[f64; N]>,
     /// The system's scratch, kept across steps so that a jet neither allocates nor zeroes.
     ws: S::Workspace,
+    /// The double-double coefficients of the extended mode, orders 0 … L (empty when off).
+    low: Vec<[Dd; N]>,
     last: LastStep<N>,
     stats: Stats,
     jets: u64,
@@ -94,7 +98,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// # Errors
     /// An invalid configuration ([`TaylorConfig::validate`]), a system whose
     /// [`TaylorSystem::max_order`] is below 2 ([`OdeError::InvalidParameter`] naming
-    /// `TaylorSystem::max_order`), a non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
+    /// `TaylorSystem::max_order`), the extended mode asked of a system that does not
+    /// implement it ([`OdeError::InvalidParameter`] naming `TaylorConfig::extended`), a
+    /// non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
     /// ([`OdeError::NonFiniteInitialState`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: TaylorConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
@@ -115,6 +121,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         };
         let rules = [rule(cfg.rtol), rule(cfg.atol)];
         let highest = rules[0].0.max(rules[1].0);
+        let mut ws = S::Workspace::default();
+        let low = match cfg.extended {
+            Some(l) => extended::low_table(&sys, &mut ws, l, t0, &y0)?,
+            None => Vec::new(),
+        };
         Ok(Self {
             sys,
             cfg,
@@ -124,7 +135,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y: y0,
             y_comp: [0.0; N],
             coeffs: vec![[0.0; N]; highest + 1],
-            ws: S::Workspace::default(),
+            ws,
+            low,
             last: LastStep {
                 t: t0,
                 t_lo: 0.0,
@@ -202,6 +214,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`OdeError::StepSizeUnderflow`] when the step no longer changes t. The state is left
     /// as it was on error.
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        if !self.low.is_empty() {
+            return self.step_extended(t_limit);
+        }
         check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(());
