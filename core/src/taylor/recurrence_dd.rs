@@ -117,7 +117,10 @@ mod tests {
             assert_eq!(got, exact, "order {k}");
             let plain: f64 = (0..=k).map(|j| a[j] as f64 * b[k - j] as f64).sum();
             if k > 0 {
-                assert_ne!(plain as i128, exact, "f64 would have been exact at order {k}");
+                assert_ne!(
+                    plain as i128, exact,
+                    "f64 would have been exact at order {k}"
+                );
             }
         }
     }

@@ -96,7 +96,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.stats.rhs_evals += p as u64;
         let finite = |v: &f64| v.is_finite();
         if !c.iter().all(|ck| ck.iter().all(finite))
-            || !low.iter().all(|ck| ck.iter().all(|v| v.hi.is_finite() && v.lo.is_finite()))
+            || !low
+                .iter()
+                .all(|ck| ck.iter().all(|v| v.hi.is_finite() && v.lo.is_finite()))
         {
             return Err(OdeError::NonFiniteState { t: self.t });
         }
