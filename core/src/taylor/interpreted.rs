@@ -305,14 +305,14 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
             for s in &self.tape.steps {
                 recurrence_dd::step(&mut c, sdd, s, k);
             }
-            let div = Dd::from((k + 1) as f64);
+            let div = (k + 1) as f64;
             for (i, out) in self.tape.outputs.iter().enumerate() {
                 let fk = match *out {
                     Value::Series(x) => c.get(x, k),
                     Value::Scalar(x) if k == 0 => sdd[x as usize],
                     Value::Scalar(_) => Dd::default(),
                 };
-                let v = fk / div;
+                let v = fk.div_f64(div);
                 c.set(i as u32, k + 1, v);
                 low[k + 1][i] = v;
             }

@@ -2,9 +2,9 @@
 //! extended mode ([`TaylorSystem::coefficients_extended_into`](super::TaylorSystem)).
 //!
 //! The same recurrences as [`super::recurrence`], every sum and product in double-double
-//! ([`Dd`], about 106 bits): a Cauchy product `Σⱼ a_j b_{k−j}` is summed term by term with
-//! each product formed exactly to 106 bits, so its error is about 2⁻¹⁰⁴·Σ|a_j b_{k−j}|
-//! instead of 2⁻⁵³·k·Σ|…| in `f64`. The coefficients live in the `f64` workspace of
+//! ([`Dd`], about 106 bits): a Cauchy product `Σⱼ a_j b_{k−j}` is summed with each leading
+//! product exact and every rounding kept ([`Dd::dot`]), so its error is about
+//! 2⁻¹⁰⁴·k·Σ|a_j b_{k−j}| instead of 2⁻⁵³·k·Σ|…| in `f64`. The coefficients live in the `f64` workspace of
 //! [`super::TaylorTape`], two words per coefficient (hi, lo), after the `f64` table.
 //!
 //! Only the operations with an algebraic recurrence are carried: sums, scalings, products,
@@ -15,10 +15,10 @@
 use super::tape::{SeriesOp, SeriesStep};
 use crate::exact::Dd;
 
-/// `Σⱼ aⱼ bⱼ` in double-double over the pairs given: the order-k coefficient of a product
-/// when the pairs are `(a_j, b_{k−j})`.
+/// `Σⱼ aⱼ bⱼ` in double-double over the pairs given ([`Dd::dot`]): the order-k
+/// coefficient of a product when the pairs are `(a_j, b_{k−j})`.
 pub(crate) fn dot_dd(pairs: impl Iterator<Item = (Dd, Dd)>) -> Dd {
-    pairs.fold(Dd::default(), |acc, (a, b)| acc + a * b)
+    Dd::dot(pairs)
 }
 
 /// A table of double-double coefficients stored series-major in `f64` pairs:
