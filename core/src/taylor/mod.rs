@@ -103,8 +103,8 @@ pub trait TaylorSystem<const N: usize> {
     ///   106 bits.
     ///
     /// Why the split works: a step adds Σₖ c_k hᵏ with h ≈ e⁻²ρ, so c_k hᵏ ≈ e⁻²ᵏ‖y‖ and
-    /// the `f64` rounding of an order k > L costs about 2⁻⁵³e⁻²ᵏ relative; at L = 8 that is
-    /// below 2⁻⁷⁶. The first orders, c₀ = y and c₁ = f(y), carry the digits that a rounded
+    /// the `f64` rounding of an order k > L costs about 2⁻⁵³e⁻²ᵏ relative; at L = 6 that is
+    /// below 1e-22. The first orders, c₀ = y and c₁ = f(y), carry the digits that a rounded
     /// state and a rounded f lose at every step.
     ///
     /// The caller guarantees `order ≤ self.max_order()`, `coeffs.len() > order` and

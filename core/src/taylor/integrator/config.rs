@@ -87,12 +87,14 @@ impl TaylorConfig {
 
     /// This configuration in the extended mode with the orders 0 … `low` in double-double
     /// (see [`TaylorConfig::extended`]). A step of order p adds Σ c_k hᵏ with c_k hᵏ ≈
-    /// e⁻²ᵏ‖y‖, so the `f64` orders past `low` lose about 2⁻⁵³e⁻²⁽ˡᵒʷ⁺¹⁾ relative: `low = 8`
-    /// puts that below 1e-23.
+    /// e⁻²ᵏ‖y‖, so the `f64` orders past `low` lose about 2⁻⁵³e⁻²⁽ˡᵒʷ⁺¹⁾ relative per step:
+    /// `low = 6` puts that below 1e-22, where it stays under the last bit of the state even
+    /// on a problem that amplifies it 10⁴-fold (the torque-free body next to its middle
+    /// axis, `docs/taylor-integrator.md`); `low = 4` leaves 5e-21, which there shows as 1e-15.
     ///
     /// ```
-    /// let c = precess_core::taylor::TaylorConfig::with_tol(1e-18, 1e-18).extended_orders(8);
-    /// assert_eq!(c.extended, Some(8));
+    /// let c = precess_core::taylor::TaylorConfig::with_tol(1e-18, 1e-18).extended_orders(6);
+    /// assert_eq!(c.extended, Some(6));
     /// assert!(c.validate().is_ok());
     /// ```
     pub fn extended_orders(self, low: usize) -> Self {
