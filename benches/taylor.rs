@@ -163,6 +163,34 @@ impl TaylorSystem<3> for B5Before {
     }
 }
 
+/// B5's coefficients at its initial state replayed at every step: a jet that costs a copy, so
+/// that an integration with it times the step itself (the `step` group).
+struct Replay(Vec<[f64; 3]>);
+impl Replay {
+    fn b5() -> Self {
+        let mut c = vec![[0.0; 3]; MAX_ORDER + 1];
+        B5.coefficients_into(&mut Rows::new(), 0.0, &[0.0, 1.0, 1.0], MAX_ORDER, &mut c);
+        Self(c)
+    }
+}
+impl TaylorSystem<3> for Replay {
+    type Workspace = ();
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
+        c[0] = *y;
+        c[1..=order].copy_from_slice(&self.0[1..=order]);
+    }
+}
+
 /// The torque-free body in body momentum: ṁ = m × (I⁻¹ m) = (a0 m1 m2, a1 m2 m0, a2 m0 m1).
 struct FreeBody([f64; 3]);
 impl FreeBody {
@@ -728,6 +756,7 @@ fn main() {
         });
     }
     g.finish();
+    step_group(&mut c);
     for p in PROBLEMS {
         let mut g = c.benchmark_group(format!("taylor/{p:?}"));
         for m in [
@@ -745,4 +774,47 @@ fn main() {
         g.finish();
     }
     c.final_summary();
+}
+
+/// What a step costs besides its jet: B5 at tol 1e-10 (order 13) whole, its jets alone, the
+/// same steps on replayed coefficients, and the construction.
+fn step_group(c: &mut Criterion) {
+    let tol = 1e-10;
+    let cfg = TaylorConfig::with_tol(tol, tol);
+    let mut g = c.benchmark_group("step");
+    g.bench_function("B5 tol 1e-10 whole", |b| {
+        b.iter(|| integrate(B5, black_box([0.0, 1.0, 1.0]), 20.0, Method::Taylor(tol)))
+    });
+    let (_, steps, _) = integrate(B5, [0.0, 1.0, 1.0], 20.0, Method::Taylor(tol));
+    let mut ws = Rows::new();
+    let mut coeffs = [[0.0; 3]; MAX_ORDER + 1];
+    let y = [0.3, 0.9, 0.95];
+    g.bench_function(format!("B5 order 13 jets x {steps}"), |b| {
+        b.iter(|| {
+            for _ in 0..steps {
+                B5.coefficients_into(&mut ws, 0.0, black_box(&y), 13, &mut coeffs);
+            }
+            coeffs[13]
+        })
+    });
+    let replay = Replay::b5();
+    let mut replayed = Taylor::new(&replay, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
+    let mut replay_steps = 0;
+    while replayed.t() < 20.0 {
+        replayed.step(20.0).unwrap();
+        replay_steps += 1;
+    }
+    g.bench_function(format!("B5 replayed jets, {replay_steps} steps"), |b| {
+        b.iter(|| {
+            let mut ode = Taylor::new(&replay, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap();
+            while ode.t() < 20.0 {
+                ode.step(20.0).unwrap();
+            }
+            *ode.y()
+        })
+    });
+    g.bench_function("Taylor::new B5", |b| {
+        b.iter(|| Taylor::new(B5, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap())
+    });
+    g.finish();
 }
