@@ -17,7 +17,7 @@
 //! The f64 orders k > L enter multiplied by hᵏ ≈ (e⁻²ρ)ᵏ, so their rounding is ≈ 2⁻⁵³e⁻²ᵏ
 //! relative to ‖y‖. Order, step and time follow the plain mode's rules exactly.
 
-use super::{LastStep, Taylor};
+use super::{LastStep, Taylor, max_abs, radius_of_convergence};
 use crate::exact::Dd;
 use crate::ode::{OdeError, check_stop};
 use crate::taylor::TaylorSystem;
@@ -61,7 +61,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 max_steps: self.cfg.max_steps,
             });
         }
-        let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let norm = max_abs(&self.y);
         let relative = self.cfg.rtol * norm > self.cfg.atol;
         let (p, factor) = self.rules[usize::from(!relative)];
         let Some(c) = self.coeffs.get_mut(..=p) else {
@@ -94,26 +94,17 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
-        let finite = |v: &f64| v.is_finite();
-        if !c.iter().all(|ck| ck.iter().all(finite))
-            || !low
-                .iter()
-                .all(|ck| ck.iter().all(|v| v.hi.is_finite() && v.lo.is_finite()))
-        {
-            return Err(OdeError::NonFiniteState { t: self.t });
-        }
+        // As in the plain step, no scan for finiteness: a NaN or ∞ in the coefficients, f64
+        // or double-double, reaches the new state through the sums and is caught there.
         let natural = match self.cfg.fixed_step {
             Some(h) => h,
             None => {
                 let scale = if relative { norm } else { 1.0 };
-                let log_radius = [p - 1, p]
-                    .iter()
-                    .map(|&k| {
-                        let ck = c[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                        (scale / ck).ln() / k as f64
-                    })
-                    .fold(f64::INFINITY, f64::min);
-                factor * log_radius.exp()
+                let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
+                let Some(rho) = radius_of_convergence(scale, norms, p) else {
+                    return Err(OdeError::NonFiniteState { t: self.t });
+                };
+                factor * rho
             }
         }
         .min(self.cfg.h_max);
