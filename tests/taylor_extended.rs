@@ -240,3 +240,48 @@ fn the_extended_mode_is_refused_where_it_cannot_be_had() {
         matches!(none.validate(), Err(OdeError::InvalidParameter { value, .. }) if value == 0.0)
     );
 }
+
+/// Tolerances below 1e-16 are taken at their word in the extended mode: the Jorba–Zou order
+/// ⌈1 − ½ ln ε⌉ is 22 at 1e-18 and 25 at 1e-20, and the run still lands on the reference.
+#[test]
+fn tolerances_below_double_precision_set_the_order() {
+    let exact = exact_at_200(
+        [3.0, 5.0, 7.0],
+        [
+            -0.20025294777805186,
+            -1.966298347069268,
+            0.30605484348211964,
+        ],
+    );
+    for (tol, order) in [(1e-18, 22), (1e-20, 25)] {
+        let cfg = TaylorConfig::with_tol(tol, tol).extended_orders(6);
+        let mut ode = Taylor::new(free_body([3.0, 5.0, 7.0]), 0.0, M0, cfg).unwrap();
+        ode.step(200.0).unwrap();
+        assert_eq!(ode.last_step().0, order);
+        ode.advance_to(200.0).unwrap();
+        assert!(max_err(ode.y(), &exact) <= 1e-15);
+    }
+}
+
+/// The time enters in double-double: for x' = t, c₁ = t keeps the low word given and
+/// c₂ = ½.
+#[test]
+fn the_time_series_is_double_double() {
+    let mut a = Arena::new();
+    let (x, t) = (a.coordinate("x"), a.coordinate("t"));
+    let tape = TaylorTape::new(&a, [x], [t], Some(t), &[], 10).unwrap();
+    let mut c = [[0.0; 1]; 4];
+    let mut low = [[Dd::default(); 1]; 3];
+    let t0 = Dd { hi: 1.0, lo: 1e-20 };
+    assert!(tape.coefficients_extended_into(
+        &mut Vec::new(),
+        t0,
+        &[Dd::from(0.0)],
+        3,
+        &mut c,
+        &mut low
+    ));
+    assert_eq!(low[1][0], t0);
+    assert_eq!(low[2][0], Dd::from(0.5));
+    assert_eq!(c[3][0], 0.0);
+}

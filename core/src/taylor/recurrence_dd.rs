@@ -149,4 +149,28 @@ mod tests {
             assert!(e.abs() < 1e-30, "order {k}: {e:e}");
         }
     }
+    /// √(3 + τ) to order 8 in double-double: its square, formed again by the Cauchy
+    /// product, must give back 3 + τ to 30 digits at every order.
+    #[test]
+    fn square_root_squares_back() {
+        let st = 9;
+        let mut w = vec![0.0; DdTable::len(2, st)];
+        let mut c = DdTable { w: &mut w, st };
+        c.set(0, 0, Dd::from(3.0));
+        c.set(0, 1, Dd::from(1.0));
+        let sqrt = SeriesStep {
+            out: 1,
+            op: SeriesOp::Sqrt(0),
+        };
+        for k in 0..st {
+            step(&mut c, &[], &sqrt, k);
+        }
+        for k in 0..st {
+            let square = dot_dd((0..=k).map(|j| (c.get(1, j), c.get(1, k - j))));
+            let want = [3.0, 1.0].get(k).copied().unwrap_or(0.0);
+            let e = (square - Dd::from(want)).to_f64();
+            assert!(e.abs() < 1e-30, "order {k}: {e:e}");
+        }
+        assert!(c.get(1, 0).lo != 0.0, "√3 carries a low word");
+    }
 }
