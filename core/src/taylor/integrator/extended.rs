@@ -119,19 +119,26 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         // L, the highest double-double order (low_len ≥ 1 since the table has row 0).
         let last = low_len - 1;
+        // Horner with the order outside and the components inside, so that the N chains
+        // overlap in the processor: s = Σ_{k>L} c_k h^(k−L−1) in f64, then the
+        // double-double orders L … 1.
         let hd = Dd::from(h);
+        let mut s = [0.0; N];
+        for ck in c[last + 1..].iter().rev() {
+            for (si, cki) in s.iter_mut().zip(ck) {
+                *si = *si * h + cki;
+            }
+        }
+        let mut acc = s.map(Dd::from);
+        for ck in low[1..].iter().rev() {
+            for (a, cki) in acc.iter_mut().zip(ck) {
+                *a = *a * hd + *cki;
+            }
+        }
         let mut y_new = [0.0; N];
         let mut comp_new = [0.0; N];
         for i in 0..N {
-            let mut s = 0.0;
-            for ck in c[last + 1..].iter().rev() {
-                s = s * h + ck[i];
-            }
-            let mut acc = Dd::from(s);
-            for ck in low[1..].iter().rev() {
-                acc = acc * hd + ck[i];
-            }
-            let sum = y[i] + acc * hd;
+            let sum = y[i] + acc[i] * hd;
             y_new[i] = sum.hi;
             comp_new[i] = -sum.lo;
         }
