@@ -239,6 +239,12 @@ fn the_extended_mode_is_refused_where_it_cannot_be_had() {
     assert!(
         matches!(none.validate(), Err(OdeError::InvalidParameter { value, .. }) if value == 0.0)
     );
+    // Nor more than any order can be: the table of L + 1 rows is never sized from a wild L.
+    let wild = TaylorConfig::with_tol(1e-16, 1e-16).extended_orders(usize::MAX);
+    assert!(matches!(
+        Taylor::new(free_body([3.0, 5.0, 7.0]), 0.0, M0, wild),
+        Err(OdeError::InvalidParameter { .. })
+    ));
 }
 
 /// Tolerances below 1e-16 are taken at their word in the extended mode: the Jorba–Zou order

@@ -2,6 +2,7 @@
 //! order and a step.
 
 use crate::ode::OdeError;
+use crate::taylor::MAX_TAYLOR_ORDER;
 
 /// Settings of [`Taylor`](super::Taylor). Every field has a documented default
 /// (`TaylorConfig::default()`), so callers override only what they mean.
@@ -108,8 +109,8 @@ impl TaylorConfig {
     ///
     /// # Errors
     /// [`OdeError::InvalidTolerance`], [`OdeError::InvalidStep`] or
-    /// [`OdeError::InvalidParameter`] (`max_order` or `order` below 2, `extended` below 1)
-    /// for the first field out of range.
+    /// [`OdeError::InvalidParameter`] (`max_order` or `order` below 2, `extended` outside
+    /// `1 ..= MAX_TAYLOR_ORDER`) for the first field out of range.
     pub fn validate(&self) -> Result<(), OdeError> {
         let pos = |v: f64| v.is_finite() && v > 0.0;
         if !pos(self.rtol) || !pos(self.atol) {
@@ -141,10 +142,10 @@ impl TaylorConfig {
             });
         }
         if let Some(low) = self.extended
-            && low < 1
+            && !(1..=MAX_TAYLOR_ORDER).contains(&low)
         {
             return Err(OdeError::InvalidParameter {
-                name: "extended (orders in double-double, at least 1)",
+                name: "extended (orders in double-double, 1 ..= MAX_TAYLOR_ORDER)",
                 value: low as f64,
             });
         }
