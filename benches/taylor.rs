@@ -18,7 +18,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::Criterion;
-use precess::exact::FreeBodyExact;
+use precess::exact::{Dd, FreeBodyExact};
 use precess::ode::{
     AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
 };
@@ -163,6 +163,34 @@ impl TaylorSystem<3> for B5Before {
     }
 }
 
+/// B5's coefficients at its initial state replayed at every step: a jet that costs a copy, so
+/// that an integration with it times the step itself (the `step` group).
+struct Replay(Vec<[f64; 3]>);
+impl Replay {
+    fn b5() -> Self {
+        let mut c = vec![[0.0; 3]; MAX_ORDER + 1];
+        B5.coefficients_into(&mut Rows::new(), 0.0, &[0.0, 1.0, 1.0], MAX_ORDER, &mut c);
+        Self(c)
+    }
+}
+impl TaylorSystem<3> for Replay {
+    type Workspace = ();
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients_into(
+        &self,
+        _ws: &mut (),
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
+        c[0] = *y;
+        c[1..=order].copy_from_slice(&self.0[1..=order]);
+    }
+}
+
 /// The torque-free body in body momentum: ṁ = m × (I⁻¹ m) = (a0 m1 m2, a1 m2 m0, a2 m0 m1).
 struct FreeBody([f64; 3]);
 impl FreeBody {
@@ -209,6 +237,86 @@ impl TaylorSystem<3> for FreeBody {
             (m0[k + 1], m1[k + 1], m2[k + 1]) = (next[0], next[1], next[2]);
             c[k + 1] = next;
         }
+    }
+}
+
+/// The double-double orders of the "Taylor extended" rows (`TaylorConfig::extended_orders`).
+const EXTENDED_ORDERS: usize = 6;
+
+/// A system y'_p = a_p y_q y_r over the cyclic (p, q, r), B5 and the free body, with the
+/// double-double low orders of the extended mode (`coefficients_extended_into`) written by
+/// hand beside the `f64` jet of `plain`: the constants `a` are in double-double, so that
+/// neither 0.51 nor 1/I₃ − 1/I₂ is rounded once for the run.
+struct Extended<S> {
+    plain: S,
+    a: [Dd; 3],
+}
+impl Extended<B5> {
+    /// B5 with −0.51 = −51/100 to 32 digits (the reference's 0.51 is decimal).
+    fn b5() -> Self {
+        let one = Dd::from(1.0);
+        Self {
+            plain: B5,
+            a: [one, -one, -(Dd::from(51.0) / Dd::from(100.0))],
+        }
+    }
+}
+impl Extended<FreeBody> {
+    fn free_body(inertia: [f64; 3]) -> Self {
+        let inv = inertia.map(|i| Dd::from(1.0) / Dd::from(i));
+        Self {
+            plain: FreeBody(inertia),
+            a: [inv[2] - inv[1], inv[0] - inv[2], inv[1] - inv[0]],
+        }
+    }
+}
+impl<S: System<3>> System<3> for Extended<S> {
+    fn rhs(&self, t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
+        self.plain.rhs(t, y, d);
+    }
+}
+impl<S: TaylorSystem<3>> TaylorSystem<3> for Extended<S> {
+    type Workspace = S::Workspace;
+    fn max_order(&self) -> usize {
+        self.plain.max_order()
+    }
+    fn coefficients_into(
+        &self,
+        ws: &mut S::Workspace,
+        t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
+        self.plain.coefficients_into(ws, t, y, order, c);
+    }
+    fn coefficients_extended_into(
+        &self,
+        ws: &mut S::Workspace,
+        t: Dd,
+        y: &[Dd; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+        low: &mut [[Dd; 3]],
+    ) -> bool {
+        self.plain
+            .coefficients_into(ws, t.to_f64(), &y.map(Dd::to_f64), order, c);
+        let Some(last) = low.len().checked_sub(1).map(|l| l.min(order)) else {
+            return true;
+        };
+        // The state's series are the output rows themselves: y_{k+1} = a·(y_q y_r)_k/(k+1).
+        low[0] = *y;
+        for k in 0..last {
+            let dot = |q: usize, r: usize| Dd::dot((0..=k).map(|j| (low[j][q], low[k - j][r])));
+            let d = (k + 1) as f64;
+            let next = [
+                (self.a[0] * dot(1, 2)).div_f64(d),
+                (self.a[1] * dot(2, 0)).div_f64(d),
+                (self.a[2] * dot(0, 1)).div_f64(d),
+            ];
+            low[k + 1] = next;
+        }
+        true
     }
 }
 
@@ -367,6 +475,8 @@ enum Problem {
 #[derive(Clone, Copy, Debug)]
 enum Method {
     Taylor(f64),
+    /// Taylor in the extended mode (B5 and the free bodies only).
+    TaylorExtended(f64),
     Dop853(f64),
     Vern9(f64),
 }
@@ -375,6 +485,7 @@ impl Method {
     fn label(&self) -> String {
         match self {
             Method::Taylor(t) => format!("Taylor tol {t:.0e}"),
+            Method::TaylorExtended(t) => format!("Taylor ext tol {t:.0e}"),
             Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
             Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
         }
@@ -403,6 +514,10 @@ fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
             Taylor::new(sys, 0.0, y0, TaylorConfig::with_tol(tol, tol)).unwrap(),
             t_end,
         ),
+        Method::TaylorExtended(tol) => {
+            let cfg = TaylorConfig::with_tol(tol, tol).extended_orders(EXTENDED_ORDERS);
+            done(Taylor::new(sys, 0.0, y0, cfg).unwrap(), t_end)
+        }
         Method::Dop853(tol) => done(
             Dop853::new(sys, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
             t_end,
@@ -416,13 +531,23 @@ fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
 
 /// Runs `m` on problem `p`: (error against the reference, steps, rhs evaluations).
 fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u64) {
+    let extended = matches!(m, Method::TaylorExtended(_));
     let free = |inertia: [f64; 3], exact: &[f64; 3]| {
-        let (y, s, e) = integrate(FreeBody(inertia), [0.0, 2.0, 0.01], 200.0, m);
+        let m0 = [0.0, 2.0, 0.01];
+        let (y, s, e) = if extended {
+            integrate(Extended::free_body(inertia), m0, 200.0, m)
+        } else {
+            integrate(FreeBody(inertia), m0, 200.0, m)
+        };
         (max_err(&y, exact), s, e)
     };
     match p {
         Problem::B5 => {
-            let (y, s, e) = integrate(B5, [0.0, 1.0, 1.0], 20.0, m);
+            let (y, s, e) = if extended {
+                integrate(Extended::b5(), [0.0, 1.0, 1.0], 20.0, m)
+            } else {
+                integrate(B5, [0.0, 1.0, 1.0], 20.0, m)
+            };
             (max_err(&y, &B5_Y20), s, e)
         }
         Problem::Free357 => free([3.0, 5.0, 7.0], &refs.free357),
@@ -430,6 +555,8 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
         Problem::HeavyTop => {
             let t_end = 10.0 * top.period;
             let (period, s, e) = match m {
+                // The heavy tops' jets have no double-double orders (the table skips them).
+                Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
                 Method::Taylor(tol) => heavy_top_period(
                     &mut Taylor::new(top.sys, 0.0, top.y0, TaylorConfig::with_tol(tol, tol))
                         .unwrap(),
@@ -455,6 +582,7 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             let y0 = [0.0, 20f64.to_radians(), 0.0, 0.0, 0.0, 150.0];
             let chart = TopChart::declared(&SpinningTop);
             let (period, s, e) = match m {
+                Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
                 Method::Taylor(tol) => heavy_top_period_with(
                     &mut Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
                         .unwrap(),
@@ -531,6 +659,7 @@ fn methods() -> Vec<Method> {
     let tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
     let mut v: Vec<Method> = tols.iter().map(|&t| Method::Taylor(t)).collect();
     v.extend([1e-15, 1e-16].map(Method::Taylor));
+    v.extend([1e-15, 1e-16, 1e-17, 1e-18].map(Method::TaylorExtended));
     v.extend(tols.map(Method::Dop853));
     v.extend(tols.map(Method::Vern9));
     v.push(Method::Vern9(1e-15));
@@ -567,6 +696,11 @@ fn table(top: &HeavyTop, refs: &References) {
             continue;
         }
         for m in methods() {
+            if matches!(m, Method::TaylorExtended(_))
+                && matches!(p, Problem::HeavyTop | Problem::TopAngles)
+            {
+                continue;
+            }
             let (err, steps, evals) = run(p, m, top, refs);
             let (t, t_min) = median_time(|| {
                 black_box(run(black_box(p), black_box(m), top, refs));
@@ -622,6 +756,7 @@ fn main() {
         });
     }
     g.finish();
+    step_group(&mut c);
     for p in PROBLEMS {
         let mut g = c.benchmark_group(format!("taylor/{p:?}"));
         for m in [
@@ -632,7 +767,54 @@ fn main() {
         ] {
             g.bench_function(m.label(), |b| b.iter(|| run(p, black_box(m), &top, &refs)));
         }
+        if matches!(p, Problem::B5 | Problem::Free357 | Problem::Free359) {
+            let m = Method::TaylorExtended(1e-16);
+            g.bench_function(m.label(), |b| b.iter(|| run(p, black_box(m), &top, &refs)));
+        }
         g.finish();
     }
     c.final_summary();
+}
+
+/// What a step costs besides its jet: B5 at tol 1e-10 (order 13) whole, its jets alone, the
+/// same steps on replayed coefficients, and the construction.
+fn step_group(c: &mut Criterion) {
+    let tol = 1e-10;
+    let cfg = TaylorConfig::with_tol(tol, tol);
+    let mut g = c.benchmark_group("step");
+    g.bench_function("B5 tol 1e-10 whole", |b| {
+        b.iter(|| integrate(B5, black_box([0.0, 1.0, 1.0]), 20.0, Method::Taylor(tol)))
+    });
+    let (_, steps, _) = integrate(B5, [0.0, 1.0, 1.0], 20.0, Method::Taylor(tol));
+    let mut ws = Rows::new();
+    let mut coeffs = [[0.0; 3]; MAX_ORDER + 1];
+    let y = [0.3, 0.9, 0.95];
+    g.bench_function(format!("B5 order 13 jets x {steps}"), |b| {
+        b.iter(|| {
+            for _ in 0..steps {
+                B5.coefficients_into(&mut ws, 0.0, black_box(&y), 13, &mut coeffs);
+            }
+            coeffs[13]
+        })
+    });
+    let replay = Replay::b5();
+    let mut replayed = Taylor::new(&replay, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
+    let mut replay_steps = 0;
+    while replayed.t() < 20.0 {
+        replayed.step(20.0).unwrap();
+        replay_steps += 1;
+    }
+    g.bench_function(format!("B5 replayed jets, {replay_steps} steps"), |b| {
+        b.iter(|| {
+            let mut ode = Taylor::new(&replay, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap();
+            while ode.t() < 20.0 {
+                ode.step(20.0).unwrap();
+            }
+            *ode.y()
+        })
+    });
+    g.bench_function("Taylor::new B5", |b| {
+        b.iter(|| Taylor::new(B5, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap())
+    });
+    g.finish();
 }

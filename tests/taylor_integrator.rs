@@ -396,3 +396,47 @@ fn bad_input_and_failures_are_typed_errors() {
         Err(OdeError::OutsideLastStep { .. })
     ));
 }
+
+/// The oscillator with one coefficient replaced by a bad value: `(order, value)`.
+struct Poisoned(usize, f64);
+impl TaylorSystem<2> for Poisoned {
+    fn max_order(&self) -> usize {
+        40
+    }
+    type Workspace = ();
+    fn coefficients_into(
+        &self,
+        ws: &mut (),
+        t: f64,
+        y: &[f64; 2],
+        order: usize,
+        c: &mut [[f64; 2]],
+    ) {
+        Oscillator.coefficients_into(ws, t, y, order, c);
+        if let Some(ck) = c.get_mut(self.0) {
+            ck[1] = self.1;
+        }
+    }
+}
+
+#[test]
+fn a_non_finite_coefficient_at_any_order_is_reported() {
+    // tol 1e-10: order 13. The step reads the last two rows for its size; every row reaches
+    // the new state through the sum. Either way the error is NonFiniteState, nothing moves.
+    for cfg in [
+        TaylorConfig::with_tol(1e-10, 1e-10),
+        TaylorConfig::fixed(13, 0.1),
+    ] {
+        for k in 1..=13 {
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                let mut ode = Taylor::new(Poisoned(k, bad), 0.0, [1.0, 0.0], cfg).unwrap();
+                let err = ode.step(1.0).unwrap_err();
+                assert!(
+                    matches!(err, OdeError::NonFiniteState { t } if t == 0.0),
+                    "c_{k} = {bad}, {cfg:?}: {err:?}"
+                );
+                assert_eq!((ode.t(), *ode.y()), (0.0, [1.0, 0.0]));
+            }
+        }
+    }
+}

@@ -3,9 +3,11 @@
 use thiserror::Error;
 
 use super::recurrence;
+use super::recurrence_dd::{self, DdTable};
 use super::tape::{ScalarOp, Tape, Value};
 use super::{MAX_TAYLOR_ORDER, TaylorSystem};
 use crate::codegen::{BindingError, Bindings, Program};
+use crate::exact::Dd;
 use crate::sym::{Arena, ExprId};
 
 /// Why a [`TaylorTape`] could not be built.
@@ -97,10 +99,21 @@ impl From<BindingError> for TaylorError {
 /// approx::assert_relative_eq!(c[2][0], -2.0); // −ω²/2!
 /// approx::assert_relative_eq!(c[4][0], 16.0 / 24.0); // ω⁴/4!
 /// ```
+///
+/// # Double-double low orders
+/// [`TaylorSystem::coefficients_extended_into`] is implemented for tapes made of sums,
+/// differences, scalings, products, squares, quotients and square roots: the constants
+/// (parameters combined by the scalar operations) are then evaluated in double-double too,
+/// so that `1/I₃ − 1/I₂` is not rounded once for the whole run. A tape with a sine or
+/// cosine, of a series or of a constant, returns `false` there: this crate has no
+/// double-double sine ([`TaylorTape::extends`] tells in advance).
 #[derive(Debug)]
 pub struct TaylorTape<const N: usize> {
     tape: Tape,
     scalars: Vec<f64>,
+    /// The scalars in double-double, when every operation of the tape has a double-double
+    /// recurrence (`None` otherwise).
+    scalars_dd: Option<Vec<Dd>>,
     max_order: usize,
 }
 
@@ -165,11 +178,19 @@ impl<const N: usize> TaylorTape<N> {
             };
             scalars.push(v);
         }
+        let scalars_dd = scalars_in_dd(&tape, &value_of);
         Ok(TaylorTape {
             tape,
             scalars,
+            scalars_dd,
             max_order,
         })
+    }
+
+    /// Whether [`TaylorSystem::coefficients_extended_into`] computes the low orders in
+    /// double-double for this tape (no sine or cosine anywhere in it).
+    pub fn extends(&self) -> bool {
+        self.scalars_dd.is_some()
     }
 
     /// The decomposed right-hand side.
@@ -199,8 +220,8 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         let order = order.min(self.max_order).min(top);
         let st = self.max_order + 1;
         let len = self.tape.series_count() * st;
-        if ws.len() != len {
-            ws.clear();
+        // Longer is fine: the extended mode keeps its double-double table after this one.
+        if ws.len() < len {
             ws.resize(len, 0.0);
         }
         let c = ws.as_mut_slice();
@@ -234,4 +255,93 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
             }
         }
     }
+
+    fn coefficients_extended_into(
+        &self,
+        ws: &mut Vec<f64>,
+        t: Dd,
+        y: &[Dd; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+        low: &mut [[Dd; N]],
+    ) -> bool {
+        let Some(sdd) = self.scalars_dd.as_deref() else {
+            return false;
+        };
+        let Some(top) = coeffs.len().checked_sub(1) else {
+            return false;
+        };
+        self.coefficients_into(ws, t.to_f64(), &y.map(Dd::to_f64), order, coeffs);
+        let order = order.min(self.max_order).min(top);
+        let Some(last) = low.len().checked_sub(1).map(|l| l.min(order)) else {
+            return true;
+        };
+        // The double-double table, orders 0 ..= last of every series, after the f64 one.
+        let base = self.tape.series_count() * (self.max_order + 1);
+        let st = last + 1;
+        let need = base + DdTable::len(self.tape.series_count(), st);
+        if ws.len() < need {
+            ws.resize(need, 0.0);
+        }
+        let mut c = DdTable {
+            w: &mut ws[base..need],
+            st,
+        };
+        for (i, &yi) in y.iter().enumerate() {
+            c.set(i as u32, 0, yi);
+        }
+        if let Some(ti) = self.tape.time() {
+            for k in 0..st {
+                let v = match k {
+                    0 => t,
+                    1 => Dd::from(1.0),
+                    _ => Dd::default(),
+                };
+                c.set(ti, k, v);
+            }
+        }
+        low[0] = *y;
+        for k in 0..last {
+            for s in &self.tape.steps {
+                recurrence_dd::step(&mut c, sdd, s, k);
+            }
+            let div = (k + 1) as f64;
+            for (i, out) in self.tape.outputs.iter().enumerate() {
+                let fk = match *out {
+                    Value::Series(x) => c.get(x, k),
+                    Value::Scalar(x) if k == 0 => sdd[x as usize],
+                    Value::Scalar(_) => Dd::default(),
+                };
+                let v = fk.div_f64(div);
+                c.set(i as u32, k + 1, v);
+                low[k + 1][i] = v;
+            }
+        }
+        true
+    }
+}
+
+/// The tape's scalars in double-double, `None` if the tape holds an operation without a
+/// double-double recurrence (a sine or cosine). `value_of` gives a symbol's bound value.
+fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) -> Option<Vec<Dd>> {
+    if !tape.steps.iter().all(|s| recurrence_dd::supported(&s.op)) {
+        return None;
+    }
+    let mut out: Vec<Dd> = Vec::with_capacity(tape.scalars.len());
+    for op in &tape.scalars {
+        let x = |i: u32| out[i as usize];
+        let v = match *op {
+            ScalarOp::Const(c) => Dd::from(c),
+            ScalarOp::Symbol(s) => Dd::from(value_of(s)),
+            ScalarOp::Add(a, b) => x(a) + x(b),
+            ScalarOp::Sub(a, b) => x(a) - x(b),
+            ScalarOp::Mul(a, b) => x(a) * x(b),
+            ScalarOp::Div(a, b) => x(a) / x(b),
+            ScalarOp::Neg(a) => -x(a),
+            ScalarOp::Sqrt(a) => x(a).sqrt(),
+            ScalarOp::Sin(_) | ScalarOp::Cos(_) => return None,
+        };
+        out.push(v);
+    }
+    Some(out)
 }

@@ -15,12 +15,15 @@ mod integrator;
 mod interpreted;
 pub mod kernels;
 mod recurrence;
+mod recurrence_dd;
 mod tape;
 
 pub use emit::TaylorTokens;
 pub use integrator::{Taylor, TaylorConfig, solve, solve_dense};
 pub use interpreted::{TaylorError, TaylorTape};
 pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};
+
+use crate::exact::Dd;
 
 /// The largest maximum order a [`TaylorTape`] or a `taylor = K` key accepts. Double
 /// precision needs about `−½ ln ε + 1 ≈ 19`; past 100 the coefficient table only costs
@@ -82,6 +85,73 @@ pub trait TaylorSystem<const N: usize> {
     fn coefficients(&self, t: f64, y: &[f64; N], order: usize, coeffs: &mut [[f64; N]]) {
         self.coefficients_into(&mut Self::Workspace::default(), t, y, order, coeffs);
     }
+
+    /// The coefficients with their low orders in double-double, from a state given in
+    /// double-double: what the extended mode of the integrator
+    /// ([`TaylorConfig::extended_orders`]) steps with. Returns `false`, having written
+    /// nothing it promises, when the system cannot (the default).
+    ///
+    /// With `y = y.hi + y.lo` (each component an unevaluated sum, [`Dd`]) and `t` likewise,
+    /// an implementation that returns `true` has written
+    /// - `coeffs[k]`, `k = 0, …, order`: the coefficients in `f64`, as
+    ///   [`TaylorSystem::coefficients_into`] would from the rounded state (a few ulps of
+    ///   difference are allowed: these orders enter the step multiplied by hᵏ, k > `low`);
+    /// - `low[k]`, `k = 0, …, L` with `L = min(low.len() − 1, order)`: the same coefficients
+    ///   in double-double, `|low[k] − c_k| ≲ 2⁻¹⁰⁰·Σ|terms|` where `c_k` is the exact
+    ///   coefficient of the solution through `(t, y)` — the recurrences run on the exact
+    ///   state, with the system's constants in double-double, and each sum rounded to about
+    ///   106 bits.
+    ///
+    /// Why the split works: a step adds Σₖ c_k hᵏ with h ≈ e⁻²ρ, so c_k hᵏ ≈ e⁻²ᵏ‖y‖ and
+    /// the `f64` rounding of an order k > L costs about 2⁻⁵³e⁻²ᵏ relative; at L = 6 that is
+    /// below 1e-22. The first orders, c₀ = y and c₁ = f(y), carry the digits that a rounded
+    /// state and a rounded f lose at every step.
+    ///
+    /// The caller guarantees `order ≤ self.max_order()`, `coeffs.len() > order` and
+    /// `low.len() ≥ 1`; `low` longer than `order + 1` is filled to `order` only.
+    ///
+    /// ```
+    /// use precess_core::exact::Dd;
+    /// use precess_core::taylor::TaylorSystem;
+    /// /// y' = y/3: c_k = y/(3ᵏ k!), which no double holds exactly from k = 1.
+    /// struct Third;
+    /// impl TaylorSystem<1> for Third {
+    ///     type Workspace = ();
+    ///     fn max_order(&self) -> usize { 30 }
+    ///     fn coefficients_into(&self, _ws: &mut (), _t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+    ///         c[0] = *y;
+    ///         for k in 1..=order {
+    ///             c[k][0] = c[k - 1][0] / (3 * k) as f64;
+    ///         }
+    ///     }
+    ///     fn coefficients_extended_into(&self, ws: &mut (), t: Dd, y: &[Dd; 1], order: usize, c: &mut [[f64; 1]], low: &mut [[Dd; 1]]) -> bool {
+    ///         self.coefficients_into(ws, t.hi, &[y[0].hi], order, c);
+    ///         low[0] = *y;
+    ///         for k in 1..low.len().min(order + 1) {
+    ///             low[k][0] = low[k - 1][0] / Dd::from((3 * k) as f64);
+    ///         }
+    ///         true
+    ///     }
+    /// }
+    /// let mut c = [[0.0; 1]; 4];
+    /// let mut low = [[Dd::default(); 1]; 2];
+    /// assert!(Third.coefficients_extended_into(&mut (), Dd::from(0.0), &[Dd::from(1.0)], 3, &mut c, &mut low));
+    /// // c₁ = 1/3 to about 32 digits: 3·c₁ − 1 vanishes far below an ulp of 1.
+    /// let residual = (low[1][0] * Dd::from(3.0) - Dd::from(1.0)).to_f64();
+    /// assert!(residual.abs() < 1e-30);
+    /// ```
+    fn coefficients_extended_into(
+        &self,
+        ws: &mut Self::Workspace,
+        t: Dd,
+        y: &[Dd; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+        low: &mut [[Dd; N]],
+    ) -> bool {
+        let _ = (ws, t, y, order, coeffs, low);
+        false
+    }
 }
 
 impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
@@ -100,6 +170,18 @@ impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
         coeffs: &mut [[f64; N]],
     ) {
         (**self).coefficients_into(ws, t, y, order, coeffs)
+    }
+
+    fn coefficients_extended_into(
+        &self,
+        ws: &mut Self::Workspace,
+        t: Dd,
+        y: &[Dd; N],
+        order: usize,
+        coeffs: &mut [[f64; N]],
+        low: &mut [[Dd; N]],
+    ) -> bool {
+        (**self).coefficients_extended_into(ws, t, y, order, coeffs, low)
     }
 }
 

@@ -15,11 +15,13 @@
 
 mod config;
 mod drivers;
+mod extended;
 
 pub use config::TaylorConfig;
 pub use drivers::{solve, solve_dense};
 
 use super::TaylorSystem;
+use crate::exact::Dd;
 use crate::ode::{OdeError, Stats, check_finite, check_stop};
 
 /// An adaptive Taylor integrator of a [`TaylorSystem`] `S` of dimension `N`.
@@ -72,6 +74,8 @@ pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     coeffs: Vec<[f64; N]>,
     /// The system's scratch, kept across steps so that a jet neither allocates nor zeroes.
     ws: S::Workspace,
+    /// The double-double coefficients of the extended mode, orders 0 … L (empty when off).
+    low: Vec<[Dd; N]>,
     last: LastStep<N>,
     stats: Stats,
     jets: u64,
@@ -94,7 +98,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// # Errors
     /// An invalid configuration ([`TaylorConfig::validate`]), a system whose
     /// [`TaylorSystem::max_order`] is below 2 ([`OdeError::InvalidParameter`] naming
-    /// `TaylorSystem::max_order`), a non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
+    /// `TaylorSystem::max_order`), the extended mode asked of a system that does not
+    /// implement it ([`OdeError::InvalidParameter`] naming `TaylorConfig::extended`), a
+    /// non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
     /// ([`OdeError::NonFiniteInitialState`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: TaylorConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
@@ -115,6 +121,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         };
         let rules = [rule(cfg.rtol), rule(cfg.atol)];
         let highest = rules[0].0.max(rules[1].0);
+        let mut ws = S::Workspace::default();
+        let low = match cfg.extended {
+            Some(l) => extended::low_table(&sys, &mut ws, l, t0, &y0)?,
+            None => Vec::new(),
+        };
         Ok(Self {
             sys,
             cfg,
@@ -124,7 +135,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y: y0,
             y_comp: [0.0; N],
             coeffs: vec![[0.0; N]; highest + 1],
-            ws: S::Workspace::default(),
+            ws,
+            low,
             last: LastStep {
                 t: t0,
                 t_lo: 0.0,
@@ -202,6 +214,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`OdeError::StepSizeUnderflow`] when the step no longer changes t. The state is left
     /// as it was on error.
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        if !self.low.is_empty() {
+            return self.step_extended(t_limit);
+        }
         check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(());
@@ -212,7 +227,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 max_steps: self.cfg.max_steps,
             });
         }
-        let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let norm = max_abs(&self.y);
         let relative = self.cfg.rtol * norm > self.cfg.atol;
         let (p, factor) = self.rules[usize::from(!relative)];
         let Some(c) = self.coeffs.get_mut(..=p) else {
@@ -226,24 +241,18 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             .coefficients_into(&mut self.ws, self.t, &self.y, p, c);
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
-        if c.iter().any(|ck| ck.iter().any(|v| !v.is_finite())) {
-            return Err(OdeError::NonFiniteState { t: self.t });
-        }
+        // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
+        // new state through Horner (h > 0), which is checked below, and an ∞ in the two
+        // rows the step size reads is caught by `radius`.
         let natural = match self.cfg.fixed_step {
             Some(h) => h,
             None => {
                 let scale = if relative { norm } else { 1.0 };
-                // ρ = min over k of (s/‖c_k‖)^(1/k), as exp of the least logarithm: one
-                // exponential instead of two powers.
-                let log_radius = [p - 1, p]
-                    .iter()
-                    .map(|&k| {
-                        let ck = c[k].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-                        (scale / ck).ln() / k as f64
-                    })
-                    .fold(f64::INFINITY, f64::min);
-                let radius = log_radius.exp();
-                factor * radius
+                let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
+                let Some(rho) = radius_of_convergence(scale, norms, p) else {
+                    return Err(OdeError::NonFiniteState { t: self.t });
+                };
+                factor * rho
             }
         }
         .min(self.cfg.h_max);
@@ -256,19 +265,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         if h <= 0.0 || (!clamped && self.t + h == self.t) {
             return Err(OdeError::StepSizeUnderflow { t: self.t, h });
         }
-        let mut y_new = self.y;
-        let mut comp_new = self.y_comp;
-        for i in 0..N {
-            // Horner for the increment Σ_{k≥1} c_k hᵏ, then a compensated addition.
-            let mut s = c[p][i];
-            for ck in c[1..p].iter().rev() {
-                s = s * h + ck[i];
-            }
-            let inc = s * h - comp_new[i];
-            let sum = y_new[i] + inc;
-            comp_new[i] = (sum - y_new[i]) - inc;
-            y_new[i] = sum;
-        }
+        let increment = horner_increment(c, h);
+        let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
         if y_new.iter().any(|v| !v.is_finite()) {
             return Err(OdeError::NonFiniteState { t: self.t });
         }
@@ -332,14 +330,70 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let p = self.last.order;
         let mut out = self.last.y;
         if let Some(c) = self.coeffs.get(..=p) {
-            for (i, o) in out.iter_mut().enumerate() {
-                let mut s = c[p][i];
-                for ck in c[1..p].iter().rev() {
-                    s = s * theta + ck[i];
-                }
-                *o += s * theta - self.last.y_comp[i];
+            let increment = horner_increment(c, theta);
+            for ((o, inc), comp) in out.iter_mut().zip(increment).zip(self.last.y_comp) {
+                *o += inc - comp;
             }
         }
         Ok(out)
     }
+}
+
+/// ‖c‖∞ of a state or of one coefficient row. NaN entries are skipped (`f64::max`): in a
+/// coefficient they reach the new state through [`horner_increment`] and are reported there.
+fn max_abs<const N: usize>(c: &[f64; N]) -> f64 {
+    c.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+}
+
+/// ρ = min over k ∈ {p − 1, p} of (scale/‖c_k‖∞)^(1/k) from the norms of the two rows, as the
+/// exponential of the least logarithm (two `ln` and one `exp`, no `powf`); +∞ when both rows
+/// are zero. `None` when a norm is not finite: an overflowed coefficient would otherwise give
+/// ρ = 0 and pass for a step-size underflow.
+///
+/// A logarithm and exponential of our own (the exponent from the bits, a short series for
+/// the rest, 1e-10 relative on ρ) were measured slower than the library's table-driven ones:
+/// their polynomial chains are longer than a table lookup.
+fn radius_of_convergence(scale: f64, norms: [f64; 2], p: usize) -> Option<f64> {
+    if !(norms[0].is_finite() && norms[1].is_finite()) {
+        return None;
+    }
+    let log_radius = |norm: f64, k: usize| (scale / norm).ln() / k as f64;
+    Some(
+        log_radius(norms[0], p - 1)
+            .min(log_radius(norms[1], p))
+            .exp(),
+    )
+}
+
+/// Σ_{k=1}^{p} c_k θᵏ for every component (p = c.len() − 1 ≥ 1), by Horner with the order in
+/// the outer loop: the N components are N independent chains of multiply-adds that overlap,
+/// where a loop over components outside would wait on each chain in turn. Each component's
+/// operations are the same, in the same order, as its own Horner sum.
+fn horner_increment<const N: usize>(c: &[[f64; N]], theta: f64) -> [f64; N] {
+    let Some((top, lower)) = c.split_last() else {
+        return [0.0; N];
+    };
+    let mut s = *top;
+    for ck in lower.iter().skip(1).rev() {
+        for (si, cki) in s.iter_mut().zip(ck) {
+            *si = *si * theta + cki;
+        }
+    }
+    s.map(|si| si * theta)
+}
+
+/// y + increment with Kahan's compensated summation: returns the new state and the rounding
+/// of each addition, which the next addition subtracts.
+fn kahan_add<const N: usize>(
+    mut y: [f64; N],
+    mut comp: [f64; N],
+    increment: [f64; N],
+) -> ([f64; N], [f64; N]) {
+    for ((yi, ci), inc) in y.iter_mut().zip(comp.iter_mut()).zip(increment) {
+        let inc = inc - *ci;
+        let sum = *yi + inc;
+        *ci = (sum - *yi) - inc;
+        *yi = sum;
+    }
+    (y, comp)
 }

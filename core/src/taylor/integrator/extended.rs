@@ -1,0 +1,171 @@
+//! The extended mode of [`Taylor`]: steps whose low orders are computed and summed in
+//! double-double ([`TaylorConfig::extended`](super::TaylorConfig::extended)).
+//!
+//! In the plain mode the state is carried compensated (y plus its Kahan term), but the jet
+//! is computed from the rounded y and c₁ = f(y) is itself rounded: each step adds an error
+//! of about 2⁻⁵³‖h f‖ that no compensation recovers, and on a problem that amplifies
+//! perturbations (a body next to its unstable axis) these errors decide the last digits.
+//! Here the state is the unevaluated sum y = y_hi + y_lo, with y_lo = −(Kahan term) so that
+//! the fields and the dense output of the plain mode keep their meaning, and a step
+//! 1. asks the system for c_k in `f64` for all k ≤ p and in double-double for k ≤ L
+//!    ([`TaylorSystem::coefficients_extended_into`]), computed from (y_hi, y_lo);
+//! 2. sums the increment Δ = Σₖ₌₁ᵖ c_k hᵏ by Horner's rule, orders p … L + 1 in `f64` and
+//!    then L … 1 in double-double (compensated Horner):
+//!    s = Σₖ₌ₗ₊₁ᵖ c_k hᵏ⁻ᴸ⁻¹ (f64), S = (…((s·h + c_L)·h + c_{L−1})·h … + c₁), Δ = S·h;
+//! 3. adds Δ to (y_hi, y_lo) in double-double: the new state is rounded at 2⁻¹⁰⁶, not 2⁻⁵³.
+//!
+//! The f64 orders k > L enter multiplied by hᵏ ≈ (e⁻²ρ)ᵏ, so their rounding is ≈ 2⁻⁵³e⁻²ᵏ
+//! relative to ‖y‖. Order, step and time follow the plain mode's rules exactly.
+
+use super::{LastStep, Taylor, max_abs, radius_of_convergence};
+use crate::exact::Dd;
+use crate::ode::{OdeError, check_stop};
+use crate::taylor::TaylorSystem;
+
+/// The double-double coefficient table of the extended mode (`low + 1` rows, orders
+/// 0 … low), after checking once, at (t0, y0), that the system computes them.
+///
+/// # Errors
+/// [`OdeError::InvalidParameter`] naming `TaylorConfig::extended` when the system's
+/// [`TaylorSystem::coefficients_extended_into`] returns `false`.
+pub(super) fn low_table<S: TaylorSystem<N>, const N: usize>(
+    sys: &S,
+    ws: &mut S::Workspace,
+    low: usize,
+    t0: f64,
+    y0: &[f64; N],
+) -> Result<Vec<[Dd; N]>, OdeError> {
+    let mut table = vec![[Dd::default(); N]; low + 1];
+    let mut probe = [[0.0; N]; 2];
+    let y = y0.map(Dd::from);
+    if !sys.coefficients_extended_into(ws, Dd::from(t0), &y, 1, &mut probe, &mut table) {
+        return Err(OdeError::InvalidParameter {
+            name: "TaylorConfig::extended (the system computes no double-double coefficients)",
+            value: low as f64,
+        });
+    }
+    Ok(table)
+}
+
+impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
+    /// [`Taylor::step`] in the extended mode (see the module's docs); same contract, same
+    /// errors.
+    pub(super) fn step_extended(&mut self, t_limit: f64) -> Result<(), OdeError> {
+        check_stop(self.t, t_limit)?;
+        if t_limit == self.t {
+            return Ok(());
+        }
+        if self.stats.steps >= self.cfg.max_steps {
+            return Err(OdeError::MaxStepsExceeded {
+                t: self.t,
+                max_steps: self.cfg.max_steps,
+            });
+        }
+        let norm = max_abs(&self.y);
+        let relative = self.cfg.rtol * norm > self.cfg.atol;
+        let (p, factor) = self.rules[usize::from(!relative)];
+        let Some(c) = self.coeffs.get_mut(..=p) else {
+            // order_for never exceeds the order allocated for the tighter tolerance.
+            return Err(OdeError::InvalidParameter {
+                name: "order",
+                value: p as f64,
+            });
+        };
+        let low_len = self.low.len().min(p + 1);
+        let low = &mut self.low[..low_len];
+        let mut y = [Dd::default(); N];
+        for (yi, (&hi, &comp)) in y.iter_mut().zip(self.y.iter().zip(&self.y_comp)) {
+            *yi = Dd { hi, lo: -comp };
+        }
+        let t = Dd {
+            hi: self.t,
+            lo: self.t_lo,
+        };
+        if !self
+            .sys
+            .coefficients_extended_into(&mut self.ws, t, &y, p, c, low)
+        {
+            // low_table checked the system at construction; one that changes its mind is
+            // refused the same way.
+            return Err(OdeError::InvalidParameter {
+                name: "TaylorConfig::extended (the system computes no double-double coefficients)",
+                value: low_len as f64,
+            });
+        }
+        self.jets += 1;
+        self.stats.rhs_evals += p as u64;
+        // As in the plain step, no scan for finiteness: a NaN or ∞ in the coefficients, f64
+        // or double-double, reaches the new state through the sums and is caught there.
+        let natural = match self.cfg.fixed_step {
+            Some(h) => h,
+            None => {
+                let scale = if relative { norm } else { 1.0 };
+                let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
+                let Some(rho) = radius_of_convergence(scale, norms, p) else {
+                    return Err(OdeError::NonFiniteState { t: self.t });
+                };
+                factor * rho
+            }
+        }
+        .min(self.cfg.h_max);
+        if natural.is_nan() {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        let remaining = (t_limit - self.t) - self.t_lo;
+        let clamped = natural >= remaining;
+        let h = if clamped { remaining } else { natural };
+        if h <= 0.0 || (!clamped && self.t + h == self.t) {
+            return Err(OdeError::StepSizeUnderflow { t: self.t, h });
+        }
+        // L, the highest double-double order (low_len ≥ 1 since the table has row 0).
+        let last = low_len - 1;
+        // Horner with the order outside and the components inside, so that the N chains
+        // overlap in the processor: s = Σ_{k>L} c_k h^(k−L−1) in f64, then the
+        // double-double orders L … 1.
+        let hd = Dd::from(h);
+        let mut s = [0.0; N];
+        for ck in c[last + 1..].iter().rev() {
+            for (si, cki) in s.iter_mut().zip(ck) {
+                *si = *si * h + cki;
+            }
+        }
+        let mut acc = s.map(Dd::from);
+        for ck in low[1..].iter().rev() {
+            for (a, cki) in acc.iter_mut().zip(ck) {
+                *a = *a * hd + *cki;
+            }
+        }
+        let mut y_new = [0.0; N];
+        let mut comp_new = [0.0; N];
+        for i in 0..N {
+            let sum = y[i] + acc[i] * hd;
+            y_new[i] = sum.hi;
+            comp_new[i] = -sum.lo;
+        }
+        if y_new.iter().any(|v| !v.is_finite()) {
+            return Err(OdeError::NonFiniteState { t: self.t });
+        }
+        self.last = LastStep {
+            t: self.t,
+            t_lo: self.t_lo,
+            y: self.y,
+            y_comp: self.y_comp,
+            h,
+            order: p,
+        };
+        if clamped {
+            (self.t, self.t_lo) = (t_limit, 0.0);
+        } else {
+            let s = self.t + h;
+            let b = s - self.t;
+            let err = (self.t - (s - b)) + (h - b);
+            let lo = self.t_lo + err;
+            let hi = s + lo;
+            (self.t, self.t_lo) = (hi, lo - (hi - s));
+        }
+        self.y = y_new;
+        self.y_comp = comp_new;
+        self.stats.steps += 1;
+        Ok(())
+    }
+}

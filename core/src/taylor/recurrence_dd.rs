@@ -1,0 +1,176 @@
+//! The recurrences of a [`Tape`](super::Tape) in double-double, for the low orders of the
+//! extended mode ([`TaylorSystem::coefficients_extended_into`](super::TaylorSystem)).
+//!
+//! The same recurrences as [`super::recurrence`], every sum and product in double-double
+//! ([`Dd`], about 106 bits): a Cauchy product `Σⱼ a_j b_{k−j}` is summed with each leading
+//! product exact and every rounding kept ([`Dd::dot`]), so its error is about
+//! 2⁻¹⁰⁴·k·Σ|a_j b_{k−j}| instead of 2⁻⁵³·k·Σ|…| in `f64`. The coefficients live in the `f64` workspace of
+//! [`super::TaylorTape`], two words per coefficient (hi, lo), after the `f64` table.
+//!
+//! Only the operations with an algebraic recurrence are carried: sums, scalings, products,
+//! squares, quotients and square roots. A sine–cosine pair would need sin and cos of the
+//! order-0 coefficient to 106 bits, which this crate does not compute, so a tape holding
+//! one is not extended (the caller sees `false`).
+
+use super::tape::{SeriesOp, SeriesStep};
+use crate::exact::Dd;
+
+/// `Σⱼ aⱼ bⱼ` in double-double over the pairs given ([`Dd::dot`]): the order-k
+/// coefficient of a product when the pairs are `(a_j, b_{k−j})`.
+pub(crate) fn dot_dd(pairs: impl Iterator<Item = (Dd, Dd)>) -> Dd {
+    Dd::dot(pairs)
+}
+
+/// A table of double-double coefficients stored series-major in `f64` pairs:
+/// `w[2(x·st + k)]` and the next word are the hi and lo of series `x` at order `k`.
+pub(crate) struct DdTable<'a> {
+    pub(crate) w: &'a mut [f64],
+    pub(crate) st: usize,
+}
+
+impl DdTable<'_> {
+    /// The words a table of `series` series to order `st − 1` takes.
+    pub(crate) fn len(series: usize, st: usize) -> usize {
+        2 * series * st
+    }
+
+    #[inline]
+    pub(crate) fn get(&self, x: u32, k: usize) -> Dd {
+        let i = 2 * (x as usize * self.st + k);
+        Dd {
+            hi: self.w[i],
+            lo: self.w[i + 1],
+        }
+    }
+
+    #[inline]
+    pub(crate) fn set(&mut self, x: u32, k: usize, v: Dd) {
+        let i = 2 * (x as usize * self.st + k);
+        self.w[i] = v.hi;
+        self.w[i + 1] = v.lo;
+    }
+
+    /// `Σⱼ a_j b_{k−j}` for `j` in `from ..= to`.
+    fn cauchy(&self, a: u32, b: u32, k: usize, from: usize, to: usize) -> Dd {
+        dot_dd((from..=to).map(|j| (self.get(a, j), self.get(b, k - j))))
+    }
+}
+
+/// Whether [`step`] carries `op` (see the module's docs).
+pub(crate) fn supported(op: &SeriesOp) -> bool {
+    !matches!(op, SeriesOp::SinCos(_))
+}
+
+/// Writes the order-`k` coefficient of `step`'s output in double-double, every operand known
+/// to order `k` and the output to order `k − 1`; `s` holds the scalars in double-double.
+/// Does nothing for an operation [`supported`] refuses (the caller checks first).
+pub(crate) fn step(c: &mut DdTable<'_>, s: &[Dd], step: &SeriesStep, k: usize) {
+    let out = step.out;
+    let sc = |x: u32| s[x as usize];
+    let v = match step.op {
+        SeriesOp::Add(a, b) => c.get(a, k) + c.get(b, k),
+        SeriesOp::Sub(a, b) => c.get(a, k) - c.get(b, k),
+        SeriesOp::AddScalar(a, x) if k == 0 => c.get(a, 0) + sc(x),
+        SeriesOp::SubScalar(a, x) if k == 0 => c.get(a, 0) - sc(x),
+        SeriesOp::ScalarSub(x, a) if k == 0 => sc(x) - c.get(a, 0),
+        SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => c.get(a, k),
+        SeriesOp::ScalarSub(_, a) | SeriesOp::Neg(a) => -c.get(a, k),
+        SeriesOp::Scale(a, x) => sc(x) * c.get(a, k),
+        SeriesOp::DivScalar(a, x) => c.get(a, k) / sc(x),
+        SeriesOp::Mul(a, b) => c.cauchy(a, b, k, 0, k),
+        SeriesOp::Square(a) => c.cauchy(a, a, k, 0, k),
+        SeriesOp::Div(a, b) if k == 0 => c.get(a, 0) / c.get(b, 0),
+        SeriesOp::Div(a, b) => (c.get(a, k) - c.cauchy(b, out, k, 1, k)) / c.get(b, 0),
+        SeriesOp::ScalarDiv(x, a) if k == 0 => sc(x) / c.get(a, 0),
+        SeriesOp::ScalarDiv(_, a) => -(c.cauchy(a, out, k, 1, k) / c.get(a, 0)),
+        SeriesOp::Sqrt(a) if k == 0 => c.get(a, 0).sqrt(),
+        SeriesOp::Sqrt(a) => {
+            let sum = if k >= 2 {
+                c.cauchy(out, out, k, 1, k - 1)
+            } else {
+                Dd::default()
+            };
+            (c.get(a, k) - sum) / (Dd::from(2.0) * c.get(out, 0))
+        }
+        SeriesOp::SinCos(_) => return,
+    };
+    c.set(out, k, v);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The double-double Cauchy product of integer series whose terms need up to 106 bits is
+    /// exact: checked against the same sum in 128-bit integers.
+    #[test]
+    fn cauchy_of_wide_integers_is_exact() {
+        // a_j = 2⁵⁰ + 2j + 1, b_j = 3·2⁴⁸ − 7j: wide, so each product has ~100 significant
+        // bits, which f64 would round, and the sums stay below 2¹⁰³, which two doubles hold.
+        let a: Vec<i128> = (0..9).map(|j| (1i128 << 50) + 2 * j + 1).collect();
+        let b: Vec<i128> = (0..9).map(|j| 3 * (1i128 << 48) - 7 * j).collect();
+        for k in 0..9usize {
+            let exact: i128 = (0..=k).map(|j| a[j] * b[k - j]).sum();
+            let dd = dot_dd((0..=k).map(|j| (Dd::from(a[j] as f64), Dd::from(b[k - j] as f64))));
+            // hi + lo as an integer: both parts are integers here (|lo| ≥ 1 or 0).
+            let got = dd.hi as i128 + dd.lo as i128;
+            assert_eq!(got, exact, "order {k}");
+            let plain: f64 = (0..=k).map(|j| a[j] as f64 * b[k - j] as f64).sum();
+            if k > 0 {
+                assert_ne!(
+                    plain as i128, exact,
+                    "f64 would have been exact at order {k}"
+                );
+            }
+        }
+    }
+
+    /// A quotient's series to order 6 in double-double: 1/(3 − τ) = Σ τᵏ/3ᵏ⁺¹, whose
+    /// coefficients are exact rationals; each is checked by 3ᵏ⁺¹·c_k = 1 to 30 digits.
+    #[test]
+    fn quotient_matches_the_rational_series() {
+        let st = 7;
+        let mut w = vec![0.0; DdTable::len(3, st)];
+        let mut c = DdTable { w: &mut w, st };
+        // series 0: 1 (constant), series 1: 3 − τ, series 2: the quotient.
+        c.set(0, 0, Dd::from(1.0));
+        c.set(1, 0, Dd::from(3.0));
+        c.set(1, 1, Dd::from(-1.0));
+        let div = SeriesStep {
+            out: 2,
+            op: SeriesOp::Div(0, 1),
+        };
+        for k in 0..st {
+            step(&mut c, &[], &div, k);
+        }
+        for k in 0..st {
+            let scaled = c.get(2, k) * Dd::from(3f64.powi(k as i32 + 1));
+            let e = (scaled - Dd::from(1.0)).to_f64();
+            assert!(e.abs() < 1e-30, "order {k}: {e:e}");
+        }
+    }
+    /// √(3 + τ) to order 8 in double-double: its square, formed again by the Cauchy
+    /// product, must give back 3 + τ to 30 digits at every order.
+    #[test]
+    fn square_root_squares_back() {
+        let st = 9;
+        let mut w = vec![0.0; DdTable::len(2, st)];
+        let mut c = DdTable { w: &mut w, st };
+        c.set(0, 0, Dd::from(3.0));
+        c.set(0, 1, Dd::from(1.0));
+        let sqrt = SeriesStep {
+            out: 1,
+            op: SeriesOp::Sqrt(0),
+        };
+        for k in 0..st {
+            step(&mut c, &[], &sqrt, k);
+        }
+        for k in 0..st {
+            let square = dot_dd((0..=k).map(|j| (c.get(1, j), c.get(1, k - j))));
+            let want = [3.0, 1.0].get(k).copied().unwrap_or(0.0);
+            let e = (square - Dd::from(want)).to_f64();
+            assert!(e.abs() < 1e-30, "order {k}: {e:e}");
+        }
+        assert!(c.get(1, 0).lo != 0.0, "√3 carries a low word");
+    }
+}
