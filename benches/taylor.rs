@@ -9,7 +9,7 @@
 //! `cargo bench --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
 //! few configurations with criterion (`-- jet` for the cost of a jet against one evaluation
-//! of f). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
+//! of f, `-- step` for what a step costs besides its jet). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
 //! the same problems and tolerances.
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]

@@ -243,7 +243,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.stats.rhs_evals += p as u64;
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
         // new state through Horner (h > 0), which is checked below, and an ∞ in the two
-        // rows the step size reads is caught by `radius`.
+        // rows the step size reads is caught by `radius_of_convergence`.
         let natural = match self.cfg.fixed_step {
             Some(h) => h,
             None => {
