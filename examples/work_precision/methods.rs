@@ -493,6 +493,12 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
             false,
             super::taylor::interpreted_runs(),
         ),
+        m(
+            "Taylor, extended",
+            Setting::Tolerance,
+            false,
+            super::taylor::extended_runs(),
+        ),
         m("Vern9", Setting::Tolerance, false, vern9),
         m(
             "DOPRI5",

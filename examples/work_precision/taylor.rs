@@ -1,8 +1,10 @@
 //! The Taylor integrator of issue 15 on every problem it applies to: (a) and (b) through
 //! the recurrences `taylor_system!` generates from their equations written in the source,
 //! and, for comparison, the same equations built at run time and interpreted
-//! ([`TaylorTape`], the curve "Taylor, interpreted"); (c) and (d) through the recurrences
-//! the derive generates for the report's top (`taylor = 20` on its `#[top]`).
+//! ([`TaylorTape`], the curve "Taylor, interpreted"), and the same tapes in the extended
+//! mode, the low orders of each step in double-double (the curve "Taylor, extended"); (c)
+//! and (d) through the recurrences the derive generates for the report's top (`taylor = 20`
+//! on its `#[top]`).
 
 use std::error::Error;
 
@@ -14,8 +16,13 @@ use super::problems::{
     B5_T, B5_Y0, B5_Y20, Problem, SEP_I, SEP_M0, SEP_T, SpinningTop, TopCase, max_diff,
 };
 
-/// The highest order of (a) and (b)'s recurrences: the integrator picks ≈ 17 at 1e-14.
-const ORDER: usize = 24;
+/// The highest order of the interpreted recurrences: the integrator picks ≈ 17 at 1e-14
+/// and 22 at the extended mode's 1e-18.
+const EXTENDED_ORDER: usize = 30;
+
+/// The orders the extended mode carries in double-double (six is where the error on the
+/// torque-free bodies stops falling: `docs/taylor-integrator.md`).
+const EXTENDED_LOW_ORDERS: usize = 6;
 
 precess::taylor_system! {
     /// Euler's torque-free equations ṁ = m × I⁻¹m in principal axes (problem (a)): each
@@ -49,21 +56,25 @@ fn euler_body() -> EulerBody {
 }
 
 /// The same equations as [`EulerBody`] (`b5` false, with I = `SEP_I`) or [`B5`], built in
-/// the engine at run time and interpreted.
+/// the engine at run time and interpreted. The constants are formed by the tape from exact
+/// parameters (1/I from I, 0.51 as 51/100), so that the extended mode carries them in
+/// double-double and integrates the problem its reference solves, not the f64 neighbour.
 fn tape(b5: bool) -> Result<TaylorTape<3>, Box<dyn Error>> {
     let mut a = Arena::new();
     let y: [ExprId; 3] = ["y1", "y2", "y3"].map(|n| a.coordinate(n));
     // Component i is c_i · y_j · y_k for (i, j, k) cyclic.
     let scales: [ExprId; 3] = if b5 {
-        let k = a.number("0.51")?;
+        let (num, den) = (a.parameter("num"), a.parameter("den"));
+        let k = a.div(num, den)?;
         [a.one(), a.integer(-1), a.neg(k)]
     } else {
-        let inv = ["inv_i1", "inv_i2", "inv_i3"].map(|n| a.parameter(n));
-        [
-            a.sub(inv[2], inv[1]),
-            a.sub(inv[0], inv[2]),
-            a.sub(inv[1], inv[0]),
-        ]
+        let inertia = ["i1", "i2", "i3"].map(|n| a.parameter(n));
+        let [r1, r2, r3] = [
+            a.recip(inertia[0])?,
+            a.recip(inertia[1])?,
+            a.recip(inertia[2])?,
+        ];
+        [a.sub(r3, r2), a.sub(r1, r3), a.sub(r2, r1)]
     };
     let mut rhs = [a.zero(); 3];
     for (i, out) in rhs.iter_mut().enumerate() {
@@ -71,10 +82,12 @@ fn tape(b5: bool) -> Result<TaylorTape<3>, Box<dyn Error>> {
         let scaled = a.mul(scales[i], y[j]);
         *out = a.mul(scaled, y[k]);
     }
-    let inv = SEP_I.map(|i| 1.0 / i);
-    let values = [("inv_i1", inv[0]), ("inv_i2", inv[1]), ("inv_i3", inv[2])];
-    let values: &[(&str, f64)] = if b5 { &[] } else { &values };
-    Ok(TaylorTape::new(&a, y, rhs, None, values, ORDER)?)
+    let values: &[(&str, f64)] = if b5 {
+        &[("num", 51.0), ("den", 100.0)]
+    } else {
+        &[("i1", SEP_I[0]), ("i2", SEP_I[1]), ("i3", SEP_I[2])]
+    };
+    Ok(TaylorTape::new(&a, y, rhs, None, values, EXTENDED_ORDER)?)
 }
 
 fn config(tol: f64) -> TaylorConfig {
@@ -122,16 +135,45 @@ pub fn taylor_runs(heavy: TopCase, fast: TopCase) -> Result<Vec<ProblemRun>, Box
 /// Taylor's method on (a) and (b) with the same equations interpreted ([`TaylorTape`]),
 /// the price of not generating them.
 pub fn interpreted_runs() -> Vec<ProblemRun> {
-    let sep: Runner = Box::new(|tol| {
+    tape_runs(config, vec![1e-6, 1e-8, 1e-10, 1e-12, 1e-14], 1e-8)
+}
+
+/// Taylor's method on (a) and (b) with the low orders of each step in double-double (the
+/// extended mode, on the interpreted recurrences): the error below the double floor.
+pub fn extended_runs() -> Vec<ProblemRun> {
+    let extended = |tol| config(tol).extended_orders(EXTENDED_LOW_ORDERS);
+    tape_runs(extended, vec![1e-10, 1e-12, 1e-14, 1e-16, 1e-18], 1e-12)
+}
+
+/// (a) and (b) on their interpreted tapes under the configuration `cfg` makes of a
+/// tolerance.
+fn tape_runs(cfg: fn(f64) -> TaylorConfig, ladder: Vec<f64>, quick: f64) -> Vec<ProblemRun> {
+    let sep: Runner = Box::new(move |tol| {
         let reference = super::problems::separatrix_reference();
-        let (y, e, s) = run(tape(false)?, SEP_M0, SEP_T, tol)?;
-        Ok(outcome(max_diff(&y, &reference), e, s))
+        let s = solve(tape(false)?, 0.0, SEP_M0, SEP_T, &[], cfg(tol))?;
+        Ok(outcome(
+            max_diff(&s.y, &reference),
+            s.stats.rhs_evals,
+            s.stats.steps,
+        ))
     });
-    let b5: Runner = Box::new(|tol| {
-        let (y, e, s) = run(tape(true)?, B5_Y0, B5_T, tol)?;
-        Ok(outcome(max_diff(&y, &B5_Y20), e, s))
+    let b5: Runner = Box::new(move |tol| {
+        let s = solve(tape(true)?, 0.0, B5_Y0, B5_T, &[], cfg(tol))?;
+        Ok(outcome(
+            max_diff(&s.y, &B5_Y20),
+            s.stats.rhs_evals,
+            s.stats.steps,
+        ))
     });
-    problem_runs(vec![(Problem::Separatrix, sep), (Problem::B5, b5)])
+    [(Problem::Separatrix, sep), (Problem::B5, b5)]
+        .into_iter()
+        .map(|(problem, run)| ProblemRun {
+            problem,
+            ladder: ladder.clone(),
+            quick,
+            run,
+        })
+        .collect()
 }
 
 fn problem_runs(runs: Vec<(Problem, Runner)>) -> Vec<ProblemRun> {
