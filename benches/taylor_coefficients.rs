@@ -1,5 +1,5 @@
 //! The price of one coefficient evaluation at order 20: the recurrences `taylor = 20`
-//! generates for a heavy top (6 components), a general top (full inertia tensor, centre off
+//! generates for B5 (3 components, at orders 13 and 20), a heavy top (6), a general top (full inertia tensor, centre off
 //! the axis), a free body (13) and a three-link chain on universal joints (12), the first
 //! and the free body against the same recurrences interpreted from a tape built at run time
 //! ([`TaylorTape`]).
@@ -49,6 +49,16 @@ struct GeneralTop;
 #[body(link3, parent = link2, joint = universal(axes = [x, y], at = [0.0, 0.0, -0.5]),
        q = [a3, b3], parts(rod(mass = 1.0, length = 0.5, at = [0.0, 0.0, -0.25])))]
 struct Chain3;
+
+precess::taylor_system! {
+    /// DETEST B5, as equations.
+    struct B5;
+    state [y1, y2, y3];
+    taylor = 20;
+    d/dt y1 = y2 * y3;
+    d/dt y2 = -y1 * y3;
+    d/dt y3 = -0.51 * y1 * y2;
+}
 
 const ORDER: usize = 20;
 
@@ -114,6 +124,14 @@ fn bench(c: &mut Criterion) {
     group.bench_function("top/rhs", |b| {
         b.iter(|| SpinningTop.accel_in(AngleSequence::Zxz, 0.0, black_box(&y6)))
     });
+    let y3 = [0.3, 0.9, 0.95];
+    let mut c3 = [[0.0; 3]; ORDER + 1];
+    let mut ws = Default::default();
+    for order in [13, ORDER] {
+        group.bench_function(format!("B5/generated order {order}"), |b| {
+            b.iter(|| B5.coefficients_into(&mut ws, 0.0, black_box(&y3), order, &mut c3))
+        });
+    }
     let mut ws = Default::default();
     group.bench_function("general top/generated", |b| {
         b.iter(|| GeneralTop.coefficients_into(&mut ws, 0.0, black_box(&y6), ORDER, &mut c6))

@@ -176,6 +176,21 @@ impl Tape {
             quote!([#(#ids),*])
         };
         let (next_zero, next_k) = (next(quote!(0)), next(quote!(__k)));
+        let order_body = quote! {
+            #(#interiors)*
+            #(#steps)*
+            let __inv: f64 = 1.0 / ((__k + 1) as f64);
+            #outputs_k
+            coeffs[__k + 1] = #next_k;
+        };
+        // Unrolling the orders (each with its k a constant, so that every sum has a fixed
+        // length and no remainder loop) was measured slower: B5 at order 13 0.12 → 0.14 µs,
+        // the heavy top 1.3 → 1.7 µs, the free body 1.3 → 2.1 µs (the code grows K-fold).
+        let orders = quote! {
+            for __k in 1..__n {
+                #order_body
+            }
+        };
         let body = quote! {
             const __K: usize = #max_order;
             let ::core::option::Option::Some(__top) = coeffs.len().checked_sub(1) else {
@@ -200,13 +215,7 @@ impl Tape {
             #(#first)*
             #outputs_zero
             coeffs[1] = #next_zero;
-            for __k in 1..__n {
-                #(#interiors)*
-                #(#steps)*
-                let __inv: f64 = 1.0 / ((__k + 1) as f64);
-                #outputs_k
-                coeffs[__k + 1] = #next_k;
-            }
+            #orders
         };
         TaylorTokens {
             body,
@@ -231,8 +240,12 @@ impl Tape {
     /// loop over `j = 0 … k`: the first for small tapes, whose orders are a few short
     /// dependency chains, the second for large ones ([`SPLIT_PRODUCTS_MAX_SUMS`]).
     fn split_products(&self) -> bool {
-        let sums = self
-            .steps
+        self.sum_count() <= SPLIT_PRODUCTS_MAX_SUMS
+    }
+
+    /// The number of steps whose recurrence has a sum over the orders.
+    fn sum_count(&self) -> usize {
+        self.steps
             .iter()
             .filter(|st| {
                 matches!(
@@ -245,8 +258,7 @@ impl Tape {
                         | SeriesOp::SinCos(_)
                 )
             })
-            .count();
-        sums <= SPLIT_PRODUCTS_MAX_SUMS
+            .count()
     }
 
     /// The series that need no row: made by a step whose recurrence does not read its own
