@@ -8,7 +8,9 @@
 //! are sized once, on the first call). The scalars are `let`s computed once (literals
 //! inlined, so the compiler folds them); order 0 (the values themselves: `sin_cos`, `sqrt`,
 //! quotients) is straight-line code before the loop, and the loop over the orders k ≥ 1 runs
-//! each step's recurrence, its sums through [`super::kernels`].
+//! each step's recurrence, its sums through [`super::kernels`], in two phases: first the
+//! interior of every sum (the terms that read lower orders only), then the steps in program
+//! order with the terms that read order k (docs/taylor.md, "The order of the sums").
 
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -227,11 +229,11 @@ impl Tape {
 
 /// The most sums (products, squares, quotients, roots, sine–cosine pairs) a tape may have
 /// for its Cauchy products to be split into interior and boundary terms. Measured
-/// (`cargo bench --bench taylor_coefficients`): the split takes the heavy top (12 sums) and
-/// the free body (15) from 1.8 to 1.3 µs and 2.1 to 1.35 µs at order 20, and slows the
-/// general top (88) and the three-link chain by up to a quarter (their many independent
-/// sums already keep the processor busy, and the split's code is a third larger); the
-/// bound lies between.
+/// (`cargo bench --bench taylor_coefficients`): the split takes B5 (3 sums), the heavy top
+/// (12) and the free body (15) from 0.36 to 0.27 µs, 1.8 to 1.3 µs and 1.45 to 1.3 µs at
+/// order 20, and slowed the general top (88) and the three-link chain by up to a quarter
+/// (their many independent sums already keep the processor busy, and the split's code is a
+/// third larger); the bound lies between.
 const SPLIT_PRODUCTS_MAX_SUMS: usize = 32;
 
 impl Tape {
