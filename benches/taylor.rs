@@ -75,6 +75,18 @@ fn cauchy_two(a: &[f64], b: &[f64]) -> f64 {
     even + odd
 }
 
+/// Σ_{j=0}^{k} a_j b_{k−j} left to right, one accumulator: `kernels::cauchy` before it
+/// summed the interior first and the boundary pair last (kept for the `jet` group's
+/// before/after).
+#[inline]
+fn cauchy_left_to_right(a: &[f64], b: &[f64]) -> f64 {
+    let mut acc = 0.0;
+    for (x, y) in a.iter().zip(b.iter().rev()) {
+        acc += x * y;
+    }
+    acc
+}
+
 /// Coefficient series per variable (the layout the Cauchy products want), copied into the
 /// order-major layout of [`TaylorSystem::coefficients`] at the end.
 fn series<const N: usize>(y: &[f64; N]) -> [[f64; MAX_ORDER + 1]; N] {
@@ -188,6 +200,39 @@ impl TaylorSystem<3> for Replay {
     ) {
         c[0] = *y;
         c[1..=order].copy_from_slice(&self.0[1..=order]);
+    }
+}
+
+/// B5's recurrences as [`B5`] writes them, with the sums left to right (for the `jet`
+/// group: the boundary-last order of `kernels::cauchy` against the plain one).
+struct B5LeftToRight;
+impl TaylorSystem<3> for B5LeftToRight {
+    type Workspace = Rows;
+    fn max_order(&self) -> usize {
+        MAX_ORDER
+    }
+    fn coefficients_into(
+        &self,
+        ws: &mut Rows,
+        _t: f64,
+        y: &[f64; 3],
+        order: usize,
+        c: &mut [[f64; 3]],
+    ) {
+        let Some([s0, s1, s2]) = rows(ws, y) else {
+            return;
+        };
+        c[0] = *y;
+        for k in 0..order {
+            let d = 1.0 / (k + 1) as f64;
+            let next = [
+                cauchy_left_to_right(&s1[..=k], &s2[..=k]) * d,
+                -cauchy_left_to_right(&s0[..=k], &s2[..=k]) * d,
+                -0.51 * cauchy_left_to_right(&s0[..=k], &s1[..=k]) * d,
+            ];
+            (s0[k + 1], s1[k + 1], s2[k + 1]) = (next[0], next[1], next[2]);
+            c[k + 1] = next;
+        }
     }
 }
 
@@ -748,6 +793,21 @@ fn main() {
                 coeffs[order]
             })
         });
+        g.bench_function(
+            format!("B5 coefficients left-to-right order {order}"),
+            |b| {
+                b.iter(|| {
+                    B5LeftToRight.coefficients_into(
+                        &mut ws,
+                        0.0,
+                        black_box(&y),
+                        order,
+                        &mut coeffs,
+                    );
+                    coeffs[order]
+                })
+            },
+        );
         g.bench_function(format!("B5 coefficients before order {order}"), |b| {
             b.iter(|| {
                 B5Before.coefficients_into(&mut (), 0.0, black_box(&y), order, &mut coeffs);

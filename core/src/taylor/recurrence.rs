@@ -1,9 +1,10 @@
 //! The recurrences of one [`SeriesStep`] at one order, on coefficients stored series-major
 //! (`c[x·stride + k]` is the order-`k` coefficient of series `x`): what the interpreter
 //! runs, and the oracle the emitted code is tested against. The sums go through
-//! [`super::kernels`], as in the emitted code.
+//! [`super::kernels`], split as in the emitted code: the interior over the lower orders
+//! first, the terms that read order k last, so that both round alike.
 
-use super::kernels::{cauchy, square};
+use super::kernels::{cauchy, dot_reversed, square};
 use super::tape::{SeriesOp, SeriesStep};
 
 /// Writes the order-`k` coefficient of `step`'s output, every operand known to order `k`
@@ -30,12 +31,15 @@ pub(crate) fn step(c: &mut [f64], st: usize, s: &[f64], step: &SeriesStep, k: us
         SeriesOp::Square(a) => square(&row(c, st, a as usize)[..=k]),
         SeriesOp::Div(a, b) if k == 0 => at(c, a, 0) / at(c, b, 0),
         SeriesOp::Div(a, b) => {
-            let sum = cauchy(&row(c, st, b as usize)[1..=k], &row(c, st, out)[..k]);
-            (at(c, a, k) - sum) / at(c, b, 0)
+            // Σⱼ₌₁ᵏ b_j c_{k−j}: the interior j < k, then b_k c_0.
+            let (bs, cs) = (row(c, st, b as usize), row(c, st, out));
+            let sum = dot_reversed(&bs[1..k], &cs[1..k]) + bs[k] * cs[0];
+            (at(c, a, k) - sum) / bs[0]
         }
         SeriesOp::ScalarDiv(x, a) if k == 0 => sc(x) / at(c, a, 0),
         SeriesOp::ScalarDiv(_, a) => {
-            -cauchy(&row(c, st, a as usize)[1..=k], &row(c, st, out)[..k]) / at(c, a, 0)
+            let (xs, cs) = (row(c, st, a as usize), row(c, st, out));
+            -(dot_reversed(&xs[1..k], &cs[1..k]) + xs[k] * cs[0]) / xs[0]
         }
         SeriesOp::Sqrt(a) if k == 0 => at(c, a, 0).sqrt(),
         SeriesOp::Sqrt(a) => (at(c, a, k) - square(&row(c, st, out)[1..k])) / (2.0 * c[out * st]),
@@ -45,12 +49,14 @@ pub(crate) fn step(c: &mut [f64], st: usize, s: &[f64], step: &SeriesStep, k: us
                 at(c, a, 0).sin_cos()
             } else {
                 // d_k = k a_k: the derivative's coefficients, shared by both sums.
-                c[d * st + k] = k as f64 * at(c, a, k);
-                let dk = &row(c, st, d)[1..=k];
+                let dk = k as f64 * at(c, a, k);
+                c[d * st + k] = dk;
+                let ds = &row(c, st, d)[1..k];
+                let (ss, cs) = (row(c, st, sin), row(c, st, cos));
                 let inv = 1.0 / k as f64;
                 (
-                    cauchy(dk, &row(c, st, cos)[..k]) * inv,
-                    -cauchy(dk, &row(c, st, sin)[..k]) * inv,
+                    (dot_reversed(ds, &cs[1..k]) + dk * cs[0]) * inv,
+                    -(dot_reversed(ds, &ss[1..k]) + dk * ss[0]) * inv,
                 )
             };
             c[cos * st + k] = cv;
