@@ -15,11 +15,13 @@
 //! 3. adds Δ to (y_hi, y_lo) in double-double: the new state is rounded at 2⁻¹⁰⁶, not 2⁻⁵³.
 //!
 //! The f64 orders k > L enter multiplied by hᵏ ≈ (e⁻²ρ)ᵏ, so their rounding is ≈ 2⁻⁵³e⁻²ᵏ
-//! relative to ‖y‖. Order, step and time follow the plain mode's rules exactly.
+//! relative to ‖y‖. Order, step and time follow the plain mode's rules exactly: the two
+//! modes share the start (`Taylor::step_rule`), the step size (`Taylor::step_size`) and the
+//! end (`Taylor::commit_step`).
 
-use super::{LastStep, Taylor, max_abs, radius_of_convergence};
+use super::Taylor;
 use crate::exact::Dd;
-use crate::ode::{OdeError, check_stop};
+use crate::ode::OdeError;
 use crate::taylor::TaylorSystem;
 
 /// The double-double coefficient table of the extended mode (`low + 1` rows, orders
@@ -51,19 +53,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`Taylor::step`] in the extended mode (see the module's docs); same contract, same
     /// errors.
     pub(super) fn step_extended(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        check_stop(self.t, t_limit)?;
-        if t_limit == self.t {
+        let Some(rule) = self.step_rule(t_limit)? else {
             return Ok(());
-        }
-        if self.stats.steps >= self.cfg.max_steps {
-            return Err(OdeError::MaxStepsExceeded {
-                t: self.t,
-                max_steps: self.cfg.max_steps,
-            });
-        }
-        let norm = max_abs(&self.y);
-        let relative = self.cfg.rtol * norm > self.cfg.atol;
-        let (p, factor) = self.rules[usize::from(!relative)];
+        };
+        let p = rule.order;
         let Some(c) = self.coeffs.get_mut(..=p) else {
             // order_for never exceeds the order allocated for the tighter tolerance.
             return Err(OdeError::InvalidParameter {
@@ -96,27 +89,9 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.stats.rhs_evals += p as u64;
         // As in the plain step, no scan for finiteness: a NaN or ∞ in the coefficients, f64
         // or double-double, reaches the new state through the sums and is caught there.
-        let natural = match self.cfg.fixed_step {
-            Some(h) => h,
-            None => {
-                let scale = if relative { norm } else { 1.0 };
-                let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
-                let Some(rho) = radius_of_convergence(scale, norms, p) else {
-                    return Err(OdeError::NonFiniteState { t: self.t });
-                };
-                factor * rho
-            }
-        }
-        .min(self.cfg.h_max);
-        if natural.is_nan() {
-            return Err(OdeError::NonFiniteState { t: self.t });
-        }
-        let remaining = (t_limit - self.t) - self.t_lo;
-        let clamped = natural >= remaining;
-        let h = if clamped { remaining } else { natural };
-        if h <= 0.0 || (!clamped && self.t + h == self.t) {
-            return Err(OdeError::StepSizeUnderflow { t: self.t, h });
-        }
+        let c = &self.coeffs[..=p];
+        let (h, clamped) = self.step_size(c, rule, t_limit)?;
+        let low = &self.low[..low_len];
         // L, the highest double-double order (low_len ≥ 1 since the table has row 0).
         let last = low_len - 1;
         // Horner with the order outside and the components inside, so that the N chains
@@ -142,30 +117,6 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y_new[i] = sum.hi;
             comp_new[i] = -sum.lo;
         }
-        if y_new.iter().any(|v| !v.is_finite()) {
-            return Err(OdeError::NonFiniteState { t: self.t });
-        }
-        self.last = LastStep {
-            t: self.t,
-            t_lo: self.t_lo,
-            y: self.y,
-            y_comp: self.y_comp,
-            h,
-            order: p,
-        };
-        if clamped {
-            (self.t, self.t_lo) = (t_limit, 0.0);
-        } else {
-            let s = self.t + h;
-            let b = s - self.t;
-            let err = (self.t - (s - b)) + (h - b);
-            let lo = self.t_lo + err;
-            let hi = s + lo;
-            (self.t, self.t_lo) = (hi, lo - (hi - s));
-        }
-        self.y = y_new;
-        self.y_comp = comp_new;
-        self.stats.steps += 1;
-        Ok(())
+        self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
     }
 }

@@ -92,6 +92,15 @@ struct LastStep<const N: usize> {
     order: usize,
 }
 
+/// What a step's mode fixes before its jet: the order, the step factor, and the scale the
+/// coefficients are measured against (‖y‖∞ in the relative mode, 1 in the absolute).
+#[derive(Clone, Copy)]
+struct StepRule {
+    order: usize,
+    factor: f64,
+    scale: f64,
+}
+
 impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// Starts at `(t0, y0)`; validates everything before any work.
     ///
@@ -217,19 +226,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         if !self.low.is_empty() {
             return self.step_extended(t_limit);
         }
-        check_stop(self.t, t_limit)?;
-        if t_limit == self.t {
+        let Some(rule) = self.step_rule(t_limit)? else {
             return Ok(());
-        }
-        if self.stats.steps >= self.cfg.max_steps {
-            return Err(OdeError::MaxStepsExceeded {
-                t: self.t,
-                max_steps: self.cfg.max_steps,
-            });
-        }
-        let norm = max_abs(&self.y);
-        let relative = self.cfg.rtol * norm > self.cfg.atol;
-        let (p, factor) = self.rules[usize::from(!relative)];
+        };
+        let p = rule.order;
         let Some(c) = self.coeffs.get_mut(..=p) else {
             // order_for never exceeds the order allocated for the tighter tolerance.
             return Err(OdeError::InvalidParameter {
@@ -242,17 +242,56 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
-        // new state through Horner (h > 0), which is checked below, and an ∞ in the two
-        // rows the step size reads is caught by `radius_of_convergence`.
+        // new state through Horner (h > 0), which is checked in `commit_step`, and an ∞ in
+        // the two rows the step size reads is caught by `radius_of_convergence`.
+        let c = &self.coeffs[..=p];
+        let (h, clamped) = self.step_size(c, rule, t_limit)?;
+        let increment = horner_increment(c, h);
+        let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
+        self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
+    }
+
+    /// The start of a step, shared by both modes: the stop checks, then the order, the step
+    /// factor and the scale of the step's mode; `None` when `t_limit` is the current time
+    /// (nothing to do).
+    fn step_rule(&self, t_limit: f64) -> Result<Option<StepRule>, OdeError> {
+        check_stop(self.t, t_limit)?;
+        if t_limit == self.t {
+            return Ok(None);
+        }
+        if self.stats.steps >= self.cfg.max_steps {
+            return Err(OdeError::MaxStepsExceeded {
+                t: self.t,
+                max_steps: self.cfg.max_steps,
+            });
+        }
+        let norm = max_abs(&self.y);
+        let relative = self.cfg.rtol * norm > self.cfg.atol;
+        let (order, factor) = self.rules[usize::from(!relative)];
+        Ok(Some(StepRule {
+            order,
+            factor,
+            scale: if relative { norm } else { 1.0 },
+        }))
+    }
+
+    /// The step from the coefficients `c` (orders 0 … p) under `rule`, and whether it was
+    /// clamped to land on `t_limit`.
+    fn step_size(
+        &self,
+        c: &[[f64; N]],
+        rule: StepRule,
+        t_limit: f64,
+    ) -> Result<(f64, bool), OdeError> {
+        let p = rule.order;
         let natural = match self.cfg.fixed_step {
             Some(h) => h,
             None => {
-                let scale = if relative { norm } else { 1.0 };
                 let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
-                let Some(rho) = radius_of_convergence(scale, norms, p) else {
+                let Some(rho) = radius_of_convergence(rule.scale, norms, p) else {
                     return Err(OdeError::NonFiniteState { t: self.t });
                 };
-                factor * rho
+                rule.factor * rho
             }
         }
         .min(self.cfg.h_max);
@@ -265,8 +304,20 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         if h <= 0.0 || (!clamped && self.t + h == self.t) {
             return Err(OdeError::StepSizeUnderflow { t: self.t, h });
         }
-        let increment = horner_increment(c, h);
-        let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
+        Ok((h, clamped))
+    }
+
+    /// The end of a step, shared by both modes: checks the new state (y_new with its Kahan
+    /// term), keeps the step for dense output, and advances the time as a two-sum.
+    fn commit_step(
+        &mut self,
+        h: f64,
+        order: usize,
+        clamped: bool,
+        t_limit: f64,
+        y_new: [f64; N],
+        comp_new: [f64; N],
+    ) -> Result<(), OdeError> {
         if y_new.iter().any(|v| !v.is_finite()) {
             return Err(OdeError::NonFiniteState { t: self.t });
         }
@@ -276,7 +327,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y: self.y,
             y_comp: self.y_comp,
             h,
-            order: p,
+            order,
         };
         if clamped {
             (self.t, self.t_lo) = (t_limit, 0.0);
