@@ -19,7 +19,7 @@
 //! modes share the start (`Taylor::step_rule`), the step size (`Taylor::step_size`) and the
 //! end (`Taylor::commit_step`).
 
-use super::Taylor;
+use super::{Taylor, rows_to_order};
 use crate::exact::Dd;
 use crate::ode::OdeError;
 use crate::taylor::TaylorSystem;
@@ -57,13 +57,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             return Ok(());
         };
         let p = rule.order;
-        let Some(c) = self.coeffs.get_mut(..=p) else {
-            // order_for never exceeds the order allocated for the tighter tolerance.
-            return Err(OdeError::InvalidParameter {
-                name: "order",
-                value: p as f64,
-            });
-        };
+        let c = rows_to_order(&mut self.coeffs, p)?;
         let low_len = self.low.len().min(p + 1);
         let low = &mut self.low[..low_len];
         let mut y = [Dd::default(); N];

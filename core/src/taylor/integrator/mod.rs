@@ -230,13 +230,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             return Ok(());
         };
         let p = rule.order;
-        let Some(c) = self.coeffs.get_mut(..=p) else {
-            // order_for never exceeds the order allocated for the tighter tolerance.
-            return Err(OdeError::InvalidParameter {
-                name: "order",
-                value: p as f64,
-            });
-        };
+        let c = rows_to_order(&mut self.coeffs, p)?;
         self.sys
             .coefficients_into(&mut self.ws, self.t, &self.y, p, c);
         self.jets += 1;
@@ -388,6 +382,18 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         Ok(out)
     }
+}
+
+/// The coefficient rows of orders 0 … p. The rows are allocated at construction for the
+/// highest order either mode can pick, so this fails only if that invariant breaks.
+fn rows_to_order<const N: usize>(
+    coeffs: &mut [[f64; N]],
+    p: usize,
+) -> Result<&mut [[f64; N]], OdeError> {
+    coeffs.get_mut(..=p).ok_or(OdeError::InvalidParameter {
+        name: "order",
+        value: p as f64,
+    })
 }
 
 /// ‖c‖∞ of a state or of one coefficient row. NaN entries are skipped (`f64::max`): in a
