@@ -173,6 +173,7 @@ impl<const N: usize> TaylorTape<N> {
                 ScalarOp::Div(a, b) => x(a) / x(b),
                 ScalarOp::Neg(a) => -x(a),
                 ScalarOp::Sqrt(a) => x(a).sqrt(),
+                ScalarOp::Powf(a, r) => x(a).powf(r),
                 ScalarOp::Sin(a) => x(a).sin(),
                 ScalarOp::Cos(a) => x(a).cos(),
             };
@@ -339,7 +340,7 @@ fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) ->
             ScalarOp::Div(a, b) => x(a) / x(b),
             ScalarOp::Neg(a) => -x(a),
             ScalarOp::Sqrt(a) => x(a).sqrt(),
-            ScalarOp::Sin(_) | ScalarOp::Cos(_) => return None,
+            ScalarOp::Sin(_) | ScalarOp::Cos(_) | ScalarOp::Powf(..) => return None,
         };
         out.push(v);
     }
