@@ -31,7 +31,14 @@ pub struct OpCount {
 impl OpCount {
     /// All operations, each `sin_cos` pair counted once.
     pub fn total(&self) -> usize {
-        self.adds + self.muls + self.divs + self.negs + self.sqrts + self.powfs + self.trig + self.sin_cos
+        self.adds
+            + self.muls
+            + self.divs
+            + self.negs
+            + self.sqrts
+            + self.powfs
+            + self.trig
+            + self.sin_cos
     }
 }
 

@@ -1,8 +1,8 @@
 //! Elementary functions: sin, cos, sqrt, real powers, with the exact rules that never change a value.
 
 use super::arena::{Arena, ExprId, Node};
-use super::rational::Rational;
 use super::error::SymError;
+use super::rational::Rational;
 
 impl Arena {
     /// `sin u`; odd symmetry pulls a negative coefficient out: `sin(−2x) = −sin 2x`.

@@ -16,7 +16,13 @@ use crate::rigid::values::number_literal;
 /// What a right-hand side may use, listed in the errors.
 const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`, `powf`";
 /// The functions known, with their argument counts besides the receiver.
-const FUNCTIONS: &[(&str, usize)] = &[("sin", 0), ("cos", 0), ("sqrt", 0), ("powi", 1), ("powf", 1)];
+const FUNCTIONS: &[(&str, usize)] = &[
+    ("sin", 0),
+    ("cos", 0),
+    ("sqrt", 0),
+    ("powi", 1),
+    ("powf", 1),
+];
 
 /// The names a right-hand side reads and the symbols they stand for.
 pub struct Names {
