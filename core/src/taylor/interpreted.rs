@@ -105,8 +105,8 @@ impl From<BindingError> for TaylorError {
 /// differences, scalings, products, squares, quotients and square roots: the constants
 /// (parameters combined by the scalar operations) are then evaluated in double-double too,
 /// so that `1/I₃ − 1/I₂` is not rounded once for the whole run. A tape with a sine or
-/// cosine, of a series or of a constant, returns `false` there: this crate has no
-/// double-double sine ([`TaylorTape::extends`] tells in advance).
+/// cosine or a real power, of a series or of a constant, returns `false` there: this crate
+/// has no double-double sine or `powf` ([`TaylorTape::extends`] tells in advance).
 #[derive(Debug)]
 pub struct TaylorTape<const N: usize> {
     tape: Tape,

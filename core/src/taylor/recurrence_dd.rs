@@ -9,8 +9,8 @@
 //!
 //! Only the operations with an algebraic recurrence are carried: sums, scalings, products,
 //! squares, quotients and square roots. A sine–cosine pair would need sin and cos of the
-//! order-0 coefficient to 106 bits, which this crate does not compute, so a tape holding
-//! one is not extended (the caller sees `false`).
+//! order-0 coefficient to 106 bits, and a real power `a_0^r` to 106 bits, neither of which
+//! this crate computes, so a tape holding one is not extended (the caller sees `false`).
 
 use super::tape::{SeriesOp, SeriesStep};
 use crate::exact::Dd;
