@@ -24,6 +24,16 @@ precess::taylor_system! {
     d/dt y = (1.0 + t).powf(0.25) * y;
 }
 
+precess::taylor_system! {
+    /// y' = k^(3/2) y, the power of a field a constant along the solution: y = e^(k^(3/2) t).
+    struct Growth {
+        k: f64,
+    }
+    state [y];
+    taylor = 16;
+    d/dt y = k.powf(1.5) * y;
+}
+
 fn three_halves() -> Rational {
     Rational::new(3, 2).unwrap()
 }
@@ -168,4 +178,25 @@ fn generated_and_interpreted_real_powers_agree() {
     // Order 1 is the right-hand side itself.
     assert!((c[1][0] - 1.7f64.powf(-1.0 / 3.0)).abs() < 1e-15);
     assert!((c[1][1] - 1.3f64.powf(0.25) * 0.9).abs() < 1e-15);
+}
+
+#[test]
+fn real_power_of_a_field_is_a_constant_rate() {
+    // c_j = λ^j / j! with λ = k^(3/2) = 0.8.
+    let growth = Growth {
+        k: 0.8f64.powf(2.0 / 3.0),
+    };
+    let mut c = [[0.0; 1]; 17];
+    growth.coefficients(0.0, &[1.0], 16, &mut c);
+    let mut want = 1.0;
+    for (j, cj) in c.iter().enumerate() {
+        if j > 0 {
+            want *= 0.8 / j as f64;
+        }
+        assert!(
+            (cj[0] - want).abs() <= 1e-14 * want,
+            "order {j}: {} against {want}",
+            cj[0]
+        );
+    }
 }
