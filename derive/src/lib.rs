@@ -77,7 +77,8 @@ pub fn derive_mechanism(input: TokenStream) -> TokenStream {
 /// The struct (unit, or with named `f64` fields read as parameters) comes first, then
 /// `state [..];`, `taylor = K;` (1 to 100) and one `d/dt x = …;` per state variable. A
 /// right-hand side uses numbers, the state variables, the fields, the time `t`, `+ - * /`,
-/// unary `-`, and `sin`, `cos`, `sqrt`, `powi` (integer literal exponent) as methods or
+/// unary `-`, and `sin`, `cos`, `sqrt`, `powi` (integer literal exponent), `powf` (number
+/// literal exponent, taken exactly as a rational; the base taken positive) as methods or
 /// calls. See `docs/taylor.md` and the doctest on `precess::taylor_system`.
 #[proc_macro]
 pub fn taylor_system(input: TokenStream) -> TokenStream {

@@ -20,6 +20,8 @@ pub struct OpCount {
     pub negs: usize,
     /// Square roots.
     pub sqrts: usize,
+    /// Real powers (`powf`).
+    pub powfs: usize,
     /// Lone sines or cosines.
     pub trig: usize,
     /// Paired sine-and-cosine evaluations.
@@ -29,19 +31,27 @@ pub struct OpCount {
 impl OpCount {
     /// All operations, each `sin_cos` pair counted once.
     pub fn total(&self) -> usize {
-        self.adds + self.muls + self.divs + self.negs + self.sqrts + self.trig + self.sin_cos
+        self.adds
+            + self.muls
+            + self.divs
+            + self.negs
+            + self.sqrts
+            + self.powfs
+            + self.trig
+            + self.sin_cos
     }
 }
 
 impl OpCount {
     /// A cost in rough multiply-equivalents for choosing between equal forms: divisions and
-    /// square roots cost about 4, a sine or cosine about 15, a paired `sin_cos` about 20.
+    /// square roots cost about 4, a sine or cosine or a real power about 15, a paired
+    /// `sin_cos` about 20.
     pub fn weighted(&self) -> usize {
         self.adds
             + self.muls
             + self.negs
             + 4 * (self.divs + self.sqrts)
-            + 15 * self.trig
+            + 15 * (self.trig + self.powfs)
             + 20 * self.sin_cos
     }
 }
@@ -50,13 +60,14 @@ impl fmt::Display for OpCount {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} ops: {} add, {} mul, {} div, {} neg, {} sqrt, {} sin/cos, {} sin_cos",
+            "{} ops: {} add, {} mul, {} div, {} neg, {} sqrt, {} powf, {} sin/cos, {} sin_cos",
             self.total(),
             self.adds,
             self.muls,
             self.divs,
             self.negs,
             self.sqrts,
+            self.powfs,
             self.trig,
             self.sin_cos
         )
@@ -77,6 +88,7 @@ impl Program {
                 Op::Div(..) => c.divs += 1,
                 Op::Neg(_) => c.negs += 1,
                 Op::Sqrt(_) => c.sqrts += 1,
+                Op::Powf(..) => c.powfs += 1,
                 Op::Sin(a) => sin_args.push(*a),
                 Op::Cos(a) => cos_args.push(*a),
             }

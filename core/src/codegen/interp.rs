@@ -28,6 +28,7 @@ impl Program {
                 Op::Div(a, b) => v(a) / v(b),
                 Op::Neg(a) => -v(a),
                 Op::Sqrt(a) => v(a).sqrt(),
+                Op::Powf(a, r) => v(a).powf(*r),
                 Op::Sin(a) => v(a).sin(),
                 Op::Cos(a) => v(a).cos(),
             };

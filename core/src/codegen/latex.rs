@@ -201,6 +201,8 @@ impl Latex<'_> {
             }
             Node::Pow(b, n) => vec![Task::Power(*b, *n)],
             Node::Sqrt(u) => vec![text("\\sqrt{"), Task::Expr(*u), text("}")],
+            // x^{p/q}: the exponent as a slashed fraction, legible in a superscript.
+            Node::Powr(b, r) => vec![text("{"), Task::Factor(*b), text(format!("}}^{{{r}}}"))],
             Node::Sin(u) => vec![text("\\sin"), Task::Argument(*u)],
             Node::Cos(u) => vec![text("\\cos"), Task::Argument(*u)],
         }

@@ -29,6 +29,8 @@ pub enum Op {
     Neg(Slot),
     /// `√a`.
     Sqrt(Slot),
+    /// `a^r` for a non-integer constant `r` (`f64::powf`, NaN for a negative `a`).
+    Powf(Slot, f64),
     /// `sin a`.
     Sin(Slot),
     /// `cos a`.
@@ -42,6 +44,7 @@ enum Key {
     Input(SymbolId),
     Bin(u8, Slot, Slot),
     Un(u8, Slot),
+    Powf(Slot, u64),
 }
 
 impl Op {
@@ -63,6 +66,7 @@ impl Op {
             Op::Div(a, b) => Key::Bin(3, a, b),
             Op::Neg(a) => Key::Un(0, a),
             Op::Sqrt(a) => Key::Un(1, a),
+            Op::Powf(a, r) => Key::Powf(a, r.to_bits()),
             Op::Sin(a) => Key::Un(2, a),
             Op::Cos(a) => Key::Un(3, a),
         }
@@ -121,7 +125,7 @@ fn lowering_order(arena: &Arena, outputs: &[ExprId]) -> Vec<ExprId> {
             Node::Sym(s) => next.extend(arena.definition(*s)),
             Node::Add(terms) => terms.iter().for_each(|&t| factors_of(t, &mut next)),
             Node::Mul(_) => factors_of(e, &mut next),
-            Node::Pow(b, _) => next.push(*b),
+            Node::Pow(b, _) | Node::Powr(b, _) => next.push(*b),
             Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => next.push(*u),
         }
         stack.extend(next.iter().filter(|x| !seen.contains_key(x)));
@@ -260,6 +264,10 @@ impl Lowering<'_> {
             Node::Sqrt(u) => {
                 let u = self.node(*u);
                 self.emit(Op::Sqrt(u))
+            }
+            Node::Powr(b, r) => {
+                let b = self.node(*b);
+                self.emit(Op::Powf(b, r.to_f64()))
             }
             Node::Sin(u) => {
                 let u = self.node(*u);

@@ -95,6 +95,17 @@ impl Arena {
                 let k = self.integer(n);
                 self.product(&[k, lower, db])
             }
+            Node::Powr(b, r) => {
+                let db = d(self, b);
+                if db == zero {
+                    return zero;
+                }
+                // d b^r = r b^(r−1) b′, written b^r · b^−1 as for integer powers (no
+                // exponent arithmetic, and b^r is a node, so b is not identically zero).
+                let inv = self.pow_nonzero_base(b, -1);
+                let k = self.constant(r);
+                self.product(&[k, e, inv, db])
+            }
             Node::Sqrt(u) => {
                 let du = d(self, u);
                 if du == zero {

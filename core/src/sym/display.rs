@@ -70,6 +70,7 @@ impl Arena {
             Node::Add(terms) => (0, joined(terms, " + ", 1)),
             Node::Mul(f) => (1, joined(f, "*", 2)),
             Node::Pow(b, n) => (2, vec![Piece::Node(*b, 3), Piece::Text(format!("^{n}"))]),
+            Node::Powr(b, r) => (2, vec![Piece::Node(*b, 3), Piece::Text(format!("^({r})"))]),
             Node::Sqrt(u) => (3, call("sqrt", *u)),
             Node::Sin(u) => (3, call("sin", *u)),
             Node::Cos(u) => (3, call("cos", *u)),

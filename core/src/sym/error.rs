@@ -88,4 +88,14 @@ pub enum SymError {
         /// What could not be done with it.
         operation: &'static str,
     },
+    /// A real power `x^r` the engine cannot give a value: a non-integer power of a negative
+    /// constant (`x^r` with a non-integer `r` is taken of a positive base), a negative power of
+    /// zero, or an integer exponent past `i64`.
+    #[error("the power {exponent} of the constant {base} is undefined")]
+    RealPowerUndefined {
+        /// The base as text.
+        base: String,
+        /// The exponent as text.
+        exponent: String,
+    },
 }

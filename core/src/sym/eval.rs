@@ -42,6 +42,7 @@ impl Arena {
                 Ok(n) => v(b).powi(n),
                 Err(_) => v(b).powf(*n as f64),
             },
+            Node::Powr(b, r) => v(b).powf(r.to_f64()),
             Node::Sqrt(u) => v(u).sqrt(),
             Node::Sin(u) => v(u).sin(),
             Node::Cos(u) => v(u).cos(),

@@ -155,6 +155,11 @@ impl Arena {
                 let eu = done(self, u);
                 self.sqrt(eu).unwrap_or(id)
             }
+            // An opaque function of its expanded base.
+            Node::Powr(b, r) => {
+                let eb = done(self, b);
+                self.powr(eb, r).unwrap_or(id)
+            }
             Node::Sin(u) => {
                 let eu = done(self, u);
                 self.sin(eu)

@@ -22,6 +22,9 @@ pub enum Node {
     Mul(Box<[ExprId]>),
     /// An integer power other than 0 and 1 of a non-constant base.
     Pow(ExprId, i64),
+    /// A real power `x^r` with a non-integer rational `r` of a base taken positive (the
+    /// principal branch, `exp(r ln x)`): [`Arena::powr`](super::Arena::powr).
+    Powr(ExprId, Rational),
     /// The principal square root.
     Sqrt(ExprId),
     /// Sine.
@@ -44,7 +47,7 @@ impl Node {
         match self {
             Node::Const(_) | Node::Sym(_) => &[],
             Node::Add(c) | Node::Mul(c) => c,
-            Node::Pow(b, _) => std::slice::from_ref(b),
+            Node::Pow(b, _) | Node::Powr(b, _) => std::slice::from_ref(b),
             Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => std::slice::from_ref(u),
         }
     }

@@ -60,6 +60,7 @@ impl Arena {
                 self.product(&v)
             }
             Node::Pow(b, n) => self.powi(d(&b), n)?,
+            Node::Powr(b, r) => self.powr(d(&b), r)?,
             Node::Sqrt(u) => self.sqrt(d(&u))?,
             Node::Sin(u) => self.sin(d(&u)),
             Node::Cos(u) => self.cos(d(&u)),

@@ -159,6 +159,13 @@ impl Arena {
                     }
                     r
                 }
+                // An opaque function of its base (as expansion treats it): a pseudo-random
+                // value of the base's value and the exponent.
+                Node::Powr(b, r) => {
+                    let (n, d, two, five) = r.scaled();
+                    let tag = mix((n as u64) ^ mix((d as u64) ^ mix((two ^ five << 16) as u64)));
+                    mix(v(b)? ^ mix(seed ^ tag)) % P
+                }
                 Node::Sin(u) => sin_cos(v(u)?, seed).0,
                 Node::Cos(u) => sin_cos(v(u)?, seed).1,
             };

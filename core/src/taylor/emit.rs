@@ -108,6 +108,10 @@ impl Tape {
                     quote!(-#a)
                 }
                 ScalarOp::Sqrt(a) => method(s(a), "sqrt"),
+                ScalarOp::Powf(a, r) => {
+                    let (a, r) = (s(a), f64_literal(r));
+                    quote!(f64::powf(#a, #r))
+                }
                 ScalarOp::Sin(a) => method(s(a), "sin"),
                 ScalarOp::Cos(a) => method(s(a), "cos"),
             };
@@ -257,6 +261,7 @@ impl Tape {
                         | SeriesOp::Div(..)
                         | SeriesOp::ScalarDiv(..)
                         | SeriesOp::Sqrt(_)
+                        | SeriesOp::Powf(..)
                         | SeriesOp::SinCos(_)
                 )
             })
@@ -301,7 +306,9 @@ impl Tape {
                     count(a, true);
                     count(b, true);
                 }
-                SeriesOp::Square(a) | SeriesOp::ScalarDiv(_, a) => count(a, true),
+                SeriesOp::Square(a) | SeriesOp::ScalarDiv(_, a) | SeriesOp::Powf(a, _) => {
+                    count(a, true)
+                }
             }
         }
         for out in &self.outputs {
@@ -328,6 +335,7 @@ impl Tape {
                 SeriesOp::Div(..)
                     | SeriesOp::ScalarDiv(..)
                     | SeriesOp::Sqrt(_)
+                    | SeriesOp::Powf(..)
                     | SeriesOp::SinCos(_)
             );
             let x = st.out as usize;
@@ -415,6 +423,10 @@ fn order_zero(
         SeriesOp::Div(a, b) => binary(x(a), quote!(/), x(b)),
         SeriesOp::ScalarDiv(c, a) => binary(s(c), quote!(/), x(a)),
         SeriesOp::Sqrt(a) => method(x(a), "sqrt"),
+        SeriesOp::Powf(a, r) => {
+            let (a, r) = (x(a), f64_literal(r));
+            quote!(f64::powf(#a, #r))
+        }
         SeriesOp::SinCos(a) => {
             let (o, c) = (series(out), series(out + 1));
             let (vs, vc) = (value(out), value(out + 1));
@@ -456,6 +468,11 @@ fn interior(out: u32, op: SeriesOp, split: bool) -> TokenStream {
         }
         // The root's whole sum Σⱼ₌₁ᵏ⁻¹ c_j c_{k−j} reads lower orders only.
         SeriesOp::Sqrt(_) => quote!(let #i: f64 = #square(&#o[1..__k]);),
+        // Σⱼ₌₁ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j: the real power's sum less r k a_k c_0.
+        SeriesOp::Powf(a, r) => {
+            let (a, r, power) = (series(a), f64_literal(r), kernel("power_interior"));
+            quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
+        }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
         SeriesOp::SinCos(_) => {
             let (c, d) = (series(out + 1), series(out + 2));
@@ -518,6 +535,10 @@ fn order_k(
         SeriesOp::Sqrt(a) => {
             let a = at(a);
             quote!((#a - #i) / (2.0 * #o[0]))
+        }
+        SeriesOp::Powf(a, r) => {
+            let (ak, a, r) = (at(a), series(a), f64_literal(r));
+            quote!((#i + #r * (__k as f64) * #ak * #o[0]) / ((__k as f64) * #a[0]))
         }
         SeriesOp::SinCos(a) => {
             let (a, c, d) = (at(a), series(out + 1), series(out + 2));

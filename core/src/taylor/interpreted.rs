@@ -105,8 +105,8 @@ impl From<BindingError> for TaylorError {
 /// differences, scalings, products, squares, quotients and square roots: the constants
 /// (parameters combined by the scalar operations) are then evaluated in double-double too,
 /// so that `1/I₃ − 1/I₂` is not rounded once for the whole run. A tape with a sine or
-/// cosine, of a series or of a constant, returns `false` there: this crate has no
-/// double-double sine ([`TaylorTape::extends`] tells in advance).
+/// cosine or a real power, of a series or of a constant, returns `false` there: this crate
+/// has no double-double sine or `powf` ([`TaylorTape::extends`] tells in advance).
 #[derive(Debug)]
 pub struct TaylorTape<const N: usize> {
     tape: Tape,
@@ -173,6 +173,7 @@ impl<const N: usize> TaylorTape<N> {
                 ScalarOp::Div(a, b) => x(a) / x(b),
                 ScalarOp::Neg(a) => -x(a),
                 ScalarOp::Sqrt(a) => x(a).sqrt(),
+                ScalarOp::Powf(a, r) => x(a).powf(r),
                 ScalarOp::Sin(a) => x(a).sin(),
                 ScalarOp::Cos(a) => x(a).cos(),
             };
@@ -339,7 +340,7 @@ fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) ->
             ScalarOp::Div(a, b) => x(a) / x(b),
             ScalarOp::Neg(a) => -x(a),
             ScalarOp::Sqrt(a) => x(a).sqrt(),
-            ScalarOp::Sin(_) | ScalarOp::Cos(_) => return None,
+            ScalarOp::Sin(_) | ScalarOp::Cos(_) | ScalarOp::Powf(..) => return None,
         };
         out.push(v);
     }

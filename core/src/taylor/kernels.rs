@@ -131,6 +131,30 @@ pub fn square_interior(inner: &[f64]) -> f64 {
     }
 }
 
+/// `Σⱼ₌₁ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j` with `k − 1 = min(a.len(), c.len())`, given
+/// `a_1 … a_{k−1}` and `c_1 … c_{k−1}`: the interior of the real power's recurrence
+/// `c_k = (1/(k a_0)) Σⱼ₌₀ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j` for `c = a^r` (from
+/// `a c′ = r a′ c`), which reads lower orders only. The weights differ term by term, so it
+/// is one plain loop.
+///
+/// ```
+/// use precess_core::taylor::kernels::power_interior;
+/// // k = 3, r = 1/2: (2·½ − 1) a₂ c₁ + (½ − 2) a₁ c₂ = 0 − 1.5·2·5.
+/// assert_eq!(power_interior(&[2.0, 3.0], &[4.0, 5.0], 0.5), -15.0);
+/// ```
+#[inline]
+pub fn power_interior(a: &[f64], c: &[f64], r: f64) -> f64 {
+    let n = a.len().min(c.len());
+    let (a, c) = (&a[..n], &c[..n]);
+    let k = n + 1;
+    let mut acc = 0.0;
+    for (i, (cj, ak_j)) in c.iter().zip(a.iter().rev()).enumerate() {
+        let j = i + 1;
+        acc += (r * (k - j) as f64 - j as f64) * ak_j * cj;
+    }
+    acc
+}
+
 #[cfg(test)]
 mod tests {
     use super::{cauchy, square};

@@ -4,7 +4,7 @@
 //! [`super::kernels`], split as in the emitted code: the interior over the lower orders
 //! first, the terms that read order k last, so that both round alike.
 
-use super::kernels::{cauchy, dot_reversed, square};
+use super::kernels::{cauchy, dot_reversed, power_interior, square};
 use super::tape::{SeriesOp, SeriesStep};
 
 /// Writes the order-`k` coefficient of `step`'s output, every operand known to order `k`
@@ -43,6 +43,13 @@ pub(crate) fn step(c: &mut [f64], st: usize, s: &[f64], step: &SeriesStep, k: us
         }
         SeriesOp::Sqrt(a) if k == 0 => at(c, a, 0).sqrt(),
         SeriesOp::Sqrt(a) => (at(c, a, k) - square(&row(c, st, out)[1..k])) / (2.0 * c[out * st]),
+        SeriesOp::Powf(a, r) if k == 0 => at(c, a, 0).powf(r),
+        SeriesOp::Powf(a, r) => {
+            // The interior j = 1 … k − 1, then the term j = 0 that reads a_k.
+            let (xs, cs) = (row(c, st, a as usize), row(c, st, out));
+            let kf = k as f64;
+            (power_interior(&xs[1..k], &cs[1..k], r) + r * kf * xs[k] * cs[0]) / (kf * xs[0])
+        }
         SeriesOp::SinCos(a) => {
             let (sin, cos, d) = (out, out + 1, out + 2);
             let (sv, cv) = if k == 0 {

@@ -9,8 +9,8 @@
 //!
 //! Only the operations with an algebraic recurrence are carried: sums, scalings, products,
 //! squares, quotients and square roots. A sine–cosine pair would need sin and cos of the
-//! order-0 coefficient to 106 bits, which this crate does not compute, so a tape holding
-//! one is not extended (the caller sees `false`).
+//! order-0 coefficient to 106 bits, and a real power `a_0^r` to 106 bits, neither of which
+//! this crate computes, so a tape holding one is not extended (the caller sees `false`).
 
 use super::tape::{SeriesOp, SeriesStep};
 use crate::exact::Dd;
@@ -58,7 +58,7 @@ impl DdTable<'_> {
 
 /// Whether [`step`] carries `op` (see the module's docs).
 pub(crate) fn supported(op: &SeriesOp) -> bool {
-    !matches!(op, SeriesOp::SinCos(_))
+    !matches!(op, SeriesOp::SinCos(_) | SeriesOp::Powf(..))
 }
 
 /// Writes the order-`k` coefficient of `step`'s output in double-double, every operand known
@@ -92,7 +92,7 @@ pub(crate) fn step(c: &mut DdTable<'_>, s: &[Dd], step: &SeriesStep, k: usize) {
             };
             (c.get(a, k) - sum) / (Dd::from(2.0) * c.get(out, 0))
         }
-        SeriesOp::SinCos(_) => return,
+        SeriesOp::SinCos(_) | SeriesOp::Powf(..) => return,
     };
     c.set(out, k, v);
 }

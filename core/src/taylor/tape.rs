@@ -39,6 +39,8 @@ pub enum ScalarOp {
     Neg(u32),
     /// `√a`.
     Sqrt(u32),
+    /// `a^r` for a non-integer constant `r`.
+    Powf(u32, f64),
     /// `sin a`.
     Sin(u32),
     /// `cos a`.
@@ -76,6 +78,9 @@ pub enum SeriesOp {
     Neg(u32),
     /// `√a`: `c_k = (a_k − Σⱼ₌₁ᵏ⁻¹ c_j c_{k−j}) / (2 c_0)` (the sum folded as in `Square`).
     Sqrt(u32),
+    /// `a^r` for a non-integer constant `r`, of a base taken positive: `c_0 = a_0^r`,
+    /// `c_k = (1/(k a_0)) Σⱼ₌₀ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j` (from `a c′ = r a′ c`).
+    Powf(u32, f64),
     /// `(sin a, cos a)` as a pair, into the series `out` and `out + 1`, with the
     /// derivative's coefficients d_j = j a_j in `out + 2` (made once, read by both sums):
     /// `s_k = (1/k) Σⱼ₌₁ᵏ d_j c_{k−j}`, `c_k = −(1/k) Σⱼ₌₁ᵏ d_j s_{k−j}`.
@@ -227,6 +232,7 @@ impl Tape {
                 SeriesOp::Square(_) => c.squares += 1,
                 SeriesOp::Div(..) | SeriesOp::ScalarDiv(..) => c.quotients += 1,
                 SeriesOp::Sqrt(_) => c.roots += 1,
+                SeriesOp::Powf(..) => c.powers += 1,
                 SeriesOp::SinCos(_) => c.sin_cos += 1,
             }
         }
@@ -253,6 +259,8 @@ pub struct TapeCount {
     pub roots: usize,
     /// Sine–cosine pairs (2k multiply–adds at order k).
     pub sin_cos: usize,
+    /// Real powers (k weighted multiply–adds and a division at order k).
+    pub powers: usize,
 }
 
 impl TapeCount {
@@ -268,6 +276,7 @@ impl TapeCount {
             f += per(self.quotients, 2 * k + 1);
             f += per(self.roots, k + 2);
             f += per(self.sin_cos, if k == 0 { 1 } else { 6 * k + 2 });
+            f += per(self.powers, if k == 0 { 1 } else { 4 * k + 3 });
         }
         f
     }
@@ -342,6 +351,10 @@ impl Builder {
             Op::Sqrt(a) => match v(a) {
                 C(a) => self.scalar(ScalarOp::Sqrt(a)),
                 S(a) => self.series(SeriesOp::Sqrt(a)),
+            },
+            Op::Powf(a, r) => match v(a) {
+                C(a) => self.scalar(ScalarOp::Powf(a, r)),
+                S(a) => self.series(SeriesOp::Powf(a, r)),
             },
             Op::Sin(a) | Op::Cos(a) => match v(a) {
                 C(a) if matches!(op, Op::Sin(_)) => self.scalar(ScalarOp::Sin(a)),

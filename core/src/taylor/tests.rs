@@ -210,3 +210,66 @@ fn the_emitted_code_keeps_rows_only_for_series_read_over_their_orders() {
     let tape = super::Tape::new(&a, &y, None, &[quotient, f2, f3]).unwrap();
     assert_eq!(tape.emitted(20).series, 4);
 }
+
+/// `binom(r, k) = r (r − 1) ⋯ (r − k + 1) / k!`, by its product directly.
+fn binomial(r: f64, k: usize) -> f64 {
+    (0..k).map(|i| (r - i as f64) / (i + 1) as f64).product()
+}
+
+#[test]
+fn real_power_of_the_time_gives_the_binomial_series() {
+    // x' = (1 + t)^(3/2), x(0) = 0: x_{k+1} = binom(3/2, k)/(k + 1), the series of
+    // (1 + t)^(3/2) integrated once; the power's base is the series 1 + τ.
+    let c = coefficients(
+        |a, _, t| {
+            let one = a.one();
+            let base = a.add(one, t);
+            a.powr(base, crate::sym::Rational::new(3, 2).unwrap())
+                .unwrap()
+        },
+        0.0,
+        0.0,
+        20,
+    );
+    assert_eq!(c[0], 0.0);
+    for k in 0..20 {
+        let want = binomial(1.5, k) / (k + 1) as f64;
+        assert_relative_eq!(c[k + 1], want, max_relative = 1e-13, epsilon = 1e-17);
+    }
+}
+
+#[test]
+fn real_power_of_the_state_gives_the_binomial_series() {
+    // x' = x^(−1/3), x(0) = 1: (3/4) x^(4/3) = t + 3/4, x = (1 + 4t/3)^(3/4), whose
+    // coefficients are binom(3/4, k) (4/3)^k.
+    let c = coefficients(
+        |a, x, _| {
+            a.powr(x, crate::sym::Rational::new(-1, 3).unwrap())
+                .unwrap()
+        },
+        0.0,
+        1.0,
+        24,
+    );
+    for (k, ck) in c.iter().enumerate() {
+        let want = binomial(0.75, k) * (4.0f64 / 3.0).powi(k as i32);
+        assert_relative_eq!(*ck, want, max_relative = 1e-12, epsilon = 1e-17);
+    }
+    // From another point: x(0) = 2.5, x = (2.5^(4/3) + 4t/3)^(3/4), coefficients
+    // binom(3/4, k) (4/3)^k 2.5^(1 − 4k/3).
+    let c = coefficients(
+        |a, x, _| {
+            a.powr(x, crate::sym::Rational::new(-1, 3).unwrap())
+                .unwrap()
+        },
+        0.0,
+        2.5,
+        16,
+    );
+    for (k, ck) in c.iter().enumerate() {
+        let want = binomial(0.75, k)
+            * (4.0f64 / 3.0).powi(k as i32)
+            * 2.5f64.powf(1.0 - 4.0 * k as f64 / 3.0);
+        assert_relative_eq!(*ck, want, max_relative = 1e-12, epsilon = 1e-17);
+    }
+}

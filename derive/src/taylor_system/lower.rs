@@ -1,10 +1,11 @@
 //! A right-hand side of `taylor_system!` as written (a Rust expression) into the symbolic
 //! engine: numbers exactly, state variables, the struct's fields and the time `t` as
 //! symbols, `+ − × ÷` and unary `−`, and the functions the Taylor recurrences know (`sin`,
-//! `cos`, `sqrt`, `powi` with an integer literal), as methods (`x.sin()`) or calls (`sin(x)`).
+//! `cos`, `sqrt`, `powi` with an integer literal, `powf` with a number literal, taken exactly
+//! as a rational), as methods (`x.sin()`) or calls (`sin(x)`).
 //! Anything else is an error spanned on it.
 
-use precess_core::sym::{Arena, ExprId};
+use precess_core::sym::{Arena, ExprId, Rational, parse_decimal};
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
 use super::parse::TIME;
@@ -13,9 +14,15 @@ use crate::keys::did_you_mean;
 use crate::rigid::values::number_literal;
 
 /// What a right-hand side may use, listed in the errors.
-const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`";
+const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`, `powf`";
 /// The functions known, with their argument counts besides the receiver.
-const FUNCTIONS: &[(&str, usize)] = &[("sin", 0), ("cos", 0), ("sqrt", 0), ("powi", 1)];
+const FUNCTIONS: &[(&str, usize)] = &[
+    ("sin", 0),
+    ("cos", 0),
+    ("sqrt", 0),
+    ("powi", 1),
+    ("powf", 1),
+];
 
 /// The names a right-hand side reads and the symbols they stand for.
 pub struct Names {
@@ -128,7 +135,7 @@ impl Lowerer<'_> {
             self.cx.error_spanned_by(
                 function,
                 format!(
-                    "unsupported function `{name}`: the Taylor recurrences know `sin`, `cos`, `sqrt` and `powi` (an integer power){}",
+                    "unsupported function `{name}`: the Taylor recurrences know `sin`, `cos`, `sqrt`, `powi` (an integer power) and `powf` (a power with a number literal exponent){}",
                     did_you_mean(&name, FUNCTIONS.iter().map(|(f, _)| *f))
                 ),
             );
@@ -144,6 +151,19 @@ impl Lowerer<'_> {
             ("sqrt", _) => {
                 let v = self.arena.sqrt(x).map_err(|e| e.to_string());
                 self.checked(v, receiver)
+            }
+            ("powf", Some(exponent)) => {
+                // The literal exactly (`1.5` is 3/2): an integer one is `powi`, any other a
+                // real power of a base taken positive.
+                let Some(r) = rational(exponent) else {
+                    self.cx.error_spanned_by(
+                        exponent,
+                        "`powf` expects a number literal exponent (`x.powf(1.5)`, `x.powf(-0.25)`)",
+                    );
+                    return None;
+                };
+                let v = self.arena.powr(x, r).map_err(|e| e.to_string());
+                self.checked(v, whole)
             }
             (_, Some(exponent)) => {
                 let Some(n) = integer(exponent) else {
@@ -208,6 +228,25 @@ impl Lowerer<'_> {
     /// A number literal, exactly (`0.51` is 51/100), finite in f64.
     fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
         number_literal(self.cx, self.arena, lit, ALLOWED)
+    }
+}
+
+/// A number literal exactly, possibly negated or parenthesised.
+fn rational(e: &Expr) -> Option<Rational> {
+    match e {
+        Expr::Lit(l) => match &l.lit {
+            Lit::Float(f) if f.suffix().is_empty() || f.suffix() == "f64" => {
+                parse_decimal(f.base10_digits()).ok()
+            }
+            Lit::Int(i) if i.suffix().is_empty() || i.suffix() == "f64" => {
+                parse_decimal(i.base10_digits()).ok()
+            }
+            _ => None,
+        },
+        Expr::Paren(p) => rational(&p.expr),
+        Expr::Group(g) => rational(&g.expr),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Some(-rational(&u.expr)?),
+        _ => None,
     }
 }
 

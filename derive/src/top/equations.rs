@@ -118,6 +118,7 @@ fn cost_tokens(c: &MethodCost) -> TokenStream {
         divs,
         negs,
         sqrts,
+        powfs,
         trig,
         sin_cos,
     } = c.ops;
@@ -130,6 +131,7 @@ fn cost_tokens(c: &MethodCost) -> TokenStream {
                 divs: #divs,
                 negs: #negs,
                 sqrts: #sqrts,
+                powfs: #powfs,
                 trig: #trig,
                 sin_cos: #sin_cos,
             },
