@@ -273,7 +273,7 @@ fn free_splitting_runs(order: SplittingOrder, compensated: bool) -> Vec<ProblemR
 
 /// Problem (e): 10⁶ steps of h = 0.01 (T = 10⁴); the error column is the larger relative
 /// drift of |L| and of the energy.
-fn long_run(
+pub fn long_run(
     final_m: impl Fn(f64, u64) -> Result<[f64; 3], Box<dyn Error>> + 'static,
 ) -> ProblemRun {
     ProblemRun {
@@ -498,6 +498,12 @@ pub fn methods() -> Result<Vec<Method>, Box<dyn Error>> {
             Setting::Tolerance,
             false,
             super::taylor::extended_runs(),
+        ),
+        m(
+            "Taylor, order 12, fixed step",
+            Setting::Step,
+            false,
+            vec![super::taylor::long_run_fixed()],
         ),
         m("Vern9", Setting::Tolerance, false, vern9),
         m(

@@ -129,7 +129,24 @@ pub fn taylor_runs(heavy: TopCase, fast: TopCase) -> Result<Vec<ProblemRun>, Box
         (Problem::B5, b5),
         (Problem::HeavyTop, top(heavy)),
         (Problem::FastTop, top(fast)),
+        // (f) compares the forms of (c)'s top: Taylor runs on the angle form.
+        (Problem::Forms, top(heavy)),
     ]))
+}
+
+/// Problem (e) for Taylor's method: the generated recurrences of (a) at a fixed order 12
+/// and the fixed step h = 0.01 of the other methods' 10⁶ steps (with h a fiftieth of the
+/// series' radius, order 12 leaves a truncation far below rounding in each step, so what
+/// (e) measures is the compensated summation's drift).
+pub fn long_run_fixed() -> ProblemRun {
+    super::methods::long_run(|h, n| {
+        let cfg = TaylorConfig {
+            max_steps: n + 1,
+            ..TaylorConfig::fixed(12, h)
+        };
+        let s = solve(euler_body(), 0.0, SEP_M0, h * n as f64, &[], cfg)?;
+        Ok(s.y)
+    })
 }
 
 /// Taylor's method on (a) and (b) with the same equations interpreted ([`TaylorTape`]),
