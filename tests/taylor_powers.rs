@@ -200,3 +200,28 @@ fn real_power_of_a_field_is_a_constant_rate() {
         );
     }
 }
+
+#[test]
+fn a_constant_made_non_finite_by_its_parameters_is_a_typed_error() {
+    // y' = k^(3/2) y with k a parameter: a negative k has no real power, which must be an
+    // error at construction, not NaN coefficients; a positive k builds and gives e^(k^1.5 t).
+    let mut a = Arena::new();
+    let y = a.coordinate("y");
+    let k = a.parameter("k");
+    let rate = a.powr(k, three_halves()).unwrap();
+    let rhs = a.mul(rate, y);
+    let err = TaylorTape::new(&a, [y], [rhs], None, &[("k", -4.0)], 10).unwrap_err();
+    match err {
+        precess::taylor::TaylorError::NonFiniteConstant { operation, value } => {
+            assert_eq!(operation, "a real power");
+            assert!(value.is_nan());
+        }
+        other => panic!("expected NonFiniteConstant, got {other:?}"),
+    }
+    let tape = TaylorTape::new(&a, [y], [rhs], None, &[("k", 4.0)], 10).unwrap();
+    let mut c = [[0.0; 1]; 3];
+    tape.coefficients(0.0, &[1.0], 2, &mut c);
+    // 4^(3/2) = 8: c₁ = 8, c₂ = 8²/2.
+    assert_eq!(c[1][0], 8.0);
+    assert_eq!(c[2][0], 32.0);
+}

@@ -57,6 +57,18 @@ pub enum TaylorError {
         /// The input's name.
         name: String,
     },
+    /// A constant of the right-hand side (parameters and numbers combined) that is not
+    /// finite for the values given: a square root or real power of a negative value, a
+    /// division by zero.
+    #[error(
+        "{operation} among the right-hand side's constants is {value} for the parameter values given"
+    )]
+    NonFiniteConstant {
+        /// The operation that gave it ("a square root", "a real power", "a quotient", …).
+        operation: &'static str,
+        /// Its value.
+        value: f64,
+    },
 }
 
 impl From<BindingError> for TaylorError {
@@ -124,7 +136,9 @@ impl<const N: usize> TaylorTape<N> {
     ///
     /// # Errors
     /// [`TaylorError::StateNotASymbol`], [`TaylorError::Order`], then the binding errors
-    /// (an unknown, unset or non-finite parameter, an input outside the state).
+    /// (an unknown, unset or non-finite parameter, an input outside the state), then
+    /// [`TaylorError::NonFiniteConstant`] for a constant that the parameters make NaN or
+    /// infinite (√ or a real power of a negative value, a division by zero).
     pub fn new(
         arena: &Arena,
         state: [ExprId; N],
@@ -177,6 +191,12 @@ impl<const N: usize> TaylorTape<N> {
                 ScalarOp::Sin(a) => x(a).sin(),
                 ScalarOp::Cos(a) => x(a).cos(),
             };
+            if !v.is_finite() {
+                return Err(TaylorError::NonFiniteConstant {
+                    operation: operation_name(op),
+                    value: v,
+                });
+            }
             scalars.push(v);
         }
         let scalars_dd = scalars_in_dd(&tape, &value_of);
@@ -189,7 +209,7 @@ impl<const N: usize> TaylorTape<N> {
     }
 
     /// Whether [`TaylorSystem::coefficients_extended_into`] computes the low orders in
-    /// double-double for this tape (no sine or cosine anywhere in it).
+    /// double-double for this tape (no sine, cosine or real power anywhere in it).
     pub fn extends(&self) -> bool {
         self.scalars_dd.is_some()
     }
@@ -322,8 +342,26 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
     }
 }
 
+/// How [`TaylorError::NonFiniteConstant`] names a scalar operation.
+fn operation_name(op: &ScalarOp) -> &'static str {
+    match op {
+        ScalarOp::Const(_) => "a number",
+        ScalarOp::Symbol(_) => "a parameter",
+        ScalarOp::Add(..) => "a sum",
+        ScalarOp::Sub(..) => "a difference",
+        ScalarOp::Mul(..) => "a product",
+        ScalarOp::Div(..) => "a quotient",
+        ScalarOp::Neg(_) => "a negation",
+        ScalarOp::Sqrt(_) => "a square root",
+        ScalarOp::Powf(..) => "a real power",
+        ScalarOp::Sin(_) => "a sine",
+        ScalarOp::Cos(_) => "a cosine",
+    }
+}
+
 /// The tape's scalars in double-double, `None` if the tape holds an operation without a
-/// double-double recurrence (a sine or cosine). `value_of` gives a symbol's bound value.
+/// double-double recurrence (a sine, cosine or real power). `value_of` gives a symbol's
+/// bound value.
 fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) -> Option<Vec<Dd>> {
     if !tape.steps.iter().all(|s| recurrence_dd::supported(&s.op)) {
         return None;

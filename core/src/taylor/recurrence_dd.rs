@@ -15,12 +15,6 @@
 use super::tape::{SeriesOp, SeriesStep};
 use crate::exact::Dd;
 
-/// `Σⱼ aⱼ bⱼ` in double-double over the pairs given ([`Dd::dot`]): the order-k
-/// coefficient of a product when the pairs are `(a_j, b_{k−j})`.
-pub(crate) fn dot_dd(pairs: impl Iterator<Item = (Dd, Dd)>) -> Dd {
-    Dd::dot(pairs)
-}
-
 /// A table of double-double coefficients stored series-major in `f64` pairs:
 /// `w[2(x·st + k)]` and the next word are the hi and lo of series `x` at order `k`.
 pub(crate) struct DdTable<'a> {
@@ -52,7 +46,7 @@ impl DdTable<'_> {
 
     /// `Σⱼ a_j b_{k−j}` for `j` in `from ..= to`.
     fn cauchy(&self, a: u32, b: u32, k: usize, from: usize, to: usize) -> Dd {
-        dot_dd((from..=to).map(|j| (self.get(a, j), self.get(b, k - j))))
+        Dd::dot((from..=to).map(|j| (self.get(a, j), self.get(b, k - j))))
     }
 }
 
@@ -111,7 +105,7 @@ mod tests {
         let b: Vec<i128> = (0..9).map(|j| 3 * (1i128 << 48) - 7 * j).collect();
         for k in 0..9usize {
             let exact: i128 = (0..=k).map(|j| a[j] * b[k - j]).sum();
-            let dd = dot_dd((0..=k).map(|j| (Dd::from(a[j] as f64), Dd::from(b[k - j] as f64))));
+            let dd = Dd::dot((0..=k).map(|j| (Dd::from(a[j] as f64), Dd::from(b[k - j] as f64))));
             // hi + lo as an integer: both parts are integers here (|lo| ≥ 1 or 0).
             let got = dd.hi as i128 + dd.lo as i128;
             assert_eq!(got, exact, "order {k}");
@@ -166,7 +160,7 @@ mod tests {
             step(&mut c, &[], &sqrt, k);
         }
         for k in 0..st {
-            let square = dot_dd((0..=k).map(|j| (c.get(1, j), c.get(1, k - j))));
+            let square = Dd::dot((0..=k).map(|j| (c.get(1, j), c.get(1, k - j))));
             let want = [3.0, 1.0].get(k).copied().unwrap_or(0.0);
             let e = (square - Dd::from(want)).to_f64();
             assert!(e.abs() < 1e-30, "order {k}: {e:e}");
