@@ -166,6 +166,46 @@ pub enum OdeError {
         /// Principal moments given.
         inertia: [f64; 3],
     },
+    /// A run or a trajectory would hold more samples than [`super::MAX_SAMPLES`] (or a
+    /// number of samples that does not even fit in `usize`): checked before any work for
+    /// `sample_every` and `sample_at`, and when a sample is pushed for `sample_steps`.
+    #[error(
+        "{samples:e} samples asked for, more than the cap of {max}: sample less often \
+         (sample_every with a larger dt) or watch the steps with an observer"
+    )]
+    TooManySamples {
+        /// The samples the request takes (∞ when it does not fit in f64).
+        samples: f64,
+        /// The cap, [`super::MAX_SAMPLES`].
+        max: usize,
+    },
+    /// A sample interval too fine for the doubles near the run's times: t0 + k·dt would
+    /// round onto the same time for several k. dt must be at least
+    /// [`super::MIN_SAMPLE_SPACINGS`] times the spacing of doubles at the larger of |t0|,
+    /// |t_end|.
+    #[error(
+        "sample interval dt = {dt:e} is below the resolution of t near {t:e}: doubles there \
+         are {spacing:e} apart, and dt must be at least {min} times that so that no sample \
+         time repeats",
+        min = super::MIN_SAMPLE_SPACINGS
+    )]
+    SampleIntervalBelowResolution {
+        /// The interval given.
+        dt: f64,
+        /// The run's time of largest magnitude (t0 or t_end).
+        t: f64,
+        /// The spacing of doubles there (one ulp).
+        spacing: f64,
+    },
+    /// A sample pushed onto a trajectory before its last time: the times of a trajectory
+    /// never decrease.
+    #[error("time {t} comes before the last sample's time {previous}: times must not decrease")]
+    DecreasingTime {
+        /// The offending time.
+        t: f64,
+        /// The last sample's time.
+        previous: f64,
+    },
 }
 
 /// Checks that every component of `y` is finite.

@@ -44,6 +44,7 @@ pub use pairs::{
 };
 pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
+pub use sampling::MIN_SAMPLE_SPACINGS;
 pub use stepper::Stepper;
 pub use system::{FnSystem, Stats, System};
-pub use trajectory::{Quantities, StateColumns, Trajectory};
+pub use trajectory::{MAX_SAMPLES, Quantities, StateColumns, Trajectory};

@@ -158,7 +158,14 @@ impl<'a, S: Stepper> Run<'a, S> {
     }
 
     /// Records the states at t0, t0 + dt, t0 + 2 dt, … up to `t_end` (each time computed as
-    /// t0 + k dt, so no round-off gathers).
+    /// t0 + k dt, so no round-off gathers). The times increase strictly.
+    ///
+    /// [`Run::integrate`] refuses before any work, with [`OdeError::InvalidStep`] a dt that
+    /// is not finite and > 0, with [`OdeError::SampleIntervalBelowResolution`] one below
+    /// [`MIN_SAMPLE_SPACINGS`](super::MIN_SAMPLE_SPACINGS) spacings of the doubles at the
+    /// run's largest |t| (sampling every 1e-8 s from t0 = 1e9 s, where doubles are 1.2e-7
+    /// apart), and with [`OdeError::TooManySamples`] more samples than
+    /// [`MAX_SAMPLES`](super::MAX_SAMPLES).
     pub fn sample_every(mut self, dt: f64) -> Self {
         self.sampling = Sampling::Every(dt);
         self

@@ -2,6 +2,15 @@
 //! run's span and handed out step by step.
 
 use super::error::OdeError;
+use super::trajectory::MAX_SAMPLES;
+
+/// The least sample interval of [`Run::sample_every`](super::Run::sample_every), in spacings
+/// of the doubles at the larger of |t0|, |t_end| (one ulp there).
+///
+/// Each time is computed as t0 + k·dt: the product k·dt and the sum each round, by at most
+/// two spacings and one, so two neighbouring times could come out equal when dt is within
+/// six spacings; at eight they never do, and the times increase strictly.
+pub const MIN_SAMPLE_SPACINGS: f64 = 8.0;
 
 /// Which samples a run records.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,11 +39,15 @@ impl SampleClock {
     ///
     /// # Errors
     /// [`OdeError::NonFiniteTime`], [`OdeError::StopBeforeCurrent`] (unsorted or before t0),
-    /// [`OdeError::SampleAfterEnd`], [`OdeError::InvalidStep`] for a bad interval.
+    /// [`OdeError::SampleAfterEnd`],
+    /// [`OdeError::InvalidStep`] for an interval that is not finite and > 0,
+    /// [`OdeError::SampleIntervalBelowResolution`] for one too fine for the doubles near the
+    /// run's times, [`OdeError::TooManySamples`] beyond [`MAX_SAMPLES`].
     pub(crate) fn new(sampling: Sampling, t0: f64, t_end: f64) -> Result<Self, OdeError> {
         let count = match &sampling {
             Sampling::Steps => 0,
             Sampling::Times(times) => {
+                check_count(times.len() as f64)?;
                 let mut last = t0;
                 for &t in times {
                     if !t.is_finite() {
@@ -50,13 +63,7 @@ impl SampleClock {
                 }
                 times.len()
             }
-            &Sampling::Every(dt) => {
-                if !(dt.is_finite() && dt > 0.0) {
-                    return Err(OdeError::InvalidStep { h: dt });
-                }
-                // The slack keeps t_end = t0 + n dt from losing its last sample to round-off.
-                ((t_end - t0) / dt * (1.0 + 1e-12)).floor() as usize + 1
-            }
+            &Sampling::Every(dt) => every_count(dt, t0, t_end)?,
         };
         Ok(Self {
             sampling,
@@ -104,4 +111,47 @@ impl SampleClock {
             t
         })
     }
+}
+
+/// The number of samples t0, t0 + dt, … ≤ t_end, after checking that they fit under
+/// [`MAX_SAMPLES`] and that dt resolves the times of the run.
+///
+/// # Errors
+/// [`OdeError::InvalidStep`], [`OdeError::SampleIntervalBelowResolution`],
+/// [`OdeError::TooManySamples`].
+fn every_count(dt: f64, t0: f64, t_end: f64) -> Result<usize, OdeError> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(OdeError::InvalidStep { h: dt });
+    }
+    let t = if t_end.abs() > t0.abs() { t_end } else { t0 };
+    let spacing = ulp(t);
+    if dt < MIN_SAMPLE_SPACINGS * spacing {
+        return Err(OdeError::SampleIntervalBelowResolution { dt, t, spacing });
+    }
+    // The slack keeps t_end = t0 + n dt from losing its last sample to round-off. The count
+    // stays in f64 until it is known to fit: a cast would saturate (or wrap, in older code).
+    let samples = ((t_end - t0) / dt * (1.0 + 1e-12)).floor() + 1.0;
+    check_count(samples)?;
+    Ok(samples as usize)
+}
+
+/// Checks a number of samples against [`MAX_SAMPLES`] (∞ and NaN included).
+///
+/// # Errors
+/// [`OdeError::TooManySamples`].
+fn check_count(samples: f64) -> Result<(), OdeError> {
+    if samples <= MAX_SAMPLES as f64 {
+        Ok(())
+    } else {
+        Err(OdeError::TooManySamples {
+            samples,
+            max: MAX_SAMPLES,
+        })
+    }
+}
+
+/// The spacing of the doubles at `t`: the distance from |t| to the next double up.
+fn ulp(t: f64) -> f64 {
+    let a = t.abs();
+    a.next_up() - a
 }

@@ -34,6 +34,12 @@ impl<const N: usize> StateColumns for [f64; N] {
     }
 }
 
+/// The most samples a [`Trajectory`] holds: ten million, some 0.5 GB for a state of six
+/// numbers. A run that would record more is refused with [`OdeError::TooManySamples`] (before
+/// any work when the sampling says how many it takes); sample less often, or watch every step
+/// with [`Run::observe`](super::Run::observe), which stores nothing.
+pub const MAX_SAMPLES: usize = 10_000_000;
+
 /// Named quantities derived from each sample (energy, |L|, conserved momenta), computed when
 /// the sample is recorded.
 ///
@@ -89,12 +95,30 @@ impl<St> Trajectory<St> {
         }
     }
 
-    /// Appends a sample; `values` must hold one value per quantity name.
+    /// Appends a sample at `t`, not before the last; `values` must hold one value per
+    /// quantity name.
     ///
     /// # Errors
-    /// [`OdeError::ColumnCount`] for a wrong number of values, [`OdeError::NonFiniteQuantity`]
-    /// for a NaN or infinite value.
+    /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t`; [`OdeError::DecreasingTime`]
+    /// for a `t` before the last sample's time (a repeat is kept: `sample_at` may list a
+    /// time twice); [`OdeError::TooManySamples`] past [`MAX_SAMPLES`];
+    /// [`OdeError::ColumnCount`] for a wrong number of values,
+    /// [`OdeError::NonFiniteQuantity`] for a NaN or infinite value.
     pub fn push(&mut self, t: f64, state: St, values: &[f64]) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        if let Some(&previous) = self.times.last()
+            && t < previous
+        {
+            return Err(OdeError::DecreasingTime { t, previous });
+        }
+        if self.times.len() >= MAX_SAMPLES {
+            return Err(OdeError::TooManySamples {
+                samples: (self.times.len() + 1) as f64,
+                max: MAX_SAMPLES,
+            });
+        }
         if values.len() != self.names.len() {
             return Err(OdeError::ColumnCount {
                 expected: self.names.len(),
@@ -124,7 +148,7 @@ impl<St> Trajectory<St> {
         self.times.is_empty()
     }
 
-    /// The sample times, ascending.
+    /// The sample times, ascending (strictly for `sample_every` and `sample_steps`).
     pub fn times(&self) -> &[f64] {
         &self.times
     }
