@@ -75,6 +75,9 @@ pub trait RigidBody {
     /// Checks the description's rules for the current parameter values (derived bodies of
     /// literals are checked at compile time and return `Ok` at once).
     ///
+    /// The body only: a top's gravity, damping and torques are checked with its body by
+    /// `TopDynamics::check_all` (in `precess_core::top`).
+    ///
     /// # Errors
     /// The first rule broken, see [`BodyError`].
     fn validate(&self) -> Result<(), BodyError> {

@@ -26,14 +26,14 @@ pub trait AngleChart: System<6> {
     /// The energy T + V.
     fn energy_at(&self, state: &[f64; 6]) -> f64;
 
-    /// Checks the scene's settings before a run ([`super::TopParameters::check`]);
-    /// [`super::ChartedTop::new`] calls it. A chart over a derived top checks the top's field
-    /// values; the default, for charts whose settings were checked when they were built,
-    /// accepts.
+    /// Checks the scene before a run; [`super::ChartedTop::new`] calls it. A chart over a
+    /// derived top checks everything the top's field values decide
+    /// ([`super::TopDynamics::check_all`]: the body and the settings); the default, for
+    /// charts whose values were checked when they were built, accepts.
     ///
     /// # Errors
-    /// As [`super::TopParameters::check`].
-    fn check_parameters(&self) -> Result<(), TopError> {
+    /// As [`super::TopDynamics::check_all`].
+    fn check_all(&self) -> Result<(), TopError> {
         Ok(())
     }
 
@@ -70,8 +70,8 @@ impl<C: AngleChart + ?Sized> AngleChart for &C {
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         (**self).energy_at(state)
     }
-    fn check_parameters(&self) -> Result<(), TopError> {
-        (**self).check_parameters()
+    fn check_all(&self) -> Result<(), TopError> {
+        (**self).check_all()
     }
     fn omega_at(&self, state: &[f64; 6]) -> Vector3<f64> {
         (**self).omega_at(state)

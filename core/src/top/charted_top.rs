@@ -108,8 +108,9 @@ impl<C: AngleChart> ChartedTop<C> {
     /// # Errors
     /// [`ChartError::SameSequence`] if both models use one sequence;
     /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive;
-    /// [`ChartError::Parameter`] for a setting of the top out of its range (a negative
-    /// gravity or damping, a NaN field: [`super::TopParameters::check`]);
+    /// [`ChartError::Parameter`] for a top that fails [`AngleChart::check_all`] (over a
+    /// derived top: a body that breaks a rule of its description, a negative gravity or
+    /// damping, a NaN field: [`super::TopDynamics::check_all`]);
     /// [`ChartError::NotARotation`] if `r` is not a rotation matrix within
     /// [`ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`] for a NaN or infinite ω;
     /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
@@ -129,7 +130,7 @@ impl<C: AngleChart> ChartedTop<C> {
             return Err(ChartError::InvalidSwitch { value: switch });
         }
         for chart in &charts {
-            chart.check_parameters().map_err(ChartError::Parameter)?;
+            chart.check_all().map_err(ChartError::Parameter)?;
         }
         check_rotation(r)?;
         if !omega.iter().all(|v| v.is_finite()) {

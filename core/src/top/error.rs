@@ -75,7 +75,7 @@ pub enum TopError {
         value: f64,
     },
     /// The body of a top breaks a rule of its description (a field-valued mass, say), found
-    /// by [`super::TopDynamics::validate_top`].
+    /// by [`super::TopDynamics::check_all`].
     #[error(transparent)]
     Body(#[from] BodyError),
     /// The attitude quaternion of an Eulerian state is zero, so it names no attitude.
@@ -131,7 +131,9 @@ pub enum ChartError {
         /// |det B| in the second chart.
         secondary: f64,
     },
-    /// A setting of the top is out of its range (see [`super::TopParameters::check`]).
+    /// The top fails its checks ([`super::TopDynamics::check_all`]): a setting out of its
+    /// range ([`super::TopParameters::check`]) or a body that breaks a rule
+    /// ([`TopError::Body`]).
     #[error(transparent)]
     Parameter(TopError),
     /// The stepper failed, or the stop time is not finite or lies in the past.

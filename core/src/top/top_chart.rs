@@ -94,7 +94,7 @@ impl<T: TopDynamics> AngleChart for TopChart<'_, T> {
     fn energy_at(&self, state: &[f64; 6]) -> f64 {
         self.top.energy_in(self.sequence, state)
     }
-    fn check_parameters(&self) -> Result<(), TopError> {
-        self.top.check_parameters()
+    fn check_all(&self) -> Result<(), TopError> {
+        self.top.check_all()
     }
 }

@@ -20,7 +20,11 @@ use crate::rigid::AngleSequence;
 /// The generated methods are straight-line code without checks, for the steppers' inner
 /// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
 /// NaN or infinite. The `try_` helpers and [`TopDynamics::rates_from_omega`] check the state and the
-/// chart first, under the one rule of [`super::check_chart`].
+/// chart first, under the one rule of [`super::check_chart`]; the `try_` helpers and
+/// [`super::ChartedTop::new`] check the whole top first, through [`TopDynamics::check_all`].
+///
+/// Every top is a [`RigidBody`] (the same derive implements both), so its body is checked
+/// with its settings.
 ///
 /// # Examples
 ///
@@ -50,7 +54,7 @@ use crate::rigid::AngleSequence;
 /// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
 /// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
 /// ```
-pub trait TopDynamics {
+pub trait TopDynamics: RigidBody {
     /// The declared angle sequence.
     const SEQUENCE: AngleSequence;
 
@@ -87,10 +91,10 @@ pub trait TopDynamics {
     /// from the fields where `#[top(...)]` names fields.
     fn top_parameters(&self) -> TopParameters;
 
-    /// Checks the declared settings under the rules literals are held to at compile time
-    /// ([`TopParameters::check`]): gravity and damping finite and ≥ 0, torques finite. The
-    /// checked entry points (`try_` methods, [`super::ChartedTop::new`],
-    /// [`TopDynamics::validate_top`]) call it; the generated equations do not.
+    /// Checks the declared settings alone under the rules literals are held to at compile
+    /// time ([`TopParameters::check`]): gravity and damping finite and ≥ 0, torques finite.
+    /// Part of [`TopDynamics::check_all`], which the checked entry points call; the generated
+    /// equations do not.
     ///
     /// # Errors
     /// As [`TopParameters::check`].
@@ -98,30 +102,41 @@ pub trait TopDynamics {
         self.top_parameters().check()
     }
 
-    /// Checks the body ([`RigidBody::validate`]) and the top's settings
-    /// ([`TopDynamics::check_parameters`]) for the current field values.
+    /// Checks everything the top's field values decide, under the rules literals meet at
+    /// compile time: the body (every rule of [`RigidBody::validate`]: masses and sizes > 0,
+    /// inertias positive definite and within the triangle inequality, rotations that are
+    /// rotations) and the settings ([`TopDynamics::check_parameters`]: gravity, damping,
+    /// torques). The one checked entry: the `try_` methods, [`super::ChartedTop::new`] over
+    /// [`super::TopChart`]s and [`TopDynamics::validate_top`] all call it.
+    ///
+    /// [`RigidBody::validate`] alone checks the body only (a negative gravity passes it).
     ///
     /// # Errors
     /// [`TopError::Body`] for the body's first broken rule, then as
     /// [`TopDynamics::check_parameters`].
-    fn validate_top(&self) -> Result<(), TopError>
-    where
-        Self: RigidBody,
-    {
+    fn check_all(&self) -> Result<(), TopError> {
         self.validate()?;
         self.check_parameters()
     }
 
-    /// `self`, if it passes [`TopDynamics::validate_top`]: a checked constructor for tops
+    /// The same as [`TopDynamics::check_all`] (the name of the body's check with `_top`).
+    ///
+    /// # Errors
+    /// As [`TopDynamics::check_all`].
+    fn validate_top(&self) -> Result<(), TopError> {
+        self.check_all()
+    }
+
+    /// `self`, if it passes [`TopDynamics::check_all`]: a checked constructor for tops
     /// with field values, `Spinner { g: 9.81 }.validated_top()?`.
     ///
     /// # Errors
-    /// As [`TopDynamics::validate_top`].
+    /// As [`TopDynamics::check_all`].
     fn validated_top(self) -> Result<Self, TopError>
     where
-        Self: Sized + RigidBody,
+        Self: Sized,
     {
-        self.validate_top()?;
+        self.check_all()?;
         Ok(self)
     }
 
@@ -180,8 +195,9 @@ pub trait TopDynamics {
     /// q̈ in the chart `seq`, refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// The settings' errors of [`TopDynamics::check_parameters`] (a negative gravity or
-    /// damping, a NaN field); [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
+    /// The errors of [`TopDynamics::check_all`] (a body that breaks a rule of its
+    /// description, [`TopError::Body`]; a negative gravity or damping, a NaN setting);
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
     /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
     /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
@@ -191,7 +207,7 @@ pub trait TopDynamics {
         t: f64,
         state: &[f64; 6],
     ) -> Result<[f64; 3], TopError> {
-        self.check_parameters()?;
+        self.check_all()?;
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
