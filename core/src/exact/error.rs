@@ -73,6 +73,19 @@ pub enum ExactError {
         /// Third argument.
         z: f64,
     },
+    /// The rate of the free body's motion, about |m|/I, is beyond the f64 range: the moments
+    /// are too small for the angular momentum (the period would be below the smallest
+    /// double).
+    #[error(
+        "the motion's rate |m|/I overflows f64: principal moments {inertia:?} are too small \
+         for the angular momentum m(0) = {m0:?}"
+    )]
+    RateOverflow {
+        /// The principal moments given.
+        inertia: [f64; 3],
+        /// The initial angular momentum given.
+        m0: [f64; 3],
+    },
 }
 
 impl ExactError {

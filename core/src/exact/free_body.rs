@@ -79,9 +79,14 @@ pub struct FreeBodyExact {
 impl FreeBodyExact {
     /// Sets up the solution for principal moments `inertia` (any order) and m(0) = `m0`.
     ///
+    /// Any finite positive moments, subnormal ones included, and any finite m(0): the
+    /// problem is scaled by exact powers of two, so a body whose moments and momentum are
+    /// both tiny moves as the same body at unit scale.
+    ///
     /// # Errors
     /// [`ExactError::InvalidInertia`] unless all moments are finite and > 0;
-    /// [`ExactError::NonFinite`] for a non-finite `m0`.
+    /// [`ExactError::NonFinite`] for a non-finite `m0`; [`ExactError::RateOverflow`] when
+    /// the rate of the motion, about |m|/I, is beyond f64 (moments of 1e-310 for |m| = 1).
     pub fn new(
         inertia: impl Into<Vector3<f64>>,
         m0: impl Into<Vector3<f64>>,
@@ -203,7 +208,14 @@ impl FreeBodyExact {
             }
             _ => me.amp[2] *= s,
         }
-        me.lambda = lam * d(s * parity) * d(sm) / d(si);
+        // The scales enter λ as the power of two sm / si, applied exactly by exponent: in
+        // double-double the quotient by a subnormal si is NaN, and at such moments the rate
+        // itself may leave the f64 range.
+        let lambda = ldexp_dd(lam * d(s * parity), exponent(sm) - exponent(si));
+        if !lambda.hi.is_finite() {
+            return Err(ExactError::RateOverflow { inertia, m0 });
+        }
+        me.lambda = lambda;
         // Initial phase from the amplitude φ₀ with (sin φ₀, cos φ₀) = (sn u₀, cn u₀).
         let sn0 = m[1] * sm / me.amp[1];
         me.u0 = ellip_f_sc_of(sn0, cn_ratio, &me.jac)?;
