@@ -45,7 +45,9 @@ pub enum Orientation<T> {
     },
     /// R itself, as rows: column k is the part's axis k in description coordinates. It must
     /// be a rotation: orthonormal to 1e-9 and det R = +1 (not a reflection). It is used as
-    /// given, not re-orthonormalised.
+    /// the nearest rotation (the orthogonal factor of its polar decomposition), so a matrix
+    /// rounded to a few digits turns the part without stretching its moments; one that is a
+    /// rotation to rounding (from angles, a quaternion, a `Rotation3`) is used as given.
     Matrix([[T; 3]; 3]),
     /// Elementary rotations composed as R = R_a1(α1) R_a2(α2) …: turn about a1 by α1, then
     /// about the turned a2 by α2, and so on (the convention of Euler angles, so `[(Z, φ),
@@ -97,8 +99,8 @@ impl Orientation<f64> {
     }
 
     /// The rotation matrix R (part axes → description axes); `None` for an axis–angle whose
-    /// axis is zero. A [`Orientation::Matrix`] is returned as given, rotation or not (the
-    /// body's validation checks it).
+    /// axis is zero. A [`Orientation::Matrix`] is returned as the rotation nearest to it
+    /// (meaningful for one within the tolerance, which the body's validation checks).
     pub fn to_matrix(&self) -> Option<Matrix3<f64>> {
         rotation_matrix(&mut Numeric, self).map(|t| Matrix3::from_fn(|i, j| t[i][j]))
     }
@@ -137,7 +139,9 @@ pub fn rotation_matrix<A: Algebra>(
     o: &Orientation<A::Value>,
 ) -> Option<Tensor<A::Value>> {
     match o {
-        Orientation::Matrix(rows) => Some(*rows),
+        // Within the tolerance of a rotation is not a rotation: R I Rᵀ would scale the
+        // moments by |R|² (1 + 8e-10 at the tolerance's edge).
+        Orientation::Matrix(rows) => Some(al.orthonormalise(rows)),
         Orientation::AxisAngle { axis, angle } => axis_angle(al, axis, *angle),
         Orientation::Sequence(turns) => {
             let mut r = identity(al);
