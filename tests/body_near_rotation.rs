@@ -176,3 +176,33 @@ proptest! {
         prop_assert!(err < 1e-14, "moments off by {err:e}");
     }
 }
+
+/// I1 = 1, I3 = 1/2 about the pivot, M g l = 1.
+#[derive(RigidBody)]
+#[rigid(
+    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 1.0)]
+struct Heavy;
+
+/// ChartedTop::new accepts an attitude within the same 1e-9; the angles it reads off are
+/// ratios of R's entries (atan2), so a stretched R gives the angles of the rotation itself.
+#[test]
+fn a_charted_top_starts_from_the_nearest_rotation() {
+    use precess::top::{ChartConfig, ChartedTop, TopChart};
+    let r0 = Rotation3::from_euler_angles(0.3, 0.9, -0.4);
+    // |RᵀR − E| = 6e-10 and det R − 1 = 9e-10, both inside the tolerance.
+    let r = r0.matrix() * (1.0 + 3e-10);
+    let [zxz, zyx] = TopChart::both(&Heavy);
+    let top = ChartedTop::new(
+        [zxz, zyx],
+        0.0,
+        &r,
+        &Vector3::new(0.1, 0.2, 5.0),
+        ChartConfig::default(),
+    )
+    .unwrap();
+    let off = (top.rotation() - r0.matrix()).abs().max();
+    assert!(off < 1e-15, "the start is {off:e} off the rotation");
+}
