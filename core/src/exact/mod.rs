@@ -7,6 +7,7 @@
 
 mod attitude;
 pub mod carlson;
+mod dd_functions;
 mod double_double;
 mod elliptic;
 mod error;
