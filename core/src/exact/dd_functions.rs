@@ -184,7 +184,7 @@ impl Dd {
 
 /// `(p, q)` with q ≤ [`MAX_DENOMINATOR`] and `p as f64 / q as f64 == r`, the simplest such
 /// (the first convergent of r's continued fraction that rounds to r), if any.
-fn rational(r: f64) -> Option<(i64, i64)> {
+pub(crate) fn rational(r: f64) -> Option<(i64, i64)> {
     if r.abs() > 1e15 {
         return None;
     }
