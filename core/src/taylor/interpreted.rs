@@ -344,7 +344,7 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         low[0] = *y;
         for k in 0..last {
             for s in &self.tape.steps {
-                recurrence_dd::step(&mut c, sdd, s, k);
+                recurrence_dd::step(&mut c, &|x| sdd[x as usize], s, k);
             }
             let div = (k + 1) as f64;
             for (i, out) in self.tape.outputs.iter().enumerate() {
