@@ -17,13 +17,13 @@ use super::Dd;
 
 /// π/2 as the sum of three doubles (each the rounding of what the previous leave).
 const HALF_PI: [f64; 3] = [
-    1.570_796_326_794_896_6,
+    core::f64::consts::FRAC_PI_2,
     6.123_233_995_736_766e-17,
     -1.497_384_904_859_169_8e-33,
 ];
 /// ln 2 as the sum of three doubles.
 const LN2: [f64; 3] = [
-    0.693_147_180_559_945_3,
+    core::f64::consts::LN_2,
     2.319_046_813_846_299_6e-17,
     5.707_708_438_416_212e-34,
 ];
@@ -54,12 +54,12 @@ impl Dd {
     /// ```
     /// use precess_core::exact::Dd;
     /// // sin(π/6) = 1/2 to 32 digits, with π/6 in double-double.
-    /// let pi = Dd::from(3.141592653589793) + Dd::from(1.2246467991473532e-16);
+    /// let pi = Dd::from(std::f64::consts::PI) + Dd::from(1.2246467991473532e-16);
     /// let (s, _) = pi.div_f64(6.0).sin_cos();
     /// assert!((s - Dd::from(0.5)).to_f64().abs() < 1e-31);
     /// ```
     pub fn sin_cos(self) -> (Dd, Dd) {
-        if !(self.hi.abs() <= REDUCTION_LIMIT) {
+        if self.hi.is_nan() || self.hi.abs() > REDUCTION_LIMIT {
             let (s, c) = self.hi.sin_cos();
             return (Dd::from(s), Dd::from(c));
         }
@@ -122,7 +122,7 @@ impl Dd {
     /// assert!((x.exp().ln() - x).to_f64().abs() < 1e-31);
     /// ```
     pub fn ln(self) -> Dd {
-        if !(self.hi > 0.0) || self.hi.is_infinite() {
+        if self.hi.is_nan() || self.hi <= 0.0 || self.hi.is_infinite() {
             return Dd::from(self.hi.ln());
         }
         let y = Dd::from(self.hi.ln());
@@ -163,7 +163,7 @@ impl Dd {
     /// assert!((c * c * c - Dd::from(2.0)).to_f64().abs() < 1e-30);
     /// ```
     pub fn powf(self, r: f64) -> Dd {
-        if !(self.hi > 0.0) || !self.hi.is_finite() || !r.is_finite() {
+        if self.hi.is_nan() || self.hi <= 0.0 || !self.hi.is_finite() || !r.is_finite() {
             return Dd::from(self.hi.powf(r));
         }
         match rational(r) {

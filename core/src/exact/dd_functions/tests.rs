@@ -12,7 +12,8 @@ fn rel(got: Dd, hi: f64, lo: f64) -> f64 {
 #[test]
 fn sine_and_cosine_match_mpmath() {
     // (x, sin x, cos x) with sin and cos as (hi, lo).
-    let cases: [(f64, (f64, f64), (f64, f64)); 3] = [
+    type Case = (f64, (f64, f64), (f64, f64));
+    let cases: [Case; 3] = [
         (
             1.0,
             (0.8414709848078965, 1.776845092935536e-18),
@@ -45,7 +46,7 @@ fn sine_and_cosine_match_mpmath() {
 #[test]
 fn sine_and_cosine_satisfy_the_identities() {
     let pi = Dd {
-        hi: 3.141592653589793,
+        hi: std::f64::consts::PI,
         lo: 1.2246467991473532e-16,
     };
     let (s6, c6) = pi.div_f64(6.0).sin_cos();
@@ -73,11 +74,11 @@ fn sine_and_cosine_satisfy_the_identities() {
 #[test]
 fn exponential_and_logarithm_match_mpmath() {
     let e = Dd::from(1.0).exp();
-    assert!(rel(e, 2.718281828459045, 1.4456468917292502e-16) < 1e-31);
+    assert!(rel(e, std::f64::consts::E, 1.4456468917292502e-16) < 1e-31);
     let small = Dd::from(-20.25).exp();
     assert!(rel(small, 1.6052280551856116e-09, -3.657643988865463e-26) < 1e-31);
     let l = Dd::from(10.0).ln();
-    assert!(rel(l, 2.302585092994046, -2.1707562233822494e-16) < 1e-31);
+    assert!(rel(l, std::f64::consts::LN_10, -2.1707562233822494e-16) < 1e-31);
     assert_eq!(Dd::from(0.0).ln().hi, f64::NEG_INFINITY);
     assert!(Dd::from(-1.0).ln().hi.is_nan());
     assert_eq!(Dd::from(800.0).exp().hi, f64::INFINITY);
