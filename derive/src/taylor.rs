@@ -52,7 +52,8 @@ pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize
 /// over the state symbols and the arena's time symbol (a series, read from the `t` argument,
 /// when `rhs` reads it), the other symbols read through `symbols` after `prelude`
 /// (statements binding what those read, which may use `self`). Its `Workspace` is the
-/// emitted rows (`Vec<[f64; K + 1]>`) and its `coefficients_into` the emitted recurrences. A symbol the
+/// emitted rows (`Vec<[f64; K + 1]>`), its `coefficients_into` the emitted recurrences and
+/// its `coefficients_extended_into` their double-double low orders (`Tape::extended_tokens`). A symbol the
 /// map does not know is an internal error spanned on `ident`, as in `symbols.rs`. The one
 /// entry point of every scene's `taylor = K`.
 #[allow(clippy::too_many_arguments)]
@@ -96,6 +97,9 @@ pub fn expand(
         }
     });
     let (body, workspace) = (code.body, code.workspace);
+    // The extended mode's double-double low orders, from tables of the same tape (a symbol
+    // without a value was reported above).
+    let extended = tape.extended_tokens(order, &mut |s| symbols.get(s).unwrap_or_default());
     quote! {
         #[automatically_derived]
         #[allow(unused_variables, unused_mut, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -117,6 +121,19 @@ pub fn expand(
             ) {
                 #prelude
                 #body
+            }
+
+            fn coefficients_extended_into(
+                &self,
+                ws: &mut Self::Workspace,
+                t: ::precess::exact::Dd,
+                y: &[::precess::exact::Dd; #n],
+                order: usize,
+                coeffs: &mut [[f64; #n]],
+                low: &mut [[::precess::exact::Dd; #n]],
+            ) -> bool {
+                #prelude
+                #extended
             }
         }
     }

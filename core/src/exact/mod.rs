@@ -7,6 +7,7 @@
 
 mod attitude;
 pub mod carlson;
+mod dd_functions;
 mod double_double;
 mod elliptic;
 mod error;
@@ -14,6 +15,7 @@ mod free_body;
 mod scaling;
 
 pub use attitude::{FreeBodyAttitude, free_body_flow_attitude};
+pub(crate) use dd_functions::rational;
 pub use double_double::Dd;
 pub use elliptic::{Jacobi, MAX_ARGUMENT, ellip_k, sncndn};
 pub use error::ExactError;

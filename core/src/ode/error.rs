@@ -206,6 +206,18 @@ pub enum OdeError {
         /// The last sample's time.
         previous: f64,
     },
+    /// The Taylor integrator's extended mode was asked of a system whose
+    /// `TaylorSystem::coefficients_extended_into` returns `false`: a hand-written system that
+    /// does not implement it (every generated system and every `TaylorTape` does).
+    #[error(
+        "the extended mode (orders 0..={low} in double-double) needs a system that computes \
+         double-double coefficients, and this one's TaylorSystem::coefficients_extended_into \
+         returns false: implement it, or leave TaylorConfig::extended at None"
+    )]
+    NoExtendedCoefficients {
+        /// The highest order asked in double-double (`TaylorConfig::extended`).
+        low: usize,
+    },
 }
 
 /// Checks that every component of `y` is finite.

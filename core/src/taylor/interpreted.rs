@@ -113,19 +113,23 @@ impl From<BindingError> for TaylorError {
 /// ```
 ///
 /// # Double-double low orders
-/// [`TaylorSystem::coefficients_extended_into`] is implemented for tapes made of sums,
-/// differences, scalings, products, squares, quotients and square roots: the constants
-/// (parameters combined by the scalar operations) are then evaluated in double-double too,
-/// so that `1/I₃ − 1/I₂` is not rounded once for the whole run. A tape with a sine or
-/// cosine or a real power, of a series or of a constant, returns `false` there: this crate
-/// has no double-double sine or `powf` ([`TaylorTape::extends`] tells in advance).
+/// [`TaylorSystem::coefficients_extended_into`] is implemented for every tape: the
+/// constants (parameters combined by the scalar operations) are evaluated in double-double
+/// too, so that `1/I₃ − 1/I₂` is not rounded once for the whole run, and sines, cosines and
+/// real powers take their values from [`Dd::sin_cos`] and [`Dd::powf`].
+///
+/// # Parameters the equations do not read
+/// `values` may bind every parameter of the arena, also those the right-hand side happens
+/// not to read (a free body's mass under gravity alone): they are checked for finiteness
+/// and otherwise ignored, so that code binding all of a scene's parameters keeps working
+/// when a simplification removes one. A name that is no parameter of the arena at all is
+/// still [`TaylorError::UnknownParameter`].
 #[derive(Debug)]
 pub struct TaylorTape<const N: usize> {
     tape: Tape,
     scalars: Vec<f64>,
-    /// The scalars in double-double, when every operation of the tape has a double-double
-    /// recurrence (`None` otherwise).
-    scalars_dd: Option<Vec<Dd>>,
+    /// The scalars in double-double, for the extended mode.
+    scalars_dd: Vec<Dd>,
     max_order: usize,
 }
 
@@ -136,7 +140,9 @@ impl<const N: usize> TaylorTape<N> {
     ///
     /// # Errors
     /// [`TaylorError::StateNotASymbol`], [`TaylorError::Order`], then the binding errors
-    /// (an unknown, unset or non-finite parameter, an input outside the state), then
+    /// (a name that is no parameter of the arena, an unset or non-finite parameter, an
+    /// input outside the state; a parameter of the arena that `rhs` does not read is
+    /// accepted and ignored), then
     /// [`TaylorError::NonFiniteConstant`] for a constant that the parameters make NaN or
     /// infinite (√ or a real power of a negative value, a division by zero).
     pub fn new(
@@ -165,8 +171,23 @@ impl<const N: usize> TaylorTape<N> {
         let program = Program::lower(arena, &rhs);
         let tape = Tape::from_program(&program, &symbols, time);
         symbols.extend(time);
+        // A parameter of the arena that the program does not read is bound by code that
+        // binds a whole scene: judged for finiteness, then left out of what Bindings sees.
+        let inputs = program.inputs();
+        let read = |name: &str| inputs.iter().any(|&s| arena.symbol(s).name == name);
+        let mut used = Vec::with_capacity(values.len());
+        for &(name, value) in values {
+            if read(name) || arena.find_parameter(name).is_none() {
+                used.push((name, value));
+            } else if !value.is_finite() {
+                return Err(TaylorError::NonFinite {
+                    name: name.to_owned(),
+                    value,
+                });
+            }
+        }
         // Bindings judges the names and values; the values are then read here by name.
-        Bindings::new(arena, std::slice::from_ref(&program), &symbols, values)?;
+        Bindings::new(arena, std::slice::from_ref(&program), &symbols, &used)?;
         let value_of = |s| {
             let name = &arena.symbol(s).name;
             values
@@ -209,9 +230,10 @@ impl<const N: usize> TaylorTape<N> {
     }
 
     /// Whether [`TaylorSystem::coefficients_extended_into`] computes the low orders in
-    /// double-double for this tape (no sine, cosine or real power anywhere in it).
+    /// double-double for this tape: always, since every operation has its double-double
+    /// recurrence (kept for code written when sines and real powers had none).
     pub fn extends(&self) -> bool {
-        self.scalars_dd.is_some()
+        true
     }
 
     /// The decomposed right-hand side.
@@ -286,9 +308,7 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         coeffs: &mut [[f64; N]],
         low: &mut [[Dd; N]],
     ) -> bool {
-        let Some(sdd) = self.scalars_dd.as_deref() else {
-            return false;
-        };
+        let sdd = self.scalars_dd.as_slice();
         let Some(top) = coeffs.len().checked_sub(1) else {
             return false;
         };
@@ -324,7 +344,7 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         low[0] = *y;
         for k in 0..last {
             for s in &self.tape.steps {
-                recurrence_dd::step(&mut c, sdd, s, k);
+                recurrence_dd::step(&mut c, &|x| sdd[x as usize], s, k);
             }
             let div = (k + 1) as f64;
             for (i, out) in self.tape.outputs.iter().enumerate() {
@@ -359,13 +379,8 @@ fn operation_name(op: &ScalarOp) -> &'static str {
     }
 }
 
-/// The tape's scalars in double-double, `None` if the tape holds an operation without a
-/// double-double recurrence (a sine, cosine or real power). `value_of` gives a symbol's
-/// bound value.
-fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) -> Option<Vec<Dd>> {
-    if !tape.steps.iter().all(|s| recurrence_dd::supported(&s.op)) {
-        return None;
-    }
+/// The tape's scalars in double-double; `value_of` gives a symbol's bound value.
+fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) -> Vec<Dd> {
     let mut out: Vec<Dd> = Vec::with_capacity(tape.scalars.len());
     for op in &tape.scalars {
         let x = |i: u32| out[i as usize];
@@ -378,9 +393,11 @@ fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) ->
             ScalarOp::Div(a, b) => x(a) / x(b),
             ScalarOp::Neg(a) => -x(a),
             ScalarOp::Sqrt(a) => x(a).sqrt(),
-            ScalarOp::Sin(_) | ScalarOp::Cos(_) | ScalarOp::Powf(..) => return None,
+            ScalarOp::Sin(a) => x(a).sin_cos().0,
+            ScalarOp::Cos(a) => x(a).sin_cos().1,
+            ScalarOp::Powf(a, r) => x(a).powf(r),
         };
         out.push(v);
     }
-    Some(out)
+    out
 }

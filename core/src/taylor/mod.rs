@@ -10,6 +10,7 @@
 //! - [`Taylor`] steps with them: order and step from the tolerance, dense output from the
 //!   step polynomial, compensated sums; [`solve`] and [`solve_dense`] drive it in one call.
 
+pub mod compact;
 mod emit;
 mod integrator;
 mod interpreted;

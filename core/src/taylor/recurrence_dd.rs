@@ -7,13 +7,14 @@
 //! 2⁻¹⁰⁴·k·Σ|a_j b_{k−j}| instead of 2⁻⁵³·k·Σ|…| in `f64`. The coefficients live in the `f64` workspace of
 //! [`super::TaylorTape`], two words per coefficient (hi, lo), after the `f64` table.
 //!
-//! Only the operations with an algebraic recurrence are carried: sums, scalings, products,
-//! squares, quotients and square roots. A sine–cosine pair would need sin and cos of the
-//! order-0 coefficient to 106 bits, and a real power `a_0^r` to 106 bits, neither of which
-//! this crate computes, so a tape holding one is not extended (the caller sees `false`).
+//! Every operation of a tape is carried. A sine–cosine pair and a real power take their
+//! order 0 from the double-double functions ([`Dd::sin_cos`], [`Dd::powf`]); a real power
+//! whose exponent is the double nearest a rational p/q (a literal such as `3/2`) is taken
+//! as exactly p/q at every order, its weights r(k − j) − j summed as the integers
+//! p(k − j) − q j and divided by q once.
 
 use super::tape::{SeriesOp, SeriesStep};
-use crate::exact::Dd;
+use crate::exact::{Dd, rational};
 
 /// A table of double-double coefficients stored series-major in `f64` pairs:
 /// `w[2(x·st + k)]` and the next word are the hi and lo of series `x` at order `k`.
@@ -50,17 +51,11 @@ impl DdTable<'_> {
     }
 }
 
-/// Whether [`step`] carries `op` (see the module's docs).
-pub(crate) fn supported(op: &SeriesOp) -> bool {
-    !matches!(op, SeriesOp::SinCos(_) | SeriesOp::Powf(..))
-}
-
 /// Writes the order-`k` coefficient of `step`'s output in double-double, every operand known
-/// to order `k` and the output to order `k − 1`; `s` holds the scalars in double-double.
-/// Does nothing for an operation [`supported`] refuses (the caller checks first).
-pub(crate) fn step(c: &mut DdTable<'_>, s: &[Dd], step: &SeriesStep, k: usize) {
+/// to order `k` and the output to order `k − 1`; `s` gives the scalars in double-double.
+pub(crate) fn step(c: &mut DdTable<'_>, s: &impl Fn(u32) -> Dd, step: &SeriesStep, k: usize) {
     let out = step.out;
-    let sc = |x: u32| s[x as usize];
+    let sc = s;
     let v = match step.op {
         SeriesOp::Add(a, b) => c.get(a, k) + c.get(b, k),
         SeriesOp::Sub(a, b) => c.get(a, k) - c.get(b, k),
@@ -86,9 +81,45 @@ pub(crate) fn step(c: &mut DdTable<'_>, s: &[Dd], step: &SeriesStep, k: usize) {
             };
             (c.get(a, k) - sum) / (Dd::from(2.0) * c.get(out, 0))
         }
-        SeriesOp::SinCos(_) | SeriesOp::Powf(..) => return,
+        SeriesOp::Powf(a, r) if k == 0 => c.get(a, 0).powf(r),
+        SeriesOp::Powf(a, r) => power(c, a, out, r, k),
+        SeriesOp::SinCos(a) => {
+            let (sin, cos, d) = (out, out + 1, out + 2);
+            let (sv, cv) = if k == 0 {
+                c.set(d, 0, Dd::default());
+                c.get(a, 0).sin_cos()
+            } else {
+                // d_k = k a_k, then s_k = (1/k) Σⱼ₌₁ᵏ d_j c_{k−j}, c_k = −(1/k) Σⱼ₌₁ᵏ d_j s_{k−j}.
+                c.set(d, k, c.get(a, k) * Dd::from(k as f64));
+                let kf = k as f64;
+                (
+                    c.cauchy(d, cos, k, 1, k).div_f64(kf),
+                    -c.cauchy(d, sin, k, 1, k).div_f64(kf),
+                )
+            };
+            c.set(cos, k, cv);
+            sv
+        }
     };
     c.set(out, k, v);
+}
+
+/// The real power's order k ≥ 1: c_k = (1/(k a_0)) Σⱼ₌₀ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j, with
+/// r = p/q exactly when the double r rounds a rational of small denominator (as at order 0,
+/// [`Dd::powf`]), so that every order describes the same power.
+fn power(c: &DdTable<'_>, a: u32, out: u32, r: f64, k: usize) -> Dd {
+    let (num, den) = match rational(r) {
+        Some((p, q)) => (p as f64, q as f64),
+        None => (r, 1.0),
+    };
+    let kf = k as f64;
+    let sum = Dd::dot((0..k).map(|j| {
+        // num·(k − j) − den·j: exact for a rational (small integers), else r(k − j) − j in
+        // double-double.
+        let w = Dd::prod(num, (k - j) as f64) - Dd::prod(den, j as f64);
+        (w * c.get(a, k - j), c.get(out, j))
+    }));
+    (sum / c.get(a, 0)).div_f64(kf * den)
 }
 
 #[cfg(test)]
@@ -135,7 +166,7 @@ mod tests {
             op: SeriesOp::Div(0, 1),
         };
         for k in 0..st {
-            step(&mut c, &[], &div, k);
+            step(&mut c, &|_| Dd::default(), &div, k);
         }
         for k in 0..st {
             let scaled = c.get(2, k) * Dd::from(3f64.powi(k as i32 + 1));
@@ -157,7 +188,7 @@ mod tests {
             op: SeriesOp::Sqrt(0),
         };
         for k in 0..st {
-            step(&mut c, &[], &sqrt, k);
+            step(&mut c, &|_| Dd::default(), &sqrt, k);
         }
         for k in 0..st {
             let square = Dd::dot((0..=k).map(|j| (c.get(1, j), c.get(1, k - j))));

@@ -28,7 +28,7 @@ use crate::taylor::TaylorSystem;
 /// 0 … low), after checking once, at (t0, y0), that the system computes them.
 ///
 /// # Errors
-/// [`OdeError::InvalidParameter`] naming `TaylorConfig::extended` when the system's
+/// [`OdeError::NoExtendedCoefficients`] when the system's
 /// [`TaylorSystem::coefficients_extended_into`] returns `false`.
 pub(super) fn low_table<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
@@ -41,10 +41,7 @@ pub(super) fn low_table<S: TaylorSystem<N>, const N: usize>(
     let mut probe = [[0.0; N]; 2];
     let y = y0.map(Dd::from);
     if !sys.coefficients_extended_into(ws, Dd::from(t0), &y, 1, &mut probe, &mut table) {
-        return Err(OdeError::InvalidParameter {
-            name: "TaylorConfig::extended (the system computes no double-double coefficients)",
-            value: low as f64,
-        });
+        return Err(OdeError::NoExtendedCoefficients { low });
     }
     Ok(table)
 }
@@ -74,10 +71,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         {
             // low_table checked the system at construction; one that changes its mind is
             // refused the same way.
-            return Err(OdeError::InvalidParameter {
-                name: "TaylorConfig::extended (the system computes no double-double coefficients)",
-                value: low_len as f64,
-            });
+            return Err(OdeError::NoExtendedCoefficients { low: low_len - 1 });
         }
         self.jets += 1;
         self.stats.rhs_evals += p as u64;
