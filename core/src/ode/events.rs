@@ -167,8 +167,8 @@ pub(crate) fn crossing(wanted: Direction, g_old: f64, g_new: f64) -> Option<Dire
 const MAX_ITERATIONS: usize = 200;
 
 /// The root of `f` in `[a, b]`, given `f(a) = fa` and `f(b) = fb` of opposite signs (or
-/// `fb = 0`), to a few ulps: returns the right end of the final bracket, where f has the sign
-/// of `fb` or is 0.
+/// `fb = 0`), down to adjacent doubles: returns the right end of the final bracket, where f
+/// has the sign of `fb` or is 0.
 ///
 /// # Errors
 /// What `f` returns.
@@ -186,7 +186,10 @@ pub(crate) fn locate_root(
             return Ok(b);
         }
         let width = b - a;
-        if width <= 2.0 * f64::EPSILON * a.abs().max(b.abs()) {
+        // Down to adjacent doubles (the midpoint rounds onto an end): b is then within an
+        // ulp of the root of f as computed.
+        let middle = 0.5 * (a + b);
+        if middle <= a || middle >= b {
             return Ok(b);
         }
         let bisect = width > 0.5 * widths[0];
@@ -196,17 +199,17 @@ pub(crate) fn locate_root(
         // the root is within rounding of it) probes one tolerance inside that end, which
         // closes the bracket at once when the root is there; bisecting instead would halve
         // the bracket down to an ulp, tens of evaluations.
-        let tol = 2.0 * f64::EPSILON * a.abs().max(b.abs());
+        let tol = f64::EPSILON * a.abs().max(b.abs());
         let c = if bisect {
-            0.5 * (a + b)
+            middle
         } else if secant >= b {
-            b - tol
+            (b - tol).max(a.next_up())
         } else if secant <= a {
-            a + tol
+            (a + tol).min(b.next_down())
         } else if secant > a && secant < b {
             secant
         } else {
-            0.5 * (a + b)
+            middle
         };
         if c <= a || c >= b {
             // a and b are adjacent doubles.
