@@ -204,6 +204,34 @@ fn a_terminal_event_stops_at_the_first_root_inside_a_step() {
 }
 
 #[test]
+fn step_ends_only_compares_the_ends_and_nothing_else() {
+    // The opt-out: g at the start and once per step, and the pair inside one step is
+    // missed as documented; the first root, a change of sign across its step, is found.
+    let delta = 0.01;
+    let calls = std::cell::Cell::new(0u32);
+    let g = dip(delta);
+    let cfg = TaylorConfig::with_tol(1e-14, 1e-14);
+    let mut ode = Taylor::new(Oscillator, 0.0, [1.0, 0.0], cfg).unwrap();
+    let out = Run::new(&mut ode, 7.0)
+        .sample_none()
+        .event(Event::new("dip").step_ends_only(), |t, y| {
+            calls.set(calls.get() + 1);
+            g(t, y)
+        })
+        .integrate()
+        .unwrap();
+    assert_eq!(out.events.len(), 1);
+    assert!((out.events[0].t - delta).abs() < 1e-10);
+    // The start, the step ends, and the located root's evaluations (a few tens at most).
+    let steps = u32::try_from(out.stats.steps).unwrap();
+    assert!(
+        calls.get() > steps && calls.get() <= 1 + steps + 40,
+        "{}",
+        calls.get()
+    );
+}
+
+#[test]
 fn a_root_exactly_at_a_step_end_is_reported_once() {
     // RK4 steps of 0.25 land on t = 1 exactly, where g = t − 1 is 0; then g = (t − 1)(t − 1.6)
     // with a second root inside the step [1.5, 1.75].

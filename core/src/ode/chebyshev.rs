@@ -36,9 +36,49 @@ const COS16: [f64; 17] = [
 ];
 
 /// cos(mπ/16) for any m ≥ 0.
-fn cos16(m: usize) -> f64 {
+const fn cos16(m: usize) -> f64 {
     let m = m % 32;
     COS16[if m <= 16 { m } else { 32 - m }]
+}
+
+/// The DCT-I of degree n = M − 1 as a matrix: c_k = Σ_j D[k][j] f_j for the values f_j at
+/// x_j = −cos(jπ/n), with T_k(−cos θ) = (−1)ᵏ cos kθ and the ends weighted ½. Built at
+/// compile time, so a step's first pass costs one 5 × 5 product.
+const fn dct<const M: usize>() -> [[f64; M]; M] {
+    let n = M - 1;
+    let stride = MAX_DEGREE / n;
+    let mut d = [[0.0; M]; M];
+    let mut k = 0;
+    while k <= n {
+        let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+        let end = if k == 0 || k == n { 0.5 } else { 1.0 };
+        let mut j = 0;
+        while j <= n {
+            let w = if j == 0 || j == n { 0.5 } else { 1.0 };
+            d[k][j] = sign * end * 2.0 / n as f64 * w * cos16(j * k * stride);
+            j += 1;
+        }
+        k += 1;
+    }
+    d
+}
+
+const DCT4: [[f64; 5]; 5] = dct::<5>();
+const DCT8: [[f64; 9]; 9] = dct::<9>();
+const DCT16: [[f64; 17]; 17] = dct::<17>();
+
+/// c = D f on the points of stride 16/(M − 1) of `grid`.
+fn apply<const M: usize>(d: &[[f64; M]; M], grid: &Grid) -> Grid {
+    let stride = MAX_DEGREE / (M - 1);
+    let mut c = [0.0; MAX_DEGREE + 1];
+    for (ck, row) in c.iter_mut().zip(d) {
+        *ck = row
+            .iter()
+            .enumerate()
+            .map(|(j, djk)| djk * grid[j * stride])
+            .sum();
+    }
+    c
 }
 
 /// Binomial coefficients C(n, k) for n ≤ 32, exact as integers.
@@ -81,22 +121,13 @@ pub(crate) fn node(a: f64, b: f64, j: usize) -> f64 {
 }
 
 /// The interpolant's Chebyshev coefficients c_0 … c_n (p(x) = Σ c_k T_k(x)) from the
-/// values at the degree-n points of `grid` (DCT-I).
+/// values at the degree-n points of `grid`, n ∈ {4, 8, 16} (16 for any other n).
 pub(crate) fn coefficients(grid: &Grid, n: usize) -> Grid {
-    let stride = MAX_DEGREE / n;
-    let mut c = [0.0; MAX_DEGREE + 1];
-    for (k, ck) in c.iter_mut().enumerate().take(n + 1) {
-        let mut s = 0.0;
-        for j in 0..=n {
-            let w = if j == 0 || j == n { 0.5 } else { 1.0 };
-            // T_k(−cos θ) = (−1)ᵏ cos kθ.
-            s += w * grid[j * stride] * cos16(j * k * stride);
-        }
-        let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
-        let end = if k == 0 || k == n { 0.5 } else { 1.0 };
-        *ck = sign * end * 2.0 / n as f64 * s;
+    match n {
+        4 => apply(&DCT4, grid),
+        8 => apply(&DCT8, grid),
+        _ => apply(&DCT16, grid),
     }
-    c
 }
 
 /// p(x) = Σ_{k≤n} c_k T_k(x) by Clenshaw's recurrence.

@@ -59,6 +59,7 @@ pub struct Event {
     name: String,
     direction: Direction,
     terminal: bool,
+    ends_only: bool,
 }
 
 impl Event {
@@ -68,6 +69,7 @@ impl Event {
             name: name.into(),
             direction: Direction::Both,
             terminal: false,
+            ends_only: false,
         }
     }
 
@@ -106,6 +108,31 @@ impl Event {
     /// Whether the event ends the run.
     pub fn is_terminal(&self) -> bool {
         self.terminal
+    }
+
+    /// Looks only for a change of sign of g between the ends of each step, as events did
+    /// before every root inside a step was looked for: one evaluation of g per step and no
+    /// state inside it, but two roots inside one step cancel there and are missed without a
+    /// word. For a g known to vary slowly against the step (or a step bounded below the
+    /// shortest time between roots, `AdaptiveConfig::h_max`, `FixedStepConfig::h`), where
+    /// the scan's cost matters: the fixed-step methods compute each state inside a step by
+    /// a partial step, and DOP853 and Vern9 build their interpolant on every step a scan
+    /// samples (3 and 4 evaluations of f).
+    ///
+    /// ```
+    /// use precess_core::ode::Event;
+    /// let fast = Event::new("slow g").step_ends_only();
+    /// assert!(fast.is_step_ends_only());
+    /// assert!(!Event::new("g").is_step_ends_only());
+    /// ```
+    pub fn step_ends_only(mut self) -> Self {
+        self.ends_only = true;
+        self
+    }
+
+    /// Whether only the steps' ends are compared ([`Event::step_ends_only`]).
+    pub fn is_step_ends_only(&self) -> bool {
+        self.ends_only
     }
 }
 

@@ -187,7 +187,13 @@ impl<'a, S: Stepper> Run<'a, S> {
         self
     }
 
-    /// Adds an event: the zero crossings of `g(t, y)` that `event` counts.
+    /// Adds an event: the zero crossings of `g(t, y)` that `event` counts, every root inside
+    /// each step (not only a change of sign between the step's ends), located on the
+    /// stepper's solution. `g` is called at the step's ends and at inner times of the step
+    /// in any order, three of them per step at least. What is guaranteed to be found: every
+    /// root of g such that |g| exceeds twice the error estimate of g's interpolant on the
+    /// step (at most 1e-10 of max |g| where g is resolved) between it and each neighbouring
+    /// root (`docs/trajectories.md`, Events).
     pub fn event(mut self, event: Event, g: impl FnMut(f64, &S::State) -> f64 + 'a) -> Self {
         self.events.push(EventSlot {
             event,
@@ -317,32 +323,41 @@ impl<'a, S: Stepper> Run<'a, S> {
         }
         let first_new = hits.len();
         let stepper = &mut *self.stepper;
-        // The first pass's inner states, shared by every event.
+        // The first pass's inner states, shared by every event that scans.
         let times = first_pass_times(t_a, t_b);
-        let states = [
-            stepper.state_at(times[0])?,
-            stepper.state_at(times[1])?,
-            stepper.state_at(times[2])?,
-        ];
+        let states = if self.events.iter().all(|s| s.event.is_step_ends_only()) {
+            None
+        } else {
+            Some([
+                stepper.state_at(times[0])?,
+                stepper.state_at(times[1])?,
+                stepper.state_at(times[2])?,
+            ])
+        };
         for (index, slot) in self.events.iter_mut().enumerate() {
             let (wanted, terminal) = (slot.event.direction(), slot.event.is_terminal());
             let g_b = slot.eval(index, t_b, y_b)?;
             let g_a = core::mem::replace(&mut slot.last, g_b);
-            let inner = [
-                slot.eval(index, times[0], &states[0])?,
-                slot.eval(index, times[1], &states[1])?,
-                slot.eval(index, times[2], &states[2])?,
-            ];
             let points = &mut self.points;
             points.clear();
             points.push((t_a, g_a));
-            scan_step(
-                &mut |t| g_at(stepper, slot, index, t),
-                (t_a, g_a),
-                (t_b, g_b),
-                inner,
-                points,
-            )?;
+            match &states {
+                Some(states) if !slot.event.is_step_ends_only() => {
+                    let inner = [
+                        slot.eval(index, times[0], &states[0])?,
+                        slot.eval(index, times[1], &states[1])?,
+                        slot.eval(index, times[2], &states[2])?,
+                    ];
+                    scan_step(
+                        &mut |t| g_at(stepper, slot, index, t),
+                        (t_a, g_a),
+                        (t_b, g_b),
+                        inner,
+                        points,
+                    )?;
+                }
+                _ => points.push((t_b, g_b)),
+            }
             for pair in points.windows(2) {
                 let [left, right] = [pair[0], pair[1]];
                 let Some(direction) = crossing(wanted, left.1, right.1) else {
