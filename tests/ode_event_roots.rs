@@ -44,8 +44,11 @@ fn oscillator() -> FnSystem<impl Fn(f64, &[f64; 2], &mut [f64; 2])> {
     FnSystem(|_t: f64, y: &[f64; 2], d: &mut [f64; 2]| *d = [y[1], -y[0]])
 }
 
+/// A run to a given end time, returning what it found.
+type Runner = Box<dyn FnMut(f64) -> Found>;
+
 /// The steppers under test on the oscillator from (1, 0) at t = 0, by name.
-fn steppers(tol: f64) -> Vec<(&'static str, Box<dyn FnMut(f64) -> Found>)> {
+fn steppers(tol: f64) -> Vec<(&'static str, Runner)> {
     let y0 = [1.0, 0.0];
     let cfg = AdaptiveConfig::with_tol(tol, tol);
     vec![
@@ -356,7 +359,7 @@ proptest! {
         let r = roots.clone();
         let g = move |t: f64| r.iter().map(|ri| t - ri).product::<f64>();
         let g_ref = &g;
-        for found in found_by_both(|t| g_ref(t), 10.0) {
+        for found in found_by_both(g_ref, 10.0) {
             prop_assert_eq!(found.len(), roots.len(), "{:?} against {:?}", found, roots);
             for (t, r) in found.iter().zip(&roots) {
                 prop_assert!((t - r).abs() < 1e-9, "{} against {}", t, r);
