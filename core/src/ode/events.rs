@@ -1,16 +1,28 @@
 //! Events: zero crossings of user functions g(t, y), found in each accepted step and located
 //! on the stepper's own solution inside it.
 //!
-//! A crossing is a change of sign of g between the ends of a step: g < 0 before and g ≥ 0
-//! after is rising, g > 0 before and g ≤ 0 after is falling. A g that starts a step at exactly
-//! 0 (the run starts on a root, or the last event ended there) opens no crossing, so an event
-//! is never reported twice. Two crossings inside one step cancel and go unseen: bound the step
-//! (`AdaptiveConfig::h_max`, `FixedStepConfig::h`) below the shortest interval between roots.
+//! A crossing is a change of sign of g along the step: g < 0 before and g ≥ 0 after is
+//! rising, g > 0 before and g ≤ 0 after is falling. A g that is exactly 0 where a crossing
+//! would start (the run starts on a root, or the last event ended there) opens no crossing,
+//! so an event is never reported twice.
 //!
-//! The root is bracketed by the step and located with the Anderson–Björck variant of regula
-//! falsi (Anderson & Björck 1973), with a bisection whenever the bracket fails to halve over
-//! two iterations, down to a few ulps of t: on the dense output of an adaptive pair, or on
-//! the partial steps of a fixed-step method, so the event is as accurate as the method.
+//! Every root inside a step is looked for, not only a change of sign between the step's
+//! ends (two roots in one step would cancel there): g is interpolated along the step at
+//! Chebyshev points, refined until the interpolant's coefficients decay, and evaluated at
+//! the interpolant's critical points, so that each root sits alone between two points
+//! where g has opposite signs ([`super::scan`]). What is guaranteed: on each piece of the
+//! step where g∘y is resolved (its interpolant's error estimate ε, the last two Chebyshev
+//! coefficients, at most 10⁻¹⁰ of max |g| on the piece), every pair of consecutive simple
+//! roots between which |g| exceeds 2ε is found, however close the roots are; a step is cut
+//! into at most 64 pieces of at most 17 points each, so a g faster than that (more than
+//! about 5 roots per 1/64 of a step), or one that comes within ε of 0 without crossing, may
+//! still hide a pair. g is evaluated at times in any order inside the step.
+//!
+//! Each root is bracketed by two of those points and located with the Anderson–Björck
+//! variant of regula falsi (Anderson & Björck 1973), with a bisection whenever the bracket
+//! fails to halve over two iterations, down to adjacent doubles: on the dense output of an
+//! adaptive pair or of the Taylor integrator, or on the partial steps of a fixed-step
+//! method, so the event is as accurate as the method.
 
 use super::error::OdeError;
 
@@ -47,6 +59,7 @@ pub struct Event {
     name: String,
     direction: Direction,
     terminal: bool,
+    ends_only: bool,
 }
 
 impl Event {
@@ -56,6 +69,7 @@ impl Event {
             name: name.into(),
             direction: Direction::Both,
             terminal: false,
+            ends_only: false,
         }
     }
 
@@ -94,6 +108,31 @@ impl Event {
     /// Whether the event ends the run.
     pub fn is_terminal(&self) -> bool {
         self.terminal
+    }
+
+    /// Looks only for a change of sign of g between the ends of each step, as events did
+    /// before every root inside a step was looked for: one evaluation of g per step and no
+    /// state inside it, but two roots inside one step cancel there and are missed without a
+    /// word. For a g known to vary slowly against the step (or a step bounded below the
+    /// shortest time between roots, `AdaptiveConfig::h_max`, `FixedStepConfig::h`), where
+    /// the scan's cost matters: the fixed-step methods compute each state inside a step by
+    /// a partial step, and DOP853 and Vern9 build their interpolant on every step a scan
+    /// samples (3 and 4 evaluations of f).
+    ///
+    /// ```
+    /// use precess_core::ode::Event;
+    /// let fast = Event::new("slow g").step_ends_only();
+    /// assert!(fast.is_step_ends_only());
+    /// assert!(!Event::new("g").is_step_ends_only());
+    /// ```
+    pub fn step_ends_only(mut self) -> Self {
+        self.ends_only = true;
+        self
+    }
+
+    /// Whether only the steps' ends are compared ([`Event::step_ends_only`]).
+    pub fn is_step_ends_only(&self) -> bool {
+        self.ends_only
     }
 }
 
@@ -135,19 +174,19 @@ impl<St> EventSlot<'_, St> {
             Err(OdeError::NonFiniteEvent { index, t, value })
         }
     }
+}
 
-    /// The counted crossing from the last value to `g_new`, if any.
-    pub(crate) fn crossing(&self, g_new: f64) -> Option<Direction> {
-        let g_old = self.last;
-        let dir = if g_old < 0.0 && g_new >= 0.0 {
-            Direction::Rising
-        } else if g_old > 0.0 && g_new <= 0.0 {
-            Direction::Falling
-        } else {
-            return None;
-        };
-        self.event.direction.admits(dir).then_some(dir)
-    }
+/// The crossing from `g_old` to `g_new` (in that order in time) if `wanted` counts it: g < 0
+/// then g ≥ 0 is rising, g > 0 then g ≤ 0 falling; from exactly 0 there is none.
+pub(crate) fn crossing(wanted: Direction, g_old: f64, g_new: f64) -> Option<Direction> {
+    let dir = if g_old < 0.0 && g_new >= 0.0 {
+        Direction::Rising
+    } else if g_old > 0.0 && g_new <= 0.0 {
+        Direction::Falling
+    } else {
+        return None;
+    };
+    wanted.admits(dir).then_some(dir)
 }
 
 /// Iterations after which [`locate_root`] gives up refining (the bisection safeguard needs
@@ -155,8 +194,8 @@ impl<St> EventSlot<'_, St> {
 const MAX_ITERATIONS: usize = 200;
 
 /// The root of `f` in `[a, b]`, given `f(a) = fa` and `f(b) = fb` of opposite signs (or
-/// `fb = 0`), to a few ulps: returns the right end of the final bracket, where f has the sign
-/// of `fb` or is 0.
+/// `fb = 0`), down to adjacent doubles: returns the right end of the final bracket, where f
+/// has the sign of `fb` or is 0.
 ///
 /// # Errors
 /// What `f` returns.
@@ -174,7 +213,10 @@ pub(crate) fn locate_root(
             return Ok(b);
         }
         let width = b - a;
-        if width <= 2.0 * f64::EPSILON * a.abs().max(b.abs()) {
+        // Down to adjacent doubles (the midpoint rounds onto an end): b is then within an
+        // ulp of the root of f as computed.
+        let middle = 0.5 * (a + b);
+        if middle <= a || middle >= b {
             return Ok(b);
         }
         let bisect = width > 0.5 * widths[0];
@@ -184,17 +226,17 @@ pub(crate) fn locate_root(
         // the root is within rounding of it) probes one tolerance inside that end, which
         // closes the bracket at once when the root is there; bisecting instead would halve
         // the bracket down to an ulp, tens of evaluations.
-        let tol = 2.0 * f64::EPSILON * a.abs().max(b.abs());
+        let tol = f64::EPSILON * a.abs().max(b.abs());
         let c = if bisect {
-            0.5 * (a + b)
+            middle
         } else if secant >= b {
-            b - tol
+            (b - tol).max(a.next_up())
         } else if secant <= a {
-            a + tol
+            (a + tol).min(b.next_down())
         } else if secant > a && secant < b {
             secant
         } else {
-            0.5 * (a + b)
+            middle
         };
         if c <= a || c >= b {
             // a and b are adjacent doubles.

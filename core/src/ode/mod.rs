@@ -16,6 +16,7 @@
 //! `Vern9`) is [`Adaptive`] running it.
 
 mod adaptive;
+mod chebyshev;
 mod config;
 mod controller;
 pub(crate) mod drivers;
@@ -26,6 +27,7 @@ mod pairs;
 mod rk4;
 mod run;
 mod sampling;
+mod scan;
 mod stepper;
 mod system;
 mod trajectory;

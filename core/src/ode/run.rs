@@ -2,8 +2,9 @@
 //! every accepted step, events and progress reports.
 
 use super::error::{OdeError, check_stop};
-use super::events::{Event, EventHit, EventSlot, locate_root};
+use super::events::{Event, EventHit, EventSlot, crossing, locate_root};
 use super::sampling::{SampleClock, Sampling};
+use super::scan::{first_pass_times, scan_step};
 use super::stepper::Stepper;
 use super::system::Stats;
 use super::trajectory::{Named, Quantities, Trajectory};
@@ -123,6 +124,9 @@ pub struct Run<'a, S: Stepper> {
     events: Vec<EventSlot<'a, S::State>>,
     observer: Option<Observer<'a, S::State>>,
     progress: Option<Reporter<'a>>,
+    /// The points of the current step at which the scan evaluated one event's g, kept
+    /// across steps so that the scan does not allocate.
+    points: Vec<(f64, f64)>,
 }
 
 impl<'a, S: Stepper> Run<'a, S> {
@@ -136,6 +140,7 @@ impl<'a, S: Stepper> Run<'a, S> {
             events: Vec::new(),
             observer: None,
             progress: None,
+            points: Vec::new(),
         }
     }
 
@@ -189,7 +194,13 @@ impl<'a, S: Stepper> Run<'a, S> {
         self
     }
 
-    /// Adds an event: the zero crossings of `g(t, y)` that `event` counts.
+    /// Adds an event: the zero crossings of `g(t, y)` that `event` counts, every root inside
+    /// each step (not only a change of sign between the step's ends), located on the
+    /// stepper's solution. `g` is called at the step's ends and at inner times of the step
+    /// in any order, three of them per step at least. What is guaranteed to be found: every
+    /// root of g such that |g| exceeds twice the error estimate of g's interpolant on the
+    /// step (at most 1e-10 of max |g| where g is resolved) between it and each neighbouring
+    /// root (`docs/trajectories.md`, Events).
     pub fn event(mut self, event: Event, g: impl FnMut(f64, &S::State) -> f64 + 'a) -> Self {
         self.events.push(EventSlot {
             event,
@@ -304,8 +315,9 @@ impl<'a, S: Stepper> Run<'a, S> {
         Ok(out)
     }
 
-    /// Finds the counted crossings of every event in the step `[t_a, t_b]`, located on the
-    /// stepper's solution, and appends them in time order.
+    /// Finds the counted crossings of every event in the step `[t_a, t_b]`, every root of g
+    /// inside the step and not only a change of sign between its ends (see
+    /// [`super::scan`]), each located on the stepper's solution; appends them in time order.
     fn find_events(
         &mut self,
         hits: &mut Vec<EventHit<S::State>>,
@@ -313,30 +325,60 @@ impl<'a, S: Stepper> Run<'a, S> {
         t_b: f64,
         y_b: &S::State,
     ) -> Result<(), OdeError> {
+        if self.events.is_empty() {
+            return Ok(());
+        }
         let first_new = hits.len();
+        let stepper = &mut *self.stepper;
+        // The first pass's inner states, shared by every event that scans.
+        let times = first_pass_times(t_a, t_b);
+        let states = if self.events.iter().all(|s| s.event.is_step_ends_only()) {
+            None
+        } else {
+            Some([
+                stepper.state_at(times[0])?,
+                stepper.state_at(times[1])?,
+                stepper.state_at(times[2])?,
+            ])
+        };
         for (index, slot) in self.events.iter_mut().enumerate() {
+            let (wanted, terminal) = (slot.event.direction(), slot.event.is_terminal());
             let g_b = slot.eval(index, t_b, y_b)?;
-            let crossing = slot.crossing(g_b);
             let g_a = core::mem::replace(&mut slot.last, g_b);
-            let Some(direction) = crossing else {
-                continue;
-            };
-            let stepper = &mut *self.stepper;
-            let t = locate_root(
-                |t| {
-                    let y = stepper.state_at(t)?;
-                    slot.eval(index, t, &y)
-                },
-                (t_a, g_a),
-                (t_b, g_b),
-            )?;
-            hits.push(EventHit {
-                index,
-                t,
-                state: self.stepper.state_at(t)?,
-                direction,
-                terminal: slot.event.is_terminal(),
-            });
+            let points = &mut self.points;
+            points.clear();
+            points.push((t_a, g_a));
+            match &states {
+                Some(states) if !slot.event.is_step_ends_only() => {
+                    let inner = [
+                        slot.eval(index, times[0], &states[0])?,
+                        slot.eval(index, times[1], &states[1])?,
+                        slot.eval(index, times[2], &states[2])?,
+                    ];
+                    scan_step(
+                        &mut |t| g_at(stepper, slot, index, t),
+                        (t_a, g_a),
+                        (t_b, g_b),
+                        inner,
+                        points,
+                    )?;
+                }
+                _ => points.push((t_b, g_b)),
+            }
+            for pair in points.windows(2) {
+                let [left, right] = [pair[0], pair[1]];
+                let Some(direction) = crossing(wanted, left.1, right.1) else {
+                    continue;
+                };
+                let t = locate_root(|t| g_at(stepper, slot, index, t), left, right)?;
+                hits.push(EventHit {
+                    index,
+                    t,
+                    state: stepper.state_at(t)?,
+                    direction,
+                    terminal,
+                });
+            }
         }
         hits[first_new..].sort_by(|a, b| a.t.total_cmp(&b.t));
         Ok(())
@@ -377,4 +419,15 @@ impl<'a, S: Stepper> Run<'a, S> {
             report(&p);
         }
     }
+}
+
+/// g of `slot` (event `index`) on the stepper's solution at `t` inside the last step.
+fn g_at<S: Stepper>(
+    stepper: &mut S,
+    slot: &mut EventSlot<'_, S::State>,
+    index: usize,
+    t: f64,
+) -> Result<f64, OdeError> {
+    let y = stepper.state_at(t)?;
+    slot.eval(index, t, &y)
 }
