@@ -78,8 +78,9 @@ pub(super) fn radius<const N: usize>(c: &[[f64; N]], w: &[f64; N]) -> Option<f64
     };
     let mut rho = log_rho.exp();
     let k1f = k1 as f64;
-    for k in (k1 - k1.div_ceil(4)).max(1)..k2 {
-        let n = weighted_norm(&c[k], w);
+    let lowest = (k1 - k1.div_ceil(4)).max(1);
+    for (k, row) in c.iter().enumerate().take(k2).skip(lowest) {
+        let n = weighted_norm(row, w);
         if !n.is_finite() {
             return None;
         }
