@@ -198,17 +198,20 @@ fn a_jet_that_vanishes_at_every_order_is_a_constant() {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// Random P(t) of degree ≤ 6 with each coefficient zero half the time, from t₀ = 0, just
-    /// off it, or anywhere in [−1, 1], over a span that turns the rotation by at most a few
-    /// radians: the error stays within `MULTIPLE` times the tolerance.
+    /// Random P(t) = tˢ·(a polynomial of degree ≤ 6 with each coefficient zero half the
+    /// time), s ≤ 12, from t₀ = 0 (where the rows below s + 1 vanish), just off it, or
+    /// anywhere in [−1, 1], over a span that turns the rotation by at most a few radians:
+    /// the error stays within `MULTIPLE` times the tolerance.
     #[test]
     fn random_polynomial_rotations_stay_within_the_tolerance(
+        shift in 0usize..=12,
         raw in proptest::collection::vec((-2.0f64..2.0, any::<bool>()), 1..=7),
         start in prop_oneof![Just(0.0), Just(1e-7), -1.0f64..1.0],
         span in 0.2f64..1.5,
         tol_exp in 4i32..=15,
     ) {
-        let coef: Vec<f64> = raw.iter().map(|&(c, keep)| if keep { c } else { 0.0 }).collect();
+        let mut coef = vec![0.0; shift];
+        coef.extend(raw.iter().map(|&(c, keep)| if keep { c } else { 0.0 }));
         let tol = 10f64.powi(-tol_exp);
         let tape = rotation_tape(&coef, 40);
         let t1 = start + span;
