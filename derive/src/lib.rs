@@ -75,7 +75,7 @@ pub fn derive_mechanism(input: TokenStream) -> TokenStream {
 /// ```
 ///
 /// The struct (unit, or with named `f64` fields read as parameters) comes first, then
-/// `state [..];`, `taylor = K;` (1 to 100) and one `d/dt x = …;` per state variable. A
+/// `state [..];`, `taylor = K;` (2 to 100) and one `d/dt x = …;` per state variable. A
 /// right-hand side uses numbers, the state variables, the fields, the time `t`, `+ - * /`,
 /// unary `-`, and `sin`, `cos`, `sqrt`, `powi` (integer literal exponent), `powf` (number
 /// literal exponent, taken exactly as a rational; the base taken positive) as methods or

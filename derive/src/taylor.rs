@@ -15,7 +15,8 @@ use crate::keys;
 use crate::private::Private;
 use crate::symbols::SymbolTokens;
 
-/// The maximum order of `taylor = K`: an integer literal in `1 ..= MAX_TAYLOR_ORDER`, and no
+/// The maximum order of `taylor = K`: an integer literal in `2 ..= MAX_TAYLOR_ORDER` (the
+/// integrator's step needs two orders to estimate its size, so order 1 could never run), and no
 /// user function among `user_fns` (`(key, declared)`): a function's value has no Taylor
 /// coefficients the recurrences could know. `None` after recording the error on `value`.
 pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize> {
@@ -25,11 +26,11 @@ pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize
         }) => i.base10_parse::<usize>().ok(),
         _ => None,
     };
-    let Some(order) = order.filter(|k| (1..=MAX_TAYLOR_ORDER).contains(k)) else {
+    let Some(order) = order.filter(|k| (2..=MAX_TAYLOR_ORDER).contains(k)) else {
         cx.error_spanned_by(
             value,
             format!(
-                "`{}` expects the maximum Taylor order, an integer from 1 to {MAX_TAYLOR_ORDER} (about 20 reaches double precision)",
+                "`{}` expects the maximum Taylor order, an integer from 2 to {MAX_TAYLOR_ORDER} (about 20 reaches double precision)",
                 keys::TAYLOR
             ),
         );

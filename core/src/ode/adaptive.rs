@@ -38,7 +38,10 @@ pub struct Adaptive<S, P, const N: usize> {
     /// The last step landed on a stop: re-evaluate f before the next step.
     refresh: bool,
     stats: Stats,
+    /// Step attempts towards `target`, the stop of the current run: the budget
+    /// [`AdaptiveConfig::max_steps`] counts these, not the integrator's whole life.
     attempts: u64,
+    target: f64,
     pair: PhantomData<P>,
 }
 
@@ -71,6 +74,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
                 ..Stats::default()
             },
             attempts: 0,
+            target: f64::NAN,
             pair: PhantomData,
         };
         if !all_finite(&me.k[0]) {
@@ -157,6 +161,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         self.y_prev = y;
         self.dense_ready = false;
         self.refresh = true;
+        (self.attempts, self.target) = (0, f64::NAN);
     }
 
     /// Changes the system between steps (a torque switched on or off at a stop time) and
@@ -214,6 +219,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         (self.t, self.y, self.t_prev, self.y_prev) = (t0, y0, t0, y0);
         self.dense_ready = false;
         self.refresh = false;
+        (self.attempts, self.target) = (0, f64::NAN);
         self.control = PiController::new::<P>(&self.cfg);
         self.h = match self.cfg.h0 {
             Some(h) => h.min(self.cfg.h_max),
@@ -227,11 +233,16 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// # Errors
     /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_limit`,
     /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::StepSizeUnderflow`],
-    /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`].
+    /// [`OdeError::NonFiniteState`], [`OdeError::MaxStepsExceeded`] after
+    /// [`AdaptiveConfig::max_steps`] attempts towards the same `t_limit` (a restart or
+    /// another limit starts the count again).
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
         check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(());
+        }
+        if t_limit != self.target {
+            (self.attempts, self.target) = (0, t_limit);
         }
         if self.refresh {
             // The last step ended on a stop: f there was taken from the left; the new step

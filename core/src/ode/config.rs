@@ -31,7 +31,12 @@ pub struct AdaptiveConfig {
     /// `beta_weight`. `None` (default) takes the pair's: 0.04 for DOPRI5 and Vern9, 0 for
     /// DOP853, as Hairer's codes do.
     pub beta: Option<f64>,
-    /// Largest number of step attempts before [`OdeError::MaxStepsExceeded`] (default 100 000).
+    /// Largest number of step attempts towards one stop before
+    /// [`OdeError::MaxStepsExceeded`] (default 100 000). The budget is per run: it counts
+    /// the attempts towards the same stop time (one `advance_to`, a [`Run`](super::Run) to
+    /// its end, an interval of [`solve`](super::solve) between stops) and starts again at a
+    /// restart or a new stop, as CVODE's `mxstep` does, so a reused integrator never runs
+    /// out of it; [`Stats`](super::Stats) keeps the whole count.
     pub max_steps: u64,
 }
 
@@ -128,8 +133,8 @@ pub struct FixedStepConfig {
     /// Most steps one `advance_to` may take (default 10⁸, [`FixedStepConfig::MAX_STEPS`]). A
     /// call that needs more is refused with [`OdeError::TooManySteps`] before any work: a
     /// stop time or a step off by orders of magnitude fails at once instead of running for
-    /// minutes. Unlike the adaptive driver's budget this is per call, since the count is
-    /// known in advance.
+    /// minutes. Like the adaptive driver's budget this is per run (here per call), and it is
+    /// checked before stepping since the count is known in advance.
     pub max_steps: u64,
     /// Compensated summation of the state update (default `true`): RK4 carries the low-order
     /// bits that y + h·Σbᵢkᵢ rounds away beside the state and adds them back at the next

@@ -77,6 +77,17 @@ pub enum OdeError {
         /// Its value.
         value: f64,
     },
+    /// A fixed Taylor order above the highest the run may compute.
+    #[error("Taylor order {order} is above {cap}, the highest that {limit} allows")]
+    TaylorOrderTooHigh {
+        /// The order asked for ([`TaylorConfig::order`](crate::taylor::TaylorConfig::order)).
+        order: usize,
+        /// The highest order allowed.
+        cap: usize,
+        /// Which setting caps it: `TaylorConfig::max_order` or the system's
+        /// `TaylorSystem::max_order`.
+        limit: &'static str,
+    },
     /// The configured maximum number of steps was reached before the end time.
     #[error("maximum of {max_steps} steps reached at t = {t}")]
     MaxStepsExceeded {

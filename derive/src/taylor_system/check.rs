@@ -3,11 +3,12 @@
 //! exactly one equation per state variable. Every error is recorded, spanned on the
 //! offending tokens, before giving up.
 
-use syn::{Expr, Fields, Ident, Type};
+use syn::{Expr, Fields, Ident};
 
 use super::parse::{STATE, Statement, SystemInput, TIME};
 use crate::ctxt::Ctxt;
 use crate::keys::{self, did_you_mean};
+use crate::rigid::ast::Field;
 
 /// The checked system.
 pub struct CheckedSystem<'a> {
@@ -139,14 +140,15 @@ fn fields<'a>(cx: &Ctxt, fields: &'a Fields) -> Vec<&'a Ident> {
             .named
             .iter()
             .filter_map(|f| {
-                let is_f64 = matches!(&f.ty, Type::Path(p) if p.qself.is_none() && p.path.is_ident("f64"));
-                if !is_f64 {
+                let ident = f.ident.as_ref()?;
+                // The same paths as `#[rigid]`'s fields: `f64` and the primitive's path
+                // (`core::primitive::f64`, `::std::primitive::f64`, …).
+                if !(Field { ident, ty: &f.ty }).is_f64() {
                     cx.error_spanned_by(
                         &f.ty,
                         "a field of a `taylor_system!` struct is a parameter: its type must be `f64`",
                     );
                 }
-                let ident = f.ident.as_ref()?;
                 // `t` in a right-hand side is the time: a parameter of that name could
                 // never be read, and would silently shadow the time if it were.
                 if ident == TIME {

@@ -7,30 +7,45 @@ use crate::taylor::MAX_TAYLOR_ORDER;
 /// Settings of [`Taylor`](super::Taylor). Every field has a documented default
 /// (`TaylorConfig::default()`), so callers override only what they mean.
 ///
-/// The tolerances play the part they play in heyoka and TIDES: each step is in the relative
-/// mode, with ε = `rtol` and the coefficients measured against ‖y‖∞, when `rtol·‖y‖∞ > atol`,
-/// and in the absolute mode with ε = `atol` otherwise. The mode's ε gives the order
-/// p = ⌈1 − ½ ln ε⌉ (Jorba & Zou 2005), capped by [`TaylorConfig::max_order`] and by the
-/// system's own [`TaylorSystem::max_order`](crate::taylor::TaylorSystem::max_order).
+/// The tolerances serve each component as the pairs' do: component i is held to
+/// max(rtol·|yᵢ|, atol), so a large component (a position of 10⁵ m) does not loosen a small
+/// one (an angular velocity of 1 rad/s). The order comes from one ε per step, as in heyoka
+/// and TIDES: the step is in the relative mode, ε = `rtol`, when `rtol·‖y‖∞ > atol`, and in
+/// the absolute mode, ε = `atol`, otherwise, and each component's coefficients are measured
+/// against its own scale max(|yᵢ|, atol/rtol), resp. 1, so that ε times the scale is the
+/// component's tolerance. The mode's ε gives the order p = ⌈1 − ½ ln ε⌉ (Jorba & Zou 2005),
+/// capped by [`TaylorConfig::max_order`] and by the system's own
+/// [`TaylorSystem::max_order`](crate::taylor::TaylorSystem::max_order); below the rule's
+/// order the step is shortened instead (see [`TaylorConfig::max_order`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TaylorConfig {
     /// Relative tolerance (default 1e-6).
     pub rtol: f64,
     /// Absolute tolerance (default 1e-9).
     pub atol: f64,
-    /// Highest order used (default 40; at least 2). Below the Jorba–Zou order of the
-    /// tolerance the step is shortened to keep the estimated error at ε (see
-    /// [`TaylorConfig::step_factor`]).
+    /// Highest order used (default 40; at least 2). A tolerance whose Jorba–Zou order is
+    /// above this cap (or the system's) is met with the capped order and a shorter step,
+    /// which keeps the estimated error at ε (see [`TaylorConfig::step_factor`]). A jet whose
+    /// orders 1 … p all vanish is computed again to this order before the step is sized.
     pub max_order: usize,
     /// A fixed order instead of the tolerance's (default `None`): for convergence studies.
+    /// Above `max_order` it is refused by [`TaylorConfig::validate`], above the system's
+    /// maximum by [`Taylor::new`](super::Taylor::new) ([`OdeError::TaylorOrderTooHigh`]):
+    /// the run could not use the order it was asked for.
     pub order: Option<usize>,
     /// A fixed step instead of the adaptive one (default `None`): for convergence studies.
     /// Stop times are still landed on exactly, with a shorter last step.
     pub fixed_step: Option<f64>,
     /// Largest step (default +∞).
     pub h_max: f64,
-    /// Largest number of steps before [`OdeError::MaxStepsExceeded`] (default 100 000). The
-    /// Taylor step is never rejected, so steps and attempts are the same.
+    /// Largest number of steps towards one stop before [`OdeError::MaxStepsExceeded`]
+    /// (default 100 000). The budget is per run: it counts the steps taken towards the same
+    /// stop time (one [`Taylor::advance_to`](super::Taylor::advance_to), a
+    /// [`Run`](crate::ode::Run) to its end, an interval of [`solve`](super::solve) between
+    /// stops) and starts again at a restart or a new stop, as CVODE's `mxstep` does; a
+    /// reused integrator never runs out of it. [`Stats::steps`](crate::ode::Stats::steps)
+    /// keeps the whole count. The Taylor step is never rejected, so steps and attempts are
+    /// the same.
     pub max_steps: u64,
     /// The extended mode (default `None`, off): `Some(L)` computes the coefficients of orders
     /// 0 … L in double-double from the state kept in double-double, so that neither the
@@ -110,7 +125,17 @@ impl TaylorConfig {
     /// # Errors
     /// [`OdeError::InvalidTolerance`], [`OdeError::InvalidStep`] or
     /// [`OdeError::InvalidParameter`] (`max_order` or `order` below 2, `extended` outside
-    /// `1 ..= MAX_TAYLOR_ORDER`) for the first field out of range.
+    /// `1 ..= MAX_TAYLOR_ORDER`), [`OdeError::TaylorOrderTooHigh`] (`order` above
+    /// `max_order`) for the first field out of range.
+    ///
+    /// ```
+    /// use precess_core::ode::OdeError;
+    /// use precess_core::taylor::TaylorConfig;
+    /// assert!(matches!(
+    ///     TaylorConfig::fixed(1000, 0.1).validate(),
+    ///     Err(OdeError::TaylorOrderTooHigh { order: 1000, cap: 40, .. })
+    /// ));
+    /// ```
     pub fn validate(&self) -> Result<(), OdeError> {
         let pos = |v: f64| v.is_finite() && v > 0.0;
         if !pos(self.rtol) || !pos(self.atol) {
@@ -139,6 +164,15 @@ impl TaylorConfig {
             return Err(OdeError::InvalidParameter {
                 name: "order",
                 value: p as f64,
+            });
+        }
+        if let Some(order) = self.order
+            && order > self.max_order
+        {
+            return Err(OdeError::TaylorOrderTooHigh {
+                order,
+                cap: self.max_order,
+                limit: "TaylorConfig::max_order",
             });
         }
         if let Some(low) = self.extended
@@ -171,7 +205,7 @@ impl TaylorConfig {
     }
 
     /// The factor κ of the step h = κ·ρ, ρ the radius of convergence estimated from the last
-    /// two coefficients.
+    /// coefficients that do not vanish.
     ///
     /// At the Jorba–Zou order it is heyoka's and TIDES' e⁻²·e^(−0.7/(p−1)): the truncation
     /// error ≈ (h/ρ)^(p+1) then stays below ε. At a lower order (capped or fixed) the same

@@ -2,10 +2,15 @@
 //! the solution at the step's start (a [`TaylorSystem`]), chooses order and step from the
 //! tolerance by the Jorba–Zou rules, and sums the step polynomial.
 //!
-//! - Order p = ⌈1 − ½ ln ε⌉ and step h = e⁻²·e^(−0.7/(p−1))·ρ, ρ = min over k ∈ {p−1, p} of
-//!   (s/‖c_k‖∞)^(1/k), with s = ‖y‖∞ in the relative mode and 1 in the absolute one (as heyoka
-//!   and TIDES do; see [`TaylorConfig`]). No step is rejected: the error estimate comes before
-//!   the step, from the coefficients the step needs anyway.
+//! - Order p = ⌈1 − ½ ln ε⌉ and step h = e⁻²·e^(−0.7/(p−1))·ρ, ρ the radius of convergence
+//!   estimated from the last rows of coefficients that do not vanish, each component measured
+//!   against its own scale sᵢ (|yᵢ| in the relative mode, with atol/rtol as a floor, and 1 in
+//!   the absolute one; see [`TaylorConfig`] and the `radius` module). No step is rejected: the
+//!   error estimate comes before the step, from the coefficients the step needs anyway.
+//! - The estimate never trusts a vanishing coefficient: rows that are zero are skipped, rows
+//!   that are tiny are bounded by the rows below them, a jet that vanishes to its order is
+//!   computed again to the highest order allowed, and a step grows at most tenfold over the
+//!   last natural one.
 //! - The step polynomial Σ c_k θᵏ is summed by Horner for the increment, and the increment is
 //!   added to the state with Kahan's compensated summation, the time too: rounding does not
 //!   gather over millions of steps.
@@ -16,6 +21,7 @@
 mod config;
 mod drivers;
 mod extended;
+mod radius;
 
 pub use config::TaylorConfig;
 pub use drivers::{solve, solve_dense};
@@ -77,9 +83,24 @@ pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     /// The double-double coefficients of the extended mode, orders 0 … L (empty when off).
     low: Vec<[Dd; N]>,
     last: LastStep<N>,
+    /// The highest order a step may use: `max_order` capped by the system's. A jet that
+    /// vanishes at the rule's order is computed again to this one.
+    top_order: usize,
+    /// The last step that was not shortened to land on a stop (+∞ before the first and
+    /// after a restart): the next step is at most [`GROWTH`] times it.
+    prev_natural: f64,
+    /// Steps taken towards `run_target`, the stop of the current run: the budget
+    /// [`TaylorConfig::max_steps`] counts these, not the integrator's whole life.
+    run_steps: u64,
+    run_target: f64,
     stats: Stats,
     jets: u64,
 }
+
+/// How much a step may grow over the last natural one: a radius estimated from a jet whose
+/// top rows are nearly zero is not taken on trust, while a smooth run, whose steps change by
+/// a few per cent, never meets the bound.
+const GROWTH: f64 = 10.0;
 
 /// What the dense output needs of the last step.
 #[derive(Debug, Clone, Copy)]
@@ -92,13 +113,14 @@ struct LastStep<const N: usize> {
     order: usize,
 }
 
-/// What a step's mode fixes before its jet: the order, the step factor, and the scale the
-/// coefficients are measured against (‖y‖∞ in the relative mode, 1 in the absolute).
+/// What a step's mode fixes before its jet: the order, the step factor, the mode's ε, and
+/// the weight of each component, wᵢ = 1/sᵢ (see [`Taylor::step_rule`]).
 #[derive(Clone, Copy)]
-struct StepRule {
+struct StepRule<const N: usize> {
     order: usize,
     factor: f64,
-    scale: f64,
+    eps: f64,
+    weights: [f64; N],
 }
 
 impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
@@ -107,7 +129,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// # Errors
     /// An invalid configuration ([`TaylorConfig::validate`]), a system whose
     /// [`TaylorSystem::max_order`] is below 2 ([`OdeError::InvalidParameter`] naming
-    /// `TaylorSystem::max_order`), the extended mode asked of a system that does not
+    /// `TaylorSystem::max_order`), a fixed [`TaylorConfig::order`] above that maximum
+    /// ([`OdeError::TaylorOrderTooHigh`]), the extended mode asked of a system that does not
     /// implement it ([`OdeError::InvalidParameter`] naming `TaylorConfig::extended`), a
     /// non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
     /// ([`OdeError::NonFiniteInitialState`]).
@@ -124,12 +147,21 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 value: system_max as f64,
             });
         }
+        if let Some(order) = cfg.order
+            && order > system_max
+        {
+            return Err(OdeError::TaylorOrderTooHigh {
+                order,
+                cap: system_max,
+                limit: "TaylorSystem::max_order",
+            });
+        }
         let rule = |eps: f64| {
             let p = cfg.order_for(eps, system_max);
             (p, TaylorConfig::step_factor(eps, p))
         };
         let rules = [rule(cfg.rtol), rule(cfg.atol)];
-        let highest = rules[0].0.max(rules[1].0);
+        let top_order = cfg.max_order.min(system_max);
         let mut ws = S::Workspace::default();
         let low = match cfg.extended {
             Some(l) => extended::low_table(&sys, &mut ws, l, t0, &y0)?,
@@ -143,7 +175,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             t_lo: 0.0,
             y: y0,
             y_comp: [0.0; N],
-            coeffs: vec![[0.0; N]; highest + 1],
+            coeffs: vec![[0.0; N]; top_order + 1],
             ws,
             low,
             last: LastStep {
@@ -154,6 +186,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
                 h: 0.0,
                 order: 0,
             },
+            top_order,
+            prev_natural: f64::INFINITY,
+            run_steps: 0,
+            run_target: f64::NAN,
             stats: Stats::default(),
             jets: 0,
         })
@@ -200,9 +236,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     }
 
     /// Puts the integrator at `(t, y)` (the caller checks the values): no dense output
-    /// before it, compensations cleared.
+    /// before it, compensations cleared, a new run (its step budget and the bound on the
+    /// step's growth start afresh).
     pub(crate) fn reset_state(&mut self, t: f64, y: [f64; N]) {
         (self.t, self.t_lo, self.y, self.y_comp) = (t, 0.0, y, [0.0; N]);
+        (self.prev_natural, self.run_steps, self.run_target) = (f64::INFINITY, 0, f64::NAN);
         self.last = LastStep {
             t,
             t_lo: 0.0,
@@ -218,26 +256,33 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     ///
     /// # Errors
     /// [`OdeError::NonFiniteTime`] for a NaN or infinite `t_limit`,
-    /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::MaxStepsExceeded`],
-    /// [`OdeError::NonFiniteState`] for non-finite coefficients or state,
-    /// [`OdeError::StepSizeUnderflow`] when the step no longer changes t. The state is left
-    /// as it was on error.
+    /// [`OdeError::StopBeforeCurrent`] if `t_limit < t`, [`OdeError::MaxStepsExceeded`]
+    /// after [`TaylorConfig::max_steps`] steps towards the same `t_limit` (a restart or
+    /// another limit starts the count again), [`OdeError::NonFiniteState`] for non-finite
+    /// coefficients or state, [`OdeError::StepSizeUnderflow`] when the step no longer
+    /// changes t. The state is left as it was on error.
     pub fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
         if !self.low.is_empty() {
             return self.step_extended(t_limit);
         }
-        let Some(rule) = self.step_rule(t_limit)? else {
+        let Some(mut rule) = self.step_rule(t_limit)? else {
             return Ok(());
         };
+        self.jet(rule.order)?;
+        if self.cfg.fixed_step.is_none()
+            && rule.order < self.top_order
+            && radius::vanishes(&self.coeffs[..=rule.order])
+        {
+            // Orders 1 … p all zero say nothing of the step (x' = tᵐ y at t = 0 for m ≥ p):
+            // ask the system for every order it allows before taking the jet as constant.
+            rule.order = self.top_order;
+            rule.factor = TaylorConfig::step_factor(rule.eps, rule.order);
+            self.jet(rule.order)?;
+        }
         let p = rule.order;
-        let c = rows_to_order(&mut self.coeffs, p)?;
-        self.sys
-            .coefficients_into(&mut self.ws, self.t, &self.y, p, c);
-        self.jets += 1;
-        self.stats.rhs_evals += p as u64;
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
         // new state through Horner (h > 0), which is checked in `commit_step`, and an ∞ in
-        // the two rows the step size reads is caught by `radius_of_convergence`.
+        // the rows the step size reads is caught by `radius::radius`.
         let c = &self.coeffs[..=p];
         let (h, clamped) = self.step_size(c, rule, t_limit)?;
         let increment = horner_increment(c, h);
@@ -245,15 +290,32 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
     }
 
-    /// The start of a step, shared by both modes: the stop checks, then the order, the step
-    /// factor and the scale of the step's mode; `None` when `t_limit` is the current time
-    /// (nothing to do).
-    fn step_rule(&self, t_limit: f64) -> Result<Option<StepRule>, OdeError> {
+    /// The coefficients of orders 0 … `order` at the current point, into `self.coeffs`.
+    fn jet(&mut self, order: usize) -> Result<(), OdeError> {
+        let c = rows_to_order(&mut self.coeffs, order)?;
+        self.sys
+            .coefficients_into(&mut self.ws, self.t, &self.y, order, c);
+        self.jets += 1;
+        self.stats.rhs_evals += order as u64;
+        Ok(())
+    }
+
+    /// The start of a step, shared by both modes: the stop checks and the step budget, then
+    /// the order, the step factor and the weights of the step's mode; `None` when `t_limit`
+    /// is the current time (nothing to do).
+    ///
+    /// The mode is relative, ε = rtol, when rtol·‖y‖∞ > atol, and absolute, ε = atol,
+    /// otherwise; ε gives the order. Each component is then served at its own tolerance
+    /// max(rtol·|yᵢ|, atol) = ε·sᵢ: sᵢ = max(|yᵢ|, atol/rtol) in the relative mode and 1 in
+    /// the absolute one (where rtol·|yᵢ| ≤ atol for every i). The pairs weigh by
+    /// atol + rtol·|yᵢ|, within a factor 2 of this; with one component, or all of one size,
+    /// it is the ‖y‖∞ scale of heyoka and TIDES.
+    fn step_rule(&self, t_limit: f64) -> Result<Option<StepRule<N>>, OdeError> {
         check_stop(self.t, t_limit)?;
         if t_limit == self.t {
             return Ok(None);
         }
-        if self.stats.steps >= self.cfg.max_steps {
+        if t_limit == self.run_target && self.run_steps >= self.cfg.max_steps {
             return Err(OdeError::MaxStepsExceeded {
                 t: self.t,
                 max_steps: self.cfg.max_steps,
@@ -262,10 +324,19 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let norm = max_abs(&self.y);
         let relative = self.cfg.rtol * norm > self.cfg.atol;
         let (order, factor) = self.rules[usize::from(!relative)];
+        let (eps, weights) = if relative {
+            // The floor keeps a component crossing zero at the absolute tolerance (and a
+            // weight finite when atol/rtol underflows).
+            let floor = (self.cfg.atol / self.cfg.rtol).max(f64::MIN_POSITIVE);
+            (self.cfg.rtol, self.y.map(|v| 1.0 / v.abs().max(floor)))
+        } else {
+            (self.cfg.atol, [1.0; N])
+        };
         Ok(Some(StepRule {
             order,
             factor,
-            scale: if relative { norm } else { 1.0 },
+            eps,
+            weights,
         }))
     }
 
@@ -274,18 +345,16 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     fn step_size(
         &self,
         c: &[[f64; N]],
-        rule: StepRule,
+        rule: StepRule<N>,
         t_limit: f64,
     ) -> Result<(f64, bool), OdeError> {
-        let p = rule.order;
         let natural = match self.cfg.fixed_step {
             Some(h) => h,
             None => {
-                let norms = [max_abs(&c[p - 1]), max_abs(&c[p])];
-                let Some(rho) = radius_of_convergence(rule.scale, norms, p) else {
+                let Some(rho) = radius::radius(c, &rule.weights) else {
                     return Err(OdeError::NonFiniteState { t: self.t });
                 };
-                rule.factor * rho
+                (rule.factor * rho).min(GROWTH * self.prev_natural)
             }
         }
         .min(self.cfg.h_max);
@@ -337,10 +406,19 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.y = y_new;
         self.y_comp = comp_new;
         self.stats.steps += 1;
+        if !clamped {
+            self.prev_natural = h;
+        }
+        if t_limit != self.run_target {
+            (self.run_target, self.run_steps) = (t_limit, 0);
+        }
+        self.run_steps += 1;
         Ok(())
     }
 
-    /// Steps until `t == t_stop` exactly; no step crosses `t_stop`.
+    /// Steps until `t == t_stop` exactly; no step crosses `t_stop`. The steps towards one
+    /// `t_stop` are a run for [`TaylorConfig::max_steps`]: another call with another stop
+    /// has a budget of its own.
     ///
     /// # Errors
     /// As [`Taylor::step`].
@@ -396,30 +474,9 @@ fn rows_to_order<const N: usize>(
     })
 }
 
-/// ‖c‖∞ of a state or of one coefficient row. NaN entries are skipped (`f64::max`): in a
-/// coefficient they reach the new state through [`horner_increment`] and are reported there.
+/// ‖y‖∞ of a state. NaN entries are skipped (`f64::max`).
 fn max_abs<const N: usize>(c: &[f64; N]) -> f64 {
     c.iter().fold(0.0f64, |m, v| m.max(v.abs()))
-}
-
-/// ρ = min over k ∈ {p − 1, p} of (scale/‖c_k‖∞)^(1/k) from the norms of the two rows, as the
-/// exponential of the least logarithm (two `ln` and one `exp`, no `powf`); +∞ when both rows
-/// are zero. `None` when a norm is not finite: an overflowed coefficient would otherwise give
-/// ρ = 0 and pass for a step-size underflow.
-///
-/// A logarithm and exponential of our own (the exponent from the bits, a short series for
-/// the rest, 1e-10 relative on ρ) were measured slower than the library's table-driven ones:
-/// their polynomial chains are longer than a table lookup.
-fn radius_of_convergence(scale: f64, norms: [f64; 2], p: usize) -> Option<f64> {
-    if !(norms[0].is_finite() && norms[1].is_finite()) {
-        return None;
-    }
-    let log_radius = |norm: f64, k: usize| (scale / norm).ln() / k as f64;
-    Some(
-        log_radius(norms[0], p - 1)
-            .min(log_radius(norms[1], p))
-            .exp(),
-    )
 }
 
 /// Σ_{k=1}^{p} c_k θᵏ for every component (p = c.len() − 1 ≥ 1), by Horner with the order in
