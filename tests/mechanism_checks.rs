@@ -175,3 +175,304 @@ impl Ratio for Arena {
         self.div(p, q).expect("non-zero denominator")
     }
 }
+
+/// A rod of mass m and length l hanging from a universal joint whose outer axis is x and
+/// inner axis [ax, ay, 0] (parameters), under gravity −10 ẑ.
+fn universal_scene(arena: &mut Arena) -> MechanismScene {
+    let (o, z) = (arena.one(), arena.zero());
+    let (ax, ay) = (arena.parameter("ax"), arena.parameter("ay"));
+    let kind = JointKind::Universal {
+        axes: [[o, z, z], [ax, ay, z]],
+    };
+    let mut rod = MechanismScene::body(arena, "rod", Parent::Ground, kind, &["alpha", "beta"]);
+    let (m, l) = (arena.parameter("m"), arena.parameter("l"));
+    rod.mass = m;
+    let half = arena.constant_ratio(-1, 2);
+    rod.center = [z, z, arena.mul(half, l)];
+    let ml2 = arena.product(&[m, l, l]);
+    let twelfth = arena.constant_ratio(1, 12);
+    let i = arena.mul(twelfth, ml2);
+    rod.inertia = [[i, z, z], [z, i, z], [z, z, z]];
+    let mut scene = MechanismScene::new();
+    scene.bodies.push(rod);
+    let g = arena.integer(-10);
+    scene.gravity = Some([z, z, g]);
+    scene
+}
+
+const ROD: [(&str, f64); 4] = [("ax", 0.0), ("ay", 1.0), ("m", 2.0), ("l", 1.5)];
+
+fn rod_model(values: &[(&str, f64)]) -> Result<MechanismModel, MechanismError> {
+    let mut a = Arena::new();
+    let scene = universal_scene(&mut a);
+    MechanismModel::new(&mut a, &scene, Route::Auto, values)
+}
+
+#[test]
+fn a_parameter_given_twice_is_refused_naming_both_values() {
+    let mut values = ROD.to_vec();
+    values.push(("m", 5.0));
+    let expected = MechanismError::DuplicateParameter {
+        name: "m".into(),
+        first: 2.0,
+        second: 5.0,
+    };
+    assert_eq!(rod_model(&values).err(), Some(expected.clone()));
+    let mut a = Arena::new();
+    let scene = universal_scene(&mut a);
+    let d = scene.derive(&mut a, Route::Auto).expect("derives");
+    assert_eq!(
+        MechanismModel::from_derivation(&a, &d, &values).err(),
+        Some(expected.clone())
+    );
+    assert_eq!(
+        expected.to_string(),
+        "parameter `m` is given twice (2, then 5): give each parameter once"
+    );
+}
+
+/// The rod swings about x under gravity: at α = 0.3, β = 0 (inner axis y) the outer
+/// coordinate is a pendulum of inertia m l²/3 about its end, α̈ = −(3 g / 2 l) sin α.
+#[test]
+fn parallel_universal_axes_from_parameters_are_refused_by_new_and_set() {
+    let mut model = rod_model(&ROD).expect("a universal joint");
+    let (q, qdot) = ([0.3, 0.0], [0.0, 0.0]);
+    let before = model.accelerations(0.0, &q, &qdot).expect("regular");
+    let pendulum = -1.5 * 10.0 / 1.5 * 0.3f64.sin();
+    assert!(
+        (before[0] - pendulum).abs() < 1e-13,
+        "{before:?} vs {pendulum}"
+    );
+
+    // The inner axis turned onto the outer one: parallel, whatever the sign or length.
+    for (ax, ay) in [(1.0, 0.0), (-3.0, 0.0), (2.0, 1e-9)] {
+        let values = [("ax", ax), ("ay", ay), ("m", 2.0), ("l", 1.5)];
+        match rod_model(&values) {
+            Err(MechanismError::ParallelAxes { joint, sine }) => {
+                assert_eq!(joint, "rod");
+                let expected = ay.abs() / (ax * ax + ay * ay).sqrt();
+                assert!((sine - expected).abs() <= 1e-24, "{sine:e} vs {expected:e}");
+            }
+            other => panic!("ax = {ax}, ay = {ay}: expected parallel axes, got {other:?}"),
+        }
+    }
+    // [1e12, 1, 0] is 1e-12 rad from x.
+    let e = model.set("ax", 1e12).err();
+    assert!(
+        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine }) if joint == "rod" && (sine - 1e-12).abs() < 1e-27),
+        "{e:?}"
+    );
+    let text = e.map(|e| e.to_string()).unwrap_or_default();
+    assert!(
+        text.contains("axes are parallel") && text.contains("1e-12"),
+        "{text}"
+    );
+    // A refused set leaves the model as it was: the same q̈, bit for bit.
+    let after = model.accelerations(0.0, &q, &qdot).expect("still regular");
+    assert_eq!(before, after);
+}
+
+#[test]
+fn a_refused_set_leaves_the_model_as_it_was_so_the_next_error_names_its_own_cause() {
+    let mut model = rod_model(&ROD).expect("a universal joint");
+    let (q, qdot) = ([0.3, -0.2], [0.1, 0.4]);
+    let before = model.accelerations(0.0, &q, &qdot).expect("regular");
+    assert!(matches!(
+        model.set("m", -1.0),
+        Err(MechanismError::NegativeParameter { value, .. }) if value == -1.0
+    ));
+    assert_eq!(
+        model.accelerations(0.0, &q, &qdot).ok(),
+        Some(before.clone())
+    );
+    // The next change is judged on its own: a good length is taken…
+    model.set("l", 3.0).expect("a good length");
+    // …and a zero axis is named as such, not as the earlier negative mass.
+    let e = model.set("ay", 0.0).err();
+    assert!(
+        matches!(&e, Some(MechanismError::ZeroAxis { joint, squared_length: Some(v) }) if joint == "rod" && *v == 0.0),
+        "{e:?}"
+    );
+    let fresh = rod_model(&[("ax", 0.0), ("ay", 1.0), ("m", 2.0), ("l", 3.0)]).expect("model");
+    assert_eq!(
+        model.accelerations(0.0, &q, &qdot).ok(),
+        fresh.accelerations(0.0, &q, &qdot).ok()
+    );
+}
+
+#[test]
+fn constant_parallel_axes_are_refused_by_validate_and_the_numeric_algorithm() {
+    let mut a = Arena::new();
+    let (o, z) = (a.one(), a.zero());
+    let two = a.integer(-2);
+    let kind = JointKind::Universal {
+        axes: [[o, z, z], [two, z, z]],
+    };
+    let mut scene = MechanismScene::new();
+    let mut rod = MechanismScene::body(&mut a, "rod", Parent::Ground, kind, &["alpha", "beta"]);
+    rod.mass = o;
+    rod.center = [z, z, a.integer(-1)];
+    scene.bodies.push(rod);
+    let expected = MechanismError::ParallelAxes {
+        joint: "rod".into(),
+        sine: 0.0,
+    };
+    assert_eq!(scene.validate(&a).err(), Some(expected.clone()));
+    assert_eq!(scene.derive(&mut a, Route::Auto).err(), Some(expected));
+
+    let mut a = Arena::new();
+    let scene = universal_scene(&mut a);
+    let mut env = vec![f64::NAN; 64];
+    for (name, v) in [("ax", 1.0), ("ay", 0.0), ("m", 2.0), ("l", 1.5)] {
+        let s = a.parameter(name);
+        if let Some(sym) = a.as_symbol(s) {
+            env[sym.index()] = v;
+        }
+    }
+    let e = precess::mechanism::MechanismAba::new(&mut a, &scene, &env).err();
+    assert!(
+        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine }) if joint == "rod" && *sine == 0.0),
+        "{e:?}"
+    );
+}
+
+/// A rod on a universal joint whose inner axis and mass are fields.
+#[derive(Clone, Copy, Debug, precess::prelude::Mechanism)]
+#[mechanism(gravity = [0.0, 0.0, -10.0])]
+#[body(rod, parent = ground, joint = universal(axes = [x, [bx, by, 0.0]]), q = [alpha, beta],
+       parts(rod(mass = m, length = l, at = [0.0, 0.0, -0.5 * l])))]
+struct Gimbal {
+    bx: f64,
+    by: f64,
+    m: f64,
+    l: f64,
+}
+
+const GIMBAL: Gimbal = Gimbal {
+    bx: 0.0,
+    by: 1.0,
+    m: 2.0,
+    l: 1.5,
+};
+
+/// Both the check and the checked accelerations refuse `g`, with the same error.
+fn gimbal_refused(g: Gimbal) -> MechanismError {
+    use precess::prelude::MechanismDynamics;
+    let e = g.check_parameters().expect_err("refused");
+    let a = g
+        .accelerations(0.0, &[0.3, 0.1], &[0.0, 0.0])
+        .expect_err("refused by the checked accelerations too");
+    assert_eq!(e.to_string(), a.to_string());
+    e
+}
+
+#[test]
+fn parallel_field_axes_of_a_derived_universal_joint_are_refused() {
+    use precess::prelude::MechanismDynamics;
+    let q = GIMBAL
+        .accelerations(0.0, &[0.3, 0.0], &[0.0, 0.0])
+        .expect("regular");
+    let pendulum = -1.5 * 10.0 / 1.5 * 0.3f64.sin();
+    assert!((q[0] - pendulum).abs() < 1e-13, "{q:?} vs {pendulum}");
+    for (bx, by) in [(1.0, 0.0), (-2.0, 0.0), (1.0, 1e-10)] {
+        let e = gimbal_refused(Gimbal { bx, by, ..GIMBAL });
+        let expected = by.abs() / (bx * bx + by * by).sqrt();
+        assert!(
+            matches!(&e, MechanismError::ParallelAxes { joint, sine } if joint == "rod" && (sine - expected).abs() <= 1e-25),
+            "bx = {bx}, by = {by}: {e:?}"
+        );
+    }
+    // At 1e-7 rad apart the axes are still a joint.
+    assert_eq!(
+        Gimbal {
+            bx: 1.0,
+            by: 1e-7,
+            ..GIMBAL
+        }
+        .check_parameters(),
+        Ok(())
+    );
+}
+
+#[test]
+fn a_zero_field_mass_is_refused_as_a_literal_zero_is() {
+    let e = gimbal_refused(Gimbal { m: 0.0, ..GIMBAL });
+    assert_eq!(
+        e,
+        MechanismError::Part {
+            body: "rod".into(),
+            error: precess::body::BodyError::NonPositiveMass {
+                part: 0,
+                kind: "rod",
+                value: 0.0,
+            },
+        }
+    );
+}
+
+mod properties {
+    use proptest::prelude::*;
+
+    use super::*;
+
+    const NAMES: [&str; 4] = ["ax", "ay", "m", "l"];
+
+    fn value() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            -3.0..3.0f64,
+            Just(0.0),
+            Just(-1.0),
+            Just(1e12),
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Any name given twice, anywhere in the list, is refused naming it and its values.
+        #[test]
+        fn any_duplicate_is_named(order in Just(ROD.to_vec()).prop_shuffle(), which in 0..4usize, at in 0..5usize, v in -5.0..5.0f64) {
+            let mut values = order;
+            let (name, _) = ROD[which];
+            values.insert(at, (name, v));
+            let first = values.iter().position(|(n, _)| *n == name).unwrap_or(0);
+            let second = values.iter().rposition(|(n, _)| *n == name).unwrap_or(0);
+            let expected = MechanismError::DuplicateParameter {
+                name: name.into(),
+                first: values[first].1,
+                second: values[second].1,
+            };
+            prop_assert_eq!(rod_model(&values).err(), Some(expected));
+        }
+
+        /// After any sequence of sets, good and bad, the model is the one built from the
+        /// values its sets accepted: a refused set changes nothing.
+        #[test]
+        fn refused_sets_change_nothing(sets in proptest::collection::vec((0..4usize, value()), 1..8)) {
+            let mut model = rod_model(&ROD).map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let mut accepted = ROD.to_vec();
+            for (which, v) in sets {
+                let name = NAMES[which];
+                let mut trial = accepted.clone();
+                if let Some(slot) = trial.iter_mut().find(|(n, _)| *n == name) {
+                    slot.1 = v;
+                }
+                let fresh = rod_model(&trial);
+                let set = model.set(name, v).map(|_| ());
+                // The same value is accepted or refused by both paths, for the same cause.
+                prop_assert_eq!(set.is_ok(), fresh.is_ok(), "{} = {}: {:?} vs {:?}", name, v, set, fresh.as_ref().err());
+                if set.is_ok() {
+                    accepted = trial;
+                }
+            }
+            let expected = rod_model(&accepted).map_err(|e| TestCaseError::fail(e.to_string()))?;
+            let (q, qdot) = ([0.3, -0.2], [0.1, 0.4]);
+            let got = model.accelerations(0.0, &q, &qdot).map(|a| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>());
+            let want = expected.accelerations(0.0, &q, &qdot).map(|a| a.iter().map(|x| x.to_bits()).collect::<Vec<_>>());
+            // By their text: a NaN pivot in an error is not equal to itself.
+            prop_assert_eq!(format!("{got:?}"), format!("{want:?}"));
+        }
+    }
+}
