@@ -476,3 +476,85 @@ mod properties {
         }
     }
 }
+
+/// A 10-link spatial chain (the build script's), large enough that q̈ is emitted once and
+/// shared by the checked and unchecked methods.
+#[derive(precess::prelude::Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(rod1, parent = ground, joint = revolute(axis = x), q = q1, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod2, parent = rod1, joint = revolute(axis = y, at = [0.0, 0.0, -0.3]), q = q2, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod3, parent = rod2, joint = revolute(axis = x, at = [0.0, 0.0, -0.3]), q = q3, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod4, parent = rod3, joint = revolute(axis = y, at = [0.0, 0.0, -0.3]), q = q4, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod5, parent = rod4, joint = revolute(axis = x, at = [0.0, 0.0, -0.3]), q = q5, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod6, parent = rod5, joint = revolute(axis = y, at = [0.0, 0.0, -0.3]), q = q6, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod7, parent = rod6, joint = revolute(axis = x, at = [0.0, 0.0, -0.3]), q = q7, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod8, parent = rod7, joint = revolute(axis = y, at = [0.0, 0.0, -0.3]), q = q8, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod9, parent = rod8, joint = revolute(axis = x, at = [0.0, 0.0, -0.3]), q = q9, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+#[body(rod10, parent = rod9, joint = revolute(axis = y, at = [0.0, 0.0, -0.3]), q = q10, parts(rod(mass = 0.5, length = 0.3, at = [0.0, 0.0, -0.15])))]
+struct Chain10;
+
+/// The same chain as a scene, interpreted: rods along z of mass 0.5 and length 0.3 (inertia
+/// m l²/12 across), each hinged 0.3 below the last, gravity −9.81 ẑ.
+fn chain10_model() -> MechanismModel {
+    let mut a = Arena::new();
+    let (o, z) = (a.one(), a.zero());
+    let mut scene = MechanismScene::new();
+    let (m, c, at, i) = (
+        a.constant_ratio(1, 2),
+        a.constant_ratio(-15, 100),
+        a.constant_ratio(-3, 10),
+        a.constant_ratio(3, 800),
+    );
+    for k in 0..10 {
+        let axis = if k % 2 == 0 { [o, z, z] } else { [z, o, z] };
+        let parent = if k == 0 {
+            Parent::Ground
+        } else {
+            Parent::Body(k - 1)
+        };
+        let name = format!("q{}", k + 1);
+        let mut b = MechanismScene::body(
+            &mut a,
+            &format!("rod{}", k + 1),
+            parent,
+            JointKind::Revolute { axis },
+            &[&name],
+        );
+        b.mass = m;
+        b.center = [z, z, c];
+        b.inertia = [[i, z, z], [z, i, z], [z, z, z]];
+        if k > 0 {
+            b.joint.at = [z, z, at];
+        }
+        scene.bodies.push(b);
+    }
+    let g = a.constant_ratio(-981, 100);
+    scene.gravity = Some([z, z, g]);
+    MechanismModel::new(&mut a, &scene, Route::Recursive, &[]).expect("the chain")
+}
+
+#[test]
+fn a_long_chains_shared_accelerations_match_the_interpreted_model() {
+    use precess::ode::System;
+    use precess::prelude::MechanismDynamics;
+    let model = chain10_model();
+    let q: [f64; 10] = std::array::from_fn(|i| 0.3 + i as f64 / 7.0);
+    let qdot: [f64; 10] = std::array::from_fn(|i| 0.5 - i as f64 / 11.0);
+    let reference = model.accelerations(0.0, &q, &qdot).expect("regular");
+    let checked = Chain10.accelerations(0.0, &q, &qdot).expect("regular");
+    let unchecked = Chain10.accelerations_unchecked(0.0, &q, &qdot);
+    assert_eq!(checked, unchecked);
+    let mut y = [0.0; 20];
+    y[..10].copy_from_slice(&q);
+    y[10..].copy_from_slice(&qdot);
+    let mut dydt = [0.0; 20];
+    Chain10.rhs(0.0, &y, &mut dydt);
+    assert_eq!(dydt[10..], checked[..]);
+    let scale = reference.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for (k, (x, r)) in checked.iter().zip(&reference).enumerate() {
+        assert!(
+            (x - r).abs() <= 1e-12 * scale,
+            "q̈[{k}] = {x}, interpreted {r}"
+        );
+    }
+}
