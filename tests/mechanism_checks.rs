@@ -1,7 +1,7 @@
 //! The mechanism engine's checks and costs: the kinetic energy of long chains (its size grows
 //! with the chain, and its value equals the time derivative of the centres), duplicate
 //! parameter bindings, and run-time values held to the rules literals meet at compile time
-//! (parallel universal axes, zero field masses, a failed `set` leaving the model as it was).
+//! (parallel universal axes, zero masses, a failed `set` leaving the model as it was).
 
 use precess::codegen::{Bindings, Program};
 use precess::mechanism::{
@@ -394,19 +394,64 @@ fn parallel_field_axes_of_a_derived_universal_joint_are_refused() {
     );
 }
 
+/// The gimbal with a literal massless outer ring and a rod below it.
+#[derive(Clone, Copy, Debug, precess::prelude::Mechanism)]
+#[mechanism(gravity = [0.0, 0.0, -10.0])]
+#[body(ring, parent = ground, joint = revolute(axis = z), q = phi,
+       parts(ring(mass = 0.0, radius = 0.08, axis = y)))]
+#[body(rod, parent = ring, joint = revolute(axis = x), q = theta,
+       parts(rod(mass = 2.0, length = 1.5, at = [0.0, 0.0, -0.75])))]
+struct LiteralMassless;
+
+/// The same with the ring's mass and radius fields.
+#[derive(Clone, Copy, Debug, precess::prelude::Mechanism)]
+#[mechanism(gravity = [0.0, 0.0, -10.0])]
+#[body(ring, parent = ground, joint = revolute(axis = z), q = phi,
+       parts(ring(mass = m, radius = r, axis = y)))]
+#[body(rod, parent = ring, joint = revolute(axis = x), q = theta,
+       parts(rod(mass = 2.0, length = 1.5, at = [0.0, 0.0, -0.75])))]
+struct FieldMassless {
+    m: f64,
+    r: f64,
+}
+
+/// One rule for literal and field masses: a zero mass is a massless part (it compiled only
+/// as a field before), a negative one is refused, and a massless part's geometry is still
+/// checked. The rod hangs from the massless ring: θ̈ = −(3 g / 2 l) sin θ, and the ring turns
+/// with the rod's inertia about z, m l² sin²θ / 3.
 #[test]
-fn a_zero_field_mass_is_refused_as_a_literal_zero_is() {
-    let e = gimbal_refused(Gimbal { m: 0.0, ..GIMBAL });
-    assert_eq!(
-        e,
-        MechanismError::Part {
-            body: "rod".into(),
-            error: precess::body::BodyError::NonPositiveMass {
-                part: 0,
-                kind: "rod",
-                value: 0.0,
-            },
-        }
+fn a_zero_mass_is_a_massless_part_whether_literal_or_field() {
+    use precess::prelude::MechanismDynamics;
+    let (q, qdot) = ([0.2, 0.4], [0.3, -0.1]);
+    let literal = LiteralMassless
+        .accelerations(0.0, &q, &qdot)
+        .expect("regular");
+    let field = FieldMassless { m: 0.0, r: 0.08 }
+        .accelerations(0.0, &q, &qdot)
+        .expect("regular");
+    // The same equations, the field's folded differently: equal to rounding.
+    for (l, f) in literal.iter().zip(&field) {
+        assert!(
+            (l - f).abs() <= 4.0 * f64::EPSILON * l.abs(),
+            "{literal:?} vs {field:?}"
+        );
+    }
+    // θ̈ = −(3 g / 2 l) sin θ + φ̇² sin θ cos θ for the rod about its end.
+    let (s, c) = 0.4f64.sin_cos();
+    let expected = -1.5 * 10.0 / 1.5 * s + 0.3 * 0.3 * s * c;
+    assert!(
+        (literal[1] - expected).abs() < 1e-13,
+        "{literal:?} vs {expected}"
+    );
+    let negative = FieldMassless { m: -1.0, r: 0.08 }.check_parameters();
+    assert!(
+        matches!(&negative, Err(MechanismError::Part { body, error: precess::body::BodyError::NonPositiveMass { value, .. } }) if body == "ring" && *value == -1.0),
+        "{negative:?}"
+    );
+    let flat = FieldMassless { m: 0.0, r: 0.0 }.check_parameters();
+    assert!(
+        matches!(&flat, Err(MechanismError::Part { body, error: precess::body::BodyError::NonPositiveDimension { key: "radius", .. } }) if body == "ring"),
+        "{flat:?}"
     );
 }
 

@@ -303,21 +303,9 @@ fn parts_from_fields_meet_the_body_rules() {
 }
 
 #[test]
-fn a_zero_field_mass_is_refused_as_a_literal_zero_is() {
-    // One rule for literals and fields: `mass = 0.0` is a compile error, so a field's zero
-    // is refused at run time, before the geometry.
-    let mass = |body: &str, kind: &'static str| MechanismError::Part {
-        body: body.into(),
-        error: BodyError::NonPositiveMass {
-            part: 0,
-            kind,
-            value: 0.0,
-        },
-    };
-    assert_eq!(
-        Arm { m: 0.0, ..GOOD }.check_parameters(),
-        Err(mass("arm", "cylinder"))
-    );
+fn a_massless_part_is_allowed_its_geometry_still_checked() {
+    // A zero mass is a massless link (the singular mass matrix's concern), not a bad value.
+    assert_eq!(Arm { mb: 0.0, ..GOOD }.check_parameters(), Ok(()));
     assert_eq!(
         Arm {
             mh: 0.0,
@@ -325,7 +313,15 @@ fn a_zero_field_mass_is_refused_as_a_literal_zero_is() {
             ..GOOD
         }
         .check_parameters(),
-        Err(mass("hand", "sphere"))
+        Err(MechanismError::Part {
+            body: "hand".into(),
+            error: BodyError::NonPositiveDimension {
+                part: 0,
+                kind: "sphere",
+                key: "radius",
+                value: 0.0
+            },
+        })
     );
 }
 

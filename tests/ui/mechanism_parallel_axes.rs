@@ -10,9 +10,4 @@ use precess::prelude::*;
        parts(sphere(mass = 1.0, radius = 0.1)))]
 struct Gimbal;
 
-// A zero literal mass is refused here, and a zero field mass by `check_parameters`.
-#[derive(Mechanism)]
-#[body(rod, joint = revolute(axis = x), q = theta, parts(rod(mass = 0.0, length = 1.0)))]
-struct Massless;
-
 fn main() {}

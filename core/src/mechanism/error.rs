@@ -178,10 +178,10 @@ pub enum MechanismError {
 fn detail(squared_length: Option<f64>) -> String {
     match squared_length {
         None => "the axis is zero, so it has no direction".to_owned(),
-        Some(v) if v == 0.0 => {
+        Some(0.0) => {
             "the axis is zero at the values given (|axis|² = 0), so it has no direction".to_owned()
         }
-        Some(v) if v == f64::INFINITY => {
+        Some(f64::INFINITY) => {
             "|axis|² overflows f64 at the values given: scale the axis down".to_owned()
         }
         Some(v) if v > 0.0 => format!(

@@ -81,7 +81,8 @@ pub fn check_universal_axes(
         a[0] * b[1] - a[1] * b[0],
     ];
     let sine = c.iter().map(|x| x * x).sum::<f64>().sqrt();
-    if !(sine >= PARALLEL_SINE) {
+    // Not `sine < PARALLEL_SINE`: a NaN sine is no angle either.
+    if sine.is_nan() || sine < PARALLEL_SINE {
         return Err(MechanismError::ParallelAxes {
             joint: joint.to_owned(),
             sine,

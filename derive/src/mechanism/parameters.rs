@@ -1,7 +1,7 @@
 //! `check_parameters` of the mechanism derive: the values the struct's fields give the
 //! mechanism meet, at run time, the rules literals meet at compile time, by the same
-//! functions — each part the body language's rules (`check_part`: a positive mass, positive
-//! dimensions, …), axes `check_axis` and a universal joint's `check_universal_axes` (a
+//! functions — each part the body language's rules (`check_part`, a zero mass aside: a
+//! massless part is allowed, literal or field), axes `check_axis` and a universal joint's `check_universal_axes` (a
 //! direction each, not parallel), every other value finite, springs and dampers not
 //! negative. Only what reads a field is checked: literals were checked while expanding.
 
@@ -179,8 +179,8 @@ impl Checks {
         }));
     }
 
-    /// A part that reads a field, built from the fields and put to `check_part`, the rules
-    /// literal parts meet while expanding (a zero mass included).
+    /// A part that reads a field, built from the fields and put to `check_part` (its mass
+    /// put to 1 when it is zero, so a massless link's geometry is still checked).
     fn part(&mut self, arena: &Arena, body: &str, index: usize, part: &Part<ExprId>) {
         let single = Description {
             parts: vec![part.clone()],
@@ -199,7 +199,15 @@ impl Checks {
         let body = body.to_owned();
         self.tests.push(Box::new(move |o| {
             let p = Private;
-            let token = |&i: &usize| o.get(i).cloned().unwrap_or_default();
+            let mass_index = *indexed.shape.mass();
+            let mass = o.get(mass_index).cloned().unwrap_or_default();
+            let token = |&i: &usize| {
+                if i == mass_index {
+                    quote!(__checked_mass)
+                } else {
+                    o.get(i).cloned().unwrap_or_default()
+                }
+            };
             let shape = shape(&indexed.shape.map(&mut |i| token(i)));
             let at: Vec<TokenStream> = indexed.at.iter().map(token).collect();
             let orientation = match &indexed.orientation {
@@ -210,6 +218,8 @@ impl Checks {
                 None => quote!(::core::option::Option::None),
             };
             quote! {{
+                let __mass: f64 = #mass;
+                let __checked_mass = if __mass == 0.0 { 1.0 } else { __mass };
                 let __part = #p::Part { shape: #shape, at: [#(#at),*], orientation: #orientation };
                 if let ::core::result::Result::Err(error) = #p::check_part(#index, &__part) {
                     return ::core::result::Result::Err(#p::MechanismError::Part {
