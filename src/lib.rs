@@ -98,7 +98,8 @@ pub mod __private {
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::{
-        ChartSet, ChartedDynamics, MechanismDynamics, MechanismError,
+        ChartSet, ChartedDynamics, MechanismDynamics, MechanismError, check_axis,
+        check_universal_axes,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::ode::System;

@@ -129,28 +129,30 @@ impl MechanismAba {
     /// # Errors
     /// A malformed tree as for [`crate::mechanism::recursive_accelerations`];
     /// [`MechanismError::NonFinite`] for a constant that evaluates to NaN or ±∞;
-    /// [`MechanismError::ZeroAxis`] for an axis of zero length at these values.
+    /// [`MechanismError::ZeroAxis`] for an axis with no direction at these values and
+    /// [`MechanismError::ParallelAxes`] for a universal joint's parallel axes (the rules of
+    /// [`crate::mechanism::check_universal_axes`]).
     pub fn new(
         arena: &mut Arena,
         scene: &MechanismScene,
         env: &[f64],
     ) -> Result<MechanismAba, MechanismError> {
+        // The rules of `check_axis` and `check_universal_axes`, as for every other path.
         for b in &scene.bodies {
-            let axes: Vec<&[ExprId; 3]> = match &b.joint.kind {
-                super::JointKind::Revolute { axis } | super::JointKind::Prismatic { axis } => {
-                    vec![axis]
-                }
-                super::JointKind::Universal { axes } => axes.iter().collect(),
-                super::JointKind::Spherical { .. } => Vec::new(),
+            let joint = b.joint.name.as_str();
+            let numeric = |axis: &[ExprId; 3]| -> Result<[f64; 3], MechanismError> {
+                let v = vector(arena, axis, env, "joint axis")?;
+                Ok([v.x, v.y, v.z])
             };
-            for axis in axes {
-                let n2 = vector(arena, axis, env, "joint axis")?.norm_squared();
-                if n2 == 0.0 {
-                    return Err(MechanismError::ZeroAxis {
-                        joint: b.joint.name.clone(),
-                        squared_length: Some(n2),
-                    });
+            match &b.joint.kind {
+                super::JointKind::Revolute { axis } | super::JointKind::Prismatic { axis } => {
+                    super::check_axis(joint, "axis", numeric(axis)?)?;
                 }
+                super::JointKind::Universal { axes } => {
+                    let (outer, inner) = (numeric(&axes[0])?, numeric(&axes[1])?);
+                    super::check_universal_axes(joint, outer, inner)?;
+                }
+                super::JointKind::Spherical { .. } => {}
             }
         }
         let (symbolic, _) = flatten(arena, scene)?;

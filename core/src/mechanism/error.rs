@@ -38,13 +38,37 @@ pub enum MechanismError {
         /// The repeated name.
         name: String,
     },
-    /// A joint axis that is the zero vector (identically, or for the parameter values given).
-    #[error("joint `{joint}` has an axis of zero length{}", detail(*squared_length))]
+    /// A joint axis with no direction: the zero vector (identically, or for the values
+    /// given), or one whose |axis|² underflows or overflows f64.
+    #[error("joint `{joint}`: {}", detail(*squared_length))]
     ZeroAxis {
         /// The joint.
         joint: String,
-        /// |axis|² at the parameter values, when known (`None`: identically zero).
+        /// |axis|² at the values given, when known (`None`: identically zero).
         squared_length: Option<f64>,
+    },
+    /// A universal joint whose two axes are parallel (or opposite): its two coordinates
+    /// would turn about one line and the mass matrix is singular.
+    #[error(
+        "joint `{joint}`: the universal joint's axes are parallel (the sine of the angle between them is {sine:e}, below √ε ≈ {:.1e}), so its two coordinates turn about one line: give axes at an angle, such as [x, y]",
+        super::rules::PARALLEL_SINE
+    )]
+    ParallelAxes {
+        /// The joint.
+        joint: String,
+        /// |a × b| / (|a| |b|) for the values given.
+        sine: f64,
+    },
+    /// A parameter given twice to [`super::MechanismModel::new`] or
+    /// [`super::MechanismModel::from_derivation`].
+    #[error("parameter `{name}` is given twice ({first}, then {second}): give each parameter once")]
+    DuplicateParameter {
+        /// The parameter.
+        name: String,
+        /// Its first value.
+        first: f64,
+        /// Its second value.
+        second: f64,
     },
     /// A joint with the wrong number of coordinate names.
     #[error("joint `{joint}` ({kind}) has {got} coordinate names, expected {expected}")]
@@ -150,10 +174,20 @@ pub enum MechanismError {
     Sym(#[from] SymError),
 }
 
+/// Why an axis has no direction.
 fn detail(squared_length: Option<f64>) -> String {
     match squared_length {
-        Some(v) => format!(" (|axis|² = {v:e} at the parameter values)"),
-        None => String::new(),
+        None => "the axis is zero, so it has no direction".to_owned(),
+        Some(0.0) => {
+            "the axis is zero at the values given (|axis|² = 0), so it has no direction".to_owned()
+        }
+        Some(f64::INFINITY) => {
+            "|axis|² overflows f64 at the values given: scale the axis down".to_owned()
+        }
+        Some(v) if v > 0.0 => format!(
+            "|axis|² = {v:e} at the values given underflows f64's normal numbers: scale the axis up"
+        ),
+        Some(v) => format!("|axis|² is {v} at the values given: the axis has no direction"),
     }
 }
 

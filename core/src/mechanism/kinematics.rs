@@ -10,6 +10,18 @@
 //! - ω_b = Jᵀ ω_p + ω_rel             (angular velocity in b's axes; ω_rel = vee(Jᵀ J̇))
 //! - v_c = d c_b / dt                 (the total time derivative, ground axes)
 //!
+//! Past [`super::MAX_LAGRANGIAN`] coordinates the velocities come from the same recursion
+//! instead of differentiating c_b: with d/dt (R x) = R (ω × x + ẋ) for ω in the axes R maps
+//! from,
+//!
+//! - v_o,b = v_o,p + R_p (ω_p × (a + d) + ȧ + ḋ)
+//! - v_c   = v_o,b + R_b (ω_b × c + ċ)
+//!
+//! The derivative of c_b carries one product-rule term per rotation above the body, so its
+//! lowered form grows as the square of the depth and T's as the cube: a 100-link chain's T
+//! was 900 000 operations (rustc overflowed its stack building it), the recursion's is a
+//! few dozen per body.
+//!
 //! A revolute about the unit axis n turns by Rodrigues' formula
 //! `R = cos q 𝟙 + sin q [n]ₓ + (1 − cos q) n nᵀ` (with n nᵀ = a aᵀ/|a|², so only the
 //! sine term carries a square root), except that an axis along x, y or z uses the
@@ -21,7 +33,7 @@ use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene, Parent};
 use crate::lagrange::Coordinates;
 use crate::rigid::elementary;
-use crate::sym::mat3::{Mat3, mat_mul, mat_vec, transpose};
+use crate::sym::mat3::{Mat3, cross, mat_mul, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, SymError};
 
 /// The motion of one body: every entry expanded to the engine's canonical form for
@@ -209,6 +221,8 @@ impl MechanismScene {
             }
         };
         let mut out: Vec<Option<BodyKinematics>> = vec![None; self.bodies.len()];
+        // The velocity of each body frame's origin, ground axes (the recursive form only).
+        let mut origin_velocity: Vec<[ExprId; 3]> = vec![[arena.zero(); 3]; self.bodies.len()];
         let z = arena.zero();
         let o = arena.one();
         let ground = BodyKinematics {
@@ -251,8 +265,30 @@ impl MechanismScene {
             let carried = mat_vec(arena, &transpose(&motion.rotation), &parent.omega);
             let omega = [0, 1, 2].map(|k| arena.add(carried[k], motion.omega[k]));
             let omega = expand3(arena, omega);
-            let center_velocity = center.map(|e| arena.dt(e));
-            let center_velocity = expand3(arena, center_velocity);
+            let center_velocity = if expanded {
+                let v = center.map(|e| arena.dt(e));
+                expand3(arena, v)
+            } else {
+                let parent_velocity = match joint.parent {
+                    Parent::Ground => [z; 3],
+                    Parent::Body(p) => origin_velocity.get(p).copied().unwrap_or([z; 3]),
+                };
+                let turning = cross(arena, &parent.omega, &offset);
+                let local = [0, 1, 2].map(|k| {
+                    let moving = arena.dt(offset[k]);
+                    arena.add(turning[k], moving)
+                });
+                let carried = mat_vec(arena, &parent.rotation, &local);
+                let velocity = [0, 1, 2].map(|k| arena.add(parent_velocity[k], carried[k]));
+                origin_velocity[b] = velocity;
+                let turning = cross(arena, &omega, &body.center);
+                let local = [0, 1, 2].map(|k| {
+                    let moving = arena.dt(body.center[k]);
+                    arena.add(turning[k], moving)
+                });
+                let arm_velocity = mat_vec(arena, &rotation, &local);
+                [0, 1, 2].map(|k| arena.add(velocity[k], arm_velocity[k]))
+            };
             out[b] = Some(BodyKinematics {
                 rotation,
                 origin,

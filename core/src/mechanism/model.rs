@@ -13,6 +13,8 @@ use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 
+use super::rules::{check_axis, check_universal_axes};
+
 /// A mechanism's q̈, pivots, energy and momenta, lowered once and interpreted.
 ///
 /// Parameters are bound by name ([`MechanismModel::set`] changes one). The state is q and q̇
@@ -59,9 +61,10 @@ pub struct MechanismModel {
     /// Outputs: the conserved momenta.
     momenta: Program,
     cyclic: Vec<usize>,
-    /// Outputs: |axis|² of every axis built of parameters, named by `axis_joints`.
+    /// Outputs: the components of the axes of every joint whose axes read a parameter (three
+    /// per axis), named by `axis_joints` with whether the joint is universal (two axes).
     axes: Program,
-    axis_joints: Vec<String>,
+    axis_joints: Vec<(String, bool)>,
     /// Outputs: the mass and the nine inertia entries of every body whose mass properties
     /// read a parameter, named by `mass_bodies`.
     mass_properties: Program,
@@ -71,6 +74,9 @@ pub struct MechanismModel {
     time: SymbolId,
     route: Route,
     bindings: Bindings,
+    /// The value of each parameter bound, so a refused [`MechanismModel::set`] can put the
+    /// previous one back.
+    values: Vec<(String, f64)>,
     buffer: RefCell<Vec<f64>>,
 }
 
@@ -113,6 +119,20 @@ fn check_inertia(entries: &[f64]) -> Result<(), BodyError> {
     Ok(())
 }
 
+/// Each name once: a name given twice would bind its last value silently.
+fn distinct(parameters: &[(&str, f64)]) -> Result<(), MechanismError> {
+    for (i, &(name, first)) in parameters.iter().enumerate() {
+        if let Some(&(_, second)) = parameters[i + 1..].iter().find(|(n, _)| *n == name) {
+            return Err(MechanismError::DuplicateParameter {
+                name: name.to_owned(),
+                first,
+                second,
+            });
+        }
+    }
+    Ok(())
+}
+
 fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {
     arena.as_symbol(e).ok_or(MechanismError::RouteUnavailable {
         route: "interpreted",
@@ -122,11 +142,15 @@ fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {
 
 impl MechanismModel {
     /// Derives `scene` by `route` and lowers it with a value for each parameter
-    /// (`(name, value)` pairs), checking every axis made of parameters has non-zero length.
+    /// (`(name, value)` pairs), checking every value made of parameters by the rules
+    /// constants meet (see [`MechanismModel::set`]).
     ///
     /// # Errors
-    /// As [`MechanismScene::derive`] and [`MechanismModel::from_derivation`];
-    /// [`MechanismError::ZeroAxis`] for an axis of zero length at the values given;
+    /// [`MechanismError::DuplicateParameter`] for a name given twice (before deriving); as
+    /// [`MechanismScene::derive`] and [`MechanismModel::from_derivation`];
+    /// [`MechanismError::ZeroAxis`] for an axis with no direction and
+    /// [`MechanismError::ParallelAxes`] for a universal joint's parallel axes at the values
+    /// given ([`crate::mechanism::check_universal_axes`]);
     /// [`MechanismError::NonFiniteParameter`] or [`MechanismError::NegativeParameter`] for a
     /// mass, [`MechanismError::Part`] for an inertia, made of parameters, that no body can
     /// have (see [`MechanismModel::set`]).
@@ -136,23 +160,28 @@ impl MechanismModel {
         route: Route,
         parameters: &[(&str, f64)],
     ) -> Result<MechanismModel, MechanismError> {
+        distinct(parameters)?;
         let derivation = scene.derive(arena, route)?;
-        let mut squared = Vec::new();
+        let mut components = Vec::new();
         let mut names = Vec::new();
         for body in &scene.bodies {
-            let axes: Vec<[ExprId; 3]> = match &body.joint.kind {
-                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => vec![*axis],
-                JointKind::Universal { axes } => axes.to_vec(),
-                JointKind::Spherical { .. } => Vec::new(),
-            };
-            for axis in axes {
-                if axis.iter().all(|&e| arena.as_rational(e).is_some()) {
-                    continue;
+            let (axes, universal): (&[[ExprId; 3]], bool) = match &body.joint.kind {
+                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => {
+                    (std::slice::from_ref(axis), false)
                 }
-                let terms: Vec<ExprId> = axis.iter().map(|&x| arena.mul(x, x)).collect();
-                squared.push(arena.sum(&terms));
-                names.push(body.joint.name.clone());
+                JointKind::Universal { axes } => (axes, true),
+                JointKind::Spherical { .. } => (&[], false),
+            };
+            // Constant axes met the same rules in `MechanismScene::validate`.
+            if axes
+                .iter()
+                .flatten()
+                .all(|&e| arena.as_rational(e).is_some())
+            {
+                continue;
             }
+            components.extend(axes.iter().flatten());
+            names.push((body.joint.name.clone(), universal));
         }
         let mut model = Self::from_derivation(arena, &derivation, parameters)?;
         // Mass properties from parameters get the checks literal parts get at compile time.
@@ -184,7 +213,7 @@ impl MechanismModel {
             properties.extend(entries);
             mass_bodies.push(body.name.clone());
         }
-        model.axes = Program::lower(arena, &squared);
+        model.axes = Program::lower(arena, &components);
         model.axis_joints = names;
         model.mass_properties = Program::lower(arena, &properties);
         model.mass_bodies = mass_bodies;
@@ -195,6 +224,7 @@ impl MechanismModel {
     /// Lowers a derivation with a value for each parameter it reads.
     ///
     /// # Errors
+    /// [`MechanismError::DuplicateParameter`] for a name given twice;
     /// [`MechanismError::Binding`] for a parameter left out, an unknown name, a non-finite
     /// value, or a user function's input (which the interpreter cannot supply).
     pub fn from_derivation(
@@ -202,6 +232,7 @@ impl MechanismModel {
         d: &MechanismDerivation,
         parameters: &[(&str, f64)],
     ) -> Result<MechanismModel, MechanismError> {
+        distinct(parameters)?;
         let c = &d.coordinates;
         let q =
             c.q.iter()
@@ -238,6 +269,10 @@ impl MechanismModel {
             rates,
             time,
             route: d.route,
+            values: parameters
+                .iter()
+                .map(|&(name, value)| (name.to_owned(), value))
+                .collect(),
             bindings,
         })
     }
@@ -278,14 +313,16 @@ impl MechanismModel {
     }
 
     fn check_axes(&self) -> Result<(), MechanismError> {
-        let mut out = vec![0.0; self.axis_joints.len()];
+        let mut out = vec![0.0; self.axes.outputs().len()];
         self.bindings.eval(&self.axes, [], &mut out);
-        for (joint, &v) in self.axis_joints.iter().zip(&out) {
-            if v.is_nan() || v <= 0.0 {
-                return Err(MechanismError::ZeroAxis {
-                    joint: joint.clone(),
-                    squared_length: Some(v),
-                });
+        let mut values = out.chunks_exact(3).map(|c| [c[0], c[1], c[2]]);
+        for (joint, universal) in &self.axis_joints {
+            let mut next = || values.next().unwrap_or([f64::NAN; 3]);
+            if *universal {
+                let (outer, inner) = (next(), next());
+                check_universal_axes(joint, outer, inner)?;
+            } else {
+                check_axis(joint, "axis", next())?;
             }
         }
         Ok(())
@@ -315,14 +352,26 @@ impl MechanismModel {
     ///
     /// # Errors
     /// [`MechanismError::Binding`] for an unknown name or a non-finite value;
-    /// [`MechanismError::ZeroAxis`] if an axis becomes zero,
+    /// [`MechanismError::ZeroAxis`] if an axis loses its direction,
+    /// [`MechanismError::ParallelAxes`] if a universal joint's axes become parallel,
     /// [`MechanismError::NegativeParameter`] if a mass becomes negative (non-finite:
     /// [`MechanismError::NonFiniteParameter`]), [`MechanismError::Part`] if an inertia
     /// becomes non-finite, asymmetric, has a negative principal moment or breaks
-    /// I1 + I2 ≥ I3 (in each case the value is kept; set another).
+    /// I1 + I2 ≥ I3. After an error the model is as it was: the previous value is kept, so
+    /// later errors still name their own cause.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
         self.bindings.set(name, value)?;
-        self.check_parameters()?;
+        let slot = self.values.iter().position(|(n, _)| n == name);
+        if let Err(e) = self.check_parameters() {
+            if let Some(&(_, previous)) = slot.and_then(|i| self.values.get(i)) {
+                // Known and finite: it was bound before.
+                self.bindings.set(name, previous)?;
+            }
+            return Err(e);
+        }
+        if let Some((_, v)) = slot.and_then(|i| self.values.get_mut(i)) {
+            *v = value;
+        }
         Ok(self)
     }
 

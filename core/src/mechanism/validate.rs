@@ -4,7 +4,8 @@
 use std::collections::HashSet;
 
 use super::error::MechanismError;
-use super::scene::{JointKind, MechanismScene, Parent};
+use super::rules::{check_axis, check_universal_axes};
+use super::scene::{Joint, JointKind, MechanismScene, Parent};
 use crate::sym::{Arena, ExprId};
 
 impl MechanismScene {
@@ -13,14 +14,17 @@ impl MechanismScene {
     ///
     /// Checked: at least one joint; every coordinate and load count equals the joint's
     /// degrees of freedom; body, joint and coordinate names are unique; every parent exists;
-    /// the parents form no cycle; no axis is identically zero (an axis of parameters is
-    /// checked for its values by the run-time model).
+    /// the parents form no cycle; no axis is identically zero, and axes of constants meet
+    /// [`crate::mechanism::check_axis`] and, for a universal joint,
+    /// [`crate::mechanism::check_universal_axes`] (axes of parameters are checked for their
+    /// values by the run-time model, by the same functions).
     ///
     /// # Errors
     /// [`MechanismError::NoMovingJoint`], [`MechanismError::WrongCoordinateCount`],
     /// [`MechanismError::WrongLoadCount`], [`MechanismError::DuplicateName`],
     /// [`MechanismError::UnknownParent`], [`MechanismError::Cycle`],
-    /// [`MechanismError::ZeroAxis`], each naming the body, joint or coordinate.
+    /// [`MechanismError::ZeroAxis`], [`MechanismError::ParallelAxes`], each naming the body,
+    /// joint or coordinate.
     ///
     /// # Examples
     ///
@@ -89,18 +93,7 @@ impl MechanismScene {
                     count: self.bodies.len(),
                 });
             }
-            let zero_axis = |axis: &[ExprId; 3]| axis.iter().all(|&e| e == arena.zero());
-            let any_zero = match &joint.kind {
-                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => zero_axis(axis),
-                JointKind::Universal { axes } => axes.iter().any(zero_axis),
-                JointKind::Spherical { .. } => false,
-            };
-            if any_zero {
-                return Err(MechanismError::ZeroAxis {
-                    joint: joint.name.clone(),
-                    squared_length: None,
-                });
-            }
+            literal_axes(arena, joint)?;
         }
         self.topological_order()
     }
@@ -152,5 +145,42 @@ impl MechanismScene {
             at = p;
         }
         path.iter().map(|&b| self.bodies[b].name.clone()).collect()
+    }
+}
+
+/// The axis rules for a joint's axes made of constants: a zero axis is refused whatever it
+/// is made of, the rest of the rules need values.
+fn literal_axes(arena: &Arena, joint: &Joint) -> Result<(), MechanismError> {
+    let zero = |axis: &[ExprId; 3]| axis.iter().all(|&e| e == arena.zero());
+    let value = |axis: &[ExprId; 3]| -> Option<[f64; 3]> {
+        let mut out = [0.0; 3];
+        for (o, &e) in out.iter_mut().zip(axis) {
+            *o = arena.as_rational(e)?.to_f64();
+        }
+        Some(out)
+    };
+    let name = joint.name.as_str();
+    let axes: &[[ExprId; 3]] = match &joint.kind {
+        JointKind::Revolute { axis } | JointKind::Prismatic { axis } => std::slice::from_ref(axis),
+        JointKind::Universal { axes } => axes,
+        JointKind::Spherical { .. } => &[],
+    };
+    if axes.iter().any(zero) {
+        return Err(MechanismError::ZeroAxis {
+            joint: name.to_owned(),
+            squared_length: None,
+        });
+    }
+    match (
+        &joint.kind,
+        axes.iter().map(value).collect::<Vec<_>>().as_slice(),
+    ) {
+        (JointKind::Universal { .. }, [Some(outer), Some(inner)]) => {
+            check_universal_axes(name, *outer, *inner)
+        }
+        (_, values) => values
+            .iter()
+            .flatten()
+            .try_for_each(|&v| check_axis(name, "axis", v)),
     }
 }

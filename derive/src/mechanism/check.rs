@@ -355,8 +355,9 @@ impl Checker<'_> {
     }
 
     /// The mass, centre and inertia about the centre of a link's parts, in its frame. Literal
-    /// parts meet the `#[rigid]` rules now; a massless link (field masses that are zero) is
-    /// the run time's singular mass matrix.
+    /// parts meet the `#[rigid]` rules now, but for a zero mass: a massless part (a gimbal
+    /// ring modelled without mass, say) is allowed, literal or field alike, and a chain with
+    /// nothing to move is the singular mass matrix's concern.
     fn link_parts(&mut self, keyword: &Ident, items: &[Item]) -> Option<LinkParts> {
         let mut description = Description::default();
         let mut ok = true;
@@ -369,7 +370,7 @@ impl Checker<'_> {
                             pivot: None,
                         };
                         if let Some(numeric) = evaluate(self.arena, &single)
-                            && let Some(p) = numeric.parts.first()
+                            && let Some(p) = massless_as_unit(&numeric).parts.first()
                             && let Err(e) = check_part(0, p)
                         {
                             // Core numbers the part; the span shows it.
@@ -411,6 +412,12 @@ impl Checker<'_> {
         }
         if !ok {
             return None;
+        }
+        // A body of massless parts only has no centre to average over: it carries nothing.
+        let zero = self.arena.zero();
+        if description.parts.iter().all(|p| *p.shape.mass() == zero) {
+            let z = zero;
+            return Some((z, [z; 3], [[z; 3]; 3], description));
         }
         match mass_properties(self.arena, &description) {
             Ok(props) => Some((props.mass, props.center, props.inertia_cm, description)),
@@ -458,4 +465,25 @@ impl Checker<'_> {
         }
         Some(out)
     }
+}
+
+/// The part with a zero mass put to 1, so `check_part` judges the rest of a massless part
+/// (its geometry) by the body language's rules; the same substitution the generated
+/// `check_parameters` makes for a field's zero mass.
+fn massless_as_unit(numeric: &Description<f64>) -> Description<f64> {
+    let mut index = 0;
+    let indices = numeric.map(&mut |_| {
+        index += 1;
+        index - 1
+    });
+    let mass_index = indices.parts.first().map(|p| *p.shape.mass());
+    let mut at = 0;
+    numeric.map(&mut |&v| {
+        at += 1;
+        if Some(at - 1) == mass_index && v == 0.0 {
+            1.0
+        } else {
+            v
+        }
+    })
 }

@@ -19,6 +19,10 @@ use crate::symbols::{FieldParameters, Lowering};
 
 mod charts;
 
+/// Past this many operations q̈ and its pivots are emitted once, in a function the checked
+/// and the unchecked method share (a 10-link chain's are about 2 000).
+const SHARED_QDD_OPS: usize = 1024;
+
 /// `impl MechanismDynamics<N>` and the rest, or `None` after recording why the equations
 /// could not be derived.
 pub fn expand(
@@ -72,17 +76,21 @@ pub fn expand(
     } = &derivation;
     let checked_outputs: Vec<ExprId> = pivots.iter().chain(accelerations).copied().collect();
     let np = pivots.len();
-    let checked_body = method.body(arena, &checked_outputs, |o| {
-        let (pv, acc) = o.split_at(np.min(o.len()));
-        quote! {
-            let __pivots: [f64; #np] = [#(#pv),*];
+    // A large q̈ is emitted once, in a function both the checked and the unchecked method
+    // call, instead of once in each: rustc and LLVM then compile it once (half the build of
+    // a long chain), and one call is nothing next to its thousands of operations. A small
+    // one stays in both, where inlining it is worth more than the build time it costs.
+    let shared = precess_core::codegen::Program::lower(arena, &checked_outputs)
+        .op_count()
+        .total()
+        > SHARED_QDD_OPS;
+    let pivot_checks = quote! {
             for (__k, &__v) in __pivots.iter().enumerate() {
                 // Not `__v <= 0.0`: a NaN pivot is no regular mass matrix either.
                 if !(__v > 0.0) {
                     return ::core::result::Result::Err(#p::MechanismError::SingularMassMatrix { pivot: __k, value: __v });
                 }
             }
-            let __a: [f64; #n] = [#(#acc),*];
             if !__a.iter().all(|__v| __v.is_finite()) {
                 return ::core::result::Result::Err(#p::MechanismError::NonFinite {
                     quantity: "accelerations",
@@ -90,9 +98,41 @@ pub fn expand(
                 });
             }
             ::core::result::Result::Ok(__a)
-        }
-    });
-    let unchecked = method.body(arena, accelerations, |o| quote!([#(#o),*]));
+    };
+    let both = quote!(<#ident as __PrecessQdd>::__pivots_and_accelerations(self, t, q, qdot));
+    let (shared_fn, checked_body, unchecked) = if shared {
+        let body = method.body(arena, &checked_outputs, |o| {
+            let (pv, acc) = o.split_at(np.min(o.len()));
+            quote!(([#(#pv),*], [#(#acc),*]))
+        });
+        let shared_fn = quote! {
+            trait __PrecessQdd {
+                fn __pivots_and_accelerations(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ([f64; #np], [f64; #n]);
+            }
+            #[automatically_derived]
+            #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+            impl __PrecessQdd for #ident {
+                #[inline(never)]
+                fn __pivots_and_accelerations(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ([f64; #np], [f64; #n]) #body
+            }
+        };
+        let checked = quote!({
+            let (__pivots, __a): ([f64; #np], [f64; #n]) = #both;
+            #pivot_checks
+        });
+        (shared_fn, checked, quote!({ #both.1 }))
+    } else {
+        let checked = method.body(arena, &checked_outputs, |o| {
+            let (pv, acc) = o.split_at(np.min(o.len()));
+            quote! {
+                let __pivots: [f64; #np] = [#(#pv),*];
+                let __a: [f64; #n] = [#(#acc),*];
+                #pivot_checks
+            }
+        });
+        let unchecked = method.body(arena, accelerations, |o| quote!([#(#o),*]));
+        (TokenStream::new(), checked, unchecked)
+    };
     let kinetic = method.body(arena, &[*kinetic], |o| quote!(#(#o)*));
     let potential = method.body(arena, &[*potential], |o| quote!(#(#o)*));
     let power = method.body(arena, &[*power], |o| quote!(#(#o)*));
@@ -145,6 +185,10 @@ pub fn expand(
             #(#consts)*
         }
 
+        // A block, so the shared q̈'s trait is seen by no other code.
+        const _: () = {
+        #shared_fn
+
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::MechanismDynamics<#n> for #ident {
@@ -180,6 +224,7 @@ pub fn expand(
 
             #jacobian
         }
+        };
 
         #[automatically_derived]
         impl #p::System<#s> for #ident {

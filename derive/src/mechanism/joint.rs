@@ -1,6 +1,8 @@
 //! A body's joint: its kind, axes, location and name, with the rules literal axes meet now.
 
-use precess_core::mechanism::JointKind;
+use precess_core::mechanism::{
+    JointKind, MechanismError, PARALLEL_SINE, check_axis, check_universal_axes,
+};
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
@@ -138,9 +140,18 @@ impl Checker<'_> {
                 Some(Expr::Array(a)) if a.elems.len() == 2 => {
                     let first = a.elems.first().and_then(|x| self.joint_axis(x));
                     let second = a.elems.last().and_then(|x| self.joint_axis(x));
-                    Some(JointKind::Universal {
-                        axes: [first?, second?],
-                    })
+                    let axes = [first?, second?];
+                    if let (Some(outer), Some(inner)) =
+                        (self.literal_axis(&axes[0]), self.literal_axis(&axes[1]))
+                        && let Err(MechanismError::ParallelAxes { sine, .. }) =
+                            check_universal_axes("", outer, inner)
+                    {
+                        self.cx.error_spanned_by(a, format!(
+                            "the universal joint's axes are parallel (the sine of the angle between them is {sine:e}, below √ε ≈ {PARALLEL_SINE:.1e}), so its two coordinates would turn about one line: give axes at an angle, such as `[x, y]`"
+                        ));
+                        return None;
+                    }
+                    Some(JointKind::Universal { axes })
                 }
                 Some(v) => {
                     self.cx.error_spanned_by(v, "expected the two axes of the universal joint, `[outer, inner]`, such as `[x, y]`");
@@ -237,7 +248,29 @@ impl Checker<'_> {
             );
             return None;
         }
+        // The run-time rule for axes of fields, applied to the literal's value.
+        if let Some(value) = self.literal_axis(&axis)
+            && let Err(MechanismError::ZeroAxis {
+                squared_length: Some(squared),
+                ..
+            }) = check_axis("", "axis", value)
+        {
+            self.cx.error_spanned_by(
+                e,
+                format!("the axis's squared length {squared:e} is outside f64's normal positive numbers, so the engine cannot normalise it: scale the axis to a length near 1"),
+            );
+            return None;
+        }
         Some(axis)
+    }
+
+    /// The value of an axis whose components are all literals.
+    fn literal_axis(&self, axis: &[ExprId; 3]) -> Option<[f64; 3]> {
+        let mut out = [0.0; 3];
+        for (o, &c) in out.iter_mut().zip(axis) {
+            *o = self.arena.as_rational(c)?.to_f64();
+        }
+        Some(out)
     }
 }
 

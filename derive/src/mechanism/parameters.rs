@@ -1,8 +1,9 @@
 //! `check_parameters` of the mechanism derive: the values the struct's fields give the
-//! mechanism meet, at run time, the rules literals meet at compile time — each part the body
-//! language's rules (`check_part`, a zero mass aside: a massless link is allowed), every
-//! other value finite, axes of non-zero length, springs and dampers not negative. Only what
-//! reads a field is checked: literals were checked while expanding.
+//! mechanism meet, at run time, the rules literals meet at compile time, by the same
+//! functions — each part the body language's rules (`check_part`, a zero mass aside: a
+//! massless part is allowed, literal or field), axes `check_axis` and a universal joint's `check_universal_axes` (a
+//! direction each, not parallel), every other value finite, springs and dampers not
+//! negative. Only what reads a field is checked: literals were checked while expanding.
 
 use precess_core::body::{Description, Part, evaluate};
 use precess_core::codegen::Emitted;
@@ -33,19 +34,12 @@ pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> Toke
         for (k, &e) in joint.at.iter().enumerate() {
             checks.finite(arena, &owner, format!("at[{k}]"), e);
         }
-        let axes: Vec<(String, &[ExprId; 3])> = match &joint.kind {
+        match &joint.kind {
             JointKind::Revolute { axis } | JointKind::Prismatic { axis } => {
-                vec![("axis".to_owned(), axis)]
+                checks.axes(arena, &joint.name, std::slice::from_ref(axis));
             }
-            JointKind::Universal { axes } => axes
-                .iter()
-                .enumerate()
-                .map(|(i, a)| (format!("axes[{i}]"), a))
-                .collect(),
-            JointKind::Spherical { .. } => Vec::new(),
-        };
-        for (name, axis) in axes {
-            checks.axis(arena, &joint.name, &name, axis);
+            JointKind::Universal { axes } => checks.axes(arena, &joint.name, axes),
+            JointKind::Spherical { .. } => {}
         }
         for (coordinate, load) in joint.coordinates.iter().zip(&joint.loads) {
             if let Some(spring) = &load.spring {
@@ -155,34 +149,33 @@ impl Checks {
         }));
     }
 
-    /// Each component finite, and |axis|² a normal positive number (the engine divides by
-    /// it and by its root).
-    fn axis(&mut self, arena: &Arena, joint: &str, name: &str, axis: &[ExprId; 3]) {
-        if !axis.iter().any(|&e| reads_field(arena, e)) {
+    /// A joint's axes (one, or a universal joint's two) to `check_axis` or
+    /// `check_universal_axes`, the functions the derive applied to literal axes, when any
+    /// component reads a field.
+    fn axes(&mut self, arena: &Arena, joint: &str, axes: &[[ExprId; 3]]) {
+        if !axes.iter().flatten().any(|&e| reads_field(arena, e)) {
             return;
         }
-        let owner = format!("joint `{joint}`");
         let first = self.values.len();
-        for (k, &e) in axis.iter().enumerate() {
-            let i = self.value(e);
-            self.finite_at(i, owner.clone(), format!("{name}[{k}]"));
+        for &e in axes.iter().flatten() {
+            self.value(e);
         }
+        let count = axes.len();
         let joint = joint.to_owned();
         self.tests.push(Box::new(move |o| {
             let p = Private;
-            let c: Vec<TokenStream> = (first..first + 3)
-                .map(|i| o.get(i).cloned().unwrap_or_default())
-                .collect();
-            quote! {{
-                let __c: [f64; 3] = [#(#c),*];
-                let __squared = __c[0] * __c[0] + __c[1] * __c[1] + __c[2] * __c[2];
-                if !(__squared >= f64::MIN_POSITIVE) {
-                    return ::core::result::Result::Err(#p::MechanismError::ZeroAxis {
-                        joint: ::std::string::String::from(#joint),
-                        squared_length: ::core::option::Option::Some(__squared),
-                    });
-                }
-            }}
+            let vector = |a: usize| {
+                let c = (0..3).map(|k| o.get(first + 3 * a + k).cloned().unwrap_or_default());
+                quote!([#(#c),*])
+            };
+            let call = if count == 2 {
+                let (outer, inner) = (vector(0), vector(1));
+                quote!(#p::check_universal_axes(#joint, #outer, #inner))
+            } else {
+                let axis = vector(0);
+                quote!(#p::check_axis(#joint, "axis", #axis))
+            };
+            quote!(#call?;)
         }));
     }
 
