@@ -145,3 +145,33 @@ fn the_interpreted_model_names_its_parameters() {
         .unwrap_err();
     assert_eq!(e, FreeError::ZeroInertia { quantity: "mass" });
 }
+
+/// `max_steps` bounds each call of `advance_to`, as it bounds each run of the other drivers:
+/// a flight advanced in many short legs never exhausts it, and one call that needs more
+/// still fails by name.
+#[test]
+fn the_step_budget_of_a_flight_is_per_call() {
+    let ball = Ball { m: 1.0, c: 0.1 };
+    let start = FreeState {
+        omega_principal: Vector3::new(0.0, 0.0, 5.0),
+        ..FreeState::at_rest()
+    };
+    let cfg = AdaptiveConfig {
+        max_steps: 20,
+        ..AdaptiveConfig::default()
+    };
+    let mut flight = FreeFlight::new(FreeSystem(&ball), 0.0, &start, cfg).unwrap();
+    for leg in 1..=100 {
+        flight.advance_to(f64::from(leg) * 0.05).unwrap();
+    }
+    let done = flight.stats();
+    assert!(done.steps + done.rejections > 20, "{done:?}");
+    let e = flight.advance_to(1e6).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            FreeError::Ode(OdeError::MaxStepsExceeded { max_steps: 20, .. })
+        ),
+        "{e}"
+    );
+}

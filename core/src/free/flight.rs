@@ -116,7 +116,9 @@ impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
     ///
     /// # Errors
     /// [`FreeError::Ode`] as [`Adaptive::step`] (a non-finite or past `t_stop`, a step size
-    /// underflow, a non-finite state, more than `max_steps` attempts in all).
+    /// underflow, a non-finite state, more than `max_steps` attempts in this call: the budget
+    /// is per run, as for [`Run`](crate::ode::Run), so a flight advanced in many short legs
+    /// never exhausts it).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), FreeError> {
         if !t_stop.is_finite() {
             return Err(OdeError::NonFiniteTime { t: t_stop }.into());
@@ -128,9 +130,11 @@ impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
             }
             .into());
         }
+        let start = self.stats();
         while self.t() < t_stop {
             let total = self.stats();
-            if total.steps + total.rejections >= self.cfg.max_steps {
+            let attempts = (total.steps + total.rejections) - (start.steps + start.rejections);
+            if attempts >= self.cfg.max_steps {
                 return Err(OdeError::MaxStepsExceeded {
                     t: self.t(),
                     max_steps: self.cfg.max_steps,

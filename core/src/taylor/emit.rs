@@ -23,10 +23,26 @@ fn series(x: u32) -> Ident {
     Ident::new(&format!("__x{x}"), Span::call_site())
 }
 
-/// The path generated code reaches the kernels by: the facade re-exports precess-core.
-fn kernel(name: &str) -> TokenStream {
-    let f = Ident::new(name, Span::call_site());
-    quote!(::precess::taylor::kernels::#f)
+/// How the emitted sums reach [`super::kernels`]: inlined into the loop over the orders, or
+/// through [`super::kernels::outlined`] for tapes past [`OUTLINE_KERNELS_FROM_SUMS`] sums.
+#[derive(Clone, Copy)]
+struct Sums {
+    /// Cauchy products split into interior and boundary ([`Tape::split_products`]).
+    split: bool,
+    /// The kernels called through their never-inlined twins.
+    outlined: bool,
+}
+
+impl Sums {
+    /// The path generated code reaches a kernel by: the facade re-exports precess-core.
+    fn kernel(self, name: &str) -> TokenStream {
+        let f = Ident::new(name, Span::call_site());
+        if self.outlined {
+            quote!(::precess::taylor::kernels::outlined::#f)
+        } else {
+            quote!(::precess::taylor::kernels::#f)
+        }
+    }
 }
 
 /// The emitted code of a tape, with its size for the price reports.
@@ -144,12 +160,15 @@ impl Tape {
         // order's other values), then every step in program order, adding the terms that
         // read order k to its interior, from the `let`s of the values just made. What
         // remains between one order and the next is the short chain of those terms.
-        let split = self.split_products();
-        let interiors = self.steps.iter().map(|st| interior(st.out, st.op, split));
+        let sums = Sums {
+            split: self.split_products(),
+            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
+        };
+        let interiors = self.steps.iter().map(|st| interior(st.out, st.op, sums));
         let steps = self
             .steps
             .iter()
-            .map(|st| order_k(st.out, st.op, scalar_operand, layout, split));
+            .map(|st| order_k(st.out, st.op, scalar_operand, layout, sums));
         // f's order-k coefficient into the state's order k + 1: at order 0 as it is, at
         // order k ≥ 1 divided by k + 1 (`__inv`); a scalar output has order 0 only.
         let output = |order_zero: bool| {
@@ -239,6 +258,14 @@ impl Tape {
 /// (their many independent sums already keep the processor busy, and the split's code is a
 /// third larger); the bound lies between.
 const SPLIT_PRODUCTS_MAX_SUMS: usize = 32;
+
+/// The number of sums from which the emitted code calls the kernels through
+/// [`super::kernels::outlined`] rather than inlining each: LLVM's time to optimise one loop
+/// body grows faster than its size, and a 10-link chain's (some 2 000 sums, 4 000 kernel
+/// calls, inlined) took 111 s of a release build (`scripts/build_cost.py --n 10 --taylor 20
+/// --profile release`, docs/mechanisms.md). The scenes of the benches have at most a few
+/// hundred sums and keep their inlined kernels.
+const OUTLINE_KERNELS_FROM_SUMS: usize = 512;
 
 impl Tape {
     /// Whether the emitted Cauchy products sum their interior first and the boundary
@@ -443,11 +470,12 @@ fn order_zero(
 
 /// The first phase of one step at the order `__k ≥ 1`: the part of its sum that reads
 /// orders below `__k` only, into `let`s (nothing for a step without a sum).
-fn interior(out: u32, op: SeriesOp, split: bool) -> TokenStream {
+fn interior(out: u32, op: SeriesOp, sums: Sums) -> TokenStream {
+    let split = sums.split;
     let (dot, square_interior, square) = (
-        kernel("dot_reversed"),
-        kernel("square_interior"),
-        kernel("square"),
+        sums.kernel("dot_reversed"),
+        sums.kernel("square_interior"),
+        sums.kernel("square"),
     );
     let o = series(out);
     let i = interior_id(out, "");
@@ -470,7 +498,7 @@ fn interior(out: u32, op: SeriesOp, split: bool) -> TokenStream {
         SeriesOp::Sqrt(_) => quote!(let #i: f64 = #square(&#o[1..__k]);),
         // Σⱼ₌₁ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j: the real power's sum less r k a_k c_0.
         SeriesOp::Powf(a, r) => {
-            let (a, r, power) = (series(a), f64_literal(r), kernel("power_interior"));
+            let (a, r, power) = (series(a), f64_literal(r), sums.kernel("power_interior"));
             quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
         }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
@@ -496,8 +524,9 @@ fn order_k(
     op: SeriesOp,
     s: impl Fn(u32) -> TokenStream,
     layout: &Layout,
-    split: bool,
+    sums: Sums,
 ) -> TokenStream {
+    let split = sums.split;
     let o = series(out);
     let i = interior_id(out, "");
     // A read at the current order: the operand's `let`, or its row for the state and time.
@@ -517,7 +546,7 @@ fn order_k(
             quote!(#i + (#a[0] * #bk + #ak * #b[0]))
         }
         SeriesOp::Mul(a, b) => {
-            let (a, b, dot) = (series(a), series(b), kernel("dot_reversed"));
+            let (a, b, dot) = (series(a), series(b), sums.kernel("dot_reversed"));
             quote!(#dot(&#a[..=__k], &#b[..=__k]))
         }
         SeriesOp::Square(a) => {
@@ -565,4 +594,39 @@ fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {
 fn method(a: TokenStream, name: &str) -> TokenStream {
     let f = Ident::new(name, Span::call_site());
     quote!(f64::#f(#a))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sym::Arena;
+
+    /// The tape of x' = Σᵢ₌₁ⁿ xⁱ⁺¹·x (n products of a growing power): n + (n − 1) sums.
+    fn products(n: usize) -> Tape {
+        let mut a = Arena::new();
+        let x = a.coordinate("x");
+        let mut power = x;
+        let mut terms = Vec::new();
+        for _ in 0..n {
+            power = a.mul(power, x);
+            let shifted = a.add(power, x);
+            terms.push(a.mul(shifted, x));
+        }
+        let rhs = a.sum(&terms);
+        Tape::new(&a, &[x], None, &[rhs]).unwrap()
+    }
+
+    #[test]
+    fn large_tapes_call_the_outlined_kernels_and_small_ones_inline_them() {
+        let small = products(4);
+        assert!(small.sum_count() < OUTLINE_KERNELS_FROM_SUMS);
+        let code = small.to_tokens(20, &mut |_| quote!(0.0)).body.to_string();
+        assert!(code.contains("kernels :: dot_reversed"), "{code}");
+        assert!(!code.contains("outlined"));
+        let large = products(OUTLINE_KERNELS_FROM_SUMS);
+        assert!(large.sum_count() >= OUTLINE_KERNELS_FROM_SUMS);
+        let code = large.to_tokens(20, &mut |_| quote!(0.0)).body.to_string();
+        assert!(code.contains("kernels :: outlined :: dot_reversed"));
+        assert!(!code.contains("kernels :: dot_reversed"));
+    }
 }

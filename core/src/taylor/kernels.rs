@@ -182,3 +182,35 @@ mod tests {
         assert_eq!(cauchy(&a[..5], &b[..9]), direct(&a[..5], &b[..5]));
     }
 }
+
+/// The same sums behind calls the compiler may not inline, for the code of tapes too large
+/// to inline every sum into (`Tape::to_tokens` switches to them past
+/// `OUTLINE_KERNELS_FROM_SUMS` sums): a 10-link chain's recurrences call the kernels some
+/// 4 000 times in one loop body, and inlining each of them there cost most of two minutes of
+/// a release build. A call costs a few cycles beside a sum of k terms; the values are the
+/// inlined kernels' bit for bit.
+pub mod outlined {
+    /// [`super::dot_reversed`], never inlined.
+    #[inline(never)]
+    pub fn dot_reversed(a: &[f64], b: &[f64]) -> f64 {
+        super::dot_reversed(a, b)
+    }
+
+    /// [`super::square`], never inlined.
+    #[inline(never)]
+    pub fn square(a: &[f64]) -> f64 {
+        super::square(a)
+    }
+
+    /// [`super::square_interior`], never inlined.
+    #[inline(never)]
+    pub fn square_interior(inner: &[f64]) -> f64 {
+        super::square_interior(inner)
+    }
+
+    /// [`super::power_interior`], never inlined.
+    #[inline(never)]
+    pub fn power_interior(a: &[f64], c: &[f64], r: f64) -> f64 {
+        super::power_interior(a, c, r)
+    }
+}

@@ -131,7 +131,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`TaylorSystem::max_order`] is below 2 ([`OdeError::InvalidParameter`] naming
     /// `TaylorSystem::max_order`), a fixed [`TaylorConfig::order`] above that maximum
     /// ([`OdeError::TaylorOrderTooHigh`]), the extended mode asked of a system that does not
-    /// implement it ([`OdeError::InvalidParameter`] naming `TaylorConfig::extended`), a
+    /// implement it ([`OdeError::NoExtendedCoefficients`]), a
     /// non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
     /// ([`OdeError::NonFiniteInitialState`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: TaylorConfig) -> Result<Self, OdeError> {
