@@ -14,15 +14,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod ctxt;
-mod fallback;
 mod free;
-mod keys;
+mod lang;
 mod mechanism;
-mod private;
 mod rigid;
-mod symbols;
-mod taylor;
+mod rigid_body;
 mod taylor_system;
 mod top;
 
@@ -31,10 +27,11 @@ use proc_macro::TokenStream;
 use quote::quote;
 use syn::{DeriveInput, parse_macro_input};
 
-use ctxt::Ctxt;
-use rigid::ast::Input;
+use lang::ast::Input;
+use lang::ctxt::Ctxt;
+use lang::keys;
+use lang::symbols::FieldParameters;
 use rigid::check::Checker;
-use symbols::FieldParameters;
 
 /// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, `TopDynamics`
 /// when a `#[top(...)]` attribute declares the body a top about its pivot, and `FreeDynamics`
@@ -93,7 +90,7 @@ fn derive(input: &DeriveInput) -> proc_macro2::TokenStream {
         Ok(()) => match expanded {
             Some(tokens) => tokens,
             // Every phase that gives up records why; reaching here is a bug of the macro.
-            None => fallback::expand(
+            None => rigid_body::expand(
                 input,
                 &[syn::Error::new_spanned(
                     &input.ident,
@@ -101,7 +98,7 @@ fn derive(input: &DeriveInput) -> proc_macro2::TokenStream {
                 )],
             ),
         },
-        Err(errors) => fallback::expand(input, &errors),
+        Err(errors) => rigid_body::expand(input, &errors),
     }
 }
 

@@ -5,7 +5,7 @@
 use proc_macro2::TokenStream;
 use syn::DeriveInput;
 
-use crate::keys;
+use crate::lang::keys;
 use crate::{free, rigid, top};
 
 /// The errors as `compile_error!` invocations and the stub impls for `input`.

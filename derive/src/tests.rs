@@ -11,8 +11,8 @@
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 
-use crate::ctxt::Ctxt;
-use crate::keys::{self, PARTS, PartKind};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::{self, PARTS, PartKind};
 
 /// Field names that look like the engine's own symbols or the generated code's locals,
 /// and a few plain ones.

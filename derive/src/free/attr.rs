@@ -7,8 +7,8 @@ use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
 use syn::{Attribute, Ident, Meta, Token, parenthesized};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 use crate::rigid::attr::{KeyValue, Parsed, parse_each};
 
 /// One entry of the list.

@@ -6,7 +6,7 @@ use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
 use super::attr::FreeItem;
-use crate::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
+use crate::lang::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
 use crate::rigid::attr::{KeyValue, Parsed};
 use crate::rigid::check::Checker;
 
@@ -84,7 +84,7 @@ pub fn check(
             (keys::FORCE, settings.force.is_some()),
             (keys::TORQUE, settings.torque.is_some()),
         ];
-        settings.taylor = crate::taylor::check(ck.cx, value, &user);
+        settings.taylor = crate::lang::taylor::check(ck.cx, value, &user);
     }
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))

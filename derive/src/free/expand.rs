@@ -11,11 +11,11 @@ use quote::{ToTokens, quote};
 use syn::{Ident, LitStr};
 
 use super::check::FreeSettings;
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::private::Private;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
+use crate::lang::private::Private;
+use crate::lang::symbols::{FieldParameters, Lowering, SymbolTokens};
 use crate::rigid::check::CheckedBody;
-use crate::symbols::{FieldParameters, Lowering, SymbolTokens};
 
 /// The values generated code computes before a method's straight-line block, each emitted
 /// only where the block reads it.
@@ -159,7 +159,7 @@ pub fn expand(
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
     let taylor = settings.taylor.map(|order| {
         let prelude = preludes.for_outputs(arena, &derivation.rhs);
-        crate::taylor::expand(
+        crate::lang::taylor::expand(
             cx,
             ident,
             arena,

@@ -4,8 +4,8 @@
 use quote::ToTokens;
 use syn::{Attribute, Data, DeriveInput, Fields, Ident, Type};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 
 /// The struct the derive applies to.
 pub struct Input<'a> {

@@ -10,10 +10,10 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::{Expr, ExprLit, Ident, Lit};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::private::Private;
-use crate::symbols::SymbolTokens;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
+use crate::lang::private::Private;
+use crate::lang::symbols::SymbolTokens;
 
 /// The maximum order of `taylor = K`: an integer literal in `2 ..= MAX_TAYLOR_ORDER` (the
 /// integrator's step needs two orders to estimate its size, so order 1 could never run), and no

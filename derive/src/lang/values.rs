@@ -7,14 +7,14 @@ use precess_core::sym::{Arena, ExprId, SymError, parse_decimal};
 use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
-use super::check::Checker;
-use crate::ctxt::Ctxt;
+use crate::lang::ctxt::Ctxt;
+use crate::rigid::check::Checker;
 
 const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
 
 impl Checker<'_> {
     /// `x`, `y` or `z`.
-    pub(super) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
+    pub(crate) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
         // `-z` reverses the axis: it matters only for the cone, whose apex it points to.
         let (inner, reversed) = match e {
             Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => (&*u.expr, true),
@@ -37,7 +37,7 @@ impl Checker<'_> {
     /// `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])`, or elementary turns
     /// named by their axes, `zxz(φ, θ, ψ)`, `y(α)`. A rotation whose values are literals is
     /// checked now, and its error spanned on the axis or the matrix.
-    pub(super) fn orientation(
+    pub(crate) fn orientation(
         &mut self,
         e: &Expr,
         kind: &'static str,
@@ -149,14 +149,14 @@ impl Checker<'_> {
             Ok(()) => true,
             Err(err) => {
                 self.cx
-                    .error_spanned_by(tokens, super::check::message(&err));
+                    .error_spanned_by(tokens, crate::rigid::check::message(&err));
                 false
             }
         }
     }
 
     /// `center` or `pivot`.
-    pub(super) fn about(&mut self, e: &Expr) -> Option<About> {
+    pub(crate) fn about(&mut self, e: &Expr) -> Option<About> {
         match path_ident(e).map(|i| i.to_string()).as_deref() {
             Some("center") => Some(About::Center),
             Some("pivot") => Some(About::Pivot),
@@ -169,7 +169,7 @@ impl Checker<'_> {
     }
 
     /// `diag(a, b, c)` or `[[..], [..], [..]]`.
-    pub(super) fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
+    pub(crate) fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
         const TENSOR: &str = "expected `diag(I1, I2, I3)` or a full matrix `[[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]]`";
         match e {
             Expr::Call(call)

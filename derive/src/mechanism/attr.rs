@@ -7,8 +7,8 @@ use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
 use syn::{Attribute, Expr, Ident, Meta, Token, parenthesized};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 use crate::rigid::attr::{Item, KeyValue, Parsed, parse_each};
 
 /// One entry of a `#[body(...)]` list.
@@ -125,7 +125,7 @@ pub fn parse_settings(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<KeyValue> {
 
 /// Takes the `taylor = K` items out of the `#[mechanism(...)]` settings (so the other keys
 /// are checked as before) and returns the first one's value; a repeat is an error on its key.
-/// The value is judged by `crate::taylor::check` once the links are known, since a user
+/// The value is judged by `crate::lang::taylor::check` once the links are known, since a user
 /// function among the efforts rules the key out.
 pub fn take_taylor(cx: &Ctxt, settings: &mut Parsed<KeyValue>) -> Option<Expr> {
     let mut value: Option<Expr> = None;

@@ -10,7 +10,7 @@ use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
-use crate::keys::{self, part_list};
+use crate::lang::keys::{self, part_list};
 use crate::rigid::attr::{Item, KeyValue, Parsed};
 use crate::rigid::check::Checker;
 

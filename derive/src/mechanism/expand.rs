@@ -13,9 +13,9 @@ use quote::{format_ident, quote};
 use syn::{Ident, LitStr};
 
 use super::check::{CheckedMechanism, RouteChoice, UserEffort};
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::{FieldParameters, Lowering};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::{FieldParameters, Lowering};
 
 mod charts;
 

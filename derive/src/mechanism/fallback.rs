@@ -13,8 +13,8 @@ use syn::{DeriveInput, Expr, Ident, Token};
 
 use super::attr::LinkItem;
 use super::joint::path_ident;
-use crate::keys;
-use crate::private::Private;
+use crate::lang::keys;
+use crate::lang::private::Private;
 
 /// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
 pub fn stub(input: &DeriveInput) -> TokenStream {

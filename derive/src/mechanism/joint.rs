@@ -7,7 +7,7 @@ use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
-use crate::keys;
+use crate::lang::keys;
 use crate::rigid::check::Checker;
 
 /// A joint as read.

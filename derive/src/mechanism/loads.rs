@@ -7,7 +7,7 @@ use syn::Expr;
 
 use super::check::{LinkKeys, RouteChoice, UserEffort};
 use super::joint::path_ident;
-use crate::keys;
+use crate::lang::keys;
 use crate::rigid::check::Checker;
 
 impl Checker<'_> {

@@ -18,11 +18,11 @@ use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
 use syn::DeriveInput;
 
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::rigid::ast::Input;
+use crate::lang::ast::Input;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
+use crate::lang::symbols::FieldParameters;
 use crate::rigid::check::Checker;
-use crate::symbols::FieldParameters;
 
 /// The whole derive: the impls, or every error.
 pub fn derive(input: &DeriveInput) -> TokenStream {

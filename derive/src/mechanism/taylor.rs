@@ -9,14 +9,14 @@ use proc_macro2::TokenStream;
 use syn::{Expr, Ident};
 
 use super::check::CheckedMechanism;
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::symbols::FieldParameters;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
+use crate::lang::symbols::FieldParameters;
 
 /// The order of `taylor = K`, or `None` without the key or after recording its error.
 pub fn check(cx: &Ctxt, value: Option<&Expr>, checked: &CheckedMechanism) -> Option<usize> {
     let user = [(keys::EFFORT, !checked.efforts.is_empty())];
-    crate::taylor::check(cx, value?, &user)
+    crate::lang::taylor::check(cx, value?, &user)
 }
 
 /// `impl TaylorSystem<2n>` over the state `[q, q̇]`, reading the fields as the other
@@ -30,7 +30,7 @@ pub fn expand(
     order: usize,
 ) -> TokenStream {
     let (state, rhs) = derivation.first_order_system();
-    crate::taylor::expand(
+    crate::lang::taylor::expand(
         cx,
         ident,
         arena,

@@ -4,7 +4,7 @@
 use precess_core::mechanism::Parent;
 
 use super::check::LinkSpec;
-use crate::keys;
+use crate::lang::keys;
 use crate::rigid::check::Checker;
 
 /// The parent of each link: names unique, parents known, every chain reaching the ground.

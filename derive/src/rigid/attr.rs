@@ -9,8 +9,8 @@ use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
 use syn::{Attribute, Expr, Ident, Token, parenthesized};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 
 /// One entry of the list.
 pub enum Item {

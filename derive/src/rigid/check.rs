@@ -11,11 +11,11 @@ use proc_macro2::TokenStream;
 use quote::ToTokens;
 use syn::{Expr, Ident};
 
-use super::ast::Input;
 use super::attr::{Item, KeyValue, Parsed};
-use crate::ctxt::Ctxt;
-use crate::keys::{self, PartKind, part_list};
-use crate::symbols::FieldParameters;
+use crate::lang::ast::Input;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::{self, PartKind, part_list};
+use crate::lang::symbols::FieldParameters;
 
 /// The checked description and the symbolic body computed from it.
 pub struct CheckedBody {
@@ -62,7 +62,7 @@ pub struct Checker<'a> {
     /// The arena the values are built in.
     pub arena: &'a mut Arena,
     /// The fields read so far, each with its parameter symbol.
-    pub(super) parameters: &'a mut FieldParameters,
+    pub(crate) parameters: &'a mut FieldParameters,
 }
 
 impl<'a> Checker<'a> {
@@ -152,7 +152,7 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                 }
                 taylor_key = Some(key);
                 // No user function can enter Euler's torque-free equations.
-                taylor = crate::taylor::check(ck.cx, value, &[]);
+                taylor = crate::lang::taylor::check(ck.cx, value, &[]);
             }
             Item::Setting(setting) => {
                 let key = &setting.key;
@@ -285,7 +285,7 @@ fn report(cx: &Ctxt, spans: &Spans, e: &BodyError) {
 }
 
 /// What a rejected rotation is told, without the part's number (the span shows the part).
-pub(super) fn message(e: &BodyError) -> String {
+pub(crate) fn message(e: &BodyError) -> String {
     match *e {
         BodyError::ZeroRotationAxis { axis, .. } => format!(
             "the rotation axis {axis:?} has no direction: give a non-zero axis such as [0.0, 0.0, 1.0]"

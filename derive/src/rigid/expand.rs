@@ -11,9 +11,11 @@ use quote::quote;
 use syn::Ident;
 
 use super::check::CheckedBody;
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::{FieldParameters, Lowering};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::{FieldParameters, Lowering};
+
+mod euler;
 
 /// A constant whose exact value did not fold to one rational (an overflow kept it as a
 /// product) is rounded to one literal, so a body of literals never computes at run time.
@@ -127,7 +129,7 @@ pub fn expand(
     // `taylor = K`: the torque-free Euler equations as a system of their own.
     let taylor = checked
         .taylor
-        .map(|order| super::taylor::expand(cx, ident, arena, parameters, checked, order));
+        .map(|order| euler::expand(cx, ident, arena, parameters, checked, order));
     Some(quote! {
         #taylor
 

@@ -5,10 +5,10 @@
 
 use syn::{Expr, Fields, Ident};
 
-use super::parse::{STATE, Statement, SystemInput, TIME};
-use crate::ctxt::Ctxt;
-use crate::keys::{self, did_you_mean};
-use crate::rigid::ast::Field;
+use super::attr::{STATE, Statement, SystemInput, TIME};
+use crate::lang::ast::Field;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::{self, did_you_mean};
 
 /// The checked system.
 pub struct CheckedSystem<'a> {
@@ -67,7 +67,7 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
     };
     let state = state_names(cx, keyword, names, &fields);
     let order = match taylor {
-        Some(value) => crate::taylor::check(cx, value, &[]),
+        Some(value) => crate::lang::taylor::check(cx, value, &[]),
         None => {
             cx.error_spanned_by(
                 &item.ident,

@@ -1,24 +1,19 @@
-//! `taylor_system!`: an ODE `y' = f(t, y)` the user writes as equations, turned into the
-//! symbolic engine's expressions while the macro expands, and emitted as the struct with
-//! `impl System<N>` (the right-hand side as straight-line code) and `impl TaylorSystem<N>`
-//! (the recurrences, by the same function as `taylor = K` on the scenes). Phases as in the
-//! derives: `parse` (syntax), `check` (names and counts), `lower` (expressions), then here.
-
-mod check;
-mod lower;
-mod parse;
+//! Expansion of `taylor_system!`: the checked equations lowered into the arena, emitted as
+//! the struct with `impl System<N>` (the right-hand side as straight-line code) and
+//! `impl TaylorSystem<N>` (the recurrences, by `lang::taylor`, as for `taylor = K` on the
+//! derives).
 
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
 use syn::LitStr;
 
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::{Lowering, SymbolTokens};
-use check::CheckedSystem;
-use lower::{Lowerer, Names};
-use parse::SystemInput;
+use super::attr::SystemInput;
+use super::check::CheckedSystem;
+use super::values::{Lowerer, Names};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::{Lowering, SymbolTokens};
 
 /// The whole macro: the struct and its impls, or the struct and every error.
 pub fn expand(input: TokenStream) -> TokenStream {
@@ -27,7 +22,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Err(e) => return e.to_compile_error(),
     };
     let cx = Ctxt::new();
-    let impls = check::check(&cx, &input).and_then(|c| impls(&cx, &input, &c));
+    let impls = super::check::check(&cx, &input).and_then(|c| impls(&cx, &input, &c));
     let item = input.item.to_token_stream();
     match cx.check() {
         Ok(()) => match impls {
@@ -92,7 +87,7 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         symbols.insert_expr(&arena, e, quote!(self.#field));
     }
     // The time is the `t` argument of `System::rhs`; in the recurrences it is the tape's time
-    // series (t₀, 1, 0, …), which `crate::taylor::expand` makes of the arena's time symbol.
+    // series (t₀, 1, 0, …), which `crate::lang::taylor::expand` makes of the arena's time symbol.
     if let Some(time) = time {
         symbols.insert_expr(&arena, time, quote!(t));
     }
@@ -103,7 +98,7 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         .collect();
     let emitted = Lowering::new(cx, ident, symbols.clone()).lower_reading(&arena, &rhs, &reads);
     let (lets, outputs) = (emitted.lets, emitted.outputs);
-    let taylor = crate::taylor::expand(
+    let taylor = crate::lang::taylor::expand(
         cx,
         ident,
         &arena,

@@ -4,7 +4,7 @@
 use syn::punctuated::Punctuated;
 use syn::{Attribute, Meta, Token};
 
-use crate::ctxt::Ctxt;
+use crate::lang::ctxt::Ctxt;
 use crate::rigid::attr::{KeyValue, Parsed, parse_each};
 
 /// The items of every `#[top(...)]` attribute.

@@ -9,7 +9,7 @@ use precess_core::sym::ExprId;
 use precess_core::top::TopParameters;
 use syn::{Expr, Ident};
 
-use crate::keys::{self, TOP_KEYS};
+use crate::lang::keys::{self, TOP_KEYS};
 use crate::rigid::attr::{KeyValue, Parsed};
 use crate::rigid::check::Checker;
 
@@ -143,7 +143,7 @@ pub fn check(
     }
     if let Some(value) = taylor {
         let user = [(keys::TORQUE, settings.torque.is_some())];
-        settings.taylor = crate::taylor::check(ck.cx, value, &user);
+        settings.taylor = crate::lang::taylor::check(ck.cx, value, &user);
     }
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))

@@ -10,8 +10,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-use crate::ctxt::Ctxt;
-use crate::private::Private;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
 
 /// The method `fn equations(&self) -> &'static Typeset` of `scene`, or nothing after
 /// recording why its equations could not be derived.

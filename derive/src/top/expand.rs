@@ -14,10 +14,10 @@ use syn::Ident;
 use syn::spanned::Spanned;
 
 use super::check::TopSettings;
-use crate::ctxt::Ctxt;
-use crate::private::Private;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::{FieldParameters, Lowering};
 use crate::rigid::check::CheckedBody;
-use crate::symbols::{FieldParameters, Lowering};
 
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
 /// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
@@ -171,7 +171,7 @@ pub fn expand(
     // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
     let taylor = settings.taylor.map(|order| {
         let (state, rhs) = lagrangian;
-        crate::taylor::expand(
+        crate::lang::taylor::expand(
             cx,
             ident,
             arena,
