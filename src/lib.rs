@@ -74,6 +74,7 @@ pub mod prelude {
         Rotation3, Shape, Vector3,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
@@ -105,6 +106,8 @@ pub mod __private {
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::TaylorSystem;
+    pub use precess_core::taylor::compact::low_orders;
+    pub use precess_core::taylor::kernels;
     pub use precess_core::top::{TopDynamics, TopParameters};
     pub use std::borrow::Cow;
     pub use std::vec;

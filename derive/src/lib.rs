@@ -28,10 +28,10 @@ use quote::quote;
 use syn::{DeriveInput, parse_macro_input};
 
 use lang::ast::Input;
+use lang::check::Checker;
 use lang::ctxt::Ctxt;
 use lang::keys;
 use lang::symbols::FieldParameters;
-use rigid::check::Checker;
 
 /// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, `TopDynamics`
 /// when a `#[top(...)]` attribute declares the body a top about its pivot, and `FreeDynamics`

@@ -115,7 +115,7 @@ impl Tape {
             self.coefficients_into(ws, t.hi + t.lo, &__y, order, coeffs);
             let __n: usize = order.min(#max_order).min(__top);
             let __values: &[f64] = &[#(#values),*];
-            ::precess::taylor::compact::low_orders(__WORDS, __FLOATS, __values, ws, t, y, __n, low)
+            ::precess::__private::low_orders(__WORDS, __FLOATS, __values, ws, t, y, __n, low)
         }
     }
 }

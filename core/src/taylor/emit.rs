@@ -23,10 +23,11 @@ fn series(x: u32) -> Ident {
     Ident::new(&format!("__x{x}"), Span::call_site())
 }
 
-/// The path generated code reaches the kernels by: the facade re-exports precess-core.
+/// The path generated code reaches the kernels by: the facade's hidden module, the one path
+/// all generated code names precess through.
 fn kernel(name: &str) -> TokenStream {
     let f = Ident::new(name, Span::call_site());
-    quote!(::precess::taylor::kernels::#f)
+    quote!(::precess::__private::kernels::#f)
 }
 
 /// The emitted code of a tape, with its size for the price reports.

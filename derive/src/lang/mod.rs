@@ -7,9 +7,13 @@
 //! generated code names precess through).
 
 pub mod ast;
+pub mod check;
 pub mod ctxt;
 pub mod keys;
+pub mod parts;
 pub mod private;
 pub mod symbols;
+pub mod syntax;
 pub mod taylor;
+pub mod tokens;
 pub mod values;

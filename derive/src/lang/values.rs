@@ -7,8 +7,9 @@ use precess_core::sym::{Arena, ExprId, SymError, parse_decimal};
 use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
-use crate::lang::ctxt::Ctxt;
-use crate::rigid::check::Checker;
+use super::check::Checker;
+use super::ctxt::Ctxt;
+use super::parts::rotation_message;
 
 const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
 
@@ -148,8 +149,7 @@ impl Checker<'_> {
         match check_orientation(0, kind, &numeric) {
             Ok(()) => true,
             Err(err) => {
-                self.cx
-                    .error_spanned_by(tokens, crate::rigid::check::message(&err));
+                self.cx.error_spanned_by(tokens, rotation_message(&err));
                 false
             }
         }

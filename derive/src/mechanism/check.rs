@@ -10,9 +10,9 @@ use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
+use crate::lang::check::Checker;
 use crate::lang::keys::{self, part_list};
-use crate::rigid::attr::{Item, KeyValue, Parsed};
-use crate::rigid::check::Checker;
+use crate::lang::syntax::{Item, KeyValue, Parsed};
 
 /// How the accelerations are to be solved, as the user asked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,6 +133,10 @@ fn mechanism_settings(
     let mut route = RouteChoice::Auto;
     let mut seen: Vec<&Ident> = Vec::new();
     for KeyValue { key, value } in &settings.items {
+        // Read by `TaylorKey` in `mod.rs`.
+        if key == keys::TAYLOR {
+            continue;
+        }
         if seen.contains(&key) {
             ck.cx
                 .error_spanned_by(key, format!("duplicate key `{key}`"));
@@ -198,9 +202,9 @@ impl Checker<'_> {
                     );
                     continue;
                 }
-                LinkItem::Setting(kv) => &kv.key,
+                LinkItem::Item(Item::Setting(kv)) => &kv.key,
                 LinkItem::Parts { keyword, .. } => keyword,
-                LinkItem::Group { name, .. } => name,
+                LinkItem::Item(Item::Group { name, .. }) => name,
             };
             if seen.contains(&key) {
                 self.cx
@@ -211,10 +215,10 @@ impl Checker<'_> {
             match item {
                 LinkItem::Name(_) => {}
                 LinkItem::Parts { keyword, items } => k.parts = Some((keyword, items)),
-                LinkItem::Group { name, keys: list } if name == keys::SPRING => {
+                LinkItem::Item(Item::Group { name, keys: list }) if name == keys::SPRING => {
                     k.spring = Some((name, list));
                 }
-                LinkItem::Group { name, .. } => self.cx.error_spanned_by(
+                LinkItem::Item(Item::Group { name, .. }) => self.cx.error_spanned_by(
                     name,
                     format!(
                         "unknown group `{name}(...)` in `#[{}]`: expected `{}(...)` or `{}({} = .., {} = ..)`{}",
@@ -226,7 +230,7 @@ impl Checker<'_> {
                         keys::did_you_mean(&name.to_string(), known())
                     ),
                 ),
-                LinkItem::Setting(kv) => {
+                LinkItem::Item(Item::Setting(kv)) => {
                     let slot = match kv.key.to_string().as_str() {
                         keys::PARENT => &mut k.parent,
                         keys::JOINT => &mut k.joint,
@@ -363,7 +367,7 @@ impl Checker<'_> {
         let mut ok = true;
         for item in items {
             match item {
-                Item::Part { name, keys } => match self.part(name, keys) {
+                Item::Group { name, keys } => match self.part(name, keys) {
                     Some((part, _)) => {
                         let single = Description {
                             parts: vec![part.clone()],

@@ -50,8 +50,7 @@ pub fn expand(
             return None;
         }
     };
-    let taylor =
-        taylor.map(|k| super::taylor::expand(cx, ident, arena, parameters, &derivation, k));
+    let taylor = taylor.map(|k| taylor_system(cx, ident, arena, parameters, &derivation, k));
     let n = checked.coordinates.len();
     let s = 2 * n;
     let mut symbols = parameters.tokens();
@@ -297,4 +296,28 @@ impl Method<'_> {
         let out = build(&outputs);
         quote!({ #calls #lets #out })
     }
+}
+
+/// `taylor = K`: `impl TaylorSystem<2n>` for the first-order system `(q, q̇)' = (q̇, q̈)` of
+/// the route's q̈, over the state `[q, q̇]`, reading the fields as the other methods do.
+fn taylor_system(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &Arena,
+    parameters: &FieldParameters,
+    derivation: &MechanismDerivation,
+    order: usize,
+) -> TokenStream {
+    let (state, rhs) = derivation.first_order_system();
+    let symbols = parameters.tokens();
+    crate::lang::taylor::expand(
+        cx,
+        ident,
+        arena,
+        &symbols,
+        &state,
+        &rhs,
+        TokenStream::new(),
+        order,
+    )
 }

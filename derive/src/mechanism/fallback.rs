@@ -99,7 +99,7 @@ fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
         });
     for list in lists {
         for item in list {
-            let LinkItem::Setting(kv) = item else {
+            let Some(kv) = item.setting() else {
                 continue;
             };
             if kv.key != keys::COORDINATES {

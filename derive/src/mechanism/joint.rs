@@ -7,8 +7,8 @@ use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
+use crate::lang::check::Checker;
 use crate::lang::keys;
-use crate::rigid::check::Checker;
 
 /// A joint as read.
 pub(super) struct JointSpec {

@@ -11,7 +11,6 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
-mod taylor;
 mod tree;
 
 use precess_core::sym::Arena;
@@ -19,10 +18,12 @@ use proc_macro2::TokenStream;
 use syn::DeriveInput;
 
 use crate::lang::ast::Input;
+use crate::lang::check::Checker;
 use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::symbols::FieldParameters;
-use crate::rigid::check::Checker;
+use crate::lang::syntax;
+use crate::lang::taylor::TaylorKey;
 
 /// The whole derive: the impls, or every error.
 pub fn derive(input: &DeriveInput) -> TokenStream {
@@ -54,13 +55,16 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
             .filter(|a| a.path().is_ident(name))
             .collect()
     };
-    let mut settings = attr::parse_settings(cx, &attrs(keys::MECHANISM));
-    let taylor = attr::take_taylor(cx, &mut settings);
+    let settings = syntax::parse_settings(cx, &attrs(keys::MECHANISM));
+    let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
+    let pairs = settings.items.iter().map(|kv| (&kv.key, &kv.value));
+    let taylor = TaylorKey::find(cx, pairs, &in_mechanism);
     let links = attr::parse_links(cx, &attrs(keys::LINK));
     let mut arena = Arena::new();
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let checked = check::check(&mut ck, &settings, &links)?;
-    let taylor = taylor::check(cx, taylor.as_ref(), &checked);
+    // An effort computed by a user function has no Taylor coefficients.
+    let taylor = taylor.order(cx, &[(keys::EFFORT, !checked.efforts.is_empty())]);
     expand::expand(cx, &input.ident, &mut arena, &parameters, &checked, taylor)
 }

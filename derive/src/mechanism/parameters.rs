@@ -15,7 +15,7 @@ use quote::quote;
 use super::check::CheckedMechanism;
 use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
-use crate::rigid::expand::{orientation, shape};
+use crate::lang::tokens::{orientation, shape};
 
 /// `fn check_parameters(&self)`, or nothing when no checked value reads a field.
 pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> TokenStream {

@@ -9,9 +9,10 @@ use precess_core::sym::ExprId;
 use precess_core::top::TopParameters;
 use syn::{Expr, Ident};
 
+use crate::lang::check::Checker;
 use crate::lang::keys::{self, TOP_KEYS};
-use crate::rigid::attr::{KeyValue, Parsed};
-use crate::rigid::check::Checker;
+use crate::lang::syntax::{KeyValue, Parsed};
+use crate::lang::taylor::TaylorKey;
 
 /// The checked `#[top(...)]` settings: the torques the scene declares and its angles.
 pub struct TopSettings {
@@ -64,9 +65,18 @@ pub fn check(
         angles: AngleSequence::Zxz,
         taylor: None,
     };
-    let mut taylor = None;
+    let in_top = format!("`#[{}]`", keys::TOP);
+    let taylor = TaylorKey::find(
+        ck.cx,
+        items.items.iter().map(|kv| (&kv.key, &kv.value)),
+        &in_top,
+    );
     let mut seen: Vec<&Ident> = Vec::new();
     for KeyValue { key, value } in &items.items {
+        // Read by `TaylorKey` above.
+        if key == keys::TAYLOR {
+            continue;
+        }
         // Each setting once: two gravities or two dampings would be ambiguous.
         if seen.contains(&key) {
             ck.cx
@@ -129,7 +139,6 @@ pub fn check(
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
-            Some(keys::TAYLOR) => taylor = Some(value),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
@@ -141,10 +150,8 @@ pub fn check(
             ),
         }
     }
-    if let Some(value) = taylor {
-        let user = [(keys::TORQUE, settings.torque.is_some())];
-        settings.taylor = crate::lang::taylor::check(ck.cx, value, &user);
-    }
+    let user = [(keys::TORQUE, settings.torque.is_some())];
+    settings.taylor = taylor.order(ck.cx, &user);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
 }
