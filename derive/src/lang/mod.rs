@@ -17,3 +17,6 @@ pub mod syntax;
 pub mod taylor;
 pub mod tokens;
 pub mod values;
+
+#[cfg(test)]
+mod tests;
