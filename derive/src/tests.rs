@@ -255,16 +255,19 @@ fn input(shape: Shape) -> impl Strategy<Value = String> {
                 v.clone(),
                 v,
                 vector(w.clone()),
-                any::<[bool; 4]>(),
+                any::<[bool; 5]>(),
                 prop_oneof![Just("zxz"), Just("zyx")],
+                // Order 1 is refused (spanned on the value); the others emit recurrences.
+                proptest::sample::select(&[1usize, 2, 5][..]),
             )
-                .prop_map(|(g, c, tau, on, angles)| {
+                .prop_map(|(g, c, tau, on, angles, order)| {
                     let mut s = vec![format!("angles = {angles}")];
                     for (set, text) in [
                         (on[0], format!("gravity = {g}")),
                         (on[1], format!("damping = {c}")),
                         (on[2], format!("body_torque = {tau}")),
                         (on[3], format!("space_torque = {tau}")),
+                        (on[4], format!("taylor = {order}")),
                     ] {
                         if set {
                             s.push(text);
@@ -323,6 +326,13 @@ fn derive_is_total(source: &str) -> Result<(), TestCaseError> {
             for bad in ["NAN", "INFINITY", "from_bits", "compile_error"] {
                 prop_assert!(!code.contains(bad), "`{bad}` emitted for\n{source}");
             }
+            // Every path into precess goes through the hidden module.
+            prop_assert_eq!(
+                code.matches(":: precess ::").count(),
+                code.matches(":: precess :: __private ::").count(),
+                "a path into precess outside __private for\n{}",
+                source
+            );
         }
         Err(errors) => {
             prop_assert!(!errors.is_empty());
