@@ -314,7 +314,7 @@ fn derive_is_total(source: &str) -> Result<(), TestCaseError> {
         }
     };
     let cx = Ctxt::new();
-    let expanded = crate::expand(&cx, &input);
+    let expanded = crate::rigid_body::expand(&cx, &input);
     match cx.check() {
         Ok(()) => {
             let Some(tokens) = expanded else {
@@ -402,7 +402,7 @@ fn written_out_inputs_take_both_ways() {
     for source in [ok, bad] {
         let input: syn::DeriveInput = syn::parse_str(source).expect("valid syntax");
         let cx = Ctxt::new();
-        let expanded = crate::expand(&cx, &input);
+        let expanded = crate::rigid_body::expand(&cx, &input);
         let errors = cx.check().err().unwrap_or_default();
         assert_eq!(source == ok, errors.is_empty(), "{errors:?}");
         assert_eq!(source == ok, expanded.is_some());

@@ -7,7 +7,7 @@ use quote::quote;
 /// The expansion of `#[derive(RigidBody)]` on `input`.
 fn rigid_body(input: TokenStream) -> String {
     let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-    crate::derive(&input).to_string()
+    crate::rigid_body::derive(&input).to_string()
 }
 
 /// The expansion of `#[derive(Mechanism)]` on `input`.

@@ -25,41 +25,21 @@ use crate::lang::symbols::FieldParameters;
 use crate::lang::syntax;
 use crate::lang::taylor::TaylorKey;
 
-/// The whole derive: the impls, or every error.
+/// The whole derive: the impls, or every error and the stub impls.
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let cx = Ctxt::new();
     let expanded = expand(&cx, input);
-    match cx.check() {
-        Ok(()) => expanded.unwrap_or_else(|| {
-            syn::Error::new_spanned(
-                &input.ident,
-                "internal error of the derive: it stopped without an error; please report this",
-            )
-            .to_compile_error()
-        }),
-        Err(errors) => {
-            let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
-            out.extend(fallback::stub(input));
-            out
-        }
-    }
+    cx.finish(&input.ident, expanded, || fallback::stub(input))
 }
 
 /// Every phase: syntax and meaning of all attributes, then the expansion.
 fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let ast = Input::for_derive(cx, input, "Mechanism")?;
-    let attrs = |name: &str| -> Vec<&syn::Attribute> {
-        input
-            .attrs
-            .iter()
-            .filter(|a| a.path().is_ident(name))
-            .collect()
-    };
-    let settings = syntax::parse_settings(cx, &attrs(keys::MECHANISM));
+    let settings = syntax::parse_settings(cx, &ast.attributes(keys::MECHANISM));
     let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
     let pairs = settings.items.iter().map(|kv| (&kv.key, &kv.value));
     let taylor = TaylorKey::find(cx, pairs, &in_mechanism);
-    let links = attr::parse_links(cx, &attrs(keys::LINK));
+    let links = attr::parse_links(cx, &ast.attributes(keys::LINK));
     let mut arena = Arena::new();
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);

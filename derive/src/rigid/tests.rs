@@ -4,7 +4,7 @@ use quote::quote;
 
 fn expand(input: proc_macro2::TokenStream) -> String {
     let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-    crate::derive(&input).to_string()
+    crate::rigid_body::derive(&input).to_string()
 }
 
 /// The text of one method of the emitted impl.

@@ -24,24 +24,9 @@ pub fn expand(input: TokenStream) -> TokenStream {
     let cx = Ctxt::new();
     let impls = super::check::check(&cx, &input).and_then(|c| impls(&cx, &input, &c));
     let item = input.item.to_token_stream();
-    match cx.check() {
-        Ok(()) => match impls {
-            Some(impls) => quote!(#item #impls),
-            None => {
-                let e = syn::Error::new_spanned(
-                    &input.item.ident,
-                    "internal error of `taylor_system!`: it stopped without an error; please report this",
-                );
-                let e = e.to_compile_error();
-                quote!(#item #e)
-            }
-        },
-        // The struct is still emitted, so its uses elsewhere raise no errors of their own.
-        Err(errors) => {
-            let errors = errors.iter().map(syn::Error::to_compile_error);
-            quote!(#item #(#errors)*)
-        }
-    }
+    let expanded = impls.map(|impls| quote!(#item #impls));
+    // After an error the struct is still emitted, so its uses raise no errors of their own.
+    cx.finish(&input.item.ident, expanded, || item.clone())
 }
 
 /// `impl System<N>`, `impl TaylorSystem<N>` and the names of the state, or `None` after

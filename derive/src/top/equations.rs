@@ -145,7 +145,7 @@ mod tests {
 
     fn expand(input: proc_macro2::TokenStream) -> String {
         let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-        crate::derive(&input).to_string()
+        crate::rigid_body::derive(&input).to_string()
     }
 
     /// The text of one method's arm for the ZXZ chart, or of a whole method.
