@@ -1,5 +1,5 @@
 //! Meaning of the `#[free(...)]` items: keys against the table in `keys.rs`, values with the
-//! `#[rigid]` value rules in the same arena, one function per rule with its reason.
+//! value rules of `lang::values` in the same arena, one function per rule with its reason.
 
 use precess_core::free::{AppliedForce, ForcePoint};
 use precess_core::sym::ExprId;

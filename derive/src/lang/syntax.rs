@@ -10,6 +10,7 @@ use syn::punctuated::Punctuated;
 use syn::{Attribute, Expr, Ident, Meta, Token, parenthesized};
 
 use super::ctxt::Ctxt;
+use super::keys;
 
 /// `key = value`.
 pub struct KeyValue {
@@ -83,6 +84,28 @@ impl Item {
         }
         Ok(items)
     }
+}
+
+/// The `key = value` settings of `settings` the attribute's own check reads, in order: each
+/// key's first only, a repeat an error on its key (two gravities would be ambiguous), with
+/// `in_what` naming the attribute (`` `#[top]` ``); `taylor` is left to `TaylorKey`.
+pub fn distinct<'a>(
+    cx: &'a Ctxt,
+    settings: impl IntoIterator<Item = &'a KeyValue>,
+    in_what: &'a str,
+) -> impl Iterator<Item = &'a KeyValue> {
+    let mut seen: Vec<&Ident> = Vec::new();
+    settings.into_iter().filter(move |kv| {
+        if kv.key == keys::TAYLOR {
+            return false;
+        }
+        if seen.contains(&&kv.key) {
+            cx.error_spanned_by(&kv.key, format!("duplicate key `{}` in {in_what}", kv.key));
+            return false;
+        }
+        seen.push(&kv.key);
+        true
+    })
 }
 
 /// The items of a list of attributes.

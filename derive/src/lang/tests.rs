@@ -210,3 +210,30 @@ fn the_item_grammar_reads_groups_settings_and_commas() {
     assert_eq!(alone.as_deref(), Some("no form for rod"));
     assert!(parse(TokenStream::new()).is_ok_and(|items| items.is_empty()));
 }
+
+/// A repeated setting of `#[top]` or `#[mechanism]` names its attribute, as `#[rigid]`'s
+/// and `#[free]`'s always did; the rest of the list is still checked.
+#[test]
+fn a_repeated_setting_names_its_attribute() {
+    let top = rigid_body(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 1.0]), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, gravity = 1.62, angles = xyz)]
+        struct Top;
+    });
+    assert!(
+        first_error(&top).contains("duplicate key `gravity` in `#[top]`"),
+        "{top}"
+    );
+    assert!(top.contains("`angles` expects"), "{top}");
+    let mechanism = mechanism(quote! {
+        #[mechanism(route = auto, route = symbolic)]
+        #[body(arm, joint = revolute(axis = x), q = theta,
+               parts(particle(mass = 1.0, at = [0.0, 0.0, -1.0])))]
+        struct Arm;
+    });
+    let error = first_error(&mechanism);
+    assert!(
+        error.contains("duplicate key `route` in `#[mechanism]`"),
+        "{mechanism}"
+    );
+}

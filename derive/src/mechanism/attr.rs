@@ -1,6 +1,7 @@
-//! Syntax of `#[body(...)]` and `#[mechanism(...)]`, parsed with syn into raw items whose
-//! meaning `check.rs` decides. A link list is its name, then `key = value` settings and
-//! `group(...)` items: `parts(...)` holds `#[rigid]` parts, any other group `key = value`s.
+//! Syntax of `#[body(...)]`, in the grammar of `lang::syntax` (`#[mechanism(...)]` is a plain
+//! settings list, read by `lang::syntax::parse_settings`), whose meaning `check.rs` decides. A
+//! link list is its name, then `key = value` settings and `group(...)` items: `parts(...)`
+//! holds parts of `lang::parts`, any other group `key = value`s.
 
 use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};

@@ -1,5 +1,5 @@
 //! Meaning of the `#[body(...)]` and `#[mechanism(...)]` items: each body's keys,
-//! coordinates and parts (the parts with the `#[rigid]` rules) here, its joint in `joint.rs`,
+//! coordinates and parts (the parts by the part language of `lang::parts`) here, its joint in `joint.rs`,
 //! its loads in `loads.rs`, then the tree's rules in `tree.rs`. Every error is recorded, spanned on the offending tokens,
 //! before any is given up on.
 
@@ -12,7 +12,7 @@ use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, part_list};
-use crate::lang::syntax::{Item, KeyValue, Parsed};
+use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
 
 /// How the accelerations are to be solved, as the user asked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -131,18 +131,9 @@ fn mechanism_settings(
 ) -> (Option<[ExprId; 3]>, RouteChoice) {
     let mut gravity = None;
     let mut route = RouteChoice::Auto;
-    let mut seen: Vec<&Ident> = Vec::new();
-    for KeyValue { key, value } in &settings.items {
-        // Read by `TaylorKey` in `mod.rs`.
-        if key == keys::TAYLOR {
-            continue;
-        }
-        if seen.contains(&key) {
-            ck.cx
-                .error_spanned_by(key, format!("duplicate key `{key}`"));
-            continue;
-        }
-        seen.push(key);
+    let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
+    let cx = ck.cx;
+    for KeyValue { key, value } in distinct(cx, &settings.items, &in_mechanism) {
         match keys::MECHANISM_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => gravity = ck.gravity(value),
             Some(keys::ROUTE) => route = ck.route(value),

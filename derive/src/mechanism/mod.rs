@@ -1,7 +1,10 @@
 //! `#[derive(Mechanism)]`: a tree of rigid bodies described by `#[body(...)]` attributes
-//! (each a body in the `#[rigid]` part language, joined to its parent by a named joint) and
-//! `#[mechanism(...)]` settings, in the phases every attribute of the derive has: `attr`
-//! (syntax), `check` (meaning and the tree's rules), `expand` (the `MechanismDynamics` impl).
+//! (each a body in the part language of `lang::parts`, joined to its parent by a named
+//! joint) and `#[mechanism(...)]` settings, in the phases every attribute has over `lang/`:
+//! `attr` (syntax), `check` (meaning, with a body's joint in `joint`, its loads in `loads`
+//! and the tree's rules in `tree`), `expand` (the `MechanismDynamics` impl, with
+//! `parameters`, `jacobian` and `expand/charts`) and `fallback` (the stubs). This file is the
+//! derive's driver.
 
 pub mod attr;
 pub mod check;

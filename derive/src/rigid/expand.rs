@@ -1,6 +1,6 @@
 //! Expansion of `#[rigid]`: the checked body's expressions lowered by precess-core's code
 //! generator and quoted into a `RigidBody` impl (and, with `taylor = K`, the impls of
-//! `taylor.rs`). Constants become literals; a field becomes
+//! `expand/euler.rs`). Constants become literals; a field becomes
 //! `self.field`; generated code names everything through the hidden path.
 
 use precess_core::body::{Description, Frame};

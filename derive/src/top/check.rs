@@ -1,5 +1,5 @@
 //! Meaning of the `#[top(...)]` items: keys against the table in `keys.rs`, values with the
-//! `#[rigid]` value rules in the same arena, and the rules of
+//! value rules of `lang::values` in the same arena, and the rules of
 //! `precess_core::top::TopParameters` on the values that are literals (field values meet the
 //! same rules at run time, in the generated `TopDynamics::check_parameters`).
 
@@ -7,11 +7,11 @@ use precess_core::nalgebra::Vector3;
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use precess_core::top::TopParameters;
-use syn::{Expr, Ident};
+use syn::Expr;
 
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, TOP_KEYS};
-use crate::lang::syntax::{KeyValue, Parsed};
+use crate::lang::syntax::{KeyValue, Parsed, distinct};
 use crate::lang::taylor::TaylorKey;
 
 /// The checked `#[top(...)]` settings: the torques the scene declares and its angles.
@@ -71,19 +71,8 @@ pub fn check(
         items.items.iter().map(|kv| (&kv.key, &kv.value)),
         &in_top,
     );
-    let mut seen: Vec<&Ident> = Vec::new();
-    for KeyValue { key, value } in &items.items {
-        // Read by `TaylorKey` above.
-        if key == keys::TAYLOR {
-            continue;
-        }
-        // Each setting once: two gravities or two dampings would be ambiguous.
-        if seen.contains(&key) {
-            ck.cx
-                .error_spanned_by(key, format!("duplicate key `{key}`"));
-            continue;
-        }
-        seen.push(key);
+    let cx = ck.cx;
+    for KeyValue { key, value } in distinct(cx, &items.items, &in_top) {
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => {
                 settings.gravity = ck.scalar(value).filter(|&g| {
