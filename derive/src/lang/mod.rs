@@ -19,4 +19,4 @@ pub mod tokens;
 pub mod values;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

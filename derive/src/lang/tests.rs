@@ -4,10 +4,19 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The expansion of `#[derive(RigidBody)]` on `input`.
-fn rigid_body(input: TokenStream) -> String {
+/// The expansion of `#[derive(RigidBody)]` on `input`, as text (the attributes' own tests
+/// read it too).
+pub(crate) fn rigid_body(input: TokenStream) -> String {
     let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
     crate::rigid_body::derive(&input).to_string()
+}
+
+/// The text of one generated method, from its name to the next `fn`.
+pub(crate) fn method<'a>(code: &'a str, name: &str) -> &'a str {
+    let start = code.find(&format!("fn {name} ")).unwrap_or(0);
+    let rest = &code[start..];
+    let end = rest[3..].find(" fn ").map_or(rest.len(), |e| e + 3);
+    &rest[..end]
 }
 
 /// The expansion of `#[derive(Mechanism)]` on `input`.

@@ -143,10 +143,7 @@ fn cost_tokens(c: &MethodCost) -> TokenStream {
 mod tests {
     use quote::quote;
 
-    fn expand(input: proc_macro2::TokenStream) -> String {
-        let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-        crate::rigid_body::derive(&input).to_string()
-    }
+    use crate::lang::tests::rigid_body as expand;
 
     /// The text of one method's arm for the ZXZ chart, or of a whole method.
     fn method<'a>(code: &'a str, name: &str, zxz_arm: bool) -> &'a str {
