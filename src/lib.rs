@@ -74,7 +74,6 @@ pub mod prelude {
         Rotation3, Shape, Vector3,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
-    pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
@@ -96,6 +95,7 @@ pub mod __private {
         Rotation3, Shape, Vector3, check_part, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::{
