@@ -12,6 +12,7 @@ use syn::DeriveInput;
 use crate::lang::ast::Input;
 use crate::lang::check::Checker;
 use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::keys;
 use crate::lang::symbols::FieldParameters;
 use crate::{free, rigid, top};
@@ -43,19 +44,21 @@ pub fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let settings = top::check::check(&mut ck, &top_items, pivot);
     let free_settings = free::check::check(&mut ck, &free_attrs, &free_items);
     let (body, settings, free_settings) = (body?, settings?, free_settings?);
+    let mut ex = Expansion {
+        cx,
+        ident: ast.ident,
+        arena: &mut arena,
+        parameters: &parameters,
+    };
     let top = match &settings {
-        Some(settings) => {
-            top::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
-        }
+        Some(settings) => top::expand::expand(&mut ex, &body, settings)?,
         None => TokenStream::new(),
     };
     let free = match &free_settings {
-        Some(settings) => {
-            free::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
-        }
+        Some(settings) => free::expand::expand(&mut ex, &body, settings)?,
         None => TokenStream::new(),
     };
-    let rigid = rigid::expand::expand(cx, ast.ident, &mut arena, &parameters, &body)?;
+    let rigid = rigid::expand::expand(&mut ex, &body)?;
     Some(quote!(#rigid #top #free))
 }
 

@@ -8,10 +8,10 @@ use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
-use syn::{Ident, LitStr};
+use syn::LitStr;
 
 use super::check::FreeSettings;
-use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::keys;
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering, SymbolTokens};
@@ -137,13 +137,12 @@ fn scene(
 /// `impl FreeDynamics for …`, or `None` after recording why the equations could not be
 /// derived.
 pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
+    ex: &mut Expansion,
     checked: &CheckedBody,
     settings: &FreeSettings,
 ) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let failed = |e: &dyn std::fmt::Display| {
         cx.error_spanned_by(

@@ -14,6 +14,7 @@ use syn::{Ident, LitStr};
 
 use super::check::{CheckedMechanism, RouteChoice, UserEffort};
 use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
 
@@ -26,13 +27,12 @@ const SHARED_QDD_OPS: usize = 1024;
 /// `impl MechanismDynamics<N>` and the rest, or `None` after recording why the equations
 /// could not be derived.
 pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
+    ex: &mut Expansion,
     checked: &CheckedMechanism,
     taylor: Option<usize>,
 ) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let route = match checked.route {
         RouteChoice::Auto => Route::Auto,

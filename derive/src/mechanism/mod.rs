@@ -23,6 +23,7 @@ use syn::DeriveInput;
 use crate::lang::ast::Input;
 use crate::lang::check::Checker;
 use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::keys;
 use crate::lang::symbols::FieldParameters;
 use crate::lang::syntax;
@@ -49,5 +50,11 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let checked = check::check(&mut ck, &settings, &links)?;
     // An effort computed by a user function has no Taylor coefficients.
     let taylor = taylor.order(cx, &[(keys::EFFORT, !checked.efforts.is_empty())]);
-    expand::expand(cx, &input.ident, &mut arena, &parameters, &checked, taylor)
+    let mut ex = Expansion {
+        cx,
+        ident: &input.ident,
+        arena: &mut arena,
+        parameters: &parameters,
+    };
+    expand::expand(&mut ex, &checked, taylor)
 }

@@ -8,12 +8,11 @@ use precess_core::codegen::{Emitted, f64_literal};
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
 
 use super::check::CheckedBody;
-use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering};
+use crate::lang::symbols::Lowering;
 use crate::lang::tokens::{orientation, shape};
 
 mod euler;
@@ -61,13 +60,9 @@ fn matrix(o: &[TokenStream]) -> TokenStream {
 
 /// `impl RigidBody for …`, or `None` after recording why Euler's equations could not be
 /// formed.
-pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
-    checked: &CheckedBody,
-) -> Option<TokenStream> {
+pub fn expand(ex: &mut Expansion, checked: &CheckedBody) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let omega_in = [
         arena.input("omega_1"),
@@ -130,7 +125,7 @@ pub fn expand(
     // `taylor = K`: the torque-free Euler equations as a system of their own.
     let taylor = checked
         .taylor
-        .map(|order| euler::expand(cx, ident, arena, parameters, checked, order));
+        .map(|order| euler::expand(ex, checked, order));
     Some(quote! {
         #taylor
 

@@ -13,26 +13,20 @@
 use std::borrow::Cow;
 
 use precess_core::body::Frame;
-use precess_core::sym::{Arena, ExprId};
+use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
 
-use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering};
+use crate::lang::symbols::Lowering;
 use crate::rigid::check::CheckedBody;
 
 /// `impl System<3>` and `impl TaylorSystem<3>` for the torque-free rotation of the body, or
 /// nothing after recording why Euler's equations could not be formed.
-pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
-    checked: &CheckedBody,
-    order: usize,
-) -> TokenStream {
+pub fn expand(ex: &mut Expansion, checked: &CheckedBody, order: usize) -> TokenStream {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let omega: [ExprId; 3] = std::array::from_fn(|i| arena.input(&format!("omega_{}", i + 1)));
     let zero = [arena.zero(); 3];
