@@ -9,9 +9,9 @@ use super::ast::Input;
 use super::ctxt::Ctxt;
 use super::symbols::FieldParameters;
 
-/// Converts attribute values into expressions of the derive's arena, recording every
-/// error. It borrows the arena and the list of fields read, so `#[rigid]` and `#[top]`
-/// values share them with the same rules and errors.
+/// Converts attribute values into expressions of the macro's arena, recording every error.
+/// It borrows the arena and the list of fields read, so the values of every attribute of one
+/// struct share them with the same rules and errors.
 pub struct Checker<'a> {
     /// Where errors go.
     pub cx: &'a Ctxt,
