@@ -95,6 +95,7 @@ pub mod __private {
         Rotation3, Shape, Vector3, check_part, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::{
@@ -105,6 +106,8 @@ pub mod __private {
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::TaylorSystem;
+    pub use precess_core::taylor::compact::low_orders;
+    pub use precess_core::taylor::kernels;
     pub use precess_core::top::{TopDynamics, TopParameters};
     pub use std::borrow::Cow;
     pub use std::vec;

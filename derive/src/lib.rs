@@ -1,40 +1,36 @@
-//! The `#[derive(RigidBody)]` macro of precess.
+//! The macros of precess: `#[derive(RigidBody)]`, `#[derive(Mechanism)]` and
+//! `taylor_system!`.
 //!
-//! It reads the body described by `#[rigid(...)]` (see `docs/attributes.md`), computes its
-//! mass properties, principal frame and Euler's equations with precess-core's symbolic
-//! engine while it expands, and emits a `RigidBody` impl specialised to the body: constants
-//! for literal values, straight-line code in the fields for parametric ones. With
-//! `#[top(...)]` it also derives the top's equations of motion and emits a `TopDynamics` impl;
-//! with `#[free(...)]`, a free body's, and a `FreeDynamics` impl.
+//! They read the scene described by their attributes (see `docs/attributes.md`,
+//! `docs/mechanisms.md`, `docs/taylor.md`), derive its equations of motion with precess-core's
+//! symbolic engine while they expand, and emit impls specialised to it: constants for literal
+//! values, straight-line code in the fields for parametric ones. `#[derive(RigidBody)]` emits
+//! `RigidBody` from `#[rigid(...)]`, with `#[top(...)]` also `TopDynamics`, with `#[free(...)]`
+//! `FreeDynamics`; `#[derive(Mechanism)]` emits `MechanismDynamics<N>` from `#[body(...)]` and
+//! `#[mechanism(...)]`; `taylor_system!` emits `System<N>` and `TaylorSystem<N>` from equations.
 //!
-//! Each attribute is a folder with the same phases (`rigid/`, `top/`, `free/`: ast → attr → check →
-//! expand → fallback). Shared by all: `ctxt` (every error of one expansion, checked once),
-//! `keys` (the language's words), `symbols` (the one map from symbols to the Rust that reads
-//! them), `private` (the hidden path generated code names), `fallback` (errors plus stubs).
+//! Layout: `lang/` is the front end every macro shares — the error context, the words of the
+//! language and its suggestions, the grammar of settings and groups, the value and part
+//! languages read into the arena by one checker, the lowering to tokens, `taylor = K` in one
+//! place, and the one hidden path generated code names (`::precess::__private`). Each
+//! attribute is a folder of the same phases over it, `attr` (syntax) → `check` (meaning) →
+//! `expand` (the impls) → `fallback` (stub impls after an error): `rigid/`, `top/`, `free/`,
+//! `mechanism/` (whose `mod.rs` is the `Mechanism` derive's driver), and `taylor_system/`
+//! (which has `values` for its expression language and no fallback). `rigid_body.rs` drives
+//! `#[derive(RigidBody)]` over its three attributes.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod ctxt;
-mod fallback;
 mod free;
-mod keys;
+mod lang;
 mod mechanism;
-mod private;
 mod rigid;
-mod symbols;
-mod taylor;
+mod rigid_body;
 mod taylor_system;
 mod top;
 
-use precess_core::sym::Arena;
 use proc_macro::TokenStream;
-use quote::quote;
 use syn::{DeriveInput, parse_macro_input};
-
-use ctxt::Ctxt;
-use rigid::ast::Input;
-use rigid::check::Checker;
-use symbols::FieldParameters;
 
 /// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, `TopDynamics`
 /// when a `#[top(...)]` attribute declares the body a top about its pivot, and `FreeDynamics`
@@ -44,7 +40,7 @@ use symbols::FieldParameters;
 #[proc_macro_derive(RigidBody, attributes(rigid, top, free))]
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
-    derive(&input).into()
+    rigid_body::derive(&input).into()
 }
 
 /// Derives `MechanismDynamics<N>` (and the ODE `System<2N>`) for a tree of rigid bodies
@@ -83,65 +79,6 @@ pub fn derive_mechanism(input: TokenStream) -> TokenStream {
 #[proc_macro]
 pub fn taylor_system(input: TokenStream) -> TokenStream {
     taylor_system::expand(input.into()).into()
-}
-
-/// The whole derive: the impls, or every error and stub impls.
-fn derive(input: &DeriveInput) -> proc_macro2::TokenStream {
-    let cx = Ctxt::new();
-    let expanded = expand(&cx, input);
-    match cx.check() {
-        Ok(()) => match expanded {
-            Some(tokens) => tokens,
-            // Every phase that gives up records why; reaching here is a bug of the macro.
-            None => fallback::expand(
-                input,
-                &[syn::Error::new_spanned(
-                    &input.ident,
-                    "internal error of the derive: it stopped without an error; please report this",
-                )],
-            ),
-        },
-        Err(errors) => fallback::expand(input, &errors),
-    }
-}
-
-/// Every phase of every attribute. Syntax and meaning are checked for all before any is
-/// expanded, so one pass reports the errors of `#[rigid]`, `#[top]` and `#[free]` together.
-fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<proc_macro2::TokenStream> {
-    let ast = Input::from_syn(cx, input)?;
-    let rigid_items = rigid::attr::parse(cx, &ast.rigid);
-    let top_items = top::attr::parse(cx, &ast.top);
-    let free_attrs: Vec<&syn::Attribute> = (input.attrs.iter())
-        .filter(|a| a.path().is_ident(keys::FREE))
-        .collect();
-    let free_items = free::attr::parse(cx, &free_attrs);
-    let mut arena = Arena::new();
-    let mut parameters = FieldParameters::default();
-    let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
-    let body = rigid::check::check(&mut ck, &rigid_items);
-    // Without any #[rigid] the missing attribute is the error, not the missing pivot.
-    let pivot = if ast.rigid.is_empty() {
-        None
-    } else {
-        rigid::check::declares_pivot(&rigid_items)
-    };
-    let settings = top::check::check(&mut ck, &top_items, pivot);
-    let free_settings = free::check::check(&mut ck, &free_attrs, &free_items);
-    let (body, settings, free_settings) = (body?, settings?, free_settings?);
-    let top = match &settings {
-        Some(settings) => {
-            top::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
-        }
-        None => proc_macro2::TokenStream::new(),
-    };
-    let free = match &free_settings {
-        Some(settings) => {
-            free::expand::expand(cx, ast.ident, &mut arena, &parameters, &body, settings)?
-        }
-        None => proc_macro2::TokenStream::new(),
-    };
-    let rigid = rigid::expand::expand(cx, ast.ident, &mut arena, &parameters, &body)?;
-    Some(quote!(#rigid #top #free))
 }
 
 #[cfg(test)]

@@ -115,7 +115,7 @@ impl Tape {
             self.coefficients_into(ws, t.hi + t.lo, &__y, order, coeffs);
             let __n: usize = order.min(#max_order).min(__top);
             let __values: &[f64] = &[#(#values),*];
-            ::precess::taylor::compact::low_orders(__WORDS, __FLOATS, __values, ws, t, y, __n, low)
+            ::precess::__private::low_orders(__WORDS, __FLOATS, __values, ws, t, y, __n, low)
         }
     }
 }
@@ -181,6 +181,7 @@ fn series_step(w: &[u32], floats: &[f64], series: u32, scalars: u32) -> Option<S
 /// capacity kept, so repeated calls allocate nothing). Returns `false`, having written
 /// nothing, if the tables are malformed or `N` is not their dimension (which generated code
 /// never does).
+#[doc(hidden)]
 #[allow(clippy::too_many_arguments)]
 pub fn low_orders<const N: usize, const R: usize>(
     words: &[u32],

@@ -34,13 +34,14 @@ struct Sums {
 }
 
 impl Sums {
-    /// The path generated code reaches a kernel by: the facade re-exports precess-core.
+    /// The path generated code reaches a kernel by: the facade's hidden module, the one
+    /// path all generated code names precess through.
     fn kernel(self, name: &str) -> TokenStream {
         let f = Ident::new(name, Span::call_site());
         if self.outlined {
-            quote!(::precess::taylor::kernels::outlined::#f)
+            quote!(::precess::__private::kernels::outlined::#f)
         } else {
-            quote!(::precess::taylor::kernels::#f)
+            quote!(::precess::__private::kernels::#f)
         }
     }
 }
@@ -621,7 +622,7 @@ mod tests {
         let small = products(4);
         assert!(small.sum_count() < OUTLINE_KERNELS_FROM_SUMS);
         let code = small.to_tokens(20, &mut |_| quote!(0.0)).body.to_string();
-        assert!(code.contains("kernels :: dot_reversed"), "{code}");
+        assert!(code.contains("__private :: kernels :: dot_reversed"), "{code}");
         assert!(!code.contains("outlined"));
         let large = products(OUTLINE_KERNELS_FROM_SUMS);
         assert!(large.sum_count() >= OUTLINE_KERNELS_FROM_SUMS);

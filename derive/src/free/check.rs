@@ -1,14 +1,14 @@
 //! Meaning of the `#[free(...)]` items: keys against the table in `keys.rs`, values with the
-//! `#[rigid]` value rules in the same arena, one function per rule with its reason.
+//! value rules of `lang::values` in the same arena, one function per rule with its reason.
 
 use precess_core::free::{AppliedForce, ForcePoint};
 use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
-use super::attr::FreeItem;
-use crate::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
-use crate::rigid::attr::{KeyValue, Parsed};
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
+use crate::lang::syntax::{Item, KeyValue, Parsed};
+use crate::lang::taylor::TaylorKey;
 
 /// The checked `#[free(...)]` settings: what acts on the body.
 #[derive(Default)]
@@ -40,7 +40,7 @@ pub struct FreeSettings {
 pub fn check(
     ck: &mut Checker,
     attrs: &[&Attribute],
-    items: &Parsed<FreeItem>,
+    items: &Parsed<Item>,
 ) -> Option<Option<FreeSettings>> {
     let Some(&first) = attrs.first() else {
         return Some(None);
@@ -60,15 +60,18 @@ pub fn check(
     }
     let mut settings = FreeSettings::default();
     let mut seen: Vec<&Ident> = Vec::new();
-    let mut taylor = None;
+    let in_free = format!("`#[{}]`", keys::FREE);
+    let free_settings = items.items.iter().filter_map(|item| match item {
+        Item::Setting(kv) => Some((&kv.key, &kv.value)),
+        Item::Group { .. } => None,
+    });
+    let taylor = TaylorKey::find(ck.cx, free_settings, &in_free);
     for item in &items.items {
         match item {
-            FreeItem::Setting(kv) if kv.key == keys::TAYLOR && !seen.contains(&&kv.key) => {
-                seen.push(&kv.key);
-                taylor = Some(&kv.value);
-            }
-            FreeItem::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
-            FreeItem::Force { name, keys } => {
+            // Read by `TaylorKey` above.
+            Item::Setting(kv) if kv.key == keys::TAYLOR => {}
+            Item::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
+            Item::Group { name, keys } => {
                 if let Some((space, force)) = force_part(ck, name, keys) {
                     if space {
                         settings.space_forces.push(force);
@@ -79,13 +82,11 @@ pub fn check(
             }
         }
     }
-    if let Some(value) = taylor {
-        let user = [
-            (keys::FORCE, settings.force.is_some()),
-            (keys::TORQUE, settings.torque.is_some()),
-        ];
-        settings.taylor = crate::taylor::check(ck.cx, value, &user);
-    }
+    let user = [
+        (keys::FORCE, settings.force.is_some()),
+        (keys::TORQUE, settings.torque.is_some()),
+    ];
+    settings.taylor = taylor.order(ck.cx, &user);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
 }

@@ -8,14 +8,14 @@ use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
-use syn::{Ident, LitStr};
+use syn::LitStr;
 
 use super::check::FreeSettings;
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::private::Private;
+use crate::lang::expansion::Expansion;
+use crate::lang::keys;
+use crate::lang::private::Private;
+use crate::lang::symbols::{FieldParameters, Lowering, SymbolTokens};
 use crate::rigid::check::CheckedBody;
-use crate::symbols::{FieldParameters, Lowering, SymbolTokens};
 
 /// The values generated code computes before a method's straight-line block, each emitted
 /// only where the block reads it.
@@ -137,13 +137,12 @@ fn scene(
 /// `impl FreeDynamics for …`, or `None` after recording why the equations could not be
 /// derived.
 pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
+    ex: &mut Expansion,
     checked: &CheckedBody,
     settings: &FreeSettings,
 ) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let failed = |e: &dyn std::fmt::Display| {
         cx.error_spanned_by(
@@ -159,7 +158,7 @@ pub fn expand(
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
     let taylor = settings.taylor.map(|order| {
         let prelude = preludes.for_outputs(arena, &derivation.rhs);
-        crate::taylor::expand(
+        crate::lang::taylor::expand(
             cx,
             ident,
             arena,

@@ -5,7 +5,7 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::DeriveInput;
 
-use crate::private::Private;
+use crate::lang::private::Private;
 
 /// A stub `impl FreeDynamics` for `input`.
 pub fn stub(input: &DeriveInput) -> TokenStream {

@@ -1,6 +1,7 @@
-//! `#[free(...)]`: the body as a free body under its declared forces, in the same phases as
-//! `#[top]`: `attr` (syntax), `check` (meaning, with the `#[rigid]` value rules in the same
-//! arena), `expand` (the `FreeDynamics` impl) and `fallback` (its stub).
+//! `#[free(...)]`: the body as a free body under its declared forces, in the phases every
+//! attribute has over `lang/`: `attr` (syntax), `check` (meaning, its values read by the
+//! shared checker into the arena `#[rigid]` built), `expand` (the `FreeDynamics` impl) and
+//! `fallback` (its stub).
 
 pub mod attr;
 pub mod check;

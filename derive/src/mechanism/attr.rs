@@ -1,22 +1,21 @@
-//! Syntax of `#[body(...)]` and `#[mechanism(...)]`, parsed with syn into raw items whose
-//! meaning `check.rs` decides. A link list is its name, then `key = value` settings and
-//! `group(...)` items: `parts(...)` holds `#[rigid]` parts, any other group `key = value`s.
+//! Syntax of `#[body(...)]`, in the grammar of `lang::syntax` (`#[mechanism(...)]` is a plain
+//! settings list, read by `lang::syntax::parse_settings`), whose meaning `check.rs` decides. A
+//! link list is its name, then `key = value` settings and `group(...)` items: `parts(...)`
+//! holds parts of `lang::parts`, any other group `key = value`s.
 
 use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{Attribute, Expr, Ident, Meta, Token, parenthesized};
+use syn::{Attribute, Ident, Meta, Token, parenthesized};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::rigid::attr::{Item, KeyValue, Parsed, parse_each};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
+use crate::lang::syntax::{Item, KeyValue};
 
 /// One entry of a `#[body(...)]` list.
 pub enum LinkItem {
     /// A bare identifier: the link's name (first in the list).
     Name(Ident),
-    /// `key = value`.
-    Setting(Box<KeyValue>),
     /// `parts(part(..), ...)`.
     Parts {
         /// The `parts` keyword, for spans.
@@ -24,41 +23,38 @@ pub enum LinkItem {
         /// The parts, as `#[rigid]` items.
         items: Vec<Item>,
     },
-    /// `name(key = value, ...)`: a spring, or an unknown group.
-    Group {
-        /// The group's name as written.
-        name: Ident,
-        /// Its keys in order.
-        keys: Vec<KeyValue>,
-    },
+    /// `key = value`, or `name(key = value, ...)` (a spring, or an unknown group).
+    Item(Item),
+}
+
+impl LinkItem {
+    /// The `key = value` setting this item is, if it is one.
+    pub fn setting(&self) -> Option<&KeyValue> {
+        match self {
+            LinkItem::Item(Item::Setting(kv)) => Some(kv),
+            _ => None,
+        }
+    }
 }
 
 impl Parse for LinkItem {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let name = Ident::parse_any(input)?;
-        if input.peek(syn::token::Paren) {
+        // A name alone (neither a group nor a setting follows) is the body's name.
+        if !input.peek2(syn::token::Paren) && !input.peek2(Token![=]) {
+            return Ok(LinkItem::Name(Ident::parse_any(input)?));
+        }
+        let fork = input.fork();
+        if Ident::parse_any(&fork).is_ok_and(|name| name == keys::PARTS_GROUP)
+            && fork.peek(syn::token::Paren)
+        {
+            let keyword = Ident::parse_any(input)?;
             let content;
             parenthesized!(content in input);
-            if name == keys::PARTS_GROUP {
-                let items = Punctuated::<Item, Token![,]>::parse_terminated(&content)?;
-                Ok(LinkItem::Parts {
-                    keyword: name,
-                    items: items.into_iter().collect(),
-                })
-            } else {
-                let list = Punctuated::<KeyValue, Token![,]>::parse_terminated(&content)?;
-                Ok(LinkItem::Group {
-                    name,
-                    keys: list.into_iter().collect(),
-                })
-            }
-        } else if input.peek(Token![=]) {
-            input.parse::<Token![=]>()?;
-            let value = input.parse()?;
-            Ok(LinkItem::Setting(Box::new(KeyValue { key: name, value })))
-        } else {
-            Ok(LinkItem::Name(name))
+            let items = crate::lang::parts::parse_parts(&content)?;
+            return Ok(LinkItem::Parts { keyword, items });
         }
+        // Unreachable message: a name followed by `(` or `=` starts an item.
+        Item::parse_or(input, |name| format!("expected `{name} = value`")).map(LinkItem::Item)
     }
 }
 
@@ -113,32 +109,4 @@ pub fn parse_links<'a>(cx: &Ctxt, attrs: &[&'a Attribute]) -> Links<'a> {
         }
     }
     links
-}
-
-/// The items of every `#[mechanism(...)]` attribute (a bare `#[mechanism]` has none).
-pub fn parse_settings(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<KeyValue> {
-    parse_each(cx, attrs, |a| match &a.meta {
-        Meta::Path(_) => Ok(Punctuated::new()),
-        _ => a.parse_args_with(Punctuated::<KeyValue, Token![,]>::parse_terminated),
-    })
-}
-
-/// Takes the `taylor = K` items out of the `#[mechanism(...)]` settings (so the other keys
-/// are checked as before) and returns the first one's value; a repeat is an error on its key.
-/// The value is judged by `crate::taylor::check` once the links are known, since a user
-/// function among the efforts rules the key out.
-pub fn take_taylor(cx: &Ctxt, settings: &mut Parsed<KeyValue>) -> Option<Expr> {
-    let mut value: Option<Expr> = None;
-    settings.items.retain(|kv| {
-        if kv.key != keys::TAYLOR {
-            return true;
-        }
-        if value.is_some() {
-            cx.error_spanned_by(&kv.key, format!("duplicate key `{}`", kv.key));
-        } else {
-            value = Some(kv.value.clone());
-        }
-        false
-    });
-    value
 }

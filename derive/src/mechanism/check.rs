@@ -1,5 +1,5 @@
 //! Meaning of the `#[body(...)]` and `#[mechanism(...)]` items: each body's keys,
-//! coordinates and parts (the parts with the `#[rigid]` rules) here, its joint in `joint.rs`,
+//! coordinates and parts (the parts by the part language of `lang::parts`) here, its joint in `joint.rs`,
 //! its loads in `loads.rs`, then the tree's rules in `tree.rs`. Every error is recorded, spanned on the offending tokens,
 //! before any is given up on.
 
@@ -10,9 +10,9 @@ use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
-use crate::keys::{self, part_list};
-use crate::rigid::attr::{Item, KeyValue, Parsed};
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys::{self, part_list};
+use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
 
 /// How the accelerations are to be solved, as the user asked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -131,14 +131,9 @@ fn mechanism_settings(
 ) -> (Option<[ExprId; 3]>, RouteChoice) {
     let mut gravity = None;
     let mut route = RouteChoice::Auto;
-    let mut seen: Vec<&Ident> = Vec::new();
-    for KeyValue { key, value } in &settings.items {
-        if seen.contains(&key) {
-            ck.cx
-                .error_spanned_by(key, format!("duplicate key `{key}`"));
-            continue;
-        }
-        seen.push(key);
+    let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
+    let cx = ck.cx;
+    for KeyValue { key, value } in distinct(cx, &settings.items, &in_mechanism) {
         match keys::MECHANISM_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => gravity = ck.gravity(value),
             Some(keys::ROUTE) => route = ck.route(value),
@@ -198,9 +193,9 @@ impl Checker<'_> {
                     );
                     continue;
                 }
-                LinkItem::Setting(kv) => &kv.key,
+                LinkItem::Item(Item::Setting(kv)) => &kv.key,
                 LinkItem::Parts { keyword, .. } => keyword,
-                LinkItem::Group { name, .. } => name,
+                LinkItem::Item(Item::Group { name, .. }) => name,
             };
             if seen.contains(&key) {
                 self.cx
@@ -211,10 +206,10 @@ impl Checker<'_> {
             match item {
                 LinkItem::Name(_) => {}
                 LinkItem::Parts { keyword, items } => k.parts = Some((keyword, items)),
-                LinkItem::Group { name, keys: list } if name == keys::SPRING => {
+                LinkItem::Item(Item::Group { name, keys: list }) if name == keys::SPRING => {
                     k.spring = Some((name, list));
                 }
-                LinkItem::Group { name, .. } => self.cx.error_spanned_by(
+                LinkItem::Item(Item::Group { name, .. }) => self.cx.error_spanned_by(
                     name,
                     format!(
                         "unknown group `{name}(...)` in `#[{}]`: expected `{}(...)` or `{}({} = .., {} = ..)`{}",
@@ -226,7 +221,7 @@ impl Checker<'_> {
                         keys::did_you_mean(&name.to_string(), known())
                     ),
                 ),
-                LinkItem::Setting(kv) => {
+                LinkItem::Item(Item::Setting(kv)) => {
                     let slot = match kv.key.to_string().as_str() {
                         keys::PARENT => &mut k.parent,
                         keys::JOINT => &mut k.joint,
@@ -363,7 +358,7 @@ impl Checker<'_> {
         let mut ok = true;
         for item in items {
             match item {
-                Item::Part { name, keys } => match self.part(name, keys) {
+                Item::Group { name, keys } => match self.part(name, keys) {
                     Some((part, _)) => {
                         let single = Description {
                             parts: vec![part.clone()],

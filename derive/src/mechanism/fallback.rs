@@ -13,8 +13,8 @@ use syn::{DeriveInput, Expr, Ident, Token};
 
 use super::attr::LinkItem;
 use super::joint::path_ident;
-use crate::keys;
-use crate::private::Private;
+use crate::lang::keys;
+use crate::lang::private::Private;
 
 /// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -99,7 +99,7 @@ fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
         });
     for list in lists {
         for item in list {
-            let LinkItem::Setting(kv) = item else {
+            let Some(kv) = item.setting() else {
                 continue;
             };
             if kv.key != keys::COORDINATES {

@@ -12,7 +12,7 @@ use quote::quote;
 
 use super::check::CheckedMechanism;
 use super::expand::Method;
-use crate::private::Private;
+use crate::lang::private::Private;
 
 /// The method, or nothing where the default applies.
 pub fn method(

@@ -7,8 +7,8 @@ use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
-use crate::keys;
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys;
 
 /// A joint as read.
 pub(super) struct JointSpec {

@@ -7,8 +7,8 @@ use syn::Expr;
 
 use super::check::{LinkKeys, RouteChoice, UserEffort};
 use super::joint::path_ident;
-use crate::keys;
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys;
 
 impl Checker<'_> {
     /// The loads of a joint's coordinates: spring, damper and effort, one value each per

@@ -1,7 +1,10 @@
 //! `#[derive(Mechanism)]`: a tree of rigid bodies described by `#[body(...)]` attributes
-//! (each a body in the `#[rigid]` part language, joined to its parent by a named joint) and
-//! `#[mechanism(...)]` settings, in the phases every attribute of the derive has: `attr`
-//! (syntax), `check` (meaning and the tree's rules), `expand` (the `MechanismDynamics` impl).
+//! (each a body in the part language of `lang::parts`, joined to its parent by a named
+//! joint) and `#[mechanism(...)]` settings, in the phases every attribute has over `lang/`:
+//! `attr` (syntax), `check` (meaning, with a body's joint in `joint`, its loads in `loads`
+//! and the tree's rules in `tree`), `expand` (the `MechanismDynamics` impl, with
+//! `parameters`, `jacobian` and `expand/charts`) and `fallback` (the stubs). This file is the
+//! derive's driver.
 
 pub mod attr;
 pub mod check;
@@ -11,56 +14,47 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
-mod taylor;
 mod tree;
 
 use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
 use syn::DeriveInput;
 
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::rigid::ast::Input;
-use crate::rigid::check::Checker;
-use crate::symbols::FieldParameters;
+use crate::lang::ast::Input;
+use crate::lang::check::Checker;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::expansion::Expansion;
+use crate::lang::keys;
+use crate::lang::symbols::FieldParameters;
+use crate::lang::syntax;
+use crate::lang::taylor::TaylorKey;
 
-/// The whole derive: the impls, or every error.
+/// The whole derive: the impls, or every error and the stub impls.
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let cx = Ctxt::new();
     let expanded = expand(&cx, input);
-    match cx.check() {
-        Ok(()) => expanded.unwrap_or_else(|| {
-            syn::Error::new_spanned(
-                &input.ident,
-                "internal error of the derive: it stopped without an error; please report this",
-            )
-            .to_compile_error()
-        }),
-        Err(errors) => {
-            let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
-            out.extend(fallback::stub(input));
-            out
-        }
-    }
+    cx.finish(&input.ident, expanded, || fallback::stub(input))
 }
 
 /// Every phase: syntax and meaning of all attributes, then the expansion.
 fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let ast = Input::for_derive(cx, input, "Mechanism")?;
-    let attrs = |name: &str| -> Vec<&syn::Attribute> {
-        input
-            .attrs
-            .iter()
-            .filter(|a| a.path().is_ident(name))
-            .collect()
-    };
-    let mut settings = attr::parse_settings(cx, &attrs(keys::MECHANISM));
-    let taylor = attr::take_taylor(cx, &mut settings);
-    let links = attr::parse_links(cx, &attrs(keys::LINK));
+    let settings = syntax::parse_settings(cx, &ast.attributes(keys::MECHANISM));
+    let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
+    let pairs = settings.items.iter().map(|kv| (&kv.key, &kv.value));
+    let taylor = TaylorKey::find(cx, pairs, &in_mechanism);
+    let links = attr::parse_links(cx, &ast.attributes(keys::LINK));
     let mut arena = Arena::new();
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let checked = check::check(&mut ck, &settings, &links)?;
-    let taylor = taylor::check(cx, taylor.as_ref(), &checked);
-    expand::expand(cx, &input.ident, &mut arena, &parameters, &checked, taylor)
+    // An effort computed by a user function has no Taylor coefficients.
+    let taylor = taylor.order(cx, &[(keys::EFFORT, !checked.efforts.is_empty())]);
+    let mut ex = Expansion {
+        cx,
+        ident: &input.ident,
+        arena: &mut arena,
+        parameters: &parameters,
+    };
+    expand::expand(&mut ex, &checked, taylor)
 }

@@ -13,9 +13,9 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::check::CheckedMechanism;
-use crate::private::Private;
-use crate::rigid::expand::{orientation, shape};
-use crate::symbols::Lowering;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
+use crate::lang::tokens::{orientation, shape};
 
 /// `fn check_parameters(&self)`, or nothing when no checked value reads a field.
 pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> TokenStream {

@@ -4,8 +4,8 @@
 use precess_core::mechanism::Parent;
 
 use super::check::LinkSpec;
-use crate::keys;
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys;
 
 /// The parent of each link: names unique, parents known, every chain reaching the ground.
 pub(super) fn tree(ck: &Checker, specs: &[LinkSpec]) -> Option<Vec<Parent>> {

@@ -1,21 +1,19 @@
-//! Meaning of the `#[rigid(...)]` items: parts and keys against the table in `keys.rs`,
-//! values to symbolic expressions, then the body's rules. One function per rule, the reason
+//! Meaning of the `#[rigid(...)]` items: each part by the part language (`lang::parts`), the
+//! pivot and `taylor = K`, then the body's rules. One function per rule, the reason
 //! in a comment; every error is recorded in the context, spanned on the offending tokens.
 
-use precess_core::body::{
-    About, Axis, BodyError, Description, ORTHONORMAL_TOLERANCE, Part, Shape, SymbolicBody,
-    check_part, evaluate,
-};
+use precess_core::body::{BodyError, Description, Shape, SymbolicBody, check_part, evaluate};
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::ToTokens;
-use syn::{Expr, Ident};
+use syn::Ident;
 
-use super::ast::Input;
-use super::attr::{Item, KeyValue, Parsed};
-use crate::ctxt::Ctxt;
-use crate::keys::{self, PartKind, part_list};
-use crate::symbols::FieldParameters;
+use crate::lang::check::Checker;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::{self, part_list};
+use crate::lang::parts::{KeySpans, rotation_message};
+use crate::lang::syntax::{Item, KeyValue, Parsed};
+use crate::lang::taylor::TaylorKey;
 
 /// The checked description and the symbolic body computed from it.
 pub struct CheckedBody {
@@ -27,9 +25,6 @@ pub struct CheckedBody {
     /// equations, if asked for.
     pub taylor: Option<usize>,
 }
-
-/// The tokens of each key's value in one part.
-pub(crate) type KeySpans = Vec<(&'static str, TokenStream)>;
 
 /// Tokens of each value, to span errors found on the whole body.
 struct Spans {
@@ -47,37 +42,6 @@ impl Spans {
         match found {
             Some((_, t)) => t.clone(),
             None => self.whole.clone(),
-        }
-    }
-}
-
-/// Converts attribute values into expressions of the derive's arena, recording every
-/// error. It borrows the arena and the list of fields read, so `#[rigid]` and `#[top]`
-/// values share them with the same rules and errors.
-pub struct Checker<'a> {
-    /// Where errors go.
-    pub cx: &'a Ctxt,
-    /// The struct whose fields values may name.
-    pub input: &'a Input<'a>,
-    /// The arena the values are built in.
-    pub arena: &'a mut Arena,
-    /// The fields read so far, each with its parameter symbol.
-    pub(super) parameters: &'a mut FieldParameters,
-}
-
-impl<'a> Checker<'a> {
-    /// A checker building values of `input` in `arena`, recording the fields it reads.
-    pub fn new(
-        cx: &'a Ctxt,
-        input: &'a Input<'a>,
-        arena: &'a mut Arena,
-        parameters: &'a mut FieldParameters,
-    ) -> Self {
-        Checker {
-            cx,
-            input,
-            arena,
-            parameters,
         }
     }
 }
@@ -116,11 +80,16 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
         whole: input.rigid_tokens(),
     };
     let mut pivot_key: Option<&Ident> = None;
-    let mut taylor_key: Option<&Ident> = None;
-    let mut taylor = None;
+    let settings = items.items.iter().filter_map(|item| match item {
+        Item::Setting(kv) => Some((&kv.key, &kv.value)),
+        Item::Group { .. } => None,
+    });
+    let in_rigid = format!("`#[{}]`", keys::RIGID);
+    // No user function can enter Euler's torque-free equations.
+    let taylor = TaylorKey::find(ck.cx, settings, &in_rigid).order(ck.cx, &[]);
     for item in &items.items {
         match item {
-            Item::Part { name, keys } => {
+            Item::Group { name, keys } => {
                 if let Some((part, part_spans)) = ck.part(name, keys) {
                     description.parts.push(part);
                     spans.parts.push(part_spans);
@@ -140,20 +109,8 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                 description.pivot = ck.vector(value);
                 spans.pivot = Some(value.to_token_stream());
             }
-            Item::Setting(setting) if setting.key == keys::TAYLOR => {
-                let KeyValue { key, value } = &**setting;
-                // One order: two would leave the generated recurrences ambiguous.
-                if taylor_key.is_some() {
-                    ck.cx.error_spanned_by(
-                        key,
-                        format!("duplicate key `{key}` in `#[{}]`", keys::RIGID),
-                    );
-                    continue;
-                }
-                taylor_key = Some(key);
-                // No user function can enter Euler's torque-free equations.
-                taylor = crate::taylor::check(ck.cx, value, &[]);
-            }
+            // Read by `TaylorKey` above.
+            Item::Setting(setting) if setting.key == keys::TAYLOR => {}
             Item::Setting(setting) => {
                 let key = &setting.key;
                 ck.cx.error_spanned_by(
@@ -267,7 +224,7 @@ fn report(cx: &Ctxt, spans: &Spans, e: &BodyError) {
         ),
         BodyError::ZeroRotationAxis { part, .. }
         | BodyError::NotOrthonormal { part, .. }
-        | BodyError::ImproperRotation { part, .. } => (spans.of(part, keys::ROTATE), message(e)),
+        | BodyError::ImproperRotation { part, .. } => (spans.of(part, keys::ROTATE), rotation_message(e)),
         BodyError::PivotRequired { part } => (spans.of(part, keys::ABOUT), "`about = pivot` needs a pivot: declare `pivot = [x, y, z]`, or give the tensor `about = center`".to_owned()),
         BodyError::ZeroTotalMass => (spans.whole.clone(), "the total mass is zero: masses must be positive".to_owned()),
         BodyError::IdenticallyZeroMoment { .. } => (
@@ -282,208 +239,4 @@ fn report(cx: &Ctxt, spans: &Spans, e: &BodyError) {
         ),
     };
     cx.error_spanned_by(tokens, msg);
-}
-
-/// What a rejected rotation is told, without the part's number (the span shows the part).
-pub(super) fn message(e: &BodyError) -> String {
-    match *e {
-        BodyError::ZeroRotationAxis { axis, .. } => format!(
-            "the rotation axis {axis:?} has no direction: give a non-zero axis such as [0.0, 0.0, 1.0]"
-        ),
-        BodyError::NotOrthonormal { deviation, .. } => format!(
-            "the matrix is not a rotation: its columns are not orthonormal (|RᵀR − E| reaches {deviation:.1e}; at most {ORTHONORMAL_TOLERANCE:e} is allowed)"
-        ),
-        BodyError::ImproperRotation { determinant, .. } => format!(
-            "the matrix is a reflection (det = {determinant}), not a rotation: a rotation has det = +1; negate one column, or swap two"
-        ),
-        _ => e.to_string(),
-    }
-}
-
-impl Checker<'_> {
-    /// One part: known name, known and unique keys, every required key, then its values.
-    pub(crate) fn part(
-        &mut self,
-        name: &Ident,
-        keys: &[KeyValue],
-    ) -> Option<(Part<ExprId>, KeySpans)> {
-        let Some(table) = keys::find_part(&name.to_string()) else {
-            self.cx.error_spanned_by(
-                name,
-                format!(
-                    "unknown part `{name}`: expected one of {}{}",
-                    part_list(),
-                    keys::did_you_mean_part(&name.to_string())
-                ),
-            );
-            return None;
-        };
-        let mut given: Vec<(&'static str, &KeyValue)> = Vec::new();
-        let mut ok = true;
-        // Keys a misspelling was taken for: their absence is the same mistake, said once.
-        let mut suggested: Vec<&'static str> = Vec::new();
-        for kv in keys {
-            let written = kv.key.to_string();
-            let Some(key) = table.key(&written) else {
-                let allowed: Vec<&str> = table.allowed().collect();
-                // The explicit body's alias is a key one may have meant too.
-                let alias = (table.kind == keys::PartKind::Explicit).then_some(keys::CENTER);
-                let known = allowed.iter().copied().chain(alias);
-                let near = keys::closest(&written, known.clone());
-                suggested.extend(near.and_then(|k| table.key(k)));
-                self.cx.error_spanned_by(
-                    &kv.key,
-                    format!(
-                        "unknown key `{}` for `{}`: allowed keys are {}{}",
-                        kv.key,
-                        table.name,
-                        allowed.join(", "),
-                        keys::did_you_mean(&written, known)
-                    ),
-                );
-                ok = false;
-                continue;
-            };
-            // Each key once: two values for one quantity are ambiguous.
-            if given.iter().any(|(g, _)| *g == key) {
-                self.cx.error_spanned_by(
-                    &kv.key,
-                    format!(
-                        "duplicate key `{}` in `{}`: give each key once",
-                        kv.key, table.name
-                    ),
-                );
-                ok = false;
-                continue;
-            }
-            given.push((key, kv));
-        }
-        // Every required key: a solid needs all its dimensions.
-        let missing: Vec<String> = table
-            .required
-            .iter()
-            .filter(|r| !given.iter().any(|(g, _)| g == *r) && !suggested.contains(r))
-            .map(|m| format!("`{m}`"))
-            .collect();
-        if !missing.is_empty() {
-            self.cx.error_spanned_by(
-                name,
-                format!(
-                    "`{name}` is missing {}: it needs {}",
-                    missing.join(", "),
-                    table.required.join(", ")
-                ),
-            );
-            ok = false;
-        }
-        if !ok {
-            return None;
-        }
-        let spans = given
-            .iter()
-            .map(|(k, kv)| (*k, kv.value.to_token_stream()))
-            .collect();
-        let value = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, kv)| &kv.value);
-        // Every value is read, so each of its errors is reported, before any is given up on.
-        let shape = self.shape(table.kind, &value);
-        let at = match value(keys::AT) {
-            Some(e) => self.vector(e),
-            None => Some([self.arena.zero(); 3]),
-        };
-        let orientation = match value(keys::ROTATE) {
-            Some(e) => self.orientation(e, table.name).map(Some),
-            None => Some(None),
-        };
-        let (shape, at, orientation) = (shape?, at?, orientation?);
-        Some((
-            Part {
-                shape,
-                at,
-                orientation,
-            },
-            spans,
-        ))
-    }
-
-    /// The shape of `kind` from its key values (all required keys are present).
-    fn shape<'e>(
-        &mut self,
-        kind: PartKind,
-        value: &dyn Fn(&str) -> Option<&'e Expr>,
-    ) -> Option<Shape<ExprId>> {
-        let mut scalar = |k: &str| value(k).and_then(|e| self.scalar(e));
-        let (mass, radius) = (scalar(keys::MASS), scalar(keys::RADIUS));
-        let (length, height) = (scalar(keys::LENGTH), scalar(keys::HEIGHT));
-        let (inner, outer) = (scalar(keys::INNER), scalar(keys::OUTER));
-        let (axis, reversed) = match value(keys::AXIS) {
-            Some(e) => self.axis(e)?,
-            None => (Axis::Z, false),
-        };
-        let mass = mass?;
-        Some(match kind {
-            PartKind::Particle => Shape::Particle { mass },
-            PartKind::Sphere => Shape::Sphere {
-                mass,
-                radius: radius?,
-            },
-            PartKind::Shell => Shape::Shell {
-                mass,
-                radius: radius?,
-            },
-            PartKind::Cuboid => Shape::Cuboid {
-                mass,
-                size: self.vector(value(keys::SIZE)?)?,
-            },
-            PartKind::Ellipsoid => Shape::Ellipsoid {
-                mass,
-                semi_axes: self.vector(value(keys::SEMI_AXES)?)?,
-            },
-            PartKind::Cylinder => Shape::Cylinder {
-                mass,
-                radius: radius?,
-                length: length?,
-                axis,
-            },
-            PartKind::Tube => Shape::Tube {
-                mass,
-                inner: inner?,
-                outer: outer?,
-                length: length?,
-                axis,
-            },
-            PartKind::Disk => Shape::Disk {
-                mass,
-                radius: radius?,
-                axis,
-            },
-            PartKind::Ring => Shape::Ring {
-                mass,
-                radius: radius?,
-                axis,
-            },
-            PartKind::Rod => Shape::Rod {
-                mass,
-                length: length?,
-                axis,
-            },
-            PartKind::Cone => Shape::Cone {
-                mass,
-                radius: radius?,
-                height: height?,
-                axis,
-                reversed,
-            },
-            PartKind::Explicit => {
-                let about = match value(keys::ABOUT) {
-                    Some(e) => self.about(e)?,
-                    None => About::Center,
-                };
-                Shape::Explicit {
-                    mass,
-                    inertia: self.tensor(value(keys::INERTIA)?)?,
-                    about,
-                }
-            }
-        })
-    }
 }

@@ -1,19 +1,21 @@
 //! Expansion of `#[rigid]`: the checked body's expressions lowered by precess-core's code
 //! generator and quoted into a `RigidBody` impl (and, with `taylor = K`, the impls of
-//! `taylor.rs`). Constants become literals; a field becomes
+//! `expand/euler.rs`). Constants become literals; a field becomes
 //! `self.field`; generated code names everything through the hidden path.
 
-use precess_core::body::{About, Axis, Description, Frame, Orientation, Shape};
+use precess_core::body::{Description, Frame};
 use precess_core::codegen::{Emitted, f64_literal};
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
 
 use super::check::CheckedBody;
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::{FieldParameters, Lowering};
+use crate::lang::expansion::Expansion;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
+use crate::lang::tokens::{orientation, shape};
+
+mod euler;
 
 /// A constant whose exact value did not fold to one rational (an overflow kept it as a
 /// product) is rounded to one literal, so a body of literals never computes at run time.
@@ -58,13 +60,9 @@ fn matrix(o: &[TokenStream]) -> TokenStream {
 
 /// `impl RigidBody for …`, or `None` after recording why Euler's equations could not be
 /// formed.
-pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
-    checked: &CheckedBody,
-) -> Option<TokenStream> {
+pub fn expand(ex: &mut Expansion, checked: &CheckedBody) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let omega_in = [
         arena.input("omega_1"),
@@ -127,7 +125,7 @@ pub fn expand(
     // `taylor = K`: the torque-free Euler equations as a system of their own.
     let taylor = checked
         .taylor
-        .map(|order| super::taylor::expand(cx, ident, arena, parameters, checked, order));
+        .map(|order| euler::expand(ex, checked, order));
     Some(quote! {
         #taylor
 
@@ -188,110 +186,4 @@ fn description(
         #lets
         #p::Description { parts: #p::vec![#(#parts),*], pivot: #pivot }
     }}
-}
-
-fn axis(a: Axis) -> TokenStream {
-    match a {
-        Axis::X => quote!(#Private::Axis::X),
-        Axis::Y => quote!(#Private::Axis::Y),
-        Axis::Z => quote!(#Private::Axis::Z),
-    }
-}
-
-pub(crate) fn orientation(o: &Orientation<TokenStream>) -> TokenStream {
-    let p = quote!(#Private::Orientation);
-    match o {
-        Orientation::AxisAngle { axis, angle } => {
-            quote!(#p::AxisAngle { axis: [#(#axis),*], angle: #angle })
-        }
-        Orientation::Matrix(rows) => {
-            let rows = rows.iter().map(|r| quote!([#(#r),*]));
-            quote!(#p::Matrix([#(#rows),*]))
-        }
-        Orientation::Sequence(turns) => {
-            let turns = turns.iter().map(|(a, angle)| {
-                let a = axis(*a);
-                quote!((#a, #angle))
-            });
-            quote!(#p::Sequence(#Private::vec![#(#turns),*]))
-        }
-    }
-}
-
-pub(crate) fn shape(s: &Shape<TokenStream>) -> TokenStream {
-    let p = quote!(#Private::Shape);
-    match s {
-        Shape::Particle { mass } => quote!(#p::Particle { mass: #mass }),
-        Shape::Sphere { mass, radius } => quote!(#p::Sphere { mass: #mass, radius: #radius }),
-        Shape::Shell { mass, radius } => quote!(#p::Shell { mass: #mass, radius: #radius }),
-        Shape::Cuboid { mass, size } => quote!(#p::Cuboid { mass: #mass, size: [#(#size),*] }),
-        Shape::Ellipsoid { mass, semi_axes } => {
-            quote!(#p::Ellipsoid { mass: #mass, semi_axes: [#(#semi_axes),*] })
-        }
-        Shape::Cylinder {
-            mass,
-            radius,
-            length,
-            axis: a,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Cylinder { mass: #mass, radius: #radius, length: #length, axis: #a })
-        }
-        Shape::Tube {
-            mass,
-            inner,
-            outer,
-            length,
-            axis: a,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Tube { mass: #mass, inner: #inner, outer: #outer, length: #length, axis: #a })
-        }
-        Shape::Disk {
-            mass,
-            radius,
-            axis: a,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Disk { mass: #mass, radius: #radius, axis: #a })
-        }
-        Shape::Ring {
-            mass,
-            radius,
-            axis: a,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Ring { mass: #mass, radius: #radius, axis: #a })
-        }
-        Shape::Rod {
-            mass,
-            length,
-            axis: a,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Rod { mass: #mass, length: #length, axis: #a })
-        }
-        Shape::Cone {
-            mass,
-            radius,
-            height,
-            axis: a,
-            reversed,
-        } => {
-            let a = axis(*a);
-            quote!(#p::Cone { mass: #mass, radius: #radius, height: #height, axis: #a, reversed: #reversed })
-        }
-        Shape::Explicit {
-            mass,
-            inertia,
-            about,
-        } => {
-            let rows = inertia.iter().map(|r| quote!([#(#r),*]));
-            let about = match about {
-                About::Center => quote!(#Private::About::Center),
-                About::Pivot => quote!(#Private::About::Pivot),
-            };
-            quote!(#p::Explicit { mass: #mass, inertia: [#(#rows),*], about: #about })
-        }
-    }
 }

@@ -1,16 +1,12 @@
 //! `#[rigid(...)]`: the body's parts and pivot, in the phases every attribute of the derive
-//! has: `ast` (borrowed view of the input), `attr` (syntax), `check` (meaning, with the value
-//! language in `values`), `expand` (the `RigidBody` impl), `taylor` (the torque-free Euler
-//! equations' `System<3>` and `TaylorSystem<3>`, with `taylor = K`) and `fallback` (the
-//! stub).
+//! has over `lang/`: `attr` (syntax), `check` (meaning and the body's rules), `expand` (the
+//! `RigidBody` impl, and with `taylor = K` the torque-free Euler equations' `System<3>` and
+//! `TaylorSystem<3>` in `expand/euler.rs`) and `fallback` (the stub).
 
-pub mod ast;
 pub mod attr;
 pub mod check;
 pub mod expand;
 pub mod fallback;
-mod taylor;
-pub(crate) mod values;
 
 #[cfg(test)]
 mod tests;

@@ -2,18 +2,7 @@
 
 use quote::quote;
 
-fn expand(input: proc_macro2::TokenStream) -> String {
-    let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-    crate::derive(&input).to_string()
-}
-
-/// The text of one method of the emitted impl.
-fn method<'a>(code: &'a str, name: &str) -> &'a str {
-    let start = code.find(&format!("fn {name}")).unwrap_or(0);
-    let rest = &code[start..];
-    let end = rest[3..].find(" fn ").map_or(rest.len(), |e| e + 3);
-    &rest[..end]
-}
+use crate::lang::tests::{method, rigid_body as expand};
 
 #[test]
 fn literal_body_emits_constants_only() {

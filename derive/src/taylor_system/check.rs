@@ -5,10 +5,11 @@
 
 use syn::{Expr, Fields, Ident};
 
-use super::parse::{STATE, Statement, SystemInput, TIME};
-use crate::ctxt::Ctxt;
-use crate::keys::{self, did_you_mean};
-use crate::rigid::ast::Field;
+use super::attr::{STATE, Statement, SystemInput, TIME};
+use crate::lang::ast::Field;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::{self, did_you_mean};
+use crate::lang::taylor::TaylorKey;
 
 /// The checked system.
 pub struct CheckedSystem<'a> {
@@ -34,7 +35,6 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
     }
     let fields = fields(cx, &item.fields);
     let mut state: Option<(&Ident, &[Ident])> = None;
-    let mut taylor: Option<&Expr> = None;
     let mut equations: Vec<(&Ident, &Expr)> = Vec::new();
     for statement in &input.statements {
         match statement {
@@ -48,16 +48,16 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
                     state = Some((keyword, names));
                 }
             }
-            Statement::Taylor { keyword, value } => {
-                if taylor.is_some() {
-                    cx.error_spanned_by(keyword, format!("duplicate key `{}`", keys::TAYLOR));
-                } else {
-                    taylor = Some(value);
-                }
-            }
+            // Read by `TaylorKey` below.
+            Statement::Taylor { .. } => {}
             Statement::Equation { name, value } => equations.push((name, value)),
         }
     }
+    let orders = input.statements.iter().filter_map(|s| match s {
+        Statement::Taylor { keyword, value } => Some((keyword, value)),
+        _ => None,
+    });
+    let taylor = TaylorKey::find(cx, orders, "`taylor_system!`");
     let Some((keyword, names)) = state else {
         cx.error_spanned_by(
             &item.ident,
@@ -66,18 +66,17 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
         return None;
     };
     let state = state_names(cx, keyword, names, &fields);
-    let order = match taylor {
-        Some(value) => crate::taylor::check(cx, value, &[]),
-        None => {
-            cx.error_spanned_by(
-                &item.ident,
-                format!(
-                    "missing the maximum Taylor order: add `{} = 20;` (about 20 reaches double precision)",
-                    keys::TAYLOR
-                ),
-            );
-            None
-        }
+    let order = if taylor.is_given() {
+        taylor.order(cx, &[])
+    } else {
+        cx.error_spanned_by(
+            &item.ident,
+            format!(
+                "missing the maximum Taylor order: add `{} = 20;` (about 20 reaches double precision)",
+                keys::TAYLOR
+            ),
+        );
+        None
     };
     let mut by_state: Vec<Option<&Expr>> = vec![None; state.len()];
     for (name, value) in equations {

@@ -1,5 +1,5 @@
 //! Meaning of the `#[top(...)]` items: keys against the table in `keys.rs`, values with the
-//! `#[rigid]` value rules in the same arena, and the rules of
+//! value rules of `lang::values` in the same arena, and the rules of
 //! `precess_core::top::TopParameters` on the values that are literals (field values meet the
 //! same rules at run time, in the generated `TopDynamics::check_parameters`).
 
@@ -7,11 +7,12 @@ use precess_core::nalgebra::Vector3;
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
 use precess_core::top::TopParameters;
-use syn::{Expr, Ident};
+use syn::Expr;
 
-use crate::keys::{self, TOP_KEYS};
-use crate::rigid::attr::{KeyValue, Parsed};
-use crate::rigid::check::Checker;
+use crate::lang::check::Checker;
+use crate::lang::keys::{self, TOP_KEYS};
+use crate::lang::syntax::{KeyValue, Parsed, distinct};
+use crate::lang::taylor::TaylorKey;
 
 /// The checked `#[top(...)]` settings: the torques the scene declares and its angles.
 pub struct TopSettings {
@@ -64,16 +65,14 @@ pub fn check(
         angles: AngleSequence::Zxz,
         taylor: None,
     };
-    let mut taylor = None;
-    let mut seen: Vec<&Ident> = Vec::new();
-    for KeyValue { key, value } in &items.items {
-        // Each setting once: two gravities or two dampings would be ambiguous.
-        if seen.contains(&key) {
-            ck.cx
-                .error_spanned_by(key, format!("duplicate key `{key}`"));
-            continue;
-        }
-        seen.push(key);
+    let in_top = format!("`#[{}]`", keys::TOP);
+    let taylor = TaylorKey::find(
+        ck.cx,
+        items.items.iter().map(|kv| (&kv.key, &kv.value)),
+        &in_top,
+    );
+    let cx = ck.cx;
+    for KeyValue { key, value } in distinct(cx, &items.items, &in_top) {
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => {
                 settings.gravity = ck.scalar(value).filter(|&g| {
@@ -129,7 +128,6 @@ pub fn check(
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
-            Some(keys::TAYLOR) => taylor = Some(value),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
@@ -141,10 +139,8 @@ pub fn check(
             ),
         }
     }
-    if let Some(value) = taylor {
-        let user = [(keys::TORQUE, settings.torque.is_some())];
-        settings.taylor = crate::taylor::check(ck.cx, value, &user);
-    }
+    let user = [(keys::TORQUE, settings.torque.is_some())];
+    settings.taylor = taylor.order(ck.cx, &user);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
 }

@@ -10,8 +10,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-use crate::ctxt::Ctxt;
-use crate::private::Private;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
 
 /// The method `fn equations(&self) -> &'static Typeset` of `scene`, or nothing after
 /// recording why its equations could not be derived.
@@ -143,10 +143,7 @@ fn cost_tokens(c: &MethodCost) -> TokenStream {
 mod tests {
     use quote::quote;
 
-    fn expand(input: proc_macro2::TokenStream) -> String {
-        let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-        crate::derive(&input).to_string()
-    }
+    use crate::lang::tests::rigid_body as expand;
 
     /// The text of one method's arm for the ZXZ chart, or of a whole method.
     fn method<'a>(code: &'a str, name: &str, zxz_arm: bool) -> &'a str {

@@ -10,14 +10,13 @@ use precess_core::sym::{Arena, ExprId};
 use precess_core::top::{TopDerivation, TopScene};
 use proc_macro2::TokenStream;
 use quote::{quote, quote_spanned};
-use syn::Ident;
 use syn::spanned::Spanned;
 
 use super::check::TopSettings;
-use crate::ctxt::Ctxt;
-use crate::private::Private;
+use crate::lang::expansion::Expansion;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
 use crate::rigid::check::CheckedBody;
-use crate::symbols::{FieldParameters, Lowering};
 
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
 /// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
@@ -120,13 +119,12 @@ impl UserCall {
 
 /// `impl TopDynamics for …`, or `None` after recording why the equations could not be derived.
 pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
+    ex: &mut Expansion,
     checked: &CheckedBody,
     settings: &TopSettings,
 ) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let mut scene = scene(arena, checked, settings);
     let user = UserCall(settings.torque.clone());
@@ -171,7 +169,7 @@ pub fn expand(
     // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
     let taylor = settings.taylor.map(|order| {
         let (state, rhs) = lagrangian;
-        crate::taylor::expand(
+        crate::lang::taylor::expand(
             cx,
             ident,
             arena,

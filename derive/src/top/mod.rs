@@ -1,7 +1,8 @@
 //! `#[top(...)]`: the body as a top about its pivot, its declared torques and angle
-//! sequence, in the same phases as `#[rigid]`: `attr` (syntax), `check` (meaning, with the
-//! `#[rigid]` value rules in the same arena), `expand` (the `TopDynamics` impl) and `fallback` (its
-//! stub). It reads the struct through `rigid::ast`.
+//! sequence, in the phases every attribute has over `lang/`: `attr` (syntax), `check`
+//! (meaning, its values read by the shared checker into the arena `#[rigid]` built), `expand`
+//! (the `TopDynamics` impl, with its typeset equations in `equations`) and `fallback` (its
+//! stub).
 
 pub mod attr;
 pub mod check;

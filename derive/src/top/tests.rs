@@ -2,10 +2,7 @@
 
 use quote::quote;
 
-fn expand(input: proc_macro2::TokenStream) -> String {
-    let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
-    crate::derive(&input).to_string()
-}
+use crate::lang::tests::rigid_body as expand;
 
 /// The text of the `Zxz` arm of `accel_in`.
 fn zxz_accel(code: &str) -> &str {

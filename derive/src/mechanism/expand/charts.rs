@@ -15,9 +15,9 @@ use quote::quote;
 use syn::Ident;
 
 use super::{CheckedMechanism, Method};
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::Lowering;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
 
 /// `impl ChartedDynamics<2N>` for a mechanism with spherical joints (empty otherwise), or
 /// `None` after recording why a chart's equations could not be derived.

@@ -64,7 +64,7 @@ impl Parse for Statement {
         let expected = || {
             format!(
                 "expected `{STATE} [x, y, …];`, `{} = K;` or an equation `{D}/{DT} x = …;`",
-                crate::keys::TAYLOR
+                crate::lang::keys::TAYLOR
             )
         };
         let keyword: Ident = input
@@ -78,7 +78,7 @@ impl Parse for Statement {
                 keyword,
                 names: names.into_iter().collect(),
             }
-        } else if keyword == crate::keys::TAYLOR {
+        } else if keyword == crate::lang::keys::TAYLOR {
             input.parse::<Token![=]>()?;
             Statement::Taylor {
                 keyword,

@@ -8,10 +8,10 @@
 use precess_core::sym::{Arena, ExprId, Rational, parse_decimal};
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
-use super::parse::TIME;
-use crate::ctxt::Ctxt;
-use crate::keys::did_you_mean;
-use crate::rigid::values::number_literal;
+use super::attr::TIME;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys::did_you_mean;
+use crate::lang::values::number_literal;
 
 /// What a right-hand side may use, listed in the errors.
 const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`, `powf`";

@@ -8,13 +8,14 @@ use quote::ToTokens;
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
 use super::check::Checker;
-use crate::ctxt::Ctxt;
+use super::ctxt::Ctxt;
+use super::parts::rotation_message;
 
 const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
 
 impl Checker<'_> {
     /// `x`, `y` or `z`.
-    pub(super) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
+    pub(crate) fn axis(&mut self, e: &Expr) -> Option<(Axis, bool)> {
         // `-z` reverses the axis: it matters only for the cone, whose apex it points to.
         let (inner, reversed) = match e {
             Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => (&*u.expr, true),
@@ -37,7 +38,7 @@ impl Checker<'_> {
     /// `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])`, or elementary turns
     /// named by their axes, `zxz(φ, θ, ψ)`, `y(α)`. A rotation whose values are literals is
     /// checked now, and its error spanned on the axis or the matrix.
-    pub(super) fn orientation(
+    pub(crate) fn orientation(
         &mut self,
         e: &Expr,
         kind: &'static str,
@@ -148,15 +149,14 @@ impl Checker<'_> {
         match check_orientation(0, kind, &numeric) {
             Ok(()) => true,
             Err(err) => {
-                self.cx
-                    .error_spanned_by(tokens, super::check::message(&err));
+                self.cx.error_spanned_by(tokens, rotation_message(&err));
                 false
             }
         }
     }
 
     /// `center` or `pivot`.
-    pub(super) fn about(&mut self, e: &Expr) -> Option<About> {
+    pub(crate) fn about(&mut self, e: &Expr) -> Option<About> {
         match path_ident(e).map(|i| i.to_string()).as_deref() {
             Some("center") => Some(About::Center),
             Some("pivot") => Some(About::Pivot),
@@ -169,7 +169,7 @@ impl Checker<'_> {
     }
 
     /// `diag(a, b, c)` or `[[..], [..], [..]]`.
-    pub(super) fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
+    pub(crate) fn tensor(&mut self, e: &Expr) -> Option<[[ExprId; 3]; 3]> {
         const TENSOR: &str = "expected `diag(I1, I2, I3)` or a full matrix `[[Ixx, Ixy, Ixz], [Iyx, Iyy, Iyz], [Izx, Izy, Izz]]`";
         match e {
             Expr::Call(call)

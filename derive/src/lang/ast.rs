@@ -1,11 +1,12 @@
-//! A borrowed view of the derive input: the struct, its fields and its `#[rigid]` and
-//! `#[top]` attributes, keeping the original tokens for spans.
+//! A borrowed view of the struct a derive applies to: its name, its fields and its
+//! attributes (the `#[rigid]` and `#[top]` ones at hand, which more than one attribute's
+//! checks read), keeping the original tokens for spans.
 
 use quote::ToTokens;
 use syn::{Attribute, Data, DeriveInput, Fields, Ident, Type};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 
 /// The struct the derive applies to.
 pub struct Input<'a> {
@@ -13,6 +14,8 @@ pub struct Input<'a> {
     pub ident: &'a Ident,
     /// Its named fields (none for a unit struct).
     pub fields: Vec<Field<'a>>,
+    /// All its attributes.
+    attrs: &'a [Attribute],
     /// The `#[rigid(...)]` attributes, in order.
     pub rigid: Vec<&'a Attribute>,
     /// The `#[top(...)]` attributes, in order.
@@ -57,11 +60,6 @@ impl Field<'_> {
 }
 
 impl<'a> Input<'a> {
-    /// The view of `input`, or `None` after recording why the derive does not apply.
-    pub fn from_syn(cx: &Ctxt, input: &'a DeriveInput) -> Option<Input<'a>> {
-        Self::for_derive(cx, input, "RigidBody")
-    }
-
     /// The view of `input` for the derive named `derive` (its name in the errors).
     pub fn for_derive(cx: &Ctxt, input: &'a DeriveInput, derive: &str) -> Option<Input<'a>> {
         let supported = format!(
@@ -119,19 +117,24 @@ impl<'a> Input<'a> {
                 return None;
             }
         };
-        let named = |name: &str| {
-            input
-                .attrs
-                .iter()
-                .filter(|a| a.path().is_ident(name))
-                .collect()
-        };
-        Some(Input {
+        let mut ast = Input {
             ident: &input.ident,
             fields,
-            rigid: named(keys::RIGID),
-            top: named(keys::TOP),
-        })
+            attrs: &input.attrs,
+            rigid: Vec::new(),
+            top: Vec::new(),
+        };
+        ast.rigid = ast.attributes(keys::RIGID);
+        ast.top = ast.attributes(keys::TOP);
+        Some(ast)
+    }
+
+    /// The struct's attributes named `name` (`#[free]`, `#[body]`, …), in order.
+    pub fn attributes(&self, name: &str) -> Vec<&'a Attribute> {
+        self.attrs
+            .iter()
+            .filter(|a| a.path().is_ident(name))
+            .collect()
     }
 
     /// The field named `name`.

@@ -3,7 +3,7 @@
 //! the reference point (the pivot, or the centre of mass) in the order of
 //! `RigidBody::principal`, emitted on the struct as `impl System<3>` (straight-line code) and
 //! `impl TaylorSystem<3>` (the recurrences, by the same function as the other scenes'
-//! `taylor = K`, `crate::taylor::expand`). Both come from `SymbolicBody::euler_rhs_principal`
+//! `taylor = K`, `crate::lang::taylor::expand`). Both come from `SymbolicBody::euler_rhs_principal`
 //! with a zero torque, the equations `RigidBody::euler_rhs_principal` is generated from.
 //!
 //! On the struct rather than a wrapper: ω is the body's own state, N = 3 cannot meet a
@@ -13,26 +13,20 @@
 use std::borrow::Cow;
 
 use precess_core::body::Frame;
-use precess_core::sym::{Arena, ExprId};
+use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
 
-use super::check::CheckedBody;
-use crate::ctxt::Ctxt;
-use crate::private::Private;
-use crate::symbols::{FieldParameters, Lowering};
+use crate::lang::expansion::Expansion;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
+use crate::rigid::check::CheckedBody;
 
 /// `impl System<3>` and `impl TaylorSystem<3>` for the torque-free rotation of the body, or
 /// nothing after recording why Euler's equations could not be formed.
-pub fn expand(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &mut Arena,
-    parameters: &FieldParameters,
-    checked: &CheckedBody,
-    order: usize,
-) -> TokenStream {
+pub fn expand(ex: &mut Expansion, checked: &CheckedBody, order: usize) -> TokenStream {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
     let p = Private;
     let omega: [ExprId; 3] = std::array::from_fn(|i| arena.input(&format!("omega_{}", i + 1)));
     let zero = [arena.zero(); 3];
@@ -74,7 +68,7 @@ pub fn expand(
         .collect();
     let emitted = Lowering::new(cx, ident, symbols.clone()).lower_reading(arena, &rhs, &reads);
     let (lets, outputs) = (emitted.lets, emitted.outputs);
-    let taylor = crate::taylor::expand(
+    let taylor = crate::lang::taylor::expand(
         cx,
         ident,
         arena,

@@ -1,5 +1,6 @@
 //! The words of the attribute language, each written once: the attribute names, the parts
-//! with their keys, and the `#[top]` keys. The checkers match against these constants and
+//! with their keys, the keys of `#[top]`, `#[free]`, `#[body]` and `#[mechanism]`, and the
+//! "did you mean" suggestions over them. The checkers match against these constants and
 //! every error message lists them from here, so a new part or key is one edit.
 
 /// `#[rigid(...)]`: the body's parts and pivot.

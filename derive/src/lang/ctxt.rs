@@ -8,7 +8,9 @@ use std::cell::RefCell;
 use std::fmt::Display;
 use std::thread;
 
+use proc_macro2::TokenStream;
 use quote::ToTokens;
+use syn::Ident;
 
 /// The errors found so far.
 pub struct Ctxt {
@@ -53,6 +55,32 @@ impl Ctxt {
         } else {
             Err(errors)
         }
+    }
+}
+
+impl Ctxt {
+    /// The end of every macro's expansion: `expanded` if no error was recorded; else every
+    /// error as a `compile_error!`, then `fallback()` (stub impls, or the item as written), so
+    /// code using what the macro would have made adds no cascade of errors of its own.
+    /// `expanded` missing without an error is the macro's own bug, reported on `ident`.
+    pub fn finish(
+        self,
+        ident: &Ident,
+        expanded: Option<TokenStream>,
+        fallback: impl FnOnce() -> TokenStream,
+    ) -> TokenStream {
+        let errors = match (self.check(), expanded) {
+            (Ok(()), Some(tokens)) => return tokens,
+            // Every phase that gives up records why; reaching here is a bug of the macro.
+            (Ok(()), None) => vec![syn::Error::new_spanned(
+                ident,
+                "internal error of the macro: it stopped without an error; please report this",
+            )],
+            (Err(errors), _) => errors,
+        };
+        let mut out: TokenStream = errors.iter().map(syn::Error::to_compile_error).collect();
+        out.extend(fallback());
+        out
     }
 }
 

@@ -1,7 +1,10 @@
-//! The `taylor = K` key of `#[top(...)]` and `#[free(...)]`: its check, and the
-//! `impl TaylorSystem<N>` emitted from the scene's right-hand side through precess-core's
-//! Taylor tape (`precess_core::taylor::Tape::to_tokens`), so the generated and the
-//! interpreted recurrences are one decomposition. Scenes without the key emit nothing here.
+//! The `taylor = K` key, in one place for every attribute and macro that takes it
+//! (`#[rigid]`, `#[top]`, `#[free]`, `#[mechanism]`, `taylor_system!`): found among the
+//! attribute's settings ([`TaylorKey::find`], a repeat an error), its order checked
+//! ([`TaylorKey::order`]), and the `impl TaylorSystem<N>` emitted from the scene's right-hand
+//! side through precess-core's Taylor tape (`precess_core::taylor::Tape::to_tokens`), so the
+//! generated and the interpreted recurrences are one decomposition ([`expand`]). Scenes
+//! without the key emit nothing here.
 
 use precess_core::codegen::Program;
 use precess_core::sym::{Arena, ExprId, SymbolId};
@@ -10,16 +13,57 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::{Expr, ExprLit, Ident, Lit};
 
-use crate::ctxt::Ctxt;
-use crate::keys;
-use crate::private::Private;
-use crate::symbols::SymbolTokens;
+use super::ctxt::Ctxt;
+use super::keys;
+use super::private::Private;
+use super::symbols::SymbolTokens;
+
+/// The value of the `taylor = K` key of one attribute, if it has one.
+pub struct TaylorKey<'a> {
+    value: Option<&'a Expr>,
+}
+
+impl<'a> TaylorKey<'a> {
+    /// The first `taylor = K` among `settings` (`(key, value)` pairs); each repeat is an error
+    /// on its key, `in_what` naming the attribute (`` `#[free]` ``). The attribute's own
+    /// check passes over the key.
+    pub fn find(
+        cx: &Ctxt,
+        settings: impl IntoIterator<Item = (&'a Ident, &'a Expr)>,
+        in_what: &str,
+    ) -> TaylorKey<'a> {
+        let mut value = None;
+        for (key, v) in settings {
+            if key != keys::TAYLOR {
+                continue;
+            }
+            // One order: two would leave the generated recurrences ambiguous.
+            if value.is_some() {
+                cx.error_spanned_by(key, format!("duplicate key `{key}` in {in_what}"));
+            } else {
+                value = Some(v);
+            }
+        }
+        TaylorKey { value }
+    }
+
+    /// True if the attribute has the key.
+    pub fn is_given(&self) -> bool {
+        self.value.is_some()
+    }
+
+    /// The order asked for, checked as [`check`] does; `None` without the key or after
+    /// recording its error.
+    pub fn order(&self, cx: &Ctxt, user_fns: &[(&str, bool)]) -> Option<usize> {
+        check(cx, self.value?, user_fns)
+    }
+}
 
 /// The maximum order of `taylor = K`: an integer literal in `2 ..= MAX_TAYLOR_ORDER` (the
 /// integrator's step needs two orders to estimate its size, so order 1 could never run), and no
 /// user function among `user_fns` (`(key, declared)`): a function's value has no Taylor
 /// coefficients the recurrences could know. `None` after recording the error on `value`.
-pub fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize> {
+fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize> {
     let order = match value {
         Expr::Lit(ExprLit {
             lit: Lit::Int(i), ..
@@ -127,11 +171,11 @@ pub fn expand(
             fn coefficients_extended_into(
                 &self,
                 ws: &mut Self::Workspace,
-                t: ::precess::exact::Dd,
-                y: &[::precess::exact::Dd; #n],
+                t: #p::Dd,
+                y: &[#p::Dd; #n],
                 order: usize,
                 coeffs: &mut [[f64; #n]],
-                low: &mut [[::precess::exact::Dd; #n]],
+                low: &mut [[#p::Dd; #n]],
             ) -> bool {
                 #prelude
                 #extended

@@ -12,7 +12,7 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-use crate::ctxt::Ctxt;
+use crate::lang::ctxt::Ctxt;
 
 /// The Rust expression of each symbol generated code reads.
 #[derive(Clone, Default)]

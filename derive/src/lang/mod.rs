@@ -1,0 +1,35 @@
+//! The attribute language every macro of the crate shares, whichever attribute or macro
+//! reads it. Each attribute's folder (`rigid/`, `top/`, `free/`, `mechanism/`,
+//! `taylor_system/`) holds only what is its own, in the phases attr → check → expand →
+//! fallback over these:
+//!
+//! - `ctxt`: every error of one expansion, checked once, and how every macro ends.
+//! - `keys`: the language's words, each written once, and the "did you mean" suggestions.
+//! - `ast`: the struct a derive applies to, its fields and attributes.
+//! - `syntax`: the grammar of lists, `key = value` settings and `name(key = value, ...)`
+//!   groups, one parser for every attribute.
+//! - `check`: the checker all values go through (one arena, one list of fields read);
+//!   `values`, the value language it reads (numbers, fields, arithmetic, vectors, tensors,
+//!   axes, rotations); `parts`, the part language of `#[rigid]` and a mechanism body.
+//! - `expansion`: what every expansion reads; `symbols`, the lowering of the arena's
+//!   expressions to Rust reading the fields; `tokens`, the body language's values as Rust.
+//! - `taylor`: the `taylor = K` key of every attribute, found, checked and expanded in one
+//!   place.
+//! - `private`: the one hidden path, `::precess::__private`, generated code names precess
+//!   through.
+
+pub mod ast;
+pub mod check;
+pub mod ctxt;
+pub mod expansion;
+pub mod keys;
+pub mod parts;
+pub mod private;
+pub mod symbols;
+pub mod syntax;
+pub mod taylor;
+pub mod tokens;
+pub mod values;
+
+#[cfg(test)]
+pub(crate) mod tests;

@@ -1,0 +1,248 @@
+//! Tests of the shared front end across every attribute and macro: what generated code may
+//! name, and the `taylor = K` key handled alike wherever it is allowed.
+
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// The expansion of `#[derive(RigidBody)]` on `input`, as text (the attributes' own tests
+/// read it too).
+pub(crate) fn rigid_body(input: TokenStream) -> String {
+    let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
+    crate::rigid_body::derive(&input).to_string()
+}
+
+/// The text of one generated method, from its name to the next `fn`.
+pub(crate) fn method<'a>(code: &'a str, name: &str) -> &'a str {
+    let start = code.find(&format!("fn {name} ")).unwrap_or(0);
+    let rest = &code[start..];
+    let end = rest[3..].find(" fn ").map_or(rest.len(), |e| e + 3);
+    &rest[..end]
+}
+
+/// The expansion of `#[derive(Mechanism)]` on `input`.
+fn mechanism(input: TokenStream) -> String {
+    let input: syn::DeriveInput = syn::parse2(input).expect("a struct");
+    crate::mechanism::derive(&input).to_string()
+}
+
+/// Every path into precess in `code` that does not go through the hidden module.
+fn outside_private(code: &str) -> Vec<String> {
+    code.match_indices(":: precess ::")
+        .map(|(i, _)| code[i..].chars().take(60).collect::<String>())
+        .filter(|path| !path.starts_with(":: precess :: __private ::"))
+        .collect()
+}
+
+/// One scene of each attribute and `taylor_system!`, each with `taylor = K` (the Taylor
+/// emitter is where a path into core once leaked: `::precess::taylor::kernels`,
+/// `::precess::exact::Dd`).
+fn every_expansion() -> Vec<(&'static str, String)> {
+    let system = crate::taylor_system::expand(quote! {
+        pub struct Decay { pub k: f64 }
+        state [x];
+        taylor = 12;
+        d/dt x = -k * x * t.sin() + x.sqrt();
+    })
+    .to_string();
+    vec![
+        (
+            "rigid",
+            rigid_body(quote! {
+                #[rigid(cuboid(mass = m, size = [1.0, 2.0, 3.0]), taylor = 10)]
+                struct Brick { m: f64 }
+            }),
+        ),
+        (
+            "top",
+            rigid_body(quote! {
+                #[rigid(disk(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.2]), pivot = [0.0, 0.0, 0.0])]
+                #[top(gravity = 9.81, damping = c, taylor = 10)]
+                struct Top { c: f64 }
+            }),
+        ),
+        (
+            "free",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = 1.0, radius = 0.1))]
+                #[free(gravity = 9.81, drag = 0.1, taylor = 10)]
+                struct Ball;
+            }),
+        ),
+        (
+            "mechanism",
+            mechanism(quote! {
+                #[mechanism(gravity = 9.81, taylor = 10)]
+                #[body(arm, parent = ground, joint = revolute(axis = x), q = theta,
+                       parts(rod(mass = 1.0, length = 1.0, axis = z, at = [0.0, 0.0, -0.5])))]
+                struct Pendulum;
+            }),
+        ),
+        ("taylor_system", system),
+        (
+            "stubs",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = -1.0, radius = 0.1), pivot = [0.0, 0.0, 0.0])]
+                #[top]
+                struct Broken;
+            }),
+        ),
+    ]
+}
+
+/// Generated code names precess only through `::precess::__private`, so a user's imports
+/// and the facade's public layout cannot break it, and core's items it needs can be hidden.
+#[test]
+fn generated_code_names_precess_only_through_the_hidden_module() {
+    for (what, code) in every_expansion() {
+        assert!(code.contains(":: precess :: __private"), "{what}: {code}");
+        assert!(
+            !code.contains("compile_error") || what == "stubs",
+            "{what}: {code}"
+        );
+        let leaks = outside_private(&code);
+        assert!(
+            leaks.is_empty(),
+            "{what} names precess outside __private: {leaks:?}"
+        );
+    }
+}
+
+/// The first message of an expansion's errors, with the text it is spanned on.
+fn first_error(code: &str) -> &str {
+    let start = code.find("compile_error").unwrap_or(0);
+    &code[start..code.len().min(start + 200)]
+}
+
+/// A repeated `taylor` is the same error wherever the key is allowed, naming the attribute.
+#[test]
+fn a_repeated_order_is_one_error_naming_its_attribute() {
+    let cases = [
+        (
+            "`#[rigid]`",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = 1.0, radius = 0.1), taylor = 10, taylor = 12)]
+                struct A;
+            }),
+        ),
+        (
+            "`#[top]`",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 1.0]), pivot = [0.0, 0.0, 0.0])]
+                #[top(taylor = 10, gravity = 9.81, taylor = 12)]
+                struct B;
+            }),
+        ),
+        (
+            "`#[free]`",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = 1.0, radius = 0.1))]
+                #[free(taylor = 10)]
+                #[free(taylor = 12)]
+                struct C;
+            }),
+        ),
+        (
+            "`#[mechanism]`",
+            mechanism(quote! {
+                #[mechanism(taylor = 10, taylor = 12)]
+                #[body(arm, joint = revolute(axis = x), q = theta,
+                       parts(particle(mass = 1.0, at = [0.0, 0.0, -1.0])))]
+                struct D;
+            }),
+        ),
+        (
+            "`taylor_system!`",
+            crate::taylor_system::expand(quote! {
+                struct E;
+                state [x];
+                taylor = 10;
+                taylor = 12;
+                d/dt x = x;
+            })
+            .to_string(),
+        ),
+    ];
+    for (attribute, code) in cases {
+        let expected = format!("duplicate key `taylor` in {attribute}");
+        assert_eq!(
+            code.matches("compile_error").count(),
+            1,
+            "{attribute}: {code}"
+        );
+        assert!(
+            first_error(&code).contains(&expected),
+            "{attribute}: {code}"
+        );
+    }
+}
+
+/// A word alone in a mechanism body's `parts(...)` is told what a part looks like, not the
+/// `#[rigid]` top-level keys (`pivot`, `taylor`), which a mechanism body does not take.
+#[test]
+fn a_bare_word_among_a_bodys_parts_is_told_the_part_form() {
+    let code = mechanism(quote! {
+        #[body(arm, joint = revolute(axis = x), q = theta, parts(particle(mass = 1.0), rod))]
+        struct Arm;
+    });
+    let error = first_error(&code);
+    assert!(
+        error.contains("expected a part `rod(key = value, ...)`"),
+        "{error}"
+    );
+    assert!(!error.contains("pivot"), "{error}");
+}
+
+/// The shared grammar reads a list as `Punctuated::parse_terminated` did: a trailing comma
+/// is allowed, a missing one is an error, and every form keeps its parts.
+#[test]
+fn the_item_grammar_reads_groups_settings_and_commas() {
+    use super::syntax::Item;
+    use syn::parse::Parser;
+    let expected: super::syntax::Expected = |name| format!("no form for {name}");
+    let parse = |tokens: TokenStream| {
+        (|input: syn::parse::ParseStream| Item::parse_list(input, expected)).parse2(tokens)
+    };
+    let items = parse(quote!(
+        sphere(mass = 1.0, radius = r,),
+        pivot = [0.0, 0.0, 1.0],
+    ))
+    .expect("a list with trailing commas");
+    assert_eq!(items.len(), 2);
+    assert!(matches!(&items[0], Item::Group { name, keys } if name == "sphere" && keys.len() == 2));
+    assert!(matches!(&items[1], Item::Setting(kv) if kv.key == "pivot"));
+    // `box` is a keyword, and a part name.
+    let items = parse(quote!(box(mass = 1.0))).expect("a keyword as a part name");
+    assert!(matches!(&items[0], Item::Group { name, .. } if name == "box"));
+    let missing = parse(quote!(taylor = 10 pivot = [0.0, 0.0, 0.0]));
+    assert!(missing.is_err());
+    let alone = parse(quote!(mass = 1.0, rod)).err().map(|e| e.to_string());
+    assert_eq!(alone.as_deref(), Some("no form for rod"));
+    assert!(parse(TokenStream::new()).is_ok_and(|items| items.is_empty()));
+}
+
+/// A repeated setting of `#[top]` or `#[mechanism]` names its attribute, as `#[rigid]`'s
+/// and `#[free]`'s always did; the rest of the list is still checked.
+#[test]
+fn a_repeated_setting_names_its_attribute() {
+    let top = rigid_body(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 1.0]), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, gravity = 1.62, angles = xyz)]
+        struct Top;
+    });
+    assert!(
+        first_error(&top).contains("duplicate key `gravity` in `#[top]`"),
+        "{top}"
+    );
+    assert!(top.contains("`angles` expects"), "{top}");
+    let mechanism = mechanism(quote! {
+        #[mechanism(route = auto, route = symbolic)]
+        #[body(arm, joint = revolute(axis = x), q = theta,
+               parts(particle(mass = 1.0, at = [0.0, 0.0, -1.0])))]
+        struct Arm;
+    });
+    let error = first_error(&mechanism);
+    assert!(
+        error.contains("duplicate key `route` in `#[mechanism]`"),
+        "{mechanism}"
+    );
+}
