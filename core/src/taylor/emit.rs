@@ -17,7 +17,8 @@ use quote::quote;
 
 use super::tape::{ScalarOp, SeriesOp, Tape, Value};
 use crate::codegen::f64_literal;
-use crate::sym::SymbolId;
+use crate::sym::functions::{SeriesCode, SeriesNames};
+use crate::sym::{Func, SymbolId};
 
 fn series(x: u32) -> Ident {
     Ident::new(&format!("__x{x}"), Span::call_site())
@@ -114,6 +115,7 @@ impl Tape {
                 }
                 ScalarOp::Sin(a) => method(s(a), "sin"),
                 ScalarOp::Cos(a) => method(s(a), "cos"),
+                ScalarOp::Func(f, a) => f.call_tokens(s(a)),
             };
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
             scalars.extend(quote!(let #id: f64 = #rhs;));
@@ -145,7 +147,10 @@ impl Tape {
         // read order k to its interior, from the `let`s of the values just made. What
         // remains between one order and the next is the short chain of those terms.
         let split = self.split_products();
-        let interiors = self.steps.iter().map(|st| interior(st.out, st.op, split));
+        let interiors = self
+            .steps
+            .iter()
+            .map(|st| interior(st.out, st.op, layout, split));
         let steps = self
             .steps
             .iter()
@@ -263,6 +268,7 @@ impl Tape {
                         | SeriesOp::Sqrt(_)
                         | SeriesOp::Powf(..)
                         | SeriesOp::SinCos(_)
+                        | SeriesOp::Func(..)
                 )
             })
             .count()
@@ -309,6 +315,7 @@ impl Tape {
                 SeriesOp::Square(a) | SeriesOp::ScalarDiv(_, a) | SeriesOp::Powf(a, _) => {
                     count(a, true)
                 }
+                SeriesOp::Func(_, a) => count(a, false),
             }
         }
         for out in &self.outputs {
@@ -337,6 +344,7 @@ impl Tape {
                     | SeriesOp::Sqrt(_)
                     | SeriesOp::Powf(..)
                     | SeriesOp::SinCos(_)
+                    | SeriesOp::Func(..)
             );
             let x = st.out as usize;
             if !own_history && reads.get(x) == Some(&1) && ranged.get(x) == Some(&false) {
@@ -407,6 +415,7 @@ fn order_zero(
 ) -> TokenStream {
     let x = |i: u32| layout.current(i, quote!(0));
     let value_expr = match op {
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).zero,
         SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
         SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
         SeriesOp::AddScalar(a, c) => binary(x(a), quote!(+), s(c)),
@@ -443,7 +452,7 @@ fn order_zero(
 
 /// The first phase of one step at the order `__k ≥ 1`: the part of its sum that reads
 /// orders below `__k` only, into `let`s (nothing for a step without a sum).
-fn interior(out: u32, op: SeriesOp, split: bool) -> TokenStream {
+fn interior(out: u32, op: SeriesOp, layout: &Layout, split: bool) -> TokenStream {
     let (dot, square_interior, square) = (
         kernel("dot_reversed"),
         kernel("square_interior"),
@@ -474,6 +483,7 @@ fn interior(out: u32, op: SeriesOp, split: bool) -> TokenStream {
             quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
         }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
+        SeriesOp::Func(f, a) => func_code(out, f, a, layout).interior,
         SeriesOp::SinCos(_) => {
             let (c, d) = (series(out + 1), series(out + 2));
             let (is, ic) = (interior_id(out, "s"), interior_id(out, "c"));
@@ -503,6 +513,7 @@ fn order_k(
     // A read at the current order: the operand's `let`, or its row for the state and time.
     let at = |x: u32| layout.current(x, quote!(__k));
     let value_expr = match op {
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).order_k,
         SeriesOp::Add(a, b) => binary(at(a), quote!(+), at(b)),
         SeriesOp::Sub(a, b) => binary(at(a), quote!(-), at(b)),
         SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => at(a),
@@ -556,6 +567,23 @@ fn order_k(
         }
     };
     store(out, layout, quote!(__k), value_expr)
+}
+
+/// The emitted code of a primitive's step `out = f(a)`, by the primitive
+/// ([`crate::sym::functions`]), with the names of this emitter.
+fn func_code(out: u32, f: Func, a: u32, layout: &Layout) -> SeriesCode {
+    let names = SeriesNames {
+        out: series(out),
+        value: value(out),
+        companions: (1..=f.primitive().companions())
+            .map(|j| series(out + j))
+            .collect(),
+        arg_zero: layout.current(a, quote!(0)),
+        arg_k: layout.current(a, quote!(__k)),
+        interior: interior_id(out, ""),
+        dot: kernel("dot_reversed"),
+    };
+    f.primitive().series_code(&names)
 }
 
 fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {

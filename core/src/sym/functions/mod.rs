@@ -1,0 +1,246 @@
+//! The registry of primitive functions: one file per function holds everything the engine
+//! knows about it, as heyoka does it.
+//!
+//! A primitive `f` is a [`Primitive`] in its own file here: its name (the call in user
+//! expressions, the plain text, the `f64` method), its value in `f64` and double-double, its
+//! exact rules (the canonical form, `exp 0 = 1`), its derivative `f′(u)`, its LaTeX, the Rust
+//! tokens of a call, and its Taylor recurrence in the three forms the engine runs (the `f64`
+//! interpreter, the double-double low orders of the extended mode, the emitted code of
+//! `taylor = K`). The engine's walks treat [`Node::Func`](super::Node::Func) and every
+//! lowered form of it (`Op::Func`, `ScalarOp::Func`, `SeriesOp::Func`) through this trait
+//! alone, so adding a primitive is its file plus three lines of registration below (`mod`,
+//! `pub use` of its handle, and the entry of `PRIMITIVES`), and the macros see it by name through [`Func::named`].
+//!
+//! A recurrence may need series of its own besides its output (companions): the output is
+//! series `out`, the companions `out + 1 …`. The exponential keeps the derivative of its
+//! argument, `d_j = j u_j`, as one; a sine would keep its cosine. A recurrence reads its
+//! argument at the current order only (the emitter may keep an argument read once as a
+//! `let`, with no row); one that needs the argument's lower orders keeps them in a
+//! companion, as the exponential does with `d`.
+//!
+//! The elementary functions that came before the registry (`sin`, `cos`, `sqrt`, real
+//! powers) are still nodes of their own, with the trigonometric rules of the canonical form
+//! (`sin² u = 1 − cos² u`) that expansion and cancellation rely on.
+
+mod rows;
+
+use std::cmp::Ordering;
+use std::fmt;
+use std::hash::{Hash, Hasher};
+
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+use super::arena::{Arena, ExprId, Node};
+use super::error::SymError;
+use crate::exact::Dd;
+
+pub(crate) use rows::{DdTable, F64Table};
+
+/// A primitive function of the engine; see the module's docs for what each part is for.
+pub(crate) trait Primitive: Sync {
+    /// The name: the call in user expressions (`exp(x)`, `x.exp()`), the plain text, and
+    /// the `f64` method of the generated code.
+    fn name(&self) -> &'static str;
+    /// The LaTeX command written before the argument (`\exp`).
+    fn latex(&self) -> &'static str;
+    /// The value in `f64`.
+    fn value(&self, x: f64) -> f64;
+    /// The value in double-double (the extended mode's constants and order 0).
+    fn value_dd(&self, x: Dd) -> Dd;
+    /// The exact value of `f(u)` when a rule gives one (`exp 0 = 1`), `None` to keep the
+    /// node `f(u)`.
+    ///
+    /// # Errors
+    /// A [`SymError`] for an argument outside the domain.
+    fn exact(&self, arena: &mut Arena, u: ExprId) -> Result<Option<ExprId>, SymError>;
+    /// `f′(u)`, given `value = f(u)` (which the exponential is its own derivative of).
+    fn derivative(&self, arena: &mut Arena, u: ExprId, value: ExprId) -> ExprId;
+    /// The number of companion series the recurrence keeps after its output.
+    fn companions(&self) -> u32;
+    /// Floating-point operations of the recurrence at order `k` (a multiply–add counts two).
+    fn flops(&self, k: usize) -> usize;
+    /// Writes the output (and companions) at order `k` in `f64`, the argument known to
+    /// order `k`, the output to `k − 1`.
+    fn series(&self, c: &mut F64Table<'_>, arg: u32, out: u32, k: usize);
+    /// As [`Primitive::series`], in double-double.
+    fn series_dd(&self, c: &mut DdTable<'_>, arg: u32, out: u32, k: usize);
+    /// The emitted code of the recurrence, which must round as [`Primitive::series`] does.
+    fn series_code(&self, names: &SeriesNames) -> SeriesCode;
+}
+
+/// The identifiers the emitted code of one recurrence step uses.
+pub(crate) struct SeriesNames {
+    /// The output's row (`row[k]` is its order-k coefficient).
+    pub out: Ident,
+    /// The `let` that must hold the output's current order once the step has run.
+    pub value: Ident,
+    /// The companions' rows.
+    pub companions: Vec<Ident>,
+    /// The argument at order 0.
+    pub arg_zero: TokenStream,
+    /// The argument at the current order `__k`.
+    pub arg_k: TokenStream,
+    /// The `let` for the part of the sum that reads lower orders only.
+    pub interior: Ident,
+    /// The path of [`crate::taylor::kernels::dot_reversed`].
+    pub dot: TokenStream,
+}
+
+/// The emitted code of one recurrence step: order 0, then at each order `__k ≥ 1` the
+/// interior (lower orders only, run before any step of order `__k`) and the value.
+pub(crate) struct SeriesCode {
+    /// Order 0: binds [`SeriesNames::value`] and writes `out[0]`.
+    pub zero: TokenStream,
+    /// The interior at order `__k`.
+    pub interior: TokenStream,
+    /// The value at order `__k`: binds [`SeriesNames::value`] and writes `out[__k]`.
+    pub order_k: TokenStream,
+}
+
+/// Every primitive, in a fixed order (the index [`Func::index`] gives, which the extended
+/// mode's tables store). Registration is an entry here and the `mod` and `pub use` lines
+/// above.
+static PRIMITIVES: [&dyn Primitive; 0] = [];
+
+/// A handle on a registered primitive function (see the module's docs); equal, ordered and
+/// hashed by name, which the registry keeps unique.
+#[derive(Clone, Copy)]
+pub struct Func(&'static dyn Primitive);
+
+impl Func {
+    /// The primitive called `name`, if one is registered.
+    ///
+    /// ```
+    /// use precess_core::sym::Func;
+    /// for f in Func::all() {
+    ///     assert_eq!(Func::named(f.name()), Some(f));
+    /// }
+    /// assert_eq!(Func::named("gamma"), None);
+    /// ```
+    pub fn named(name: &str) -> Option<Func> {
+        Func::all().find(|f| f.name() == name)
+    }
+
+    /// Every registered primitive.
+    pub fn all() -> impl Iterator<Item = Func> {
+        PRIMITIVES.iter().map(|&p| Func(p))
+    }
+
+    /// The primitive with index `i` (as [`Func::index`] gives), if there is one.
+    pub fn from_index(i: usize) -> Option<Func> {
+        PRIMITIVES.get(i).map(|&p| Func(p))
+    }
+
+    /// The index in the registry (fixed within one build, for the extended mode's tables).
+    pub fn index(self) -> usize {
+        PRIMITIVES
+            .iter()
+            .position(|p| p.name() == self.name())
+            .unwrap_or(usize::MAX)
+    }
+
+    /// The name, as user expressions call it.
+    pub fn name(self) -> &'static str {
+        self.0.name()
+    }
+
+    /// The LaTeX command written before the argument.
+    pub fn latex(self) -> &'static str {
+        self.0.latex()
+    }
+
+    /// The value at `x` in `f64`.
+    pub fn value(self, x: f64) -> f64 {
+        self.0.value(x)
+    }
+
+    /// The value at `x` in double-double.
+    pub fn value_dd(self, x: Dd) -> Dd {
+        self.0.value_dd(x)
+    }
+
+    /// The Rust tokens of `f(x)`: the `f64` method of the name.
+    pub fn call_tokens(self, x: TokenStream) -> TokenStream {
+        let f = Ident::new(self.name(), proc_macro2::Span::call_site());
+        quote!(f64::#f(#x))
+    }
+
+    pub(crate) fn primitive(self) -> &'static dyn Primitive {
+        self.0
+    }
+}
+
+impl PartialEq for Func {
+    fn eq(&self, other: &Func) -> bool {
+        self.name() == other.name()
+    }
+}
+
+impl Eq for Func {}
+
+impl Hash for Func {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.name().hash(state);
+    }
+}
+
+impl PartialOrd for Func {
+    fn partial_cmp(&self, other: &Func) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Func {
+    fn cmp(&self, other: &Func) -> Ordering {
+        self.name().cmp(other.name())
+    }
+}
+
+impl fmt::Debug for Func {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl Arena {
+    /// `f(u)` in canonical form: the exact value when the primitive's rules give one, else
+    /// the node.
+    ///
+    /// # Errors
+    /// [`SymError::ForeignExpression`] for an id of another arena; what the primitive's
+    /// rules return for an argument outside its domain.
+    ///
+    /// (Each primitive's handle shows one in use.)
+    pub fn apply(&mut self, f: Func, u: ExprId) -> Result<ExprId, SymError> {
+        self.check_owned(&[u])?;
+        match f.primitive().exact(self, u)? {
+            Some(v) => Ok(v),
+            None => Ok(self.intern(Node::Func(f, u))),
+        }
+    }
+
+    /// `d f(u)/ds = f′(u) u′` for the node `e = f(u)`, with `du = ∂u/∂s` known.
+    pub(crate) fn diff_func(&mut self, f: Func, u: ExprId, e: ExprId, du: ExprId) -> ExprId {
+        if du == self.zero() {
+            return du;
+        }
+        let d = f.primitive().derivative(self, u, e);
+        self.mul(d, du)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every handle names its own entry, and names are unique (a lookup by name is exact).
+    #[test]
+    fn handles_and_names_agree() {
+        for f in Func::all() {
+            assert_eq!(Func::named(f.name()), Some(f));
+            assert_eq!(Func::from_index(f.index()), Some(f));
+        }
+        assert_eq!(Func::from_index(PRIMITIVES.len()), None);
+    }
+}
