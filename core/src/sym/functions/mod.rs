@@ -22,7 +22,10 @@
 //! powers) are still nodes of their own, with the trigonometric rules of the canonical form
 //! (`sin² u = 1 − cos² u`) that expansion and cancellation rely on.
 
+mod exp;
 mod rows;
+
+pub use exp::EXP;
 
 use std::cmp::Ordering;
 use std::fmt;
@@ -101,7 +104,7 @@ pub(crate) struct SeriesCode {
 /// Every primitive, in a fixed order (the index [`Func::index`] gives, which the extended
 /// mode's tables store). Registration is an entry here and the `mod` and `pub use` lines
 /// above.
-static PRIMITIVES: [&dyn Primitive; 0] = [];
+static PRIMITIVES: [&dyn Primitive; 1] = [&exp::Exp];
 
 /// A handle on a registered primitive function (see the module's docs); equal, ordered and
 /// hashed by name, which the registry keeps unique.
