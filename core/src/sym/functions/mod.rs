@@ -236,6 +236,100 @@ impl Arena {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sym::Rational;
+    use proptest::prelude::*;
+
+    /// The highest order the properties compare (the repeated derivatives grow fast).
+    const ORDERS: usize = 7;
+
+    /// The coefficients of `f(u(τ))` for `u = p0 + p1 τ + p2 τ²` (quarters), from the
+    /// recurrence in f64 and in double-double, and from repeated symbolic derivatives
+    /// `(1/k!) dᵏ/dτᵏ f(u)` at τ = 0 (a second formulation: the derivative, not the series).
+    fn three_ways(f: Func, p: [i64; 3]) -> [[f64; ORDERS]; 3] {
+        let mut a = Arena::new();
+        let x = a.coordinate("x");
+        let s = a.as_symbol(x).unwrap();
+        let quarter = |n: i64| Rational::new(i128::from(n), 4).unwrap();
+        let terms: Vec<ExprId> = (0..3)
+            .map(|j| {
+                let c = a.constant(quarter(p[j]));
+                let xj = a.powi(x, j as i64).unwrap();
+                a.mul(c, xj)
+            })
+            .collect();
+        let u = a.sum(&terms);
+        let mut d = a.apply(f, u).unwrap();
+        let mut symbolic = [0.0; ORDERS];
+        let mut factorial = 1.0;
+        for (k, c) in symbolic.iter_mut().enumerate() {
+            if k > 0 {
+                factorial *= k as f64;
+            }
+            *c = a.eval(d, &[0.0]) / factorial;
+            d = a.diff(d, s);
+        }
+        let width = 2 + f.primitive().companions() as usize;
+        let mut w = vec![0.0; width * ORDERS];
+        let mut t = F64Table {
+            c: &mut w,
+            st: ORDERS,
+        };
+        let mut dw = vec![0.0; DdTable::len(width, ORDERS)];
+        let mut td = DdTable {
+            w: &mut dw,
+            st: ORDERS,
+        };
+        for (j, &pj) in p.iter().enumerate() {
+            t.set(0, j, quarter(pj).to_f64());
+            td.set(0, j, Dd::from(quarter(pj).to_f64()));
+        }
+        let (mut series, mut series_dd) = ([0.0; ORDERS], [0.0; ORDERS]);
+        for k in 0..ORDERS {
+            f.primitive().series(&mut t, 0, 1, k);
+            f.primitive().series_dd(&mut td, 0, 1, k);
+            series[k] = t.get(1, k);
+            series_dd[k] = td.get(1, k).to_f64();
+        }
+        [symbolic, series, series_dd]
+    }
+
+    proptest! {
+        /// Every registered primitive's recurrence (f64 and double-double) gives the Taylor
+        /// coefficients its derivative gives, on random quadratic arguments.
+        #[test]
+        fn recurrences_agree_with_repeated_derivatives(p in proptest::array::uniform3(-6i64..=6)) {
+            for f in Func::all() {
+                let [symbolic, series, series_dd] = three_ways(f, p);
+                let scale = symbolic.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                for k in 0..ORDERS {
+                    prop_assert!(
+                        (series[k] - symbolic[k]).abs() <= 1e-12 * scale,
+                        "{} order {k}: series {} vs derivative {}", f.name(), series[k], symbolic[k]
+                    );
+                    prop_assert!(
+                        (series_dd[k] - symbolic[k]).abs() <= 1e-12 * scale,
+                        "{} order {k}: double-double {} vs derivative {}", f.name(), series_dd[k], symbolic[k]
+                    );
+                }
+            }
+        }
+
+        /// Every registered primitive's derivative matches central differences of its value.
+        #[test]
+        fn derivatives_match_central_differences(x in -2.0f64..2.0) {
+            for f in Func::all() {
+                let mut a = Arena::new();
+                let u = a.coordinate("u");
+                let s = a.as_symbol(u).unwrap();
+                let e = a.apply(f, u).unwrap();
+                let d = a.diff(e, s);
+                let h = 1e-5;
+                let fd = (f.value(x + h) - f.value(x - h)) / (2.0 * h);
+                let got = a.eval(d, &[x]);
+                prop_assert!((got - fd).abs() <= 1e-8 * fd.abs().max(1.0), "{}: {got} vs {fd}", f.name());
+            }
+        }
+    }
 
     /// Every handle names its own entry, and names are unique (a lookup by name is exact).
     #[test]
