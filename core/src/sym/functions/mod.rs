@@ -1,15 +1,16 @@
 //! The registry of primitive functions: one file per function holds everything the engine
 //! knows about it, as heyoka does it.
 //!
-//! A primitive `f` is a [`Primitive`] in its own file here: its name (the call in user
-//! expressions, the plain text, the `f64` method), its value in `f64` and double-double, its
-//! exact rules (the canonical form, `exp 0 = 1`), its derivative `f′(u)`, its LaTeX, the Rust
-//! tokens of a call, and its Taylor recurrence in the three forms the engine runs (the `f64`
-//! interpreter, the double-double low orders of the extended mode, the emitted code of
-//! `taylor = K`). The engine's walks treat [`Node::Func`](super::Node::Func) and every
+//! A primitive `f` is a `Primitive` (a crate-internal trait) in its own file here: its name
+//! (the call in user expressions, the plain text, the `f64` method), its value in `f64` and
+//! double-double, its exact rules (the canonical form, `exp 0 = 1`), its derivative `f′(u)`,
+//! its LaTeX, the Rust tokens of a call, and its Taylor recurrence in the three forms the
+//! engine runs (the `f64` interpreter, the double-double low orders of the extended mode,
+//! the emitted code of `taylor = K`). The engine's walks treat [`Node::Func`] and every
 //! lowered form of it (`Op::Func`, `ScalarOp::Func`, `SeriesOp::Func`) through this trait
 //! alone, so adding a primitive is its file plus three lines of registration below (`mod`,
-//! `pub use` of its handle, and the entry of `PRIMITIVES`), and the macros see it by name through [`Func::named`].
+//! `pub use` of its handle, and the entry of `PRIMITIVES`), and the macros see it by name
+//! through [`Func::named`].
 //!
 //! A recurrence may need series of its own besides its output (companions): the output is
 //! series `out`, the companions `out + 1 …`. The exponential keeps the derivative of its

@@ -25,7 +25,7 @@ pub struct TaylorConfig {
     pub atol: f64,
     /// Highest order used (default 40; at least 2). A tolerance whose Jorba–Zou order is
     /// above this cap (or the system's) is met with the capped order and a shorter step,
-    /// which keeps the estimated error at ε (see [`TaylorConfig::step_factor`]). A jet whose
+    /// which keeps the estimated error at ε (see `TaylorConfig::step_factor`). A jet whose
     /// orders 1 … p all vanish is computed again to this order before the step is sized.
     pub max_order: usize,
     /// A fixed order instead of the tolerance's (default `None`): for convergence studies.
