@@ -430,7 +430,7 @@ fn count(p: &Program) -> OpCount {
             Op::Div(..) => c.divs += 1,
             Op::Neg(_) => c.negs += 1,
             Op::Sqrt(_) => c.sqrts += 1,
-            Op::Powf(..) => c.powfs += 1,
+            Op::Powf(..) | Op::Func(..) => c.powfs += 1,
             Op::Sin(x) => sines.push(x),
             Op::Cos(x) => cosines.push(x),
             Op::Const(_) | Op::Input(_) => {}

@@ -2,7 +2,7 @@ precess::taylor_system! {
     struct Growth;
     state [x, y];
     taylor = 20;
-    d/dt x = x.exp();
+    d/dt x = x.ln();
     d/dt y = y.powi(1.5) + x % y + tan(y);
 }
 

@@ -20,7 +20,8 @@ pub struct OpCount {
     pub negs: usize,
     /// Square roots.
     pub sqrts: usize,
-    /// Real powers (`powf`).
+    /// Real powers (`powf`) and the registered primitives (`exp`): one call of a
+    /// transcendental function each (the generated code's macros report these fields).
     pub powfs: usize,
     /// Lone sines or cosines.
     pub trig: usize,
@@ -88,7 +89,7 @@ impl Program {
                 Op::Div(..) => c.divs += 1,
                 Op::Neg(_) => c.negs += 1,
                 Op::Sqrt(_) => c.sqrts += 1,
-                Op::Powf(..) => c.powfs += 1,
+                Op::Powf(..) | Op::Func(..) => c.powfs += 1,
                 Op::Sin(a) => sin_args.push(*a),
                 Op::Cos(a) => cos_args.push(*a),
             }

@@ -31,6 +31,7 @@ impl Program {
                 Op::Powf(a, r) => v(a).powf(*r),
                 Op::Sin(a) => v(a).sin(),
                 Op::Cos(a) => v(a).cos(),
+                Op::Func(f, a) => f.value(v(a)),
             };
             scratch.push(x);
         }

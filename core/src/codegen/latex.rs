@@ -205,6 +205,7 @@ impl Latex<'_> {
             Node::Powr(b, r) => vec![text("{"), Task::Factor(*b), text(format!("}}^{{{r}}}"))],
             Node::Sin(u) => vec![text("\\sin"), Task::Argument(*u)],
             Node::Cos(u) => vec![text("\\cos"), Task::Argument(*u)],
+            Node::Func(f, u) => vec![text(f.latex()), Task::Argument(*u)],
         }
     }
 }

@@ -5,7 +5,7 @@
 //! Negative coefficients become subtractions, negative powers divisions, and integer powers
 //! square-and-multiply chains: the instruction list is what the emitted Rust executes.
 
-use crate::sym::{Arena, ExprId, IdMap, Node, Rational, SymbolId};
+use crate::sym::{Arena, ExprId, Func, IdMap, Node, Rational, SymbolId};
 
 /// Index of an instruction's result in a [`Program`].
 pub type Slot = u32;
@@ -35,6 +35,8 @@ pub enum Op {
     Sin(Slot),
     /// `cos a`.
     Cos(Slot),
+    /// `f(a)` for a registered primitive `f` ([`crate::sym::functions`]).
+    Func(Func, Slot),
 }
 
 /// Hashable identity of an instruction (constants by their bits) for value numbering.
@@ -45,6 +47,7 @@ enum Key {
     Bin(u8, Slot, Slot),
     Un(u8, Slot),
     Powf(Slot, u64),
+    Func(Func, Slot),
 }
 
 impl Op {
@@ -69,6 +72,7 @@ impl Op {
             Op::Powf(a, r) => Key::Powf(a, r.to_bits()),
             Op::Sin(a) => Key::Un(2, a),
             Op::Cos(a) => Key::Un(3, a),
+            Op::Func(f, a) => Key::Func(f, a),
         }
     }
 }
@@ -126,7 +130,7 @@ fn lowering_order(arena: &Arena, outputs: &[ExprId]) -> Vec<ExprId> {
             Node::Add(terms) => terms.iter().for_each(|&t| factors_of(t, &mut next)),
             Node::Mul(_) => factors_of(e, &mut next),
             Node::Pow(b, _) | Node::Powr(b, _) => next.push(*b),
-            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => next.push(*u),
+            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) | Node::Func(_, u) => next.push(*u),
         }
         stack.extend(next.iter().filter(|x| !seen.contains_key(x)));
     }
@@ -276,6 +280,10 @@ impl Lowering<'_> {
             Node::Cos(u) => {
                 let u = self.node(*u);
                 self.emit(Op::Cos(u))
+            }
+            Node::Func(f, u) => {
+                let u = self.node(*u);
+                self.emit(Op::Func(*f, u))
             }
         };
         self.by_node.insert(e, s);

@@ -91,6 +91,7 @@ impl Program {
                     let (a, r) = (operand(a), f64_literal(r));
                     quote!(f64::powf(#a, #r))
                 }
+                Op::Func(f, a) => f.call_tokens(operand(a)),
                 Op::Sin(a) | Op::Cos(a) => {
                     if let (Some(&s), Some(&c)) = (sines.get(&a), cosines.get(&a)) {
                         if !paired_done.contains(&a) {
@@ -139,7 +140,9 @@ fn operands(op: &Op) -> Vec<Slot> {
     match *op {
         Op::Const(_) | Op::Input(_) => Vec::new(),
         Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => vec![a, b],
-        Op::Neg(a) | Op::Sqrt(a) | Op::Powf(a, _) | Op::Sin(a) | Op::Cos(a) => vec![a],
+        Op::Neg(a) | Op::Sqrt(a) | Op::Powf(a, _) | Op::Sin(a) | Op::Cos(a) | Op::Func(_, a) => {
+            vec![a]
+        }
     }
 }
 

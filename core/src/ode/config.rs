@@ -77,21 +77,7 @@ impl AdaptiveConfig {
     /// [`OdeError::InvalidTolerance`], [`OdeError::InvalidStep`] or
     /// [`OdeError::InvalidParameter`] for the first field out of range.
     pub fn validate(&self) -> Result<(), OdeError> {
-        let pos = |v: f64| v.is_finite() && v > 0.0;
-        if !pos(self.rtol) || !pos(self.atol) {
-            return Err(OdeError::InvalidTolerance {
-                rtol: self.rtol,
-                atol: self.atol,
-            });
-        }
-        if let Some(h) = self.h0
-            && !pos(h)
-        {
-            return Err(OdeError::InvalidStep { h });
-        }
-        if self.h_max.is_nan() || self.h_max <= 0.0 {
-            return Err(OdeError::InvalidStep { h: self.h_max });
-        }
+        check_tolerances(self.rtol, self.atol, self.h0, self.h_max)?;
         let checks = [
             (
                 "safety",
@@ -211,4 +197,31 @@ impl FixedStepConfig {
         let n = steps as u64;
         Ok(Some((n, span / n as f64)))
     }
+}
+
+/// The checks every adaptive configuration shares (the pairs' and the Taylor integrator's):
+/// finite positive tolerances, a finite positive step `h` if one is set, and a positive
+/// `h_max` (infinite allowed).
+///
+/// # Errors
+/// [`OdeError::InvalidTolerance`] for a tolerance, [`OdeError::InvalidStep`] for a step.
+pub(crate) fn check_tolerances(
+    rtol: f64,
+    atol: f64,
+    h: Option<f64>,
+    h_max: f64,
+) -> Result<(), OdeError> {
+    let pos = |v: f64| v.is_finite() && v > 0.0;
+    if !pos(rtol) || !pos(atol) {
+        return Err(OdeError::InvalidTolerance { rtol, atol });
+    }
+    if let Some(h) = h
+        && !pos(h)
+    {
+        return Err(OdeError::InvalidStep { h });
+    }
+    if h_max.is_nan() || h_max <= 0.0 {
+        return Err(OdeError::InvalidStep { h: h_max });
+    }
+    Ok(())
 }

@@ -33,6 +33,7 @@ mod system;
 mod trajectory;
 
 pub use adaptive::Adaptive;
+pub(crate) use config::check_tolerances;
 pub use config::{AdaptiveConfig, FixedStepConfig};
 pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
@@ -48,5 +49,6 @@ pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;
 pub use stepper::Stepper;
+pub(crate) use stepper::inherent_stepper;
 pub use system::{FnSystem, Stats, System};
 pub use trajectory::{MAX_SAMPLES, Quantities, StateColumns, Trajectory};

@@ -3,7 +3,7 @@
 //! state (a terminal event's).
 
 use super::adaptive::Adaptive;
-use super::error::{OdeError, check_finite};
+use super::error::OdeError;
 use super::pairs::EmbeddedPair;
 use super::system::{Stats, System};
 
@@ -71,39 +71,50 @@ pub trait Stepper {
     fn restart(&mut self, t: f64, state: Self::State) -> Result<(), OdeError>;
 }
 
-impl<S: System<N>, P: EmbeddedPair, const N: usize> Stepper for Adaptive<S, P, N> {
-    type State = [f64; N];
+/// The [`Stepper`] of an adaptive driver over `[f64; N]` whose inherent methods carry the
+/// trait's meaning (`t`, `y`, `stats`, `step`, `last_step_start`, `dense_at`,
+/// `reset_state`): the pairs' [`Adaptive`] and the Taylor integrator, written once.
+/// Invoked as `inherent_stepper!([generics] Type, N)`.
+macro_rules! inherent_stepper {
+    ([$($generics:tt)*] $ty:ty, $n:ident) => {
+        impl<$($generics)*> $crate::ode::Stepper for $ty {
+            type State = [f64; $n];
 
-    fn t(&self) -> f64 {
-        Adaptive::t(self)
-    }
+            fn t(&self) -> f64 {
+                <$ty>::t(self)
+            }
 
-    fn state(&self) -> &[f64; N] {
-        self.y()
-    }
+            fn state(&self) -> &[f64; $n] {
+                self.y()
+            }
 
-    fn stats(&self) -> Stats {
-        Adaptive::stats(self)
-    }
+            fn stats(&self) -> $crate::ode::Stats {
+                <$ty>::stats(self)
+            }
 
-    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        Adaptive::step(self, t_limit)
-    }
+            fn step(&mut self, t_limit: f64) -> Result<(), $crate::ode::OdeError> {
+                <$ty>::step(self, t_limit)
+            }
 
-    fn step_start(&self) -> f64 {
-        self.last_step_start()
-    }
+            fn step_start(&self) -> f64 {
+                self.last_step_start()
+            }
 
-    fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
-        self.dense_at(t)
-    }
+            fn state_at(&mut self, t: f64) -> Result<[f64; $n], $crate::ode::OdeError> {
+                self.dense_at(t)
+            }
 
-    fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
-        if !t.is_finite() {
-            return Err(OdeError::NonFiniteTime { t });
+            fn restart(&mut self, t: f64, state: [f64; $n]) -> Result<(), $crate::ode::OdeError> {
+                if !t.is_finite() {
+                    return Err($crate::ode::OdeError::NonFiniteTime { t });
+                }
+                $crate::ode::check_finite(&state)?;
+                self.reset_state(t, state);
+                Ok(())
+            }
         }
-        check_finite(&state)?;
-        self.reset_state(t, state);
-        Ok(())
-    }
+    };
 }
+pub(crate) use inherent_stepper;
+
+inherent_stepper!([S: System<N>, P: EmbeddedPair, const N: usize] Adaptive<S, P, N>, N);

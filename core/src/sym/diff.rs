@@ -128,6 +128,10 @@ impl Arena {
                 let m = self.mul(sn, du);
                 self.neg(m)
             }
+            Node::Func(f, u) => {
+                let du = d(self, u);
+                self.diff_func(f, u, e, du)
+            }
         }
     }
 

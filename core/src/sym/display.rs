@@ -74,6 +74,7 @@ impl Arena {
             Node::Sqrt(u) => (3, call("sqrt", *u)),
             Node::Sin(u) => (3, call("sin", *u)),
             Node::Cos(u) => (3, call("cos", *u)),
+            Node::Func(f, u) => (3, call(f.name(), *u)),
         }
     }
 }

@@ -46,6 +46,7 @@ impl Arena {
             Node::Sqrt(u) => v(u).sqrt(),
             Node::Sin(u) => v(u).sin(),
             Node::Cos(u) => v(u).cos(),
+            Node::Func(f, u) => f.value(v(u)),
         }
     }
 }

@@ -168,6 +168,11 @@ impl Arena {
                 let eu = done(self, u);
                 self.cos(eu)
             }
+            // An opaque function of its expanded argument, as real powers are.
+            Node::Func(f, u) => {
+                let eu = done(self, u);
+                self.apply(f, eu).unwrap_or(id)
+            }
         }
     }
 

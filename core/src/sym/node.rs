@@ -5,6 +5,7 @@
 //! node kind is added here and in the constructors, not in every walk.
 
 use super::arena::{ExprId, SymbolId};
+use super::functions::Func;
 use super::rational::Rational;
 
 /// One node of the expression graph. Constructors in [`Arena`](super::Arena) keep these
@@ -31,6 +32,8 @@ pub enum Node {
     Sin(ExprId),
     /// Cosine.
     Cos(ExprId),
+    /// A registered primitive function of its argument ([`super::functions`]).
+    Func(Func, ExprId),
 }
 
 impl Node {
@@ -48,7 +51,9 @@ impl Node {
             Node::Const(_) | Node::Sym(_) => &[],
             Node::Add(c) | Node::Mul(c) => c,
             Node::Pow(b, _) | Node::Powr(b, _) => std::slice::from_ref(b),
-            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) => std::slice::from_ref(u),
+            Node::Sqrt(u) | Node::Sin(u) | Node::Cos(u) | Node::Func(_, u) => {
+                std::slice::from_ref(u)
+            }
         }
     }
 

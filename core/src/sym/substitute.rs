@@ -64,6 +64,7 @@ impl Arena {
             Node::Sqrt(u) => self.sqrt(d(&u))?,
             Node::Sin(u) => self.sin(d(&u)),
             Node::Cos(u) => self.cos(d(&u)),
+            Node::Func(f, u) => self.apply(f, d(&u))?,
         })
     }
 }

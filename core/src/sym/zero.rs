@@ -168,6 +168,12 @@ impl Arena {
                 }
                 Node::Sin(u) => sin_cos(v(u)?, seed).0,
                 Node::Cos(u) => sin_cos(v(u)?, seed).1,
+                // Opaque, as real powers are: a pseudo-random value of the argument's value
+                // and the function.
+                Node::Func(f, u) => {
+                    let tag = mix(0x5052_494d ^ f.index() as u64);
+                    mix(v(u)? ^ mix(seed ^ tag)) % P
+                }
             };
             values.insert(id, value);
         }

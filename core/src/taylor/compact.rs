@@ -21,7 +21,7 @@ use super::recurrence_dd::{self, DdTable};
 use super::tape::{ScalarOp, SeriesOp, SeriesStep, Tape, Value};
 use crate::codegen::f64_literal;
 use crate::exact::Dd;
-use crate::sym::SymbolId;
+use crate::sym::{Func, SymbolId};
 
 const HEADER: usize = 6;
 const NO_TIME: u32 = u32::MAX;
@@ -59,6 +59,7 @@ impl Tape {
                 ScalarOp::Powf(a, r) => [8, a, float(r)],
                 ScalarOp::Sin(a) => [9, a, 0],
                 ScalarOp::Cos(a) => [10, a, 0],
+                ScalarOp::Func(f, a) => [11, a, f.index() as u32],
             });
         }
         for st in &self.steps {
@@ -78,6 +79,7 @@ impl Tape {
                 SeriesOp::Sqrt(a) => (12, a, 0),
                 SeriesOp::Powf(a, r) => (13, a, float(r)),
                 SeriesOp::SinCos(a) => (14, a, 0),
+                SeriesOp::Func(f, a) => (15, a, f.index() as u32),
             };
             w.extend_from_slice(&[op, st.out, a, b]);
         }
@@ -137,6 +139,7 @@ fn scalar(w: &[u32], floats: &[f64], values: &[f64], done: &DdTable<'_>, i: u32)
         [8, a, r] => x(a)?.powf(*floats.get(r as usize)?),
         [9, a, _] => x(a)?.sin_cos().0,
         [10, a, _] => x(a)?.sin_cos().1,
+        [11, a, f] => Func::from_index(f as usize)?.value_dd(x(a)?),
         _ => return None,
     })
 }
@@ -163,14 +166,11 @@ fn series_step(w: &[u32], floats: &[f64], series: u32, scalars: u32) -> Option<S
         12 => SeriesOp::Sqrt(s(a)?),
         13 => SeriesOp::Powf(s(a)?, *floats.get(b as usize)?),
         14 => SeriesOp::SinCos(s(a)?),
+        15 => SeriesOp::Func(Func::from_index(b as usize)?, s(a)?),
         _ => return None,
     };
-    // A sine–cosine pair writes three series.
-    let width = if matches!(op, SeriesOp::SinCos(_)) {
-        3
-    } else {
-        1
-    };
+    // A sine–cosine pair writes three series, a primitive its companions besides.
+    let width = op.width();
     (out.checked_add(width)? <= series).then_some(SeriesStep { out, op })
 }
 

@@ -17,7 +17,8 @@ use quote::quote;
 
 use super::tape::{ScalarOp, SeriesOp, Tape, Value};
 use crate::codegen::f64_literal;
-use crate::sym::SymbolId;
+use crate::sym::functions::{SeriesCode, SeriesNames};
+use crate::sym::{Func, SymbolId};
 
 fn series(x: u32) -> Ident {
     Ident::new(&format!("__x{x}"), Span::call_site())
@@ -131,6 +132,7 @@ impl Tape {
                 }
                 ScalarOp::Sin(a) => method(s(a), "sin"),
                 ScalarOp::Cos(a) => method(s(a), "cos"),
+                ScalarOp::Func(f, a) => f.call_tokens(s(a)),
             };
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
             scalars.extend(quote!(let #id: f64 = #rhs;));
@@ -165,7 +167,10 @@ impl Tape {
             split: self.split_products(),
             outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
         };
-        let interiors = self.steps.iter().map(|st| interior(st.out, st.op, sums));
+        let interiors = self
+            .steps
+            .iter()
+            .map(|st| interior(st.out, st.op, layout, sums));
         let steps = self
             .steps
             .iter()
@@ -291,6 +296,7 @@ impl Tape {
                         | SeriesOp::Sqrt(_)
                         | SeriesOp::Powf(..)
                         | SeriesOp::SinCos(_)
+                        | SeriesOp::Func(..)
                 )
             })
             .count()
@@ -337,6 +343,7 @@ impl Tape {
                 SeriesOp::Square(a) | SeriesOp::ScalarDiv(_, a) | SeriesOp::Powf(a, _) => {
                     count(a, true)
                 }
+                SeriesOp::Func(_, a) => count(a, false),
             }
         }
         for out in &self.outputs {
@@ -365,6 +372,7 @@ impl Tape {
                     | SeriesOp::Sqrt(_)
                     | SeriesOp::Powf(..)
                     | SeriesOp::SinCos(_)
+                    | SeriesOp::Func(..)
             );
             let x = st.out as usize;
             if !own_history && reads.get(x) == Some(&1) && ranged.get(x) == Some(&false) {
@@ -435,6 +443,7 @@ fn order_zero(
 ) -> TokenStream {
     let x = |i: u32| layout.current(i, quote!(0));
     let value_expr = match op {
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).zero,
         SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
         SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
         SeriesOp::AddScalar(a, c) => binary(x(a), quote!(+), s(c)),
@@ -471,7 +480,7 @@ fn order_zero(
 
 /// The first phase of one step at the order `__k ≥ 1`: the part of its sum that reads
 /// orders below `__k` only, into `let`s (nothing for a step without a sum).
-fn interior(out: u32, op: SeriesOp, sums: Sums) -> TokenStream {
+fn interior(out: u32, op: SeriesOp, layout: &Layout, sums: Sums) -> TokenStream {
     let split = sums.split;
     let (dot, square_interior, square) = (
         sums.kernel("dot_reversed"),
@@ -503,6 +512,7 @@ fn interior(out: u32, op: SeriesOp, sums: Sums) -> TokenStream {
             quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
         }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
+        SeriesOp::Func(f, a) => func_code(out, f, a, layout).interior,
         SeriesOp::SinCos(_) => {
             let (c, d) = (series(out + 1), series(out + 2));
             let (is, ic) = (interior_id(out, "s"), interior_id(out, "c"));
@@ -533,6 +543,7 @@ fn order_k(
     // A read at the current order: the operand's `let`, or its row for the state and time.
     let at = |x: u32| layout.current(x, quote!(__k));
     let value_expr = match op {
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).order_k,
         SeriesOp::Add(a, b) => binary(at(a), quote!(+), at(b)),
         SeriesOp::Sub(a, b) => binary(at(a), quote!(-), at(b)),
         SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => at(a),
@@ -586,6 +597,23 @@ fn order_k(
         }
     };
     store(out, layout, quote!(__k), value_expr)
+}
+
+/// The emitted code of a primitive's step `out = f(a)`, by the primitive
+/// ([`crate::sym::functions`]), with the names of this emitter.
+fn func_code(out: u32, f: Func, a: u32, layout: &Layout) -> SeriesCode {
+    let names = SeriesNames {
+        out: series(out),
+        value: value(out),
+        companions: (1..=f.primitive().companions())
+            .map(|j| series(out + j))
+            .collect(),
+        arg_zero: layout.current(a, quote!(0)),
+        arg_k: layout.current(a, quote!(__k)),
+        interior: interior_id(out, ""),
+        dot: kernel("dot_reversed"),
+    };
+    f.primitive().series_code(&names)
 }
 
 fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {

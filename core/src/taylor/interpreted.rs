@@ -211,6 +211,7 @@ impl<const N: usize> TaylorTape<N> {
                 ScalarOp::Powf(a, r) => x(a).powf(r),
                 ScalarOp::Sin(a) => x(a).sin(),
                 ScalarOp::Cos(a) => x(a).cos(),
+                ScalarOp::Func(f, a) => f.value(x(a)),
             };
             if !v.is_finite() {
                 return Err(TaylorError::NonFiniteConstant {
@@ -376,6 +377,7 @@ fn operation_name(op: &ScalarOp) -> &'static str {
         ScalarOp::Powf(..) => "a real power",
         ScalarOp::Sin(_) => "a sine",
         ScalarOp::Cos(_) => "a cosine",
+        ScalarOp::Func(f, _) => f.name(),
     }
 }
 
@@ -396,6 +398,7 @@ fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) ->
             ScalarOp::Sin(a) => x(a).sin_cos().0,
             ScalarOp::Cos(a) => x(a).sin_cos().1,
             ScalarOp::Powf(a, r) => x(a).powf(r),
+            ScalarOp::Func(f, a) => f.value_dd(x(a)),
         };
         out.push(v);
     }

@@ -6,12 +6,19 @@
 
 use super::kernels::{cauchy, dot_reversed, power_interior, square};
 use super::tape::{SeriesOp, SeriesStep};
+use crate::sym::functions::F64Table;
 
 /// Writes the order-`k` coefficient of `step`'s output, every operand known to order `k`
 /// and the output to order `k − 1`. `s` holds the scalars' values.
 #[inline]
 pub(crate) fn step(c: &mut [f64], st: usize, s: &[f64], step: &SeriesStep, k: usize) {
     let out = step.out as usize;
+    if let SeriesOp::Func(f, a) = step.op {
+        // A primitive writes its output and companions itself.
+        let mut table = F64Table { c, st };
+        f.primitive().series(&mut table, a, step.out, k);
+        return;
+    }
     fn row(c: &[f64], st: usize, x: usize) -> &[f64] {
         &c[x * st..x * st + st]
     }
@@ -69,6 +76,8 @@ pub(crate) fn step(c: &mut [f64], st: usize, s: &[f64], step: &SeriesStep, k: us
             c[cos * st + k] = cv;
             sv
         }
+        // Written above, before the match.
+        SeriesOp::Func(..) => return,
     };
     c[out * st + k] = v;
 }

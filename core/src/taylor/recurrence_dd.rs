@@ -15,46 +15,17 @@
 
 use super::tape::{SeriesOp, SeriesStep};
 use crate::exact::{Dd, rational};
-
-/// A table of double-double coefficients stored series-major in `f64` pairs:
-/// `w[2(x·st + k)]` and the next word are the hi and lo of series `x` at order `k`.
-pub(crate) struct DdTable<'a> {
-    pub(crate) w: &'a mut [f64],
-    pub(crate) st: usize,
-}
-
-impl DdTable<'_> {
-    /// The words a table of `series` series to order `st − 1` takes.
-    pub(crate) fn len(series: usize, st: usize) -> usize {
-        2 * series * st
-    }
-
-    #[inline]
-    pub(crate) fn get(&self, x: u32, k: usize) -> Dd {
-        let i = 2 * (x as usize * self.st + k);
-        Dd {
-            hi: self.w[i],
-            lo: self.w[i + 1],
-        }
-    }
-
-    #[inline]
-    pub(crate) fn set(&mut self, x: u32, k: usize, v: Dd) {
-        let i = 2 * (x as usize * self.st + k);
-        self.w[i] = v.hi;
-        self.w[i + 1] = v.lo;
-    }
-
-    /// `Σⱼ a_j b_{k−j}` for `j` in `from ..= to`.
-    fn cauchy(&self, a: u32, b: u32, k: usize, from: usize, to: usize) -> Dd {
-        Dd::dot((from..=to).map(|j| (self.get(a, j), self.get(b, k - j))))
-    }
-}
+pub(crate) use crate::sym::functions::DdTable;
 
 /// Writes the order-`k` coefficient of `step`'s output in double-double, every operand known
 /// to order `k` and the output to order `k − 1`; `s` gives the scalars in double-double.
 pub(crate) fn step(c: &mut DdTable<'_>, s: &impl Fn(u32) -> Dd, step: &SeriesStep, k: usize) {
     let out = step.out;
+    if let SeriesOp::Func(f, a) = step.op {
+        // A primitive writes its output and companions itself.
+        f.primitive().series_dd(c, a, out, k);
+        return;
+    }
     let sc = s;
     let v = match step.op {
         SeriesOp::Add(a, b) => c.get(a, k) + c.get(b, k),
@@ -100,6 +71,8 @@ pub(crate) fn step(c: &mut DdTable<'_>, s: &impl Fn(u32) -> Dd, step: &SeriesSte
             c.set(cos, k, cv);
             sv
         }
+        // Written above, before the match.
+        SeriesOp::Func(..) => return,
     };
     c.set(out, k, v);
 }

@@ -9,7 +9,7 @@
 //! operations on scalars alone are computed once, before the recurrences.
 
 use crate::codegen::{Op, Program};
-use crate::sym::{Arena, ExprId, IdMap, SymbolId};
+use crate::sym::{Arena, ExprId, Func, IdMap, SymbolId};
 
 /// Where a value of the tape lives.
 #[derive(Clone, Copy, PartialEq, Eq, Debug, Hash)]
@@ -45,6 +45,8 @@ pub enum ScalarOp {
     Sin(u32),
     /// `cos a`.
     Cos(u32),
+    /// `f(a)` for a registered primitive `f`.
+    Func(Func, u32),
 }
 
 /// An operation producing a series (operands: `a`, `b` series, `s` scalar), with its
@@ -85,13 +87,29 @@ pub enum SeriesOp {
     /// derivative's coefficients d_j = j a_j in `out + 2` (made once, read by both sums):
     /// `s_k = (1/k) Σⱼ₌₁ᵏ d_j c_{k−j}`, `c_k = −(1/k) Σⱼ₌₁ᵏ d_j s_{k−j}`.
     SinCos(u32),
+    /// `f(a)` for a registered primitive `f`, by its own recurrence
+    /// ([`crate::sym::functions`]), into `out` and its companions `out + 1 …`.
+    Func(Func, u32),
+}
+
+impl SeriesOp {
+    /// The number of series the step writes: its output, and the cosine and the
+    /// argument's derivative of a sine–cosine pair or a primitive's companions.
+    pub fn width(self) -> u32 {
+        match self {
+            SeriesOp::SinCos(_) => 3,
+            SeriesOp::Func(f, _) => 1 + f.primitive().companions(),
+            _ => 1,
+        }
+    }
 }
 
 /// One step of the recurrences: the series it writes and how.
 #[derive(Clone, Copy, PartialEq, Debug)]
 pub struct SeriesStep {
     /// The series written (for [`SeriesOp::SinCos`], the sine; the cosine is `out + 1`, the
-    /// derivative of the argument `out + 2`).
+    /// derivative of the argument `out + 2`; for [`SeriesOp::Func`], the value, its
+    /// companions following).
     pub out: u32,
     /// The operation.
     pub op: SeriesOp,
@@ -195,7 +213,7 @@ impl Tape {
     }
 
     /// The number of series (state, time, and one per step; three for a sine–cosine pair:
-    /// sine, cosine and the argument's derivative).
+    /// sine, cosine and the argument's derivative; one and its companions for a primitive).
     pub fn series_count(&self) -> usize {
         self.series_count as usize
     }
@@ -234,6 +252,7 @@ impl Tape {
                 SeriesOp::Sqrt(_) => c.roots += 1,
                 SeriesOp::Powf(..) => c.powers += 1,
                 SeriesOp::SinCos(_) => c.sin_cos += 1,
+                SeriesOp::Func(f, _) => c.functions.push(f),
             }
         }
         c
@@ -241,7 +260,7 @@ impl Tape {
 }
 
 /// The steps of a [`Tape`] by kind: what one order of the recurrences costs.
-#[derive(Clone, Copy, Default, Debug, PartialEq, Eq)]
+#[derive(Clone, Default, Debug, PartialEq, Eq)]
 pub struct TapeCount {
     /// Operations on scalars (once per call).
     pub scalars: usize,
@@ -261,6 +280,8 @@ pub struct TapeCount {
     pub sin_cos: usize,
     /// Real powers (k weighted multiply–adds and a division at order k).
     pub powers: usize,
+    /// The registered primitives, one entry per step (each prices its own recurrence).
+    pub functions: Vec<Func>,
 }
 
 impl TapeCount {
@@ -277,6 +298,11 @@ impl TapeCount {
             f += per(self.roots, k + 2);
             f += per(self.sin_cos, if k == 0 { 1 } else { 6 * k + 2 });
             f += per(self.powers, if k == 0 { 1 } else { 4 * k + 3 });
+            f += self
+                .functions
+                .iter()
+                .map(|g| g.primitive().flops(k))
+                .sum::<usize>();
         }
         f
     }
@@ -302,11 +328,7 @@ impl Builder {
 
     fn series_index(&mut self, op: SeriesOp) -> u32 {
         let out = self.tape.series_count;
-        self.tape.series_count += if matches!(op, SeriesOp::SinCos(_)) {
-            3
-        } else {
-            1
-        };
+        self.tape.series_count += op.width();
         self.tape.steps.push(SeriesStep { out, op });
         out
     }
@@ -355,6 +377,10 @@ impl Builder {
             Op::Powf(a, r) => match v(a) {
                 C(a) => self.scalar(ScalarOp::Powf(a, r)),
                 S(a) => self.series(SeriesOp::Powf(a, r)),
+            },
+            Op::Func(f, a) => match v(a) {
+                C(a) => self.scalar(ScalarOp::Func(f, a)),
+                S(a) => self.series(SeriesOp::Func(f, a)),
             },
             Op::Sin(a) | Op::Cos(a) => match v(a) {
                 C(a) if matches!(op, Op::Sin(_)) => self.scalar(ScalarOp::Sin(a)),

@@ -1,11 +1,13 @@
 //! A right-hand side of `taylor_system!` as written (a Rust expression) into the symbolic
 //! engine: numbers exactly, state variables, the struct's fields and the time `t` as
 //! symbols, `+ − × ÷` and unary `−`, and the functions the Taylor recurrences know (`sin`,
-//! `cos`, `sqrt`, `powi` with an integer literal, `powf` with a number literal, taken exactly
-//! as a rational), as methods (`x.sin()`) or calls (`sin(x)`).
+//! `cos`, `sqrt`, the engine's registered primitives such as `exp`, `powi` with an integer
+//! literal, `powf` with a number literal, taken exactly as a rational), as methods
+//! (`x.sin()`) or calls (`sin(x)`). A primitive registered in the engine
+//! (`precess_core::sym::functions`) is known here by its name, with no change to this file.
 //! Anything else is an error spanned on it.
 
-use precess_core::sym::{Arena, ExprId, Rational, parse_decimal};
+use precess_core::sym::{Arena, ExprId, Func, Rational, parse_decimal};
 use syn::{BinOp, Expr, Ident, Lit, UnOp};
 
 use super::attr::TIME;
@@ -14,8 +16,21 @@ use crate::lang::keys::did_you_mean;
 use crate::lang::values::number_literal;
 
 /// What a right-hand side may use, listed in the errors.
-const ALLOWED: &str = "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and `sin`, `cos`, `sqrt`, `powi`, `powf`";
-/// The functions known, with their argument counts besides the receiver.
+fn allowed() -> String {
+    let unary: String = unary_names().map(|f| format!("`{f}`, ")).collect();
+    format!(
+        "a right-hand side is built of numbers, state variables, the struct's f64 fields, the time `t`, `+ - * /`, unary `-`, and {unary}`powi`, `powf`"
+    )
+}
+
+/// The functions of one argument: the built-in ones, then the engine's registry.
+fn unary_names() -> impl Iterator<Item = &'static str> {
+    ["sin", "cos", "sqrt"]
+        .into_iter()
+        .chain(Func::all().map(Func::name))
+}
+
+/// The built-in functions, with their argument counts besides the receiver.
 const FUNCTIONS: &[(&str, usize)] = &[
     ("sin", 0),
     ("cos", 0),
@@ -68,7 +83,7 @@ impl Lowerer<'_> {
                     }
                     _ => {
                         self.cx
-                            .error_spanned_by(b.op, format!("unsupported operator: {ALLOWED}"));
+                            .error_spanned_by(b.op, format!("unsupported operator: {}", allowed()));
                         None
                     }
                 }
@@ -77,7 +92,7 @@ impl Lowerer<'_> {
                 Some(ident) => self.name(ident),
                 None => {
                     self.cx
-                        .error_spanned_by(e, format!("unsupported name: {ALLOWED}"));
+                        .error_spanned_by(e, format!("unsupported name: {}", allowed()));
                     None
                 }
             },
@@ -88,12 +103,12 @@ impl Lowerer<'_> {
             Expr::Call(c) => {
                 let Expr::Path(p) = &*c.func else {
                     self.cx
-                        .error_spanned_by(&c.func, format!("unsupported call: {ALLOWED}"));
+                        .error_spanned_by(&c.func, format!("unsupported call: {}", allowed()));
                     return None;
                 };
                 let Some(function) = p.path.get_ident() else {
                     self.cx
-                        .error_spanned_by(&c.func, format!("unsupported call: {ALLOWED}"));
+                        .error_spanned_by(&c.func, format!("unsupported call: {}", allowed()));
                     return None;
                 };
                 let args: Vec<&Expr> = c.args.iter().collect();
@@ -104,7 +119,7 @@ impl Lowerer<'_> {
             }
             _ => {
                 self.cx
-                    .error_spanned_by(e, format!("unsupported expression: {ALLOWED}"));
+                    .error_spanned_by(e, format!("unsupported expression: {}", allowed()));
                 None
             }
         }
@@ -131,12 +146,21 @@ impl Lowerer<'_> {
         whole: &Expr,
     ) -> Option<ExprId> {
         let name = function.to_string();
+        if let Some(f) = Func::named(&name) {
+            if !args.is_empty() {
+                return self.function_error(function, args.len() + 1, whole);
+            }
+            let x = self.expr(receiver)?;
+            let v = self.arena.apply(f, x).map_err(|e| e.to_string());
+            return self.checked(v, whole);
+        }
         let Some(&(_, count)) = FUNCTIONS.iter().find(|(f, _)| *f == name) else {
+            let unary: String = unary_names().map(|f| format!("`{f}`, ")).collect();
             self.cx.error_spanned_by(
                 function,
                 format!(
-                    "unsupported function `{name}`: the Taylor recurrences know `sin`, `cos`, `sqrt`, `powi` (an integer power) and `powf` (a power with a number literal exponent){}",
-                    did_you_mean(&name, FUNCTIONS.iter().map(|(f, _)| *f))
+                    "unsupported function `{name}`: the Taylor recurrences know {unary}`powi` (an integer power) and `powf` (a power with a number literal exponent){}",
+                    did_you_mean(&name, unary_names().chain(["powi", "powf"]))
                 ),
             );
             return None;
@@ -227,7 +251,7 @@ impl Lowerer<'_> {
 
     /// A number literal, exactly (`0.51` is 51/100), finite in f64.
     fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
-        number_literal(self.cx, self.arena, lit, ALLOWED)
+        number_literal(self.cx, self.arena, lit, &allowed())
     }
 }
 

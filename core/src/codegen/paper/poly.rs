@@ -157,7 +157,7 @@ pub(super) fn terms(arena: &Arena, e: ExprId) -> Option<Vec<Term>> {
             Node::Sym(s) => vec![Term::atom(Atom::Sym(*s), 1)],
             Node::Sin(u) => vec![Term::atom(Atom::Sin(*u), 1)],
             Node::Cos(u) => vec![Term::atom(Atom::Cos(*u), 1)],
-            Node::Sqrt(_) | Node::Powr(..) => vec![Term::atom(Atom::Other(id), 1)],
+            Node::Sqrt(_) | Node::Powr(..) | Node::Func(..) => vec![Term::atom(Atom::Other(id), 1)],
             Node::Add(children) => {
                 let mut all = Vec::new();
                 for c in children.iter() {

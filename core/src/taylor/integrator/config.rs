@@ -1,7 +1,7 @@
 //! The settings of the Taylor integrator and the Jorba–Zou rules that turn a tolerance into an
 //! order and a step.
 
-use crate::ode::OdeError;
+use crate::ode::{OdeError, check_tolerances};
 use crate::taylor::MAX_TAYLOR_ORDER;
 
 /// Settings of [`Taylor`](super::Taylor). Every field has a documented default
@@ -25,7 +25,7 @@ pub struct TaylorConfig {
     pub atol: f64,
     /// Highest order used (default 40; at least 2). A tolerance whose Jorba–Zou order is
     /// above this cap (or the system's) is met with the capped order and a shorter step,
-    /// which keeps the estimated error at ε (see [`TaylorConfig::step_factor`]). A jet whose
+    /// which keeps the estimated error at ε (see `TaylorConfig::step_factor`). A jet whose
     /// orders 1 … p all vanish is computed again to this order before the step is sized.
     pub max_order: usize,
     /// A fixed order instead of the tolerance's (default `None`): for convergence studies.
@@ -137,21 +137,7 @@ impl TaylorConfig {
     /// ));
     /// ```
     pub fn validate(&self) -> Result<(), OdeError> {
-        let pos = |v: f64| v.is_finite() && v > 0.0;
-        if !pos(self.rtol) || !pos(self.atol) {
-            return Err(OdeError::InvalidTolerance {
-                rtol: self.rtol,
-                atol: self.atol,
-            });
-        }
-        if let Some(h) = self.fixed_step
-            && !pos(h)
-        {
-            return Err(OdeError::InvalidStep { h });
-        }
-        if self.h_max.is_nan() || self.h_max <= 0.0 {
-            return Err(OdeError::InvalidStep { h: self.h_max });
-        }
+        check_tolerances(self.rtol, self.atol, self.fixed_step, self.h_max)?;
         if self.max_order < 2 {
             return Err(OdeError::InvalidParameter {
                 name: "max_order",

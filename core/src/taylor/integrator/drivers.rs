@@ -3,45 +3,10 @@
 
 use super::{Taylor, TaylorConfig};
 use crate::ode::drivers::{check_sampling, check_sorted, sample, through_stops};
-use crate::ode::{OdeError, Solution, Stats, Stepper, check_finite, check_span};
+use crate::ode::{OdeError, Solution, Stats, check_span, inherent_stepper};
 use crate::taylor::TaylorSystem;
 
-impl<S: TaylorSystem<N>, const N: usize> Stepper for Taylor<S, N> {
-    type State = [f64; N];
-
-    fn t(&self) -> f64 {
-        Taylor::t(self)
-    }
-
-    fn state(&self) -> &[f64; N] {
-        self.y()
-    }
-
-    fn stats(&self) -> Stats {
-        Taylor::stats(self)
-    }
-
-    fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
-        Taylor::step(self, t_limit)
-    }
-
-    fn step_start(&self) -> f64 {
-        self.last_step_start()
-    }
-
-    fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
-        self.dense_at(t)
-    }
-
-    fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
-        if !t.is_finite() {
-            return Err(OdeError::NonFiniteTime { t });
-        }
-        check_finite(&state)?;
-        self.reset_state(t, state);
-        Ok(())
-    }
-}
+inherent_stepper!([S: TaylorSystem<N>, const N: usize] Taylor<S, N>, N);
 
 /// Integrates from `(t0, y0)` to `t_end` with the Taylor integrator, stopping exactly at
 /// each time in `stops` (ascending; those past `t_end` are ignored), as
