@@ -443,7 +443,14 @@ fn order_zero(
 ) -> TokenStream {
     let x = |i: u32| layout.current(i, quote!(0));
     let value_expr = match op {
-        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).zero,
+        // Order 0 has no sums: the kernels' path is not read.
+        SeriesOp::Func(f, a) => {
+            let sums = Sums {
+                split: false,
+                outlined: false,
+            };
+            return func_code(out, f, a, layout, sums).zero;
+        }
         SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
         SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
         SeriesOp::AddScalar(a, c) => binary(x(a), quote!(+), s(c)),
@@ -512,7 +519,7 @@ fn interior(out: u32, op: SeriesOp, layout: &Layout, sums: Sums) -> TokenStream 
             quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
         }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
-        SeriesOp::Func(f, a) => func_code(out, f, a, layout).interior,
+        SeriesOp::Func(f, a) => func_code(out, f, a, layout, sums).interior,
         SeriesOp::SinCos(_) => {
             let (c, d) = (series(out + 1), series(out + 2));
             let (is, ic) = (interior_id(out, "s"), interior_id(out, "c"));
@@ -543,7 +550,7 @@ fn order_k(
     // A read at the current order: the operand's `let`, or its row for the state and time.
     let at = |x: u32| layout.current(x, quote!(__k));
     let value_expr = match op {
-        SeriesOp::Func(f, a) => return func_code(out, f, a, layout).order_k,
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout, sums).order_k,
         SeriesOp::Add(a, b) => binary(at(a), quote!(+), at(b)),
         SeriesOp::Sub(a, b) => binary(at(a), quote!(-), at(b)),
         SeriesOp::AddScalar(a, _) | SeriesOp::SubScalar(a, _) => at(a),
@@ -601,7 +608,7 @@ fn order_k(
 
 /// The emitted code of a primitive's step `out = f(a)`, by the primitive
 /// ([`crate::sym::functions`]), with the names of this emitter.
-fn func_code(out: u32, f: Func, a: u32, layout: &Layout) -> SeriesCode {
+fn func_code(out: u32, f: Func, a: u32, layout: &Layout, sums: Sums) -> SeriesCode {
     let names = SeriesNames {
         out: series(out),
         value: value(out),
@@ -611,7 +618,7 @@ fn func_code(out: u32, f: Func, a: u32, layout: &Layout) -> SeriesCode {
         arg_zero: layout.current(a, quote!(0)),
         arg_k: layout.current(a, quote!(__k)),
         interior: interior_id(out, ""),
-        dot: kernel("dot_reversed"),
+        dot: sums.kernel("dot_reversed"),
     };
     f.primitive().series_code(&names)
 }
@@ -650,7 +657,10 @@ mod tests {
         let small = products(4);
         assert!(small.sum_count() < OUTLINE_KERNELS_FROM_SUMS);
         let code = small.to_tokens(20, &mut |_| quote!(0.0)).body.to_string();
-        assert!(code.contains("__private :: kernels :: dot_reversed"), "{code}");
+        assert!(
+            code.contains("__private :: kernels :: dot_reversed"),
+            "{code}"
+        );
         assert!(!code.contains("outlined"));
         let large = products(OUTLINE_KERNELS_FROM_SUMS);
         assert!(large.sum_count() >= OUTLINE_KERNELS_FROM_SUMS);
