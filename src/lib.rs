@@ -79,10 +79,8 @@ pub mod prelude {
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
-    pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::top::{
-        ChartConfig, ChartError, ChartedTop, EulerianTop, TopChart, TopDynamics, TopError,
-    };
+    pub use precess_core::rigid::{AngleSequence, ChartConfig, ChartError};
+    pub use precess_core::top::{ChartedTop, EulerianTop, TopChart, TopDynamics, TopError};
     pub use precess_derive::{Mechanism, RigidBody};
 }
 

@@ -191,14 +191,14 @@ fn rates_and_omega_round_trip_and_gimbal_lock_is_an_error() {
     let err = top.rates_from_omega(&[0.0, 0.0, 0.0], &w).unwrap_err();
     assert!(matches!(
         err,
-        TopError::SingularChart {
+        TopError::Chart(ChartError::SingularChart {
             sequence: AngleSequence::Zxz,
             ..
-        }
+        })
     ));
     assert!(matches!(
         top.rates_from_omega(&[f64::NAN, 0.0, 0.0], &w),
-        Err(TopError::NonFinite { .. })
+        Err(TopError::Chart(ChartError::NonFinite { .. }))
     ));
 }
 

@@ -67,7 +67,7 @@ fn a_sleeping_top_upright_follows_the_closed_form_where_zxz_cannot_start() {
     assert!(matches!(
         declared,
         Err(MechanismChartError::Joint {
-            source: TopError::SingularChart { det: 0.0, .. },
+            source: ChartError::SingularChart { det: 0.0, .. },
             ..
         })
     ));

@@ -15,6 +15,7 @@
 //! - [`FreeExact`] is the exact motion under uniform gravity alone (parabola and torque-free
 //!   attitude); [`FreeModel`] a derivation interpreted at run time.
 
+mod derivation;
 mod dynamics;
 mod error;
 mod exact;
@@ -25,12 +26,13 @@ mod scene;
 mod state;
 mod system;
 
+pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
 pub use exact::FreeExact;
 pub use flight::{FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
-pub use scene::{AppliedForce, ForcePoint, FreeDerivation, FreeScene};
+pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};

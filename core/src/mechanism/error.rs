@@ -164,8 +164,8 @@ pub enum MechanismError {
         error: BodyError,
     },
     /// A parameter could not be bound.
-    #[error("parameter binding: {0:?}")]
-    Binding(BindingError),
+    #[error(transparent)]
+    Binding(#[from] BindingError),
     /// The Euler–Lagrange engine failed.
     #[error(transparent)]
     Lagrange(#[from] LagrangeError),
@@ -188,11 +188,5 @@ fn detail(squared_length: Option<f64>) -> String {
             "|axis|² = {v:e} at the values given underflows f64's normal numbers: scale the axis up"
         ),
         Some(v) => format!("|axis|² is {v} at the values given: the axis has no direction"),
-    }
-}
-
-impl From<BindingError> for MechanismError {
-    fn from(e: BindingError) -> MechanismError {
-        MechanismError::Binding(e)
     }
 }

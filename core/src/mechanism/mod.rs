@@ -21,12 +21,12 @@
 
 mod aba;
 pub mod charts;
-mod derive;
+mod derivation;
 mod dynamics;
 mod error;
 mod factored;
+mod interpreted;
 mod kinematics;
-mod model;
 pub mod recursive;
 mod rules;
 mod scene;
@@ -37,11 +37,11 @@ pub use aba::MechanismAba;
 pub use charts::{
     ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
 };
-pub use derive::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
+pub use interpreted::{MechanismModel, MechanismSystem};
 pub use kinematics::BodyKinematics;
-pub use model::{MechanismModel, MechanismSystem};
 pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use rules::{PARALLEL_SINE, check_axis, check_universal_axes};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};

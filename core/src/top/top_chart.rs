@@ -3,8 +3,8 @@
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
+use super::dynamics::TopDynamics;
 use super::error::TopError;
-use super::top_trait::TopDynamics;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
 

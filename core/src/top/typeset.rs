@@ -4,7 +4,8 @@
 
 use std::borrow::Cow;
 
-use super::scene::{TopDerivation, TopScene};
+use super::derivation::TopDerivation;
+use super::scene::TopScene;
 use crate::codegen::{Lines, MethodCost, Paper, Program, Typeset};
 use crate::lagrange::LagrangeError;
 use crate::sym::mat3::Mat3;

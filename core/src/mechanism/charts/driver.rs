@@ -4,11 +4,13 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::error::MechanismChartError;
-use super::joint_map::{joint_rate_matrix, joint_rotation, map_to_partner, state_in_chart};
 use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
 use crate::ode::{Dop853, Stats, System, check_stop};
-use crate::rigid::AngleSequence;
-use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
+use crate::rigid::charts::state_in_chart;
+use crate::rigid::{
+    AngleSequence, ChartConfig, ChartError, check_chart, check_rotation, joint_rate_matrix,
+    joint_rotation, map_to_partner,
+};
 
 /// A mechanism integrated with DOP853 in whichever chart of each spherical joint is regular.
 ///
@@ -32,7 +34,7 @@ use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
 /// use precess_core::mechanism::{JointKind, MechanismScene, Parent, Route};
 /// use precess_core::rigid::AngleSequence;
 /// use precess_core::sym::Arena;
-/// use precess_core::top::ChartConfig;
+/// use precess_core::rigid::ChartConfig;
 /// let mut a = Arena::new();
 /// let (o, z) = (a.one(), a.zero());
 /// let tenth = { let ten = a.integer(10); a.recip(ten).unwrap() };
@@ -140,7 +142,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// # Errors
     /// As [`ChartedMechanism::new`]; [`MechanismChartError::AttitudeCount`] unless there is
     /// one attitude per spherical joint; [`MechanismChartError::Attitude`] for a matrix that
-    /// is not a rotation within [`crate::top::ROTATION_TOLERANCE`] or a non-finite ω.
+    /// is not a rotation within [`crate::rigid::ROTATION_TOLERANCE`] or a non-finite ω.
     pub fn from_attitudes(
         dynamics: D,
         t0: f64,

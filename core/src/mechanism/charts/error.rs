@@ -4,12 +4,12 @@ use thiserror::Error;
 
 use crate::mechanism::MechanismError;
 use crate::ode::OdeError;
-use crate::top::{ChartError, TopError};
+use crate::rigid::ChartError;
 
 /// An error of [`super::ChartedMechanism`] or [`super::MechanismCharts`].
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum MechanismChartError {
-    /// [`crate::top::ChartConfig::switch_below`] is not finite and positive.
+    /// [`crate::rigid::ChartConfig::switch_below`] is not finite and positive.
     #[error("switch_below = {value} must be finite and > 0")]
     InvalidSwitch {
         /// The value given.
@@ -60,7 +60,7 @@ pub enum MechanismChartError {
         /// The joint.
         joint: String,
         /// The rate map's complaint.
-        source: TopError,
+        source: ChartError,
     },
     /// The state holds NaN or ±∞ outside the spherical joints.
     #[error("non-finite state {values:?}")]

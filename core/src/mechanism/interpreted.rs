@@ -3,7 +3,7 @@
 
 use std::cell::RefCell;
 
-use super::derive::{MechanismDerivation, Route};
+use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene};
 use crate::body::{BodyError, Definiteness, check_inertia};

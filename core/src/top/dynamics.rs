@@ -5,10 +5,10 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
 use super::parameters::TopParameters;
-use super::rates::{check_chart, rates_from_omega};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
+use crate::rigid::{check_chart, rates_from_omega};
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
 ///
@@ -20,7 +20,7 @@ use crate::rigid::AngleSequence;
 /// The generated methods are straight-line code without checks, for the steppers' inner
 /// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
 /// NaN or infinite. The `try_` helpers and [`TopDynamics::rates_from_omega`] check the state and the
-/// chart first, under the one rule of [`super::check_chart`]; the `try_` helpers and
+/// chart first, under the one rule of [`crate::rigid::check_chart`]; the `try_` helpers and
 /// [`super::ChartedTop::new`] check the whole top first, through [`TopDynamics::check_all`].
 ///
 /// Every top is a [`RigidBody`] (the same derive implements both), so its body is checked
@@ -52,7 +52,7 @@ use crate::rigid::AngleSequence;
 /// assert!(q_ddot[1].abs() < 1e-10);
 ///
 /// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
-/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// ```
 pub trait TopDynamics: RigidBody {
     /// The declared angle sequence.
@@ -197,8 +197,8 @@ pub trait TopDynamics: RigidBody {
     /// # Errors
     /// The errors of [`TopDynamics::check_all`] (a body that breaks a rule of its
     /// description, [`TopError::Body`]; a negative gravity or damping, a NaN setting);
-    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
-    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate through
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at
+    /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
     /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
     fn try_accel_in(
@@ -235,16 +235,16 @@ pub trait TopDynamics: RigidBody {
     /// The rates q̇ = B(q)⁻¹ ω of [`TopDynamics::SEQUENCE`].
     ///
     /// # Errors
-    /// As [`super::rates_from_omega`]: [`TopError::SingularChart`] at gimbal lock
-    /// (`|det B|` below [`super::SINGULAR_DET`]), [`TopError::NonFinite`] for non-finite
+    /// As [`crate::rigid::rates_from_omega`]: [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at gimbal lock
+    /// (`|det B|` below [`crate::rigid::SINGULAR_DET`]), [`TopError::NonFinite`] for non-finite
     /// input.
     fn rates_from_omega(&self, q: &[f64; 3], omega: &Vector3<f64>) -> Result<[f64; 3], TopError> {
-        rates_from_omega(
+        Ok(rates_from_omega(
             Self::SEQUENCE,
             &self.rate_matrix_in(Self::SEQUENCE, q),
             q,
             omega,
-        )
+        )?)
     }
 }
 
