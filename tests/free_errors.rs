@@ -1,5 +1,6 @@
 //! Item 5 at run time: bad states and parameters are typed errors naming the quantity.
 
+use precess::codegen::BindingError;
 use precess::free::{
     FreeDynamics, FreeError, FreeExact, FreeFlight, FreeModel, FreeScene, FreeState, FreeSystem,
 };

@@ -10,13 +10,12 @@ use approx::assert_relative_eq;
 use common::rng::Rng;
 use precess::mechanism::charts::{
     ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
-    joint_rate_matrix, joint_rotation, map_to_partner,
 };
 use precess::mechanism::{JointKind, MechanismScene, Parent, Route};
 use precess::ode::{AdaptiveConfig, Dop853};
 use precess::prelude::*;
+use precess::rigid::{joint_rate_matrix, joint_rotation, map_to_partner};
 use precess::sym::Arena;
-use precess::top::TopError;
 
 fn tight() -> ChartConfig {
     ChartConfig {

@@ -42,7 +42,7 @@ const Q_DOT: [f64; 3] = [0.4, 0.0, 30.0];
 /// Every checked entry point of `top` gives `expected`.
 fn refused_everywhere(top: &Spinner, expected: &TopError) {
     assert_eq!(top.check_parameters().as_ref(), Err(expected));
-    assert_eq!(top.try_angle_accel(0.0, &Q, &Q_DOT).as_ref(), Err(expected));
+    assert_eq!(top.accelerations(0.0, &Q, &Q_DOT).as_ref(), Err(expected));
     assert_eq!(top.validate_top().as_ref(), Err(expected));
     let [zxz, zyx] = TopChart::both(top);
     let charted = ChartedTop::new(
@@ -88,7 +88,7 @@ fn nan_and_infinite_settings_are_refused_by_name() {
         g: f64::NAN,
         ..SPINNER
     };
-    match nan.try_angle_accel(0.0, &Q, &Q_DOT) {
+    match nan.accelerations(0.0, &Q, &Q_DOT) {
         Err(TopError::NonFiniteParameter {
             parameter: "gravity",
             value,
@@ -163,7 +163,7 @@ fn settings_in_range_pass_and_zero_is_in_range() {
         }
     );
     assert_eq!(SPINNER.validate_top(), Ok(()));
-    assert!(SPINNER.try_angle_accel(0.0, &Q, &Q_DOT).is_ok());
+    assert!(SPINNER.accelerations(0.0, &Q, &Q_DOT).is_ok());
     // No gravity and no damping are physics (a top in free fall, an undamped one).
     let free = Spinner {
         g: 0.0,

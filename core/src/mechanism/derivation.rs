@@ -82,7 +82,7 @@ pub struct MechanismDerivation {
     /// torques).
     pub power: ExprId,
     /// `(i, ∂L/∂q̇_i)` for each coordinate absent from L with no load on it (conserved).
-    pub cyclic_momenta: Vec<(usize, ExprId)>,
+    pub conserved_momenta: Vec<(usize, ExprId)>,
     /// The route taken ([`Route::Auto`] resolved).
     pub route: Route,
 }
@@ -94,7 +94,7 @@ impl MechanismDerivation {
         let mut roots: Vec<ExprId> = self.accelerations.clone();
         roots.extend(&self.pivots);
         roots.extend([self.kinetic, self.potential, self.power]);
-        roots.extend(self.cyclic_momenta.iter().map(|&(_, p)| p));
+        roots.extend(self.conserved_momenta.iter().map(|&(_, p)| p));
         let mut names: Vec<String> = roots
             .iter()
             .flat_map(|&e| arena.free_symbols(e))
@@ -336,7 +336,7 @@ impl MechanismScene {
         } else {
             power
         };
-        let mut cyclic_momenta = Vec::new();
+        let mut conserved_momenta = Vec::new();
         for i in 0..n {
             let (Some(qs), Some(rs)) = (
                 arena.as_symbol(coords.q[i]),
@@ -359,7 +359,7 @@ impl MechanismScene {
             };
             if cyclic {
                 let p = arena.diff(l, rs);
-                cyclic_momenta.push((i, arena.expand(p)));
+                conserved_momenta.push((i, arena.expand(p)));
             }
         }
         Ok(MechanismDerivation {
@@ -371,7 +371,7 @@ impl MechanismScene {
             potential: lag.potential,
             energy,
             power,
-            cyclic_momenta,
+            conserved_momenta,
             route,
         })
     }

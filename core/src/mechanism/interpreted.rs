@@ -215,7 +215,7 @@ impl MechanismModel {
         let outputs: Vec<ExprId> = d.pivots.iter().chain(&d.accelerations).copied().collect();
         let accel = Program::lower(arena, &outputs);
         let energy = Program::lower(arena, &[d.kinetic, d.potential, d.energy, d.power]);
-        let momenta: Vec<ExprId> = d.cyclic_momenta.iter().map(|&(_, p)| p).collect();
+        let momenta: Vec<ExprId> = d.conserved_momenta.iter().map(|&(_, p)| p).collect();
         let momenta = Program::lower(arena, &momenta);
         let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).copied().collect();
         supplied.push(time);
@@ -227,7 +227,7 @@ impl MechanismModel {
             pivot_count: d.pivots.len(),
             energy,
             momenta,
-            cyclic: d.cyclic_momenta.iter().map(|&(i, _)| i).collect(),
+            cyclic: d.conserved_momenta.iter().map(|&(i, _)| i).collect(),
             axes: Program::lower(arena, &[]),
             axis_joints: Vec::new(),
             mass_properties: Program::lower(arena, &[]),
@@ -447,7 +447,7 @@ impl MechanismModel {
     ///
     /// # Errors
     /// As the state checks of [`MechanismModel::accelerations`].
-    pub fn cyclic_momenta(
+    pub fn conserved_momenta(
         &self,
         t: f64,
         q: &[f64],

@@ -19,8 +19,9 @@ use crate::rigid::{check_chart, rates_from_omega};
 ///
 /// The generated methods are straight-line code without checks, for the steppers' inner
 /// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
-/// NaN or infinite. The `try_` helpers and [`TopDynamics::rates_from_omega`] check the state and the
-/// chart first, under the one rule of [`crate::rigid::check_chart`]; the `try_` helpers and
+/// NaN or infinite. The checked methods ([`TopDynamics::accelerations`], [`TopDynamics::accelerations_in`])
+/// and [`TopDynamics::rates_from_omega`] check the state and the chart first, under the one
+/// rule of [`crate::rigid::check_chart`]; the checked methods and
 /// [`super::ChartedTop::new`] check the whole top first, through [`TopDynamics::check_all`].
 ///
 /// Every top is a [`RigidBody`] (the same derive implements both), so its body is checked
@@ -48,10 +49,10 @@ use crate::rigid::{check_chart, rates_from_omega};
 /// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
 /// // ω3 = ψ̇ + φ̇ cos θ.
 /// let q_dot = [omega_p, 0.0, w3 - omega_p * theta.cos()];
-/// let q_ddot = Heavy.try_angle_accel(0.0, &[0.0, theta, 0.0], &q_dot).unwrap();
+/// let q_ddot = Heavy.accelerations(0.0, &[0.0, theta, 0.0], &q_dot).unwrap();
 /// assert!(q_ddot[1].abs() < 1e-10);
 ///
-/// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
+/// let vertical = Heavy.accelerations(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
 /// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// ```
 pub trait TopDynamics: RigidBody {
@@ -59,7 +60,7 @@ pub trait TopDynamics: RigidBody {
     const SEQUENCE: AngleSequence;
 
     /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
-    fn accel_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
+    fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
 
     /// R(q) in the chart `seq`, body to space.
     fn rotation_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
@@ -106,7 +107,7 @@ pub trait TopDynamics: RigidBody {
     /// compile time: the body (every rule of [`RigidBody::validate`]: masses and sizes > 0,
     /// inertias positive definite and within the triangle inequality, rotations that are
     /// rotations) and the settings ([`TopDynamics::check_parameters`]: gravity, damping,
-    /// torques). The one checked entry: the `try_` methods, [`super::ChartedTop::new`] over
+    /// torques). The one checked entry: the checked accelerations, [`super::ChartedTop::new`] over
     /// [`super::TopChart`]s and [`TopDynamics::validate_top`] all call it.
     ///
     /// [`RigidBody::validate`] alone checks the body only (a negative gravity passes it).
@@ -168,28 +169,23 @@ pub trait TopDynamics: RigidBody {
     ///     eq.conserved[1],
     ///     r"p_{\psi} = I_{3} \left(\dot{\psi} + \dot{\phi} \cos\theta\right)"
     /// );
-    /// let accel = eq.cost("angle_accel").unwrap();
+    /// let accel = eq.cost("accelerations").unwrap();
     /// assert_eq!((accel.total(), accel.sin_cos), (34, 1));
     /// ```
     fn equations(&self) -> &'static Typeset;
 
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
-    /// [`TopDynamics::try_angle_accel`]).
-    fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
-        self.accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    /// [`TopDynamics::accelerations`]).
+    fn accelerations_unchecked(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
+        self.accelerations_unchecked_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
     }
 
     /// q̈ in [`TopDynamics::SEQUENCE`], refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// As [`TopDynamics::try_accel_in`].
-    fn try_angle_accel(
-        &self,
-        t: f64,
-        q: &[f64; 3],
-        q_dot: &[f64; 3],
-    ) -> Result<[f64; 3], TopError> {
-        self.try_accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    /// As [`TopDynamics::accelerations_in`].
+    fn accelerations(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> Result<[f64; 3], TopError> {
+        self.accelerations_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
     }
 
     /// q̈ in the chart `seq`, refusing a state the chart cannot take.
@@ -201,7 +197,7 @@ pub trait TopDynamics: RigidBody {
     /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
     /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
-    fn try_accel_in(
+    fn accelerations_in(
         &self,
         seq: AngleSequence,
         t: f64,
@@ -211,7 +207,7 @@ pub trait TopDynamics: RigidBody {
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
-        let a = self.accel_in(seq, t, state);
+        let a = self.accelerations_unchecked_in(seq, t, state);
         if a.iter().all(|v| v.is_finite()) {
             Ok(a)
         } else {
@@ -248,7 +244,7 @@ pub trait TopDynamics: RigidBody {
     }
 }
 
-/// The angle-form state `[q, q̇]` that [`TopDynamics::accel_in`] and [`TopDynamics::energy_in`] take.
+/// The angle-form state `[q, q̇]` that [`TopDynamics::accelerations_unchecked_in`] and [`TopDynamics::energy_in`] take.
 pub fn angle_state(q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 6] {
     [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]]
 }

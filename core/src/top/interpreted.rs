@@ -51,11 +51,11 @@ use crate::sym::{Arena, SymbolId};
 /// let values = [("I_1", 1.0), ("I_3", 0.5), ("M", 1.0), ("g", 1.0), ("l", 1.0)];
 /// let model = TopModel::new(&mut a, &derivation, &values)?;
 /// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
-/// let q_ddot = model.accel(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
+/// let q_ddot = model.accelerations(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
 /// assert!(q_ddot[1].abs() < 1e-10);
 ///
 /// // Straight up, the ZXZ angles are singular.
-/// let vertical = model.accel(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
+/// let vertical = model.accelerations(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
 /// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -155,7 +155,7 @@ impl TopModel {
     /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at
     /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate
     /// through it with [`super::ChartedTop`]; [`TopError::NonFiniteResult`] if q̈ overflows.
-    pub fn accel(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
+    pub fn accelerations(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(self.sequence, &self.rate_matrix_at(state), &q)?;

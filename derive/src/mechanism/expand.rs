@@ -71,7 +71,7 @@ pub fn expand(
         kinetic,
         potential,
         power,
-        cyclic_momenta,
+        conserved_momenta,
         ..
     } = &derivation;
     let checked_outputs: Vec<ExprId> = pivots.iter().chain(accelerations).copied().collect();
@@ -136,8 +136,8 @@ pub fn expand(
     let kinetic = method.body(arena, &[*kinetic], |o| quote!(#(#o)*));
     let potential = method.body(arena, &[*potential], |o| quote!(#(#o)*));
     let power = method.body(arena, &[*power], |o| quote!(#(#o)*));
-    let cyclic_exprs: Vec<ExprId> = cyclic_momenta.iter().map(|&(_, e)| e).collect();
-    let cyclic_index: Vec<usize> = cyclic_momenta.iter().map(|&(i, _)| i).collect();
+    let cyclic_exprs: Vec<ExprId> = conserved_momenta.iter().map(|&(_, e)| e).collect();
+    let cyclic_index: Vec<usize> = conserved_momenta.iter().map(|&(i, _)| i).collect();
     let cyclic = method.body(arena, &cyclic_exprs, |o| {
         let sets = cyclic_index
             .iter()
@@ -218,7 +218,7 @@ pub fn expand(
 
             fn power(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #power
 
-            fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
+            fn conserved_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
 
             #check_parameters
 
