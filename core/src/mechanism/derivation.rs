@@ -35,14 +35,40 @@ pub enum Route {
 }
 
 impl Route {
+    /// Every route, in the order of [`Route::NAMES`].
+    pub const ALL: [Route; 4] = [
+        Route::Auto,
+        Route::Symbolic,
+        Route::Factored,
+        Route::Recursive,
+    ];
+
+    /// The routes' names, as `#[mechanism(route = ..)]` takes them: the one list the derive
+    /// reads too.
+    pub const NAMES: [&'static str; 4] = ["auto", "symbolic", "factored", "recursive"];
+
     /// The route's name.
     pub fn name(self) -> &'static str {
         match self {
-            Route::Auto => "auto",
-            Route::Symbolic => "symbolic",
-            Route::Factored => "factored",
-            Route::Recursive => "recursive",
+            Route::Auto => Route::NAMES[0],
+            Route::Symbolic => Route::NAMES[1],
+            Route::Factored => Route::NAMES[2],
+            Route::Recursive => Route::NAMES[3],
         }
+    }
+
+    /// The route called `name`, if there is one.
+    ///
+    /// ```
+    /// use precess_core::mechanism::Route;
+    /// assert_eq!(Route::from_name("factored"), Some(Route::Factored));
+    /// assert_eq!(Route::from_name("adjugate"), None);
+    /// for route in Route::ALL {
+    ///     assert_eq!(Route::from_name(route.name()), Some(route));
+    /// }
+    /// ```
+    pub fn from_name(name: &str) -> Option<Route> {
+        Route::ALL.into_iter().find(|r| r.name() == name)
     }
 }
 

@@ -6,13 +6,13 @@
 use std::collections::HashSet;
 
 use precess_core::codegen::Emitted;
-use precess_core::mechanism::{MechanismDerivation, Route};
+use precess_core::mechanism::MechanismDerivation;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::{Ident, LitStr};
 
-use super::check::{CheckedMechanism, RouteChoice, UserEffort};
+use super::check::{CheckedMechanism, UserEffort};
 use crate::ctxt::Ctxt;
 use crate::private::Private;
 use crate::symbols::{FieldParameters, Lowering};
@@ -34,12 +34,7 @@ pub fn expand(
     taylor: Option<usize>,
 ) -> Option<TokenStream> {
     let p = Private;
-    let route = match checked.route {
-        RouteChoice::Auto => Route::Auto,
-        RouteChoice::Symbolic => Route::Symbolic,
-        RouteChoice::Factored => Route::Factored,
-        RouteChoice::Recursive => Route::Recursive,
-    };
+    let route = checked.route;
     let derivation = match checked.scene.derive(arena, route) {
         Ok(d) => d,
         Err(e) => {
