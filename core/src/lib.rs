@@ -8,7 +8,7 @@
 //! [`ode`], [`taylor`], [`exact`]); the bodies and what every scene shares ([`body`],
 //! [`rigid`]); the scenes ([`top`], [`free`], [`mechanism`]), each built on the layers below
 //! and none importing another. Every scene has the same files for the same roles (`scene.rs`,
-//! `derivation.rs`, `interpreted.rs`, `dynamics.rs`, `error.rs`); `docs/conventions.md`
+//! `derivation.rs`, `interpreted.rs`, `dynamics.rs`, `error.rs`, `quantities.rs`); `docs/conventions.md`
 //! states the shape.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]

@@ -16,6 +16,8 @@
 //!   generic O(n) reference the benchmarks compare against.
 //! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
+//! - [`MechanismQuantities`] gives a run's trajectory the energy, power and conserved momenta
+//!   per sample, named as a top's.
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
@@ -27,6 +29,7 @@ mod error;
 mod factored;
 mod interpreted;
 mod kinematics;
+mod quantities;
 pub mod recursive;
 mod rules;
 mod scene;
@@ -42,6 +45,7 @@ pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use interpreted::{MechanismModel, MechanismSystem};
 pub use kinematics::BodyKinematics;
+pub use quantities::MechanismQuantities;
 pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use rules::{PARALLEL_SINE, check_axis, check_universal_axes};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};
