@@ -37,9 +37,7 @@ mod taylor;
 mod validate;
 
 pub use aba::MechanismAba;
-pub use charts::{
-    ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
-};
+pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
 pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;

@@ -17,11 +17,9 @@
 //! the physics.
 
 mod driver;
-mod error;
 mod model_charts;
 
 pub use driver::ChartedMechanism;
-pub use error::MechanismChartError;
 pub use model_charts::MechanismCharts;
 
 use super::scene::{JointKind, MechanismScene};
