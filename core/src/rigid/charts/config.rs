@@ -69,7 +69,7 @@ pub fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
         Ok(())
     } else {
         Err(ChartError::NotARotation {
-            matrix: [0, 1, 2].map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]]),
+            matrix: Box::new([0, 1, 2].map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]])),
             orthogonality,
             det,
         })

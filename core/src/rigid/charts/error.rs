@@ -53,8 +53,9 @@ pub enum ChartError {
         tol = super::ROTATION_TOLERANCE
     )]
     NotARotation {
-        /// The matrix given, row by row.
-        matrix: [[f64; 3]; 3],
+        /// The matrix given, row by row (boxed: nine numbers would make every error that
+        /// nests this one large to return).
+        matrix: Box<[[f64; 3]; 3]>,
         /// The largest entry of |RᵀR − I|.
         orthogonality: f64,
         /// Its determinant.
