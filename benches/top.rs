@@ -176,8 +176,8 @@ fn bench(c: &mut Criterion) {
     // All five agree before anything is timed.
     let reference = hand_written(&q, &qd);
     for other in [
-        sym.angle_accel(0.0, &q, &qd),
-        fields.angle_accel(0.0, &q, &qd),
+        sym.accelerations_unchecked(0.0, &q, &qd),
+        fields.accelerations_unchecked(0.0, &q, &qd),
         lu_symmetric(&q, &qd),
         numeric_sym.accel(&q, &qd),
     ] {
@@ -185,7 +185,10 @@ fn bench(c: &mut Criterion) {
             assert!((other[k] - reference[k]).abs() < 1e-12 * (1.0 + reference[k].abs()));
         }
     }
-    let (ga, na) = (asym.angle_accel(0.0, &q, &qd), numeric_asym.accel(&q, &qd));
+    let (ga, na) = (
+        asym.accelerations_unchecked(0.0, &q, &qd),
+        numeric_asym.accel(&q, &qd),
+    );
     for k in 0..3 {
         assert!((ga[k] - na[k]).abs() < 1e-12 * (1.0 + na[k].abs()));
     }
@@ -197,10 +200,10 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(derive_asymmetric()))
     });
     g.bench_function("symmetric/generated_literals", |b| {
-        b.iter(|| sym.angle_accel(0.0, black_box(&q), black_box(&qd)))
+        b.iter(|| sym.accelerations_unchecked(0.0, black_box(&q), black_box(&qd)))
     });
     g.bench_function("symmetric/generated_fields", |b| {
-        b.iter(|| black_box(&fields).angle_accel(0.0, black_box(&q), black_box(&qd)))
+        b.iter(|| black_box(&fields).accelerations_unchecked(0.0, black_box(&q), black_box(&qd)))
     });
     g.bench_function("symmetric/hand_written", |b| {
         b.iter(|| hand_written(black_box(&q), black_box(&qd)))
@@ -212,7 +215,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| numeric_sym.accel(black_box(&q), black_box(&qd)))
     });
     g.bench_function("asymmetric/generated_literals", |b| {
-        b.iter(|| asym.angle_accel(0.0, black_box(&q), black_box(&qd)))
+        b.iter(|| asym.accelerations_unchecked(0.0, black_box(&q), black_box(&qd)))
     });
     g.bench_function("asymmetric/lu_generic", |b| {
         b.iter(|| numeric_asym.accel(black_box(&q), black_box(&qd)))

@@ -27,8 +27,14 @@
 //!
 //! The same bodies can be built at run time with [`body::BodyBuilder`]; the macro and the
 //! builder share one implementation in `precess-core`, whose modules are re-exported here at
-//! the root: the engine ([`sym`], [`codegen`], [`lagrange`], [`ode`], [`exact`]), the bodies
-//! ([`body`], [`rigid`]) and the scenes ([`top`]), and the [`nalgebra`] precess is built on.
+//! the root: the engine ([`sym`], [`codegen`], [`lagrange`], [`ode`], [`exact`], [`taylor`],
+//! [`linalg`]), the bodies and what the scenes share ([`body`], [`rigid`]: angle sequences,
+//! their charts and the chart switch's pieces, the Lie-group and splitting steppers), the
+//! scenes ([`top`]: `#[top(...)]`, a body about a fixed pivot; [`free`]: `#[free(...)]`, a
+//! body in flight; [`mechanism`]: `#[derive(Mechanism)]`, trees of bodies and joints), and the
+//! [`nalgebra`] precess is built on. Every scene has the same shape (a description, its
+//! derivation, an interpreted model, the trait the derive implements, one error; the same
+//! method names for q̈, energy and momenta): `docs/conventions.md` says it.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -79,10 +85,8 @@ pub mod prelude {
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
-    pub use precess_core::rigid::AngleSequence;
-    pub use precess_core::top::{
-        ChartConfig, ChartError, ChartedTop, EulerianTop, TopChart, TopDynamics, TopError,
-    };
+    pub use precess_core::rigid::{AngleSequence, ChartConfig, ChartError};
+    pub use precess_core::top::{ChartedTop, EulerianTop, TopChart, TopDynamics, TopError};
     pub use precess_derive::{Mechanism, RigidBody};
 }
 

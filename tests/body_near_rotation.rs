@@ -190,7 +190,8 @@ struct Heavy;
 /// ratios of R's entries (atan2), so a stretched R gives the angles of the rotation itself.
 #[test]
 fn a_charted_top_starts_from_the_nearest_rotation() {
-    use precess::top::{ChartConfig, ChartedTop, TopChart};
+    use precess::rigid::ChartConfig;
+    use precess::top::{ChartedTop, TopChart};
     let r0 = Rotation3::from_euler_angles(0.3, 0.9, -0.4);
     // |RᵀR − E| = 6e-10 and det R − 1 = 9e-10, both inside the tolerance.
     let r = r0.matrix() * (1.0 + 3e-10);

@@ -1,5 +1,6 @@
 //! Item 5 at run time: bad states and parameters are typed errors naming the quantity.
 
+use precess::codegen::BindingError;
 use precess::free::{
     FreeDynamics, FreeError, FreeExact, FreeFlight, FreeModel, FreeScene, FreeState, FreeSystem,
 };
@@ -120,7 +121,7 @@ fn the_interpreted_model_names_its_parameters() {
     let d = scene.derive(&mut a).unwrap();
     let e = FreeModel::new(&mut a, &d, &[("M", 1.0), ("I", 1.0)]).unwrap_err();
     assert!(
-        matches!(&e, FreeError::UnsetParameter { name, .. } if name == "c"),
+        matches!(&e, FreeError::Binding(BindingError::UnsetParameter { name, .. }) if name == "c"),
         "{e}"
     );
     let e = FreeModel::new(
@@ -130,12 +131,12 @@ fn the_interpreted_model_names_its_parameters() {
     )
     .unwrap_err();
     assert!(
-        matches!(&e, FreeError::UnknownParameter { name, .. } if name == "k"),
+        matches!(&e, FreeError::Binding(BindingError::UnknownParameter { name, .. }) if name == "k"),
         "{e}"
     );
     let e = FreeModel::new(&mut a, &d, &[("M", 1.0), ("I", f64::NAN), ("c", 0.1)]).unwrap_err();
     assert!(
-        matches!(&e, FreeError::NonFiniteParameter { name, .. } if name == "I"),
+        matches!(&e, FreeError::Binding(BindingError::NonFinite { name, .. }) if name == "I"),
         "{e}"
     );
     // A zero mass has no equations.

@@ -8,15 +8,12 @@ mod common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;
-use precess::mechanism::charts::{
-    ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
-    joint_rate_matrix, joint_rotation, map_to_partner,
-};
+use precess::mechanism::charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
 use precess::mechanism::{JointKind, MechanismScene, Parent, Route};
 use precess::ode::{AdaptiveConfig, Dop853};
 use precess::prelude::*;
+use precess::rigid::{joint_rate_matrix, joint_rotation, map_to_partner};
 use precess::sym::Arena;
-use precess::top::TopError;
 
 fn tight() -> ChartConfig {
     ChartConfig {
@@ -66,8 +63,8 @@ fn a_sleeping_top_upright_follows_the_closed_form_where_zxz_cannot_start() {
     );
     assert!(matches!(
         declared,
-        Err(MechanismChartError::Joint {
-            source: TopError::SingularChart { det: 0.0, .. },
+        Err(MechanismError::Joint {
+            source: ChartError::SingularChart { det: 0.0, .. },
             ..
         })
     ));
@@ -311,20 +308,20 @@ fn bad_settings_and_states_are_typed_errors() {
     let y = [0.0, 1.0, 0.0, 0.0, 0.0, 0.0];
     assert!(matches!(
         ChartedMechanism::new(&UprightTop, 0.0, y, ChartSet::DECLARED, bad),
-        Err(MechanismChartError::InvalidSwitch { .. })
+        Err(MechanismError::Chart(ChartError::InvalidSwitch { .. }))
     ));
     assert!(matches!(
         ChartedMechanism::new(&UprightTop, 0.0, y, ChartSet(2), tight()),
-        Err(MechanismChartError::UnavailableCharts { charts: 2 })
+        Err(MechanismError::UnavailableCharts { charts: 2 })
     ));
     let nan = [0.0, f64::NAN, 0.0, 0.0, 0.0, 0.0];
     assert!(matches!(
         ChartedMechanism::new(&UprightTop, 0.0, nan, ChartSet::DECLARED, tight()),
-        Err(MechanismChartError::NonFinite { .. })
+        Err(MechanismError::NonFinite { .. })
     ));
     assert!(matches!(
         ChartedMechanism::from_attitudes(&UprightTop, 0.0, y, &[], tight()),
-        Err(MechanismChartError::AttitudeCount {
+        Err(MechanismError::AttitudeCount {
             expected: 1,
             got: 0
         })
@@ -335,13 +332,10 @@ fn bad_settings_and_states_are_typed_errors() {
     );
     assert!(matches!(
         ChartedMechanism::from_attitudes(&UprightTop, 0.0, y, &[sheared], tight()),
-        Err(MechanismChartError::Attitude { .. })
+        Err(MechanismError::Attitude { .. })
     ));
     let mut top = ChartedMechanism::new(&UprightTop, 0.0, y, ChartSet::DECLARED, tight()).unwrap();
-    assert!(matches!(
-        top.advance_to(-1.0),
-        Err(MechanismChartError::Ode(_))
-    ));
+    assert!(matches!(top.advance_to(-1.0), Err(MechanismError::Ode(_))));
     assert_eq!(top.joint_rotation(1), None);
     // The derived mechanism lists its joint and both its charts.
     let joints = ChartedDynamics::<6>::spherical_joints(&UprightTop);

@@ -88,7 +88,7 @@ fn worst<const N: usize, M: MechanismDynamics<N>>(
             &[kinetic],
             1.0,
         ));
-        for (i, p) in mech.cyclic_momenta(&q, &qdot).iter().enumerate() {
+        for (i, p) in mech.conserved_momenta(&q, &qdot).iter().enumerate() {
             if let Some(p) = p {
                 w.momenta = w
                     .momenta
@@ -195,7 +195,7 @@ where
     let split = |y: &[f64; S]| precess::mechanism::split_state::<N, S>(y).expect("S = 2N");
     let (q0, v0) = split(&y0);
     let e0 = mech.energy(&q0, &v0);
-    let p0 = mech.cyclic_momenta(&q0, &v0);
+    let p0 = mech.conserved_momenta(&q0, &v0);
     let mut ode = Dop853::new(
         mech.clone(),
         0.0,
@@ -208,7 +208,7 @@ where
         ode.advance_to(end * k as f64 / 50.0).expect("integrates");
         let (q, v) = split(ode.y());
         energy = energy.max((mech.energy(&q, &v) - e0).abs() / e0.abs().max(floor));
-        for (p, start) in mech.cyclic_momenta(&q, &v).iter().zip(&p0) {
+        for (p, start) in mech.conserved_momenta(&q, &v).iter().zip(&p0) {
             if let (Some(p), Some(start)) = (p, start) {
                 momenta = momenta.max((p - start).abs() / start.abs().max(floor));
             }
@@ -243,7 +243,7 @@ fn energy_and_cyclic_momenta_are_conserved_along_dop853_runs() {
         m_outer: 0.1,
         m_inner: 0.05,
     }
-    .cyclic_momenta(&[0.0, 0.8, 0.0], &[0.5, 0.0, 80.0]);
+    .conserved_momenta(&[0.0, 0.8, 0.0], &[0.5, 0.0, 80.0]);
     assert!(
         cyclic[Gyroscope::PHI].is_some()
             && cyclic[Gyroscope::PSI].is_some()

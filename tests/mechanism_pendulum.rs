@@ -272,7 +272,7 @@ fn the_jacobian_of_a_damped_pendulum_is_the_closed_form() {
         model.power(0.0, &[theta], &[rate]).expect("finite"),
         -c * rate * rate
     );
-    assert!(d.cyclic_momenta.is_empty());
+    assert!(d.conserved_momenta.is_empty());
 }
 
 #[test]
@@ -300,7 +300,9 @@ fn a_turntable_conserves_its_angular_momentum() {
     scene.bodies.push(table);
     scene.gravity = Some([z, z, a.number("-9.81").expect("literal")]);
     let model = MechanismModel::new(&mut a, &scene, Route::Auto, &[]).expect("derives");
-    let p = model.cyclic_momenta(0.0, &[1.2], &[3.0]).expect("finite");
+    let p = model
+        .conserved_momenta(0.0, &[1.2], &[3.0])
+        .expect("finite");
     assert_eq!(p.len(), 1);
     assert_eq!(p[0].0, 0);
     assert_relative_eq!(p[0].1, (0.5 + 2.0 * 0.25) * 3.0, max_relative = 1e-15);

@@ -115,7 +115,7 @@ fn a_spherical_joint_reproduces_the_heavy_top() {
                 let qd = [0, 1, 2].map(|_| rng.uniform(-5.0, 5.0));
                 let ours = mech.accelerations(0.0, &q, &qd).expect("regular");
                 let state = [q[0], q[1], q[2], qd[0], qd[1], qd[2]];
-                let theirs = top.accel(&state).expect("regular chart");
+                let theirs = top.accelerations(&state).expect("regular chart");
                 worst = worst.max(relative_difference(&ours, &theirs, 1.0));
             }
             assert!(worst <= 1e-13, "{seq:?} {route:?}: {worst:e}");

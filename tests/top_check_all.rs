@@ -1,13 +1,13 @@
 //! One checked entry for a top, `check_all`, checks everything its field values decide —
 //! the body by the rules of its description and the torque settings — and every checked
-//! path goes through it: `try_angle_accel`, `try_accel_in`, `ChartedTop::new` over the
+//! path goes through it: `accelerations`, `accelerations_in`, `ChartedTop::new` over the
 //! derived charts, `validate_top`. A body that `validate()` refuses (an inertia that is not
 //! positive definite, moments against the triangle inequality, a negative disk mass or
-//! radius) was accepted by `try_angle_accel` and `ChartedTop::new`, which checked the
+//! radius) was accepted by `accelerations` and `ChartedTop::new`, which checked the
 //! settings alone.
 
 use precess::prelude::*;
-use precess::top::{ChartError, TopError};
+use precess::top::TopError;
 
 /// A top whose moments about the pivot are fields.
 #[derive(RigidBody)]
@@ -40,10 +40,13 @@ const Q_DOT: [f64; 3] = [0.4, 0.0, 30.0];
 fn refused_everywhere<T: TopDynamics>(top: &T, expected: &TopError) {
     assert_eq!(top.check_all().as_ref(), Err(expected));
     assert_eq!(top.validate_top().as_ref(), Err(expected));
-    assert_eq!(top.try_angle_accel(0.0, &Q, &Q_DOT).as_ref(), Err(expected));
+    assert_eq!(top.accelerations(0.0, &Q, &Q_DOT).as_ref(), Err(expected));
     let state = [Q[0], Q[1], Q[2], Q_DOT[0], Q_DOT[1], Q_DOT[2]];
     for seq in [AngleSequence::Zxz, AngleSequence::Zyx] {
-        assert_eq!(top.try_accel_in(seq, 0.0, &state).as_ref(), Err(expected));
+        assert_eq!(
+            top.accelerations_in(seq, 0.0, &state).as_ref(),
+            Err(expected)
+        );
     }
     let [zxz, zyx] = TopChart::both(top);
     let charted = ChartedTop::new(
@@ -54,7 +57,7 @@ fn refused_everywhere<T: TopDynamics>(top: &T, expected: &TopError) {
         ChartConfig::default(),
     );
     match charted {
-        Err(ChartError::Parameter(e)) => assert_eq!(&e, expected),
+        Err(e) if &e == expected => {}
         Err(e) => panic!("expected {expected:?}, got {e:?}"),
         Ok(_) => panic!("expected {expected:?}, the charted top started"),
     }
@@ -81,10 +84,10 @@ const GOOD: Moments = Moments {
 #[test]
 fn a_top_in_range_passes_every_path() {
     assert_eq!(GOOD.check_all(), Ok(()));
-    assert!(GOOD.try_angle_accel(0.0, &Q, &Q_DOT).is_ok());
+    assert!(GOOD.accelerations(0.0, &Q, &Q_DOT).is_ok());
     let disk = Disk { m: 0.3, r: 0.04 };
     assert_eq!(disk.check_all(), Ok(()));
-    assert!(disk.try_angle_accel(0.0, &Q, &Q_DOT).is_ok());
+    assert!(disk.accelerations(0.0, &Q, &Q_DOT).is_ok());
 }
 
 #[test]
@@ -166,7 +169,7 @@ proptest::proptest! {
             .map_err(TopError::Body)
             .and_then(|()| top.check_parameters());
         proptest::prop_assert_eq!(top.check_all(), expected.clone());
-        let accel = top.try_angle_accel(0.0, &Q, &Q_DOT).map(|_| ());
+        let accel = top.accelerations(0.0, &Q, &Q_DOT).map(|_| ());
         match &expected {
             Ok(()) => proptest::prop_assert!(accel.is_ok(), "{accel:?}"),
             Err(e) => proptest::prop_assert_eq!(accel, Err(e.clone())),

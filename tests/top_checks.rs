@@ -11,9 +11,10 @@ use approx::assert_relative_eq;
 use common::eulerian::Eulerian;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use precess::prelude::*;
+use precess_core::codegen::BindingError;
 use precess_core::ode::{AdaptiveConfig, Dop853, OdeError};
 use precess_core::sym::Arena;
-use precess_core::top::{AngleChart, ChartError, ModelError, TopModel, TopScene};
+use precess_core::top::{AngleChart, TopModel, TopScene};
 
 /// I1 = 1, I3 = 1/2 about the pivot, M g l = 1, in ZXZ angles.
 #[derive(RigidBody)]
@@ -96,7 +97,7 @@ fn one_rule_for_when_a_chart_is_singular() {
                 ("interpreted", interpreted.rates_at(&q, &w)),
             ] {
                 assert!(
-                    matches!(r, Err(TopError::SingularChart { sequence, .. }) if sequence == seq),
+                    matches!(r, Err(TopError::Chart(ChartError::SingularChart { sequence, .. })) if sequence == seq),
                     "{path} {seq:?} at {q:?}: {r:?}"
                 );
             }
@@ -130,14 +131,14 @@ fn angle_form_says_the_chart_is_singular_there() {
         let q_dot = [1.0, 0.5, 4.0];
         let state = [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]];
         let derived = match seq {
-            AngleSequence::Zxz => Heavy.try_angle_accel(0.0, &q, &q_dot),
-            AngleSequence::Zyx => HeavyZyx.try_angle_accel(0.0, &q, &q_dot),
+            AngleSequence::Zxz => Heavy.accelerations(0.0, &q, &q_dot),
+            AngleSequence::Zyx => HeavyZyx.accelerations(0.0, &q, &q_dot),
         };
-        let interpreted = model(seq).accel(&state);
+        let interpreted = model(seq).accelerations(&state);
         for (path, r) in [("derived", derived), ("interpreted", interpreted)] {
             let err = r.expect_err(path);
             assert!(
-                matches!(err, TopError::SingularChart { sequence, det, .. } if sequence == seq && det < 1e-12),
+                matches!(err, TopError::Chart(ChartError::SingularChart { sequence, det, .. }) if sequence == seq && det < 1e-12),
                 "{path}: {err:?}"
             );
             let message = err.to_string();
@@ -149,16 +150,16 @@ fn angle_form_says_the_chart_is_singular_there() {
     }
     // A little away from it both paths answer, and agree with the unchecked form.
     let (q, q_dot) = ([0.2, 1e-3, 0.1], [1.0, 0.5, 4.0]);
-    let checked = Heavy.try_angle_accel(0.0, &q, &q_dot).unwrap();
-    assert_eq!(checked, Heavy.angle_accel(0.0, &q, &q_dot));
+    let checked = Heavy.accelerations(0.0, &q, &q_dot).unwrap();
+    assert_eq!(checked, Heavy.accelerations_unchecked(0.0, &q, &q_dot));
     let interpreted = model(AngleSequence::Zxz)
-        .accel(&[q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]])
+        .accelerations(&[q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]])
         .unwrap();
     for k in 0..3 {
         assert_relative_eq!(checked[k], interpreted[k], max_relative = 1e-9);
     }
     assert!(matches!(
-        Heavy.try_angle_accel(0.0, &q, &[f64::NAN, 0.0, 0.0]),
+        Heavy.accelerations(0.0, &q, &[f64::NAN, 0.0, 0.0]),
         Err(TopError::NonFinite {
             quantity: "rates q̇",
             ..
@@ -240,7 +241,11 @@ fn charted_top_starts_exactly_at_theta_zero_and_leaves_it() {
 
 fn charted(r: &Matrix3<f64>, w: &Vector3<f64>, config: ChartConfig) -> Result<(), ChartError> {
     let [zxz, zyx] = TopChart::both(&Heavy);
-    ChartedTop::new([&zxz, &zyx], 0.0, r, w, config).map(|_| ())
+    match ChartedTop::new([&zxz, &zyx], 0.0, r, w, config) {
+        Ok(_) => Ok(()),
+        Err(TopError::Chart(e)) => Err(e),
+        Err(e) => panic!("expected a chart error, got {e:?}"),
+    }
 }
 
 #[test]
@@ -314,13 +319,13 @@ fn charted_top_refuses_non_finite_and_past_stop_times() {
     for stop in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let e = top.advance_to(stop).unwrap_err();
         assert!(
-            matches!(e, ChartError::Ode(OdeError::NonFiniteTime { .. })),
+            matches!(e, TopError::Ode(OdeError::NonFiniteTime { .. })),
             "{stop}: {e:?}"
         );
     }
     assert_eq!(
         top.advance_to(0.5),
-        Err(ChartError::Ode(OdeError::StopBeforeCurrent {
+        Err(TopError::Ode(OdeError::StopBeforeCurrent {
             stop: 0.5,
             t: 1.0
         }))
@@ -355,22 +360,26 @@ fn top_model_names_the_parameter_that_is_missing_unknown_or_not_finite() {
         ("l", 0.1),
     ];
     match TopModel::new(&mut a, &d, &all[..4]) {
-        Err(e @ ModelError::UnsetParameter { .. }) => {
+        Err(e @ TopError::Binding(BindingError::UnsetParameter { .. })) => {
             assert_eq!(
                 e,
-                ModelError::UnsetParameter {
+                TopError::Binding(BindingError::UnsetParameter {
                     name: "l".into(),
                     known: "I_1, I_3, M, g, l".into()
-                }
+                })
             );
             assert!(e.to_string().contains("`l` is not set"), "{e}");
         }
         other => panic!("{other:?}"),
     }
     let unknown = TopModel::new(&mut a, &d, &[("h", 1.0)]);
-    assert!(matches!(unknown, Err(ModelError::UnknownParameter { name, .. }) if name == "h"));
+    assert!(
+        matches!(unknown, Err(TopError::Binding(BindingError::UnknownParameter { name, .. })) if name == "h")
+    );
     let nan = TopModel::new(&mut a, &d, &[("g", f64::NAN)]);
-    assert!(matches!(nan, Err(ModelError::NonFinite { name, .. }) if name == "g"));
+    assert!(
+        matches!(nan, Err(TopError::Binding(BindingError::NonFinite { name, .. })) if name == "g")
+    );
 
     // Complete: released at rest, θ̈ = M g l sin θ / I1.
     let mut m = TopModel::new(&mut a, &d, &all).unwrap();
@@ -380,10 +389,14 @@ fn top_model_names_the_parameter_that_is_missing_unknown_or_not_finite() {
     );
     let state = [0.0, 0.5, 0.0, 0.0, 0.0, 0.0];
     let expected = 3.0 * 9.81 * 0.1 * 0.5f64.sin() / 2.0;
-    assert_relative_eq!(m.accel(&state).unwrap()[1], expected, max_relative = 1e-14);
+    assert_relative_eq!(
+        m.accelerations(&state).unwrap()[1],
+        expected,
+        max_relative = 1e-14
+    );
     m.set("l", 0.2).unwrap();
     assert_relative_eq!(
-        m.accel(&state).unwrap()[1],
+        m.accelerations(&state).unwrap()[1],
         2.0 * expected,
         max_relative = 1e-14
     );
@@ -397,7 +410,10 @@ fn top_model_refuses_a_user_torque_it_cannot_supply() {
     scene.user_torque = Some([a.input("u0"), a.input("u1"), a.input("u2")]);
     let d = scene.derive(&mut a).unwrap();
     let e = TopModel::new(&mut a, &d, &[]);
-    assert!(matches!(e, Err(ModelError::RunTimeInput { .. })), "{e:?}");
+    assert!(
+        matches!(e, Err(TopError::Binding(BindingError::RunTimeInput { .. }))),
+        "{e:?}"
+    );
 }
 
 #[test]

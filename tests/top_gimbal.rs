@@ -9,8 +9,9 @@ use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use precess_core::ode::{AdaptiveConfig, Dop853};
 use precess_core::rigid::{AngleSequence, angles_from_rotation};
+use precess_core::rigid::{ChartConfig, ChartError};
 use precess_core::sym::Arena;
-use precess_core::top::{ChartConfig, ChartError, ChartedTop, TopModel, TopScene};
+use precess_core::top::{ChartedTop, TopError, TopModel, TopScene};
 
 /// The reference top (I1 = 1, I3 = 1/2, M g l = 1) in one angle sequence.
 fn model(sequence: AngleSequence) -> TopModel {
@@ -160,7 +161,9 @@ fn two_charts_of_one_sequence_are_refused() {
     );
     assert!(matches!(
         r,
-        Err(ChartError::SameSequence(AngleSequence::Zxz))
+        Err(TopError::Chart(ChartError::SameSequence(
+            AngleSequence::Zxz
+        )))
     ));
 }
 

@@ -280,7 +280,9 @@ fn singular_and_bad_states_are_refused() {
     let at_lock = angle_linearisation(&ReferenceTop, 0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
     assert!(matches!(
         at_lock,
-        Err(LinearisationError::Top(TopError::SingularChart { .. }))
+        Err(LinearisationError::Top(TopError::Chart(
+            ChartError::SingularChart { .. }
+        )))
     ));
     // Regular chart (|det B| = sin θ = 1e-7) but p_φ, p_ψ no longer determine φ̇, ψ̇:
     // det M_cc relative to its diagonal is (I1/I3) sin²θ = 2e-14.

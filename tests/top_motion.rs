@@ -37,7 +37,7 @@ fn steady_precession_rates_are_equilibria() {
     for omega_p in [0.204168476687, 9.795831523313] {
         let w3 = 10.0;
         let state = [0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()];
-        let acc = model.accel(&state).unwrap();
+        let acc = model.accelerations(&state).unwrap();
         // 12 published digits: θ̈ ∝ the precession equation's residual, ~1e-11 here.
         assert!(acc[1].abs() < 1e-10, "Ω = {omega_p}: θ̈ = {:e}", acc[1]);
         let mut ode = Dop853::new(&model, 0.0, state, tight()).unwrap();
@@ -51,7 +51,7 @@ fn steady_precession_rates_are_equilibria() {
     }
     // A rate off the root is not an equilibrium (the check can fail).
     let acc = model
-        .accel(&[0.0, theta, 0.0, 0.25, 0.0, 10.0 - 0.25 * theta.cos()])
+        .accelerations(&[0.0, theta, 0.0, 0.25, 0.0, 10.0 - 0.25 * theta.cos()])
         .unwrap();
     assert!(acc[1].abs() > 1e-3);
 }

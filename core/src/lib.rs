@@ -3,6 +3,13 @@
 //!
 //! The `#[derive(RigidBody)]` macro in `precess-derive` calls into this crate while it expands,
 //! so everything the macro computes at compile time can also be computed at run time here.
+//!
+//! The layers, lowest first: the engine ([`sym`], [`codegen`], [`lagrange`], [`linalg`],
+//! [`ode`], [`taylor`], [`exact`]); the bodies and what every scene shares ([`body`],
+//! [`rigid`]); the scenes ([`top`], [`free`], [`mechanism`]), each built on the layers below
+//! and none importing another. Every scene has the same files for the same roles (`scene.rs`,
+//! `derivation.rs`, `interpreted.rs`, `dynamics.rs`, `error.rs`, `quantities.rs`); `docs/conventions.md`
+//! states the shape.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -11,6 +18,8 @@ pub mod codegen;
 pub mod exact;
 pub mod free;
 pub mod lagrange;
+#[cfg(test)]
+mod layering;
 pub mod linalg;
 pub mod mechanism;
 pub mod ode;

@@ -31,4 +31,7 @@ pub use principal::{Principal, principal_frame};
 pub use rigid::{RigidBody, euler_rhs_diagonal};
 pub use shape::{About, Axis, ClosedForm, Description, Part, Shape, closed_form};
 pub use symbolic::{Frame, SymbolicBody, evaluate};
-pub use validate::{ORTHONORMAL_TOLERANCE, check_orientation, check_part, matrix};
+pub use validate::{
+    Definiteness, INERTIA_TOLERANCE, ORTHONORMAL_TOLERANCE, check_inertia, check_orientation,
+    check_part, matrix,
+};

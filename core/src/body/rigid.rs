@@ -75,8 +75,8 @@ pub trait RigidBody {
     /// Checks the description's rules for the current parameter values (derived bodies of
     /// literals are checked at compile time and return `Ok` at once).
     ///
-    /// The body only: a top's gravity, damping and torques are checked with its body by
-    /// `TopDynamics::check_all` (in `precess_core::top`).
+    /// The body only: each scene checks its own settings (a top's gravity, damping and
+    /// torques) with its body, in the `check_all` of the trait its derive implements.
     ///
     /// # Errors
     /// The first rule broken, see [`BodyError`].

@@ -11,8 +11,10 @@ use super::orientation::Orientation;
 use super::principal::{Principal, principal_frame};
 use super::shape::{Description, Part, Shape};
 
-/// Relative tolerance of the tensor checks (symmetry, definiteness, triangle inequality).
-const TOL: f64 = 1e-12;
+/// Relative tolerance of the tensor checks (symmetry, definiteness, triangle inequality),
+/// relative to the largest entry |I_ij| of the tensor checked ([`check_inertia`]).
+pub const INERTIA_TOLERANCE: f64 = 1e-12;
+const TOL: f64 = INERTIA_TOLERANCE;
 
 /// How far a rotation matrix's RᵀR may be from the identity, entry by entry: loose enough
 /// for a matrix written with 10 digits or computed in `f64`, tight enough that the tensor it
@@ -100,7 +102,7 @@ pub fn check_part(index: usize, part: &Part<f64>) -> Result<(), BodyError> {
                 });
             }
         }
-        Shape::Explicit { inertia, .. } => explicit_tensor(index, inertia)?,
+        Shape::Explicit { inertia, .. } => check_inertia(index, inertia, Definiteness::Positive)?,
         _ => {}
     }
     if let Some(o) = &part.orientation {
@@ -192,17 +194,56 @@ fn finite_pivot(p: &[f64; 3]) -> Result<(), BodyError> {
     }
 }
 
-/// An explicit tensor must be symmetric, positive definite and obey I1 + I2 ≥ I3: every
-/// mass distribution's tensor does (Σ m (r² E − x xᵀ) is symmetric, and
-/// I1 + I2 − I3 = 2 Σ m x3² ≥ 0).
-fn explicit_tensor(part: usize, t: &[[f64; 3]; 3]) -> Result<(), BodyError> {
-    for (key, v) in t.iter().flatten().map(|&v| ("inertia", v)) {
-        finite(part, "body", key, v)?;
+/// What an inertia tensor checked by [`check_inertia`] may have for its smallest principal
+/// moment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Definiteness {
+    /// Every principal moment positive: an explicit part's tensor, which the equations of a
+    /// body divide by.
+    Positive,
+    /// Zero moments allowed: a body's total tensor about its centre, where point masses and
+    /// thin rods have them (a body with no inertia at all is the mass matrix's concern).
+    SemiPositive,
+}
+
+/// The one rule for an inertia tensor, used by every scene (an explicit part of a body's
+/// description, a mechanism body's inertia made of parameters): finite, symmetric, its
+/// principal moments I1 ≤ I2 ≤ I3 positive (or not negative) and meeting I1 + I2 ≥ I3, each
+/// to a relative [`INERTIA_TOLERANCE`] of the largest entry |I_ij|. Every mass distribution's
+/// tensor passes (Σ m (r² E − x xᵀ) is symmetric, and I1 + I2 − I3 = 2 Σ m x3² ≥ 0); errors
+/// number the part `part`.
+///
+/// # Errors
+/// [`BodyError::NonFinite`] for a NaN or infinite entry, [`BodyError::NotSymmetric`],
+/// [`BodyError::NotPositiveDefinite`] for a moment at or below zero (below −tolerance for
+/// [`Definiteness::SemiPositive`]), [`BodyError::TriangleInequality`].
+///
+/// # Examples
+///
+/// A thin rod's tensor diag(0, 1, 1) is a body's total but no explicit part's:
+///
+/// ```
+/// use precess_core::body::{BodyError, Definiteness, check_inertia};
+/// let rod = [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// assert_eq!(check_inertia(0, &rod, Definiteness::SemiPositive), Ok(()));
+/// assert!(matches!(
+///     check_inertia(0, &rod, Definiteness::Positive),
+///     Err(BodyError::NotPositiveDefinite { .. })
+/// ));
+/// ```
+pub fn check_inertia(
+    part: usize,
+    t: &[[f64; 3]; 3],
+    definiteness: Definiteness,
+) -> Result<(), BodyError> {
+    for &v in t.iter().flatten() {
+        finite(part, "body", "inertia", v)?;
     }
     let scale = t.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+    let tol = INERTIA_TOLERANCE * scale;
     for (row, col) in [(0, 1), (0, 2), (1, 2)] {
         let (upper, lower) = (t[row][col], t[col][row]);
-        if (upper - lower).abs() > TOL * scale {
+        if (upper - lower).abs() > tol {
             return Err(BodyError::NotSymmetric {
                 part,
                 row,
@@ -213,10 +254,14 @@ fn explicit_tensor(part: usize, t: &[[f64; 3]; 3]) -> Result<(), BodyError> {
         }
     }
     let moments = ascending(&principal_frame(&matrix(t)));
-    if moments[0] <= TOL * scale {
+    let definite = match definiteness {
+        Definiteness::Positive => moments[0] > tol,
+        Definiteness::SemiPositive => moments[0] >= -tol,
+    };
+    if !definite {
         return Err(BodyError::NotPositiveDefinite { part, moments });
     }
-    if moments[0] + moments[1] < moments[2] * (1.0 - TOL) {
+    if moments[0] + moments[1] < moments[2] - tol {
         return Err(BodyError::TriangleInequality { part, moments });
     }
     Ok(())

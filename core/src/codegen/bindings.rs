@@ -7,10 +7,12 @@ use std::cell::RefCell;
 use super::program::Program;
 use crate::sym::{Arena, SymbolId, SymbolKind};
 
-/// Why a parameter could not be bound; each scene maps it to its own error type.
-#[derive(Debug, Clone, PartialEq)]
+/// Why a parameter could not be bound; every scene's error nests it as its `Binding`
+/// variant.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum BindingError {
     /// A name the programs do not read; `known` lists those they do.
+    #[error("no parameter named `{name}` in this derivation (parameters: {known})")]
     UnknownParameter {
         /// The name given.
         name: String,
@@ -18,6 +20,7 @@ pub enum BindingError {
         known: String,
     },
     /// A parameter the programs read that was given no value.
+    #[error("parameter `{name}` is not set: give a value for each of {known}")]
     UnsetParameter {
         /// The parameter left out.
         name: String,
@@ -25,6 +28,7 @@ pub enum BindingError {
         known: String,
     },
     /// NaN or ±∞ for a parameter.
+    #[error("parameter `{name}` = {value} is not finite")]
     NonFinite {
         /// The parameter.
         name: String,
@@ -33,6 +37,10 @@ pub enum BindingError {
     },
     /// The programs read a run-time input (a user function's) the interpreter cannot
     /// supply.
+    #[error(
+        "the derivation reads `{name}`, a run-time input (a user function's): the interpreted \
+         model cannot supply it; derive the scene with its attribute instead"
+    )]
     RunTimeInput {
         /// The input's name.
         name: String,

@@ -47,7 +47,7 @@ pub struct MethodCost {
 ///     eq.equations[1],
 ///     r"I_{1} \ddot{\theta} = I_{1} \dot{\phi}^{2} \sin\theta \cos\theta - I_{3} \dot{\phi} \sin\theta \left(\dot{\psi} + \dot{\phi} \cos\theta\right) + M g l \sin\theta"
 /// );
-/// assert_eq!(eq.cost("angle_accel").map(|c| c.divs), Some(2));
+/// assert_eq!(eq.cost("accelerations").map(|c| c.divs), Some(2));
 /// assert!(eq.align().starts_with(r"\begin{align}"));
 /// # Ok::<(), precess_core::lagrange::LagrangeError>(())
 /// ```

@@ -70,32 +70,10 @@ pub enum FreeError {
         /// Its value.
         value: f64,
     },
-    /// No parameter of that name appears in the derivation.
-    #[error("no parameter named `{name}` in this free body (parameters: {known})")]
-    UnknownParameter {
-        /// The name asked for.
-        name: String,
-        /// The parameters that exist, comma-separated.
-        known: String,
-    },
-    /// A parameter the derivation reads was not given a value.
-    #[error("parameter `{name}` is not set: give a value for each of {known}")]
-    UnsetParameter {
-        /// The parameter.
-        name: String,
-        /// The parameters the derivation reads, comma-separated.
-        known: String,
-    },
-    /// The derivation reads a value fed in at evaluation (a user force or torque), which the
-    /// interpreted model has no way to supply.
-    #[error(
-        "the derivation reads `{name}`, a run-time input (a user force or torque): the \
-         interpreted model cannot supply it; derive the body with #[free(force = .., torque = ..)]"
-    )]
-    RunTimeInput {
-        /// The input symbol's name.
-        name: String,
-    },
+    /// A parameter of the interpreted [`super::FreeModel`] could not be bound (unknown,
+    /// unset, not finite, or a user force's run-time input the interpreter cannot supply).
+    #[error(transparent)]
+    Binding(#[from] BindingError),
     /// The body's description breaks a rule for the current parameter values.
     #[error(transparent)]
     Body(#[from] BodyError),
@@ -105,21 +83,4 @@ pub enum FreeError {
     /// The exact attitude could not be set up or evaluated.
     #[error(transparent)]
     Exact(#[from] ExactError),
-}
-
-impl From<BindingError> for FreeError {
-    fn from(e: BindingError) -> Self {
-        match e {
-            BindingError::UnknownParameter { name, known } => {
-                FreeError::UnknownParameter { name, known }
-            }
-            BindingError::UnsetParameter { name, known } => {
-                FreeError::UnsetParameter { name, known }
-            }
-            BindingError::NonFinite { name, value } => {
-                FreeError::NonFiniteParameter { name, value }
-            }
-            BindingError::RunTimeInput { name } => FreeError::RunTimeInput { name },
-        }
-    }
 }

@@ -3,10 +3,12 @@
 
 use nalgebra::Vector3;
 
+use super::derivation::FreeDerivation;
 use super::dynamics::Wrench;
 use super::error::FreeError;
-use super::scene::FreeDerivation;
 use super::state::STATE_LEN;
+#[cfg(doc)]
+use crate::codegen::BindingError;
 use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::sym::{Arena, SymbolId};
@@ -55,9 +57,9 @@ impl FreeModel {
     /// pairs; [`FreeModel::set`] changes one later).
     ///
     /// # Errors
-    /// [`FreeError::UnsetParameter`] naming a parameter left out,
-    /// [`FreeError::UnknownParameter`] for a name the derivation does not read,
-    /// [`FreeError::NonFiniteParameter`] for NaN or ±∞, [`FreeError::RunTimeInput`] if the
+    /// In [`FreeError::Binding`]: [`BindingError::UnsetParameter`] naming a parameter left
+    /// out, [`BindingError::UnknownParameter`] for a name the derivation does not read,
+    /// [`BindingError::NonFinite`] for NaN or ±∞, [`BindingError::RunTimeInput`] if the
     /// derivation reads a user force or torque.
     pub fn new(
         arena: &mut Arena,
@@ -106,8 +108,8 @@ impl FreeModel {
     /// Sets the parameter `name`.
     ///
     /// # Errors
-    /// [`FreeError::UnknownParameter`] for a name the derivation does not read,
-    /// [`FreeError::NonFiniteParameter`] for NaN or ±∞.
+    /// In [`FreeError::Binding`]: [`BindingError::UnknownParameter`] for a name the
+    /// derivation does not read, [`BindingError::NonFinite`] for NaN or ±∞.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, FreeError> {
         self.bindings.set(name, value)?;
         Ok(self)

@@ -14,23 +14,29 @@
 //!   [`FreeFlight`] integrates it with the quaternion projected after every step.
 //! - [`FreeExact`] is the exact motion under uniform gravity alone (parabola and torque-free
 //!   attitude); [`FreeModel`] a derivation interpreted at run time.
+//! - [`FreeQuantities`] gives a run's trajectory the energy, power and the sizes of the
+//!   momenta per sample, named as a top's and a mechanism's.
 
+mod derivation;
 mod dynamics;
 mod error;
 mod exact;
 mod flight;
 mod frame;
 mod interpreted;
+mod quantities;
 mod scene;
 mod state;
 mod system;
 
+pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
 pub use exact::FreeExact;
 pub use flight::{FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
-pub use scene::{AppliedForce, ForcePoint, FreeDerivation, FreeScene};
+pub use quantities::FreeQuantities;
+pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};

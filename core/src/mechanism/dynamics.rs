@@ -83,7 +83,7 @@ pub trait MechanismDynamics<const N: usize> {
 
     /// The momentum ∂L/∂q̇ᵢ of each cyclic coordinate (absent from L and from every load, so
     /// conserved), `None` for the others.
-    fn cyclic_momenta(&self, q: &[f64; N], qdot: &[f64; N]) -> [Option<f64>; N];
+    fn conserved_momenta(&self, q: &[f64; N], qdot: &[f64; N]) -> [Option<f64>; N];
 
     /// Checks the values the struct's fields give the mechanism, with the rules literals meet
     /// at compile time: every value finite; each part's mass not negative (zero is a massless

@@ -1,11 +1,14 @@
-//! Errors of the mechanism engine: a malformed tree, a derivation that cannot be solved, and
-//! run-time values the model refuses.
+//! The mechanism scene's one error: a malformed tree, a derivation that cannot be solved,
+//! run-time values the model refuses, and what the chart switch of its spherical joints
+//! refuses.
 
 use thiserror::Error;
 
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::lagrange::LagrangeError;
+use crate::ode::OdeError;
+use crate::rigid::ChartError;
 use crate::sym::SymError;
 
 /// What can go wrong describing, deriving or evaluating a mechanism.
@@ -164,11 +167,66 @@ pub enum MechanismError {
         error: BodyError,
     },
     /// A parameter could not be bound.
-    #[error("parameter binding: {0:?}")]
-    Binding(BindingError),
+    #[error(transparent)]
+    Binding(#[from] BindingError),
     /// The Euler–Lagrange engine failed.
     #[error(transparent)]
     Lagrange(#[from] LagrangeError),
+    /// The chart switch cannot start: a `switch_below` that is not finite and positive
+    /// ([`crate::rigid::ChartConfig::check`]).
+    #[error(transparent)]
+    Chart(#[from] ChartError),
+    /// The ODE state of the chart switch is not twice the coordinate count.
+    #[error("the ODE state has {got} entries, the mechanism needs 2n = {expected}")]
+    OdeStateLength {
+        /// 2n.
+        expected: usize,
+        /// S.
+        got: usize,
+    },
+    /// More spherical joints than a [`super::charts::ChartSet`] can name.
+    #[error("{count} spherical joints; a chart set names at most {max}")]
+    TooManyJoints {
+        /// The spherical joints.
+        count: usize,
+        /// [`super::charts::MAX_SPHERICAL_JOINTS`].
+        max: usize,
+    },
+    /// A chart set the mechanism does not provide ([`super::charts::chart_variants`]).
+    #[error("the mechanism provides no equations for the chart set {charts:#b}")]
+    UnavailableCharts {
+        /// The chart set's bits.
+        charts: u32,
+    },
+    /// One attitude and angular velocity per spherical joint is needed.
+    #[error("{got} joint attitudes given for {expected} spherical joints")]
+    AttitudeCount {
+        /// The spherical joints.
+        expected: usize,
+        /// The attitudes given.
+        got: usize,
+    },
+    /// A joint's attitude is not a rotation matrix, or its ω is not finite.
+    #[error("spherical joint `{joint}`: {source}")]
+    Attitude {
+        /// The joint.
+        joint: String,
+        /// What is wrong with it.
+        source: ChartError,
+    },
+    /// A joint's state cannot be represented in any chart available to it (its rate map is
+    /// singular in its chart and it cannot switch), or its angles or rates are not finite.
+    #[error("spherical joint `{joint}` in its chart: {source}")]
+    Joint {
+        /// The joint.
+        joint: String,
+        /// The rate map's complaint.
+        source: ChartError,
+    },
+    /// The stepper of the chart switch failed, or a stop time is not finite or lies in the
+    /// past.
+    #[error(transparent)]
+    Ode(#[from] OdeError),
     /// A constructor of the symbolic engine failed.
     #[error(transparent)]
     Sym(#[from] SymError),
@@ -188,11 +246,5 @@ fn detail(squared_length: Option<f64>) -> String {
             "|axis|² = {v:e} at the values given underflows f64's normal numbers: scale the axis up"
         ),
         Some(v) => format!("|axis|² is {v} at the values given: the axis has no direction"),
-    }
-}
-
-impl From<BindingError> for MechanismError {
-    fn from(e: BindingError) -> MechanismError {
-        MechanismError::Binding(e)
     }
 }

@@ -16,17 +16,20 @@
 //!   generic O(n) reference the benchmarks compare against.
 //! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
+//! - [`MechanismQuantities`] gives a run's trajectory the energy, power and conserved momenta
+//!   per sample, named as a top's.
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
 mod aba;
 pub mod charts;
-mod derive;
+mod derivation;
 mod dynamics;
 mod error;
 mod factored;
+mod interpreted;
 mod kinematics;
-mod model;
+mod quantities;
 pub mod recursive;
 mod rules;
 mod scene;
@@ -34,14 +37,13 @@ mod taylor;
 mod validate;
 
 pub use aba::MechanismAba;
-pub use charts::{
-    ChartSet, ChartedDynamics, ChartedMechanism, MechanismChartError, MechanismCharts,
-};
-pub use derive::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
+pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
+pub use interpreted::{MechanismModel, MechanismSystem};
 pub use kinematics::BodyKinematics;
-pub use model::{MechanismModel, MechanismSystem};
+pub use quantities::MechanismQuantities;
 pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
 pub use rules::{PARALLEL_SINE, check_axis, check_universal_axes};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};

@@ -62,13 +62,17 @@ impl JointKind {
         }
     }
 
-    /// The kind's name in the attribute language.
+    /// The kinds' names in the attribute language (`joint = revolute(..)`): the one list,
+    /// which the derive reads too.
+    pub const NAMES: [&'static str; 4] = ["revolute", "prismatic", "universal", "spherical"];
+
+    /// The kind's name in the attribute language, one of [`JointKind::NAMES`].
     pub fn name(&self) -> &'static str {
         match self {
-            JointKind::Revolute { .. } => "revolute",
-            JointKind::Prismatic { .. } => "prismatic",
-            JointKind::Universal { .. } => "universal",
-            JointKind::Spherical { .. } => "spherical",
+            JointKind::Revolute { .. } => JointKind::NAMES[0],
+            JointKind::Prismatic { .. } => JointKind::NAMES[1],
+            JointKind::Universal { .. } => JointKind::NAMES[2],
+            JointKind::Spherical { .. } => JointKind::NAMES[3],
         }
     }
 }

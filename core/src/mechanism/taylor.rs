@@ -8,7 +8,7 @@
 
 use thiserror::Error;
 
-use super::derive::{MechanismDerivation, Route};
+use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::MechanismScene;
 use crate::sym::{Arena, ExprId};

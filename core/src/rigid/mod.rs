@@ -1,5 +1,6 @@
 //! Rigid-body motion shared by the scenes: Euler-angle sequences with their rotation and
-//! rate matrices, attitude kinematics on the unit quaternions (the exponential map), the
+//! rate matrices and their charts (the singularity rule and the chart switch's pieces,
+//! [`charts`]), attitude kinematics on the unit quaternions (the exponential map), the
 //! states and the models that drive them, the Runge–Kutta–Munthe-Kaas Lie-group stepper, and
 //! the geometric splittings (free body, body under a potential).
 //!
@@ -7,6 +8,7 @@
 //! [`crate::exact`].
 
 mod angles;
+pub mod charts;
 mod kinematics;
 mod lie;
 mod rkmk4;
@@ -14,6 +16,10 @@ mod splitting;
 mod state;
 
 pub use angles::{AngleSequence, angles_from_rotation, elementary};
+pub use charts::{
+    ChartConfig, ChartError, ROTATION_TOLERANCE, SINGULAR_DET, check_chart, check_rotation,
+    joint_rate_matrix, joint_rotation, map_to_partner, rates_from_omega,
+};
 pub use kinematics::{dexpinv_right, exp_rotation, rotate_body};
 pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
 pub use rkmk4::Rkmk4;

@@ -3,9 +3,9 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::error::TopError;
-use super::rates::rates_from_omega;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
+use crate::rigid::rates_from_omega;
 
 /// A top's equations in one angle chart, with state `[q, q̇]`: what [`super::ChartedTop`]
 /// needs to integrate in it and to map states in and out through the attitude R and the
@@ -43,15 +43,15 @@ pub trait AngleChart: System<6> {
     }
 
     /// The rates q̇ with B(q) q̇ = ω at the angles `q`, under the one rule of
-    /// [`super::rates_from_omega`] (the same the derived tops and [`super::ChartedTop`]
+    /// [`crate::rigid::rates_from_omega`] (the same the derived tops and [`super::ChartedTop`]
     /// use).
     ///
     /// # Errors
-    /// As [`super::rates_from_omega`]: [`TopError::SingularChart`] at gimbal lock,
+    /// As [`crate::rigid::rates_from_omega`]: [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at gimbal lock,
     /// [`TopError::NonFinite`] for non-finite input.
     fn rates_at(&self, q: &[f64; 3], omega: &Vector3<f64>) -> Result<[f64; 3], TopError> {
         let b = self.rate_matrix_at(&[q[0], q[1], q[2], 0.0, 0.0, 0.0]);
-        rates_from_omega(self.sequence(), &b, q, omega)
+        Ok(rates_from_omega(self.sequence(), &b, q, omega)?)
     }
 }
 

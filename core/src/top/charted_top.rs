@@ -12,34 +12,11 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
-use super::error::{ChartError, TopError};
-use super::rates::rates_from_omega;
-use crate::ode::{AdaptiveConfig, Dop853, Stats, System, check_stop};
-use crate::rigid::{AngleSequence, angles_from_rotation};
-
-/// When to switch charts, and the integrator settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ChartConfig {
-    /// Switch when `|det B(q)|` of the current chart falls below this (default 0.3, i.e.
-    /// θ within 17° of the vertical for ZXZ).
-    pub switch_below: f64,
-    /// The adaptive stepper's configuration (default: DOP853 at rtol = atol = 1e-10).
-    pub stepper: AdaptiveConfig,
-}
-
-impl Default for ChartConfig {
-    fn default() -> Self {
-        ChartConfig {
-            switch_below: 0.3,
-            stepper: AdaptiveConfig::with_tol(1e-10, 1e-10),
-        }
-    }
-}
-
-/// How far from a rotation an attitude given to [`ChartedTop::new`] may be: the largest
-/// entry of |RᵀR − I| and |det R − 1| (a matrix from angles or a quaternion in f64 is within
-/// 1e-15; one that drifted through a long integration should be re-orthonormalised first).
-pub const ROTATION_TOLERANCE: f64 = 1e-9;
+use super::error::TopError;
+use crate::ode::{Dop853, Stats, System, check_stop};
+use crate::rigid::{
+    AngleSequence, ChartConfig, ChartError, angles_from_rotation, check_rotation, rates_from_omega,
+};
 
 /// A top integrated in whichever of two angle charts is regular, with DOP853.
 ///
@@ -70,7 +47,7 @@ pub const ROTATION_TOLERANCE: f64 = 1e-9;
 /// let spun = Rotation3::from_axis_angle(&Vector3::z_axis(), 30.0);
 /// assert_relative_eq!(top.rotation(), *spun.matrix(), epsilon = 1e-9);
 /// assert_relative_eq!(top.omega(), w0, epsilon = 1e-9);
-/// # Ok::<(), precess::top::ChartError>(())
+/// # Ok::<(), precess::top::TopError>(())
 /// ```
 ///
 /// The two charts are taken by value as `[C; 2]`, the type [`super::TopChart::both`]
@@ -106,41 +83,39 @@ impl<C: AngleChart> ChartedTop<C> {
     /// the better-conditioned of the two charts.
     ///
     /// # Errors
-    /// [`ChartError::SameSequence`] if both models use one sequence;
-    /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive;
-    /// [`ChartError::Parameter`] for a top that fails [`AngleChart::check_all`] (over a
+    /// In [`TopError::Chart`]: [`ChartError::SameSequence`] if both models use one sequence;
+    /// [`ChartError::InvalidSwitch`] for a `switch_below` that is not finite and positive
+    /// ([`ChartConfig::check`]); [`ChartError::NotARotation`] if `r` is not a rotation
+    /// matrix within [`crate::rigid::ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`]
+    /// for a NaN or infinite ω; [`ChartError::Singular`] if neither chart can represent the
+    /// state. The errors of [`AngleChart::check_all`] for a top that fails it (over a
     /// derived top: a body that breaks a rule of its description, a negative gravity or
-    /// damping, a NaN field: [`super::TopDynamics::check_all`]);
-    /// [`ChartError::NotARotation`] if `r` is not a rotation matrix within
-    /// [`ROTATION_TOLERANCE`]; [`ChartError::NonFiniteOmega`] for a NaN or infinite ω;
-    /// [`ChartError::Singular`] if neither chart can represent the state; the stepper's errors
-    /// for bad settings or time.
+    /// damping, a NaN field: [`super::TopDynamics::check_all`]); [`TopError::Ode`] for bad
+    /// stepper settings or time.
     pub fn new(
         charts: [C; 2],
         t0: f64,
         r: &Matrix3<f64>,
         omega: &Vector3<f64>,
         config: ChartConfig,
-    ) -> Result<Self, ChartError> {
+    ) -> Result<Self, TopError> {
         if charts[0].sequence() == charts[1].sequence() {
-            return Err(ChartError::SameSequence(charts[0].sequence()));
+            return Err(ChartError::SameSequence(charts[0].sequence()).into());
         }
-        let switch = config.switch_below;
-        if !(switch.is_finite() && switch > 0.0) {
-            return Err(ChartError::InvalidSwitch { value: switch });
-        }
+        config.check()?;
         for chart in &charts {
-            chart.check_all().map_err(ChartError::Parameter)?;
+            chart.check_all()?;
         }
         check_rotation(r)?;
         if !omega.iter().all(|v| v.is_finite()) {
             return Err(ChartError::NonFiniteOmega {
                 omega: [omega.x, omega.y, omega.z],
-            });
+            }
+            .into());
         }
         let states = [0, 1].map(|k| state_in(&charts[k], r, omega));
-        let det = |s: &Result<([f64; 6], f64), TopError>| match s {
-            Ok((_, det)) | Err(TopError::SingularChart { det, .. }) => *det,
+        let det = |s: &Result<([f64; 6], f64), ChartError>| match s {
+            Ok((_, det)) | Err(ChartError::SingularChart { det, .. }) => *det,
             Err(_) => f64::NAN,
         };
         let dets = [det(&states[0]), det(&states[1])];
@@ -152,7 +127,8 @@ impl<C: AngleChart> ChartedTop<C> {
                 return Err(ChartError::Singular {
                     primary: dets[0],
                     secondary: dets[1],
-                });
+                }
+                .into());
             }
         };
         let ode = Dop853::new(Charts { charts, active }, t0, state, config.stepper)?;
@@ -169,8 +145,8 @@ impl<C: AngleChart> ChartedTop<C> {
     /// # Errors
     /// [`OdeError::NonFiniteTime`](crate::ode::OdeError::NonFiniteTime) for a NaN or infinite `t_end`,
     /// [`OdeError::StopBeforeCurrent`](crate::ode::OdeError::StopBeforeCurrent) for one before the current time, and the stepper's
-    /// errors (in [`ChartError::Ode`]).
-    pub fn advance_to(&mut self, t_end: f64) -> Result<(), ChartError> {
+    /// errors (in [`TopError::Ode`]).
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), TopError> {
         check_stop(self.ode.t(), t_end)?;
         while self.ode.t() < t_end {
             self.ode.step(t_end)?;
@@ -181,7 +157,7 @@ impl<C: AngleChart> ChartedTop<C> {
 
     /// Moves to the other chart when the active one nears its singularity and the other is
     /// better conditioned; stays put otherwise (the active chart is then still regular).
-    fn maybe_switch(&mut self) -> Result<(), ChartError> {
+    fn maybe_switch(&mut self) -> Result<(), TopError> {
         let y = *self.ode.y();
         let charts = self.ode.system();
         let here = charts.active();
@@ -250,33 +226,15 @@ impl<C: AngleChart> ChartedTop<C> {
 
 /// The state of attitude `r` and body rate `omega` in `model`'s chart, with `|det B|` there:
 /// the angles from R, the rates from B(q) q̇ = ω under the one rule of
-/// [`super::rates_from_omega`].
+/// [`crate::rigid::rates_from_omega`].
 fn state_in<C: AngleChart>(
     model: &C,
     r: &Matrix3<f64>,
     omega: &Vector3<f64>,
-) -> Result<([f64; 6], f64), TopError> {
+) -> Result<([f64; 6], f64), ChartError> {
     let q = angles_from_rotation(model.sequence(), r);
     let b = model.rate_matrix_at(&[q[0], q[1], q[2], 0.0, 0.0, 0.0]);
     let qd = rates_from_omega(model.sequence(), &b, &q, omega)?;
     let det = b.determinant().abs();
     Ok(([q[0], q[1], q[2], qd[0], qd[1], qd[2]], det))
-}
-
-/// Checks that `r` is a finite rotation matrix within [`ROTATION_TOLERANCE`].
-pub(crate) fn check_rotation(r: &Matrix3<f64>) -> Result<(), ChartError> {
-    let orthogonality = (r.transpose() * r - Matrix3::identity()).abs().max();
-    let det = r.determinant();
-    // Written so that NaN fails both tests.
-    let orthogonal = orthogonality <= ROTATION_TOLERANCE;
-    let proper = (det - 1.0).abs() <= ROTATION_TOLERANCE;
-    if orthogonal && proper {
-        Ok(())
-    } else {
-        Err(ChartError::NotARotation {
-            matrix: [0, 1, 2].map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]]),
-            orthogonality,
-            det,
-        })
-    }
 }

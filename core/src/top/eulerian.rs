@@ -2,8 +2,8 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
+use super::dynamics::TopDynamics;
 use super::error::TopError;
-use super::top_trait::TopDynamics;
 use crate::ode::System;
 
 /// The Eulerian form of a derived top as an ODE system with state

@@ -5,13 +5,15 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
-use super::error::{ModelError, TopError};
-use super::rates::check_chart;
-use super::scene::TopDerivation;
-use super::top_trait::check_state;
+use super::derivation::TopDerivation;
+use super::dynamics::check_state;
+use super::error::TopError;
+#[cfg(doc)]
+use crate::codegen::BindingError;
 use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::rigid::AngleSequence;
+use crate::rigid::check_chart;
 use crate::sym::{Arena, SymbolId};
 
 /// A top's angle-form equations, lowered once and interpreted.
@@ -19,7 +21,7 @@ use crate::sym::{Arena, SymbolId};
 /// The state is `[q₀, q₁, q₂, q̇₀, q̇₁, q̇₂]`; time enters only through declared torques.
 /// As an [`crate::ode::System`] it is unchecked, for the steppers' inner loop (NaN at the
 /// chart's gimbal lock); [`TopModel::accel`] and [`AngleChart::rates_at`] check the chart
-/// under the one rule of [`super::check_chart`].
+/// under the one rule of [`crate::rigid::check_chart`].
 ///
 /// # Examples
 ///
@@ -28,7 +30,9 @@ use crate::sym::{Arena, SymbolId};
 /// Ω = 0.204168476687 rad/s of I1 cos θ Ω² − I3 ω3 Ω + M g l = 0, so θ̈ vanishes:
 ///
 /// ```
-/// use precess_core::top::{ModelError, TopError, TopModel, TopScene};
+/// use precess_core::codegen::BindingError;
+/// use precess_core::rigid::ChartError;
+/// use precess_core::top::{TopError, TopModel, TopScene};
 /// use precess_core::sym::Arena;
 ///
 /// let mut a = Arena::new();
@@ -42,17 +46,17 @@ use crate::sym::{Arena, SymbolId};
 ///
 /// // Every parameter needs a value; a missing one is named.
 /// let partial = TopModel::new(&mut a, &derivation, &[("I_1", 1.0), ("I_3", 0.5)]);
-/// assert!(matches!(partial, Err(ModelError::UnsetParameter { name, .. }) if name == "M"));
+/// assert!(matches!(partial, Err(TopError::Binding(BindingError::UnsetParameter { name, .. })) if name == "M"));
 ///
 /// let values = [("I_1", 1.0), ("I_3", 0.5), ("M", 1.0), ("g", 1.0), ("l", 1.0)];
 /// let model = TopModel::new(&mut a, &derivation, &values)?;
 /// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
-/// let q_ddot = model.accel(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
+/// let q_ddot = model.accelerations(&[0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()])?;
 /// assert!(q_ddot[1].abs() < 1e-10);
 ///
 /// // Straight up, the ZXZ angles are singular.
-/// let vertical = model.accel(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
-/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// let vertical = model.accelerations(&[0.0, 0.0, 0.0, 0.0, 0.0, 5.0]);
+/// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
@@ -76,16 +80,16 @@ impl TopModel {
     /// each parameter they read (`(name, value)` pairs; [`TopModel::set`] changes one later).
     ///
     /// # Errors
-    /// [`ModelError::UnsetParameter`] naming a parameter the derivation reads that
-    /// `parameters` leaves out; [`ModelError::UnknownParameter`] for a name it does not read;
-    /// [`ModelError::NonFinite`] for a NaN or infinite value;
-    /// [`ModelError::RunTimeInput`] if the derivation reads a user torque's inputs, which
+    /// In [`TopError::Binding`]: [`BindingError::UnsetParameter`] naming a parameter the
+    /// derivation reads that `parameters` leaves out; [`BindingError::UnknownParameter`] for
+    /// a name it does not read; [`BindingError::NonFinite`] for a NaN or infinite value;
+    /// [`BindingError::RunTimeInput`] if the derivation reads a user torque's inputs, which
     /// the interpreter cannot supply.
     pub fn new(
         arena: &mut Arena,
         top: &TopDerivation,
         parameters: &[(&str, f64)],
-    ) -> Result<TopModel, ModelError> {
+    ) -> Result<TopModel, TopError> {
         let sym = |e| {
             arena
                 .as_symbol(e)
@@ -104,8 +108,7 @@ impl TopModel {
             Program::lower(arena, top.rate_matrix.as_flattened()),
         ];
         let supplied = [q[0], q[1], q[2], rates[0], rates[1], rates[2]];
-        let bindings =
-            Bindings::new(arena, &programs, &supplied, parameters).map_err(ModelError::from)?;
+        let bindings = Bindings::new(arena, &programs, &supplied, parameters)?;
         let [accel, energy, omega, momenta, rotation, rate_matrix] = programs;
         Ok(TopModel {
             accel,
@@ -130,9 +133,9 @@ impl TopModel {
     /// Sets the parameter `name`.
     ///
     /// # Errors
-    /// [`ModelError::UnknownParameter`] for a name the derivation does not read,
-    /// [`ModelError::NonFinite`] for NaN or ±∞.
-    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, ModelError> {
+    /// In [`TopError::Binding`]: [`BindingError::UnknownParameter`] for a name the derivation
+    /// does not read, [`BindingError::NonFinite`] for NaN or ±∞.
+    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, TopError> {
         self.bindings.set(name, value)?;
         Ok(self)
     }
@@ -149,10 +152,10 @@ impl TopModel {
     /// chart cannot take.
     ///
     /// # Errors
-    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
-    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at
+    /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate
     /// through it with [`super::ChartedTop`]; [`TopError::NonFiniteResult`] if q̈ overflows.
-    pub fn accel(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
+    pub fn accelerations(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(self.sequence, &self.rate_matrix_at(state), &q)?;

@@ -4,10 +4,10 @@
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
 
+use super::dynamics::{TopDynamics, angle_state, check_state};
 use super::error::TopError;
-use super::rates::check_chart;
-use super::top_trait::{TopDynamics, angle_state, check_state};
 use crate::linalg::{LinalgError, LinearSystem, jacobian};
+use crate::rigid::check_chart;
 
 /// Smallest |det| of the cyclic block of the mass matrix, relative to the product of its
 /// diagonal, for the cyclic rates to be solvable from the momenta.
@@ -86,7 +86,7 @@ pub fn angle_linearisation<T: TopDynamics>(
     q_dot: &[f64; 3],
 ) -> Result<LinearSystem, LinearisationError> {
     check_state(&angle_state(q, q_dot))?;
-    check_chart(T::SEQUENCE, &top.rate_matrix_in(T::SEQUENCE, q), q)?;
+    check_chart(T::SEQUENCE, &top.rate_matrix_in(T::SEQUENCE, q), q).map_err(TopError::from)?;
     let jac = top.angle_jacobian(t, q, q_dot);
     let a = DMatrix::from_fn(6, 6, |r, c| match r {
         0..=2 => f64::from(u8::from(c == r + 3)),
@@ -129,7 +129,7 @@ pub fn reduced_linearisation<T: TopDynamics>(
     q_dot: &[f64; 3],
 ) -> Result<ReducedLinearisation, LinearisationError> {
     check_state(&angle_state(q, q_dot))?;
-    check_chart(T::SEQUENCE, &top.rate_matrix_in(T::SEQUENCE, q), q)?;
+    check_chart(T::SEQUENCE, &top.rate_matrix_in(T::SEQUENCE, q), q).map_err(TopError::from)?;
     let momenta = top.conserved_momenta(q, q_dot);
     let cyclic: Vec<usize> = (0..3).filter(|&i| momenta[i].is_some()).collect();
     let kept: Vec<usize> = (0..3).filter(|&i| momenta[i].is_none()).collect();
@@ -147,7 +147,7 @@ pub fn reduced_linearisation<T: TopDynamics>(
                 for (&c, v) in cyclic.iter().zip(rc.iter()) {
                     rates[c] = *v;
                 }
-                let acc = top.angle_accel(t, &qz, &rates);
+                let acc = top.accelerations_unchecked(t, &qz, &rates);
                 for (i, &k) in kept.iter().enumerate() {
                     out[i] = z[r + i];
                     out[r + i] = acc[k];

@@ -11,7 +11,8 @@
 //! - [`TopDynamics`] is the trait `#[top(...)]` implements over the generated code; [`TopChart`] and
 //!   [`EulerianTop`] run a derived top with any stepper of [`crate::ode`].
 //! - [`ChartedTop`] gets through gimbal lock by switching between the ZXZ and ZYX charts
-//!   ([`AngleChart`]); [`rates_from_omega`] is the one rule for when a chart is singular.
+//!   ([`AngleChart`]); [`crate::rigid::rates_from_omega`] is the one rule for when a chart
+//!   is singular, and the chart machinery every scene shares is in [`crate::rigid::charts`].
 //! - [`TopModel`] is a derivation interpreted at run time, for scenes built at run time.
 //! - [`FastTop`] is a top as a splitting: the exact free-body flow and gravity kicks.
 //! - [`HeavyTopTheory`] and [`HeavyTopMotion`] give the symmetric heavy top's closed forms
@@ -23,24 +24,25 @@
 
 mod angle_chart;
 mod charted_top;
+mod derivation;
+mod dynamics;
 mod error;
 mod eulerian;
 mod fast_top;
 mod interpreted;
 mod linear;
-mod observe;
 mod parameters;
-mod rates;
+mod quantities;
 mod scene;
 mod theory;
 mod top_chart;
-mod top_trait;
 mod typeset;
 
 pub use angle_chart::AngleChart;
-pub(crate) use charted_top::check_rotation;
-pub use charted_top::{ChartConfig, ChartedTop, ROTATION_TOLERANCE};
-pub use error::{ChartError, ModelError, TopError};
+pub use charted_top::ChartedTop;
+pub use derivation::TopDerivation;
+pub use dynamics::{TopDynamics, angle_state};
+pub use error::TopError;
 pub use eulerian::EulerianTop;
 pub use fast_top::FastTop;
 pub use interpreted::TopModel;
@@ -48,13 +50,11 @@ pub use linear::{
     LinearisationError, MOMENTUM_MAP_TOLERANCE, ReducedLinearisation, angle_linearisation,
     reduced_linearisation,
 };
-pub use observe::TopQuantities;
 pub use parameters::TopParameters;
-pub use rates::{SINGULAR_DET, check_chart, rates_from_omega};
-pub use scene::{TopDerivation, TopScene};
+pub use quantities::TopQuantities;
+pub use scene::TopScene;
 pub use theory::{
     HeavyTopMotion, HeavyTopTheory, STEADY_TOLERANCE, SYMMETRY_TOLERANCE, SleepingTop,
     SteadyPrecession, TheoryError, TorqueFreeSymmetric,
 };
 pub use top_chart::TopChart;
-pub use top_trait::{TopDynamics, angle_state};

@@ -3,8 +3,8 @@
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
+use super::dynamics::TopDynamics;
 use super::error::TopError;
-use super::top_trait::TopDynamics;
 use crate::ode::System;
 use crate::rigid::AngleSequence;
 
@@ -73,7 +73,7 @@ impl<'a, T: TopDynamics> TopChart<'a, T> {
 impl<T: TopDynamics> System<6> for TopChart<'_, T> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
-        let a = self.top.accel_in(self.sequence, t, y);
+        let a = self.top.accelerations_unchecked_in(self.sequence, t, y);
         dydt[..3].copy_from_slice(&y[3..]);
         dydt[3..].copy_from_slice(&a);
     }

@@ -4,7 +4,8 @@
 
 use std::borrow::Cow;
 
-use super::scene::{TopDerivation, TopScene};
+use super::derivation::TopDerivation;
+use super::scene::TopScene;
 use crate::codegen::{Lines, MethodCost, Paper, Program, Typeset};
 use crate::lagrange::LagrangeError;
 use crate::sym::mat3::Mat3;
@@ -18,7 +19,7 @@ impl TopScene {
     ///
     /// The lines are L = T − V; `Σⱼ Mᵢⱼ q̈ⱼ = fᵢ` per coordinate; q̈ᵢ; the conserved momenta;
     /// the definitions of the abbreviated mass properties they name. The costs are those
-    /// of `angle_accel`, `angle_jacobian`, `energy`, `conserved_momenta`, `rotation_in`,
+    /// of `accelerations_unchecked`, `angle_jacobian`, `energy`, `conserved_momenta`, `rotation_in`,
     /// `rate_matrix_in` (for [`TopScene::sequence`]) and `eulerian_rhs`, not counting a
     /// call to a user torque function.
     ///
@@ -146,7 +147,7 @@ impl TopScene {
         let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
         let eulerian = self.eulerian_rhs(arena, attitude, omega)?;
         let programs: [(&'static str, &[ExprId]); 7] = [
-            ("angle_accel", &top.accelerations.accel),
+            ("accelerations", &top.accelerations.accel),
             ("angle_jacobian", jacobian.as_flattened()),
             ("energy", &[energy]),
             ("conserved_momenta", &conserved),

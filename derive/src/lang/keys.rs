@@ -277,7 +277,7 @@ pub const SEQUENCE: &str = "sequence";
 /// How the accelerations are solved: `auto`, `symbolic`, `factored` or `recursive`.
 pub const ROUTE: &str = "route";
 /// The joint kinds.
-pub const JOINT_KINDS: &[&str] = &["revolute", "prismatic", "universal", "spherical"];
+pub const JOINT_KINDS: &[&str] = &precess_core::mechanism::JointKind::NAMES;
 /// The `key = value` settings of `#[link(...)]` (besides its name and its groups).
 pub const LINK_KEYS: &[&str] = &[
     PARENT,
@@ -293,7 +293,7 @@ pub const LINK_GROUPS: &[&str] = &[PARTS_GROUP, SPRING];
 /// The keys of `#[mechanism(...)]`.
 pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE, TAYLOR];
 /// The routes of [`ROUTE`].
-pub const ROUTES: &[&str] = &["auto", "symbolic", "factored", "recursive"];
+pub const ROUTES: &[&str] = &precess_core::mechanism::Route::NAMES;
 
 /// `; did you mean `…`?` when exactly one of `known` is close to `written` (see
 /// [`closest`]), else nothing: the suffix every "unknown part" and "unknown key" message

@@ -4,7 +4,7 @@
 //! before any is given up on.
 
 use precess_core::body::{Description, check_part, evaluate, mass_properties};
-use precess_core::mechanism::{JointKind, MechanismBody, MechanismScene, Parent};
+use precess_core::mechanism::{JointKind, MechanismBody, MechanismScene, Parent, Route};
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
@@ -13,19 +13,6 @@ use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, part_list};
 use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
-
-/// How the accelerations are to be solved, as the user asked.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum RouteChoice {
-    /// The cheapest by the engine's estimate.
-    Auto,
-    /// Symbolic inverse of the mass matrix.
-    Symbolic,
-    /// LDLᵀ of the mass matrix, unrolled.
-    Factored,
-    /// Articulated-body recursion, unrolled.
-    Recursive,
-}
 
 /// A coordinate's generalised force computed by a user function `f(&self, t, &q, &qdot)`.
 pub struct UserEffort {
@@ -46,7 +33,7 @@ pub struct CheckedMechanism {
     /// The user functions giving efforts.
     pub efforts: Vec<UserEffort>,
     /// The route asked for.
-    pub route: RouteChoice,
+    pub route: Route,
     /// Each body's parts as written, in the order of `scene.bodies`: those made of fields are
     /// checked at run time with the rules literal parts met here.
     pub parts: Vec<Description<ExprId>>,
@@ -128,9 +115,9 @@ pub fn check(
 fn mechanism_settings(
     ck: &mut Checker,
     settings: &Parsed<KeyValue>,
-) -> (Option<[ExprId; 3]>, RouteChoice) {
+) -> (Option<[ExprId; 3]>, Route) {
     let mut gravity = None;
-    let mut route = RouteChoice::Auto;
+    let mut route = Route::Auto;
     let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
     let cx = ck.cx;
     for KeyValue { key, value } in distinct(cx, &settings.items, &in_mechanism) {

@@ -6,13 +6,13 @@
 use std::collections::HashSet;
 
 use precess_core::codegen::Emitted;
-use precess_core::mechanism::{MechanismDerivation, Route};
+use precess_core::mechanism::MechanismDerivation;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::{Ident, LitStr};
 
-use super::check::{CheckedMechanism, RouteChoice, UserEffort};
+use super::check::{CheckedMechanism, UserEffort};
 use crate::lang::ctxt::Ctxt;
 use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
@@ -34,12 +34,7 @@ pub fn expand(
     let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
     let arena = &mut *ex.arena;
     let p = Private;
-    let route = match checked.route {
-        RouteChoice::Auto => Route::Auto,
-        RouteChoice::Symbolic => Route::Symbolic,
-        RouteChoice::Factored => Route::Factored,
-        RouteChoice::Recursive => Route::Recursive,
-    };
+    let route = checked.route;
     let derivation = match checked.scene.derive(arena, route) {
         Ok(d) => d,
         Err(e) => {
@@ -70,7 +65,7 @@ pub fn expand(
         kinetic,
         potential,
         power,
-        cyclic_momenta,
+        conserved_momenta,
         ..
     } = &derivation;
     let checked_outputs: Vec<ExprId> = pivots.iter().chain(accelerations).copied().collect();
@@ -135,8 +130,8 @@ pub fn expand(
     let kinetic = method.body(arena, &[*kinetic], |o| quote!(#(#o)*));
     let potential = method.body(arena, &[*potential], |o| quote!(#(#o)*));
     let power = method.body(arena, &[*power], |o| quote!(#(#o)*));
-    let cyclic_exprs: Vec<ExprId> = cyclic_momenta.iter().map(|&(_, e)| e).collect();
-    let cyclic_index: Vec<usize> = cyclic_momenta.iter().map(|&(i, _)| i).collect();
+    let cyclic_exprs: Vec<ExprId> = conserved_momenta.iter().map(|&(_, e)| e).collect();
+    let cyclic_index: Vec<usize> = conserved_momenta.iter().map(|&(i, _)| i).collect();
     let cyclic = method.body(arena, &cyclic_exprs, |o| {
         let sets = cyclic_index
             .iter()
@@ -217,7 +212,7 @@ pub fn expand(
 
             fn power(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> f64 #power
 
-            fn cyclic_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
+            fn conserved_momenta(&self, q: &[f64; #n], qdot: &[f64; #n]) -> [::core::option::Option<f64>; #n] #cyclic
 
             #check_parameters
 

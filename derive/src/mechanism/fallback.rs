@@ -75,7 +75,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             fn kinetic(&self, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
             fn potential(&self, _: &[f64; #n]) -> f64 { #stub }
             fn power(&self, _: f64, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
-            fn cyclic_momenta(&self, _: &[f64; #n], _: &[f64; #n]) -> [::core::option::Option<f64>; #n] { #stub }
+            fn conserved_momenta(&self, _: &[f64; #n], _: &[f64; #n]) -> [::core::option::Option<f64>; #n] { #stub }
         }
 
         #[automatically_derived]

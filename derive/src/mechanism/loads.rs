@@ -1,11 +1,11 @@
 //! The loads of a body's joint (springs, dampers, efforts, user functions) and the
 //! mechanism's settings (gravity, route), each value checked as `#[rigid]` values are.
 
-use precess_core::mechanism::{CoordinateLoad, Spring};
+use precess_core::mechanism::{CoordinateLoad, Route, Spring};
 use precess_core::sym::ExprId;
 use syn::Expr;
 
-use super::check::{LinkKeys, RouteChoice, UserEffort};
+use super::check::{LinkKeys, UserEffort};
 use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys;
@@ -190,13 +190,10 @@ impl Checker<'_> {
         Some([z, z, self.arena.neg(g)])
     }
 
-    pub(super) fn route(&mut self, e: &Expr) -> RouteChoice {
-        match path_ident(e).map(|i| i.to_string()).as_deref() {
-            Some("auto") => RouteChoice::Auto,
-            Some("symbolic") => RouteChoice::Symbolic,
-            Some("factored") => RouteChoice::Factored,
-            Some("recursive") => RouteChoice::Recursive,
-            _ => {
+    pub(super) fn route(&mut self, e: &Expr) -> Route {
+        match path_ident(e).and_then(|i| Route::from_name(&i.to_string())) {
+            Some(route) => route,
+            None => {
                 self.cx.error_spanned_by(
                     e,
                     format!(
@@ -205,7 +202,7 @@ impl Checker<'_> {
                         keys::ROUTES.join(", ")
                     ),
                 );
-                RouteChoice::Auto
+                Route::Auto
             }
         }
     }

@@ -247,7 +247,7 @@ mod tests {
         ] {
             assert!(!code.contains("compile_error"), "{code}");
             for (name, emitted, arm) in [
-                ("angle_accel", "accel_in", true),
+                ("accelerations", "accelerations_unchecked_in", true),
                 ("energy", "energy_in", true),
                 ("rotation_in", "rotation_in", true),
                 ("rate_matrix_in", "rate_matrix_in", true),

@@ -191,7 +191,7 @@ pub fn expand(
             fn top_parameters(&self) -> #p::TopParameters #parameters
 
             #[inline]
-            fn accel_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
+            fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
                 match seq { #(#accel)* }
             }
 

@@ -18,7 +18,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
         impl #impl_generics #p::TopDynamics for #ident #ty_generics #where_clause {
             const SEQUENCE: #p::AngleSequence = #p::AngleSequence::Zxz;
             fn top_parameters(&self) -> #p::TopParameters { #stub }
-            fn accel_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; 6]) -> [f64; 3] { #stub }
+            fn accelerations_unchecked_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; 6]) -> [f64; 3] { #stub }
             fn rotation_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
             fn rate_matrix_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
             fn energy_in(&self, _: #p::AngleSequence, _: &[f64; 6]) -> f64 { #stub }

@@ -4,9 +4,9 @@ use quote::quote;
 
 use crate::lang::tests::rigid_body as expand;
 
-/// The text of the `Zxz` arm of `accel_in`.
+/// The text of the `Zxz` arm of `accelerations_unchecked_in`.
 fn zxz_accel(code: &str) -> &str {
-    let start = code.find("fn accel_in").unwrap_or(0);
+    let start = code.find("fn accelerations_unchecked_in").unwrap_or(0);
     let rest = &code[start..];
     let arm = rest.find("AngleSequence :: Zxz =>").unwrap_or(0);
     let rest = &rest[arm..];
@@ -103,7 +103,7 @@ fn a_bare_top_is_torque_free() {
     let start = code.find("fn top_parameters").unwrap_or(0);
     let parameters = &code[start
         ..code[start..]
-            .find("fn accel_in")
+            .find("fn accelerations_unchecked_in")
             .map_or(code.len(), |e| start + e)];
     assert_eq!(parameters.matches(":: None").count(), 4, "{parameters}");
     assert!(!code.contains("__u"));
@@ -120,7 +120,7 @@ fn field_settings_are_read_for_the_run_time_check() {
     let start = code.find("fn top_parameters").unwrap_or(0);
     let parameters = &code[start
         ..code[start..]
-            .find("fn accel_in")
+            .find("fn accelerations_unchecked_in")
             .map_or(code.len(), |e| start + e)];
     assert!(parameters.contains("= self . g ;"), "{parameters}");
     assert!(

@@ -3,12 +3,14 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::error::MechanismChartError;
-use super::joint_map::{joint_rate_matrix, joint_rotation, map_to_partner, state_in_chart};
 use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
+use crate::mechanism::MechanismError;
 use crate::ode::{Dop853, Stats, System, check_stop};
-use crate::rigid::AngleSequence;
-use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
+use crate::rigid::charts::state_in_chart;
+use crate::rigid::{
+    AngleSequence, ChartConfig, ChartError, check_chart, check_rotation, joint_rate_matrix,
+    joint_rotation, map_to_partner,
+};
 
 /// A mechanism integrated with DOP853 in whichever chart of each spherical joint is regular.
 ///
@@ -32,7 +34,7 @@ use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
 /// use precess_core::mechanism::{JointKind, MechanismScene, Parent, Route};
 /// use precess_core::rigid::AngleSequence;
 /// use precess_core::sym::Arena;
-/// use precess_core::top::ChartConfig;
+/// use precess_core::rigid::ChartConfig;
 /// let mut a = Arena::new();
 /// let (o, z) = (a.one(), a.zero());
 /// let tenth = { let ten = a.integer(10); a.recip(ten).unwrap() };
@@ -50,7 +52,7 @@ use crate::top::{ChartConfig, ChartError, check_chart, check_rotation};
 /// swing.advance_to(2.0)?;
 /// assert_eq!((swing.switches(), swing.charts()), (1, ChartSet(1)));
 /// assert_relative_eq!(swing.energy(), -0.8f64.cos(), max_relative = 1e-9);
-/// # Ok::<(), precess_core::mechanism::charts::MechanismChartError>(())
+/// # Ok::<(), precess_core::mechanism::MechanismError>(())
 /// ```
 ///
 /// `docs/mechanisms.md` starts a sleeping top standing exactly upright, where its declared
@@ -90,11 +92,11 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// Starts from the state `y0 = [q, q̇]` given in the chart set `charts`.
     ///
     /// # Errors
-    /// [`MechanismChartError::InvalidSwitch`] for a `switch_below` that is not finite and
-    /// positive; [`MechanismChartError::StateLength`] if S ≠ 2n;
-    /// [`MechanismChartError::TooManyJoints`]; [`MechanismChartError::UnavailableCharts`] for
-    /// a chart set the mechanism does not provide; [`MechanismChartError::NonFinite`] for a
-    /// NaN or infinite state; [`MechanismChartError::Joint`] for a spherical joint at its
+    /// [`MechanismError::Chart`] ([`ChartError::InvalidSwitch`]) for a `switch_below` that is
+    /// not finite and positive; [`MechanismError::OdeStateLength`] if S ≠ 2n;
+    /// [`MechanismError::TooManyJoints`]; [`MechanismError::UnavailableCharts`] for
+    /// a chart set the mechanism does not provide; [`MechanismError::NonFinite`] for a
+    /// NaN or infinite state; [`MechanismError::Joint`] for a spherical joint at its
     /// chart's gimbal lock (start it with [`ChartedMechanism::from_attitudes`]); the
     /// stepper's errors.
     pub fn new(
@@ -103,13 +105,14 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
         y0: [f64; S],
         charts: ChartSet,
         config: ChartConfig,
-    ) -> Result<Self, MechanismChartError> {
+    ) -> Result<Self, MechanismError> {
         let joints = check_setup(&dynamics, &config)?;
         if !dynamics.has_charts(charts) {
-            return Err(MechanismChartError::UnavailableCharts { charts: charts.0 });
+            return Err(MechanismError::UnavailableCharts { charts: charts.0 });
         }
         if !y0.iter().all(|v| v.is_finite()) {
-            return Err(MechanismChartError::NonFinite {
+            return Err(MechanismError::NonFinite {
+                quantity: "state",
                 values: y0.to_vec(),
             });
         }
@@ -117,7 +120,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
             let q = triple(&y0, joint.first).unwrap_or_default();
             let sequence = charts.sequence(j, joint.declared);
             check_chart(sequence, &joint_rate_matrix(sequence, &q), &q).map_err(|source| {
-                MechanismChartError::Joint {
+                MechanismError::Joint {
                     joint: joint.name.clone(),
                     source,
                 }
@@ -138,19 +141,19 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// taken from `y0` (whose spherical joints' slots are ignored).
     ///
     /// # Errors
-    /// As [`ChartedMechanism::new`]; [`MechanismChartError::AttitudeCount`] unless there is
-    /// one attitude per spherical joint; [`MechanismChartError::Attitude`] for a matrix that
-    /// is not a rotation within [`crate::top::ROTATION_TOLERANCE`] or a non-finite ω.
+    /// As [`ChartedMechanism::new`]; [`MechanismError::AttitudeCount`] unless there is
+    /// one attitude per spherical joint; [`MechanismError::Attitude`] for a matrix that
+    /// is not a rotation within [`crate::rigid::ROTATION_TOLERANCE`] or a non-finite ω.
     pub fn from_attitudes(
         dynamics: D,
         t0: f64,
         y0: [f64; S],
         attitudes: &[(Matrix3<f64>, Vector3<f64>)],
         config: ChartConfig,
-    ) -> Result<Self, MechanismChartError> {
+    ) -> Result<Self, MechanismError> {
         let joints = check_setup(&dynamics, &config)?;
         if attitudes.len() != joints.len() {
-            return Err(MechanismChartError::AttitudeCount {
+            return Err(MechanismError::AttitudeCount {
                 expected: joints.len(),
                 got: attitudes.len(),
             });
@@ -159,7 +162,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
         // Each joint's state and |det B| in its declared and its partner chart.
         let mut placed = Vec::with_capacity(joints.len());
         for (joint, (r, w)) in joints.iter().zip(attitudes) {
-            let attitude = |source| MechanismChartError::Attitude {
+            let attitude = |source| MechanismError::Attitude {
                 joint: joint.name.clone(),
                 source,
             };
@@ -194,12 +197,10 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
             } else {
                 declared
             };
-            let (q, qd, _) = chosen
-                .clone()
-                .map_err(|source| MechanismChartError::Joint {
-                    joint: joint.name.clone(),
-                    source,
-                })?;
+            let (q, qd, _) = chosen.clone().map_err(|source| MechanismError::Joint {
+                joint: joint.name.clone(),
+                source,
+            })?;
             put(&mut y, joint.first, &q);
             put(&mut y, joint.first + n, &qd);
         }
@@ -214,7 +215,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// [`OdeError::StopBeforeCurrent`](crate::ode::OdeError::StopBeforeCurrent) for one before the current time, and the stepper's
     /// errors (a joint that reaches gimbal lock with no chart to switch to makes the
     /// step fail).
-    pub fn advance_to(&mut self, t_end: f64) -> Result<(), MechanismChartError> {
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), MechanismError> {
         check_stop(self.ode.t(), t_end)?;
         while self.ode.t() < t_end {
             self.ode.step(t_end)?;
@@ -225,7 +226,7 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
 
     /// Moves each joint near its chart's lock to its partner chart when that is better
     /// conditioned and available; restarts the stepper once if any moved.
-    fn maybe_switch(&mut self) -> Result<(), MechanismChartError> {
+    fn maybe_switch(&mut self) -> Result<(), MechanismError> {
         let n = S / 2;
         let mut y = *self.ode.y();
         let system = self.ode.system();
@@ -332,18 +333,15 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
 fn check_setup<D: ChartedDynamics<S>, const S: usize>(
     dynamics: &D,
     config: &ChartConfig,
-) -> Result<Vec<SphericalJoint>, MechanismChartError> {
-    let switch = config.switch_below;
-    if !(switch.is_finite() && switch > 0.0) {
-        return Err(MechanismChartError::InvalidSwitch { value: switch });
-    }
+) -> Result<Vec<SphericalJoint>, MechanismError> {
+    config.check()?;
     let expected = 2 * dynamics.dof();
     if S != expected {
-        return Err(MechanismChartError::StateLength { expected, got: S });
+        return Err(MechanismError::OdeStateLength { expected, got: S });
     }
     let joints = dynamics.spherical_joints();
     if joints.len() > MAX_SPHERICAL_JOINTS {
-        return Err(MechanismChartError::TooManyJoints {
+        return Err(MechanismError::TooManyJoints {
             count: joints.len(),
             max: MAX_SPHERICAL_JOINTS,
         });

@@ -17,13 +17,9 @@
 //! the physics.
 
 mod driver;
-mod error;
-mod joint_map;
 mod model_charts;
 
 pub use driver::ChartedMechanism;
-pub use error::MechanismChartError;
-pub use joint_map::{joint_rate_matrix, joint_rotation, map_to_partner};
 pub use model_charts::MechanismCharts;
 
 use super::scene::{JointKind, MechanismScene};

@@ -1,11 +1,11 @@
 //! The run-time [`super::ChartedDynamics`]: one [`MechanismModel`] per chart set, each
 //! derived from the scene with the switched joints' sequences swapped.
 
-use super::error::MechanismChartError;
 use super::{
     ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint, chart_variants,
     scene_in_charts, spherical_joints,
 };
+use crate::mechanism::MechanismError;
 use crate::mechanism::{MechanismModel, MechanismScene, Route};
 use crate::sym::Arena;
 
@@ -39,7 +39,7 @@ use crate::sym::Arena;
 /// // ZYX at zero angles: the bob straight down.
 /// ChartedDynamics::<6>::rhs_in(&charts, ChartSet(1), 0.0, &[0.0; 6], &mut dydt);
 /// assert_eq!(dydt, [0.0; 6]);
-/// # Ok::<(), precess_core::mechanism::charts::MechanismChartError>(())
+/// # Ok::<(), precess_core::mechanism::MechanismError>(())
 /// ```
 #[derive(Debug)]
 pub struct MechanismCharts {
@@ -51,17 +51,17 @@ impl MechanismCharts {
     /// Derives `scene` by `route` in each of its chart sets and binds `parameters` in each.
     ///
     /// # Errors
-    /// [`MechanismChartError::TooManyJoints`] past [`MAX_SPHERICAL_JOINTS`] spherical joints;
-    /// [`MechanismChartError::Mechanism`] as [`MechanismModel::new`].
+    /// [`MechanismError::TooManyJoints`] past [`MAX_SPHERICAL_JOINTS`] spherical joints;
+    /// as [`MechanismModel::new`].
     pub fn new(
         arena: &mut Arena,
         scene: &MechanismScene,
         route: Route,
         parameters: &[(&str, f64)],
-    ) -> Result<MechanismCharts, MechanismChartError> {
+    ) -> Result<MechanismCharts, MechanismError> {
         let joints = spherical_joints(scene);
         if joints.len() > MAX_SPHERICAL_JOINTS {
-            return Err(MechanismChartError::TooManyJoints {
+            return Err(MechanismError::TooManyJoints {
                 count: joints.len(),
                 max: MAX_SPHERICAL_JOINTS,
             });
@@ -74,7 +74,7 @@ impl MechanismCharts {
                 let model = MechanismModel::new(arena, &variant, route, parameters)?;
                 Ok((charts, model))
             })
-            .collect::<Result<Vec<_>, MechanismChartError>>()?;
+            .collect::<Result<Vec<_>, MechanismError>>()?;
         Ok(MechanismCharts { joints, models })
     }
 
@@ -105,7 +105,7 @@ impl MechanismCharts {
     ///
     /// # Errors
     /// As [`MechanismModel::set`].
-    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismChartError> {
+    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
         for (_, model) in &mut self.models {
             model.set(name, value)?;
         }

@@ -5,10 +5,10 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
 use super::parameters::TopParameters;
-use super::rates::{check_chart, rates_from_omega};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
+use crate::rigid::{check_chart, rates_from_omega};
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
 ///
@@ -19,8 +19,9 @@ use crate::rigid::AngleSequence;
 ///
 /// The generated methods are straight-line code without checks, for the steppers' inner
 /// loops: at a chart's gimbal lock (sin θ = 0 for ZXZ, cos pitch = 0 for ZYX) q̈ comes out
-/// NaN or infinite. The `try_` helpers and [`TopDynamics::rates_from_omega`] check the state and the
-/// chart first, under the one rule of [`super::check_chart`]; the `try_` helpers and
+/// NaN or infinite. The checked methods ([`TopDynamics::accelerations`], [`TopDynamics::accelerations_in`])
+/// and [`TopDynamics::rates_from_omega`] check the state and the chart first, under the one
+/// rule of [`crate::rigid::check_chart`]; the checked methods and
 /// [`super::ChartedTop::new`] check the whole top first, through [`TopDynamics::check_all`].
 ///
 /// Every top is a [`RigidBody`] (the same derive implements both), so its body is checked
@@ -48,18 +49,18 @@ use crate::rigid::AngleSequence;
 /// let (theta, omega_p, w3) = (std::f64::consts::FRAC_PI_3, 0.204168476687, 10.0);
 /// // ω3 = ψ̇ + φ̇ cos θ.
 /// let q_dot = [omega_p, 0.0, w3 - omega_p * theta.cos()];
-/// let q_ddot = Heavy.try_angle_accel(0.0, &[0.0, theta, 0.0], &q_dot).unwrap();
+/// let q_ddot = Heavy.accelerations(0.0, &[0.0, theta, 0.0], &q_dot).unwrap();
 /// assert!(q_ddot[1].abs() < 1e-10);
 ///
-/// let vertical = Heavy.try_angle_accel(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
-/// assert!(matches!(vertical, Err(TopError::SingularChart { .. })));
+/// let vertical = Heavy.accelerations(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
+/// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// ```
 pub trait TopDynamics: RigidBody {
     /// The declared angle sequence.
     const SEQUENCE: AngleSequence;
 
     /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
-    fn accel_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
+    fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
 
     /// R(q) in the chart `seq`, body to space.
     fn rotation_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
@@ -106,7 +107,7 @@ pub trait TopDynamics: RigidBody {
     /// compile time: the body (every rule of [`RigidBody::validate`]: masses and sizes > 0,
     /// inertias positive definite and within the triangle inequality, rotations that are
     /// rotations) and the settings ([`TopDynamics::check_parameters`]: gravity, damping,
-    /// torques). The one checked entry: the `try_` methods, [`super::ChartedTop::new`] over
+    /// torques). The one checked entry: the checked accelerations, [`super::ChartedTop::new`] over
     /// [`super::TopChart`]s and [`TopDynamics::validate_top`] all call it.
     ///
     /// [`RigidBody::validate`] alone checks the body only (a negative gravity passes it).
@@ -168,28 +169,23 @@ pub trait TopDynamics: RigidBody {
     ///     eq.conserved[1],
     ///     r"p_{\psi} = I_{3} \left(\dot{\psi} + \dot{\phi} \cos\theta\right)"
     /// );
-    /// let accel = eq.cost("angle_accel").unwrap();
+    /// let accel = eq.cost("accelerations").unwrap();
     /// assert_eq!((accel.total(), accel.sin_cos), (34, 1));
     /// ```
     fn equations(&self) -> &'static Typeset;
 
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
-    /// [`TopDynamics::try_angle_accel`]).
-    fn angle_accel(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
-        self.accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    /// [`TopDynamics::accelerations`]).
+    fn accelerations_unchecked(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
+        self.accelerations_unchecked_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
     }
 
     /// q̈ in [`TopDynamics::SEQUENCE`], refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// As [`TopDynamics::try_accel_in`].
-    fn try_angle_accel(
-        &self,
-        t: f64,
-        q: &[f64; 3],
-        q_dot: &[f64; 3],
-    ) -> Result<[f64; 3], TopError> {
-        self.try_accel_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+    /// As [`TopDynamics::accelerations_in`].
+    fn accelerations(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> Result<[f64; 3], TopError> {
+        self.accelerations_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
     }
 
     /// q̈ in the chart `seq`, refusing a state the chart cannot take.
@@ -197,11 +193,11 @@ pub trait TopDynamics: RigidBody {
     /// # Errors
     /// The errors of [`TopDynamics::check_all`] (a body that breaks a rule of its
     /// description, [`TopError::Body`]; a negative gravity or damping, a NaN setting);
-    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::SingularChart`] at
-    /// the chart's gimbal lock (`|det B(q)|` below [`super::SINGULAR_DET`]): integrate through
+    /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at
+    /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
     /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
-    fn try_accel_in(
+    fn accelerations_in(
         &self,
         seq: AngleSequence,
         t: f64,
@@ -211,7 +207,7 @@ pub trait TopDynamics: RigidBody {
         check_state(state)?;
         let q = [state[0], state[1], state[2]];
         check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
-        let a = self.accel_in(seq, t, state);
+        let a = self.accelerations_unchecked_in(seq, t, state);
         if a.iter().all(|v| v.is_finite()) {
             Ok(a)
         } else {
@@ -235,20 +231,20 @@ pub trait TopDynamics: RigidBody {
     /// The rates q̇ = B(q)⁻¹ ω of [`TopDynamics::SEQUENCE`].
     ///
     /// # Errors
-    /// As [`super::rates_from_omega`]: [`TopError::SingularChart`] at gimbal lock
-    /// (`|det B|` below [`super::SINGULAR_DET`]), [`TopError::NonFinite`] for non-finite
+    /// As [`crate::rigid::rates_from_omega`]: [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at gimbal lock
+    /// (`|det B|` below [`crate::rigid::SINGULAR_DET`]), [`TopError::NonFinite`] for non-finite
     /// input.
     fn rates_from_omega(&self, q: &[f64; 3], omega: &Vector3<f64>) -> Result<[f64; 3], TopError> {
-        rates_from_omega(
+        Ok(rates_from_omega(
             Self::SEQUENCE,
             &self.rate_matrix_in(Self::SEQUENCE, q),
             q,
             omega,
-        )
+        )?)
     }
 }
 
-/// The angle-form state `[q, q̇]` that [`TopDynamics::accel_in`] and [`TopDynamics::energy_in`] take.
+/// The angle-form state `[q, q̇]` that [`TopDynamics::accelerations_unchecked_in`] and [`TopDynamics::energy_in`] take.
 pub fn angle_state(q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 6] {
     [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]]
 }

@@ -3,12 +3,10 @@
 
 use std::cell::RefCell;
 
-use nalgebra::Matrix3;
-
-use super::derive::{MechanismDerivation, Route};
+use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene};
-use crate::body::BodyError;
+use crate::body::{BodyError, Definiteness, check_inertia};
 use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
@@ -80,43 +78,13 @@ pub struct MechanismModel {
     buffer: RefCell<Vec<f64>>,
 }
 
-/// A body's inertia about its centre (row-major `entries`): finite, symmetric, principal
-/// moments not negative and meeting I1 + I2 ≥ I3, all to a relative 1e-12 of its largest
-/// entry. Errors number the body's part 0: the tensor is the body's sum of parts.
-fn check_inertia(entries: &[f64]) -> Result<(), BodyError> {
-    const TOL: f64 = 1e-12;
-    let kind = "body";
-    if let Some(&value) = entries.iter().find(|v| !v.is_finite()) {
-        return Err(BodyError::NonFinite {
-            part: 0,
-            kind,
-            key: "inertia",
-            value,
-        });
-    }
-    let m = Matrix3::from_row_slice(entries);
-    let scale = m.amax();
-    for (row, col) in [(0, 1), (0, 2), (1, 2)] {
-        let (upper, lower) = (m[(row, col)], m[(col, row)]);
-        if (upper - lower).abs() > TOL * scale {
-            return Err(BodyError::NotSymmetric {
-                part: 0,
-                row,
-                col,
-                upper,
-                lower,
-            });
-        }
-    }
-    let mut moments: [f64; 3] = m.symmetric_eigenvalues().into();
-    moments.sort_by(f64::total_cmp);
-    if moments[0] < -TOL * scale {
-        return Err(BodyError::NotPositiveDefinite { part: 0, moments });
-    }
-    if moments[0] + moments[1] < moments[2] - TOL * scale {
-        return Err(BodyError::TriangleInequality { part: 0, moments });
-    }
-    Ok(())
+/// A body's inertia about its centre (row-major `entries`), under the body language's one
+/// rule ([`check_inertia`]) with zero moments allowed: the tensor is the body's sum of parts,
+/// so errors number part 0.
+fn body_inertia(entries: &[f64]) -> Result<(), BodyError> {
+    let row =
+        |i: usize| std::array::from_fn(|j| entries.get(3 * i + j).copied().unwrap_or(f64::NAN));
+    check_inertia(0, &[row(0), row(1), row(2)], Definiteness::SemiPositive)
 }
 
 /// Each name once: a name given twice would bind its last value silently.
@@ -247,7 +215,7 @@ impl MechanismModel {
         let outputs: Vec<ExprId> = d.pivots.iter().chain(&d.accelerations).copied().collect();
         let accel = Program::lower(arena, &outputs);
         let energy = Program::lower(arena, &[d.kinetic, d.potential, d.energy, d.power]);
-        let momenta: Vec<ExprId> = d.cyclic_momenta.iter().map(|&(_, p)| p).collect();
+        let momenta: Vec<ExprId> = d.conserved_momenta.iter().map(|&(_, p)| p).collect();
         let momenta = Program::lower(arena, &momenta);
         let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).copied().collect();
         supplied.push(time);
@@ -259,7 +227,7 @@ impl MechanismModel {
             pivot_count: d.pivots.len(),
             energy,
             momenta,
-            cyclic: d.cyclic_momenta.iter().map(|&(i, _)| i).collect(),
+            cyclic: d.conserved_momenta.iter().map(|&(i, _)| i).collect(),
             axes: Program::lower(arena, &[]),
             axis_joints: Vec::new(),
             mass_properties: Program::lower(arena, &[]),
@@ -304,7 +272,7 @@ impl MechanismModel {
                     value: mass,
                 });
             }
-            check_inertia(&values[1..]).map_err(|error| MechanismError::Part {
+            body_inertia(&values[1..]).map_err(|error| MechanismError::Part {
                 body: body.clone(),
                 error,
             })?;
@@ -479,7 +447,7 @@ impl MechanismModel {
     ///
     /// # Errors
     /// As the state checks of [`MechanismModel::accelerations`].
-    pub fn cyclic_momenta(
+    pub fn conserved_momenta(
         &self,
         t: f64,
         q: &[f64],
@@ -524,5 +492,79 @@ impl<const N: usize> System<N> for MechanismSystem<'_, N> {
         let (rates, accelerations) = dydt.split_at_mut(n);
         rates.copy_from_slice(qdot);
         accelerations.copy_from_slice(&buffer[m.pivot_count..]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::body::{About, Part, Shape, check_part};
+    use crate::mechanism::Parent;
+    use crate::rigid::AngleSequence;
+
+    /// The tensor with principal moments (1, 1, 2 + ε), the largest about (0, 1, 1)/√2, so
+    /// its largest entry is 1.5 + ε/2 < I3: a relative tolerance taken of the largest entry
+    /// and one taken of I3 draw the triangle inequality's border at different ε.
+    fn tilted(eps: f64) -> [[f64; 3]; 3] {
+        let (d, c) = (1.5 + eps / 2.0, 0.5 + eps / 2.0);
+        [[1.0, 0.0, 0.0], [0.0, d, c], [0.0, c, d]]
+    }
+
+    /// Whether a mechanism body (on a ball joint, so every entry is read) with the tensor of
+    /// parameters `d`, `c` is accepted by the interpreted model.
+    fn mechanism_accepts(t: &[[f64; 3]; 3]) -> bool {
+        let mut a = Arena::new();
+        let (o, z) = (a.one(), a.zero());
+        let ball = JointKind::Spherical {
+            sequence: AngleSequence::Zxz,
+        };
+        let mut bob = MechanismScene::body(&mut a, "bob", Parent::Ground, ball, &["p", "t", "s"]);
+        let (d, c) = (a.parameter("d"), a.parameter("c"));
+        bob.mass = o;
+        bob.center = [z, z, a.integer(-1)];
+        bob.inertia = [[o, z, z], [z, d, c], [z, c, d]];
+        let mut scene = MechanismScene::new();
+        scene.bodies.push(bob);
+        let values = [("d", t[1][1]), ("c", t[1][2])];
+        match MechanismModel::new(&mut a, &scene, Route::Auto, &values) {
+            Ok(_) => true,
+            Err(MechanismError::Part { error, .. }) => {
+                assert!(matches!(error, BodyError::TriangleInequality { .. }));
+                false
+            }
+            Err(e) => panic!("unexpected error {e}"),
+        }
+    }
+
+    /// An explicit part of a body's description (a top's, a free body's) with the tensor.
+    fn part_accepts(t: &[[f64; 3]; 3]) -> bool {
+        let shape = Shape::Explicit {
+            mass: 1.0,
+            inertia: *t,
+            about: About::Center,
+        };
+        check_part(0, &Part::new(shape, [0.0; 3])).is_ok()
+    }
+
+    /// The one inertia rule: a mechanism's body and a body's explicit part accept and refuse
+    /// the same tensors at the triangle inequality's border, 1e-12 of the largest entry
+    /// (1.5): ε = 1.25e-12 passes, ε = 1.75e-12 fails in both (when the body rule took the
+    /// tolerance of I3 = 2, it passed ε = 1.75e-12 that the mechanism refused).
+    #[test]
+    fn scenes_share_the_inertia_border() {
+        for (eps, accepted) in [
+            (1.25e-12, true),
+            (1.75e-12, false),
+            (0.0, true),
+            (1e-9, false),
+        ] {
+            let t = tilted(eps);
+            assert_eq!(part_accepts(&t), accepted, "explicit part, ε = {eps:e}");
+            assert_eq!(
+                mechanism_accepts(&t),
+                accepted,
+                "mechanism body, ε = {eps:e}"
+            );
+        }
     }
 }

@@ -35,14 +35,40 @@ pub enum Route {
 }
 
 impl Route {
+    /// Every route, in the order of [`Route::NAMES`].
+    pub const ALL: [Route; 4] = [
+        Route::Auto,
+        Route::Symbolic,
+        Route::Factored,
+        Route::Recursive,
+    ];
+
+    /// The routes' names, as `#[mechanism(route = ..)]` takes them: the one list the derive
+    /// reads too.
+    pub const NAMES: [&'static str; 4] = ["auto", "symbolic", "factored", "recursive"];
+
     /// The route's name.
     pub fn name(self) -> &'static str {
         match self {
-            Route::Auto => "auto",
-            Route::Symbolic => "symbolic",
-            Route::Factored => "factored",
-            Route::Recursive => "recursive",
+            Route::Auto => Route::NAMES[0],
+            Route::Symbolic => Route::NAMES[1],
+            Route::Factored => Route::NAMES[2],
+            Route::Recursive => Route::NAMES[3],
         }
+    }
+
+    /// The route called `name`, if there is one.
+    ///
+    /// ```
+    /// use precess_core::mechanism::Route;
+    /// assert_eq!(Route::from_name("factored"), Some(Route::Factored));
+    /// assert_eq!(Route::from_name("adjugate"), None);
+    /// for route in Route::ALL {
+    ///     assert_eq!(Route::from_name(route.name()), Some(route));
+    /// }
+    /// ```
+    pub fn from_name(name: &str) -> Option<Route> {
+        Route::ALL.into_iter().find(|r| r.name() == name)
     }
 }
 
@@ -82,7 +108,7 @@ pub struct MechanismDerivation {
     /// torques).
     pub power: ExprId,
     /// `(i, ∂L/∂q̇_i)` for each coordinate absent from L with no load on it (conserved).
-    pub cyclic_momenta: Vec<(usize, ExprId)>,
+    pub conserved_momenta: Vec<(usize, ExprId)>,
     /// The route taken ([`Route::Auto`] resolved).
     pub route: Route,
 }
@@ -94,7 +120,7 @@ impl MechanismDerivation {
         let mut roots: Vec<ExprId> = self.accelerations.clone();
         roots.extend(&self.pivots);
         roots.extend([self.kinetic, self.potential, self.power]);
-        roots.extend(self.cyclic_momenta.iter().map(|&(_, p)| p));
+        roots.extend(self.conserved_momenta.iter().map(|&(_, p)| p));
         let mut names: Vec<String> = roots
             .iter()
             .flat_map(|&e| arena.free_symbols(e))
@@ -336,7 +362,7 @@ impl MechanismScene {
         } else {
             power
         };
-        let mut cyclic_momenta = Vec::new();
+        let mut conserved_momenta = Vec::new();
         for i in 0..n {
             let (Some(qs), Some(rs)) = (
                 arena.as_symbol(coords.q[i]),
@@ -359,7 +385,7 @@ impl MechanismScene {
             };
             if cyclic {
                 let p = arena.diff(l, rs);
-                cyclic_momenta.push((i, arena.expand(p)));
+                conserved_momenta.push((i, arena.expand(p)));
             }
         }
         Ok(MechanismDerivation {
@@ -371,7 +397,7 @@ impl MechanismScene {
             potential: lag.potential,
             energy,
             power,
-            cyclic_momenta,
+            conserved_momenta,
             route,
         })
     }

@@ -1,7 +1,7 @@
 //! The standard quantities of a derived top as trajectory columns: energy, |ω|, |L| and the
 //! conserved momenta, per sample of a run of its angle form.
 
-use super::top_trait::TopDynamics;
+use super::dynamics::TopDynamics;
 use crate::body::RigidBody;
 use crate::ode::Quantities;
 

@@ -3,12 +3,13 @@
 //! attitude J and the relative angular velocity ω = B q̇ that both charts share.
 //!
 //! The angles from J are [`angles_from_rotation`]'s and the rates from ω are
-//! [`rates_from_omega`]'s, the rules the tops' chart switch uses.
+//! [`rates_from_omega`]'s, the rules every chart switch uses.
 
 use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
 
+use super::error::ChartError;
+use super::singular::rates_from_omega;
 use crate::rigid::{AngleSequence, angles_from_rotation};
-use crate::top::{TopError, rates_from_omega};
 
 fn elementary_axis(k: usize) -> Unit<Vector3<f64>> {
     match k {
@@ -31,7 +32,7 @@ fn elementary(k: usize, angle: f64) -> Matrix3<f64> {
 /// ```
 /// use approx::assert_relative_eq;
 /// use nalgebra::{Rotation3, Vector3};
-/// use precess_core::mechanism::charts::joint_rotation;
+/// use precess_core::rigid::joint_rotation;
 /// use precess_core::rigid::AngleSequence;
 /// let r = Rotation3::from_axis_angle(&Vector3::z_axis(), 0.3)
 ///     * Rotation3::from_axis_angle(&Vector3::y_axis(), -0.2)
@@ -54,7 +55,7 @@ pub fn joint_rotation(sequence: AngleSequence, q: &[f64; 3]) -> Matrix3<f64> {
 ///
 /// ```
 /// use approx::assert_relative_eq;
-/// use precess_core::mechanism::charts::joint_rate_matrix;
+/// use precess_core::rigid::joint_rate_matrix;
 /// use precess_core::rigid::AngleSequence;
 /// let b = joint_rate_matrix(AngleSequence::Zxz, &[0.4, 0.7, -1.2]);
 /// assert_relative_eq!(b[(2, 0)], 0.7f64.cos(), epsilon = 1e-15);
@@ -74,13 +75,13 @@ pub fn joint_rate_matrix(sequence: AngleSequence, q: &[f64; 3]) -> Matrix3<f64> 
 /// relative angular velocity `omega` (child axes), with `|det B|` there.
 ///
 /// # Errors
-/// As [`rates_from_omega`]: [`TopError::SingularChart`] at the chart's gimbal lock,
-/// [`TopError::NonFinite`] for non-finite input, [`TopError::NonFiniteResult`] on overflow.
+/// As [`rates_from_omega`]: [`ChartError::SingularChart`] at the chart's gimbal lock,
+/// [`ChartError::NonFinite`] for non-finite input, [`ChartError::NonFiniteResult`] on overflow.
 pub(crate) fn state_in_chart(
     sequence: AngleSequence,
     rotation: &Matrix3<f64>,
     omega: &Vector3<f64>,
-) -> Result<([f64; 3], [f64; 3], f64), TopError> {
+) -> Result<([f64; 3], [f64; 3], f64), ChartError> {
     let q = angles_from_rotation(sequence, rotation);
     let b = joint_rate_matrix(sequence, &q);
     let qd = rates_from_omega(sequence, &b, &q, omega)?;
@@ -92,8 +93,8 @@ pub(crate) fn state_in_chart(
 /// rates and `|det B|` there.
 ///
 /// # Errors
-/// As [`rates_from_omega`] in the partner chart: [`TopError::SingularChart`] if the
-/// attitude is the partner's gimbal lock, [`TopError::NonFinite`] for non-finite input.
+/// As [`rates_from_omega`] in the partner chart: [`ChartError::SingularChart`] if the
+/// attitude is the partner's gimbal lock, [`ChartError::NonFinite`] for non-finite input.
 ///
 /// # Examples
 ///
@@ -101,7 +102,7 @@ pub(crate) fn state_in_chart(
 ///
 /// ```
 /// use approx::assert_relative_eq;
-/// use precess_core::mechanism::charts::map_to_partner;
+/// use precess_core::rigid::map_to_partner;
 /// use precess_core::rigid::AngleSequence;
 /// let (q, qd) = ([0.3, 1e-3, -0.5], [0.2, -0.1, 4.0]);
 /// let (p, pd, det) = map_to_partner(AngleSequence::Zxz, &q, &qd)?;
@@ -109,15 +110,15 @@ pub(crate) fn state_in_chart(
 /// let (back, back_d, _) = map_to_partner(AngleSequence::Zyx, &p, &pd)?;
 /// assert_relative_eq!(back.as_slice(), q.as_slice(), epsilon = 1e-12);
 /// assert_relative_eq!(back_d.as_slice(), qd.as_slice(), epsilon = 1e-9);
-/// # Ok::<(), precess_core::top::TopError>(())
+/// # Ok::<(), precess_core::rigid::ChartError>(())
 /// ```
 pub fn map_to_partner(
     sequence: AngleSequence,
     q: &[f64; 3],
     qd: &[f64; 3],
-) -> Result<([f64; 3], [f64; 3], f64), TopError> {
+) -> Result<([f64; 3], [f64; 3], f64), ChartError> {
     if !q.iter().chain(qd).all(|v| v.is_finite()) {
-        return Err(TopError::NonFinite {
+        return Err(ChartError::NonFinite {
             quantity: "a spherical joint's angles or rates",
             values: q.iter().chain(qd).copied().collect(),
         });

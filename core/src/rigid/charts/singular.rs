@@ -1,6 +1,6 @@
 //! When an angle chart is singular, and solving `B(q) q̇ = ω` there: one rule for every
-//! path (the derived [`super::TopDynamics`], the interpreted [`super::TopModel`] through
-//! [`super::AngleChart`], and [`super::ChartedTop`] when it picks or switches a chart).
+//! path (the derived and interpreted tops, `ChartedTop` when it picks or
+//! switches a chart, and a mechanism's spherical joints).
 //!
 //! The body angular velocity is `ω = B(q) q̇`. For ZXZ `|det B| = |sin θ|`, for ZYX
 //! `|det B| = |cos pitch|`, so `|det B|` ∈ [0, 1] measures the distance to gimbal lock on the
@@ -10,7 +10,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::error::TopError;
+use super::error::ChartError;
 use crate::rigid::AngleSequence;
 
 /// `|det B(q)|` below which an angle chart counts as singular (about 1e-12 rad from gimbal
@@ -20,7 +20,7 @@ pub const SINGULAR_DET: f64 = 1e-12;
 /// `|det B(q)|` of the chart `sequence` at the angles `q`, under the one rule.
 ///
 /// # Errors
-/// [`TopError::NonFinite`] for non-finite angles; [`TopError::SingularChart`] when
+/// [`ChartError::NonFinite`] for non-finite angles; [`ChartError::SingularChart`] when
 /// `|det B| < SINGULAR_DET` (or B itself is not finite).
 ///
 /// # Examples
@@ -30,7 +30,7 @@ pub const SINGULAR_DET: f64 = 1e-12;
 /// ```
 /// use nalgebra::Matrix3;
 /// use precess_core::rigid::AngleSequence;
-/// use precess_core::top::{TopError, check_chart};
+/// use precess_core::rigid::{ChartError, check_chart};
 /// let zxz_b = |theta: f64, psi: f64| {
 ///     let (st, ct, sp, cp) = (theta.sin(), theta.cos(), psi.sin(), psi.cos());
 ///     Matrix3::new(st * sp, cp, 0.0, st * cp, -sp, 0.0, ct, 0.0, 1.0)
@@ -40,16 +40,16 @@ pub const SINGULAR_DET: f64 = 1e-12;
 /// let vertical = [0.0, 0.0, 0.2];
 /// assert!(matches!(
 ///     check_chart(AngleSequence::Zxz, &zxz_b(0.0, 0.2), &vertical),
-///     Err(TopError::SingularChart { det: 0.0, .. })
+///     Err(ChartError::SingularChart { det: 0.0, .. })
 /// ));
 /// ```
 pub fn check_chart(
     sequence: AngleSequence,
     b: &Matrix3<f64>,
     q: &[f64; 3],
-) -> Result<f64, TopError> {
+) -> Result<f64, ChartError> {
     if !q.iter().all(|v| v.is_finite()) {
-        return Err(TopError::NonFinite {
+        return Err(ChartError::NonFinite {
             quantity: "angles q",
             values: q.to_vec(),
         });
@@ -59,7 +59,7 @@ pub fn check_chart(
     if det >= SINGULAR_DET {
         Ok(det)
     } else {
-        Err(TopError::SingularChart {
+        Err(ChartError::SingularChart {
             sequence,
             q: *q,
             det,
@@ -71,8 +71,8 @@ pub fn check_chart(
 /// singular chart ([`check_chart`]) and non-finite values.
 ///
 /// # Errors
-/// [`TopError::NonFinite`] for non-finite angles or ω; [`TopError::SingularChart`] at
-/// gimbal lock; [`TopError::NonFiniteResult`] if the rates overflow.
+/// [`ChartError::NonFinite`] for non-finite angles or ω; [`ChartError::SingularChart`] at
+/// gimbal lock; [`ChartError::NonFiniteResult`] if the rates overflow.
 ///
 /// # Examples
 ///
@@ -83,7 +83,7 @@ pub fn check_chart(
 /// use approx::assert_relative_eq;
 /// use nalgebra::{Matrix3, Vector3};
 /// use precess_core::rigid::AngleSequence;
-/// use precess_core::top::rates_from_omega;
+/// use precess_core::rigid::rates_from_omega;
 /// let (st, ct) = 0.5f64.sin_cos();
 /// let b = Matrix3::new(0.0, 1.0, 0.0, st, 0.0, 0.0, ct, 0.0, 1.0);
 /// let w = Vector3::new(0.1, 0.2, 3.0);
@@ -96,15 +96,15 @@ pub fn rates_from_omega(
     b: &Matrix3<f64>,
     q: &[f64; 3],
     omega: &Vector3<f64>,
-) -> Result<[f64; 3], TopError> {
+) -> Result<[f64; 3], ChartError> {
     if !omega.iter().all(|v| v.is_finite()) {
-        return Err(TopError::NonFinite {
+        return Err(ChartError::NonFinite {
             quantity: "body angular velocity ω",
             values: omega.iter().copied().collect(),
         });
     }
     let det = check_chart(sequence, b, q)?;
-    let singular = || TopError::SingularChart {
+    let singular = || ChartError::SingularChart {
         sequence,
         q: *q,
         det,
@@ -114,7 +114,7 @@ pub fn rates_from_omega(
     if rates.iter().all(|v| v.is_finite()) {
         Ok(rates)
     } else {
-        Err(TopError::NonFiniteResult {
+        Err(ChartError::NonFiniteResult {
             quantity: "the rates q̇",
             values: rates.to_vec(),
         })

@@ -1,0 +1,367 @@
+//! A free body's derivation: the centre of mass under the declared forces and the rotation
+//! about it under their torques, derived symbolically so that only what is declared appears.
+//!
+//! The state (see [`super::layout`]) is read through input symbols. The attitude matrix is
+//! formed from the stored quaternion as R = (homogeneous form)/|q|², so a quaternion that
+//! drifts off the unit sphere still gives a rotation, and only the entries a declared force
+//! needs are ever lowered.
+
+use super::error::FreeError;
+use super::scene::{ForcePoint, FreeScene};
+use super::state::STATE_LEN;
+use crate::sym::mat3::{Mat3, cross, dot, mat_vec, transpose};
+use crate::sym::{Arena, ExprId, Rational};
+
+/// Everything derived from a [`FreeScene`], as expressions in the state symbols.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FreeDerivation {
+    /// The state symbols, in the order of [`super::layout`].
+    pub state: [ExprId; STATE_LEN],
+    /// The right-hand side ẏ: ẋ = v, v̇ = F/M, q̇ = ½ q ⊗ (0, ω), ω̇ = I⁻¹(τ − ω × I ω).
+    pub rhs: [ExprId; STATE_LEN],
+    /// The total force F, space axes.
+    pub force: [ExprId; 3],
+    /// The total torque τ about the centre of mass, principal axes.
+    pub torque: [ExprId; 3],
+    /// The energy E = ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x.
+    pub energy: ExprId,
+    /// The power of every force but gravity, P = F'·v + τ·ω (F' = F − M g), so that
+    /// dE/dt = P.
+    pub power: ExprId,
+    /// The linear momentum M v, space axes.
+    pub linear_momentum: [ExprId; 3],
+    /// The angular momentum about the space origin, x × M v + R I ω, space axes.
+    pub angular_momentum: [ExprId; 3],
+}
+
+impl FreeScene {
+    /// Derives the equations of motion, the wrench, the energy, its power balance and the
+    /// momenta, over fresh input symbols for the state.
+    ///
+    /// # Errors
+    /// [`FreeError::ZeroInertia`] if the mass or a principal moment is identically zero.
+    pub fn derive(&self, arena: &mut Arena) -> Result<FreeDerivation, FreeError> {
+        const NAMES: [&str; STATE_LEN] = [
+            "x", "y", "z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z", "omega_1", "omega_2",
+            "omega_3",
+        ];
+        let state: [ExprId; STATE_LEN] = std::array::from_fn(|k| arena.input(NAMES[k]));
+        let pick = |at: usize| [state[at], state[at + 1], state[at + 2]];
+        let (x, v, omega) = (pick(0), pick(3), pick(10));
+        let q = [state[6], state[7], state[8], state[9]];
+        let rotation = rotation_of_quaternion(arena, q)?;
+        let Wrench {
+            force,
+            conservative,
+            torque,
+        } = self.wrench(arena, &rotation, &v, &omega);
+        let inv_mass = reciprocal(arena, self.mass, "mass")?;
+        let accel = force.map(|f| arena.mul(inv_mass, f));
+        let omega_dot = self.euler(arena, &omega, &torque)?;
+        let q_dot = quaternion_rate(arena, q, omega);
+        let mut rhs = [arena.zero(); STATE_LEN];
+        rhs[..3].copy_from_slice(&v);
+        rhs[3..6].copy_from_slice(&accel);
+        rhs[6..10].copy_from_slice(&q_dot);
+        rhs[10..].copy_from_slice(&omega_dot);
+        let half = arena.constant(Rational::new(1, 2).unwrap_or(Rational::ONE));
+        let v2 = dot(arena, &v, &v);
+        let translational = arena.product(&[half, self.mass, v2]);
+        let i_omega: [ExprId; 3] = std::array::from_fn(|k| arena.mul(self.moments[k], omega[k]));
+        let two_t = dot(arena, &omega, &i_omega);
+        let rotational = arena.mul(half, two_t);
+        let mut energy = arena.add(translational, rotational);
+        if let Some(g) = self.gravity {
+            // V = −M g·x: the work of the weight is −ΔV.
+            let gx = dot(arena, &g, &x);
+            let v_grav = arena.mul(self.mass, gx);
+            energy = arena.sub(energy, v_grav);
+        }
+        let applied: [ExprId; 3] = std::array::from_fn(|k| arena.sub(force[k], conservative[k]));
+        let fv = dot(arena, &applied, &v);
+        let tw = dot(arena, &torque, &omega);
+        let power = arena.add(fv, tw);
+        let linear_momentum = v.map(|c| arena.mul(self.mass, c));
+        let orbital = cross(arena, &x, &linear_momentum);
+        let spin = mat_vec(arena, &rotation, &i_omega);
+        let angular_momentum: [ExprId; 3] = std::array::from_fn(|k| arena.add(orbital[k], spin[k]));
+        Ok(FreeDerivation {
+            state,
+            rhs,
+            force,
+            torque,
+            energy,
+            power,
+            linear_momentum,
+            angular_momentum,
+        })
+    }
+
+    /// A point of the body relative to the centre of mass, principal axes: Rₚ𝒹ᵀ (p − c).
+    fn lever(&self, arena: &mut Arena, at: &ForcePoint) -> Option<[ExprId; 3]> {
+        let ForcePoint::Body(p) = at else {
+            return None;
+        };
+        let d: [ExprId; 3] = std::array::from_fn(|k| arena.sub(p[k], self.center[k]));
+        Some(mat_vec(arena, &transpose(&self.principal_rotation), &d))
+    }
+
+    /// The total force (space axes), its conservative part (the weight) and the total torque
+    /// about the centre of mass (principal axes) of the declared terms.
+    fn wrench(
+        &self,
+        arena: &mut Arena,
+        rotation: &Mat3,
+        v: &[ExprId; 3],
+        omega: &[ExprId; 3],
+    ) -> Wrench {
+        let to_principal = transpose(&self.principal_rotation);
+        let to_body = transpose(rotation);
+        let mut forces: Vec<[ExprId; 3]> = Vec::new();
+        let mut torques: Vec<[ExprId; 3]> = Vec::new();
+        let mut conservative = [arena.zero(); 3];
+        if let Some(g) = self.gravity {
+            // The weight acts at the centre of mass: no torque about it.
+            conservative = g.map(|gk| arena.mul(self.mass, gk));
+            forces.push(conservative);
+        }
+        for f in &self.body_forces {
+            let fp = mat_vec(arena, &to_principal, &f.force);
+            forces.push(mat_vec(arena, rotation, &fp));
+            if let Some(r) = self.lever(arena, &f.at) {
+                torques.push(cross(arena, &r, &fp));
+            }
+        }
+        for f in &self.space_forces {
+            forces.push(f.force);
+            if let Some(r) = self.lever(arena, &f.at) {
+                let fb = mat_vec(arena, &to_body, &f.force);
+                torques.push(cross(arena, &r, &fb));
+            }
+        }
+        if let Some(c) = self.drag {
+            let mc = arena.neg(c);
+            forces.push(v.map(|vk| arena.mul(mc, vk)));
+        }
+        if let Some(u) = self.user_force {
+            forces.push(u);
+        }
+        if let Some(t) = self.body_torque {
+            torques.push(mat_vec(arena, &to_principal, &t));
+        }
+        if let Some(t) = self.space_torque {
+            torques.push(mat_vec(arena, &to_body, &t));
+        }
+        if let Some(c) = self.damping {
+            let mc = arena.neg(c);
+            torques.push(omega.map(|w| arena.mul(mc, w)));
+        }
+        if let Some(u) = self.user_torque {
+            torques.push(mat_vec(arena, &to_principal, &u));
+        }
+        Wrench {
+            force: sum_vectors(arena, &forces),
+            conservative,
+            torque: sum_vectors(arena, &torques),
+        }
+    }
+
+    /// Euler's equations in principal axes, ω̇ᵢ = kᵢ ωⱼ ωₖ + τᵢ/Iᵢ with kᵢ = (Iⱼ − Iₖ)/Iᵢ: a
+    /// coefficient that vanishes (a symmetric body) removes its term, and constant
+    /// coefficients fold to one number each.
+    fn euler(
+        &self,
+        arena: &mut Arena,
+        omega: &[ExprId; 3],
+        torque: &[ExprId; 3],
+    ) -> Result<[ExprId; 3], FreeError> {
+        const MOMENTS: [&str; 3] = [
+            "principal moment I1",
+            "principal moment I2",
+            "principal moment I3",
+        ];
+        let m = self.moments;
+        let mut out = [arena.zero(); 3];
+        for i in 0..3 {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let inverse = reciprocal(arena, m[i], MOMENTS[i])?;
+            let diff = arena.sub(m[j], m[k]);
+            let gyro = if arena.is_zero(diff).unwrap_or(false) {
+                arena.zero()
+            } else {
+                let coefficient = arena.mul(diff, inverse);
+                let coefficient = fold(arena, coefficient);
+                arena.product(&[coefficient, omega[j], omega[k]])
+            };
+            let drive = arena.mul(inverse, torque[i]);
+            out[i] = arena.add(gyro, drive);
+        }
+        Ok(out)
+    }
+}
+
+/// The declared force and torque, and the part of the force that has a potential.
+struct Wrench {
+    force: [ExprId; 3],
+    conservative: [ExprId; 3],
+    torque: [ExprId; 3],
+}
+
+/// Σ of 3-vectors (the zero vector for none).
+fn sum_vectors(arena: &mut Arena, terms: &[[ExprId; 3]]) -> [ExprId; 3] {
+    std::array::from_fn(|k| {
+        let parts: Vec<ExprId> = terms.iter().map(|t| t[k]).collect();
+        arena.sum(&parts)
+    })
+}
+
+/// A constant expression as one constant, so no arithmetic on constants is left for run
+/// time (exact when it folded to a rational, else its value rounded once).
+fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
+    if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
+        return e;
+    }
+    let value = arena.eval(e, &[]);
+    arena.float(value).unwrap_or(e)
+}
+
+/// 1/e, folded when constant.
+///
+/// # Errors
+/// [`FreeError::ZeroInertia`] naming `quantity` when e is identically zero.
+fn reciprocal(arena: &mut Arena, e: ExprId, quantity: &'static str) -> Result<ExprId, FreeError> {
+    if arena.is_zero(e).unwrap_or(false) {
+        return Err(FreeError::ZeroInertia { quantity });
+    }
+    let r = arena
+        .recip(e)
+        .map_err(|_| FreeError::ZeroInertia { quantity })?;
+    Ok(fold(arena, r))
+}
+
+/// The rotation of a quaternion q = (w, x, y, z) of any non-zero size, body to space:
+/// the homogeneous form divided by |q|².
+fn rotation_of_quaternion(arena: &mut Arena, q: [ExprId; 4]) -> Result<Mat3, FreeError> {
+    let [w, x, y, z] = q;
+    let sq = q.map(|c| arena.mul(c, c));
+    let norm2 = arena.sum(&sq);
+    let inv = arena
+        .recip(norm2)
+        .map_err(|_| FreeError::ZeroInertia { quantity: "|q|²" })?;
+    let two = arena.integer(2);
+    // Diagonal: w² + a² − b² − c² for the axis a and the other two b, c.
+    let diagonal = |arena: &mut Arena, a: usize| {
+        let others: Vec<ExprId> = (1..4)
+            .filter(|&k| k != a)
+            .map(|k| arena.neg(sq[k]))
+            .collect();
+        let mut terms = vec![sq[0], sq[a]];
+        terms.extend(others);
+        let s = arena.sum(&terms);
+        arena.mul(s, inv)
+    };
+    // Off-diagonal: 2 (a b ± w c) / |q|².
+    let off = |arena: &mut Arena, a: ExprId, b: ExprId, c: ExprId, plus: bool| {
+        let ab = arena.mul(a, b);
+        let wc = arena.mul(w, c);
+        let s = if plus {
+            arena.add(ab, wc)
+        } else {
+            arena.sub(ab, wc)
+        };
+        arena.product(&[two, s, inv])
+    };
+    Ok([
+        [
+            diagonal(arena, 1),
+            off(arena, x, y, z, false),
+            off(arena, x, z, y, true),
+        ],
+        [
+            off(arena, x, y, z, true),
+            diagonal(arena, 2),
+            off(arena, y, z, x, false),
+        ],
+        [
+            off(arena, x, z, y, false),
+            off(arena, y, z, x, true),
+            diagonal(arena, 3),
+        ],
+    ])
+}
+
+/// q̇ = ½ q ⊗ (0, ω) for the body angular velocity ω.
+fn quaternion_rate(arena: &mut Arena, q: [ExprId; 4], omega: [ExprId; 3]) -> [ExprId; 4] {
+    let [w, x, y, z] = q;
+    let [p, r, s] = omega;
+    let half = arena.constant(Rational::new(1, 2).unwrap_or(Rational::ONE));
+    let mut combine = |terms: &[(ExprId, ExprId, bool)]| {
+        let parts: Vec<ExprId> = terms
+            .iter()
+            .map(|&(a, b, positive)| {
+                let t = arena.mul(a, b);
+                if positive { t } else { arena.neg(t) }
+            })
+            .collect();
+        let sum = arena.sum(&parts);
+        arena.mul(half, sum)
+    };
+    [
+        combine(&[(x, p, false), (y, r, false), (z, s, false)]),
+        combine(&[(w, p, true), (y, s, true), (z, r, false)]),
+        combine(&[(w, r, true), (z, p, true), (x, s, false)]),
+        combine(&[(w, s, true), (x, r, true), (y, p, false)]),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::codegen::Program;
+
+    /// The symbolic rotation agrees with nalgebra's for a quaternion off the unit sphere.
+    #[test]
+    fn rotation_matches_nalgebra_for_any_norm() {
+        let mut a = Arena::new();
+        let q: [ExprId; 4] = std::array::from_fn(|k| a.input(&format!("q{k}")));
+        let r = rotation_of_quaternion(&mut a, q).unwrap();
+        let p = Program::lower(&a, r.as_flattened());
+        let raw = [0.3, -1.2, 0.7, 2.1];
+        let out = p.eval(&raw);
+        let unit = nalgebra::UnitQuaternion::new_normalize(nalgebra::Quaternion::new(
+            raw[0], raw[1], raw[2], raw[3],
+        ));
+        let m = unit.to_rotation_matrix();
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!((out[3 * i + j] - m[(i, j)]).abs() < 1e-15, "{i}{j}");
+            }
+        }
+    }
+
+    /// A torque-free symmetric body: ω̇₃ has no term, the others one product each, and no
+    /// attitude entry is read.
+    #[test]
+    fn symmetric_torque_free_body_emits_the_reduced_euler_equations() {
+        let mut a = Arena::new();
+        let (m, i1, i3) = (a.integer(2), a.integer(1), a.number("0.5").unwrap());
+        let scene = FreeScene::new(&mut a, m, [i1, i1, i3]);
+        let d = scene.derive(&mut a).unwrap();
+        assert_eq!(d.rhs[12], a.zero());
+        // ω̇₁ = ((I₂ − I₃)/I₁) ω₂ ω₃ = ½ ω₂ ω₃.
+        let p = Program::lower(&a, &d.rhs[10..]);
+        assert_eq!(p.op_count().divs, 0);
+        let reads = p.inputs();
+        let quaternion: Vec<_> = d.state[6..10]
+            .iter()
+            .filter_map(|&e| a.as_symbol(e))
+            .collect();
+        assert!(reads.iter().all(|s| !quaternion.contains(s)));
+        let mut env = vec![0.0; a.symbol_count()];
+        for (k, &v) in [0.0, 3.0, 4.0].iter().enumerate() {
+            env[a.as_symbol(d.state[10 + k]).unwrap().index()] = v;
+        }
+        let out = p.eval(&env);
+        assert_eq!(out, vec![0.5 * 3.0 * 4.0, -0.5 * 4.0 * 0.0, 0.0]);
+    }
+}
