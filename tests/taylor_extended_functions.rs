@@ -6,6 +6,7 @@
 // Reference constants are quoted with all their digits.
 #![allow(clippy::excessive_precision)]
 
+use precess::codegen::BindingError;
 use precess::exact::Dd;
 use precess::sym::Arena;
 use precess::taylor::{Taylor, TaylorConfig, TaylorError, TaylorSystem, TaylorTape};
@@ -175,7 +176,9 @@ fn parameters_the_equations_do_not_read_are_accepted() {
         &[("g", 9.81), ("m", f64::NAN)],
         10,
     );
-    assert!(matches!(nan, Err(TaylorError::NonFinite { ref name, .. }) if name == "m"));
+    assert!(
+        matches!(nan, Err(TaylorError::Binding(BindingError::NonFinite { ref name, .. })) if name == "m")
+    );
     // A name the scene does not know is refused.
     let bogus = TaylorTape::new(
         &a,
@@ -185,7 +188,9 @@ fn parameters_the_equations_do_not_read_are_accepted() {
         &[("g", 9.81), ("mass", 2.0)],
         10,
     );
-    assert!(matches!(bogus, Err(TaylorError::UnknownParameter { ref name, .. }) if name == "mass"));
+    assert!(
+        matches!(bogus, Err(TaylorError::Binding(BindingError::UnknownParameter { ref name, .. })) if name == "mass")
+    );
 }
 
 mod properties {

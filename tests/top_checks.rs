@@ -380,6 +380,16 @@ fn top_model_names_the_parameter_that_is_missing_unknown_or_not_finite() {
     assert!(
         matches!(nan, Err(TopError::Binding(BindingError::NonFinite { name, .. })) if name == "g")
     );
+    // A parameter given twice is refused, not bound to its last value.
+    let twice = [all.as_slice(), &[("g", 5.0)]].concat();
+    assert_eq!(
+        TopModel::new(&mut a, &d, &twice).unwrap_err(),
+        TopError::Binding(BindingError::DuplicateParameter {
+            name: "g".into(),
+            first: 9.81,
+            second: 5.0
+        })
+    );
 
     // Complete: released at rest, θ̈ = M g l sin θ / I1.
     let mut m = TopModel::new(&mut a, &d, &all).unwrap();

@@ -45,6 +45,34 @@ pub enum BindingError {
         /// The input's name.
         name: String,
     },
+    /// The same parameter given twice: which value was meant is unknown, so neither is
+    /// taken (the last one used to win silently).
+    #[error("parameter `{name}` is given twice ({first}, then {second}): give each parameter once")]
+    DuplicateParameter {
+        /// The parameter.
+        name: String,
+        /// The first value given.
+        first: f64,
+        /// The second value given.
+        second: f64,
+    },
+}
+
+/// Refuses a parameter named twice in `values`.
+///
+/// # Errors
+/// [`BindingError::DuplicateParameter`] for the first name given twice.
+pub(crate) fn check_distinct(values: &[(&str, f64)]) -> Result<(), BindingError> {
+    for (i, &(name, first)) in values.iter().enumerate() {
+        if let Some(&(_, second)) = values[i + 1..].iter().find(|(n, _)| *n == name) {
+            return Err(BindingError::DuplicateParameter {
+                name: name.to_owned(),
+                first,
+                second,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Parameters by name and the environment the programs run in.
@@ -62,6 +90,7 @@ impl Bindings {
     /// [`Bindings::eval`], any other input is refused.
     ///
     /// # Errors
+    /// [`BindingError::DuplicateParameter`] for a name given twice,
     /// [`BindingError::RunTimeInput`] for an input not supplied, then as
     /// [`Bindings::set`] for each value, then [`BindingError::UnsetParameter`] for the
     /// first parameter left out.
@@ -71,6 +100,7 @@ impl Bindings {
         supplied: &[SymbolId],
         values: &[(&str, f64)],
     ) -> Result<Bindings, BindingError> {
+        check_distinct(values)?;
         let mut read: Vec<(String, SymbolId)> = Vec::new();
         for s in programs.iter().flat_map(Program::inputs) {
             let symbol = arena.symbol(s);

@@ -18,6 +18,7 @@ mod program;
 mod tokens;
 mod typeset;
 
+pub(crate) use bindings::check_distinct;
 pub use bindings::{BindingError, Bindings};
 pub use count::OpCount;
 pub use latex::latex;

@@ -6,7 +6,7 @@ use super::recurrence;
 use super::recurrence_dd::{self, DdTable};
 use super::tape::{ScalarOp, Tape, Value};
 use super::{MAX_TAYLOR_ORDER, TaylorSystem};
-use crate::codegen::{BindingError, Bindings, Program};
+use crate::codegen::{BindingError, Bindings, Program, check_distinct};
 use crate::exact::Dd;
 use crate::sym::{Arena, ExprId};
 
@@ -27,36 +27,10 @@ pub enum TaylorError {
         /// The largest order allowed ([`MAX_TAYLOR_ORDER`]).
         max: usize,
     },
-    /// A parameter name the right-hand side does not read.
-    #[error("unknown parameter `{name}` (the right-hand side reads: {known})")]
-    UnknownParameter {
-        /// The name given.
-        name: String,
-        /// The parameters read, comma-separated.
-        known: String,
-    },
-    /// A parameter the right-hand side reads that was given no value.
-    #[error("parameter `{name}` is not set (the right-hand side reads: {known})")]
-    UnsetParameter {
-        /// The parameter left out.
-        name: String,
-        /// The parameters read, comma-separated.
-        known: String,
-    },
-    /// NaN or ±∞ for a parameter.
-    #[error("parameter `{name}` = {value} is not finite")]
-    NonFinite {
-        /// The parameter.
-        name: String,
-        /// The value given.
-        value: f64,
-    },
-    /// The right-hand side reads an input that is neither state, time nor parameter.
-    #[error("the right-hand side reads the input `{name}`, which is not in the state")]
-    RunTimeInput {
-        /// The input's name.
-        name: String,
-    },
+    /// A parameter named twice, unknown, unset or not finite, or an input the
+    /// interpreter cannot supply.
+    #[error(transparent)]
+    Binding(#[from] BindingError),
     /// A constant of the right-hand side (parameters and numbers combined) that is not
     /// finite for the values given: a square root or real power of a negative value, a
     /// division by zero.
@@ -69,21 +43,6 @@ pub enum TaylorError {
         /// Its value.
         value: f64,
     },
-}
-
-impl From<BindingError> for TaylorError {
-    fn from(e: BindingError) -> Self {
-        match e {
-            BindingError::UnknownParameter { name, known } => {
-                TaylorError::UnknownParameter { name, known }
-            }
-            BindingError::UnsetParameter { name, known } => {
-                TaylorError::UnsetParameter { name, known }
-            }
-            BindingError::NonFinite { name, value } => TaylorError::NonFinite { name, value },
-            BindingError::RunTimeInput { name } => TaylorError::RunTimeInput { name },
-        }
-    }
 }
 
 /// The Taylor coefficients of `y' = f(t, y)` for a right-hand side given as expressions,
@@ -123,7 +82,7 @@ impl From<BindingError> for TaylorError {
 /// not to read (a free body's mass under gravity alone): they are checked for finiteness
 /// and otherwise ignored, so that code binding all of a scene's parameters keeps working
 /// when a simplification removes one. A name that is no parameter of the arena at all is
-/// still [`TaylorError::UnknownParameter`].
+/// still a [`BindingError::UnknownParameter`].
 #[derive(Debug)]
 pub struct TaylorTape<const N: usize> {
     tape: Tape,
@@ -175,15 +134,18 @@ impl<const N: usize> TaylorTape<N> {
         // binds a whole scene: judged for finiteness, then left out of what Bindings sees.
         let inputs = program.inputs();
         let read = |name: &str| inputs.iter().any(|&s| arena.symbol(s).name == name);
+        // A name given twice is refused before any is judged, read or not.
+        check_distinct(values)?;
         let mut used = Vec::with_capacity(values.len());
         for &(name, value) in values {
             if read(name) || arena.find_parameter(name).is_none() {
                 used.push((name, value));
             } else if !value.is_finite() {
-                return Err(TaylorError::NonFinite {
+                return Err(BindingError::NonFinite {
                     name: name.to_owned(),
                     value,
-                });
+                }
+                .into());
             }
         }
         // Bindings judges the names and values; the values are then read here by name.

@@ -3,6 +3,7 @@
 use approx::assert_relative_eq;
 
 use super::{SeriesOp, TaylorError, TaylorSystem, TaylorTape};
+use crate::codegen::BindingError;
 use crate::sym::{Arena, ExprId};
 
 /// The coefficients of the scalar `x' = f(t, x)` from `x(t0) = x0`, up to `order`.
@@ -129,15 +130,46 @@ fn bad_input_is_refused_with_the_numbers() {
     let e = TaylorTape::new(&a, [x], [rhs], None, &[("k", 1.0)], 0).unwrap_err();
     assert_eq!(e, TaylorError::Order { order: 0, max: 100 });
     let e = TaylorTape::new(&a, [x], [rhs], None, &[], 20).unwrap_err();
-    assert!(matches!(e, TaylorError::UnsetParameter { ref name, .. } if name == "k"));
+    assert!(
+        matches!(e, TaylorError::Binding(BindingError::UnsetParameter { ref name, .. }) if name == "k")
+    );
     let e = TaylorTape::new(&a, [x], [rhs], None, &[("k", f64::NAN)], 20).unwrap_err();
-    assert!(matches!(e, TaylorError::NonFinite { .. }));
+    assert!(matches!(
+        e,
+        TaylorError::Binding(BindingError::NonFinite { .. })
+    ));
     let e = TaylorTape::new(&a, [rhs], [rhs], None, &[("k", 1.0)], 20).unwrap_err();
     assert_eq!(e, TaylorError::StateNotASymbol { index: 0 });
     let u = a.input("u");
     let rhs = a.mul(u, x);
     let e = TaylorTape::new(&a, [x], [rhs], None, &[], 20).unwrap_err();
-    assert!(matches!(e, TaylorError::RunTimeInput { .. }));
+    assert!(matches!(
+        e,
+        TaylorError::Binding(BindingError::RunTimeInput { .. })
+    ));
+}
+
+#[test]
+fn a_parameter_given_twice_is_refused_read_or_not() {
+    let mut a = Arena::new();
+    let x = a.coordinate("x");
+    let k = a.parameter("k");
+    a.parameter("unread");
+    let rhs = a.mul(k, x);
+    let twice = |name: &'static str| {
+        let values = [("k", 1.0), ("unread", 2.0), (name, 3.0)];
+        TaylorTape::new(&a, [x], [rhs], None, &values, 20).unwrap_err()
+    };
+    for name in ["k", "unread"] {
+        assert_eq!(
+            twice(name),
+            TaylorError::Binding(BindingError::DuplicateParameter {
+                name: name.into(),
+                first: if name == "k" { 1.0 } else { 2.0 },
+                second: 3.0
+            })
+        );
+    }
 }
 
 #[test]
