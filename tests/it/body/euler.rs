@@ -2,7 +2,7 @@
 //! description frame with nalgebra's inverse, at 10⁴ random states; the split of L and T
 //! for a freely moving body against direct summation over its particles.
 
-mod common;
+use crate::common;
 
 use common::body::*;
 use common::rng::Rng;

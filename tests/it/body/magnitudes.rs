@@ -2,7 +2,7 @@
 //! once, so they compile at every magnitude f64 holds and agree with the closed forms and
 //! with the run-time `BodyBuilder` to a few ulp.
 
-mod common;
+use crate::common;
 
 use common::body::{check_euler, ulps};
 use precess::prelude::*;

@@ -1,6 +1,6 @@
 //! The parallel-axis theorem and composites, against direct summation over particles.
 
-mod common;
+use crate::common;
 
 use common::body::*;
 use common::rng::Rng;

@@ -1,7 +1,7 @@
 //! Principal frames: Rᵀ I R diagonal, right-handed, closest to the description axes, and
 //! deterministic for degenerate and nearly degenerate moments.
 
-mod common;
+use crate::common;
 
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};

@@ -4,7 +4,7 @@
 //! turn is the rod along the other axis, a cube looks the same at any turn); the ways of
 //! writing a rotation agree; bad rotations are typed errors.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -2,7 +2,7 @@
 //! rotations and quaternions) against nalgebra's own rotations, and the typed errors for
 //! rotations that are not.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

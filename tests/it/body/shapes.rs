@@ -1,7 +1,7 @@
 //! Every shape's inertia tensor against its textbook closed form and against direct
 //! summation over a particle lattice of the same solid.
 
-mod common;
+use crate::common;
 
 use common::body::*;
 use nalgebra::{Matrix3, Vector3};

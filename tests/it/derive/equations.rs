@@ -3,7 +3,7 @@
 //! generated code, the grouping by parameter, sin² where it is shorter, the operation counts
 //! against the programs counted here, and the same strings from the run-time API.
 
-mod common;
+use crate::common;
 
 use std::collections::HashMap;
 

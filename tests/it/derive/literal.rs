@@ -1,7 +1,7 @@
 //! Derived bodies of literals: mass properties against closed forms, the principal frame,
 //! and the generated Euler's equations against the generic I⁻¹ (G − ω × I ω).
 
-mod common;
+use crate::common;
 
 use common::body::check_euler;
 use nalgebra::{Matrix3, Vector3};

@@ -3,7 +3,7 @@
 //! spherical joint, the run-time `MechanismModel` of the same scene, and field values against
 //! literals; and the typed errors of the checked accelerations.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;

@@ -1,7 +1,7 @@
 //! Derived bodies with field parameters: values computed from the fields at run time,
 //! checked against closed forms at several parameter values, and validated at run time.
 
-mod common;
+use crate::common;
 
 use common::body::check_euler;
 use nalgebra::{Matrix3, Vector3};

@@ -3,7 +3,7 @@
 //! agree with each other, with closed forms and with direct summation; a rotation made of
 //! fields is checked by `validate()`.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

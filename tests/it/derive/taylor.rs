@@ -3,7 +3,7 @@
 //! right-hand side at order 1, and (the free body) the truncated series against the exact
 //! torque-free flight a step ahead.
 
-mod free_bodies;
+use crate::common::free_bodies;
 
 use free_bodies::throw;
 use precess::free::FreeDynamics;

@@ -1,7 +1,7 @@
 //! Tops derived by `#[top(...)]`: the generated angle form against the generated Eulerian
 //! form, against the run-time derivation, and against the published heavy-top values.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;

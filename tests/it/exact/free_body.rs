@@ -3,7 +3,7 @@
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
-mod common;
+use crate::common;
 
 use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::exact::{ExactError, FreeBodyExact, Regime, free_body_flow};

@@ -2,7 +2,7 @@
 //! centre of mass and the torque-free attitude (elliptic functions) under uniform gravity,
 //! and the body precession of a symmetric body.
 
-mod free_bodies;
+use crate::common::free_bodies;
 
 use approx::assert_relative_eq;
 use free_bodies::{T_HANDLE_MOMENTS, THandle, throw};

@@ -2,7 +2,7 @@
 //! scene (the GNI body, I = (2, 1, 2/3), breaks the triangle inequality, so the derive
 //! refuses it as a description; the scene takes its moments directly).
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::free_body::{GNI_I, GNI_M1, GNI_M10};

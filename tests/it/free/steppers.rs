@@ -2,7 +2,7 @@
 //! part, on the free-body splitting (through `FreeState::body_momentum`), each against the
 //! exact flow of `FreeExact` (the parabola and the elliptic attitude).
 
-mod free_bodies;
+use crate::common::free_bodies;
 
 use free_bodies::{T_HANDLE_MOMENTS, THandle, throw};
 use precess::free::{FreeDynamics, FreeState, FreeSystem};

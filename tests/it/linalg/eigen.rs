@@ -3,7 +3,7 @@
 //! random orthogonal similarity transforms of block-diagonal matrices; and the stability
 //! verdict on systems with closed-form spectra.
 
-mod common;
+use crate::common;
 
 use common::rng::Rng;
 use nalgebra::{Complex, DMatrix, Matrix2, Rotation3, Vector3};

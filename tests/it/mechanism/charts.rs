@@ -4,7 +4,7 @@
 //! against itself started in the other chart; energy along the way; the exact map between
 //! charts.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;

@@ -1,8 +1,7 @@
 //! The mechanism engine against an independent recursive Newton–Euler algorithm (in
 //! tests/mechanism_support/rnea.rs): every route's q̈ at 10³ random states.
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
 use mechanism_support::rng::Rng;
 use mechanism_support::{

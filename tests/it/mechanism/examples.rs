@@ -9,11 +9,9 @@
 //! floor of 1 (rad/s², J, J·s) so a state whose every component is near zero is judged
 //! absolutely.
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
-#[path = "mechanism_support/examples.rs"]
-mod examples;
+use crate::common::mechanism::examples;
 
 use examples::babyboot::Babyboot;
 use examples::chain::Chain;

@@ -3,11 +3,9 @@
 //! independent Newton–Euler q̈ (tests/mechanism_support/rnea.rs), and the double pendulum's
 //! linearisation about its hanging equilibrium against the closed form and its normal modes.
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
-#[path = "mechanism_support/examples.rs"]
-mod examples;
+use crate::common::mechanism::examples;
 
 use examples::babyboot::Babyboot;
 use examples::chain::Chain;

@@ -1,8 +1,7 @@
 //! Pendulums against hand-derived closed forms, and energy along integrated trajectories:
 //! conserved without dampers, and changed by exactly the integrated power with them.
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
 use approx::assert_relative_eq;
 use mechanism_support::rng::Rng;

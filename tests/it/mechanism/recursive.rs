@@ -3,7 +3,7 @@
 //! − τ) with world-frame Jacobians, solved by LU. Random trees of revolute, prismatic,
 //! universal and spherical joints with gravity, springs, dampers, efforts and torques.
 
-mod common;
+use crate::common;
 
 use common::rng::Rng;
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Unit, Vector3};

@@ -119,8 +119,7 @@ fn derivation_times_per_route() {
     }
 }
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
 /// A universal joint and a tilted revolute, every mass property a parameter: the case where
 /// the symbolic route's expanded adjugate is slowest.

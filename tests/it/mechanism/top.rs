@@ -1,8 +1,7 @@
 //! A single body on a spherical joint is the heavy top: its q̈ reproduces the top scene's
 //! (TopScene / TopModel, a separate derivation about the pivot) to 1e-13.
 
-#[path = "mechanism_support/mod.rs"]
-mod mechanism_support;
+use crate::common::mechanism as mechanism_support;
 
 use mechanism_support::relative_difference;
 use mechanism_support::rng::Rng;

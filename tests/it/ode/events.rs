@@ -3,7 +3,7 @@
 //! and ω2 changing sign at the flips of a body near its intermediate axis, 2K(k)/λ apart;
 //! for the adaptive pairs, RK4 and the splittings. Then terminal stops and bad input.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::free_body::FreeBody;

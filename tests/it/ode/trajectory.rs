@@ -2,7 +2,7 @@
 //! the observer, derived quantities, CSV read back, progress reports, and the top's standard
 //! columns against its conserved quantities.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::tops::ReferenceTop;

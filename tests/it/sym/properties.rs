@@ -2,7 +2,7 @@
 //! constructors, expansion and differentiation keep the value, and the code generator's
 //! interpreter agrees with direct evaluation.
 
-mod common;
+use crate::common;
 
 use common::tree::{Tree, arena_env, close, tree};
 use precess_core::codegen::Program;

@@ -2,7 +2,7 @@
 //! properties are abbreviations), and its accelerations equal those of the same top whose
 //! inertia, mass and centre are summed directly in f64 and given as constants.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;

@@ -3,7 +3,7 @@
 //! goes through it, and typed errors for a bad attitude, ω, stop time, parameter or
 //! quaternion.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

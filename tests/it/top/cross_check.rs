@@ -3,7 +3,7 @@
 //! ω̇ = I⁻¹ (τ − ω × I ω), τ = c × (Rᵀ(−M g ẑ)) + G_body + Rᵀ G_space − k ω + u.
 //! At 10⁴ random states per scene, ω̇ from q̈ (ω̇ = B q̈ + Ḃ q̇) must equal it to 1e-10.
 
-mod common;
+use crate::common;
 
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};

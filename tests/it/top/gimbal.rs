@@ -2,7 +2,7 @@
 //! near the vertical is integrated by `ChartedTop`, which switches to the ZYX chart and back;
 //! its motion must match the Eulerian (quaternion) form, which has no singularity.
 
-mod common;
+use crate::common;
 
 use common::eulerian::Eulerian;
 use common::rng::Rng;

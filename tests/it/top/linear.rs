@@ -3,7 +3,7 @@
 //! on both branches, the intermediate-axis growth rate, and the 6×6 top Jacobians checked
 //! through their characteristic polynomial.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::tops::ReferenceTop;

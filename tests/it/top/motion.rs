@@ -2,7 +2,7 @@
 //! conserved quantities, and the published heavy-top values (steady precession, fast-top
 //! nutation, the sleeping-top threshold).
 
-mod common;
+use crate::common;
 
 use common::eulerian::Eulerian;
 use nalgebra::{Matrix3, Matrix4, Rotation3, Vector3};

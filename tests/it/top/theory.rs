@@ -1,7 +1,7 @@
 //! The symmetric top's closed forms against derived tops integrated with DOP853, against
 //! published values, against an independent quadrature, and in their limits.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::tops::ReferenceTop;

@@ -2,7 +2,7 @@
 //! about the pivot by Euler's torque-free equations, checked against their closed form and
 //! against the exact torque-free motion (Jacobi elliptic functions).
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::rng::Rng;

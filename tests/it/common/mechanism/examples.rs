@@ -1,23 +1,21 @@
 //! The example mechanisms — the very structs the examples derive, included from
 //! examples/mechanisms/ — and each one's description for the Newton–Euler reference
-//! (mechanism_support/rnea.rs), shared by tests/mechanism_examples.rs and
-//! tests/mechanism_jacobian.rs. Include after `mechanism_support` with
-//! `#[path = "mechanism_support/examples.rs"] mod examples;`.
-#![allow(dead_code)]
+//! (`rnea`), shared by the mechanism tests `examples` and `jacobian`. The example files are
+//! included by path, not copied, so the tests check the very mechanisms the examples run.
 
-#[path = "../../examples/mechanisms/babyboot.rs"]
+#[path = "../../../../examples/mechanisms/babyboot.rs"]
 pub mod babyboot;
-#[path = "../../examples/mechanisms/chain.rs"]
+#[path = "../../../../examples/mechanisms/chain.rs"]
 pub mod chain;
-#[path = "../../examples/mechanisms/double_pendulum.rs"]
+#[path = "../../../../examples/mechanisms/double_pendulum.rs"]
 pub mod double_pendulum;
-#[path = "../../examples/mechanisms/gimballed_gyroscope.rs"]
+#[path = "../../../../examples/mechanisms/gimballed_gyroscope.rs"]
 pub mod gimballed_gyroscope;
 
 use nalgebra::{DMatrix, Matrix3};
 
-use super::mechanism_support::rng::Rng;
-use super::mechanism_support::{NumBody, NumJoint, NumMechanism, rnea};
+use super::rng::Rng;
+use super::{NumBody, NumJoint, NumMechanism, rnea};
 use chain::LINKS;
 use double_pendulum::DoublePendulum;
 use gimballed_gyroscope::Gyroscope;

@@ -1,5 +1,4 @@
-//! Free bodies shared by the `free_*` tests.
-#![allow(dead_code)]
+//! Free bodies shared by the `free` tests and `derive::taylor`.
 
 use precess::prelude::*;
 

@@ -1,11 +1,10 @@
 //! Shared by the mechanism tests: a numeric description of a mechanism, the symbolic scene
 //! built from it, and an independent recursive Newton–Euler algorithm (rnea.rs) to check the
-//! derived q̈ against. Include with `#[path = "mechanism_support/mod.rs"] mod mechanism_support;`.
-#![allow(dead_code)]
+//! derived q̈ against.
 
+pub mod examples;
 pub mod rnea;
-#[path = "../common/rng.rs"]
-pub mod rng;
+pub use super::rng;
 
 use nalgebra::{Matrix3, Vector3};
 use precess::mechanism::{CoordinateLoad, JointKind, MechanismScene, Parent, Spring};
