@@ -3,10 +3,8 @@
 //! independent reference is small, and the document is written between its markers with
 //! what was outside them kept. No timing is asserted.
 
-#[path = "../examples/work_precision/mod.rs"]
-mod work_precision;
-
-use work_precision::problems::Problem;
+use precess_testkit::work_precision;
+use precess_testkit::work_precision::problems::Problem;
 
 #[test]
 fn quick_rungs_measure_small_errors_and_write_the_report() {

@@ -570,16 +570,16 @@ fn malformed_trees_are_typed_errors() {
 #[allow(clippy::all, clippy::pedantic, unused_parens)]
 mod generated {
     pub mod planar_5 {
-        include!("../benches/generated/planar_5.rs");
+        include!("../../../benches/generated/planar_5.rs");
     }
     pub mod spatial_5 {
-        include!("../benches/generated/spatial_5.rs");
+        include!("../../../benches/generated/spatial_5.rs");
     }
     pub mod planar_25 {
-        include!("../benches/generated/planar_25.rs");
+        include!("../../../benches/generated/planar_25.rs");
     }
     pub mod spatial_25 {
-        include!("../benches/generated/spatial_25.rs");
+        include!("../../../benches/generated/spatial_25.rs");
     }
 }
 

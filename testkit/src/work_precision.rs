@@ -2,10 +2,8 @@
 //! errors against independent references, median times, tables and log-log figures written
 //! into `docs/performance.md` (between its work-precision markers) and `docs/img/perf/`.
 //!
-//! Used by `examples/work_precision.rs` (the full report) and by `tests/work_precision.rs`
-//! (one cheap rung per problem, written into a temporary directory).
-
-#![allow(dead_code)] // the test uses part of it
+//! Used by `examples/work_precision.rs` (the full report) and by the integration test
+//! `work_precision` (one cheap rung per problem, written into a temporary directory).
 
 pub mod methods;
 pub mod problems;
