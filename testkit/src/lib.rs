@@ -3,4 +3,6 @@
 //! work-precision report (the example writes it in full, a test runs its cheap rungs).
 #![forbid(unsafe_code)]
 
+pub mod rng;
+pub mod systems;
 pub mod work_precision;

@@ -4,7 +4,6 @@
 
 use precess::exact::FreeBodyExact;
 use precess::nalgebra::{UnitQuaternion, Vector3};
-use precess::ode::System;
 use precess::prelude::*;
 use precess::rigid::{Attitude, AttitudeModel};
 use precess::top::{HeavyTopMotion, HeavyTopTheory};
@@ -78,6 +77,9 @@ impl Problem {
     }
 }
 
+/// Problem (b), DETEST B5, and the torque-free body are the shared reference systems.
+pub use crate::systems::{B5, B5_T, B5_Y0, B5_Y20, FreeBody, max_diff};
+
 /// I = (3, 5, 9) of problem (a).
 pub const SEP_I: [f64; 3] = [3.0, 5.0, 9.0];
 /// m(0) of problem (a).
@@ -85,54 +87,12 @@ pub const SEP_M0: [f64; 3] = [0.0, 2.0, 0.01];
 /// The end of problem (a).
 pub const SEP_T: f64 = 200.0;
 
-/// DETEST B5 y(20), 30-digit reference.
-#[allow(clippy::excessive_precision)]
-pub const B5_Y20: [f64; 3] = [
-    -0.939_657_079_872_920_396_19,
-    -0.342_117_775_400_074_906_53,
-    0.741_412_659_619_995_300_78,
-];
-/// y(0) of B5.
-pub const B5_Y0: [f64; 3] = [0.0, 1.0, 1.0];
-/// The end of B5.
-pub const B5_T: f64 = 20.0;
-
-/// ṁ = m × (I⁻¹ m).
-pub struct FreeBody(pub [f64; 3]);
-impl System<3> for FreeBody {
-    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
-        let i = &self.0;
-        let w = [m[0] / i[0], m[1] / i[1], m[2] / i[2]];
-        d[0] = m[1] * w[2] - m[2] * w[1];
-        d[1] = m[2] * w[0] - m[0] * w[2];
-        d[2] = m[0] * w[1] - m[1] * w[0];
-    }
-}
-
 /// The free body as an attitude model (for RKMK4).
 pub struct FreeAttitude(pub [f64; 3]);
 impl AttitudeModel for FreeAttitude {
     fn inertia(&self) -> [f64; 3] {
         self.0
     }
-}
-
-/// DETEST B5: y' = (y₂ y₃, −y₁ y₃, −0.51 y₁ y₂).
-pub struct B5;
-impl System<3> for B5 {
-    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
-        d[0] = y[1] * y[2];
-        d[1] = -y[0] * y[2];
-        d[2] = -0.51 * y[0] * y[1];
-    }
-}
-
-/// The max-norm distance of two 3-vectors.
-pub fn max_diff(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
 }
 
 /// The exact m(T) of problem (a): the closed form with its phase and its moduli in

@@ -3,9 +3,10 @@
 pub mod body;
 pub mod eulerian;
 pub mod free_bodies;
-pub mod free_body;
 pub mod latex;
 pub mod mechanism;
-pub mod rng;
 pub mod tops;
 pub mod tree;
+
+/// The seeded generator, shared with the benches.
+pub use precess_testkit::rng;

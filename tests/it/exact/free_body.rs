@@ -3,11 +3,9 @@
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
-use crate::common;
-
-use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::exact::{ExactError, FreeBodyExact, Regime, free_body_flow};
 use precess_core::ode::{AdaptiveConfig, Dop853Pair, solve};
+use precess_testkit::systems::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 
 const GNI_PERIOD: f64 = 10.731_465_234_882_8;
 const GNI_H: f64 = 0.647_125_279_313_836;

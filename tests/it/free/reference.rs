@@ -2,14 +2,12 @@
 //! scene (the GNI body, I = (2, 1, 2/3), breaks the triangle inequality, so the derive
 //! refuses it as a description; the scene takes its moments directly).
 
-use crate::common;
-
 use approx::assert_relative_eq;
-use common::free_body::{GNI_I, GNI_M1, GNI_M10};
 use precess::free::{FreeFlight, FreeModel, FreeScene, FreeState};
 use precess::ode::AdaptiveConfig;
 use precess::prelude::*;
 use precess::sym::Arena;
+use precess_testkit::systems::{GNI_I, GNI_M1, GNI_M10};
 
 #[test]
 fn the_gni_body_through_the_scene_matches_its_thirty_digit_values() {

@@ -10,35 +10,10 @@ use precess_core::ode::{
     AdaptiveConfig, Direction, Dop853, Dopri5, Event, FixedStepConfig, FnSystem, Rk4, Run, Stepper,
     StopReason, Vern9,
 };
-use precess_core::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use precess_core::taylor::{Taylor, TaylorConfig};
+use precess_testkit::systems::Oscillator;
 use proptest::prelude::*;
 use std::f64::consts::PI;
-
-/// x″ = −x as (x, v): a smooth system on which Taylor's steps are long (about 1.4 at
-/// tol 1e-12), c_{k+1} = (v_k, −x_k)/(k + 1).
-#[derive(Clone, Copy)]
-struct Oscillator;
-
-impl TaylorSystem<2> for Oscillator {
-    fn max_order(&self) -> usize {
-        40
-    }
-    type Workspace = ();
-    fn coefficients_into(
-        &self,
-        _ws: &mut (),
-        _t: f64,
-        y: &[f64; 2],
-        order: usize,
-        c: &mut [[f64; 2]],
-    ) {
-        c[0] = *y;
-        for k in 0..order {
-            let d = (k + 1) as f64;
-            c[k + 1] = [c[k][1] / d, -c[k][0] / d];
-        }
-    }
-}
 
 fn oscillator() -> FnSystem<impl Fn(f64, &[f64; 2], &mut [f64; 2])> {
     FnSystem(|_t: f64, y: &[f64; 2], d: &mut [f64; 2]| *d = [y[1], -y[0]])

@@ -6,7 +6,6 @@
 use crate::common;
 
 use approx::assert_relative_eq;
-use common::free_body::FreeBody;
 use common::tops::ReferenceTop;
 use precess::nalgebra::{UnitQuaternion, Vector3};
 use precess::prelude::TopDynamics;
@@ -18,6 +17,7 @@ use precess_core::rigid::{
     BodyMomentum, ExactFreeFlow, FreeBodySplitting, Gravity, PotentialSplitting, SplittingOrder,
 };
 use precess_core::top::{HeavyTopTheory, TopChart};
+use precess_testkit::systems::FreeBody;
 use std::f64::consts::{FRAC_PI_3, PI};
 
 const G: f64 = 9.81;

@@ -1,33 +1,11 @@
 //! Convergence orders (the numerical check of the tableaux), dense output, stop times,
 //! statistics and typed errors of the time-stepping layer.
 
-use precess_core::exact::Jacobi;
 use precess_core::ode::{
     Adaptive, AdaptiveConfig, Dop853, Dop853Pair, Dopri5, Dopri5Pair, EmbeddedPair,
     FixedStepConfig, FnSystem, OdeError, Rk4, System, Vern9Pair, solve, solve_dense,
 };
-
-/// DETEST B5, whose exact solution is (sn, cn, dn)(t | 0.51).
-struct B5;
-impl System<3> for B5 {
-    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
-        d[0] = y[1] * y[2];
-        d[1] = -y[0] * y[2];
-        d[2] = -0.51 * y[0] * y[1];
-    }
-}
-
-fn exact_b5(t: f64) -> [f64; 3] {
-    let (s, c, d) = Jacobi::new(0.49).unwrap().sncndn(t);
-    [s, c, d]
-}
-
-fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
+use precess_testkit::systems::{B5, b5_exact, max_diff};
 
 /// n fixed steps of the pair's propagated solution (no control).
 fn fixed<P: EmbeddedPair>(h: f64, n: usize) -> [f64; 3] {
@@ -50,8 +28,9 @@ fn observed_order(e1: f64, e2: f64) -> f64 {
 #[test]
 fn convergence_orders_match_the_tableaux() {
     let t = 4.0;
-    let ex = exact_b5(t);
-    let e = |h: f64, f: &dyn Fn(f64, usize) -> [f64; 3]| err(&f(h, (t / h).round() as usize), &ex);
+    let ex = b5_exact(t);
+    let e =
+        |h: f64, f: &dyn Fn(f64, usize) -> [f64; 3]| max_diff(&f(h, (t / h).round() as usize), &ex);
     let p5 = observed_order(e(0.1, &fixed::<Dopri5Pair>), e(0.05, &fixed::<Dopri5Pair>));
     let p8 = observed_order(e(0.4, &fixed::<Dop853Pair>), e(0.2, &fixed::<Dop853Pair>));
     let rk = |h: f64, n: usize| {
@@ -81,7 +60,7 @@ fn dense_output_orders() {
         let mut ode: Adaptive<_, P, 3> = Adaptive::new(B5, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
         ode.step(10.0).unwrap();
         assert_eq!(ode.t(), h);
-        err(&ode.dense_at(0.37 * h).unwrap(), &exact_b5(0.37 * h))
+        max_diff(&ode.dense_at(0.37 * h).unwrap(), &b5_exact(0.37 * h))
     }
     let q5 = observed_order(mid_error::<Dopri5Pair>(0.2), mid_error::<Dopri5Pair>(0.1));
     let q8 = observed_order(mid_error::<Dop853Pair>(0.8), mid_error::<Dop853Pair>(0.4));
@@ -106,7 +85,7 @@ fn solve_dense_samples_match_the_exact_solution() {
     )
     .unwrap();
     for (t, y) in times.iter().zip(&out) {
-        assert!(err(y, &exact_b5(*t)) <= 1e-10, "t = {t}");
+        assert!(max_diff(y, &b5_exact(*t)) <= 1e-10, "t = {t}");
     }
     assert!(stats.steps < 200 && stats.rhs_evals > 12 * stats.steps);
     let stats = solve_dense::<Vern9Pair, _, 3>(
@@ -121,7 +100,7 @@ fn solve_dense_samples_match_the_exact_solution() {
     let worst = times
         .iter()
         .zip(&out)
-        .map(|(t, y)| err(y, &exact_b5(*t)))
+        .map(|(t, y)| max_diff(y, &b5_exact(*t)))
         .fold(0.0, f64::max);
     assert!(worst <= 1e-10, "Vern9 dense output error {worst:e}");
     assert!(stats.steps < 200);

@@ -4,33 +4,11 @@
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
-use crate::common;
-
-use common::free_body::{FreeBody, GNI_I, GNI_M1, GNI_M10};
 use precess_core::ode::{
     Adaptive, AdaptiveConfig, Dop853, Dop853Pair, Dopri5Pair, FixedStepConfig, Rk4, System,
     Vern9Pair, solve,
 };
-
-/// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2), y(0) = (0, 1, 1).
-struct B5;
-impl System<3> for B5 {
-    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
-        d[0] = y[1] * y[2];
-        d[1] = -y[0] * y[2];
-        d[2] = -0.51 * y[0] * y[1];
-    }
-}
-const B5_Y12: [f64; 3] = [
-    -0.705_397_809_522_571_74,
-    -0.708_811_632_467_158_09,
-    0.863_846_690_370_222_10,
-];
-const B5_Y20: [f64; 3] = [
-    -0.939_657_079_872_920_396_19,
-    -0.342_117_775_400_074_906_53,
-    0.741_412_659_619_995_300_78,
-];
+use precess_testkit::systems::{B5, B5_Y12, B5_Y20, FreeBody, GNI_I, GNI_M1, GNI_M10, max_diff};
 
 /// EULR / SciML RigidBody: Euler's equations for I = (0.5, 2, 3) with the torque
 /// 0.25 sin²t added to ω̇3 while `on(t)`. (The quoted 30-digit values match the torque on
@@ -60,13 +38,6 @@ const SCIML_W10: [f64; 3] = [
     2.010_777_393_073_610_82,
 ];
 
-fn max_err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
-
 fn tight() -> AdaptiveConfig {
     AdaptiveConfig::with_tol(1e-14, 1e-14)
 }
@@ -74,20 +45,20 @@ fn tight() -> AdaptiveConfig {
 #[test]
 fn b5_dop853_tight_tolerance_within_1e12() {
     let s = solve::<Dop853Pair, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[12.0], tight()).unwrap();
-    let e = max_err(&s.y, &B5_Y20);
+    let e = max_diff(&s.y, &B5_Y20);
     eprintln!("B5 DOP853 y(20) error {e:e} {:?}", s.stats);
     assert!(e <= 1e-12, "B5 y(20) error {e:e}");
     // The stop at 12 must land exactly and agree with the reference there too.
     let mut ode = Dop853::new(B5, 0.0, [0.0, 1.0, 1.0], tight()).unwrap();
     ode.advance_to(12.0).unwrap();
     assert_eq!(ode.t(), 12.0);
-    assert!(max_err(ode.y(), &B5_Y12) <= 1e-12);
+    assert!(max_diff(ode.y(), &B5_Y12) <= 1e-12);
 }
 
 #[test]
 fn b5_vern9_tight_tolerance_within_1e12() {
     let s = solve::<Vern9Pair, _, 3>(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], tight()).unwrap();
-    let e = max_err(&s.y, &B5_Y20);
+    let e = max_diff(&s.y, &B5_Y20);
     eprintln!("B5 Vern9 y(20) error {e:e} {:?}", s.stats);
     assert!(e <= 1e-12, "Vern9 B5 y(20) error {e:e}");
 }
@@ -103,7 +74,7 @@ fn b5_dopri5_error_follows_tolerance() {
         AdaptiveConfig::with_tol(1e-12, 1e-12),
     )
     .unwrap();
-    let e = max_err(&s.y, &B5_Y20);
+    let e = max_diff(&s.y, &B5_Y20);
     assert!(e <= 1e-10, "DOPRI5 B5 error {e:e}");
     assert!(e >= 1e-15, "suspiciously exact: {e:e}");
 }
@@ -112,7 +83,7 @@ fn b5_dopri5_error_follows_tolerance() {
 fn b5_rk4_fixed_step() {
     let mut rk = Rk4::new(B5, 0.0, [0.0, 1.0, 1.0], FixedStepConfig::with_step(1e-3)).unwrap();
     rk.advance_to(20.0).unwrap();
-    let e = max_err(rk.y(), &B5_Y20);
+    let e = max_diff(rk.y(), &B5_Y20);
     assert!(e <= 1e-11, "RK4 h=1e-3 B5 error {e:e}");
     assert_eq!(rk.stats().rhs_evals, 4 * 20_000);
 }
@@ -128,12 +99,12 @@ fn gni_free_body_m1_and_m10() {
     .unwrap();
     ode.advance_to(1.0).unwrap();
     assert!(
-        max_err(ode.y(), &GNI_M1) <= 1e-13,
+        max_diff(ode.y(), &GNI_M1) <= 1e-13,
         "m(1) {:e}",
-        max_err(ode.y(), &GNI_M1)
+        max_diff(ode.y(), &GNI_M1)
     );
     ode.advance_to(10.0).unwrap();
-    let e = max_err(ode.y(), &GNI_M10);
+    let e = max_diff(ode.y(), &GNI_M10);
     eprintln!("GNI m(10) error {e:e}");
     assert!(e <= 1e-12, "GNI m(10) error {e:e}");
 }
@@ -153,14 +124,14 @@ fn eulr_switching_torque_with_stop_times() {
         tight(),
     )
     .unwrap();
-    let e = max_err(&s.y, &EULR_W20);
+    let e = max_diff(&s.y, &EULR_W20);
     eprintln!("EULR ω(20) error {e:e}");
     assert!(e <= 1e-11, "EULR ω(20) error {e:e}");
     // Without the stops the pair steps across the switch and loses digits: the test can fail.
     let s = solve::<Dop853Pair, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 20.0, &[], tight()).unwrap();
     eprintln!(
         "EULR ω(20) error without stops {:e}",
-        max_err(&s.y, &EULR_W20)
+        max_diff(&s.y, &EULR_W20)
     );
 }
 
@@ -168,7 +139,7 @@ fn eulr_switching_torque_with_stop_times() {
 fn sciml_rigid_body_w10() {
     let sys = Eulr { on: |_| true };
     let s = solve::<Dop853Pair, _, 3>(&sys, 0.0, [1.0, 0.0, 0.9], 10.0, &[], tight()).unwrap();
-    let e = max_err(&s.y, &SCIML_W10);
+    let e = max_diff(&s.y, &SCIML_W10);
     eprintln!("SciML ω(10) error {e:e}");
     assert!(e <= 1e-12, "SciML ω(10) error {e:e}");
 }

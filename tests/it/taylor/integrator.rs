@@ -8,96 +8,14 @@
 use std::f64::consts::PI;
 
 use approx::assert_relative_eq;
-use precess_core::exact::{FreeBodyExact, Jacobi};
+use precess_core::exact::FreeBodyExact;
 use precess_core::ode::{Event, OdeError, Run, Stepper};
 use precess_core::taylor::{Taylor, TaylorConfig, TaylorSystem, solve, solve_dense};
+use precess_testkit::systems::{B5, B5_Y20, FreeBody, Oscillator, b5_exact, max_diff};
 
 /// Σ_{j=0}^{k} a_j b_{k−j}: the k-th coefficient of a product.
 fn cauchy<const N: usize>(c: &[[f64; N]], a: usize, b: usize, k: usize) -> f64 {
     (0..=k).map(|j| c[j][a] * c[k - j][b]).sum()
-}
-
-/// DETEST B5: y' = (y2 y3, −y1 y3, −0.51 y1 y2); y(t) = (sn, cn, dn)(t | 0.51).
-struct B5;
-impl TaylorSystem<3> for B5 {
-    fn max_order(&self) -> usize {
-        60
-    }
-    type Workspace = ();
-    fn coefficients_into(
-        &self,
-        _ws: &mut (),
-        _t: f64,
-        y: &[f64; 3],
-        order: usize,
-        c: &mut [[f64; 3]],
-    ) {
-        c[0] = *y;
-        for k in 0..order {
-            let d = (k + 1) as f64;
-            c[k + 1] = [
-                cauchy(c, 1, 2, k) / d,
-                -cauchy(c, 0, 2, k) / d,
-                -0.51 * cauchy(c, 0, 1, k) / d,
-            ];
-        }
-    }
-}
-
-/// The torque-free body in body momentum: ṁ = m × (I⁻¹ m), three products with constants.
-struct FreeBody([f64; 3]);
-impl TaylorSystem<3> for FreeBody {
-    fn max_order(&self) -> usize {
-        60
-    }
-    type Workspace = ();
-    fn coefficients_into(
-        &self,
-        _ws: &mut (),
-        _t: f64,
-        y: &[f64; 3],
-        order: usize,
-        c: &mut [[f64; 3]],
-    ) {
-        let i = self.0;
-        let a = [
-            1.0 / i[2] - 1.0 / i[1],
-            1.0 / i[0] - 1.0 / i[2],
-            1.0 / i[1] - 1.0 / i[0],
-        ];
-        c[0] = *y;
-        for k in 0..order {
-            let d = (k + 1) as f64;
-            c[k + 1] = [
-                a[0] * cauchy(c, 1, 2, k) / d,
-                a[1] * cauchy(c, 2, 0, k) / d,
-                a[2] * cauchy(c, 0, 1, k) / d,
-            ];
-        }
-    }
-}
-
-/// The harmonic oscillator (x, v)' = (v, −x): x = cos t from (1, 0).
-struct Oscillator;
-impl TaylorSystem<2> for Oscillator {
-    fn max_order(&self) -> usize {
-        40
-    }
-    type Workspace = ();
-    fn coefficients_into(
-        &self,
-        _ws: &mut (),
-        _t: f64,
-        y: &[f64; 2],
-        order: usize,
-        c: &mut [[f64; 2]],
-    ) {
-        c[0] = *y;
-        for k in 0..order {
-            let d = (k + 1) as f64;
-            c[k + 1] = [c[k][1] / d, -c[k][0] / d];
-        }
-    }
 }
 
 /// y' = y², y(0) = 1: y = 1/(1 − t) blows up at t = 1.
@@ -122,26 +40,6 @@ impl TaylorSystem<1> for BlowUp {
     }
 }
 
-/// B5's closed form (sn, cn, dn)(t | m = 0.51), complementary parameter 0.49.
-fn b5_exact(t: f64) -> [f64; 3] {
-    let (s, c, d) = Jacobi::new(0.49).unwrap().sncndn(t);
-    [s, c, d]
-}
-
-/// DETEST B5 y(20) to 30 digits (Hull et al. 1972).
-const B5_Y20: [f64; 3] = [
-    -0.939_657_079_872_920_396_19,
-    -0.342_117_775_400_074_906_53,
-    0.741_412_659_619_995_300_78,
-];
-
-fn max_err<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
-
 #[test]
 fn fixed_order_and_step_converge_at_the_order() {
     // Global error ∝ hᵖ: halving h divides it by 2ᵖ. On B5 to t = 4 against the closed form.
@@ -157,7 +55,7 @@ fn fixed_order_and_step_converge_at_the_order() {
                 TaylorConfig::fixed(p, h),
             )
             .unwrap();
-            max_err(&s.y, &exact)
+            max_diff(&s.y, &exact)
         };
         let (e1, e2) = (err(0.1), err(0.05));
         let observed = (e1 / e2).log2();
@@ -174,11 +72,11 @@ fn b5_to_t20_matches_the_reference_at_every_tolerance() {
     for (tol, bound) in [(1e-6, 1e-5), (1e-10, 1e-9), (1e-12, 1e-11), (1e-15, 1e-14)] {
         let cfg = TaylorConfig::with_tol(tol, tol);
         let s = solve(B5, 0.0, [0.0, 1.0, 1.0], 20.0, &[], cfg).unwrap();
-        let e = max_err(&s.y, &B5_Y20);
+        let e = max_diff(&s.y, &B5_Y20);
         eprintln!("B5 tol {tol:e}: error {e:.2e}, {:?}", s.stats);
         assert!(e <= bound, "tol {tol:e}: error {e:e}");
         // The closed form agrees with the published digits: both are references.
-        assert!(max_err(&b5_exact(20.0), &B5_Y20) <= 1e-15);
+        assert!(max_diff(&b5_exact(20.0), &B5_Y20) <= 1e-15);
     }
 }
 
@@ -191,7 +89,7 @@ fn dense_output_is_the_step_polynomial_as_accurate_as_the_steps() {
     let worst = times
         .iter()
         .zip(&out)
-        .map(|(&t, y)| max_err(y, &b5_exact(t)))
+        .map(|(&t, y)| max_diff(y, &b5_exact(t)))
         .fold(0.0, f64::max);
     eprintln!("B5 dense output worst error {worst:.2e}, {stats:?}");
     assert!(worst <= 2e-14, "dense output error {worst:e}");
@@ -221,7 +119,7 @@ fn torque_free_bodies_to_t200_against_the_exact_flow() {
             .into();
         let cfg = TaylorConfig::with_tol(tol, tol);
         let s = solve(FreeBody(inertia), 0.0, m0, 200.0, &[], cfg).unwrap();
-        let e = max_err(&s.y, &exact);
+        let e = max_diff(&s.y, &exact);
         eprintln!("I = {inertia:?} tol {tol:e}: error {e:.2e}, {:?}", s.stats);
         assert!(e <= bound, "I = {inertia:?} tol {tol:e}: error {e:e}");
     }

@@ -1,15 +1,18 @@
 //! A seedable generator for test states (SplitMix64), so failures reproduce: the one
-//! generator of the integration tests.
+//! generator of the tests and benches.
 
-use nalgebra::Vector3;
+use precess::nalgebra::Vector3;
 
+/// SplitMix64 (Steele, Lea, Flood 2014): a 64-bit state advanced by the golden-ratio step.
 pub struct Rng(u64);
 
 impl Rng {
+    /// The stream that starts from `seed`.
     pub fn new(seed: u64) -> Rng {
         Rng(seed)
     }
 
+    /// The next 64 uniform bits.
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
