@@ -1,13 +1,14 @@
 //! Reference systems with published or closed-form values, written by hand and independent
 //! of what the derive generates: DETEST B5, the torque-free body with the GNI values (Hairer,
 //! Lubich, Wanner) and the harmonic oscillator, each as a right-hand side and as a Taylor
-//! recurrence (Cauchy products), shared by the tests, the benches and the work-precision
-//! report.
+//! recurrence (Cauchy products); and the heavy top of `examples/heavy_top.rs` as the derive
+//! sees it. Shared by the tests, the benches and the work-precision report.
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
 
 use precess::exact::Jacobi;
 use precess::ode::System;
+use precess::prelude::*;
 use precess::taylor::TaylorSystem;
 
 /// Σ_{j=0}^{k} a_j b_{k−j}: the k-th coefficient of the product of components `a` and `b`.
@@ -178,3 +179,15 @@ pub fn max_diff<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f64::max)
 }
+
+/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm) on a pivot: the heavy top of
+/// `examples/heavy_top.rs`, with its generated angle equations and their generated Taylor
+/// recurrences to order 20.
+#[derive(RigidBody)]
+#[rigid(
+    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
+    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 9.81, taylor = 20)]
+pub struct SpinningTop;

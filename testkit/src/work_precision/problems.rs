@@ -77,8 +77,9 @@ impl Problem {
     }
 }
 
-/// Problem (b), DETEST B5, and the torque-free body are the shared reference systems.
-pub use crate::systems::{B5, B5_T, B5_Y0, B5_Y20, FreeBody, max_diff};
+/// Problem (b), DETEST B5, the torque-free body and the heavy top are the shared reference
+/// systems.
+pub use crate::systems::{B5, B5_T, B5_Y0, B5_Y20, FreeBody, SpinningTop, max_diff};
 
 /// I = (3, 5, 9) of problem (a).
 pub const SEP_I: [f64; 3] = [3.0, 5.0, 9.0];
@@ -103,16 +104,6 @@ pub fn separatrix_reference() -> [f64; 3] {
         .unwrap_or_else(|_| Vector3::repeat(f64::NAN));
     [m.x, m.y, m.z]
 }
-
-/// The disk-on-a-stem top of `examples/heavy_top.rs`.
-#[derive(RigidBody)]
-#[rigid(
-    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
-    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 9.81, taylor = 20)]
-pub struct SpinningTop;
 
 /// Gravity on the top as a torque model in principal axes (for RKMK4):
 /// G = c × (Rᵀ(−M g ẑ)).

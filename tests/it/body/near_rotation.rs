@@ -5,6 +5,7 @@
 //! against the same part turned by the exact rotation R₀, for the run-time builder, the
 //! derive's literal matrices and its matrices of fields.
 
+use crate::common::tops::ReferenceTop;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use precess::prelude::*;
 use precess_core::body::{Axis, BodyBuilder, Orientation, Shape};
@@ -177,15 +178,6 @@ proptest! {
     }
 }
 
-/// I1 = 1, I3 = 1/2 about the pivot, M g l = 1.
-#[derive(RigidBody)]
-#[rigid(
-    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 1.0)]
-struct Heavy;
-
 /// ChartedTop::new accepts an attitude within the same 1e-9; the angles it reads off are
 /// ratios of R's entries (atan2), so a stretched R gives the angles of the rotation itself.
 #[test]
@@ -194,7 +186,7 @@ fn a_charted_top_starts_from_the_nearest_rotation() {
     let r0 = Rotation3::from_euler_angles(0.3, 0.9, -0.4);
     // |RᵀR − E| = 6e-10 and det R − 1 = 9e-10, both inside the tolerance.
     let r = r0.matrix() * (1.0 + 3e-10);
-    let [zxz, zyx] = TopChart::both(&Heavy);
+    let [zxz, zyx] = TopChart::both(&ReferenceTop);
     let top = ChartedTop::new(
         [zxz, zyx],
         0.0,

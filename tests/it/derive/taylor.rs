@@ -11,16 +11,7 @@ use precess::prelude::*;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::{TaylorSystem, TaylorTape};
 use precess::top::{TopDynamics, TopScene};
-
-/// The heavy top of `examples/heavy_top.rs`, with its recurrences to order 20.
-#[derive(RigidBody)]
-#[rigid(
-    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
-    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 9.81, taylor = 20)]
-struct SpinningTop;
+use precess_testkit::systems::SpinningTop;
 
 /// An asymmetric top with a centre off its axis and a field for g: every recurrence kind
 /// but the square root (products, quotients, sin–cos pairs, scalings by a field).

@@ -2,6 +2,7 @@
 //! conserved without dampers, and changed by exactly the integrated power with them.
 
 use crate::common::mechanism as mechanism_support;
+use crate::common::mechanism::double_pendulum;
 
 use approx::assert_relative_eq;
 use mechanism_support::rng::Rng;
@@ -9,34 +10,6 @@ use mechanism_support::{NumBody, NumJoint, NumMechanism, Values, relative_differ
 use precess::mechanism::{JointKind, MechanismModel, MechanismScene, Parent, Route};
 use precess::ode::{AdaptiveConfig, Dop853, FnSystem};
 use precess::sym::Arena;
-
-/// Two point masses m₁, m₂ on massless rods l₁, l₂, hinged about x with gravity −g ẑ; the
-/// second coordinate is the lower rod's angle relative to the upper one.
-fn double_pendulum(a: &mut Arena, lengths: [&str; 2]) -> MechanismScene {
-    let (o, z) = (a.one(), a.zero());
-    let mut scene = MechanismScene::new();
-    for i in 0..2 {
-        let parent = if i == 0 {
-            Parent::Ground
-        } else {
-            Parent::Body(0)
-        };
-        let hinge = JointKind::Revolute { axis: [o, z, z] };
-        let name = format!("phi{i}");
-        let mut b = MechanismScene::body(a, &format!("bob{i}"), parent, hinge, &[&name]);
-        b.mass = a.parameter(&format!("m{i}"));
-        let l = a.parameter(lengths[i]);
-        b.center = [z, z, a.neg(l)];
-        if i == 1 {
-            let l0 = a.parameter(lengths[0]);
-            b.joint.at = [z, z, a.neg(l0)];
-        }
-        scene.bodies.push(b);
-    }
-    let g = a.parameter("g");
-    scene.gravity = Some([z, z, a.neg(g)]);
-    scene
-}
 
 /// The textbook double pendulum in absolute angles θ₁, θ₂ from the downward vertical:
 /// with Δ = θ₁ − θ₂ and D = 2m₁ + m₂ − m₂ cos 2Δ,
@@ -76,7 +49,7 @@ fn double_pendulum_matches_the_textbook_formula() {
         Route::Auto,
     ] {
         let mut a = Arena::new();
-        let scene = double_pendulum(&mut a, ["l0", "l1"]);
+        let scene = double_pendulum(&mut a, None);
         let model = MechanismModel::new(&mut a, &scene, route, &values).expect("derives");
         let mut rng = Rng::new(11);
         for _ in 0..1000 {

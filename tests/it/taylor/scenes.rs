@@ -4,7 +4,8 @@
 //! DOP853 run, and integrated against DOP853 with its energy; `taylor_system!` against the
 //! interpreted tape of the same equations and against B5's closed form.
 
-use precess::mechanism::{JointKind, MechanismDynamics, MechanismScene, Parent, Route};
+use crate::common::mechanism::double_pendulum;
+use precess::mechanism::{MechanismDynamics, Route};
 use precess::ode::{AdaptiveConfig, Dop853Pair};
 use precess::prelude::*;
 use precess::sym::Arena;
@@ -41,37 +42,6 @@ const PENDULUM: DoublePendulum = DoublePendulum {
     m2: 0.7,
     l2: 0.6,
 };
-
-/// The double pendulum built by hand at run time, parameters by name, an optional damper on
-/// the second joint.
-fn double_pendulum(a: &mut Arena, damper: Option<&str>) -> MechanismScene {
-    let (o, z) = (a.one(), a.zero());
-    let mut scene = MechanismScene::new();
-    for i in 0..2 {
-        let parent = if i == 0 {
-            Parent::Ground
-        } else {
-            Parent::Body(0)
-        };
-        let hinge = JointKind::Revolute { axis: [o, z, z] };
-        let name = format!("phi{i}");
-        let mut b = MechanismScene::body(a, &format!("bob{i}"), parent, hinge, &[&name]);
-        b.mass = a.parameter(&format!("m{i}"));
-        let l = a.parameter(&format!("l{i}"));
-        b.center = [z, z, a.neg(l)];
-        if i == 1 {
-            let l0 = a.parameter("l0");
-            b.joint.at = [z, z, a.neg(l0)];
-            if let Some(d) = damper {
-                b.joint.loads[0].damper = Some(a.parameter(d));
-            }
-        }
-        scene.bodies.push(b);
-    }
-    let g = a.parameter("g");
-    scene.gravity = Some([z, z, a.neg(g)]);
-    scene
-}
 
 const VALUES: [(&str, f64); 5] = [
     ("m0", 1.3),

@@ -4,6 +4,8 @@
 //! quaternion.
 
 use crate::common;
+use crate::common::tops::ReferenceTop;
+use crate::common::tops::reference_model;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -15,15 +17,6 @@ use precess_core::ode::{AdaptiveConfig, Dop853, OdeError};
 use precess_core::sym::Arena;
 use precess_core::top::{AngleChart, ChartError, ModelError, TopModel, TopScene};
 
-/// I1 = 1, I3 = 1/2 about the pivot, M g l = 1, in ZXZ angles.
-#[derive(RigidBody)]
-#[rigid(
-    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 1.0)]
-struct Heavy;
-
 /// The same top in ZYX angles.
 #[derive(RigidBody)]
 #[rigid(
@@ -32,18 +25,6 @@ struct Heavy;
 )]
 #[top(gravity = 1.0, angles = zyx)]
 struct HeavyZyx;
-
-/// The same top built at run time and interpreted.
-fn model(sequence: AngleSequence) -> TopModel {
-    let mut a = Arena::new();
-    let (one, half, z) = (a.one(), a.number("0.5").unwrap(), a.zero());
-    let mut scene = TopScene::free(&mut a, [[one, z, z], [z, one, z], [z, z, half]]);
-    scene.sequence = sequence;
-    scene.center = [z, z, one];
-    scene.gravity = Some(one);
-    let top = scene.derive(&mut a).unwrap();
-    TopModel::new(&mut a, &top, &[]).unwrap()
-}
 
 /// The textbook inverse of ω = B q̇: ZXZ φ̇ = (ω₁ sψ + ω₂ cψ)/sθ, θ̇ = ω₁ cψ − ω₂ sψ,
 /// ψ̇ = ω₃ − φ̇ cθ; ZYX (yaw ψ, pitch θ, roll φ) ψ̇ = (ω₂ sφ + ω₃ cφ)/cθ,
@@ -84,9 +65,9 @@ fn one_rule_for_when_a_chart_is_singular() {
         ),
     ];
     for (seq, singular, regular) in cases {
-        let interpreted = model(seq);
+        let interpreted = reference_model(seq);
         let derived = |q: &[f64; 3]| match seq {
-            AngleSequence::Zxz => Heavy.rates_from_omega(q, &w),
+            AngleSequence::Zxz => ReferenceTop.rates_from_omega(q, &w),
             AngleSequence::Zyx => HeavyZyx.rates_from_omega(q, &w),
         };
         for middle in singular {
@@ -130,10 +111,10 @@ fn angle_form_says_the_chart_is_singular_there() {
         let q_dot = [1.0, 0.5, 4.0];
         let state = [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]];
         let derived = match seq {
-            AngleSequence::Zxz => Heavy.try_angle_accel(0.0, &q, &q_dot),
+            AngleSequence::Zxz => ReferenceTop.try_angle_accel(0.0, &q, &q_dot),
             AngleSequence::Zyx => HeavyZyx.try_angle_accel(0.0, &q, &q_dot),
         };
-        let interpreted = model(seq).accel(&state);
+        let interpreted = reference_model(seq).accel(&state);
         for (path, r) in [("derived", derived), ("interpreted", interpreted)] {
             let err = r.expect_err(path);
             assert!(
@@ -149,16 +130,16 @@ fn angle_form_says_the_chart_is_singular_there() {
     }
     // A little away from it both paths answer, and agree with the unchecked form.
     let (q, q_dot) = ([0.2, 1e-3, 0.1], [1.0, 0.5, 4.0]);
-    let checked = Heavy.try_angle_accel(0.0, &q, &q_dot).unwrap();
-    assert_eq!(checked, Heavy.angle_accel(0.0, &q, &q_dot));
-    let interpreted = model(AngleSequence::Zxz)
+    let checked = ReferenceTop.try_angle_accel(0.0, &q, &q_dot).unwrap();
+    assert_eq!(checked, ReferenceTop.angle_accel(0.0, &q, &q_dot));
+    let interpreted = reference_model(AngleSequence::Zxz)
         .accel(&[q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]])
         .unwrap();
     for k in 0..3 {
         assert_relative_eq!(checked[k], interpreted[k], max_relative = 1e-9);
     }
     assert!(matches!(
-        Heavy.try_angle_accel(0.0, &q, &[f64::NAN, 0.0, 0.0]),
+        ReferenceTop.try_angle_accel(0.0, &q, &[f64::NAN, 0.0, 0.0]),
         Err(TopError::NonFinite {
             quantity: "rates q̇",
             ..
@@ -175,7 +156,7 @@ fn rz(angle: f64) -> Matrix3<f64> {
 #[test]
 fn charted_top_runs_a_top_standing_exactly_at_theta_zero() {
     let w0 = Vector3::new(0.0, 0.0, 6.0);
-    let [zxz, zyx] = TopChart::both(&Heavy);
+    let [zxz, zyx] = TopChart::both(&ReferenceTop);
     let mut derived = ChartedTop::new(
         [&zxz, &zyx],
         0.0,
@@ -184,7 +165,10 @@ fn charted_top_runs_a_top_standing_exactly_at_theta_zero() {
         ChartConfig::default(),
     )
     .unwrap();
-    let (mzxz, mzyx) = (model(AngleSequence::Zxz), model(AngleSequence::Zyx));
+    let (mzxz, mzyx) = (
+        reference_model(AngleSequence::Zxz),
+        reference_model(AngleSequence::Zyx),
+    );
     let mut interpreted = ChartedTop::new(
         [&mzxz, &mzyx],
         0.0,
@@ -212,7 +196,7 @@ fn charted_top_runs_a_top_standing_exactly_at_theta_zero() {
 #[test]
 fn charted_top_starts_exactly_at_theta_zero_and_leaves_it() {
     let w0 = Vector3::new(1.5, 0.0, 3.0);
-    let [zxz, zyx] = TopChart::both(&Heavy);
+    let [zxz, zyx] = TopChart::both(&ReferenceTop);
     let mut top = ChartedTop::new(
         [&zxz, &zyx],
         0.0,
@@ -239,7 +223,7 @@ fn charted_top_starts_exactly_at_theta_zero_and_leaves_it() {
 }
 
 fn charted(r: &Matrix3<f64>, w: &Vector3<f64>, config: ChartConfig) -> Result<(), ChartError> {
-    let [zxz, zyx] = TopChart::both(&Heavy);
+    let [zxz, zyx] = TopChart::both(&ReferenceTop);
     ChartedTop::new([&zxz, &zyx], 0.0, r, w, config).map(|_| ())
 }
 
@@ -304,7 +288,7 @@ fn charted_top_names_a_non_finite_omega_and_a_bad_switch() {
 /// in the past is refused, and none of them moves the top.
 #[test]
 fn charted_top_refuses_non_finite_and_past_stop_times() {
-    let [zxz, zyx] = TopChart::both(&Heavy);
+    let [zxz, zyx] = TopChart::both(&ReferenceTop);
     let r0 = Rotation3::from_axis_angle(&Vector3::x_axis(), 0.5);
     let w0 = Vector3::new(0.0, 0.0, 6.0);
     let mut top =
@@ -402,7 +386,7 @@ fn top_model_refuses_a_user_torque_it_cannot_supply() {
 
 #[test]
 fn eulerian_top_names_a_zero_quaternion() {
-    type Form<'a> = EulerianTop<'a, Heavy>;
+    type Form<'a> = EulerianTop<'a, ReferenceTop>;
     let zero = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 6.0];
     let e = Form::check_state(&zero).unwrap_err();
     assert_eq!(

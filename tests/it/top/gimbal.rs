@@ -3,26 +3,14 @@
 //! its motion must match the Eulerian (quaternion) form, which has no singularity.
 
 use crate::common;
+use crate::common::tops::reference_model;
 
 use common::eulerian::Eulerian;
 use common::rng::Rng;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use precess_core::ode::{AdaptiveConfig, Dop853};
 use precess_core::rigid::{AngleSequence, angles_from_rotation};
-use precess_core::sym::Arena;
-use precess_core::top::{ChartConfig, ChartError, ChartedTop, TopModel, TopScene};
-
-/// The reference top (I1 = 1, I3 = 1/2, M g l = 1) in one angle sequence.
-fn model(sequence: AngleSequence) -> TopModel {
-    let mut a = Arena::new();
-    let (one, half, z) = (a.one(), a.number("0.5").unwrap(), a.zero());
-    let mut scene = TopScene::free(&mut a, [[one, z, z], [z, one, z], [z, z, half]]);
-    scene.sequence = sequence;
-    scene.center = [z, z, one];
-    scene.gravity = Some(one);
-    let top = scene.derive(&mut a).unwrap();
-    TopModel::new(&mut a, &top, &[]).unwrap()
-}
+use precess_core::top::{ChartConfig, ChartError, ChartedTop};
 
 fn reference() -> Eulerian {
     Eulerian {
@@ -71,7 +59,10 @@ fn angles_from_rotation_inverts_both_sequences() {
 /// Runs the charted top and the quaternion reference side by side; returns the largest
 /// attitude gap and the number of chart switches.
 fn compare(r0: Matrix3<f64>, w0: Vector3<f64>, t_end: f64) -> (f64, usize, f64) {
-    let (zxz, zyx) = (model(AngleSequence::Zxz), model(AngleSequence::Zyx));
+    let (zxz, zyx) = (
+        reference_model(AngleSequence::Zxz),
+        reference_model(AngleSequence::Zyx),
+    );
     let mut top = ChartedTop::new([&zxz, &zyx], 0.0, &r0, &w0, ChartConfig::default()).unwrap();
     let e0 = top.energy();
     let reference = reference();
@@ -150,7 +141,7 @@ fn spinning_top_through_the_vertical() {
 
 #[test]
 fn two_charts_of_one_sequence_are_refused() {
-    let m = model(AngleSequence::Zxz);
+    let m = reference_model(AngleSequence::Zxz);
     let r = ChartedTop::new(
         [&m, &m],
         0.0,
@@ -170,8 +161,8 @@ fn two_charts_of_one_sequence_are_refused() {
 /// steps and a far larger error than the charted top.
 #[test]
 fn zxz_alone_struggles_near_the_singularity() {
-    let zxz = model(AngleSequence::Zxz);
-    let zyx = model(AngleSequence::Zyx);
+    let zxz = reference_model(AngleSequence::Zxz);
+    let zyx = reference_model(AngleSequence::Zyx);
     let q0 = [0.3, 1.4, std::f64::consts::FRAC_PI_2];
     let w0 = Vector3::new(1e-6, 2.5, 0.0);
     // Rates from ω = B q̇ with the textbook ZXZ B at ψ = π/2: ω = (φ̇ sθ, −θ̇, φ̇ cθ + ψ̇).
