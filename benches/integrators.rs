@@ -21,6 +21,7 @@ use precess_core::ode::{
     solve,
 };
 use precess_core::rigid::{BodyMomentum, FreeBodySplitting, SplittingOrder};
+use precess_testkit::systems::{B5, FreeBody, max_diff};
 
 /// DETEST B5 y(20), 30-digit reference.
 const B5_Y20: [f64; 3] = [
@@ -31,32 +32,6 @@ const B5_Y20: [f64; 3] = [
 const SEP_I: [f64; 3] = [3.0, 5.0, 9.0];
 const SEP_M0: [f64; 3] = [0.0, 2.0, 0.01];
 const SEP_T: f64 = 100.0;
-
-struct B5;
-impl System<3> for B5 {
-    fn rhs(&self, _t: f64, y: &[f64; 3], d: &mut [f64; 3]) {
-        d[0] = y[1] * y[2];
-        d[1] = -y[0] * y[2];
-        d[2] = -0.51 * y[0] * y[1];
-    }
-}
-
-struct FreeBody([f64; 3]);
-impl System<3> for FreeBody {
-    fn rhs(&self, _t: f64, m: &[f64; 3], d: &mut [f64; 3]) {
-        let w = [m[0] / self.0[0], m[1] / self.0[1], m[2] / self.0[2]];
-        d[0] = m[1] * w[2] - m[2] * w[1];
-        d[1] = m[2] * w[0] - m[0] * w[2];
-        d[2] = m[0] * w[1] - m[1] * w[0];
-    }
-}
-
-fn err(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
 
 /// One method at one setting on one problem: returns (final state, rhs evaluations).
 #[derive(Clone, Copy)]
@@ -175,7 +150,7 @@ fn table() {
         println!(
             "  {:<22} error {:9.2e}  rhs evals {evals}",
             m.label(),
-            err(&y, &B5_Y20)
+            max_diff(&y, &B5_Y20)
         );
     }
     let exact: [f64; 3] = FreeBodyExact::new(SEP_I, SEP_M0)
@@ -191,7 +166,7 @@ fn table() {
         println!(
             "  {:<22} error {:9.2e}  rhs evals {evals}",
             m.label(),
-            err(&y, &exact)
+            max_diff(&y, &exact)
         );
     }
 }

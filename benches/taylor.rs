@@ -26,6 +26,7 @@ use precess::prelude::*;
 use precess::taylor::kernels::cauchy;
 use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
 use precess::top::HeavyTopTheory;
+use precess_testkit::systems::SpinningTop;
 
 /// DETEST B5 y(20), 30-digit reference (Hull et al. 1972).
 const B5_Y20: [f64; 3] = [
@@ -429,17 +430,6 @@ impl TaylorSystem<6> for EulerPoisson {
         }
     }
 }
-
-/// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm): `examples/heavy_top.rs`,
-/// with its generated angle equations and their generated Taylor recurrences to order 20.
-#[derive(RigidBody)]
-#[rigid(
-    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
-    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 9.81, taylor = 20)]
-struct SpinningTop;
 
 /// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system,
 /// initial state, exact nutation period and the span of 10 periods.

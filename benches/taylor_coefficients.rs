@@ -11,17 +11,8 @@ use precess::prelude::*;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::{TaylorSystem, TaylorTape};
 use precess::top::TopScene;
+use precess_testkit::systems::SpinningTop;
 use std::hint::black_box;
-
-/// The heavy top of `examples/heavy_top.rs`.
-#[derive(RigidBody)]
-#[rigid(
-    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
-    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 9.81, taylor = 20)]
-struct SpinningTop;
 
 /// A torque-free body with moments (3, 5, 7), as a free body under gravity.
 #[derive(RigidBody)]

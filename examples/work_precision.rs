@@ -7,8 +7,7 @@
 //! writes under DIR instead of the current directory (which should be the repository's
 //! root). Peers' points (`scripts/peers.py`) are read from `docs/perf/peers.csv` if present.
 
-#[path = "work_precision/mod.rs"]
-mod work_precision;
+use precess_testkit::work_precision;
 
 use std::path::PathBuf;
 

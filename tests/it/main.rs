@@ -1,0 +1,117 @@
+//! The integration tests, one crate so that the whole graph links once: a module per area,
+//! each file a module of its own, all sharing the helpers in `common` (generators, the
+//! Newton–Euler reference, shared scenes, the LaTeX reader).
+
+mod common;
+
+/// Mass properties, shapes and their validation.
+mod body {
+    mod euler;
+    mod magnitudes;
+    mod near_rotation;
+    mod parallel;
+    mod principal;
+    mod properties;
+    mod rotated;
+    mod rotation_forms;
+    mod shapes;
+    mod validate;
+}
+/// The derive macro end to end.
+mod derive {
+    mod equations;
+    mod fields;
+    mod hygiene;
+    mod literal;
+    mod mechanism;
+    mod parametric;
+    mod rotated;
+    mod taylor;
+    mod top;
+}
+/// Closed-form solutions.
+mod exact {
+    mod attitude;
+    mod elliptic;
+    mod extremes;
+    mod free_body;
+    mod tiny_inertia;
+}
+/// The free-body scene.
+mod free {
+    mod balance;
+    mod errors;
+    mod exact;
+    mod reference;
+    mod steppers;
+    mod thrust;
+    mod top;
+}
+/// The symmetric eigensolver.
+mod linalg {
+    mod eigen;
+}
+/// The mechanism scene.
+mod mechanism {
+    mod charts;
+    mod checks;
+    mod engine;
+    mod errors;
+    mod examples;
+    mod jacobian;
+    mod parameters;
+    mod pendulum;
+    mod recursive;
+    mod timing;
+    mod top;
+}
+/// The integrators, events and sampling.
+mod ode {
+    mod attitude;
+    mod compensated;
+    mod event_roots;
+    mod events;
+    mod methods;
+    mod reference;
+    mod sampling;
+    mod splitting;
+    mod trajectory;
+}
+/// Rigid-body Taylor kernels.
+mod rigid {
+    mod taylor;
+}
+/// The symbolic engine.
+mod sym {
+    mod identities;
+    mod limits;
+    mod properties;
+    mod scaling;
+}
+/// The Taylor integrator.
+mod taylor {
+    mod coefficients;
+    mod config;
+    mod exp;
+    mod extended;
+    mod extended_functions;
+    mod extended_generated;
+    mod integrator;
+    mod powers;
+    mod scenes;
+    mod step_rule;
+    mod time;
+}
+/// The top scene.
+mod top {
+    mod check_all;
+    mod checks;
+    mod cross_check;
+    mod gimbal;
+    mod linear;
+    mod motion;
+    mod theory;
+    mod torque_free;
+    mod validate;
+}
+mod work_precision;
