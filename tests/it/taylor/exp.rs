@@ -34,7 +34,7 @@ precess::taylor_system! {
 /// e as a double-double: 2.718281828459045235360287471352662497757 (the known digits),
 /// split as the double nearest e and the double nearest the rest.
 const E: Dd = Dd {
-    hi: 2.718281828459045,
+    hi: std::f64::consts::E,
     lo: 1.4456468917292502e-16,
 };
 

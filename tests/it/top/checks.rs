@@ -132,7 +132,10 @@ fn angle_form_says_the_chart_is_singular_there() {
     // A little away from it both paths answer, and agree with the unchecked form.
     let (q, q_dot) = ([0.2, 1e-3, 0.1], [1.0, 0.5, 4.0]);
     let checked = ReferenceTop.accelerations(0.0, &q, &q_dot).unwrap();
-    assert_eq!(checked, ReferenceTop.accelerations_unchecked(0.0, &q, &q_dot));
+    assert_eq!(
+        checked,
+        ReferenceTop.accelerations_unchecked(0.0, &q, &q_dot)
+    );
     let interpreted = reference_model(AngleSequence::Zxz)
         .accelerations(&[q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]])
         .unwrap();
