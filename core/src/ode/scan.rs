@@ -6,13 +6,17 @@
 //! solution ([`Stepper::state_at`](super::Stepper::state_at)): first at degree 4 (the ends,
 //! whose values are known, and three inner points), then 8 and 16 while the interpolant's
 //! last two Chebyshev coefficients stay above [`TAIL`] times the largest |g| on the piece,
-//! then in halves of the piece, down to 2^−[`MAX_SPLITS`] of the step. On each resolved
-//! piece p, the interpolant, is monotone between its critical points, which are isolated
-//! exactly on its Bernstein form ([`super::chebyshev`]); g itself is evaluated at those
-//! where p comes within its error estimate of 0 or changes sign, so that between two
-//! consecutive points of the returned sequence p has at most one root. Each sign change of
-//! g along the sequence is then located on g itself by [`super::events::locate_root`]: an
-//! interpolant decides where to look, never what is reported.
+//! then in halves of the piece, down to 2^−[`MAX_SPLITS`] of the step. A piece is passed
+//! over as rootless, resolved or not, when its interpolant stays more than 8 error
+//! estimates away from 0 and that estimate is at most [`TRUSTED_TAIL`] (10⁻³) of the
+//! largest |g| on the piece: a larger one means the points alias g, and its coefficients
+//! are no measure of the error. On each resolved piece p, the interpolant, is monotone
+//! between its critical points, which are isolated exactly on its Bernstein form
+//! ([`super::chebyshev`]); g itself is evaluated at those where p comes within its error
+//! estimate of 0 or changes sign, so that between two consecutive points of the returned
+//! sequence p has at most one root. Each sign change of g along the sequence is then
+//! located on g itself by [`super::events::locate_root`]: an interpolant decides where to
+//! look, never what is reported.
 //!
 //! Cost: on a step where g is slow, three evaluations of the state and of g besides the
 //! step's ends (the three shared by every event of the run), and a 5 × 5 transform.
@@ -39,7 +43,7 @@ const EXCLUSION_MARGIN: f64 = 8.0;
 /// a coincidence is what lets a dip between two roots pass as rootless; a g that the
 /// points do resolve (slow against the step, the common case) has an estimate far below
 /// this and still costs the first pass only.
-const TRUSTED_TAIL: f64 = 1e-3;
+pub(crate) const TRUSTED_TAIL: f64 = 1e-3;
 
 /// The first pass's inner points on the 16-grid (degree 4: J = 4, 8, 12).
 const FIRST: [usize; 3] = [4, 8, 12];
