@@ -380,11 +380,12 @@ fn sum_of_sines(amps: [f64; 3], omegas: [f64; 3], phases: [f64; 3]) -> impl Fn(f
 #[test]
 fn a_shallow_dip_between_two_close_roots_is_found() {
     // The case the sum-of-sines property test met: roots 7.19690… and 7.21857…, 0.0217
-    // apart, with g ≈ −0.026 between them against Σ|A| ≈ 2.64. Neither integrator's step
-    // over the pair resolves g at the first pass's five points (ω up to 28 rad/s), and the
-    // degree-4 interpolant's error estimate there (about 0.04) was small enough to pass
-    // the step over as rootless. All 74 roots on [0, 10], the 10⁵-point scan's, are asked
-    // for, the closest two 0.0066 apart.
+    // apart, with g ≈ −0.026 between them against Σ|A| ≈ 2.64. Taylor's step over the pair
+    // (0.8 long) was halved, and on the half [7.08, 7.48] five points do not resolve g (ω up
+    // to 28 rad/s): the degree-4 interpolant's error estimate, 0.049, was trusted and the
+    // half passed over as rootless (Taylor found 72 roots; DOP853's shorter step resolved
+    // g). All 74 roots on [0, 10], the 10⁵-point scan's, are asked for, the closest two
+    // 0.0066 apart.
     let g = sum_of_sines(
         [
             0.965_601_480_233_750_6,
