@@ -41,7 +41,7 @@ const fn cos16(m: usize) -> f64 {
     COS16[if m <= 16 { m } else { 32 - m }]
 }
 
-/// The DCT-I of degree n = M − 1 as a matrix: c_k = Σ_j D[k][j] f_j for the values f_j at
+/// The DCT-I of degree n = M − 1 as a matrix: c_k = Σ_j D_kj f_j for the values f_j at
 /// x_j = −cos(jπ/n), with T_k(−cos θ) = (−1)ᵏ cos kθ and the ends weighted ½. Built at
 /// compile time, so a step's first pass costs one 5 × 5 product.
 const fn dct<const M: usize>() -> [[f64; M]; M] {

@@ -197,10 +197,11 @@ impl<'a, S: Stepper> Run<'a, S> {
     /// Adds an event: the zero crossings of `g(t, y)` that `event` counts, every root inside
     /// each step (not only a change of sign between the step's ends), located on the
     /// stepper's solution. `g` is called at the step's ends and at inner times of the step
-    /// in any order, three of them per step at least. What is guaranteed to be found: every
-    /// root of g such that |g| exceeds twice the error estimate of g's interpolant on the
-    /// step (at most 1e-10 of max |g| where g is resolved) between it and each neighbouring
-    /// root (`docs/trajectories.md`, Events).
+    /// in any order, three of them per step at least. What is guaranteed to be found, as far
+    /// as the error estimate of g's interpolant on the step is its error (it is an
+    /// a-posteriori estimate, not a bound): every root of g such that |g| exceeds twice that
+    /// estimate (at most 1e-10 of max |g| where g is resolved) between it and each
+    /// neighbouring root (`docs/trajectories.md`, Events).
     pub fn event(mut self, event: Event, g: impl FnMut(f64, &S::State) -> f64 + 'a) -> Self {
         self.events.push(EventSlot {
             event,
