@@ -36,7 +36,7 @@ use super::shape::Axis;
 #[derive(Clone, PartialEq, Debug)]
 pub enum Orientation<T> {
     /// A turn by `angle` about `axis` (any non-zero length), by Rodrigues' formula
-    /// R = cos α E + sin α [u]× + (1 − cos α) u uᵀ with u = axis / |axis|.
+    /// R = cos α E + sin α \[u\]× + (1 − cos α) u uᵀ with u = axis / |axis|.
     AxisAngle {
         /// The axis of the turn; only its direction matters.
         axis: [T; 3],

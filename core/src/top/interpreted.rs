@@ -20,7 +20,7 @@ use crate::sym::{Arena, SymbolId};
 ///
 /// The state is `[q₀, q₁, q₂, q̇₀, q̇₁, q̇₂]`; time enters only through declared torques.
 /// As an [`crate::ode::System`] it is unchecked, for the steppers' inner loop (NaN at the
-/// chart's gimbal lock); [`TopModel::accel`] and [`AngleChart::rates_at`] check the chart
+/// chart's gimbal lock); [`TopModel::accelerations`] and [`AngleChart::rates_at`] check the chart
 /// under the one rule of [`crate::rigid::check_chart`].
 ///
 /// # Examples

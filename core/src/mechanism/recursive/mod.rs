@@ -2,7 +2,7 @@
 //! engine, so a mechanism's q̈ comes out as O(n) straight-line code with its constants folded.
 //!
 //! Every link works in its own frame with spatial vectors as pairs of 3-vectors
-//! ([`spatial`]). The three passes are the textbook ones:
+//! (`spatial`). The three passes are the textbook ones:
 //!
 //! 1. outward: velocities vᵢ = Xᵢ v_λ + Sᵢ q̇ᵢ, the velocity-product accelerations
 //!    cᵢ = vᵢ ×ₘ Sᵢ q̇ᵢ and the bias forces pᵢ = vᵢ ×* Iᵢ vᵢ − fᵢᵉˣᵗ;
