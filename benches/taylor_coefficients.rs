@@ -8,10 +8,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use precess::prelude::*;
-use precess::sym::{Arena, ExprId};
+use precess::sym::Arena;
 use precess::taylor::{TaylorSystem, TaylorTape};
-use precess::top::TopScene;
-use precess_testkit::systems::SpinningTop;
+use precess_testkit::systems::{SpinningTop, interpreted_top};
 use std::hint::black_box;
 
 /// A torque-free body with moments (3, 5, 7), as a free body under gravity.
@@ -53,38 +52,6 @@ precess::taylor_system! {
 
 const ORDER: usize = 20;
 
-fn interpreted_top() -> TaylorTape<6> {
-    let top = SpinningTop;
-    let mut a = Arena::new();
-    let num = |a: &mut Arena, x: f64| a.float(x).unwrap();
-    let i = top.inertia();
-    let c = top.center_of_mass() - top.reference_point();
-    let inertia = std::array::from_fn(|r| std::array::from_fn(|k| num(&mut a, i[(r, k)])));
-    let center = std::array::from_fn(|k| num(&mut a, c[k]));
-    let scene = TopScene {
-        sequence: AngleSequence::Zxz,
-        inertia,
-        mass: num(&mut a, top.mass()),
-        center,
-        gravity: Some(num(&mut a, 9.81)),
-        body_torque: None,
-        space_torque: None,
-        damping: None,
-        user_torque: None,
-    };
-    let d = scene.derive(&mut a).unwrap();
-    let co = d.coords();
-    let state: [ExprId; 6] = std::array::from_fn(|k| if k < 3 { co.q[k] } else { co.rates[k - 3] });
-    let rhs: [ExprId; 6] = std::array::from_fn(|k| {
-        if k < 3 {
-            co.rates[k]
-        } else {
-            d.accelerations.accel[k - 3]
-        }
-    });
-    TaylorTape::new(&a, state, rhs, None, &[], ORDER).unwrap()
-}
-
 fn interpreted_free() -> TaylorTape<13> {
     use precess::free::FreeScene;
     let mut a = Arena::new();
@@ -107,7 +74,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("top/generated", |b| {
         b.iter(|| SpinningTop.coefficients_into(&mut ws, 0.0, black_box(&y6), ORDER, &mut c6))
     });
-    let top = interpreted_top();
+    let top = interpreted_top(&SpinningTop, 9.81, ORDER);
     let mut ws = Default::default();
     group.bench_function("top/interpreted", |b| {
         b.iter(|| top.coefficients_into(&mut ws, 0.0, black_box(&y6), ORDER, &mut c6))

@@ -9,7 +9,9 @@
 use precess::exact::Jacobi;
 use precess::ode::System;
 use precess::prelude::*;
-use precess::taylor::TaylorSystem;
+use precess::sym::{Arena, ExprId};
+use precess::taylor::{TaylorSystem, TaylorTape};
+use precess::top::{TopDynamics, TopScene};
 
 /// Σ_{j=0}^{k} a_j b_{k−j}: the k-th coefficient of the product of components `a` and `b`.
 fn cauchy<const N: usize>(c: &[[f64; N]], a: usize, b: usize, k: usize) -> f64 {
@@ -191,3 +193,40 @@ pub fn max_diff<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
 )]
 #[top(gravity = 9.81, taylor = 20)]
 pub struct SpinningTop;
+
+/// A derived top's Lagrangian Taylor tape built again at run time, from its mass properties
+/// only, through precess-core's `TopScene` and the interpreter: the second formulation the
+/// generated `taylor = K` code is checked (tests) and timed (benches) against.
+///
+/// # Panics
+/// If the scene does not derive or the tape cannot be built: a fixture, not user input.
+pub fn interpreted_top<T: RigidBody + TopDynamics>(top: &T, g: f64, order: usize) -> TaylorTape<6> {
+    let mut a = Arena::new();
+    let num = |a: &mut Arena, x: f64| a.float(x).expect("a finite mass property");
+    let i = top.inertia();
+    let c = top.center_of_mass() - top.reference_point();
+    let inertia = std::array::from_fn(|r| std::array::from_fn(|k| num(&mut a, i[(r, k)])));
+    let center = std::array::from_fn(|k| num(&mut a, c[k]));
+    let scene = TopScene {
+        sequence: T::SEQUENCE,
+        inertia,
+        mass: num(&mut a, top.mass()),
+        center,
+        gravity: Some(num(&mut a, g)),
+        body_torque: None,
+        space_torque: None,
+        damping: None,
+        user_torque: None,
+    };
+    let d = scene.derive(&mut a).expect("a top's scene derives");
+    let co = d.coords();
+    let state: [ExprId; 6] = std::array::from_fn(|k| if k < 3 { co.q[k] } else { co.rates[k - 3] });
+    let rhs: [ExprId; 6] = std::array::from_fn(|k| {
+        if k < 3 {
+            co.rates[k]
+        } else {
+            d.accelerations.accel[k - 3]
+        }
+    });
+    TaylorTape::new(&a, state, rhs, None, &[], order).expect("a top's tape builds")
+}

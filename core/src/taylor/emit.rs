@@ -154,19 +154,19 @@ impl Tape {
             let id = series(ti);
             quote!(*#id = [0.0f64; __K + 1]; #id[0] = t; #id[1] = 1.0;)
         });
+        let sums = Sums {
+            split: self.split_products(),
+            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
+        };
         let first = self
             .steps
             .iter()
-            .map(|st| order_zero(st.out, st.op, scalar_operand, layout));
+            .map(|st| order_zero(st.out, st.op, scalar_operand, layout, sums));
         // Each order in two phases: first the interiors of the sums (they read lower orders
         // only, so their chains of additions depend neither on one another nor on this
         // order's other values), then every step in program order, adding the terms that
         // read order k to its interior, from the `let`s of the values just made. What
         // remains between one order and the next is the short chain of those terms.
-        let sums = Sums {
-            split: self.split_products(),
-            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
-        };
         let interiors = self
             .steps
             .iter()
@@ -440,17 +440,11 @@ fn order_zero(
     op: SeriesOp,
     s: impl Fn(u32) -> TokenStream,
     layout: &Layout,
+    sums: Sums,
 ) -> TokenStream {
     let x = |i: u32| layout.current(i, quote!(0));
     let value_expr = match op {
-        // Order 0 has no sums: the kernels' path is not read.
-        SeriesOp::Func(f, a) => {
-            let sums = Sums {
-                split: false,
-                outlined: false,
-            };
-            return func_code(out, f, a, layout, sums).zero;
-        }
+        SeriesOp::Func(f, a) => return func_code(out, f, a, layout, sums).zero,
         SeriesOp::Add(a, b) => binary(x(a), quote!(+), x(b)),
         SeriesOp::Sub(a, b) => binary(x(a), quote!(-), x(b)),
         SeriesOp::AddScalar(a, c) => binary(x(a), quote!(+), s(c)),

@@ -8,10 +8,9 @@ use crate::common::free_bodies;
 use free_bodies::throw;
 use precess::free::FreeDynamics;
 use precess::prelude::*;
-use precess::sym::{Arena, ExprId};
-use precess::taylor::{TaylorSystem, TaylorTape};
-use precess::top::{TopDynamics, TopScene};
-use precess_testkit::systems::SpinningTop;
+use precess::taylor::TaylorSystem;
+use precess::top::TopDynamics;
+use precess_testkit::systems::{SpinningTop, interpreted_top};
 
 /// An asymmetric top with a centre off its axis and a field for g: every recurrence kind
 /// but the square root (products, quotients, sin–cos pairs, scalings by a field).
@@ -33,39 +32,6 @@ struct Brick {
 )]
 #[free(gravity = 9.81, taylor = 20)]
 struct TaylorHandle;
-
-/// The top's Lagrangian tape built at run time from its mass properties, through
-/// precess-core's scene and the interpreter.
-fn interpreted_top<T: RigidBody + TopDynamics>(top: &T, g: f64, order: usize) -> TaylorTape<6> {
-    let mut a = Arena::new();
-    let num = |a: &mut Arena, x: f64| a.float(x).unwrap();
-    let i = top.inertia();
-    let c = top.center_of_mass() - top.reference_point();
-    let inertia = std::array::from_fn(|r| std::array::from_fn(|k| num(&mut a, i[(r, k)])));
-    let center = std::array::from_fn(|k| num(&mut a, c[k]));
-    let scene = TopScene {
-        sequence: T::SEQUENCE,
-        inertia,
-        mass: num(&mut a, top.mass()),
-        center,
-        gravity: Some(num(&mut a, g)),
-        body_torque: None,
-        space_torque: None,
-        damping: None,
-        user_torque: None,
-    };
-    let d = scene.derive(&mut a).unwrap();
-    let co = d.coords();
-    let state: [ExprId; 6] = std::array::from_fn(|k| if k < 3 { co.q[k] } else { co.rates[k - 3] });
-    let rhs: [ExprId; 6] = std::array::from_fn(|k| {
-        if k < 3 {
-            co.rates[k]
-        } else {
-            d.accelerations.accel[k - 3]
-        }
-    });
-    TaylorTape::new(&a, state, rhs, None, &[], order).unwrap()
-}
 
 /// Generated against interpreted, order by order, relative to the order's largest entry.
 fn agree<const N: usize>(
