@@ -6,7 +6,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 /// The scene modules, each a folder of `src/`.
-const SCENES: [&str; 3] = ["top", "free", "mechanism"];
+const SCENES: [&str; 4] = ["top", "free", "mechanism", "contact"];
 
 /// The shared layers below the scenes.
 const SHARED: [&str; 2] = ["body", "rigid"];

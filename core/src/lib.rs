@@ -15,6 +15,7 @@
 
 pub mod body;
 pub mod codegen;
+pub mod contact;
 pub mod exact;
 pub mod free;
 pub mod lagrange;
