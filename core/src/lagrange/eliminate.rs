@@ -54,6 +54,16 @@ pub struct ConstrainedEquations {
     pub determinant: ExprId,
 }
 
+impl ConstrainedEquations {
+    /// The right-hand side the run-time model evaluates: the dependent rates `q̇_D` then
+    /// the free accelerations `u̇`, one program.
+    pub fn rhs_outputs(&self) -> Vec<ExprId> {
+        let mut out = self.dependent_rates.clone();
+        out.extend(&self.accelerations.accel);
+        out
+    }
+}
+
 impl EquationsOfMotion {
     /// Reduces the equations by the constraints, with the dependent coordinates `dependent`
     /// (one per constraint), or chosen automatically when `None`: the last m coordinates

@@ -13,6 +13,7 @@
 //!   [`ConstrainedModel`] runs the result and closes loops by coordinate partitioning.
 //!   `docs/constraints.md` says why this form.
 
+mod augmented;
 mod block_solve;
 mod constraints;
 mod eliminate;
@@ -21,6 +22,7 @@ mod error;
 mod model;
 mod partition;
 
+pub use augmented::op_count;
 pub use block_solve::{Accelerations, MAX_BLOCK};
 pub use constraints::Constraints;
 pub use eliminate::ConstrainedEquations;

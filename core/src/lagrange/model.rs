@@ -28,6 +28,8 @@ pub struct ConstrainedModel {
     /// Outputs: q̇_D (m), then u̇ (k), then Δ.
     rhs: Program,
     multipliers: Program,
+    /// Outputs: q̈, all n.
+    second: Program,
     /// Outputs: φ (m), then A_D row-major (m²); `None` unless every row is holonomic.
     pub(super) positions: Option<Program>,
     extra: Program,
@@ -74,10 +76,18 @@ impl ConstrainedModel {
             .iter()
             .map(|&e| arena.subs(e, &rate_map))
             .collect::<Result<_, _>>()?;
+        let mut q_ddot = vec![arena.zero(); coords.len()];
+        for (j, &i) in eqs.independent.iter().enumerate() {
+            q_ddot[i] = eqs.accelerations.accel[j];
+        }
+        for (j, &d) in eqs.dependent.iter().enumerate() {
+            q_ddot[d] = eqs.dependent_accelerations[j];
+        }
         let mut programs = vec![
             Program::lower(arena, &rhs_out),
             Program::lower(arena, &eqs.multipliers),
             Program::lower(arena, &extra),
+            Program::lower(arena, &q_ddot),
         ];
         let positions = match eqs
             .constraints
@@ -100,15 +110,13 @@ impl ConstrainedModel {
         supplied.extend(time);
         let bindings = Bindings::new(arena, &programs, &supplied, parameters)?;
         let positions = if positions { programs.pop() } else { None };
-        let extra = programs
-            .pop()
-            .unwrap_or_else(|| unreachable!("three programs"));
-        let multipliers = programs
-            .pop()
-            .unwrap_or_else(|| unreachable!("three programs"));
-        let rhs = programs
-            .pop()
-            .unwrap_or_else(|| unreachable!("three programs"));
+        let mut programs = programs.into_iter();
+        let mut next = || {
+            programs
+                .next()
+                .unwrap_or_else(|| unreachable!("four programs lowered above"))
+        };
+        let (rhs, multipliers, extra, second) = (next(), next(), next(), next());
         Ok(ConstrainedModel {
             n: coords.len(),
             independent: eqs.independent.clone(),
@@ -118,6 +126,7 @@ impl ConstrainedModel {
             time,
             rhs,
             multipliers,
+            second,
             positions,
             extra,
             bindings,
@@ -212,6 +221,17 @@ impl ConstrainedModel {
         self.rates(t, state)?;
         let mut out = vec![0.0; self.dependent.len()];
         self.run(&self.multipliers, t, state, &mut out);
+        Ok(out)
+    }
+
+    /// Every acceleration q̈ (the free ones u̇ and the dependent ones) at `(t, state)`.
+    ///
+    /// # Errors
+    /// As [`ConstrainedModel::rates`].
+    pub fn accelerations(&self, t: f64, state: &[f64]) -> Result<Vec<f64>, LagrangeError> {
+        self.rates(t, state)?;
+        let mut out = vec![0.0; self.n];
+        self.run(&self.second, t, state, &mut out);
         Ok(out)
     }
 

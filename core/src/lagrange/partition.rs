@@ -40,8 +40,9 @@ impl ConstrainedModel {
     }
 
     /// Solves `φ(q, t) = 0` for the dependent coordinates by Newton's method from their
-    /// values in `state`, until `max |φ| ≤ tolerance`; returns the iterations taken (0 when
-    /// the state already closes). Does nothing, returning 0, unless every constraint is
+    /// values in `state`, until `max |φ| ≤ tolerance` or a Newton step is at rounding level
+    /// (φ then sits on its rounding floor); returns the iterations taken (0 when the state
+    /// already closes). Does nothing, returning 0, unless every constraint is
     /// holonomic.
     ///
     /// # Errors
@@ -64,11 +65,14 @@ impl ConstrainedModel {
         let mut trial = state.to_vec();
         let mut out = vec![0.0; m + m * m];
         let mut last = f64::INFINITY;
+        // The size of the last Newton step against its coordinates: a step at rounding
+        // level means φ sits on its rounding floor, closed as far as f64 can tell.
+        let mut step_at_rounding = false;
         let mut iteration = 0;
         loop {
             self.run(p, t, &trial, &mut out);
             let residual = out[..m].iter().fold(0.0_f64, |r, v| r.max(v.abs()));
-            if residual <= tolerance {
+            if residual <= tolerance || step_at_rounding {
                 state.copy_from_slice(&trial);
                 return Ok(iteration);
             }
@@ -90,7 +94,9 @@ impl ConstrainedModel {
             let Some(step) = block.lu().solve(&phi) else {
                 return Err(LagrangeError::SingularAtState { determinant, scale });
             };
+            step_at_rounding = true;
             for (j, &d) in self.dependent.iter().enumerate() {
+                step_at_rounding &= step[j].abs() <= 4.0 * f64::EPSILON * trial[d].abs().max(1.0);
                 trial[d] -= step[j];
             }
             iteration += 1;
