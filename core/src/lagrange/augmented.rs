@@ -45,15 +45,7 @@ impl EquationsOfMotion {
             }
         }
         let mut rhs = self.forcing.clone();
-        for r in 0..m {
-            let mut terms = Vec::with_capacity(n + 1);
-            for j in 0..n {
-                let da = arena.dt(a[r][j]);
-                terms.push(arena.mul(da, self.coords.rates[j]));
-            }
-            terms.push(arena.dt(constraints.offsets[r]));
-            let h = arena.sum(&terms);
-            let h = arena.expand(h);
+        for h in constraints.rate_terms(arena, &self.coords) {
             rhs.push(arena.neg(h));
         }
         let solved = solve_linear(arena, &big, &rhs)?;

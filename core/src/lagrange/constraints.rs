@@ -124,6 +124,28 @@ impl Constraints {
         Ok(self)
     }
 
+    /// `Ȧ q̇ + ḃ`, one per row: what the differentiated constraints `A q̈ + Ȧ q̇ + ḃ = 0`
+    /// hold besides the accelerations (expanded, in q and every rate).
+    pub fn rate_terms(&self, arena: &mut Arena, coords: &Coordinates) -> Vec<ExprId> {
+        self.coefficients
+            .iter()
+            .zip(&self.offsets)
+            .map(|(row, &b)| {
+                let mut terms: Vec<ExprId> = row
+                    .iter()
+                    .zip(&coords.rates)
+                    .map(|(&a, &qd)| {
+                        let da = arena.dt(a);
+                        arena.mul(da, qd)
+                    })
+                    .collect();
+                terms.push(arena.dt(b));
+                let h = arena.sum(&terms);
+                arena.expand(h)
+            })
+            .collect()
+    }
+
     /// The constraint residuals `A q̇ + b`, one per row (zero on a motion that obeys them).
     pub fn residuals(&self, arena: &mut Arena, coords: &Coordinates) -> Vec<ExprId> {
         (0..self.len())

@@ -172,17 +172,11 @@ impl EquationsOfMotion {
             .map(|(&d, &e)| (symbol(arena, rates[d]), e))
             .collect();
         // h = Ȧ q̇ + ḃ with the dependent rates put in, then H = adj h.
-        let mut h = Vec::with_capacity(m);
-        for r in 0..m {
-            let mut terms = Vec::with_capacity(n + 1);
-            for j in 0..n {
-                let da = arena.dt(a[r][j]);
-                terms.push(arena.mul(da, rates[j]));
-            }
-            terms.push(arena.dt(constraints.offsets[r]));
-            let hr = arena.sum(&terms);
-            h.push(arena.subs(hr, &rate_map)?);
-        }
+        let h: Vec<ExprId> = constraints
+            .rate_terms(arena, &self.coords)
+            .into_iter()
+            .map(|hr| arena.subs(hr, &rate_map))
+            .collect::<Result<_, _>>()?;
         let big_h = mat_vec(arena, &adj, &h);
         let big_h: Vec<ExprId> = big_h.iter().map(|&e| arena.expand(e)).collect();
         let mm = &self.mass;
@@ -309,8 +303,8 @@ fn choose_dependent(
             return Err(LagrangeError::DependentConstraints { constraints: m });
         };
         idx[p] -= 1;
-        for q in p + 1..m {
-            idx[q] = n - m + q;
+        for (q, slot) in idx.iter_mut().enumerate().skip(p + 1) {
+            *slot = n - m + q;
         }
     }
 }

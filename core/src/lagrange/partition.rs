@@ -76,7 +76,9 @@ impl ConstrainedModel {
                 state.copy_from_slice(&trial);
                 return Ok(iteration);
             }
-            if iteration == MAX_NEWTON || !(residual < last) {
+            if iteration == MAX_NEWTON
+                || residual.partial_cmp(&last) != Some(std::cmp::Ordering::Less)
+            {
                 return Err(LagrangeError::LoopNotClosed {
                     residual,
                     iterations: iteration,
@@ -87,7 +89,9 @@ impl ConstrainedModel {
             let block = DMatrix::from_row_slice(m, m, &out[m..]);
             let determinant = block.determinant();
             let scale: f64 = block.row_iter().map(|r| r.norm()).product();
-            if !(determinant.abs() > SINGULAR_BLOCK * scale) {
+            if determinant.abs().partial_cmp(&(SINGULAR_BLOCK * scale))
+                != Some(std::cmp::Ordering::Greater)
+            {
                 return Err(LagrangeError::SingularAtState { determinant, scale });
             }
             let phi = DVector::from_column_slice(&out[..m]);
