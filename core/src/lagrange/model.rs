@@ -6,6 +6,8 @@
 //! construction and only the positions of a closed loop can drift
 //! ([`ConstrainedModel::close_loop`] pulls them back).
 
+use std::cell::RefCell;
+
 use super::eliminate::ConstrainedEquations;
 use super::error::LagrangeError;
 #[cfg(doc)]
@@ -34,11 +36,14 @@ pub struct ConstrainedModel {
     pub(super) positions: Option<Program>,
     extra: Program,
     bindings: Bindings,
+    /// The right-hand side's outputs, kept so that a step allocates nothing.
+    buffer: RefCell<Vec<f64>>,
 }
 
 impl ConstrainedModel {
-    /// Lowers the reduced equations and `outputs` (expressions in q, the rates and the
-    /// parameters; the dependent rates in them are replaced by their constraint values),
+    /// Lowers the reduced equations and `outputs` (expressions in q, the rates, the
+    /// accelerations and the parameters; the dependent rates in them are replaced by their
+    /// constraint values and every acceleration by its derived value),
     /// with a value for each parameter the programs read.
     ///
     /// # Errors
@@ -72,10 +77,6 @@ impl ConstrainedModel {
         let mut rhs_out = eqs.dependent_rates.clone();
         rhs_out.extend(&eqs.accelerations.accel);
         rhs_out.push(eqs.determinant);
-        let extra: Vec<ExprId> = outputs
-            .iter()
-            .map(|&e| arena.subs(e, &rate_map))
-            .collect::<Result<_, _>>()?;
         let mut q_ddot = vec![arena.zero(); coords.len()];
         for (j, &i) in eqs.independent.iter().enumerate() {
             q_ddot[i] = eqs.accelerations.accel[j];
@@ -83,6 +84,16 @@ impl ConstrainedModel {
         for (j, &d) in eqs.dependent.iter().enumerate() {
             q_ddot[d] = eqs.dependent_accelerations[j];
         }
+        // Outputs may read accelerations (a normal force m (z̈_G + g)): every q̈ is replaced
+        // by its derived value along with the dependent rates.
+        let mut map = rate_map;
+        for (&acc, &value) in coords.accels.iter().zip(&q_ddot) {
+            map.push((sym(arena, acc), value));
+        }
+        let extra: Vec<ExprId> = outputs
+            .iter()
+            .map(|&e| arena.subs(e, &map))
+            .collect::<Result<_, _>>()?;
         let mut programs = vec![
             Program::lower(arena, &rhs_out),
             Program::lower(arena, &eqs.multipliers),
@@ -130,6 +141,7 @@ impl ConstrainedModel {
             positions,
             extra,
             bindings,
+            buffer: RefCell::new(Vec::new()),
         })
     }
 
@@ -178,7 +190,8 @@ impl ConstrainedModel {
     /// The unchecked right-hand side: `dydt = [q̇, u̇]` at `(t, y)`.
     pub fn rhs_into(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
         let (m, k) = (self.dependent.len(), self.independent.len());
-        let mut out = vec![0.0; m + k + 1];
+        let mut out = self.buffer.borrow_mut();
+        out.resize(m + k + 1, 0.0);
         self.run(&self.rhs, t, y, &mut out);
         for (j, &i) in self.independent.iter().enumerate() {
             dydt[i] = y[self.n + j];

@@ -21,8 +21,8 @@ const R: f64 = 0.4;
 const G: f64 = 9.81;
 const VALUES: [(&str, f64); 3] = [("m", M), ("r", R), ("g", G)];
 
-/// The disk's Lagrangian, constraints and outputs: energy, then the velocity of the
-/// material point at the contact (3 components).
+/// The disk's Lagrangian, constraints and outputs: energy, the velocity of the material
+/// point at the contact (3 components), and the normal force m (z̈_G + g).
 pub fn rolling_disk(a: &mut Arena) -> Result<(ConstrainedEquations, Vec<ExprId>), LagrangeError> {
     let c = Coordinates::new(a, &["phi", "theta", "psi", "x", "y"]);
     let (m, r, g) = (a.parameter("m"), a.parameter("r"), a.parameter("g"));
@@ -94,6 +94,9 @@ pub fn rolling_disk(a: &mut Arena) -> Result<(ConstrainedEquations, Vec<ExprId>)
     for i in 0..3 {
         outputs.push(a.add(v[i], turn[i]));
     }
+    let z_dd = a.dt(v[2]);
+    let lift = a.add(z_dd, g);
+    outputs.push(a.mul(m, lift));
     Ok((eqs, outputs))
 }
 
@@ -183,10 +186,19 @@ fn check_state(q: [f64; 5], u: [f64; 3]) {
             );
         }
         let out = model.outputs(0.0, &state).expect("finite");
-        let slip = out[1..].iter().fold(0.0_f64, |s, v| s.max(v.abs()));
+        let slip = out[1..4].iter().fold(0.0_f64, |s, v| s.max(v.abs()));
         assert!(
             slip <= 1e-15 * R * scale(&u) * 8.0,
             "contact slips at {slip:e}"
+        );
+        // The normal force, an output reading θ̈: m g − m r (cos θ θ̇² + sin θ θ̈).
+        let (st, ct) = q[1].sin_cos();
+        let normal = M * G - M * R * (ct * u[1] * u[1] + st * want[1]);
+        let tol = 1e-13 * M * (G + R * (u[1] * u[1] + want[1].abs()));
+        assert!(
+            (out[4] - normal).abs() <= tol,
+            "N = {} against {normal}",
+            out[4]
         );
     });
 }
@@ -240,7 +252,7 @@ fn energy_is_conserved_and_the_contact_stays_still_along_a_run() {
             ode.advance_to(k as f64 * 0.5).expect("integrates");
             let out = model.outputs(ode.t(), ode.y()).expect("finite");
             worst = worst.max(((out[0] - e0) / e0).abs());
-            let slip = out[1..].iter().fold(0.0_f64, |s, v| s.max(v.abs()));
+            let slip = out[1..4].iter().fold(0.0_f64, |s, v| s.max(v.abs()));
             assert!(slip < 1e-13, "slip {slip:e} at t = {}", ode.t());
         }
         // Measured: 3.0e-14 relative over 50 s (about 64 spin turns).
