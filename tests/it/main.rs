@@ -34,6 +34,7 @@ mod constraints {
     mod disk;
     mod errors;
     mod four_bar;
+    mod rheonomic;
 }
 /// Closed-form solutions.
 mod exact {

@@ -172,3 +172,27 @@ fn run_time_states_are_checked() {
     let unset = ConstrainedModel::new(&mut a, &eqs, &out, &values()[1..]);
     assert!(matches!(unset, Err(LagrangeError::Binding(_))));
 }
+
+#[test]
+fn no_constraints_reduce_to_the_free_equations() {
+    // The pendulum in its angle, with an empty constraint set: u̇ is the free θ̈.
+    let mut a = Arena::new();
+    let c = Coordinates::new(&mut a, &["theta"]);
+    let (g, l) = (a.parameter("g"), a.parameter("l"));
+    let half = a.number("0.5").expect("a decimal");
+    let t = a.product(&[half, l, l, c.rates[0], c.rates[0]]);
+    let cos = a.cos(c.q[0]);
+    let v = a.product(&[g, l, cos]);
+    let lag = a.add(t, v);
+    let zero = a.zero();
+    let eom = EquationsOfMotion::derive(&mut a, lag, c, &[zero]).expect("derives");
+    let eqs = eom
+        .constrain(&mut a, &Constraints::new(), None)
+        .expect("nothing to eliminate");
+    assert!(eqs.dependent.is_empty() && eqs.multipliers.is_empty());
+    let model =
+        ConstrainedModel::new(&mut a, &eqs, &[], &[("g", 9.81), ("l", 2.0)]).expect("binds");
+    let acc = model.accelerations(0.0, &[0.7, 1.0]).expect("regular");
+    assert!((acc[0] + 9.81 / 2.0 * 0.7_f64.sin()).abs() < 1e-15);
+    assert_eq!(model.position_residuals(0.0, &[0.7, 1.0]), Ok(None));
+}

@@ -359,3 +359,28 @@ fn the_reduced_equations_agree_with_the_augmented_system() {
         }
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(128))]
+
+    /// From any crank angle and a guess up to 0.1 rad off, Newton closes the loop onto
+    /// Freudenstein's assembly to rounding.
+    #[test]
+    fn newton_closes_onto_freudenstein_from_a_rough_guess(
+        theta1 in -3.2..3.2_f64, d2 in -0.1..0.1_f64, d3 in -0.1..0.1_f64, w in -9.0..9.0_f64,
+    ) {
+        let m = MODEL.with(|m| m.take()).unwrap_or_else(model);
+        let (t2, t3) = freudenstein(theta1, 1.0);
+        let mut y = [theta1, t2 + d2, t3 + d3, w];
+        let n = m.close_loop(0.0, &mut y, 1e-15).expect("closes");
+        proptest::prop_assert!(n <= 8, "{n} Newton iterations");
+        proptest::prop_assert!(angle_diff(y[1], t2).abs() < 1e-14, "θ₂ {} against {t2}", y[1]);
+        proptest::prop_assert!(angle_diff(y[2], t3).abs() < 1e-14, "θ₃ {} against {t3}", y[2]);
+        proptest::prop_assert_eq!(y[0], theta1);
+        MODEL.with(|cell| cell.set(Some(m)));
+    }
+}
+
+thread_local! {
+    static MODEL: std::cell::Cell<Option<ConstrainedModel>> = const { std::cell::Cell::new(None) };
+}
