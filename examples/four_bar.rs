@@ -14,7 +14,8 @@
 //! K₁ cos θ₃ − K₂ cos θ₁ + K₃ = cos(θ₁ − θ₃), K₁ = d/a, K₂ = d/c,
 //! K₃ = (a² − b² + c² + d²)/(2ac). The energy, conserved by the equations, measures the
 //! integrator's error; the loop residual |φ| is shown with partitioning (Newton on θ₂, θ₃
-//! after each step) and without (plain integration of the dependent angles).
+//! after each step), without (plain integration of the dependent angles), and with
+//! Baumgarte's stabilisation ∂φ/∂q q̇ + β φ = 0 in place of the closure's derivative.
 
 mod common;
 
@@ -30,6 +31,8 @@ const LINKS: [f64; 4] = [1.0, 3.0, 2.5, 3.0];
 const MASSES: [f64; 3] = [0.5, 1.5, 1.2];
 const G: f64 = 9.81;
 const TURNS: f64 = 1e4;
+/// The Baumgarte rate β [1/s] of the comparison run: a few times the crank's frequency.
+const BETA: f64 = 10.0;
 
 fn values() -> Vec<(&'static str, f64)> {
     let [a, b, c, d] = LINKS;
@@ -39,8 +42,13 @@ fn values() -> Vec<(&'static str, f64)> {
 }
 
 /// The Lagrangian of the three rods, the two closure constraints, the reduction with θ₁
-/// free; the energy is the extra output.
-fn four_bar(a: &mut Arena) -> Result<(ConstrainedEquations, ExprId), LagrangeError> {
+/// free; the energy and the two residuals φ are the extra outputs. With `baumgarte` the
+/// closure is imposed as the stabilised velocity constraint ∂φ/∂q q̇ + β φ = 0 (φ then
+/// decays at the rate β, the parameter `beta`) instead of ∂φ/∂q q̇ = 0.
+fn four_bar(
+    a: &mut Arena,
+    baumgarte: bool,
+) -> Result<(ConstrainedEquations, Vec<ExprId>), LagrangeError> {
     let c = Coordinates::new(a, &["th1", "th2", "th3"]);
     let [la, lb, lc, ld] = ["a", "b", "c", "d"].map(|n| a.parameter(n));
     let [m1, m2, m3, g] = ["m1", "m2", "m3", "g"].map(|n| a.parameter(n));
@@ -82,7 +90,16 @@ fn four_bar(a: &mut Arena) -> Result<(ConstrainedEquations, ExprId), LagrangeErr
     let (phi_x, phi_y) = (a.sum(&phi_x), a.sum(&phi_y));
     let mut k = Constraints::new();
     k.holonomic(a, &c, phi_x)?.holonomic(a, &c, phi_y)?;
-    Ok((eom.constrain(a, &k, None)?, energy))
+    if baumgarte {
+        let beta = a.parameter("beta");
+        let mut stabilised = Constraints::new();
+        for (row, phi) in k.coefficients.iter().zip([phi_x, phi_y]) {
+            let offset = a.mul(beta, phi);
+            stabilised.nonholonomic(a, &c, row, offset)?;
+        }
+        k = stabilised;
+    }
+    Ok((eom.constrain(a, &k, None)?, vec![energy, phi_x, phi_y]))
 }
 
 /// Freudenstein's rocker angle θ₃ and the coupler angle θ₂ for the crank at θ₁, on the
@@ -136,9 +153,9 @@ fn run(
             ode.advance_to(t)?;
         }
         let y = *ode.y();
-        let phi = model.position_residuals(t, &y)?.unwrap_or_default();
-        worst = phi.iter().fold(worst, |w, v| w.max(v.abs()));
-        let e = model.outputs(t, &y)?[0];
+        let out = model.outputs(t, &y)?;
+        worst = out[1..].iter().fold(worst, |w, v| w.max(v.abs()));
+        let e = out[0];
         samples.push((t, worst, (e - e0) / e0));
     }
     let steps = ode.stats().steps;
@@ -165,11 +182,15 @@ fn main() -> Result<(), Box<dyn Error>> {
         LINKS[0]
     );
     let mut a = Arena::new();
-    let (eqs, energy) = four_bar(&mut a)?;
+    let (eqs, outputs) = four_bar(&mut a, false)?;
     let ops = op_count(&a, &eqs.rhs_outputs());
     let aug = eqs.equations.augmented(&mut a, &eqs.constraints)?;
     let aug_ops = op_count(&a, &aug);
-    let model = ConstrainedModel::new(&mut a, &eqs, &[energy], &values())?;
+    let model = ConstrainedModel::new(&mut a, &eqs, &outputs, &values())?;
+    let (stabilised, outputs) = four_bar(&mut a, true)?;
+    let mut with_beta = values();
+    with_beta.push(("beta", BETA));
+    let baumgarte = ConstrainedModel::new(&mut a, &stabilised, &outputs, &with_beta)?;
     println!(
         "right-hand side: {} operations reduced (θ̇₂, θ̇₃, θ̈₁), {} for the augmented 5 × 5 system (θ̈, λ)",
         ops.total(),
@@ -185,6 +206,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let t_end = TURNS * period;
     let on = run(&model, y0, t_end, true)?;
     let off = run(&model, y0, t_end, false)?;
+    let stab = run(&baumgarte, y0, t_end, false)?;
     let turns = (on.end[0] - y0[0]) / std::f64::consts::TAU;
     let (f2, f3) = freudenstein(on.end[0], 1.0);
     let (g2, g3) = freudenstein(off.end[0], 1.0);
@@ -235,6 +257,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         last(&off).0,
         off.steps
     );
+    println!(
+        "  max |φ| Baumgarte (β = {BETA}/s): {:.2e} ({} steps), energy error at the end {:.2e}",
+        last(&stab).0,
+        stab.steps,
+        last(&stab).1
+    );
     let floor = |v: f64| v.abs().max(1e-17);
     let path = plot(
         "four_bar_residual.svg",
@@ -253,6 +281,10 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series::line(
                 "|φ| plain",
                 off.samples.iter().map(|s| (s.0, floor(s.1))).collect(),
+            ),
+            Series::line(
+                "|φ| Baumgarte",
+                stab.samples.iter().map(|s| (s.0, floor(s.1))).collect(),
             ),
             Series::line(
                 "energy, partitioned",

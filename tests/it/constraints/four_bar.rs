@@ -226,7 +226,7 @@ fn partitioning_keeps_the_loop_closed_where_plain_integration_drifts() {
     );
     // Measured over 1353 turns at rtol = atol = 1e-12 with DOP853: |φ| 8.9e-16 partitioned
     // against 1.5e-10 plain; energy 1.4e-9 and 8.9e-10 (the integrator's truncation error,
-    // growing linearly; a wrong force drifts at order one).
+    // which wanders as it grows; a wrong force drifts at order one).
     assert!(
         e_on < 1e-8 && e_off < 1e-8,
         "energy drifts by {e_on:e} / {e_off:e}"
