@@ -153,7 +153,9 @@ pub enum LagrangeError {
     SingularAtState {
         /// det A_D at the state.
         determinant: f64,
-        /// The size it is judged against (the product of the rows' norms).
+        /// The size it is judged against: the product of the rows' norms of A_D in
+        /// [`ConstrainedModel::close_loop`](super::ConstrainedModel::close_loop); 1 where
+        /// only Δ was evaluated (a rate that came out infinite or NaN).
         scale: f64,
     },
     /// The stepper failed while advancing a constrained model.
