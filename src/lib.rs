@@ -131,3 +131,8 @@ pub struct FreeBodiesDoctests;
 #[doc = include_str!("../docs/mechanisms.md")]
 #[cfg(doctest)]
 pub struct MechanismsDoctests;
+
+/// The constraint guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/constraints.md")]
+#[cfg(doctest)]
+pub struct ConstraintsDoctests;

@@ -29,6 +29,13 @@ mod derive {
     mod taylor;
     mod top;
 }
+/// Constraints: nonholonomic rolling and closed loops.
+mod constraints {
+    mod disk;
+    mod errors;
+    mod four_bar;
+    mod rheonomic;
+}
 /// Closed-form solutions.
 mod exact {
     mod attitude;

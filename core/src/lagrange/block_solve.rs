@@ -33,56 +33,70 @@ impl EquationsOfMotion {
     /// [`LagrangeError::SingularMassMatrix`] if a block's determinant is identically zero;
     /// [`LagrangeError::BlockTooLarge`] past [`MAX_BLOCK`] coupled coordinates.
     pub fn solve(&self, arena: &mut Arena) -> Result<Accelerations, LagrangeError> {
-        let n = self.coords.len();
-        let blocks = coupled_blocks(arena, &self.mass);
-        let mut accel = vec![arena.zero(); n];
-        // Each q̈ as numerator and determinant, kept for the cancelled variant.
-        let mut quotients = vec![(arena.zero(), arena.one()); n];
-        let mut determinants = Vec::with_capacity(blocks.len());
-        for block in &blocks {
-            if block.len() > MAX_BLOCK {
-                return Err(LagrangeError::BlockTooLarge {
-                    size: block.len(),
-                    max: MAX_BLOCK,
-                });
-            }
-            let m: Vec<Vec<ExprId>> = block
-                .iter()
-                .map(|&i| block.iter().map(|&j| self.mass[i][j]).collect())
-                .collect();
-            let det = determinant(arena, &m);
-            let det = arena.expand(det);
-            // Seen through abbreviations: a body's named inertia entries can hide a zero.
-            if arena.is_zero(det)? {
-                return Err(LagrangeError::SingularMassMatrix {
-                    block: block.clone(),
-                });
-            }
-            let inv_det = arena.recip(det)?;
-            let k = block.len();
-            for r in 0..k {
-                // Row r of adj(M) = cofactors of column r (M is symmetric, so rows work too).
-                let mut terms = Vec::with_capacity(k);
-                for (c, &coord) in block.iter().enumerate() {
-                    let cof = cofactor(arena, &m, c, r);
-                    let cof = arena.expand(cof);
-                    if cof != arena.zero() {
-                        terms.push(arena.mul(cof, self.forcing[coord]));
-                    }
-                }
-                let num = arena.sum(&terms);
-                accel[block[r]] = arena.mul(num, inv_det);
-                quotients[block[r]] = (num, det);
-            }
-            determinants.push(det);
-        }
-        let accel = cheapest_form(arena, &accel, &quotients)?;
-        Ok(Accelerations {
-            accel,
-            blocks,
-            determinants,
-        })
+        solve_linear(arena, &self.mass, &self.forcing)
     }
+}
+
+/// Solves `K x = r` symbolically for a symmetric K (a mass matrix, or the reduced one of
+/// a constrained system), block by block with adjugates, keeping the cheapest form.
+///
+/// # Errors
+/// [`LagrangeError::SingularMassMatrix`] if a block's determinant is identically zero;
+/// [`LagrangeError::BlockTooLarge`] past [`MAX_BLOCK`] coupled unknowns.
+pub(crate) fn solve_linear(
+    arena: &mut Arena,
+    mass: &[Vec<ExprId>],
+    forcing: &[ExprId],
+) -> Result<Accelerations, LagrangeError> {
+    let n = mass.len();
+    let blocks = coupled_blocks(arena, mass);
+    let mut accel = vec![arena.zero(); n];
+    // Each q̈ as numerator and determinant, kept for the cancelled variant.
+    let mut quotients = vec![(arena.zero(), arena.one()); n];
+    let mut determinants = Vec::with_capacity(blocks.len());
+    for block in &blocks {
+        if block.len() > MAX_BLOCK {
+            return Err(LagrangeError::BlockTooLarge {
+                size: block.len(),
+                max: MAX_BLOCK,
+            });
+        }
+        let m: Vec<Vec<ExprId>> = block
+            .iter()
+            .map(|&i| block.iter().map(|&j| mass[i][j]).collect())
+            .collect();
+        let det = determinant(arena, &m);
+        let det = arena.expand(det);
+        // Seen through abbreviations: a body's named inertia entries can hide a zero.
+        if arena.is_zero(det)? {
+            return Err(LagrangeError::SingularMassMatrix {
+                block: block.clone(),
+            });
+        }
+        let inv_det = arena.recip(det)?;
+        let k = block.len();
+        for r in 0..k {
+            // Row r of adj(M) = cofactors of column r (M is symmetric, so rows work too).
+            let mut terms = Vec::with_capacity(k);
+            for (c, &coord) in block.iter().enumerate() {
+                let cof = cofactor(arena, &m, c, r);
+                let cof = arena.expand(cof);
+                if cof != arena.zero() {
+                    terms.push(arena.mul(cof, forcing[coord]));
+                }
+            }
+            let num = arena.sum(&terms);
+            accel[block[r]] = arena.mul(num, inv_det);
+            quotients[block[r]] = (num, det);
+        }
+        determinants.push(det);
+    }
+    let accel = cheapest_form(arena, &accel, &quotients)?;
+    Ok(Accelerations {
+        accel,
+        blocks,
+        determinants,
+    })
 }
 
 /// The cheapest of three equal forms of the accelerations, judged on the joint program:

@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::codegen::BindingError;
+use crate::ode::OdeError;
 use crate::sym::SymError;
 
 /// What can go wrong while deriving or solving equations of motion.
@@ -48,6 +50,120 @@ pub enum LagrangeError {
         /// The largest supported.
         max: usize,
     },
+    /// A constraint row with a coefficient count other than the coordinate count.
+    #[error("constraint row {row} has {got} coefficients for {expected} coordinates")]
+    ConstraintLength {
+        /// The row.
+        row: usize,
+        /// Coefficients given.
+        got: usize,
+        /// Coordinates.
+        expected: usize,
+    },
+    /// A constraint that is not linear in the rates: a coefficient or offset of a velocity
+    /// constraint holds a rate or an acceleration, or a position constraint holds a rate.
+    #[error(
+        "constraint row {row} is not of the form A(q, t) q̇ + b(q, t) = 0 (`{expr}` holds a rate \
+         or an acceleration)"
+    )]
+    ConstraintNotLinear {
+        /// The row.
+        row: usize,
+        /// The offending coefficient, offset or position function.
+        expr: String,
+    },
+    /// As many constraints as coordinates or more: no speed is left to move.
+    #[error("{constraints} constraints on {coordinates} coordinates leave no free speed")]
+    TooManyConstraints {
+        /// Constraints.
+        constraints: usize,
+        /// Coordinates.
+        coordinates: usize,
+    },
+    /// The dependent coordinates chosen are not one per constraint, repeat one, or name
+    /// one that does not exist.
+    #[error(
+        "dependent coordinates {dependent:?} are not {constraints} distinct indices below \
+         {coordinates} (one per constraint)"
+    )]
+    DependentChoice {
+        /// The indices given.
+        dependent: Vec<usize>,
+        /// Constraints.
+        constraints: usize,
+        /// Coordinates.
+        coordinates: usize,
+    },
+    /// The constraints' block of the chosen dependent coordinates is singular everywhere:
+    /// their speeds cannot be solved for.
+    #[error(
+        "the constraint block of dependent coordinates {dependent:?} has zero determinant \
+         everywhere: choose other dependent coordinates"
+    )]
+    SingularConstraintBlock {
+        /// The dependent coordinates.
+        dependent: Vec<usize>,
+    },
+    /// No choice of dependent coordinates gives a constraint block that is not singular
+    /// everywhere: the constraints are dependent.
+    #[error(
+        "no {constraints} coordinates have a non-singular constraint block: the constraints are dependent"
+    )]
+    DependentConstraints {
+        /// Constraints.
+        constraints: usize,
+    },
+    /// A run-time state of the wrong length for the constrained model.
+    #[error(
+        "state of {got} entries where the model takes {expected} (coordinates, then free speeds)"
+    )]
+    StateLength {
+        /// Entries given.
+        got: usize,
+        /// Entries expected.
+        expected: usize,
+    },
+    /// A non-finite coordinate or speed in a run-time state.
+    #[error("state entry {index} = {value} is not finite")]
+    NonFiniteState {
+        /// The entry.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// Newton's iteration for the dependent coordinates did not close the loop.
+    #[error(
+        "the loop does not close: the position constraints' residual is {residual:e} after \
+         {iterations} Newton iterations (tolerance {tolerance:e})"
+    )]
+    LoopNotClosed {
+        /// The largest |φ_k| left.
+        residual: f64,
+        /// Iterations taken.
+        iterations: usize,
+        /// The tolerance asked for.
+        tolerance: f64,
+    },
+    /// The constraint Jacobian's dependent block is singular at the state: the mechanism
+    /// is at a branch point (a four-bar folded flat) or the dependent choice fails there.
+    #[error(
+        "the constraint block of the dependent coordinates is singular at this state \
+         (determinant {determinant:e}, scale {scale:e})"
+    )]
+    SingularAtState {
+        /// det A_D at the state.
+        determinant: f64,
+        /// The size it is judged against: the product of the rows' norms of A_D in
+        /// [`ConstrainedModel::close_loop`](super::ConstrainedModel::close_loop); 1 where
+        /// only Δ was evaluated (a rate that came out infinite or NaN).
+        scale: f64,
+    },
+    /// The stepper failed while advancing a constrained model.
+    #[error(transparent)]
+    Ode(#[from] OdeError),
+    /// A parameter could not be bound at run time.
+    #[error(transparent)]
+    Binding(#[from] BindingError),
     /// A constructor of the symbolic engine failed.
     #[error(transparent)]
     Sym(#[from] SymError),

@@ -1,0 +1,136 @@
+//! Coordinate partitioning at run time: after a step, the dependent coordinates of a closed
+//! loop are solved from `φ(q) = 0` by Newton's method with the symbolic Jacobian block
+//! `A_D = ∂φ/∂q_D`, the independent coordinates and the free speeds left as the stepper
+//! made them. The dependent rates need no correction: the model computes them from the
+//! constraints at every evaluation.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::error::LagrangeError;
+use super::model::ConstrainedModel;
+use crate::ode::Stepper;
+
+/// The most Newton iterations [`ConstrainedModel::close_loop`] takes.
+pub const MAX_NEWTON: usize = 20;
+
+/// A block whose determinant is below this fraction of the product of its rows' norms is
+/// taken as singular (the loop is folded flat, or the dependent choice fails there).
+pub const SINGULAR_BLOCK: f64 = 1e-12;
+
+impl ConstrainedModel {
+    /// The position residuals φ(q, t), one per constraint, or `None` unless every
+    /// constraint is holonomic.
+    ///
+    /// # Errors
+    /// [`LagrangeError::StateLength`], [`LagrangeError::NonFiniteState`].
+    pub fn position_residuals(
+        &self,
+        t: f64,
+        state: &[f64],
+    ) -> Result<Option<Vec<f64>>, LagrangeError> {
+        self.check(state)?;
+        let Some(p) = &self.positions else {
+            return Ok(None);
+        };
+        let m = self.dependent.len();
+        let mut out = vec![0.0; m + m * m];
+        self.run(p, t, state, &mut out);
+        out.truncate(m);
+        Ok(Some(out))
+    }
+
+    /// Solves `φ(q, t) = 0` for the dependent coordinates by Newton's method from their
+    /// values in `state`, until `max |φ| ≤ tolerance` or a Newton step is at rounding level
+    /// (φ then sits on its rounding floor); returns the iterations taken (0 when the state
+    /// already closes). Does nothing, returning 0, unless every constraint is
+    /// holonomic.
+    ///
+    /// # Errors
+    /// [`LagrangeError::StateLength`], [`LagrangeError::NonFiniteState`];
+    /// [`LagrangeError::SingularAtState`] where `|det A_D|` is below [`SINGULAR_BLOCK`]
+    /// times the product of its rows' norms; [`LagrangeError::LoopNotClosed`] naming the
+    /// residual left after [`MAX_NEWTON`] iterations or when an iteration no longer
+    /// reduces it. `state` is left unchanged on error.
+    pub fn close_loop(
+        &self,
+        t: f64,
+        state: &mut [f64],
+        tolerance: f64,
+    ) -> Result<usize, LagrangeError> {
+        self.check(state)?;
+        let Some(p) = &self.positions else {
+            return Ok(0);
+        };
+        let m = self.dependent.len();
+        let mut trial = state.to_vec();
+        let mut out = vec![0.0; m + m * m];
+        let mut last = f64::INFINITY;
+        // The size of the last Newton step against its coordinates: a step at rounding
+        // level means φ sits on its rounding floor, closed as far as f64 can tell.
+        let mut step_at_rounding = false;
+        let mut iteration = 0;
+        loop {
+            self.run(p, t, &trial, &mut out);
+            let residual = out[..m].iter().fold(0.0_f64, |r, v| r.max(v.abs()));
+            if residual <= tolerance || step_at_rounding {
+                state.copy_from_slice(&trial);
+                return Ok(iteration);
+            }
+            if iteration == MAX_NEWTON
+                || residual.partial_cmp(&last) != Some(std::cmp::Ordering::Less)
+            {
+                return Err(LagrangeError::LoopNotClosed {
+                    residual,
+                    iterations: iteration,
+                    tolerance,
+                });
+            }
+            last = residual;
+            let block = DMatrix::from_row_slice(m, m, &out[m..]);
+            let determinant = block.determinant();
+            let scale: f64 = block.row_iter().map(|r| r.norm()).product();
+            if determinant.abs().partial_cmp(&(SINGULAR_BLOCK * scale))
+                != Some(std::cmp::Ordering::Greater)
+            {
+                return Err(LagrangeError::SingularAtState { determinant, scale });
+            }
+            let phi = DVector::from_column_slice(&out[..m]);
+            let Some(step) = block.lu().solve(&phi) else {
+                return Err(LagrangeError::SingularAtState { determinant, scale });
+            };
+            step_at_rounding = true;
+            for (j, &d) in self.dependent.iter().enumerate() {
+                step_at_rounding &= step[j].abs() <= 4.0 * f64::EPSILON * trial[d].abs().max(1.0);
+                trial[d] -= step[j];
+            }
+            iteration += 1;
+        }
+    }
+
+    /// Advances `stepper` to `t_end`, closing the loop after every accepted step
+    /// ([`ConstrainedModel::close_loop`] with `tolerance`) and restarting the stepper at the
+    /// corrected state; returns the Newton iterations spent.
+    ///
+    /// # Errors
+    /// [`LagrangeError::Ode`] for the stepper's failures; the errors of
+    /// [`ConstrainedModel::close_loop`].
+    pub fn advance_partitioned<S, const N: usize>(
+        &self,
+        stepper: &mut S,
+        t_end: f64,
+        tolerance: f64,
+    ) -> Result<usize, LagrangeError>
+    where
+        S: Stepper<State = [f64; N]>,
+    {
+        let mut newton = 0;
+        while stepper.t() < t_end {
+            stepper.step(t_end)?;
+            let t = stepper.t();
+            let mut y = *stepper.state();
+            newton += self.close_loop(t, &mut y, tolerance)?;
+            stepper.restart(t, y)?;
+        }
+        Ok(newton)
+    }
+}
