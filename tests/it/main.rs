@@ -115,3 +115,8 @@ mod top {
     mod validate;
 }
 mod work_precision;
+/// The contact scene: a body on a table.
+mod contact {
+    mod newton_euler;
+    mod reference;
+}
