@@ -9,7 +9,7 @@
 
 use nalgebra::Vector3;
 
-use super::dynamics::{ContactDynamics, Phase, attitude_of};
+use super::dynamics::{ContactDynamics, LawKind, Phase, attitude_of};
 use super::error::ContactError;
 use super::state::{STATE_LEN, layout};
 use super::system::ContactSystem;
@@ -122,11 +122,27 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
     ) -> Result<Self, ContactError> {
         body.check_parameters()?;
         body.check_state(phase, &y0)?;
+        let (mut y0, mut phase, mut switches) = (y0, phase, Vec::new());
+        // A stick–slip body started rolling where rolling needs more friction than μ N
+        // slides from the start.
+        if body.law() == LawKind::StickSlip && phase == Phase::Rolling {
+            let mu = body.friction_coefficient().unwrap_or(0.0);
+            let r = body.reaction(Phase::Rolling, &y0);
+            if r.friction.norm() > mu * r.normal {
+                seed_slip(body, &mut y0);
+                switches.push(Switch {
+                    t: t0,
+                    from: Phase::Rolling,
+                    to: Phase::Sliding,
+                });
+                phase = Phase::Sliding;
+            }
+        }
         let sys = ContactSystem { body, phase };
         Ok(ContactRun {
             ode: Adaptive::new(sys, t0, y0, cfg)?,
             cfg,
-            switches: Vec::new(),
+            switches,
             lifted: None,
         })
     }
@@ -208,7 +224,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             let events = Events {
                 body,
                 phase,
-                stick_slip: body.law() == super::dynamics::LawKind::StickSlip,
+                stick_slip: body.law() == LawKind::StickSlip,
                 mu: body.friction_coefficient().unwrap_or(0.0),
                 reference,
             };
@@ -235,11 +251,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
                             return Ok(ContactOutcome::LiftOff { t, state: y });
                         }
                         Kind::Slips => {
-                            // Seed the slip against the friction rolling needed.
-                            let f = body.reaction(Phase::Rolling, &y).friction;
-                            let dir = -f / f.norm().max(f64::MIN_POSITIVE);
-                            y[layout::VELOCITY] += SEED_SLIP * dir.x;
-                            y[layout::VELOCITY + 1] += SEED_SLIP * dir.y;
+                            seed_slip(body, &mut y);
                             self.switch_to(t, y, Phase::Sliding)?;
                         }
                         Kind::Sticks => {
@@ -346,6 +358,14 @@ impl<D: ContactDynamics + ?Sized> Events<'_, D> {
 /// The slip velocity of the contact point at `y`.
 fn slip<D: ContactDynamics + ?Sized>(body: &D, y: &[f64; STATE_LEN]) -> Vector3<f64> {
     body.contact(y).velocity
+}
+
+/// Starts a slip of [`SEED_SLIP`] against the friction rolling needs at `y`.
+fn seed_slip<D: ContactDynamics + ?Sized>(body: &D, y: &mut [f64; STATE_LEN]) {
+    let f = body.reaction(Phase::Rolling, y).friction;
+    let dir = -f / f.norm().max(f64::MIN_POSITIVE);
+    y[layout::VELOCITY] += SEED_SLIP * dir.x;
+    y[layout::VELOCITY + 1] += SEED_SLIP * dir.y;
 }
 
 /// The state's quaternion put on the unit sphere.
