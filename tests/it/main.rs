@@ -117,6 +117,7 @@ mod top {
 mod work_precision;
 /// The contact scene: a body on a table.
 mod contact {
+    mod errors;
     mod invariants;
     mod newton_euler;
     mod reference;
