@@ -12,7 +12,7 @@ use super::reference::{
 };
 
 fn err(body: &NumBody, law: NumLaw) -> ContactError {
-    try_model(body, law).err().expect("the model was accepted")
+    try_model(body, law).expect_err("the model was accepted")
 }
 
 #[test]
