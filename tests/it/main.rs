@@ -121,4 +121,5 @@ mod contact {
     mod invariants;
     mod newton_euler;
     mod reference;
+    mod rolling_disk;
 }
