@@ -122,4 +122,6 @@ mod contact {
     mod newton_euler;
     mod reference;
     mod rolling_disk;
+    mod stick_slip;
+    mod support;
 }
