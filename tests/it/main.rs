@@ -122,6 +122,7 @@ mod contact {
     mod newton_euler;
     mod reference;
     mod rolling_disk;
+    mod routh;
     mod stick_slip;
     mod support;
 }
