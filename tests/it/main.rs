@@ -125,4 +125,5 @@ mod contact {
     mod routh;
     mod stick_slip;
     mod support;
+    mod tippe_top;
 }
