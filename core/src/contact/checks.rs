@@ -101,24 +101,43 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
     Ok(())
 }
 
-/// The numbers a contact scene's rules are checked on.
+/// The numbers a contact scene's rules are checked on: what an implementation of
+/// [`ContactDynamics::check_parameters`] gathers from its parameters (the interpreted model
+/// from its bindings, `#[contact(...)]` from the struct's fields) and hands to
+/// [`ContactValues::check`].
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Values {
+pub struct ContactValues {
+    /// The mass M.
     pub mass: f64,
+    /// The centre of mass, description axes.
     pub center: [f64; 3],
+    /// The inertia about the centre of mass, description axes.
     pub inertia: [[f64; 3]; 3],
+    /// Gravity g (along −z).
     pub gravity: f64,
+    /// The surface's kind.
     pub surface: SurfaceKind,
     /// The surface's centre (vertex of a paraboloid).
     pub placement: [f64; 3],
     /// The surface's lengths by name, in [`super::Surface::dimensions`] order.
     pub lengths: Vec<(&'static str, f64)>,
-    /// The law's coefficients by name.
+    /// The law's coefficients by name (`mu`, `viscous`, `rolling_resistance`,
+    /// `spin_resistance`).
     pub coefficients: Vec<(&'static str, f64)>,
 }
 
+impl ContactValues {
+    /// Checks the rules of [`ContactDynamics::check_parameters`].
+    ///
+    /// # Errors
+    /// As [`ContactDynamics::check_parameters`].
+    pub fn check(&self) -> Result<(), ContactError> {
+        check_values(self)
+    }
+}
+
 /// As [`ContactDynamics::check_parameters`], on the values.
-pub(crate) fn check_values(v: &Values) -> Result<(), ContactError> {
+fn check_values(v: &ContactValues) -> Result<(), ContactError> {
     if !(v.mass.is_finite() && v.mass > 0.0) {
         return Err(ContactError::BadParameter {
             name: "mass",
@@ -173,7 +192,7 @@ pub(crate) fn check_values(v: &Values) -> Result<(), ContactError> {
 
 /// The surface's implicit measure at the centre of mass: < 1 strictly inside its convex
 /// hull, 1 on it (for a disk rim: the distance from the axis over the radius).
-fn inside_measure(v: &Values) -> f64 {
+fn inside_measure(v: &ContactValues) -> f64 {
     let d = Vector3::from(v.center) - Vector3::from(v.placement);
     let len = |k: usize| v.lengths.get(k).map_or(f64::NAN, |&(_, l)| l);
     match v.surface {

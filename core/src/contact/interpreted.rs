@@ -3,7 +3,7 @@
 
 use nalgebra::Vector3;
 
-use super::checks::{Values, check_values};
+use super::checks::ContactValues;
 use super::derivation::{ContactDerivation, ContactEquations};
 use super::dynamics::{ContactDynamics, ContactMomenta, ContactPoint, LawKind, Phase, Reaction};
 use super::error::ContactError;
@@ -319,7 +319,7 @@ impl ContactDynamics for ContactModel {
         let v = self.parameter_values();
         let n = self.lengths.len();
         let pick3 = |at: usize| [v[at], v[at + 1], v[at + 2]];
-        let values = Values {
+        let values = ContactValues {
             mass: v[0],
             center: pick3(1),
             inertia: [pick3(4), pick3(7), pick3(10)],
@@ -339,6 +339,6 @@ impl ContactDynamics for ContactModel {
                 .zip(v[17 + n..].iter().copied())
                 .collect(),
         };
-        check_values(&values)
+        values.check()
     }
 }

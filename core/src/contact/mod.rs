@@ -27,7 +27,7 @@ mod state;
 mod surface;
 mod system;
 
-pub use checks::{MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
+pub use checks::{ContactValues, MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
 pub use derivation::{ContactDerivation, ContactEquations};
 pub use dynamics::{
     ContactDynamics, ContactMomenta, ContactPoint, LawKind, Phase, Reaction, attitude_of,
