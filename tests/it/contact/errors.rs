@@ -230,3 +230,19 @@ fn singular_contacts_are_refused() {
         Err(ContactError::PastParaboloidRim { n3, .. }) if n3 > 0.0
     ));
 }
+
+/// Coulomb sliding with the slip stopped has no friction direction: the checked
+/// accelerations say so instead of returning NaN.
+#[test]
+fn coulomb_sliding_without_slip_is_not_finite() {
+    let m = model(&offset_sphere(), NumLaw::Coulomb(0.3));
+    let rolling_like = m.rolling_state(
+        [0.0, 0.0],
+        &UnitQuaternion::identity(),
+        &Vector3::new(1.0, 0.0, 0.0),
+    );
+    assert!(matches!(
+        m.accelerations(Phase::Sliding, 0.5, &rolling_like),
+        Err(ContactError::NonFiniteResult { phase: Phase::Sliding, t, .. }) if t == 0.5
+    ));
+}

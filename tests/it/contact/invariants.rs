@@ -266,3 +266,24 @@ fn a_fast_eccentric_sphere_lifts_off() {
     // The run stays stopped.
     assert_eq!(run.advance_to(2.0).unwrap(), out);
 }
+
+/// Frictionless sliding: no horizontal force ever acts, so the centre of mass moves
+/// uniformly across the table, and the energy holds while the rattleback rocks and spins.
+#[test]
+fn frictionless_sliding_moves_the_centre_uniformly_and_keeps_energy() {
+    let m = model(&rattleback(), NumLaw::Frictionless);
+    let q = UnitQuaternion::from_euler_angles(0.2, -0.15, 0.3);
+    let y0 = state([0.1, -0.2], [0.3, 0.4], &q, &Vector3::new(1.0, 2.0, -5.0));
+    let s = samples(&m, Phase::Sliding, y0, 10.0, 0.1);
+    let e = drift(&s, |y| m.energy(Phase::Sliding, y));
+    let mut off: f64 = 0.0;
+    for (t, y) in &s {
+        off = off
+            .max((y[0] - 0.1 - 0.3 * t).abs())
+            .max((y[1] + 0.2 - 0.4 * t).abs());
+        off = off.max((y[2] - 0.3).abs()).max((y[3] - 0.4).abs());
+    }
+    println!("frictionless rattleback: energy drift {e:e}, centre off uniform motion by {off:e}");
+    assert!(e < 1e-11, "{e:e}");
+    assert!(off < 1e-12, "{off:e}");
+}
