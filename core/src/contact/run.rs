@@ -270,6 +270,10 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
                             if r.friction.norm() <= events.mu * r.normal {
                                 self.switch_to(t, at, y, Phase::Rolling)?;
                             } else {
+                                // Rolling would need more than μ N: the slip starts again
+                                // against the friction rolling needs (Coulomb's law has no
+                                // direction at zero slip, so it is seeded as at a switch).
+                                seed_slip(body, &mut y);
                                 Stepper::restart(&mut self.ode, t, y)?;
                             }
                         }
