@@ -61,3 +61,25 @@ fn an_eccentric_sphere_slips_and_sticks_where_the_cone_says() {
     // Coulomb friction only takes energy out; rolling keeps it.
     assert!(rise < 1e-12 * energy, "{rise:e}");
 }
+
+/// With little friction the eccentric sphere's slip stops and reverses where rolling could
+/// not hold: the run carries on sliding through those instants, its energy falling.
+#[test]
+fn a_slip_that_stops_where_rolling_cannot_hold_slides_on() {
+    let mu = 0.01;
+    let m = model(&offset_sphere(), NumLaw::StickSlip(mu));
+    let q = UnitQuaternion::from_euler_angles(0.8, 0.0, 0.0);
+    let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(25.0, 0.0, 0.0));
+    let cfg = AdaptiveConfig::with_tol(1e-12, 1e-14);
+    let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
+    let e0 = m.energy(Phase::Sliding, &y0);
+    let out = run.advance_to(1.0).unwrap();
+    let e1 = m.energy(run.phase(), run.y());
+    println!(
+        "eccentric sphere, μ = {mu}: {out:?} with {} switches, phase {:?}, energy {e0} → {e1}",
+        run.switches().len(),
+        run.phase()
+    );
+    assert_eq!(out, ContactOutcome::Reached { t: 1.0 });
+    assert!(e1 < e0);
+}
