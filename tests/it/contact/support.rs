@@ -1,6 +1,6 @@
 //! The support maps as the model evaluates them: the contact point lies on the surface, the
 //! surface's outward normal there is −γ, the point is on the table (z = 0), and along rolling
-//! runs of every surface the contact point stays at rest.
+//! runs of every surface the contact point stays at rest and the energy holds.
 
 use nalgebra::{UnitQuaternion, Vector3};
 use precess::contact::{ContactDynamics, ContactRun, Phase};
@@ -124,8 +124,8 @@ proptest! {
         prop_assert!((c.height + c.body.dot(&c.gamma)).abs() < 1e-16);
     }
 
-    /// Along a rolling run of any surface the contact point stays at rest to rounding: the
-    /// integrated (vx, vy) follow −R(ω × r).
+    /// Along a rolling run of any surface the contact point stays at rest to rounding (the
+    /// integrated (vx, vy) follow −R(ω × r)) and the energy holds.
     #[test]
     fn the_contact_point_stays_at_rest_while_rolling(
         which in 0usize..6, yaw in -3.0f64..3.0, tilt in 0.05f64..0.6, axis in -3.0f64..3.0,
@@ -136,6 +136,7 @@ proptest! {
         let y0 = m.rolling_state([0.0, 0.0], &tilted(&body, yaw, tilt, axis), &Vector3::from(w));
         let cfg = AdaptiveConfig::with_tol(1e-12, 1e-14);
         let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
+        let e0 = m.energy(Phase::Rolling, &y0);
         for k in 1..=10 {
             if run.advance_to(0.05 * k as f64).is_err() {
                 break;
@@ -145,6 +146,9 @@ proptest! {
             let w = Vector3::new(y[8], y[9], y[10]);
             let scale = w.norm() * c.body.norm() + 1e-3;
             prop_assert!(c.velocity.norm() < 1e-10 * scale, "slip {:e} at scale {scale}", c.velocity.norm());
+            // Rolling without resistance does no work: the energy holds on every surface.
+            let e = m.energy(Phase::Rolling, &y);
+            prop_assert!(((e - e0) / e0).abs() < 1e-10, "energy {e0} → {e}");
         }
     }
 }
