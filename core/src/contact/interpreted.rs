@@ -100,6 +100,8 @@ pub struct ContactModel {
     mu: Option<usize>,
     state: [SymbolId; STATE_LEN],
     bindings: Bindings,
+    /// The values set, so that a value refused by the rules is undone.
+    values: Vec<(String, f64)>,
 }
 
 const CONTACT_OUTPUTS: usize = 17;
@@ -187,6 +189,7 @@ impl ContactModel {
             mu,
             state,
             bindings,
+            values: parameters.iter().map(|&(n, v)| (n.to_owned(), v)).collect(),
         };
         model.check_parameters()?;
         Ok(model)
@@ -202,11 +205,20 @@ impl ContactModel {
     /// # Errors
     /// In [`ContactError::Binding`]: [`BindingError::UnknownParameter`] for a name the
     /// derivation does not read, [`BindingError::NonFinite`] for NaN or ±∞; as
-    /// [`ContactDynamics::check_parameters`] for a value that breaks a rule (the value is
-    /// kept: set a valid one before running).
+    /// [`ContactDynamics::check_parameters`] for a value that breaks a rule. On every error
+    /// the model keeps the value it had.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, ContactError> {
         self.bindings.set(name, value)?;
-        self.check_parameters()?;
+        if let Err(e) = self.check_parameters() {
+            if let Some(&(_, old)) = self.values.iter().find(|(n, _)| n == name) {
+                self.bindings.set(name, old)?;
+            }
+            return Err(e);
+        }
+        match self.values.iter_mut().find(|(n, _)| n == name) {
+            Some(entry) => entry.1 = value,
+            None => self.values.push((name.to_owned(), value)),
+        }
         Ok(self)
     }
 

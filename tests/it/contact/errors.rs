@@ -66,6 +66,10 @@ fn friction_coefficients_must_be_finite_and_not_negative() {
             value: -0.5
         })
     );
+    // The refused value is undone: the model still has μ = 0.3.
+    assert_eq!(m.friction_coefficient(), Some(0.3));
+    m.set("mu", 0.4).unwrap();
+    assert_eq!(m.friction_coefficient(), Some(0.4));
 }
 
 #[test]
