@@ -122,3 +122,15 @@ mod top {
     mod validate;
 }
 mod work_precision;
+/// The contact scene: a body on a table.
+mod contact {
+    mod errors;
+    mod invariants;
+    mod newton_euler;
+    mod reference;
+    mod rolling_disk;
+    mod routh;
+    mod stick_slip;
+    mod support;
+    mod tippe_top;
+}
