@@ -100,13 +100,20 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
     Ok(())
 }
 
-/// The numbers a contact scene's rules are checked on.
+/// The numbers a contact scene's rules are checked on (public as
+/// [`super::ContactValues`], so `#[contact]` holds its literals to the same rules at compile
+/// time and its generated `check_parameters` holds the fields to them at run time).
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Values {
+pub struct Values {
+    /// The mass M.
     pub mass: f64,
+    /// The centre of mass, description axes.
     pub center: [f64; 3],
+    /// The inertia tensor about the centre of mass, description axes.
     pub inertia: [[f64; 3]; 3],
+    /// Gravity g along −z.
     pub gravity: f64,
+    /// The surface's kind.
     pub surface: SurfaceKind,
     /// The surface's centre (vertex of a paraboloid).
     pub placement: [f64; 3],
@@ -117,7 +124,12 @@ pub(crate) struct Values {
 }
 
 /// As [`ContactDynamics::check_parameters`], on the values.
-pub(crate) fn check_values(v: &Values) -> Result<(), ContactError> {
+///
+/// # Errors
+/// [`ContactError::BadParameter`], [`ContactError::Body`] (the inertia),
+/// [`ContactError::BadSurface`], [`ContactError::NegativeCoefficient`],
+/// [`ContactError::CenterOutsideSurface`].
+pub fn check_values(v: &Values) -> Result<(), ContactError> {
     if !(v.mass.is_finite() && v.mass > 0.0) {
         return Err(ContactError::BadParameter {
             name: "mass",

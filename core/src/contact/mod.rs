@@ -23,7 +23,10 @@ mod state;
 mod surface;
 mod system;
 
-pub use checks::{MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
+pub use checks::{
+    MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE, Values as ContactValues,
+    check_values as check_contact_values,
+};
 pub use derivation::{ContactDerivation, ContactEquations};
 pub use dynamics::{
     ContactDynamics, ContactMomenta, ContactPoint, LawKind, Phase, Reaction, attitude_of,
