@@ -9,8 +9,10 @@
 //! - [`STATE_LEN`] and [`layout`] place the state in the array the steppers integrate, one
 //!   layout for every law.
 //! - [`ContactDynamics`] is the trait a derived body implements (the interpreted
-//!   [`ContactModel`], and `#[contact(...)]`); [`ContactSystem`] is one phase as an ODE.
-//! - [`ContactError`] is the scene's one error.
+//!   [`ContactModel`], and `#[contact(...)]`); [`ContactSystem`] is one phase as an ODE and
+//!   [`ContactRun`] a run that switches stick↔slip at events and stops at lift-off.
+//! - [`ContactQuantities`] gives a run's trajectory the energy, N, the slip, Jellett's λ and
+//!   the angular momentum about the contact point; [`ContactError`] is the scene's one error.
 
 mod attitude;
 mod checks;
@@ -18,6 +20,8 @@ mod derivation;
 mod dynamics;
 mod error;
 mod interpreted;
+mod quantities;
+mod run;
 mod scene;
 mod state;
 mod surface;
@@ -33,6 +37,8 @@ pub use dynamics::{
 };
 pub use error::ContactError;
 pub use interpreted::ContactModel;
+pub use quantities::ContactQuantities;
+pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
 pub use scene::{ContactLaw, ContactScene, Friction};
 pub use state::{STATE_LEN, layout};
 pub use surface::{Surface, SurfaceKind};
