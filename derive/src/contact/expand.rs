@@ -12,9 +12,10 @@ use precess_core::contact::{
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::LitStr;
+use syn::{Ident, LitStr};
 
 use super::check::ContactSettings;
+use crate::lang::ctxt::Ctxt;
 use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
@@ -84,10 +85,9 @@ pub fn expand(
     let reaction = by_phase(
         arena,
         &|e| std::iter::once(e.normal).chain(e.friction).collect(),
-        &|o| {
-            let (n, f) = o.split_at(1);
-            let n = &n[0];
-            quote!(#p::Reaction { normal: #n, friction: #p::Vector3::new(#(#f),*) })
+        &|o| match o {
+            [n, f @ ..] => quote!(#p::Reaction { normal: #n, friction: #p::Vector3::new(#(#f),*) }),
+            [] => quote!(),
         },
         quote!(#p::Reaction { normal: #nan, friction: #p::Vector3::repeat(#nan) }),
     );
@@ -130,10 +130,12 @@ pub fn expand(
         .chain(contact_velocity)
         .copied()
         .collect();
-    let contact = method.body(arena, &point_outputs, |o| {
-        let v = |r: std::ops::Range<usize>| vector(&o[r]);
-        let (g, b, s, h, u) = (v(0..3), v(3..6), v(6..9), &o[9], v(10..13));
-        quote!(#p::ContactPoint { gamma: #g, body: #b, space: #s, height: #h, velocity: #u })
+    let contact = method.body(arena, &point_outputs, |o| match o {
+        [g @ .., h, u0, u1, u2] if g.len() == 9 => {
+            let (g, b, s) = (vector(&g[..3]), vector(&g[3..6]), vector(&g[6..]));
+            quote!(#p::ContactPoint { gamma: #g, body: #b, space: #s, height: #h, velocity: #p::Vector3::new(#u0, #u1, #u2) })
+        }
+        _ => quote!(),
     });
     let jellett = method.body(arena, &[*jellett], |o| quote!(#(#o)*));
     let law = law_kind(&scene.law);
@@ -149,7 +151,7 @@ pub fn expand(
         }
         None => quote!({ ::core::option::Option::None }),
     };
-    let check = check_parameters(parameters, &low, arena, settings, checked);
+    let check = check_parameters((cx, ident), parameters, &low, arena, settings, checked);
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -254,6 +256,7 @@ fn coefficients(law: &ContactLaw) -> Vec<(&'static str, ExprId)> {
 /// then the scene's values, fields and literals alike, meet the one rule of
 /// `check_contact_values` that the interpreted model and the compile-time checks apply.
 fn check_parameters(
+    (cx, ident): (&Ctxt, &Ident),
     parameters: &FieldParameters,
     low: &Lowering,
     arena: &Arena,
@@ -271,13 +274,20 @@ fn check_parameters(
     values.extend(lengths.iter().map(|&(_, e)| e));
     values.extend(coefficients.iter().map(|&(_, e)| e));
     let Emitted { lets, outputs } = low.lower(arena, &values);
-    let (mass, gravity) = (&outputs[0], &outputs[1]);
-    let center = &outputs[2..5];
-    let rows = outputs[5..14].chunks(3).map(|r| quote!([#(#r),*]));
-    let placement = &outputs[14..17];
-    let length_values = &outputs[17..17 + lengths.len()];
+    // One output per value, in the order pushed above.
+    let (head, rest) = outputs.split_at(outputs.len().min(17));
+    let [mass, gravity, c0, c1, c2, tensor @ .., p0, p1, p2] = head else {
+        cx.error_spanned_by(
+            ident,
+            "internal error of the derive: the contact's parameter values were not lowered one for one; please report this",
+        );
+        return TokenStream::new();
+    };
+    let center = [c0, c1, c2];
+    let rows = tensor.chunks(3).map(|r| quote!([#(#r),*]));
+    let placement = [p0, p1, p2];
+    let (length_values, coefficient_values) = rest.split_at(rest.len().min(lengths.len()));
     let length_names = lengths.iter().map(|&(n, _)| n);
-    let coefficient_values = &outputs[17 + lengths.len()..];
     let coefficient_names = coefficients.iter().map(|&(n, _)| n);
     let surface = surface_kind(scene.surface.kind());
     // A field that is NaN or ±∞ would pass some rules unnoticed (an inertia entry cancelled
