@@ -151,3 +151,120 @@ fn a_parametric_surface_is_judged_at_run_time_not_now() {
     });
     assert!(!code.contains("compile_error"), "{code}");
 }
+
+/// Values for the property test: literals of every sign and size, fields named like the
+/// derivation's own state symbols and the generated code's locals, arithmetic on them.
+const VALUES: &[&str] = &[
+    "0.02",
+    "0.3",
+    "-0.01",
+    "0.0",
+    "1e300",
+    "r",
+    "x",
+    "v_x",
+    "q_w",
+    "omega_1",
+    "y",
+    "contact_gamma_1",
+    "2.0 * r",
+    "r - r",
+    "0.01 + x",
+];
+/// The fields the values may name.
+const FIELDS: &str =
+    "r: f64, x: f64, v_x: f64, q_w: f64, omega_1: f64, y: f64, contact_gamma_1: f64";
+
+/// A random `#[contact]` scene as source text: any surface and law, any values, now and then
+/// a key left out or misspelled.
+fn contact_input() -> impl proptest::strategy::Strategy<Value = String> {
+    use proptest::prelude::*;
+    let v = || proptest::sample::select(VALUES);
+    let surface = (
+        0..6usize,
+        v(),
+        v(),
+        v(),
+        proptest::option::of((v(), v(), v())),
+    )
+        .prop_map(|(kind, a, b, c, at)| {
+            let at = at.map_or(String::new(), |(x, y, z)| {
+                format!(", center = [{x}, {y}, {z}]")
+            });
+            match kind {
+                0 => format!("sphere(radius = {a}{at})"),
+                1 => format!("ellipsoid(semi_axes = [{a}, {b}, {c}]{at})"),
+                2 => format!("disk_rim(radius = {a}{at})"),
+                3 => format!("torus(radius = {a}, tube = {b}{at})"),
+                4 => format!("paraboloid(curvature_radius = {a})"),
+                _ => format!("spehre(radius = {a})"),
+            }
+        });
+    let law = (0..8usize, v()).prop_map(|(kind, c)| match kind {
+        0 => "rolling".to_owned(),
+        1 => format!("rolling(rolling_resistance = {c})"),
+        2 => format!("rolling(spin_resistance = {c}, rolling_resistance = {c})"),
+        3 => format!("sliding(viscous = {c})"),
+        4 => format!("sliding(coulomb = {c})"),
+        5 => "sliding(frictionless)".to_owned(),
+        6 => format!("stick_slip(mu = {c})"),
+        _ => format!("sliding(viscous = {c}, coulomb = {c})"),
+    });
+    (surface, law, proptest::option::of(v()), v(), v()).prop_map(|(surface, law, g, h, m)| {
+        let g = g.map_or(String::new(), |g| format!(", gravity = {g}"));
+        format!(
+            "#[rigid(sphere(mass = 1.0, radius = 0.01, at = [0.0, 0.0, {h}]), particle(mass = {m}, at = [0.001, 0.0, 0.0]))]\n#[contact(surface = {surface}, law = {law}{g})]\nstruct Scene {{ {FIELDS} }}"
+        )
+    })
+}
+
+/// Runs the derive on `source`: it never panics, and gives either code that names precess
+/// only through the hidden module and has no error, or errors each spanned on the input and
+/// none internal.
+fn contact_is_total(source: &str) -> Result<(), proptest::test_runner::TestCaseError> {
+    use proptest::prelude::*;
+    let input: syn::DeriveInput = syn::parse_str(source)
+        .map_err(|e| TestCaseError::fail(format!("bad syntax: {e}\n{source}")))?;
+    let cx = Ctxt::new();
+    let expanded = crate::rigid_body::expand(&cx, &input);
+    match cx.check() {
+        Ok(()) => {
+            let code = expanded.map(|t| t.to_string()).unwrap_or_default();
+            prop_assert!(
+                code.contains("ContactDynamics for Scene"),
+                "no impl\n{source}"
+            );
+            for bad in ["INFINITY", "from_bits", "compile_error"] {
+                prop_assert!(!code.contains(bad), "`{bad}` emitted for\n{source}");
+            }
+            prop_assert_eq!(
+                code.matches(":: precess ::").count(),
+                code.matches(":: precess :: __private ::").count()
+            );
+        }
+        Err(errors) => {
+            for e in errors {
+                let message = e.to_string();
+                prop_assert!(!message.contains("internal error"), "{message}\n{source}");
+                let at = e.span().byte_range();
+                prop_assert!(at.end > at.start, "`{message}` not spanned\n{source}");
+            }
+        }
+    }
+    Ok(())
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(8),
+        failure_persistence: None,
+        ..proptest::test_runner::Config::default()
+    })]
+
+    /// The class of bug: a value, a name or a surface the macro did not expect making it
+    /// panic, emit an unspanned error, or lose a field's symbol.
+    #[test]
+    fn contact_scenes_give_code_or_spanned_errors(source in contact_input()) {
+        contact_is_total(&source)?;
+    }
+}
