@@ -438,3 +438,51 @@ fn check_parameters_refuses_a_negative_or_nan_field() {
         other => panic!("{other:?}"),
     }
 }
+
+macro_rules! named_alike {
+    ($($name:ident: $field:ident),* $(,)?) => {
+        $(
+            /// A tippe top whose small mass and friction are a field named like a symbol of
+            /// the derivation or a local of the generated code.
+            #[derive(RigidBody)]
+            #[rigid(sphere(mass = 0.015, radius = 0.02), particle(mass = $field / 100.0, at = [0.0, 0.0, 0.015]))]
+            #[contact(surface = sphere(radius = 0.02), law = stick_slip(mu = $field), gravity = 9.81)]
+            #[allow(non_snake_case)]
+            struct $name {
+                $field: f64,
+            }
+        )*
+
+        /// A field may take any name the derivation's state or the generated methods use:
+        /// the physics is the plain field's, exactly.
+        #[test]
+        fn fields_named_like_the_state_change_nothing() {
+            let plain = NamedM { m: 0.1 };
+            let mut rng = Rng::new(8);
+            let q = attitude(&mut rng, (0.0, 3.0));
+            let mut y = plain.rolling_state([0.1, 0.2], &q, &rng.vector(-20.0, 20.0));
+            $({
+                let other = $name { $field: 0.1 };
+                for phase in [Phase::Rolling, Phase::Sliding] {
+                    if phase == Phase::Sliding {
+                        y[layout::VELOCITY] += 0.3;
+                    }
+                    let (mut a, mut b) = ([0.0; 11], [0.0; 11]);
+                    plain.phase_rhs(phase, 0.0, &y, &mut a);
+                    other.phase_rhs(phase, 0.0, &y, &mut b);
+                    assert_eq!(a, b, "{}", stringify!($field));
+                    assert_eq!(plain.reaction(phase, &y), other.reaction(phase, &y));
+                    assert_eq!(plain.energy(phase, &y), other.energy(phase, &y));
+                }
+                assert_eq!(other.friction_coefficient(), Some(0.1));
+                assert_eq!(other.check_parameters(), Ok(()));
+            })*
+        }
+    };
+}
+
+named_alike! {
+    NamedM: m, NamedX: x, NamedY: y, NamedVx: v_x, NamedQw: q_w, NamedQz: q_z,
+    NamedOmega1: omega_1, NamedGamma: contact_gamma_1, NamedPhase: phase, NamedT: t,
+    NamedDydt: dydt, NamedM2: M, NamedG: g,
+}
