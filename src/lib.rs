@@ -31,7 +31,8 @@
 //! [`linalg`]), the bodies and what the scenes share ([`body`], [`rigid`]: angle sequences,
 //! their charts and the chart switch's pieces, the Lie-group and splitting steppers), the
 //! scenes ([`top`]: `#[top(...)]`, a body about a fixed pivot; [`free`]: `#[free(...)]`, a
-//! body in flight; [`mechanism`]: `#[derive(Mechanism)]`, trees of bodies and joints), and the
+//! body in flight; [`contact`]: `#[contact(...)]`, a body rolling or sliding on a table;
+//! [`mechanism`]: `#[derive(Mechanism)]`, trees of bodies and joints), and the
 //! [`nalgebra`] precess is built on. Every scene has the same shape (a description, its
 //! derivation, an interpreted model, the trait the derive implements, one error; the same
 //! method names for q̈, energy and momenta): `docs/conventions.md` says it.
@@ -80,6 +81,9 @@ pub mod prelude {
         Rotation3, Shape, Vector3,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::contact::{
+        ContactDynamics, ContactError, ContactSystem, LawKind, Phase, Reaction,
+    };
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
@@ -99,6 +103,10 @@ pub mod __private {
         Rotation3, Shape, Vector3, check_part, euler_rhs_diagonal, principal_frame,
     };
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::contact::{
+        ContactDynamics, ContactError, ContactMomenta, ContactPoint, ContactValues, LawKind, Phase,
+        Reaction, SurfaceKind,
+    };
     pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
     pub use precess_core::mechanism::charts::SphericalJoint;

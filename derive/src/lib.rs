@@ -6,7 +6,7 @@
 //! symbolic engine while they expand, and emit impls specialised to it: constants for literal
 //! values, straight-line code in the fields for parametric ones. `#[derive(RigidBody)]` emits
 //! `RigidBody` from `#[rigid(...)]`, with `#[top(...)]` also `TopDynamics`, with `#[free(...)]`
-//! `FreeDynamics`; `#[derive(Mechanism)]` emits `MechanismDynamics<N>` from `#[body(...)]` and
+//! `FreeDynamics`, with `#[contact(...)]` `ContactDynamics`; `#[derive(Mechanism)]` emits `MechanismDynamics<N>` from `#[body(...)]` and
 //! `#[mechanism(...)]`; `taylor_system!` emits `System<N>` and `TaylorSystem<N>` from equations.
 //!
 //! Layout: `lang/` is the front end every macro shares — the error context, the words of the
@@ -14,13 +14,14 @@
 //! languages read into the arena by one checker, the lowering to tokens, `taylor = K` in one
 //! place, and the one hidden path generated code names (`::precess::__private`). Each
 //! attribute is a folder of the same phases over it, `attr` (syntax) → `check` (meaning) →
-//! `expand` (the impls) → `fallback` (stub impls after an error): `rigid/`, `top/`, `free/`,
+//! `expand` (the impls) → `fallback` (stub impls after an error): `rigid/`, `top/`, `free/`, `contact/`,
 //! `mechanism/` (whose `mod.rs` is the `Mechanism` derive's driver), and `taylor_system/`
 //! (which has `values` for its expression language and no fallback). `rigid_body.rs` drives
-//! `#[derive(RigidBody)]` over its three attributes.
+//! `#[derive(RigidBody)]` over its four attributes.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+mod contact;
 mod free;
 mod lang;
 mod mechanism;
@@ -33,11 +34,12 @@ use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
 
 /// Derives `RigidBody` from a `#[rigid(...)]` description of the body's parts, `TopDynamics`
-/// when a `#[top(...)]` attribute declares the body a top about its pivot, and `FreeDynamics`
-/// when a `#[free(...)]` attribute declares it a free body.
+/// when a `#[top(...)]` attribute declares the body a top about its pivot, `FreeDynamics`
+/// when a `#[free(...)]` attribute declares it a free body, and `ContactDynamics` when a
+/// `#[contact(...)]` attribute puts it on a table.
 ///
 /// See the `precess` crate for examples and `docs/attributes.md` for the language.
-#[proc_macro_derive(RigidBody, attributes(rigid, top, free))]
+#[proc_macro_derive(RigidBody, attributes(rigid, top, free, contact))]
 pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     rigid_body::derive(&input).into()

@@ -19,6 +19,7 @@ mod body {
 }
 /// The derive macro end to end.
 mod derive {
+    mod contact;
     mod equations;
     mod fields;
     mod hygiene;

@@ -295,6 +295,61 @@ pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE, TAYLOR];
 /// The routes of [`ROUTE`].
 pub const ROUTES: &[&str] = &precess_core::mechanism::Route::NAMES;
 
+/// `#[contact(...)]`: the body on a table, touching it with one convex surface.
+pub const CONTACT: &str = "contact";
+/// The surface the body touches the table with, `surface = sphere(radius = ..)`.
+pub const SURFACE: &str = "surface";
+/// The law of the contact, `law = rolling` or `law = sliding(viscous = c)`.
+pub const LAW: &str = "law";
+/// The keys of `#[contact(...)]`, in the order the docs list them; all three are required.
+pub const CONTACT_KEYS: &[&str] = &[SURFACE, LAW, GRAVITY];
+
+/// The centre of a contact surface (sphere, ellipsoid, disk rim, torus).
+pub const SURFACE_CENTER: &str = "center";
+/// The vertex of a paraboloid contact surface.
+pub const VERTEX: &str = "vertex";
+/// The tube radius of a torus contact surface.
+pub const TUBE: &str = "tube";
+/// The radius of curvature at a paraboloid's vertex.
+pub const CURVATURE_RADIUS: &str = "curvature_radius";
+
+/// The contact surfaces, `name(required keys; optional keys)`, in the order the docs list
+/// them: each has its axes along description axes and an optional placement (the origin when
+/// left out).
+pub const SURFACES: &[(&str, &[&str], &[&str])] = &[
+    ("sphere", &[RADIUS], &[SURFACE_CENTER]),
+    ("ellipsoid", &[SEMI_AXES], &[SURFACE_CENTER]),
+    ("disk_rim", &[RADIUS], &[SURFACE_CENTER]),
+    ("torus", &[RADIUS, TUBE], &[SURFACE_CENTER]),
+    ("paraboloid", &[CURVATURE_RADIUS], &[VERTEX]),
+];
+
+/// Pure rolling, `rolling` or `rolling(rolling_resistance = .., spin_resistance = ..)`.
+pub const ROLLING: &str = "rolling";
+/// Sliding under friction, `sliding(viscous = c)`, `sliding(coulomb = μ)` or
+/// `sliding(frictionless)`.
+pub const SLIDING: &str = "sliding";
+/// Coulomb stick–slip, `stick_slip(mu = μ)`.
+pub const STICK_SLIP: &str = "stick_slip";
+/// A torque −c_r ω_∥ against rolling.
+pub const ROLLING_RESISTANCE: &str = "rolling_resistance";
+/// A torque −c_s ω_⊥ against spinning about the vertical.
+pub const SPIN_RESISTANCE: &str = "spin_resistance";
+/// Viscous sliding friction −c u.
+pub const VISCOUS: &str = "viscous";
+/// Coulomb sliding friction −μ N u/|u|.
+pub const COULOMB: &str = "coulomb";
+/// No sliding friction at all (a flag, no value).
+pub const FRICTIONLESS: &str = "frictionless";
+/// The friction coefficient of stick–slip.
+pub const MU: &str = "mu";
+/// The contact laws, `name(keys)`, in the order the docs list them.
+pub const LAWS: &[(&str, &[&str])] = &[
+    (ROLLING, &[ROLLING_RESISTANCE, SPIN_RESISTANCE]),
+    (SLIDING, &[VISCOUS, COULOMB, FRICTIONLESS]),
+    (STICK_SLIP, &[MU]),
+];
+
 /// `; did you mean `…`?` when exactly one of `known` is close to `written` (see
 /// [`closest`]), else nothing: the suffix every "unknown part" and "unknown key" message
 /// ends with, for any table of this file (parts, part keys, `#[rigid]` and `#[top]` keys).

@@ -69,6 +69,14 @@ fn every_expansion() -> Vec<(&'static str, String)> {
             }),
         ),
         (
+            "contact",
+            rigid_body(quote! {
+                #[rigid(sphere(mass = m, radius = 0.1))]
+                #[contact(surface = sphere(radius = 0.1), law = stick_slip(mu = mu), gravity = 9.81)]
+                struct Rolling { m: f64, mu: f64 }
+            }),
+        ),
+        (
             "mechanism",
             mechanism(quote! {
                 #[mechanism(gravity = 9.81, taylor = 10)]
