@@ -10,6 +10,7 @@
 mod scene;
 mod state;
 mod surface;
+pub mod theory;
 
 pub use scene::{ContactLaw, ContactScene, Friction};
 pub use state::{STATE_LEN, layout};

@@ -92,12 +92,10 @@ impl Surface {
     /// [`SymError`] from the arithmetic (a square root or division the arena refuses).
     pub fn support(&self, arena: &mut Arena, n: &[ExprId; 3]) -> Result<[ExprId; 3], SymError> {
         match *self {
-            Surface::Sphere { center, radius } => {
-                Ok(std::array::from_fn(|k| {
-                    let t = arena.mul(radius, n[k]);
-                    arena.add(center[k], t)
-                }))
-            }
+            Surface::Sphere { center, radius } => Ok(std::array::from_fn(|k| {
+                let t = arena.mul(radius, n[k]);
+                arena.add(center[k], t)
+            })),
             Surface::Ellipsoid { center, semi_axes } => {
                 let d2n: [ExprId; 3] = std::array::from_fn(|k| {
                     let a2 = arena.mul(semi_axes[k], semi_axes[k]);
