@@ -121,3 +121,9 @@ mod top {
     mod validate;
 }
 mod work_precision;
+/// The contact scene: a body on a table.
+mod contact {
+    mod invariants;
+    mod newton_euler;
+    mod reference;
+}

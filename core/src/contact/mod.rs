@@ -2,16 +2,42 @@
 //!
 //! A scene over the engine, in one place:
 //! - [`ContactScene`] holds the body's mass properties, the convex [`Surface`] it touches the
-//!   table with and the [`ContactLaw`] (rolling, sliding under a [`Friction`], stick–slip).
+//!   table with and the [`ContactLaw`] (rolling, sliding under a [`Friction`], stick–slip);
+//!   [`ContactScene::derive`] derives each phase's equations by Kane's method with ω as the
+//!   generalised speeds ([`ContactDerivation`]).
 //! - [`Surface::support`] gives the contact point as a closed-form function of the attitude.
 //! - [`STATE_LEN`] and [`layout`] place the state in the array the steppers integrate, one
 //!   layout for every law.
+//! - [`ContactDynamics`] is the trait a derived body implements (the interpreted
+//!   [`ContactModel`], and `#[contact(...)]`); [`ContactSystem`] is one phase as an ODE and
+//!   [`ContactRun`] a run that switches stick↔slip at events and stops at lift-off.
+//! - [`ContactQuantities`] gives a run's trajectory the energy, N, the slip, Jellett's λ and
+//!   the angular momentum about the contact point; [`ContactError`] is the scene's one error.
 
+mod attitude;
+mod checks;
+mod derivation;
+mod dynamics;
+mod error;
+mod interpreted;
+mod quantities;
+mod run;
 mod scene;
 mod state;
 mod surface;
+mod system;
 pub mod theory;
 
+pub use checks::{MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
+pub use derivation::{ContactDerivation, ContactEquations};
+pub use dynamics::{
+    ContactDynamics, ContactMomenta, ContactPoint, LawKind, Phase, Reaction, attitude_of,
+};
+pub use error::ContactError;
+pub use interpreted::ContactModel;
+pub use quantities::ContactQuantities;
+pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
 pub use scene::{ContactLaw, ContactScene, Friction};
 pub use state::{STATE_LEN, layout};
-pub use surface::Surface;
+pub use surface::{Surface, SurfaceKind};
+pub use system::ContactSystem;

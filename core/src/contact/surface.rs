@@ -59,15 +59,76 @@ pub enum Surface {
     },
 }
 
+/// The kind of a [`Surface`], without its dimensions: what decides which attitudes its
+/// support map can place.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SurfaceKind {
+    /// [`Surface::Sphere`].
+    Sphere,
+    /// [`Surface::Ellipsoid`].
+    Ellipsoid,
+    /// [`Surface::DiskRim`]: singular when the disk lies flat.
+    DiskRim,
+    /// [`Surface::Torus`]: singular when the torus lies flat.
+    Torus,
+    /// [`Surface::Paraboloid`]: only while the bowl faces the table (n₃ < 0).
+    Paraboloid,
+}
+
+impl SurfaceKind {
+    /// The surface's name in the attribute language.
+    pub fn name(self) -> &'static str {
+        match self {
+            SurfaceKind::Sphere => "sphere",
+            SurfaceKind::Ellipsoid => "ellipsoid",
+            SurfaceKind::DiskRim => "disk_rim",
+            SurfaceKind::Torus => "torus",
+            SurfaceKind::Paraboloid => "paraboloid",
+        }
+    }
+}
+
 impl Surface {
     /// The surface's name in the attribute language.
     pub fn name(&self) -> &'static str {
+        self.kind().name()
+    }
+
+    /// The surface's kind.
+    pub fn kind(&self) -> SurfaceKind {
         match self {
-            Surface::Sphere { .. } => "sphere",
-            Surface::Ellipsoid { .. } => "ellipsoid",
-            Surface::DiskRim { .. } => "disk_rim",
-            Surface::Torus { .. } => "torus",
-            Surface::Paraboloid { .. } => "paraboloid",
+            Surface::Sphere { .. } => SurfaceKind::Sphere,
+            Surface::Ellipsoid { .. } => SurfaceKind::Ellipsoid,
+            Surface::DiskRim { .. } => SurfaceKind::DiskRim,
+            Surface::Torus { .. } => SurfaceKind::Torus,
+            Surface::Paraboloid { .. } => SurfaceKind::Paraboloid,
+        }
+    }
+
+    /// The surface's placement (centre or vertex) and its lengths, with their names, in a
+    /// fixed order: what [`super::ContactModel`] evaluates to check the parameters.
+    pub fn dimensions(&self) -> ([ExprId; 3], Vec<(&'static str, ExprId)>) {
+        match *self {
+            Surface::Sphere { center, radius } | Surface::DiskRim { center, radius } => {
+                (center, vec![("radius", radius)])
+            }
+            Surface::Ellipsoid { center, semi_axes } => (
+                center,
+                vec![
+                    ("semi-axis a", semi_axes[0]),
+                    ("semi-axis b", semi_axes[1]),
+                    ("semi-axis c", semi_axes[2]),
+                ],
+            ),
+            Surface::Torus {
+                center,
+                radius,
+                tube,
+            } => (center, vec![("radius", radius), ("tube", tube)]),
+            Surface::Paraboloid {
+                vertex,
+                curvature_radius,
+            } => (vertex, vec![("curvature radius", curvature_radius)]),
         }
     }
 

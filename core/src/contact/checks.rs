@@ -1,0 +1,192 @@
+//! The run-time checks of a body on a table, written once for every implementation of
+//! [`ContactDynamics`]: a state's finiteness, quaternion, placeable contact and rolling
+//! constraint, and the parameter values' rules.
+
+use nalgebra::Vector3;
+
+use super::dynamics::{ContactDynamics, Phase, attitude_of};
+use super::error::ContactError;
+use super::state::{STATE_LEN, layout};
+use super::surface::SurfaceKind;
+use crate::body::{Definiteness, check_inertia};
+
+/// How far |q| may be from 1 in a state handed in.
+pub const QUATERNION_TOLERANCE: f64 = 1e-9;
+
+/// The smallest tilt of a disk rim's or torus's axis from the vertical (rad) at which its
+/// support point is placed: below it the rim direction is rounding.
+pub const MIN_TILT: f64 = 1e-8;
+
+/// The slip a rolling state may have, relative to |ω| |r| + |v|.
+pub const ROLLING_TOLERANCE: f64 = 1e-9;
+
+/// As [`ContactDynamics::check_state`].
+pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
+    d: &D,
+    phase: Phase,
+    y: &[f64; STATE_LEN],
+) -> Result<(), ContactError> {
+    let law = d.law();
+    if !law.has(phase) {
+        return Err(ContactError::PhaseNotDerived {
+            phase,
+            law: law.name(),
+        });
+    }
+    let parts: [(&'static str, usize, usize); 4] = [
+        ("position", layout::POSITION, 2),
+        ("velocity", layout::VELOCITY, 2),
+        ("attitude quaternion", layout::QUATERNION, 4),
+        ("omega", layout::OMEGA, 3),
+    ];
+    for (quantity, at, len) in parts {
+        let values = &y[at..at + len];
+        if values.iter().any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite {
+                quantity,
+                values: values.to_vec(),
+            });
+        }
+    }
+    let at = layout::QUATERNION;
+    let quaternion = [y[at], y[at + 1], y[at + 2], y[at + 3]];
+    let norm = quaternion.iter().map(|c| c * c).sum::<f64>().sqrt();
+    if (norm - 1.0).abs() > QUATERNION_TOLERANCE {
+        return Err(ContactError::BadQuaternion {
+            quaternion,
+            norm,
+            tolerance: QUATERNION_TOLERANCE,
+        });
+    }
+    let gamma = attitude_of(y).inverse_transform_vector(&Vector3::z());
+    match d.surface_kind() {
+        kind @ (SurfaceKind::DiskRim | SurfaceKind::Torus) => {
+            let tilt = gamma.x.hypot(gamma.y).min(1.0).asin();
+            if tilt < MIN_TILT {
+                return Err(ContactError::FlatDisk {
+                    surface: kind.name(),
+                    tilt,
+                    minimum: MIN_TILT,
+                });
+            }
+        }
+        SurfaceKind::Paraboloid if gamma.z <= 0.0 => {
+            return Err(ContactError::PastParaboloidRim {
+                n3: -gamma.z,
+                maximum: 0.0,
+            });
+        }
+        _ => {}
+    }
+    if phase == Phase::Rolling {
+        let c = d.contact(y);
+        // The contact velocity from the state is v_state + R(ω × r) horizontally: zero when
+        // the state rolls.
+        let velocity = [y[layout::VELOCITY], y[layout::VELOCITY + 1]];
+        let rolling = [velocity[0] - c.velocity.x, velocity[1] - c.velocity.y];
+        let slip = c.velocity.x.hypot(c.velocity.y);
+        let omega = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
+        let scale = omega.norm() * c.body.norm() + velocity[0].hypot(velocity[1]);
+        let tolerance = (ROLLING_TOLERANCE * scale).max(1e-12);
+        if !(slip <= tolerance) {
+            return Err(ContactError::RollingConstraint {
+                velocity,
+                rolling,
+                slip,
+                tolerance,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The numbers a contact scene's rules are checked on.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Values {
+    pub mass: f64,
+    pub center: [f64; 3],
+    pub inertia: [[f64; 3]; 3],
+    pub gravity: f64,
+    pub surface: SurfaceKind,
+    /// The surface's centre (vertex of a paraboloid).
+    pub placement: [f64; 3],
+    /// The surface's lengths by name, in [`super::Surface::dimensions`] order.
+    pub lengths: Vec<(&'static str, f64)>,
+    /// The law's coefficients by name.
+    pub coefficients: Vec<(&'static str, f64)>,
+}
+
+/// As [`ContactDynamics::check_parameters`], on the values.
+pub(crate) fn check_values(v: &Values) -> Result<(), ContactError> {
+    if !(v.mass.is_finite() && v.mass > 0.0) {
+        return Err(ContactError::BadParameter {
+            name: "mass",
+            value: v.mass,
+            rule: "finite and > 0",
+        });
+    }
+    if !(v.gravity.is_finite() && v.gravity >= 0.0) {
+        return Err(ContactError::BadParameter {
+            name: "gravity",
+            value: v.gravity,
+            rule: "finite and ≥ 0 (it points along −z)",
+        });
+    }
+    check_inertia(0, &v.inertia, Definiteness::Positive)?;
+    for &(name, value) in &v.coefficients {
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(ContactError::NegativeCoefficient { name, value });
+        }
+    }
+    let surface = v.surface.name();
+    for &(name, value) in &v.lengths {
+        if !(value.is_finite() && value > 0.0) {
+            return Err(ContactError::BadSurface {
+                surface,
+                name,
+                value,
+                rule: "finite and > 0",
+            });
+        }
+    }
+    if let (SurfaceKind::Torus, [(_, big), (_, tube)]) = (v.surface, v.lengths.as_slice()) {
+        if tube > big {
+            return Err(ContactError::BadSurface {
+                surface,
+                name: "tube",
+                value: *tube,
+                rule: "at most the radius of the centre line (a larger tube is not convex)",
+            });
+        }
+    }
+    let measure = inside_measure(v);
+    if !(measure < 1.0) {
+        return Err(ContactError::CenterOutsideSurface {
+            surface,
+            center: v.center,
+            measure,
+        });
+    }
+    Ok(())
+}
+
+/// The surface's implicit measure at the centre of mass: < 1 strictly inside its convex
+/// hull, 1 on it (for a disk rim: the distance from the axis over the radius).
+fn inside_measure(v: &Values) -> f64 {
+    let d = Vector3::from(v.center) - Vector3::from(v.placement);
+    let len = |k: usize| v.lengths.get(k).map_or(f64::NAN, |&(_, l)| l);
+    match v.surface {
+        SurfaceKind::Sphere => d.norm() / len(0),
+        SurfaceKind::Ellipsoid => Vector3::new(d.x / len(0), d.y / len(1), d.z / len(2)).norm(),
+        SurfaceKind::DiskRim => d.x.hypot(d.y) / len(0),
+        SurfaceKind::Torus => {
+            let (big, tube) = (len(0), len(1));
+            let across = (tube * tube - d.z * d.z).max(0.0).sqrt();
+            (d.z.abs() / tube).max(d.x.hypot(d.y) / (big + across))
+        }
+        SurfaceKind::Paraboloid => {
+            let rise = d.x.hypot(d.y).powi(2) / (2.0 * len(0));
+            if d.z > 0.0 { rise / d.z } else { f64::INFINITY }
+        }
+    }
+}
