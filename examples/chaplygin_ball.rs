@@ -116,7 +116,10 @@ fn main() -> Result<(), Box<dyn Error>> {
     let f1 = plot(
         "chaplygin_ball_path.svg",
         &a1,
-        &[Series::line("contact point", path)],
+        &[Series::line(
+            "contact point",
+            path.iter().step_by(4).copied().collect(),
+        )],
     )?;
     println!("\nfigure: {}", f1.display());
     Ok(())

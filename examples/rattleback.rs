@@ -27,6 +27,11 @@ use precess::contact::{
 use precess::nalgebra::{UnitQuaternion, Vector3};
 use precess::sym::Arena;
 
+/// Every fifth point (10 ms apart), enough for the figures.
+fn thin(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    points.iter().step_by(5).copied().collect()
+}
+
 /// The turning rate of the long axis's heading: x = R e₁, ẋ = ω × x (space axes).
 fn heading_rate(y: &[f64; STATE_LEN]) -> f64 {
     let q = attitude_of(y);
@@ -110,11 +115,22 @@ fn main() -> Result<(), Box<dyn Error>> {
     println!(
         "  the long axis's heading stops and turns back (first and last zero of its rate, s):"
     );
+    // The sense of each reversal: the heading rate 0.5 s after its last zero.
+    let rate_at = |t: f64| {
+        let k = ((t / 0.002).round() as usize).min(yaw_rate.len() - 1);
+        yaw_rate[k].1
+    };
     for (k, (first, last)) in reversals.iter().enumerate() {
-        println!("    reversal {}: {first:8.3} – {last:8.3}", k + 1);
+        let sense = if rate_at(last + 0.5) > 0.0 {
+            "− → +"
+        } else {
+            "+ → −"
+        };
+        println!("    reversal {} ({sense}): {first:8.3} – {last:8.3}", k + 1);
     }
     let max_pos = spin.iter().map(|s| s.1).fold(f64::MIN, f64::max);
-    println!("  largest ω₃ after reversing: {max_pos:.4} rad/s");
+    let min_neg = spin.iter().map(|s| s.1).fold(f64::MAX, f64::min);
+    println!("  ω₃ ranges over [{min_neg:.4}, {max_pos:.4}] rad/s");
     let mut table = Table::default();
     table.row(
         "energy after 60 s (J)",
@@ -141,8 +157,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         "rattleback_spin.svg",
         &a1,
         &[
-            Series::line("ω₃ (body)", spin),
-            Series::line("heading rate of the long axis", yaw_rate),
+            Series::line("ω₃ (body)", thin(&spin)),
+            Series::line("heading rate of the long axis", thin(&yaw_rate)),
         ],
     )?;
     let a2 = Axes {
@@ -152,7 +168,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         log_x: false,
         log_y: false,
     };
-    let f2 = plot("rattleback_rocking.svg", &a2, &[Series::line("roll", rock)])?;
+    let f2 = plot(
+        "rattleback_rocking.svg",
+        &a2,
+        &[Series::line("roll", thin(&rock))],
+    )?;
     println!("\nfigures: {}, {}", f1.display(), f2.display());
     Ok(())
 }
