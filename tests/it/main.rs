@@ -8,6 +8,7 @@ mod common;
 mod contact_theory {
     mod disk;
     mod newton_euler;
+    mod scene;
     mod sphere;
 }
 /// Mass properties, shapes and their validation.
