@@ -124,7 +124,11 @@ mod top {
 mod work_precision;
 /// The contact scene: a body on a table.
 mod contact {
+    mod errors;
     mod invariants;
     mod newton_euler;
     mod reference;
+    mod rolling_disk;
+    mod stick_slip;
+    mod support;
 }

@@ -88,7 +88,8 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
         let omega = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
         let scale = omega.norm() * c.body.norm() + velocity[0].hypot(velocity[1]);
         let tolerance = (ROLLING_TOLERANCE * scale).max(1e-12);
-        if !(slip <= tolerance) {
+        // A NaN slip (a contact the map could not place) is refused too.
+        if slip.is_nan() || slip > tolerance {
             return Err(ContactError::RollingConstraint {
                 velocity,
                 rolling,
@@ -149,18 +150,18 @@ pub(crate) fn check_values(v: &Values) -> Result<(), ContactError> {
             });
         }
     }
-    if let (SurfaceKind::Torus, [(_, big), (_, tube)]) = (v.surface, v.lengths.as_slice()) {
-        if tube > big {
-            return Err(ContactError::BadSurface {
-                surface,
-                name: "tube",
-                value: *tube,
-                rule: "at most the radius of the centre line (a larger tube is not convex)",
-            });
-        }
+    if let (SurfaceKind::Torus, [(_, big), (_, tube)]) = (v.surface, v.lengths.as_slice())
+        && tube > big
+    {
+        return Err(ContactError::BadSurface {
+            surface,
+            name: "tube",
+            value: *tube,
+            rule: "at most the radius of the centre line (a larger tube makes the torus cross itself)",
+        });
     }
     let measure = inside_measure(v);
-    if !(measure < 1.0) {
+    if measure.is_nan() || measure >= 1.0 {
         return Err(ContactError::CenterOutsideSurface {
             surface,
             center: v.center,

@@ -12,7 +12,7 @@ use super::state::STATE_LEN;
 use super::surface::SurfaceKind;
 #[cfg(doc)]
 use crate::codegen::BindingError;
-use crate::codegen::{Bindings, Program};
+use crate::codegen::{Bindings, OpCount, Program};
 use crate::sym::{Arena, ExprId, SymbolId};
 
 /// The programs of one phase.
@@ -208,6 +208,13 @@ impl ContactModel {
         self.bindings.set(name, value)?;
         self.check_parameters()?;
         Ok(self)
+    }
+
+    /// The operations of `phase`'s right-hand side as lowered (after common subexpressions
+    /// are shared), `None` for a phase the law has not derived: the cost the generated code
+    /// pays per evaluation.
+    pub fn op_count(&self, phase: Phase) -> Option<OpCount> {
+        self.phase(phase).map(|p| p.rhs.op_count())
     }
 
     fn run(&self, p: &Program, y: &[f64; STATE_LEN], out: &mut [f64]) {

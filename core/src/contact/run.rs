@@ -42,6 +42,9 @@ pub struct Switch {
     pub from: Phase,
     /// The phase after.
     pub to: Phase,
+    /// The state at the switch, as the phase before left it (before the slip is seeded or
+    /// the velocity put on the rolling constraint).
+    pub state: [f64; STATE_LEN],
 }
 
 /// The slip seeded when rolling gives way to sliding, m/s: Coulomb's friction needs a slip
@@ -129,12 +132,13 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             let mu = body.friction_coefficient().unwrap_or(0.0);
             let r = body.reaction(Phase::Rolling, &y0);
             if r.friction.norm() > mu * r.normal {
-                seed_slip(body, &mut y0);
                 switches.push(Switch {
                     t: t0,
                     from: Phase::Rolling,
                     to: Phase::Sliding,
+                    state: y0,
                 });
+                seed_slip(body, &mut y0);
                 phase = Phase::Sliding;
             }
         }
@@ -251,18 +255,20 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
                             return Ok(ContactOutcome::LiftOff { t, state: y });
                         }
                         Kind::Slips => {
+                            let at = y;
                             seed_slip(body, &mut y);
-                            self.switch_to(t, y, Phase::Sliding)?;
+                            self.switch_to(t, at, y, Phase::Sliding)?;
                         }
                         Kind::Sticks => {
                             // The slip has stopped: put the velocity on the rolling
                             // constraint (its residual is the slip's sideways part).
+                            let at = y;
                             let u = body.contact(&y).velocity;
                             y[layout::VELOCITY] -= u.x;
                             y[layout::VELOCITY + 1] -= u.y;
                             let r = body.reaction(Phase::Rolling, &y);
                             if r.friction.norm() <= events.mu * r.normal {
-                                self.switch_to(t, y, Phase::Rolling)?;
+                                self.switch_to(t, at, y, Phase::Rolling)?;
                             } else {
                                 Stepper::restart(&mut self.ode, t, y)?;
                             }
@@ -274,11 +280,24 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         Ok(ContactOutcome::Reached { t: self.t() })
     }
 
-    fn switch_to(&mut self, t: f64, y: [f64; STATE_LEN], to: Phase) -> Result<(), ContactError> {
+    /// Switches to `to` at `t`, recording the state `at` the phase before left and going on
+    /// from `y`.
+    fn switch_to(
+        &mut self,
+        t: f64,
+        at: [f64; STATE_LEN],
+        y: [f64; STATE_LEN],
+        to: Phase,
+    ) -> Result<(), ContactError> {
         let from = self.phase();
         self.ode.modify_system(|s| s.phase = to);
         Stepper::restart(&mut self.ode, t, y)?;
-        self.switches.push(Switch { t, from, to });
+        self.switches.push(Switch {
+            t,
+            from,
+            to,
+            state: at,
+        });
         Ok(())
     }
 

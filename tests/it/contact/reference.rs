@@ -117,11 +117,10 @@ pub fn try_model(
     let mass = num(&mut a, body.mass);
     let center = body.center.map(|c| num(&mut a, c));
     let mut inertia = [[a.zero(); 3]; 3];
-    for i in 0..3 {
-        for j in i..3 {
-            inertia[i][j] = num(&mut a, body.inertia[i][j]);
-            inertia[j][i] = inertia[i][j];
-        }
+    // The upper triangle, each entry one parameter, mirrored.
+    for (i, j) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
+        inertia[i][j] = num(&mut a, body.inertia[i][j]);
+        inertia[j][i] = inertia[i][j];
     }
     let surface = match body.surface {
         NumSurface::Sphere { c, rho } => Surface::Sphere {
