@@ -60,12 +60,11 @@ fn lean_rate_ratio(model: &ContactModel, d: &RollingDisk, w0: f64) -> Result<f64
     Ok((-wdot.dot(&t) + p * (sf - w0)) / eps)
 }
 
+/// A curve of (t, θ) points.
+type Curve = Vec<(f64, f64)>;
+
 /// The largest |lean| over `time` from upright with a lean rate of 1e-4 rad/s.
-fn max_lean(
-    model: &ContactModel,
-    w0: f64,
-    time: f64,
-) -> Result<(f64, Vec<(f64, f64)>), Box<dyn Error>> {
+fn max_lean(model: &ContactModel, w0: f64, time: f64) -> Result<(f64, Curve), Box<dyn Error>> {
     let s = DiskState {
         lean: 0.0,
         lean_rate: 1e-4,

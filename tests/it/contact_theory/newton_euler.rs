@@ -133,11 +133,6 @@ impl SlidingSphere {
         Vector3::new(s.v[0], s.v[1], -s.omega.cross(&c).z)
     }
 
-    /// The arm a = P − G, space axes.
-    pub fn arm(&self, s: &Sliding) -> Vector3<f64> {
-        s.rot * self.centre - Vector3::z() * self.radius
-    }
-
     /// The rates, and the normal force N solved from the contact's second derivative:
     /// ω̇ = N w₁ + w₀ is linear in N and m z̈_G = N − m g with z̈_G = −(ω̇ × c + ω × (ω × c))_z.
     pub fn rates(&self, s: &Sliding) -> (SlidingRate, f64) {
