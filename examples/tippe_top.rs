@@ -101,6 +101,20 @@ fn main() -> Result<(), Box<dyn Error>> {
         top.inverts(),
         top.min_inversion_spin()
     );
+    if let Some(thres) = top.jellett_threshold() {
+        // Their threshold is proved for 1 − α² < I₁/I₃ < 1; outside that it only indicates.
+        let gamma = top.i1 / top.i3;
+        let proved = 1.0 - alpha * alpha < gamma && gamma < 1.0;
+        println!(
+            "  λ₀ = {lambda0:.6e} is {:.2} × the threshold of Rauch-Wojciechowski & Rutstam (2014){}",
+            lambda0 / thres,
+            if proved {
+                ""
+            } else {
+                " (proved there for 1 − α² < I₁/I₃ < 1, not met here)"
+            }
+        );
+    }
     println!("  the axis passes the horizontal at t = {flip:.3} s");
     let mut table = Table::default();
     table.row("Jellett λ at 20 s (kg m³/s)", model.jellett(&last), lambda0);
