@@ -14,6 +14,11 @@ pub enum Shape {
     Sphere { centre: Vector3<f64>, radius: f64 },
     /// The sharp rim of a disk of radius `radius` about the centre of mass, axis body z.
     Rim { radius: f64 },
+    /// An ellipsoid of semi-axes `semi` along the body axes about `centre`.
+    Ellipsoid {
+        centre: Vector3<f64>,
+        semi: Vector3<f64>,
+    },
 }
 
 /// A rigid body: mass, inertia about its centre of mass (body axes), shape, gravity.
@@ -56,6 +61,22 @@ impl Body {
                 let u = w / s;
                 let ud = wd / s - w * (sd / (s * s));
                 (u * radius, ud * radius)
+            }
+            Shape::Ellipsoid { centre, semi } => {
+                // P = s(n), n = −γ the outward normal at the contact in body axes:
+                // s(n) = c + D² n / √(nᵀ D² n), its derivative Ds = D²/√q − D²n (D²n)ᵀ/q^{3/2},
+                // and ṅ = −γ̇ = −γ × ω_b.
+                let d2 = Matrix3::from_diagonal(&semi.component_mul(&semi));
+                let gamma = rot.transpose() * Vector3::z();
+                let wb = rot.transpose() * omega;
+                let n = -gamma;
+                let d2n = d2 * n;
+                let q = n.dot(&d2n);
+                let s = centre + d2n / q.sqrt();
+                let ds = d2 / q.sqrt() - d2n * d2n.transpose() / (q * q.sqrt());
+                let nd = -gamma.cross(&wb);
+                let sp = rot * s;
+                (-sp, -omega.cross(&sp) - rot * (ds * nd))
             }
         }
     }
