@@ -4,6 +4,13 @@
 
 mod common;
 
+/// Closed forms for bodies on a table against an independent Newton–Euler formulation.
+mod contact_theory {
+    mod disk;
+    mod newton_euler;
+    mod scene;
+    mod sphere;
+}
 /// Mass properties, shapes and their validation.
 mod body {
     mod euler;

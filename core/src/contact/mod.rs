@@ -26,6 +26,7 @@ mod scene;
 mod state;
 mod surface;
 mod system;
+pub mod theory;
 
 pub use checks::{ContactValues, MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
 pub use derivation::{ContactDerivation, ContactEquations};
