@@ -123,7 +123,7 @@ fn fields_are_read_and_checked_at_run_time() {
     for field in ["\"m\"", "\"r\"", "\"mu\"", "\"g\""] {
         assert!(check.contains(field), "{field}: {check}");
     }
-    assert!(check.contains("check_contact_values"), "{check}");
+    assert!(check.contains("ContactValues"), "{check}");
     assert!(method(&code, "friction_coefficient").contains("self . mu"));
     // Stick–slip derives both phases.
     let rhs = method(&code, "phase_rhs");
