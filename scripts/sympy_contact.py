@@ -18,7 +18,9 @@ eliminated by construction). The contact point's body coordinates are the surfac
 map evaluated at the downward normal, exactly as precess's derivation does.
 
 Times are medians of 3 runs; derivation includes forming the mass matrix and forcing of
-Kane's equations; "solve" adds the symbolic solve M^-1 f that precess also performs.
+Kane's equations; "solve" adds the symbolic solve M^-1 f that precess also performs, and
+"cse" the common-subexpression pass that turns the equations into straight-line code (PyDy
+runs it before writing code; precess's lowering does the same job).
 
 Usage: python3 scripts/sympy_contact.py [--no-pydy]   (needs sympy; pydy and cython optional)
 """
@@ -151,7 +153,7 @@ def scenes():
 
 def main():
     use_pydy = "--no-pydy" not in sys.argv
-    print("scene,derive_s,ops_mass_forcing,solve_s,ops_solved,pydy_backend,pydy_rhs_us")
+    print("scene,derive_s,ops_mass_forcing,solve_s,ops_solved,cse_s,ops_after_cse,pydy_backend,pydy_rhs_us")
     for name, build in scenes():
         t_derive, (kane, _fr, _frstar) = median_time(build)
         mass = kane.mass_matrix_full
@@ -159,13 +161,18 @@ def main():
         ops = sm.count_ops(mass) + sm.count_ops(forcing)
         t_solve, solved = median_time(lambda: kane.mass_matrix.LUsolve(kane.forcing))
         ops_solved = sm.count_ops(solved)
+        # Straight-line code from the equations: SymPy's common-subexpression pass over the
+        # mass matrix and forcing, as PyDy's generators run it before writing code.
+        exprs = list(mass) + list(forcing)
+        t_cse, (subs, reduced) = median_time(lambda: sm.cse(exprs))
+        ops_cse = sum(sm.count_ops(e) for _, e in subs) + sum(sm.count_ops(e) for e in reduced)
         backend, rhs_us = "-", float("nan")
         if use_pydy:
             try:
                 rhs_us, backend = pydy_rhs_time(kane)
             except Exception as e:  # the peer is optional: say why it was skipped
                 print(f"{name}: pydy skipped: {e}", file=sys.stderr)
-        print(f"{name},{t_derive:.3f},{ops},{t_solve:.3f},{ops_solved},{backend},{rhs_us:.2f}")
+        print(f"{name},{t_derive:.3f},{ops},{t_solve:.3f},{ops_solved},{t_cse:.3f},{ops_cse},{backend},{rhs_us:.2f}")
         sys.stdout.flush()
 
 
