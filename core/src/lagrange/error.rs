@@ -131,6 +131,18 @@ pub enum LagrangeError {
         /// Its value.
         value: f64,
     },
+    /// A partitioned run was started off the loop: its initial state's position residual
+    /// is past what rounding in setting it up explains.
+    #[error(
+        "the initial state is off the loop: the position constraints' residual is {residual:e} \
+         (a run starts at most {allowed:e} off; close the loop first with close_loop)"
+    )]
+    StartOffLoop {
+        /// The largest |φ_k| of the initial state.
+        residual: f64,
+        /// [`super::START_RESIDUAL`].
+        allowed: f64,
+    },
     /// Newton's iteration for the dependent coordinates did not close the loop.
     #[error(
         "the loop does not close: the position constraints' residual is {residual:e} after \

@@ -29,4 +29,4 @@ pub use eliminate::ConstrainedEquations;
 pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
 pub use model::{ConstrainedModel, ConstrainedSystem};
-pub use partition::{MAX_NEWTON, SINGULAR_BLOCK};
+pub use partition::{MAX_NEWTON, SINGULAR_BLOCK, START_RESIDUAL};

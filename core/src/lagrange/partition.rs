@@ -17,6 +17,12 @@ pub const MAX_NEWTON: usize = 20;
 /// taken as singular (the loop is folded flat, or the dependent choice fails there).
 pub const SINGULAR_BLOCK: f64 = 1e-12;
 
+/// The largest position residual max |φ_k| a partitioned run accepts at its start. Past it the
+/// initial state is not on the loop up to the rounding of its set-up but a wrong state, and
+/// Newton would move it silently (perhaps onto the other assembly branch); the run refuses
+/// it instead. Residuals have the constraints' units (lengths for a linkage).
+pub const START_RESIDUAL: f64 = 1e-9;
+
 impl ConstrainedModel {
     /// The position residuals φ(q, t), one per constraint, or `None` unless every
     /// constraint is holonomic.
@@ -107,13 +113,15 @@ impl ConstrainedModel {
         }
     }
 
-    /// Advances `stepper` to `t_end`, closing the loop after every accepted step
-    /// ([`ConstrainedModel::close_loop`] with `tolerance`) and restarting the stepper at the
-    /// corrected state; returns the Newton iterations spent.
+    /// Advances `stepper` to `t_end`, closing the loop at its start and after every accepted
+    /// step ([`ConstrainedModel::close_loop`] with `tolerance`) and restarting the stepper at
+    /// the corrected state; returns the Newton iterations spent.
     ///
     /// # Errors
-    /// [`LagrangeError::Ode`] for the stepper's failures; the errors of
-    /// [`ConstrainedModel::close_loop`].
+    /// [`LagrangeError::StartOffLoop`] when the stepper's state is off the loop by more than
+    /// [`START_RESIDUAL`] (close it first, on the branch you mean, with
+    /// [`ConstrainedModel::close_loop`]); [`LagrangeError::Ode`] for the stepper's failures;
+    /// the errors of [`ConstrainedModel::close_loop`].
     pub fn advance_partitioned<S, const N: usize>(
         &self,
         stepper: &mut S,
@@ -123,7 +131,21 @@ impl ConstrainedModel {
     where
         S: Stepper<State = [f64; N]>,
     {
-        let mut newton = 0;
+        let (t0, mut y0) = (stepper.t(), *stepper.state());
+        if let Some(residuals) = self.position_residuals(t0, &y0)? {
+            let residual = residuals.iter().fold(0.0_f64, |m, r| m.max(r.abs()));
+            // A NaN residual fails the comparison too.
+            if !(residual <= START_RESIDUAL) {
+                return Err(LagrangeError::StartOffLoop {
+                    residual,
+                    allowed: START_RESIDUAL,
+                });
+            }
+        }
+        let mut newton = self.close_loop(t0, &mut y0, tolerance)?;
+        if newton > 0 {
+            stepper.restart(t0, y0)?;
+        }
         while stepper.t() < t_end {
             stepper.step(t_end)?;
             let t = stepper.t();

@@ -1,7 +1,8 @@
 //! Bad input to the constraint engine: typed errors naming the quantity and its value.
 
 use precess::lagrange::{ConstrainedModel, Constraints, Coordinates, EquationsOfMotion};
-use precess::lagrange::{LagrangeError, MAX_NEWTON};
+use precess::lagrange::{LagrangeError, MAX_NEWTON, START_RESIDUAL};
+use precess::ode::{AdaptiveConfig, Dop853};
 use precess::sym::Arena;
 
 use super::four_bar::{four_bar, start, values};
@@ -91,6 +92,39 @@ fn a_loop_that_cannot_close_is_named_with_its_residual() {
         "y = {} after {n}",
         state[1]
     );
+}
+
+#[test]
+fn a_partitioned_run_refuses_a_start_off_the_loop() {
+    let mut a = Arena::new();
+    let (eqs, out) = four_bar(&mut a).expect("the four-bar derives");
+    let model = ConstrainedModel::new(&mut a, &eqs, &out, &values()).expect("binds");
+    let cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
+    // The rocker 1e-3 rad off Freudenstein's angle: Newton would close the loop by moving it,
+    // so the run would start from a state the user did not give.
+    let mut off = start(6.0);
+    off[2] += 1e-3;
+    let mut ode =
+        Dop853::new(model.system::<4>().expect("n + k = 4"), 0.0, off, cfg).expect("starts");
+    let err = model.advance_partitioned(&mut ode, 0.1, 1e-15).unwrap_err();
+    match err {
+        LagrangeError::StartOffLoop { residual, allowed } => {
+            // The rocker (c = 2.5) moved by 1e-3 rad moves its end by about 2.5e-3.
+            assert!(residual > 1e-4 && residual < 1e-2, "{residual}");
+            assert_eq!(allowed, START_RESIDUAL);
+            assert!(err.to_string().contains("off the loop"), "{err}");
+        }
+        other => panic!("expected StartOffLoop, got {other:?}"),
+    }
+    assert_eq!(*ode.y(), off, "nothing was integrated");
+    // The state as set up from Freudenstein's closed form (closed to rounding) runs.
+    let on = start(6.0);
+    let mut ode =
+        Dop853::new(model.system::<4>().expect("n + k = 4"), 0.0, on, cfg).expect("starts");
+    model
+        .advance_partitioned(&mut ode, 0.1, 1e-15)
+        .expect("a closed start runs");
+    assert!(ode.t() >= 0.1);
 }
 
 #[test]
