@@ -31,6 +31,7 @@ mod derive {
 }
 /// Constraints: nonholonomic rolling and closed loops.
 mod constraints {
+    mod bicycle;
     mod disk;
     mod errors;
     mod four_bar;

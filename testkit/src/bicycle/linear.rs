@@ -1,0 +1,132 @@
+//! The linearised lateral equations M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0, q = (φ, δ), their
+//! eigenvalues against the forward speed v, and the weave and capsize speeds.
+
+use precess::linalg::{LinalgError, eigenvalues};
+use precess::nalgebra::{Complex, Matrix2, Matrix4};
+
+/// The paper's four matrices and g.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Linear {
+    /// Mass matrix M.
+    pub m: Matrix2<f64>,
+    /// C₁, the velocity-proportional (gyroscopic and damping-like) matrix.
+    pub c1: Matrix2<f64>,
+    /// K₀, the gravity stiffness (per unit g).
+    pub k0: Matrix2<f64>,
+    /// K₂, the velocity-squared stiffness.
+    pub k2: Matrix2<f64>,
+    /// Gravity g.
+    pub g: f64,
+}
+
+impl Linear {
+    pub(super) fn zero() -> Linear {
+        Linear {
+            m: Matrix2::zeros(),
+            c1: Matrix2::zeros(),
+            k0: Matrix2::zeros(),
+            k2: Matrix2::zeros(),
+            g: 0.0,
+        }
+    }
+
+    /// The values the paper prints (Table 2 and eq. 5.3–5.6 of Meijaard et al. 2007), to
+    /// the fifteen digits given.
+    pub fn published() -> Linear {
+        Linear {
+            m: Matrix2::new(
+                80.81722,
+                2.31941332208709,
+                2.31941332208709,
+                0.29784188199686,
+            ),
+            c1: Matrix2::new(0.0, 33.86641391492494, -0.85035641456978, 1.68540397397560),
+            k0: Matrix2::new(
+                -80.95,
+                -2.59951685249872,
+                -2.59951685249872,
+                -0.80329488458618,
+            ),
+            k2: Matrix2::new(0.0, 76.59734589573222, 0.0, 2.65431523794604),
+            g: 9.81,
+        }
+    }
+
+    /// The state matrix of (φ, δ, φ̇, δ̇) at speed v, or `None` if M is singular.
+    pub fn state_matrix(&self, v: f64) -> Option<Matrix4<f64>> {
+        let m_inv = self.m.try_inverse()?;
+        let stiff = -(m_inv * (self.k0 * self.g + self.k2 * (v * v)));
+        let damp = -(m_inv * self.c1 * v);
+        let mut a = Matrix4::zeros();
+        a[(0, 2)] = 1.0;
+        a[(1, 3)] = 1.0;
+        for i in 0..2 {
+            for j in 0..2 {
+                a[(2 + i, j)] = stiff[(i, j)];
+                a[(2 + i, 2 + j)] = damp[(i, j)];
+            }
+        }
+        Some(a)
+    }
+
+    /// The four eigenvalues at speed v, by decreasing real part (NaN if M is singular).
+    ///
+    /// # Errors
+    /// [`LinalgError`] from the eigenvalue routine (a non-finite entry, no convergence).
+    pub fn eigenvalues(&self, v: f64) -> Result<Vec<Complex<f64>>, LinalgError> {
+        let a = self
+            .state_matrix(v)
+            .unwrap_or(Matrix4::from_element(f64::NAN));
+        eigenvalues(&a)
+    }
+
+    /// The weave speed: where the real part of the oscillatory pair crosses zero, by
+    /// bisection on [lo, hi] to rounding; `None` without a sign change (or where the
+    /// eigenvalues fail).
+    pub fn weave_speed(&self, lo: f64, hi: f64) -> Option<f64> {
+        self.bisect(lo, hi, |eig| {
+            eig.iter()
+                .filter(|z| z.im.abs() > 1e-9)
+                .map(|z| z.re)
+                .fold(f64::NAN, f64::max)
+        })
+    }
+
+    /// The capsize speed: where the largest real eigenvalue (the capsize mode) crosses
+    /// zero, by bisection on [lo, hi]; `None` without a sign change.
+    pub fn capsize_speed(&self, lo: f64, hi: f64) -> Option<f64> {
+        self.bisect(lo, hi, |eig| {
+            eig.iter()
+                .filter(|z| z.im.abs() <= 1e-9)
+                .map(|z| z.re)
+                .fold(f64::NAN, f64::max)
+        })
+    }
+
+    fn bisect(
+        &self,
+        mut lo: f64,
+        mut hi: f64,
+        mode: impl Fn(&[Complex<f64>]) -> f64,
+    ) -> Option<f64> {
+        let at = |v: f64| self.eigenvalues(v).ok().map(|e| mode(&e));
+        let (mut f_lo, f_hi) = (at(lo)?, at(hi)?);
+        if !(f_lo * f_hi < 0.0) {
+            return None;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            let f = at(mid)?;
+            if (f < 0.0) == (f_lo < 0.0) {
+                lo = mid;
+                f_lo = f;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(0.5 * (lo + hi))
+    }
+}
