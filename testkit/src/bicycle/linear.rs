@@ -4,6 +4,85 @@
 use precess::linalg::{LinalgError, eigenvalues};
 use precess::nalgebra::{Complex, Matrix2, Matrix4};
 
+/// The weave speed the paper gives (Table 2), m/s.
+pub const WEAVE_SPEED: f64 = 4.29238253634111;
+/// The capsize speed the paper gives (Table 2), m/s.
+pub const CAPSIZE_SPEED: f64 = 6.02426201538837;
+/// The weave pair's frequency at the weave speed, ±i 3.43503384866144 rad/s (Table 2).
+pub const WEAVE_FREQUENCY: f64 = 3.43503384866144;
+/// The eigenvalues at rest (Table 2): the two inverted-pendulum pairs ±3.13…, ±5.53….
+pub const STANDSTILL: [f64; 4] = [
+    3.13164324790656,
+    -3.13164324790656,
+    5.53094371765393,
+    -5.53094371765393,
+];
+
+/// Table 2 of Meijaard et al. (2007): the eigenvalues at v = 1 … 10 m/s — the capsize mode (real), the
+/// weave pair (re ± i im) and the castering mode (real).
+pub const TABLE_2: [(f64, f64, f64, f64); 10] = [
+    (
+        -3.13423125066578,
+        3.52696170990070,
+        0.80774027519930,
+        -7.11008014637442,
+    ),
+    (
+        -3.07158645641514,
+        2.68234517512745,
+        1.68066296590675,
+        -8.67387984831735,
+    ),
+    (
+        -2.63366137253667,
+        1.70675605663975,
+        2.31582447384325,
+        -10.35101467245920,
+    ),
+    (
+        -1.42944427361326,
+        0.41325331521125,
+        3.07910818603206,
+        -12.15861426576450,
+    ),
+    (
+        -0.32286642900409,
+        -0.77534188219585,
+        4.46486771378823,
+        -14.07838969279820,
+    ),
+    (
+        -0.00406690076970,
+        -1.52644486584142,
+        5.87673060598709,
+        -16.08537123098030,
+    ),
+    (
+        0.10268170574766,
+        -2.13875644258362,
+        7.19525913329805,
+        -18.15788466125262,
+    ),
+    (
+        0.14327879765713,
+        -2.69348683581097,
+        8.46037971396931,
+        -20.27940894394569,
+    ),
+    (
+        0.15790184030917,
+        -3.21675402252485,
+        9.69377351531791,
+        -22.43788559040858,
+    ),
+    (
+        0.16105338653172,
+        -3.72016840437287,
+        10.90681139476287,
+        -24.62459635017404,
+    ),
+];
+
 /// The paper's four matrices and g.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Linear {

@@ -25,7 +25,7 @@
 mod derive;
 mod linear;
 
-pub use linear::Linear;
+pub use linear::{CAPSIZE_SPEED, Linear, STANDSTILL, TABLE_2, WEAVE_FREQUENCY, WEAVE_SPEED};
 
 use precess::codegen::{Bindings, Program};
 use precess::lagrange::{LagrangeError, MAX_NEWTON};
