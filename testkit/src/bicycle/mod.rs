@@ -9,14 +9,15 @@
 //! derived from the contact point's material velocity.
 //!
 //! **Why the elimination is numeric.** The engine's Maggi elimination forms the adjugate of
-//! the 5 × 5 dependent block A_D symbolically. Its entries here are sums of up to a few
-//! hundred trig monomials with √(1 − n_z²) (the front contact's distance below the hub)
-//! inside; a 5 × 5 adjugate multiplies out 120 products of five such entries, past any
-//! useful size. So the symbolic engine derives M, f, A and Ȧq̇ exactly and lowers them to
-//! straight-line programs; at each evaluation A_D q̇_D = −A_I u is solved by LU, and the
-//! reduced equations Sᵀ M S u̇ = Sᵀ (f − M s), S = [I; −A_D⁻¹ A_I], are formed and solved
-//! numerically. This is the same projection as the engine's symbolic one, evaluated in
-//! floating point.
+//! the 5 × 5 dependent block A_D symbolically (entries of up to 27 trig monomials, with
+//! √(1 − n_z²), the front contact's distance below the hub, in the front rows) and the
+//! products Sᵀ M S with mass-matrix entries of up to 609 terms. Tried on this system
+//! (`EquationsOfMotion::constrain`, release build) it had not finished after 4 min 54 s of
+//! CPU and held 8.5 GB, growing by about 1 GB every 30 s, when stopped. So the symbolic
+//! engine derives M, f, A and Ȧq̇ exactly and lowers them to straight-line programs; at
+//! each evaluation A_D q̇_D = −A_I u is solved by LU, and the reduced equations
+//! Sᵀ M S u̇ = Sᵀ (f − M s), S = [I; −A_D⁻¹ A_I], s_D = −A_D⁻¹ Ȧq̇, are formed and solved
+//! numerically: the engine's projection, evaluated in floating point.
 //!
 //! The free speeds are the roll rate φ̇, the steer rate δ̇ and the rear wheel rate θ̇_R (the
 //! paper's choice); the pitch θ is dependent and found by Newton's method from the front
