@@ -1,8 +1,13 @@
-//! The linearised lateral equations M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0, q = (φ, δ), their
-//! eigenvalues against the forward speed v, and the weave and capsize speeds.
+//! The linearised lateral equations M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0, q = (φ, δ): the
+//! paper's printed values and tables, [`Whipple::linearise`] which recovers them from the
+//! nonlinear model, the eigenvalues against the forward speed v, and the weave and capsize
+//! speeds.
 
+use precess::lagrange::LagrangeError;
 use precess::linalg::{LinalgError, eigenvalues};
 use precess::nalgebra::{Complex, Matrix2, Matrix4};
+
+use super::Whipple;
 
 /// The weave speed the paper gives (Table 2), m/s.
 pub const WEAVE_SPEED: f64 = 4.29238253634111;
@@ -208,5 +213,82 @@ impl Linear {
             }
         }
         Some(0.5 * (lo + hi))
+    }
+}
+
+impl Whipple {
+    /// Lateral right-hand side r_(φ, δ) of the reduced equations on the constraint, at roll
+    /// φ, steer δ, their rates, and speed v.
+    fn lateral(&self, x: [f64; 4], v: f64) -> Result<[f64; 2], LagrangeError> {
+        let mut q = [0.0; 8];
+        q[3] = x[0];
+        q[5] = x[1];
+        self.close_front_contact(&mut q)?;
+        let (_, r) = self.reduced(&q, &[x[2], x[3], -v / self.rear_radius])?;
+        Ok([r[0], r[1]])
+    }
+
+    /// The linearised lateral equations about the upright straight run, in the paper's
+    /// form M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0 with q = (φ, δ).
+    ///
+    /// r is r₀(q) + (a quadratic form in u): the gravity part, proportional to g, and the
+    /// inertial part, exactly quadratic in the speeds. So K₀ = −∂r/∂q at v = 0 over g;
+    /// K₂ = −(∂r/∂q at v = 1 minus at v = 0); C₁ = −∂r/∂q̇ at v = 1, where a central
+    /// difference of a quadratic is exact (step 1). The position derivatives are central
+    /// differences extrapolated twice by Richardson (steps 10⁻², ½·10⁻², ¼·10⁻²: error
+    /// O(h⁶) ≈ 10⁻¹², rounding ≈ 10⁻¹⁶ · |r|/h since r vanishes at the upright), the pitch
+    /// re-solved by Newton at every point.
+    ///
+    /// # Errors
+    /// As [`Whipple::close_front_contact`] and [`Whipple::reduced`].
+    pub fn linearise(&self) -> Result<Linear, LagrangeError> {
+        let mut q = [0.0; 8];
+        self.close_front_contact(&mut q)?;
+        let (k, _) = self.reduced(&q, &[0.0, 0.0, 0.0])?;
+        let mut lin = Linear {
+            g: self.gravity,
+            ..Linear::zero()
+        };
+        for i in 0..2 {
+            for j in 0..2 {
+                lin.m[(i, j)] = k[(i, j)];
+            }
+        }
+        for j in 0..2 {
+            let at_rest = self.position_derivative(j, 0.0)?;
+            let moving = self.position_derivative(j, 1.0)?;
+            let mut up = [0.0; 4];
+            up[2 + j] = 1.0;
+            let mut down = [0.0; 4];
+            down[2 + j] = -1.0;
+            let (rp, rm) = (self.lateral(up, 1.0)?, self.lateral(down, 1.0)?);
+            for i in 0..2 {
+                lin.k0[(i, j)] = -at_rest[i] / self.gravity;
+                lin.k2[(i, j)] = -(moving[i] - at_rest[i]);
+                lin.c1[(i, j)] = -(rp[i] - rm[i]) / 2.0;
+            }
+        }
+        Ok(lin)
+    }
+
+    /// ∂r/∂(φ, δ)_j at the upright run at speed v, Richardson-extrapolated.
+    fn position_derivative(&self, j: usize, v: f64) -> Result<[f64; 2], LagrangeError> {
+        let central = |h: f64| -> Result<[f64; 2], LagrangeError> {
+            let mut xp = [0.0; 4];
+            xp[j] = h;
+            let mut xm = [0.0; 4];
+            xm[j] = -h;
+            let (p, m) = (self.lateral(xp, v)?, self.lateral(xm, v)?);
+            Ok([(p[0] - m[0]) / (2.0 * h), (p[1] - m[1]) / (2.0 * h)])
+        };
+        let h = 1e-2;
+        let d = [central(h)?, central(h / 2.0)?, central(h / 4.0)?];
+        let mut out = [0.0; 2];
+        for (i, o) in out.iter_mut().enumerate() {
+            let r1 = (4.0 * d[1][i] - d[0][i]) / 3.0;
+            let r2 = (4.0 * d[2][i] - d[1][i]) / 3.0;
+            *o = (16.0 * r2 - r1) / 15.0;
+        }
+        Ok(out)
     }
 }
