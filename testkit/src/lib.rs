@@ -3,6 +3,7 @@
 //! work-precision report (the example writes it in full, a test runs its cheap rungs).
 #![forbid(unsafe_code)]
 
+pub mod bicycle;
 pub mod rng;
 pub mod systems;
 pub mod work_precision;

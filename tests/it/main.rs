@@ -39,6 +39,7 @@ mod derive {
 }
 /// Constraints: nonholonomic rolling and closed loops.
 mod constraints {
+    mod bicycle;
     mod disk;
     mod errors;
     mod four_bar;
