@@ -134,8 +134,7 @@ impl ConstrainedModel {
         let (t0, mut y0) = (stepper.t(), *stepper.state());
         if let Some(residuals) = self.position_residuals(t0, &y0)? {
             let residual = residuals.iter().fold(0.0_f64, |m, r| m.max(r.abs()));
-            // A NaN residual fails the comparison too.
-            if !(residual <= START_RESIDUAL) {
+            if residual.is_nan() || residual > START_RESIDUAL {
                 return Err(LagrangeError::StartOffLoop {
                     residual,
                     allowed: START_RESIDUAL,
