@@ -46,18 +46,18 @@ use precess::prelude::RigidBody;
 struct Top;
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let (r, alpha, viscous) = (0.02, 0.3, 5.0 * 0.02);
-    let model = Top;
-    // The closed forms read the mass and moments the derive computed.
-    let inertia = model.inertia_cm();
+    let (m, r, alpha) = (0.02, 0.02, 0.3);
+    // The closed forms take the top's numbers as written here, not as the derive read them.
     let top = TippeTop {
         radius: r,
         alpha,
-        mass: model.mass(),
-        i1: inertia[(0, 0)],
-        i3: inertia[(2, 2)],
+        mass: m,
+        i1: 0.35 * m * r * r,
+        i3: 0.4 * m * r * r,
         gravity: 9.81,
     };
+    let viscous = 5.0 * m;
+    let model = Top;
 
     let tilt = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.1);
     let mut y0 = [0.0; 11];
