@@ -32,7 +32,7 @@ use precess::prelude::RigidBody;
 
 /// The top: mass M = 20 g with its centre of mass at the origin, I₁ = 0.35 M R² and
 /// I₃ = 0.4 M R² (R = 2 cm), a sphere of radius R centred αR = 6 mm above the centre of mass,
-/// gliding with viscous friction c = 5 M kg/s.
+/// gliding with viscous friction c = 0.1 kg/s (5 M per second).
 #[derive(RigidBody)]
 #[rigid(body(
     mass = 0.02,
