@@ -8,6 +8,9 @@
 //! 6.5e-4 kg·m²) is started tumbling about an oblique axis and rolled for 100 s; the table
 //! gives each integral's largest drift, and the figure the path its contact point traces.
 //!
+//! The ball is declared on a struct (`#[rigid(body(..))]`, `#[contact(surface = sphere(..),
+//! law = rolling, ..)]`) and rolled through the generated `ContactDynamics`.
+//!
 //! Run with `cargo run --release --example chaplygin_ball`.
 
 mod common;
@@ -17,41 +20,22 @@ mod contact;
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use contact::{Params, sample};
+use contact::sample;
 use precess::contact::theory::SphereBody;
-use precess::contact::{
-    ContactDynamics, ContactLaw, ContactModel, ContactScene, Phase, Surface, attitude_of,
-};
+use precess::contact::{ContactDynamics, Phase, attitude_of};
 use precess::nalgebra::{Matrix3, UnitQuaternion, Vector3};
-use precess::sym::Arena;
+use precess::prelude::RigidBody;
+
+/// The ball: radius 5 cm, M = 0.5 kg with its centre of mass at the centre of its sphere,
+/// principal moments 3e-4, 5e-4 and 6.5e-4 kg·m².
+#[derive(RigidBody)]
+#[rigid(body(mass = 0.5, inertia = diag(3e-4, 5e-4, 6.5e-4)))]
+#[contact(surface = sphere(radius = 0.05), law = rolling, gravity = 9.81)]
+struct Ball;
 
 fn main() -> Result<(), Box<dyn Error>> {
     let moments = [3e-4, 5e-4, 6.5e-4];
-    let mut ar = Arena::new();
-    let mut p = Params::default();
-    let z = ar.zero();
-    let mass = p.add(&mut ar, "M", 0.5);
-    let i1 = p.add(&mut ar, "I1", moments[0]);
-    let i2 = p.add(&mut ar, "I2", moments[1]);
-    let i3 = p.add(&mut ar, "I3", moments[2]);
-    let radius = p.add(&mut ar, "R", 0.05);
-    let g = p.add(&mut ar, "g", 9.81);
-    let scene = ContactScene {
-        mass,
-        center: [z; 3],
-        inertia: [[i1, z, z], [z, i2, z], [z, z, i3]],
-        surface: Surface::Sphere {
-            center: [z; 3],
-            radius,
-        },
-        law: ContactLaw::Rolling {
-            rolling_resistance: None,
-            spin_resistance: None,
-        },
-        gravity: g,
-    };
-    let derivation = scene.derive(&mut ar)?;
-    let model = ContactModel::new(&mut ar, &derivation, &p.values)?;
+    let model = Ball;
 
     let q0 = UnitQuaternion::from_euler_angles(0.4, -0.2, 0.3);
     let y0 = model.rolling_state([0.0, 0.0], &q0, &Vector3::new(4.0, -7.0, 9.0));

@@ -22,27 +22,34 @@
 //! derive the decay for sliding, pivoting and rolling friction, each with its own exponents
 //! (`contact::theory::power_law_exponents` gives them from how P scales with Ω and α).
 //!
+//! The disk is declared on a struct (`#[rigid(disk(..))]`, `#[contact(.., law = rolling, ..)]`).
+//! `#[contact]` has no key for an external couple (its laws' torques are the rolling and spin
+//! resistances, −c_r ω_∥ and −c_s ω_⊥, not a couple that grows as the disk closes on the
+//! table), so the air layer's couple is added by `Settling`, a wrapper system around the
+//! generated `ContactDynamics`, integrated with the adaptive DOP853 directly.
+//!
 //! Run with `cargo run --release --example eulers_disk`.
 
 mod common;
-#[path = "common/contact.rs"]
-mod contact;
 
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use contact::Params;
 use precess::contact::theory::{DiskState, EulerDisk, RollingDisk, power_law_exponents};
-use precess::contact::{
-    ContactDynamics, ContactLaw, ContactModel, ContactScene, Phase, STATE_LEN, Surface, attitude_of,
-};
+use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use precess::ode::{Adaptive, AdaptiveConfig, Dop853Pair, System};
-use precess::sym::Arena;
+use precess::prelude::RigidBody;
+
+/// A thin uniform disk, radius 5 cm and mass 0.3 kg, rolling on its sharp rim.
+#[derive(RigidBody)]
+#[rigid(disk(mass = 0.3, radius = 0.05))]
+#[contact(surface = disk_rim(radius = 0.05), law = rolling, gravity = 9.81)]
+struct Disk;
 
 /// The derived rolling disk with the air layer's couple added.
-struct Settling<'a> {
-    model: &'a ContactModel,
+struct Settling {
+    model: Disk,
     theory: EulerDisk,
     inertia: Matrix3<f64>,
 }
@@ -61,7 +68,7 @@ fn precession(y: &[f64; STATE_LEN]) -> f64 {
     (n.x * nd.y - n.y * nd.x) / (n.x * n.x + n.y * n.y)
 }
 
-impl System<STATE_LEN> for Settling<'_> {
+impl System<STATE_LEN> for Settling {
     fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
         self.model.phase_rhs(Phase::Rolling, t, y, dydt);
         let w = Vector3::new(y[8], y[9], y[10]);
@@ -99,30 +106,7 @@ fn fit(points: &[(f64, f64)]) -> (f64, f64) {
 fn main() -> Result<(), Box<dyn Error>> {
     let disk = RollingDisk::thin(0.05, 0.3, 9.81);
     let theory = EulerDisk { disk, kappa: 1e-11 };
-    let mut a = Arena::new();
-    let mut p = Params::default();
-    let z = a.zero();
-    let mass = p.add(&mut a, "m", disk.mass);
-    let ia = p.add(&mut a, "A", disk.transverse);
-    let ic = p.add(&mut a, "C", disk.axial);
-    let radius = p.add(&mut a, "r", disk.radius);
-    let g = p.add(&mut a, "g", disk.gravity);
-    let scene = ContactScene {
-        mass,
-        center: [z; 3],
-        inertia: [[ia, z, z], [z, ia, z], [z, z, ic]],
-        surface: Surface::DiskRim {
-            center: [z; 3],
-            radius,
-        },
-        law: ContactLaw::Rolling {
-            rolling_resistance: None,
-            spin_resistance: None,
-        },
-        gravity: g,
-    };
-    let derivation = scene.derive(&mut a)?;
-    let model = ContactModel::new(&mut a, &derivation, &p.values)?;
+    let model = Disk;
 
     // The steady motion at α₀ = 0.03 rad: θ = π/2 − α₀, ω₃ = 0, the centre at rest.
     let alpha0 = 0.03_f64;
@@ -138,13 +122,9 @@ fn main() -> Result<(), Box<dyn Error>> {
     ));
     let y0 = model.rolling_state([0.0, 0.0], &q, &(q.inverse() * s.angular_velocity(0.0)));
     let sys = Settling {
-        model: &model,
+        model: Disk,
         theory,
-        inertia: Matrix3::from_diagonal(&Vector3::new(
-            disk.transverse,
-            disk.transverse,
-            disk.axial,
-        )),
+        inertia: Disk.inertia_cm(),
     };
     let mut cfg = AdaptiveConfig::with_tol(1e-11, 1e-11);
     cfg.max_steps = 50_000_000;

@@ -11,6 +11,9 @@
 //! (the zeros of its rate, by linear interpolation on samples 0.25 ms apart: coarser ones miss brief pairs of zeros), and the energy's
 //! drift.
 //!
+//! The body is declared on a struct: `#[rigid(body(..))]` with the full inertia tensor (the
+//! product D kept) and `#[contact(surface = ellipsoid(..), law = rolling, ..)]`.
+//!
 //! Run with `cargo run --release --example rattleback`.
 
 mod common;
@@ -20,12 +23,25 @@ mod contact;
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use contact::{Params, sample};
-use precess::contact::{
-    ContactDynamics, ContactLaw, ContactModel, ContactScene, Phase, STATE_LEN, Surface, attitude_of,
-};
+use contact::sample;
+use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
 use precess::nalgebra::{UnitQuaternion, Vector3};
-use precess::sym::Arena;
+use precess::prelude::RigidBody;
+
+/// Kane & Levinson's rattleback: M = 1 kg with its centre of mass at the origin, the inertia
+/// about it with the product D = −2e-5 kg·m² in the (x, y) entries, and an ellipsoid of
+/// semi-axes a, b, c whose centre is h = 0.01 m above the centre of mass.
+#[derive(RigidBody)]
+#[rigid(body(
+    mass = 1.0,
+    inertia = [[2e-4, -2e-5, 0.0], [-2e-5, 1.6e-3, 0.0], [0.0, 0.0, 1.7e-3]],
+))]
+#[contact(
+    surface = ellipsoid(semi_axes = [0.2, 0.03, 0.02], center = [0.0, 0.0, 0.01]),
+    law = rolling,
+    gravity = 9.81,
+)]
+struct Rattleback;
 
 /// Every 40th point (10 ms apart), enough for the figures.
 fn thin(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
@@ -41,37 +57,7 @@ fn heading_rate(y: &[f64; STATE_LEN]) -> f64 {
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let mut ar = Arena::new();
-    let mut p = Params::default();
-    let z = ar.zero();
-    let mass = p.add(&mut ar, "M", 1.0);
-    let (a, b, c) = (
-        p.add(&mut ar, "a", 0.2),
-        p.add(&mut ar, "b", 0.03),
-        p.add(&mut ar, "c", 0.02),
-    );
-    let h = p.add(&mut ar, "h", 0.01);
-    let ia = p.add(&mut ar, "A", 2e-4);
-    let ib = p.add(&mut ar, "B", 1.6e-3);
-    let ic = p.add(&mut ar, "C", 1.7e-3);
-    let d = p.add(&mut ar, "D", -2e-5);
-    let g = p.add(&mut ar, "g", 9.81);
-    let scene = ContactScene {
-        mass,
-        center: [z; 3],
-        inertia: [[ia, d, z], [d, ib, z], [z, z, ic]],
-        surface: Surface::Ellipsoid {
-            center: [z, z, h],
-            semi_axes: [a, b, c],
-        },
-        law: ContactLaw::Rolling {
-            rolling_resistance: None,
-            spin_resistance: None,
-        },
-        gravity: g,
-    };
-    let derivation = scene.derive(&mut ar)?;
-    let model = ContactModel::new(&mut ar, &derivation, &p.values)?;
+    let model = Rattleback;
 
     let tilt = 0.5_f64.to_radians();
     let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), tilt)

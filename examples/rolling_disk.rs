@@ -10,6 +10,10 @@
 //! contact point on a circle of radius 0.5 m, the disk keeps its lean, precesses at the
 //! closed form's Ω and its centre runs on the circle of radius ρ.
 //!
+//! The disk is declared on a struct (`#[rigid(disk(..))]` and `#[contact(surface =
+//! disk_rim(..), law = rolling, ..)]`); the linearisation needs nothing beyond the generated
+//! `ContactDynamics`: it evaluates the derived accelerations at a slightly leaning state.
+//!
 //! Run with `cargo run --release --example rolling_disk`.
 
 mod common;
@@ -19,17 +23,21 @@ mod contact;
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use contact::{Params, sample};
+use contact::sample;
 use precess::contact::theory::{DiskState, RollingDisk};
-use precess::contact::{
-    ContactDynamics, ContactLaw, ContactModel, ContactScene, Phase, STATE_LEN, Surface, attitude_of,
-};
+use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
-use precess::sym::Arena;
+use precess::prelude::RigidBody;
+
+/// A thin uniform disk, radius 10 cm and mass 0.5 kg, rolling on its sharp rim.
+#[derive(RigidBody)]
+#[rigid(disk(mass = 0.5, radius = 0.1))]
+#[contact(surface = disk_rim(radius = 0.1), law = rolling, gravity = 9.81)]
+struct Disk;
 
 /// The state array of the disk at a theory state, yaw 0, centre at the origin: body axes
 /// (u, t, n), so the disk's axis is body z.
-fn state(model: &ContactModel, s: &DiskState) -> [f64; STATE_LEN] {
+fn state(model: &Disk, s: &DiskState) -> [f64; STATE_LEN] {
     let [t, u, n] = s.axes(0.0);
     let rot = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[u, t, n]));
     let q = UnitQuaternion::from_rotation_matrix(&rot);
@@ -44,7 +52,7 @@ fn lean(y: &[f64; STATE_LEN]) -> f64 {
 
 /// θ̈ / θ of the model at θ = 1e-7 with ψ̇ = C ω₀ θ / A: ω̇·t = −θ̈ + p (s − ω₃) in the frame
 /// turning at ψ̇ ẑ − θ̇ t (p = ψ̇ cos θ, s = −ψ̇ sin θ).
-fn lean_rate_ratio(model: &ContactModel, d: &RollingDisk, w0: f64) -> Result<f64, Box<dyn Error>> {
+fn lean_rate_ratio(model: &Disk, d: &RollingDisk, w0: f64) -> Result<f64, Box<dyn Error>> {
     let eps = 1e-7;
     let s = DiskState {
         lean: eps,
@@ -64,7 +72,7 @@ fn lean_rate_ratio(model: &ContactModel, d: &RollingDisk, w0: f64) -> Result<f64
 type Curve = Vec<(f64, f64)>;
 
 /// The largest |lean| over `time` from upright with a lean rate of 1e-4 rad/s.
-fn max_lean(model: &ContactModel, w0: f64, time: f64) -> Result<(f64, Curve), Box<dyn Error>> {
+fn max_lean(model: &Disk, w0: f64, time: f64) -> Result<(f64, Curve), Box<dyn Error>> {
     let s = DiskState {
         lean: 0.0,
         lean_rate: 1e-4,
@@ -83,30 +91,7 @@ fn max_lean(model: &ContactModel, w0: f64, time: f64) -> Result<(f64, Curve), Bo
 
 fn main() -> Result<(), Box<dyn Error>> {
     let disk = RollingDisk::thin(0.1, 0.5, 9.81);
-    let mut a = Arena::new();
-    let mut p = Params::default();
-    let z = a.zero();
-    let mass = p.add(&mut a, "m", disk.mass);
-    let ia = p.add(&mut a, "A", disk.transverse);
-    let ic = p.add(&mut a, "C", disk.axial);
-    let radius = p.add(&mut a, "r", disk.radius);
-    let g = p.add(&mut a, "g", disk.gravity);
-    let scene = ContactScene {
-        mass,
-        center: [z; 3],
-        inertia: [[ia, z, z], [z, ia, z], [z, z, ic]],
-        surface: Surface::DiskRim {
-            center: [z; 3],
-            radius,
-        },
-        law: ContactLaw::Rolling {
-            rolling_resistance: None,
-            spin_resistance: None,
-        },
-        gravity: g,
-    };
-    let derivation = scene.derive(&mut a)?;
-    let model = ContactModel::new(&mut a, &derivation, &p.values)?;
+    let model = Disk;
     let wc = disk.critical_spin();
 
     // The threshold by linearisation: bisect the sign of θ̈/θ.

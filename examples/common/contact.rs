@@ -1,28 +1,12 @@
-//! What the contact examples share: a scene's numbers as named parameters, and a run sampled
-//! on a grid of times. Included by path (`#[path = "common/contact.rs"] mod contact;`).
+//! What the contact examples share: a run sampled on a grid of times. Included by path
+//! (`#[path = "common/contact.rs"] mod contact;`).
 
-#![allow(dead_code)] // each example uses the part it needs
+#![allow(dead_code)] // not every example reads every field (only the rattleback asks for a lift-off)
 
 use std::error::Error;
 
 use precess::contact::{ContactDynamics, ContactOutcome, ContactRun, STATE_LEN};
 use precess::ode::AdaptiveConfig;
-use precess::sym::{Arena, ExprId};
-
-/// Parameters named as they are made, their values kept for [`precess::contact::ContactModel::new`].
-#[derive(Default)]
-pub struct Params {
-    /// `(name, value)` pairs.
-    pub values: Vec<(&'static str, f64)>,
-}
-
-impl Params {
-    /// A parameter `name` with `value`.
-    pub fn add(&mut self, arena: &mut Arena, name: &'static str, value: f64) -> ExprId {
-        self.values.push((name, value));
-        arena.parameter(name)
-    }
-}
 
 /// A run's samples: times and states.
 pub struct Samples {
