@@ -216,7 +216,7 @@ impl Whipple {
         self.constraint_terms(q, &[0.0; 8]).2
     }
 
-    /// Puts the front wheel on the ground: solves the height for the pitch θ = q[4] by
+    /// Puts the front wheel on the ground: solves the height for the pitch θ = `q[4]` by
     /// Newton's method from its current value; returns the iterations taken.
     ///
     /// # Errors
