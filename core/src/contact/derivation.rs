@@ -18,10 +18,10 @@
 //!
 //! Every law's horizontal acceleration is the horizontal part of R F / M.
 
-use super::attitude::{quaternion_rate, rotation_of_quaternion};
 use super::error::ContactError;
 use super::scene::{ContactLaw, ContactScene, Friction};
 use super::state::STATE_LEN;
+use crate::rigid::{quaternion_rate, rotation_of_quaternion};
 use crate::sym::mat3::{Mat3, cross, determinant, dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, Rational, SymbolId};
 

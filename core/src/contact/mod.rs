@@ -14,7 +14,6 @@
 //! - [`ContactQuantities`] gives a run's trajectory the energy, N, the slip, Jellett's λ and
 //!   the angular momentum about the contact point; [`ContactError`] is the scene's one error.
 
-mod attitude;
 mod checks;
 mod derivation;
 mod dynamics;

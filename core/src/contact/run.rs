@@ -13,7 +13,9 @@ use super::dynamics::{ContactDynamics, LawKind, Phase, attitude_of};
 use super::error::ContactError;
 use super::state::{STATE_LEN, layout};
 use super::system::ContactSystem;
-use crate::ode::{Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper};
+use crate::ode::{
+    Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper, check_stop,
+};
 
 /// How a [`ContactRun::advance_to`] ended.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -189,16 +191,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         if let Some((t, state)) = self.lifted {
             return Ok(ContactOutcome::LiftOff { t, state });
         }
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop }.into());
-        }
-        if t_stop < self.t() {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t(),
-            }
-            .into());
-        }
+        check_stop(self.t(), t_stop)?;
         let body = self.body();
         // A state that already presses on the table with N < 0 leaves it at once.
         let y = *self.y();

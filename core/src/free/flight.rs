@@ -5,6 +5,7 @@ use super::error::FreeError;
 use super::state::{FreeState, STATE_LEN, attitude_of, layout};
 use crate::ode::{
     Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper, System,
+    check_stop,
 };
 
 /// How a [`FreeFlight`] keeps the quaternion on the unit sphere.
@@ -120,16 +121,7 @@ impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
     /// is per run, as for [`Run`](crate::ode::Run), so a flight advanced in many short legs
     /// never exhausts it).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), FreeError> {
-        if !t_stop.is_finite() {
-            return Err(OdeError::NonFiniteTime { t: t_stop }.into());
-        }
-        if t_stop < self.t() {
-            return Err(OdeError::StopBeforeCurrent {
-                stop: t_stop,
-                t: self.t(),
-            }
-            .into());
-        }
+        check_stop(self.t(), t_stop)?;
         let start = self.stats();
         while self.t() < t_stop {
             let total = self.stats();

@@ -11,6 +11,7 @@ mod angles;
 pub mod charts;
 mod kinematics;
 mod lie;
+mod quaternion_expr;
 mod rkmk4;
 mod splitting;
 mod state;
@@ -22,6 +23,7 @@ pub use charts::{
 };
 pub use kinematics::{dexpinv_right, exp_rotation, rotate_body};
 pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
+pub use quaternion_expr::{quaternion_rate, rotation_of_quaternion};
 pub use rkmk4::Rkmk4;
 pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,

@@ -1,18 +1,17 @@
-//! The attitude in expressions: the rotation of a stored quaternion of any non-zero size and
-//! the quaternion's rate, as the contact derivation writes them.
-//!
-//! The free body's derivation writes the same two; the layering rule keeps a scene from
-//! reaching into another, and they are too small to earn a shared layer of their own.
+//! The attitude in expressions, as the scenes with a quaternion state (the free body, the
+//! body on a table) write it: the rotation of a stored quaternion of any non-zero size and
+//! the quaternion's rate.
 
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId, Rational, SymError};
 
 /// R of a quaternion q = (w, x, y, z) of any non-zero size, body to space: the homogeneous
 /// form divided by |q|², so a quaternion drifting off the unit sphere still gives a rotation.
+/// The scenes read their stored quaternion through it, so the steppers need not keep it unit.
 ///
 /// # Errors
 /// [`SymError`] if |q|² is refused as a divisor (never for the state's symbols).
-pub(crate) fn rotation_of_quaternion(arena: &mut Arena, q: [ExprId; 4]) -> Result<Mat3, SymError> {
+pub fn rotation_of_quaternion(arena: &mut Arena, q: [ExprId; 4]) -> Result<Mat3, SymError> {
     let [w, x, y, z] = q;
     let sq = q.map(|c| arena.mul(c, c));
     let norm2 = arena.sum(&sq);
@@ -58,11 +57,7 @@ pub(crate) fn rotation_of_quaternion(arena: &mut Arena, q: [ExprId; 4]) -> Resul
 }
 
 /// q̇ = ½ q ⊗ (0, ω) for the body angular velocity ω.
-pub(crate) fn quaternion_rate(
-    arena: &mut Arena,
-    q: [ExprId; 4],
-    omega: [ExprId; 3],
-) -> [ExprId; 4] {
+pub fn quaternion_rate(arena: &mut Arena, q: [ExprId; 4], omega: [ExprId; 3]) -> [ExprId; 4] {
     let [w, x, y, z] = q;
     let [p, r, s] = omega;
     let half = arena.constant(Rational::new(1, 2).unwrap_or(Rational::ONE));
@@ -83,4 +78,30 @@ pub(crate) fn quaternion_rate(
         combine(&[(w, r, true), (z, p, true), (x, s, false)]),
         combine(&[(w, s, true), (x, r, true), (y, p, false)]),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::codegen::Program;
+
+    /// The symbolic rotation agrees with nalgebra's for a quaternion off the unit sphere.
+    #[test]
+    fn rotation_matches_nalgebra_for_any_norm() {
+        let mut a = Arena::new();
+        let q: [ExprId; 4] = std::array::from_fn(|k| a.input(&format!("q{k}")));
+        let r = rotation_of_quaternion(&mut a, q).expect("|q|² is a divisor");
+        let p = Program::lower(&a, r.as_flattened());
+        let raw = [0.3, -1.2, 0.7, 2.1];
+        let out = p.eval(&raw);
+        let unit = nalgebra::UnitQuaternion::new_normalize(nalgebra::Quaternion::new(
+            raw[0], raw[1], raw[2], raw[3],
+        ));
+        let m = unit.to_rotation_matrix();
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!((out[3 * i + j] - m[(i, j)]).abs() < 1e-15, "{i}{j}");
+            }
+        }
+    }
 }
