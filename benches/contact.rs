@@ -264,6 +264,14 @@ fn contact(c: &mut Criterion) {
 
     let mut group = c.benchmark_group("contact_derive");
     for which in ["rolling_disk", "rattleback", "tippe_top", "chaplygin_ball"] {
+        // The derivation alone, then with the lowering to programs: where the time goes.
+        group.bench_function(format!("{which}/derive_only"), |b| {
+            b.iter(|| {
+                let mut a = Arena::new();
+                let s = scene(&mut a, which);
+                black_box(s.derive(&mut a).expect("the scene derives"))
+            })
+        });
         group.bench_function(which, |b| {
             b.iter(|| {
                 let mut a = Arena::new();
