@@ -1,0 +1,152 @@
+//! Events inside a step: a normal force that dips below zero and comes back within one step
+//! of the integrator is a lift-off, not a stretch of negative N run through.
+//!
+//! The eccentric sphere rolling straight over and over (its centre of mass a below the
+//! sphere's centre, spun about a horizontal axis through both) moves in a plane, and energy
+//! alone gives N as a function of the roll angle θ (θ = 0 with the centre of mass lowest):
+//! about the contact point I_P(θ) = I₁ + M (R² + a² − 2 R a cos θ), so
+//! θ̇² = 2 (E − M g (R − a cos θ)) / I_P, I_P θ̈ = −M a sin θ (R θ̇² + g), and with the height
+//! of the centre of mass R − a cos θ, N = M (g + a cos θ θ̇² + a sin θ θ̈). At θ = π,
+//! N = M (g − a θ̇²): a spin a little past √(g/a) there lifts the sphere for a short arc.
+
+use nalgebra::{UnitQuaternion, Vector3};
+use precess::contact::{ContactDynamics, ContactOutcome, ContactRun, Phase, layout};
+use precess::ode::AdaptiveConfig;
+
+use super::reference::{NumBody, ROLLING, model, offset_sphere};
+
+/// The planar closed form of the rolling eccentric sphere at energy `e`.
+struct Planar {
+    m: f64,
+    g: f64,
+    a: f64,
+    r: f64,
+    i1: f64,
+    e: f64,
+}
+
+impl Planar {
+    fn new(body: &NumBody, e: f64) -> Self {
+        Planar {
+            m: body.mass,
+            g: body.gravity,
+            a: -body.center[2],
+            r: 0.02,
+            i1: body.inertia[0][0],
+            e,
+        }
+    }
+
+    fn i_p(&self, th: f64) -> f64 {
+        self.i1 + self.m * (self.r * self.r + self.a * self.a - 2.0 * self.r * self.a * th.cos())
+    }
+
+    fn rate2(&self, th: f64) -> f64 {
+        2.0 * (self.e - self.m * self.g * (self.r - self.a * th.cos())) / self.i_p(th)
+    }
+
+    fn normal(&self, th: f64) -> f64 {
+        let w2 = self.rate2(th);
+        let acc = -self.m * self.a * th.sin() * (self.r * w2 + self.g) / self.i_p(th);
+        self.m * (self.g + self.a * th.cos() * w2 + self.a * th.sin() * acc)
+    }
+
+    /// The root of N in [lo, hi] (N of opposite signs at the ends) by bisection.
+    fn root(&self, (mut lo, mut hi): (f64, f64)) -> f64 {
+        let s = self.normal(lo) < 0.0;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if (self.normal(mid) < 0.0) == s {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        hi
+    }
+
+    /// The time to roll from 0 to θ: ∫ dθ/θ̇ by composite Simpson.
+    fn time_to(&self, th: f64) -> f64 {
+        let n = 20_000;
+        let h = th / n as f64;
+        let f = |x: f64| 1.0 / self.rate2(x).sqrt();
+        let inner: f64 = (1..n)
+            .map(|k| f(k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
+            .sum();
+        h / 3.0 * (f(0.0) + inner + f(th))
+    }
+}
+
+/// The roll angle of a state of the planar motion: the quaternion is a rotation about x.
+fn roll(y: &[f64; 11]) -> f64 {
+    let q = &y[layout::QUATERNION..layout::QUATERNION + 4];
+    2.0 * q[1].atan2(q[0])
+}
+
+#[test]
+fn a_normal_force_that_dips_below_zero_inside_one_step_is_a_lift_off() {
+    let body = offset_sphere();
+    let m = model(&body, ROLLING);
+    let (mass, g, a, r) = (body.mass, body.gravity, -body.center[2], 0.02);
+    // The energy at which N(π) = M (g − a θ̇²) = −10⁻⁴ M g: a dip of 10⁻⁴ of the weight.
+    let w2_top = g * (1.0 + 1e-4) / a;
+    let probe = Planar::new(&body, 0.0);
+    let e = 0.5 * probe.i_p(core::f64::consts::PI) * w2_top + mass * g * (r + a);
+    let planar = Planar::new(&body, e);
+    let w0 = planar.rate2(0.0).sqrt();
+    let pi = core::f64::consts::PI;
+    assert!(planar.normal(pi) < 0.0 && planar.normal(0.5 * pi) > 0.0);
+    let th_star = planar.root((0.5 * pi, pi));
+    let t_star = planar.time_to(th_star);
+    // The arc of negative N, and how long the sphere takes over it (by symmetry about π).
+    let dip = 2.0 * (planar.time_to(pi) - t_star);
+    let y0 = m.rolling_state(
+        [0.0, 0.0],
+        &UnitQuaternion::identity(),
+        &Vector3::new(w0, 0.0, 0.0),
+    );
+    // The model's N at the start against the closed form's.
+    let n0 = m.reaction(Phase::Rolling, &y0).normal;
+    assert!((n0 / planar.normal(0.0) - 1.0).abs() < 1e-12, "{n0}");
+    // The model's own N at the top of the roll (θ = π at the closed form's rate) is
+    // negative, as the closed form says.
+    let top = m.rolling_state(
+        [0.0, 0.0],
+        &UnitQuaternion::from_euler_angles(pi, 0.0, 0.0),
+        &Vector3::new(planar.rate2(pi).sqrt(), 0.0, 0.0),
+    );
+    let n_top = m.reaction(Phase::Rolling, &top).normal;
+    assert!(n_top < 0.0, "{n_top}");
+    assert!((n_top / planar.normal(pi) - 1.0).abs() < 1e-9, "{n_top}");
+    // A loose tolerance: steps long against the dip.
+    let cfg = AdaptiveConfig::with_tol(1e-8, 1e-10);
+    let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
+    let out = run.advance_to(2.0 * t_star).unwrap();
+    let stats = run.stats();
+    println!(
+        "eccentric sphere rolled at ω₀ = {w0} rad/s: N < 0 on θ ∈ [{th_star}, {}] for {dip:e} s \
+         from t* = {t_star}; {} steps over {} s (mean {:e} s); {out:?}",
+        2.0 * pi - th_star,
+        stats.steps,
+        run.t(),
+        run.t() / stats.steps as f64,
+    );
+    let ContactOutcome::LiftOff { t, state } = out else {
+        panic!("ran through a negative normal force: {out:?}");
+    };
+    let th = roll(&state);
+    println!(
+        "lift-off at t = {t} (closed form {t_star}, {:e}), θ = {th} (closed form {th_star}, {:e}); \
+         N there {:e} N",
+        t - t_star,
+        th - th_star,
+        m.reaction(Phase::Rolling, &state).normal
+    );
+    // The dense output is as accurate as the tolerance: the root to about that.
+    assert!((t - t_star).abs() < 1e-7, "t {t} vs {t_star}");
+    assert!((th - th_star).abs() < 1e-6, "θ {th} vs {th_star}");
+    assert_eq!(run.phase(), Phase::Rolling);
+}
