@@ -98,6 +98,8 @@ pub struct ContactRun<'a, D: ?Sized, P = Dop853Pair> {
     switches: Vec<Switch>,
     lifted: Option<(f64, [f64; STATE_LEN])>,
     event_evals: u64,
+    /// The scan's points of the last step, kept so that a step allocates nothing.
+    points: Vec<(f64, f64)>,
 }
 
 impl<'a, D: ContactDynamics + ?Sized> ContactRun<'a, D, Dop853Pair> {
@@ -157,6 +159,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             switches,
             lifted: None,
             event_evals: 0,
+            points: Vec::new(),
         })
     }
 
@@ -327,13 +330,13 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             self.ode.dense_at(times[2])?,
         ];
         let mut first: Option<(f64, Kind)> = None;
-        let mut points = Vec::new();
         for kind in [Kind::LiftOff, Kind::Slips, Kind::Sticks] {
             if !events.applies(kind) {
                 continue;
             }
             let ode = &mut self.ode;
             let count = &mut self.event_evals;
+            let points = &mut self.points;
             let mut g = |t: f64, y: &[f64; STATE_LEN]| {
                 *count += 1;
                 events.checked(kind, t, y)
@@ -351,7 +354,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             };
             points.clear();
             points.push((t_a, g_a));
-            scan_step(&mut at, (t_a, g_a), (t_b, g_b), inner, &mut points)?;
+            scan_step(&mut at, (t_a, g_a), (t_b, g_b), inner, points)?;
             let bracket = points
                 .windows(2)
                 .find(|w| crossing(Direction::Falling, w[0].1, w[1].1).is_some());
@@ -381,12 +384,12 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 /// The events of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
-    /// N falls to zero.
-    LiftOff,
-    /// Rolling needs more friction than μ N.
-    Slips,
-    /// The slip velocity turns against its direction at the step's start.
-    Sticks,
+    /// N falls to zero (index 0 in [`OdeError::NonFiniteEvent`]).
+    LiftOff = 0,
+    /// Rolling needs more friction than μ N (index 1).
+    Slips = 1,
+    /// The slip velocity turns against its direction at the step's start (index 2).
+    Sticks = 2,
 }
 
 struct Events<'b, D: ?Sized> {
