@@ -134,6 +134,7 @@ mod work_precision;
 /// The contact scene: a body on a table.
 mod contact {
     mod errors;
+    mod events;
     mod invariants;
     mod newton_euler;
     mod reference;

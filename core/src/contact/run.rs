@@ -2,10 +2,14 @@
 //! unit sphere after every accepted step, the stick–slip switches and the lift-off located as
 //! events on the pair's dense output.
 //!
-//! The events are looked for at the ends of each step (a sign change of the event function
-//! between them, as [`Event::step_ends_only`](crate::ode::Event::step_ends_only) does): two
-//! crossings inside one step cancel there. Each crossing found is located by bisection on the
-//! dense output down to adjacent doubles.
+//! Every root of the event functions inside a step is looked for, not only a sign change
+//! between the step's ends (where two crossings cancel: a normal force that dips below zero
+//! and comes back within one step, a brief slip): the scan of the generic runs' events
+//! (Chebyshev interpolants of g along the dense output, refined until their error estimate
+//! rules a root out; see [`crate::ode::Event`] and docs/trajectories.md for what it
+//! guarantees) brackets each root, and the first crossing of the step is located on g itself
+//! by regula falsi down to adjacent doubles, handled, and the run restarted there. A step far
+//! from every event costs three states of the dense output and three values of each g.
 
 use nalgebra::Vector3;
 
@@ -14,7 +18,8 @@ use super::error::ContactError;
 use super::state::{STATE_LEN, layout};
 use super::system::ContactSystem;
 use crate::ode::{
-    Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper, check_stop,
+    Adaptive, AdaptiveConfig, Direction, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper,
+    check_stop, crossing, first_pass_times, locate_root, scan_step,
 };
 
 /// How a [`ContactRun::advance_to`] ended.
@@ -92,6 +97,9 @@ pub struct ContactRun<'a, D: ?Sized, P = Dop853Pair> {
     cfg: AdaptiveConfig,
     switches: Vec<Switch>,
     lifted: Option<(f64, [f64; STATE_LEN])>,
+    event_evals: u64,
+    /// The scan's points of the last step, kept so that a step allocates nothing.
+    points: Vec<(f64, f64)>,
 }
 
 impl<'a, D: ContactDynamics + ?Sized> ContactRun<'a, D, Dop853Pair> {
@@ -150,6 +158,8 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             cfg,
             switches,
             lifted: None,
+            event_evals: 0,
+            points: Vec::new(),
         })
     }
 
@@ -178,6 +188,12 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         self.ode.stats()
     }
 
+    /// Evaluations of the event functions so far (N, μN − |F_t|, the slip along its
+    /// direction at the step's start), each on one state: the cost of looking for events.
+    pub fn event_evaluations(&self) -> u64 {
+        self.event_evals
+    }
+
     fn body(&self) -> &'a D {
         self.ode.system().body
     }
@@ -186,7 +202,9 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
     ///
     /// # Errors
     /// [`ContactError::Ode`] as [`Adaptive::step`] (a non-finite or past `t_stop`, a step
-    /// size underflow, a non-finite state, more than `max_steps` attempts in this call).
+    /// size underflow, a non-finite state, more than `max_steps` attempts in this call), and
+    /// [`OdeError::NonFiniteEvent`] for an event function that is not finite inside a step
+    /// (index 0 the normal force, 1 the friction cone, 2 the slip).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<ContactOutcome, ContactError> {
         if let Some((t, state)) = self.lifted {
             return Ok(ContactOutcome::LiftOff { t, state });
@@ -217,7 +235,6 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             let before = *self.y();
             let reference = slip(body, &before);
             self.ode.step(t_stop)?;
-            let after = *self.y();
             let events = Events {
                 body,
                 phase,
@@ -225,17 +242,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
                 mu: body.friction_coefficient().unwrap_or(0.0),
                 reference,
             };
-            let crossed = [Kind::LiftOff, Kind::Slips, Kind::Sticks]
-                .into_iter()
-                .filter(|&k| events.applies(k))
-                .filter(|&k| events.g(k, &before) > 0.0 && events.g(k, &after) <= 0.0);
-            let mut first: Option<(f64, Kind)> = None;
-            for kind in crossed.collect::<Vec<_>>() {
-                let t = self.locate(&events, kind)?;
-                if first.is_none_or(|(t0, _)| t < t0) {
-                    first = Some((t, kind));
-                }
-            }
+            let first = self.first_event(&events, &before)?;
             match first {
                 None => self.project()?,
                 Some((t, kind)) => {
@@ -298,23 +305,67 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         Ok(())
     }
 
-    /// The time in the last step where the event `kind` crosses zero, by bisection on the
-    /// dense output down to adjacent doubles: the first time g ≤ 0.
-    fn locate(&mut self, events: &Events<'_, D>, kind: Kind) -> Result<f64, ContactError> {
-        let (mut lo, mut hi) = (self.ode.last_step_start(), self.ode.t());
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
+    /// The first event of the last step, with its time: for each event that applies, every
+    /// root of its g inside the step is bracketed by the ode module's scan (a Chebyshev
+    /// interpolant of g along the dense output, refined until its error estimate says no
+    /// root hides between its points), and the first falling crossing (g > 0, then g ≤ 0) is
+    /// located on g itself by regula falsi down to adjacent doubles.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteEvent`] for a g that is not finite (index 0 lift-off, 1 the
+    /// cone, 2 the slip); what the dense output returns.
+    fn first_event(
+        &mut self,
+        events: &Events<'_, D>,
+        before: &[f64; STATE_LEN],
+    ) -> Result<Option<(f64, Kind)>, ContactError> {
+        let (t_a, t_b) = (self.ode.last_step_start(), self.ode.t());
+        let after = *self.ode.y();
+        // The first pass's three inner states, shared by every event (lift-off always
+        // applies): the only dense output a step without events near costs.
+        let times = first_pass_times(t_a, t_b);
+        let states = [
+            self.ode.dense_at(times[0])?,
+            self.ode.dense_at(times[1])?,
+            self.ode.dense_at(times[2])?,
+        ];
+        let mut first: Option<(f64, Kind)> = None;
+        for kind in [Kind::LiftOff, Kind::Slips, Kind::Sticks] {
+            if !events.applies(kind) {
+                continue;
             }
-            let y = self.ode.dense_at(mid)?;
-            if events.g(kind, &y) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+            let ode = &mut self.ode;
+            let count = &mut self.event_evals;
+            let points = &mut self.points;
+            let mut g = |t: f64, y: &[f64; STATE_LEN]| {
+                *count += 1;
+                events.checked(kind, t, y)
+            };
+            let g_a = g(t_a, before)?;
+            let g_b = g(t_b, &after)?;
+            let inner = [
+                g(times[0], &states[0])?,
+                g(times[1], &states[1])?,
+                g(times[2], &states[2])?,
+            ];
+            let mut at = |t: f64| {
+                let y = ode.dense_at(t)?;
+                g(t, &y)
+            };
+            points.clear();
+            points.push((t_a, g_a));
+            scan_step(&mut at, (t_a, g_a), (t_b, g_b), inner, points)?;
+            let bracket = points
+                .windows(2)
+                .find(|w| crossing(Direction::Falling, w[0].1, w[1].1).is_some());
+            if let Some(w) = bracket {
+                let t = locate_root(&mut at, w[0], w[1])?;
+                if first.is_none_or(|(t0, _)| t < t0) {
+                    first = Some((t, kind));
+                }
             }
         }
-        Ok(hi)
+        Ok(first)
     }
 
     /// Puts q back on the unit sphere and continues from there.
@@ -333,12 +384,12 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 /// The events of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
-    /// N falls to zero.
-    LiftOff,
-    /// Rolling needs more friction than μ N.
-    Slips,
-    /// The slip velocity turns against its direction at the step's start.
-    Sticks,
+    /// N falls to zero (index 0 in [`OdeError::NonFiniteEvent`]).
+    LiftOff = 0,
+    /// Rolling needs more friction than μ N (index 1).
+    Slips = 1,
+    /// The slip velocity turns against its direction at the step's start (index 2).
+    Sticks = 2,
 }
 
 struct Events<'b, D: ?Sized> {
@@ -355,6 +406,20 @@ impl<D: ContactDynamics + ?Sized> Events<'_, D> {
             Kind::LiftOff => true,
             Kind::Slips => self.stick_slip && self.phase == Phase::Rolling,
             Kind::Sticks => self.stick_slip && self.phase == Phase::Sliding,
+        }
+    }
+
+    /// The event function at time `t`, refused when not finite.
+    fn checked(&self, kind: Kind, t: f64, y: &[f64; STATE_LEN]) -> Result<f64, OdeError> {
+        let value = self.g(kind, y);
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(OdeError::NonFiniteEvent {
+                index: kind as usize,
+                t,
+                value,
+            })
         }
     }
 

@@ -40,6 +40,7 @@ pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub use events::{Direction, Event, EventHit};
+pub(crate) use events::{crossing, locate_root};
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
 pub use pairs::{
@@ -48,6 +49,7 @@ pub use pairs::{
 pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;
+pub(crate) use scan::{first_pass_times, scan_step};
 pub use stepper::Stepper;
 pub(crate) use stepper::inherent_stepper;
 pub use system::{FnSystem, Stats, System};

@@ -34,6 +34,12 @@ fn an_eccentric_sphere_slips_and_sticks_where_the_cone_says() {
     }
     let switches = run.switches();
     println!(
+        "eccentric sphere, μ = {mu}: {} steps, {} rhs, {} event evaluations",
+        run.stats().steps,
+        run.stats().rhs_evals,
+        run.event_evaluations()
+    );
+    println!(
         "eccentric sphere, μ = {mu}: {} switches, first at {:?}; largest energy rise {rise:e} J of {energy}",
         switches.len(),
         switches
@@ -76,9 +82,13 @@ fn a_slip_that_stops_where_rolling_cannot_hold_slides_on() {
     let out = run.advance_to(1.0).unwrap();
     let e1 = m.energy(run.phase(), run.y());
     println!(
-        "eccentric sphere, μ = {mu}: {out:?} with {} switches, phase {:?}, energy {e0} → {e1}",
+        "eccentric sphere, μ = {mu}: {out:?} with {} switches, phase {:?}, energy {e0} → {e1}; \
+         {} steps, {} rhs, {} event evaluations",
         run.switches().len(),
-        run.phase()
+        run.phase(),
+        run.stats().steps,
+        run.stats().rhs_evals,
+        run.event_evaluations()
     );
     assert_eq!(out, ContactOutcome::Reached { t: 1.0 });
     assert!(e1 < e0);
