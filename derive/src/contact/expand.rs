@@ -197,13 +197,7 @@ impl Method<'_> {
         outputs: &[ExprId],
         build: impl FnOnce(&[TokenStream]) -> TokenStream,
     ) -> TokenStream {
-        let reads: Vec<(ExprId, TokenStream)> = self
-            .state
-            .iter()
-            .enumerate()
-            .map(|(k, &e)| (e, quote!(y[#k])))
-            .collect();
-        let Emitted { lets, outputs } = self.low.lower_reading(arena, outputs, &reads);
+        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
         let out = build(&outputs);
         quote!({ #lets #out })
     }

@@ -112,6 +112,17 @@ impl<'a> Lowering<'a> {
         }
         symbols.lower(self.cx, self.ident, arena, outputs)
     }
+
+    /// `outputs` as straight-line Rust reading entry k of the state array `y` for the k-th
+    /// expression of `state` (the free body's and the contact's methods over their ODE state).
+    pub fn lower_state(&self, arena: &Arena, outputs: &[ExprId], state: &[ExprId]) -> Emitted {
+        let reads: Vec<(ExprId, TokenStream)> = state
+            .iter()
+            .enumerate()
+            .map(|(k, &e)| (e, quote!(y[#k])))
+            .collect();
+        self.lower_reading(arena, outputs, &reads)
+    }
 }
 
 /// The struct fields read as the arena's parameters, in the order first used.
