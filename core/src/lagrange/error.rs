@@ -170,6 +170,19 @@ pub enum LagrangeError {
         /// only Δ was evaluated (a rate that came out infinite or NaN).
         scale: f64,
     },
+    /// The reduced mass matrix K = Sᵀ M S of Maggi's equations is singular at the state:
+    /// the free speeds do not determine a motion (a massless mechanism, or M singular on
+    /// the constraints' tangent space).
+    #[error(
+        "the reduced mass matrix Sᵀ M S is singular at this state (determinant {determinant:e}, \
+         scale {scale:e})"
+    )]
+    SingularReducedMass {
+        /// det K at the state.
+        determinant: f64,
+        /// The Frobenius norm of K, the size the determinant is judged against.
+        scale: f64,
+    },
     /// The stepper failed while advancing a constrained model.
     #[error(transparent)]
     Ode(#[from] OdeError),

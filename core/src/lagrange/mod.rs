@@ -12,6 +12,8 @@
 //!   eliminates the dependent speeds (Maggi's equations) and derives the multipliers;
 //!   [`ConstrainedModel`] runs the result and closes loops by coordinate partitioning.
 //!   `docs/constraints.md` says why this form.
+//! - [`Partition`] is the same projection in floating point, for constraint blocks whose
+//!   symbolic elimination swells (the Whipple bicycle's rolling wheels).
 
 mod augmented;
 mod block_solve;
@@ -21,6 +23,7 @@ mod equations;
 mod error;
 mod model;
 mod partition;
+mod projection;
 
 pub use augmented::op_count;
 pub use block_solve::{Accelerations, MAX_BLOCK};
@@ -30,3 +33,4 @@ pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
 pub use model::{ConstrainedModel, ConstrainedSystem};
 pub use partition::{MAX_NEWTON, SINGULAR_BLOCK, START_RESIDUAL};
+pub use projection::{Partition, Projected};

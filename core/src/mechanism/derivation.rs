@@ -133,13 +133,13 @@ impl MechanismDerivation {
     }
 }
 
-/// The Lagrangian pieces shared by the routes.
-struct Lagrangian {
-    coords: Coordinates,
-    time: ExprId,
-    kinetic: ExprId,
-    potential: ExprId,
-    forces: Vec<ExprId>,
+/// The Lagrangian pieces shared by the routes (and the rolling derivation).
+pub(crate) struct Lagrangian {
+    pub(crate) coords: Coordinates,
+    pub(crate) time: ExprId,
+    pub(crate) kinetic: ExprId,
+    pub(crate) potential: ExprId,
+    pub(crate) forces: Vec<ExprId>,
 }
 
 fn half(arena: &mut Arena) -> ExprId {
@@ -172,7 +172,7 @@ fn non_conservative_joint_forces(
 }
 
 impl MechanismScene {
-    fn lagrangian(
+    pub(crate) fn lagrangian(
         &self,
         arena: &mut Arena,
     ) -> Result<(Lagrangian, Vec<BodyKinematics>), MechanismError> {

@@ -166,6 +166,64 @@ pub enum MechanismError {
         /// The rule broken, numbering the part within the body.
         error: BodyError,
     },
+    /// The floor's `up` is not a signed ground axis.
+    #[error("the floor's `up` must be a signed ground axis (x, -x, y, -y, z or -z)")]
+    FloorNotAxis,
+    /// A rolling wheel names a body that does not exist.
+    #[error("a rolling wheel names body number {body}, but there are {count} bodies")]
+    UnknownWheelBody {
+        /// The index given.
+        body: usize,
+        /// The number of bodies.
+        count: usize,
+    },
+    /// A free speed names no coordinate, or one named already.
+    #[error("free speed `{speed}` is {}", if *repeated { "named twice".to_owned() } else { format!("not a coordinate (coordinates: {})", coordinates.join(", ")) })]
+    UnknownSpeed {
+        /// The name given.
+        speed: String,
+        /// Whether it is a repeat (else it names no coordinate).
+        repeated: bool,
+        /// The coordinates there are.
+        coordinates: Vec<String>,
+    },
+    /// The free speeds are not as many as the coordinates less the constraint rows.
+    #[error(
+        "{got} free speeds named for {coordinates} coordinates under {rows} rolling \
+         constraint rows: name {}", coordinates.saturating_sub(*rows)
+    )]
+    SpeedCount {
+        /// Speeds named.
+        got: usize,
+        /// Coordinates.
+        coordinates: usize,
+        /// Constraint rows of the wheels.
+        rows: usize,
+    },
+    /// A rolling disk lies flat (or past it): the cosine of its lean from the vertical,
+    /// |d| = √(1 − (up·n)²), is not positive, and its contact point is undefined.
+    #[error("rolling wheel {wheel} lies flat: the cosine of its lean is {tilt:e}, it must be > 0")]
+    WheelFlat {
+        /// The wheel, in declaration order.
+        wheel: usize,
+        /// Its |d|.
+        tilt: f64,
+    },
+    /// A rolling model built for other sizes than its derivation's.
+    #[error(
+        "the rolling derivation has {coordinates} coordinates, {rows} constraint rows and \
+         {speeds} free speeds; the model was asked for {asked:?}"
+    )]
+    RollingSizes {
+        /// n.
+        coordinates: usize,
+        /// m.
+        rows: usize,
+        /// k.
+        speeds: usize,
+        /// [N, M, K] of the model's type.
+        asked: [usize; 3],
+    },
     /// A parameter could not be bound.
     #[error(transparent)]
     Binding(#[from] BindingError),

@@ -73,7 +73,7 @@ pub(crate) fn unit_axis(arena: &mut Arena, axis: &[ExprId; 3]) -> Result<[ExprId
 }
 
 /// `(k, sign > 0)` when `axis` is a non-zero constant times the k-th basis vector.
-fn basis_axis(arena: &Arena, axis: &[ExprId; 3]) -> Option<(usize, bool)> {
+pub(crate) fn basis_axis(arena: &Arena, axis: &[ExprId; 3]) -> Option<(usize, bool)> {
     let zero = arena.zero();
     let nonzero: Vec<usize> = (0..3).filter(|&k| axis[k] != zero).collect();
     let [k] = nonzero.as_slice() else {

@@ -18,6 +18,8 @@
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
 //! - [`MechanismQuantities`] gives a run's trajectory the energy, power and conserved momenta
 //!   per sample, named as a top's.
+//! - [`rolling`]: bodies whose wheels roll without slip on a floor (nonholonomic rows, the
+//!   Whipple bicycle), [`MechanismScene::derive_rolling`] and [`rolling::RollingDynamics`].
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
@@ -31,6 +33,7 @@ mod interpreted;
 mod kinematics;
 mod quantities;
 pub mod recursive;
+pub mod rolling;
 mod rules;
 mod scene;
 mod taylor;

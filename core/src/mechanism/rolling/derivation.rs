@@ -1,0 +1,261 @@
+//! From a mechanism and its rolling wheels to the pieces of Maggi's equations: M(q) and
+//! f(q, q̇) of the unconstrained tree, the constraint rows A(q) q̇ = 0 of the wheels, Ȧq̇,
+//! and what a run reports (contact points, their velocities, the energy).
+//!
+//! Each wheel gives, from its contact point P (ground axes) and the material velocity
+//! v_P = v_hub + ω × (P − hub) of the body's point at P:
+//!
+//! - two nonholonomic rows: the horizontal components of v_P are zero (no slip), each row
+//!   the coefficients ∂v_P/∂q̇;
+//! - one holonomic row: up·P = 0 (the wheel touches the floor), differentiated by the
+//!   engine, unless up·P is identically zero, which happens when the joints already hold
+//!   the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is its
+//!   contact point). Then the vertical component of v_P vanishes with it.
+//!
+//! The disk's contact needs |d| = √(1 − (up·n)²). When 1 − (up·n)² expands to a monomial
+//! square (cos²φ for a wheel whose axle only leans by φ) the root is taken exactly, so that
+//! such identities show; otherwise it stays a square root. The root is the cosine of the
+//! wheel's lean from the vertical and is reported as a tilt that must stay positive.
+
+use super::scene::{RollingScene, WheelSurface};
+use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
+use crate::mechanism::error::MechanismError;
+use crate::mechanism::kinematics::{basis_axis, unit_axis};
+use crate::mechanism::scene::MechanismScene;
+use crate::sym::mat3::{cross, dot, mat_vec};
+use crate::sym::{Arena, ExprId, Node};
+
+/// Everything derived from a mechanism whose wheels roll.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RollingDerivation {
+    /// The unconstrained equations M q̈ = f of the tree (every coordinate).
+    pub equations: EquationsOfMotion,
+    /// The time symbol.
+    pub time: ExprId,
+    /// The wheels' constraint rows A q̇ = 0 (per wheel: the horizontal rows, then the
+    /// height row where there is one).
+    pub constraints: Constraints,
+    /// Ȧq̇, one per row.
+    pub rate_terms: Vec<ExprId>,
+    /// The free speeds' coordinates, in the declared order.
+    pub independent: Vec<usize>,
+    /// The other coordinates, in coordinate order, one per row.
+    pub dependent: Vec<usize>,
+    /// Each wheel's contact point, ground axes.
+    pub contact_points: Vec<[ExprId; 3]>,
+    /// Each wheel's contact point's material velocity, ground axes (zero on a rolling
+    /// motion: the check of the constraints).
+    pub contact_velocities: Vec<[ExprId; 3]>,
+    /// Each disk's |d| = cos of its lean from the vertical (1 for a sphere): must be > 0.
+    pub tilts: Vec<ExprId>,
+    /// T.
+    pub kinetic: ExprId,
+    /// V (gravity and springs).
+    pub potential: ExprId,
+    /// Σ Q_i q̇_i of the non-conservative loads.
+    pub power: ExprId,
+}
+
+impl RollingDerivation {
+    /// The number of constraint rows m.
+    pub fn rows(&self) -> usize {
+        self.constraints.len()
+    }
+}
+
+/// √e exactly when e is a monomial square c · Π b_i^(2k_i) with c a rational square, the
+/// root taken with each base positive.
+fn monomial_root(arena: &mut Arena, e: ExprId) -> Option<ExprId> {
+    match arena.node(e).clone() {
+        Node::Const(r) => r.sqrt_exact().map(|root| arena.constant(root)),
+        Node::Pow(b, n) if n % 2 == 0 => arena.powi(b, n / 2).ok(),
+        Node::Mul(factors) => {
+            let roots: Option<Vec<ExprId>> =
+                factors.iter().map(|&f| monomial_root(arena, f)).collect();
+            roots.map(|r| arena.product(&r))
+        }
+        _ => None,
+    }
+}
+
+impl MechanismScene {
+    /// Derives the mechanism with its wheels rolling on the floor.
+    ///
+    /// # Errors
+    /// As [`MechanismScene::validate`]; [`MechanismError::FloorNotAxis`],
+    /// [`MechanismError::UnknownWheelBody`], [`MechanismError::UnknownSpeed`],
+    /// [`MechanismError::SpeedCount`]; [`MechanismError::Sym`] and
+    /// [`MechanismError::Lagrange`] if the engine fails.
+    pub fn derive_rolling(
+        &self,
+        arena: &mut Arena,
+        rolling: &RollingScene,
+    ) -> Result<RollingDerivation, MechanismError> {
+        let Some((up_axis, up_positive)) = basis_axis(arena, &rolling.up) else {
+            return Err(MechanismError::FloorNotAxis);
+        };
+        let (lag, kin) = self.lagrangian(arena)?;
+        let coords = lag.coords.clone();
+        let n = coords.len();
+        let sign = if up_positive { 1 } else { -1 };
+        let up = {
+            let mut e = [arena.zero(); 3];
+            e[up_axis] = arena.integer(sign);
+            e
+        };
+        let horizontal: Vec<usize> = (0..3).filter(|&k| k != up_axis).collect();
+        let mut constraints = Constraints::new();
+        let mut contact_points = Vec::new();
+        let mut contact_velocities = Vec::new();
+        let mut tilts = Vec::new();
+        for wheel in &rolling.wheels {
+            let Some(k) = kin.get(wheel.body) else {
+                return Err(MechanismError::UnknownWheelBody {
+                    body: wheel.body,
+                    count: kin.len(),
+                });
+            };
+            let (center, arm, tilt) = match wheel.surface {
+                WheelSurface::Sphere { center, radius } => {
+                    let arm = up.map(|u| {
+                        let t = arena.mul(radius, u);
+                        arena.neg(t)
+                    });
+                    (center, arm, arena.one())
+                }
+                WheelSurface::Disk {
+                    center,
+                    axle,
+                    radius,
+                } => {
+                    let local = unit_axis(arena, &axle)?;
+                    let axle = mat_vec(arena, &k.rotation, &local).map(|e| arena.expand(e));
+                    let along = dot(arena, &up, &axle);
+                    let along = arena.expand(along);
+                    let d = [0, 1, 2].map(|i| {
+                        let t = arena.mul(along, axle[i]);
+                        let t = arena.sub(up[i], t);
+                        arena.expand(t)
+                    });
+                    let one = arena.one();
+                    let sq = arena.mul(along, along);
+                    let d2 = arena.sub(one, sq);
+                    let d2 = arena.expand(d2);
+                    let root = match monomial_root(arena, d2) {
+                        Some(r) => r,
+                        None => arena.sqrt(d2)?,
+                    };
+                    let scale = arena.div(radius, root)?;
+                    let arm = d.map(|di| {
+                        let t = arena.mul(scale, di);
+                        let t = arena.neg(t);
+                        arena.expand(t)
+                    });
+                    (center, arm, root)
+                }
+            };
+            let lever = mat_vec(arena, &k.rotation, &center);
+            let hub = [0, 1, 2].map(|i| {
+                let t = arena.add(k.origin[i], lever[i]);
+                arena.expand(t)
+            });
+            let point = [0, 1, 2].map(|i| {
+                let t = arena.add(hub[i], arm[i]);
+                arena.expand(t)
+            });
+            // v_hub = v_c + ω × (hub − c), ω in ground axes.
+            let omega = mat_vec(arena, &k.rotation, &k.omega);
+            let from_center = [0, 1, 2].map(|i| arena.sub(hub[i], k.center[i]));
+            let spin = cross(arena, &omega, &from_center);
+            let v_hub = [0, 1, 2].map(|i| arena.add(k.center_velocity[i], spin[i]));
+            let turn = cross(arena, &omega, &arm);
+            let velocity = [0, 1, 2].map(|i| {
+                let t = arena.add(v_hub[i], turn[i]);
+                arena.expand(t)
+            });
+            for &h in &horizontal {
+                let row: Vec<ExprId> = coords
+                    .rates
+                    .iter()
+                    .map(|&r| match arena.as_symbol(r) {
+                        Some(s) => {
+                            let d = arena.diff(velocity[h], s);
+                            arena.expand(d)
+                        }
+                        None => arena.zero(),
+                    })
+                    .collect();
+                if row.iter().all(|&e| e == arena.zero()) {
+                    continue;
+                }
+                let zero = arena.zero();
+                constraints.nonholonomic(arena, &coords, &row, zero)?;
+            }
+            let height = dot(arena, &up, &point);
+            let height = arena.expand(height);
+            if height != arena.zero() {
+                constraints.holonomic(arena, &coords, height)?;
+            }
+            contact_points.push(point);
+            contact_velocities.push(velocity);
+            tilts.push(tilt);
+        }
+        let m = constraints.len();
+        let names = self.coordinate_names();
+        let mut independent = Vec::with_capacity(rolling.speeds.len());
+        for speed in &rolling.speeds {
+            let position = names.iter().position(|c| c == speed);
+            let repeated = position.is_some_and(|i| independent.contains(&i));
+            match position {
+                Some(i) if !repeated => independent.push(i),
+                _ => {
+                    return Err(MechanismError::UnknownSpeed {
+                        speed: speed.clone(),
+                        repeated,
+                        coordinates: names.iter().map(|c| (*c).to_owned()).collect(),
+                    });
+                }
+            }
+        }
+        if independent.len() + m != n {
+            return Err(MechanismError::SpeedCount {
+                got: independent.len(),
+                coordinates: n,
+                rows: m,
+            });
+        }
+        let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
+        let rate_terms = constraints.rate_terms(arena, &coords);
+        let l = arena.sub(lag.kinetic, lag.potential);
+        let equations = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
+        let power_terms: Vec<ExprId> = lag
+            .forces
+            .iter()
+            .zip(&coords.rates)
+            .map(|(&f, &r)| arena.mul(f, r))
+            .collect();
+        let power = arena.sum(&power_terms);
+        Ok(RollingDerivation {
+            equations,
+            time: lag.time,
+            constraints,
+            rate_terms,
+            independent,
+            dependent,
+            contact_points,
+            contact_velocities,
+            tilts,
+            kinetic: lag.kinetic,
+            potential: lag.potential,
+            power,
+        })
+    }
+}
+
+/// The coordinates of a rolling derivation.
+impl RollingDerivation {
+    /// q, q̇ and q̈ symbols.
+    pub fn coordinates(&self) -> &Coordinates {
+        &self.equations.coords
+    }
+}

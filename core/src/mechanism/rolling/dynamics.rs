@@ -1,0 +1,243 @@
+//! The run-time side of a rolling mechanism, shared by the derive's generated code and the
+//! interpreted [`super::RollingModel`]: a type gives the numbers of M, f, A, Ȧq̇, the
+//! wheels' heights and tilts; the provided methods finish Maggi's projection
+//! ([`Partition`]) and put the wheels on the floor.
+//!
+//! The state is `[q₀ … q_{n−1}, u₀ … u_{k−1}]`: every coordinate, then the free speeds.
+
+use nalgebra::{SMatrix, SVector};
+
+use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition};
+use crate::mechanism::error::MechanismError;
+use crate::ode::System;
+
+/// The tolerance on the wheels' heights that [`RollingDynamics::close_contacts`] reaches
+/// (metres, or the length unit of the description).
+pub const CONTACT_TOLERANCE: f64 = 1e-14;
+
+/// A mechanism with n coordinates whose wheels give m constraint rows, leaving k free
+/// speeds. Implemented by `#[derive(Mechanism)]` for a struct with `rolls = ..` bodies and by
+/// [`super::RollingModel`].
+pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
+    /// Which coordinates' rates are free and which follow.
+    fn partition(&self) -> Partition<M, K>;
+
+    /// The coordinates' names, in state order.
+    fn coordinate_names(&self) -> [&'static str; N];
+
+    /// M(q) and f(t, q, q̇) of the unconstrained tree.
+    fn mass_forcing(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> (SMatrix<f64, N, N>, SVector<f64, N>);
+
+    /// A(q) and Ȧq̇.
+    fn constraint_rows(
+        &self,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> (SMatrix<f64, M, N>, SVector<f64, M>);
+
+    /// Which rows are holonomic (a wheel's height), the others nonholonomic (no slip).
+    fn holonomic_rows(&self) -> [bool; M];
+
+    /// Each row's position function: a wheel's height above the floor for a holonomic row,
+    /// 0 for a nonholonomic one.
+    fn heights(&self, q: &[f64; N]) -> [f64; M];
+
+    /// The wheel with the smallest tilt |d| (the cosine of a disk's lean from the
+    /// vertical; 1 for a ball) and that tilt.
+    fn lowest_tilt(&self, q: &[f64; N]) -> (usize, f64);
+
+    /// The total energy T + V.
+    fn energy(&self, q: &[f64; N], qdot: &[f64; N]) -> f64;
+
+    /// The largest speed of a wheel's material contact point (zero on a rolling motion).
+    fn contact_speed(&self, q: &[f64; N], qdot: &[f64; N]) -> f64;
+
+    /// Checks a configuration: finite, and every disk standing (tilt > 0).
+    ///
+    /// # Errors
+    /// [`MechanismError::NonFinite`], [`MechanismError::WheelFlat`].
+    fn check_configuration(&self, q: &[f64; N]) -> Result<(), MechanismError> {
+        if q.iter().any(|v| !v.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "coordinates",
+                values: q.to_vec(),
+            });
+        }
+        let (wheel, tilt) = self.lowest_tilt(q);
+        if tilt.is_nan() || tilt <= 0.0 {
+            return Err(MechanismError::WheelFlat { wheel, tilt });
+        }
+        Ok(())
+    }
+
+    /// Every rate q̇ from the coordinates and the free speeds.
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::check_configuration`]; [`MechanismError::NonFinite`] for a
+    /// speed; [`LagrangeError::SingularAtState`] where the dependent block is singular.
+    fn rates(&self, q: &[f64; N], u: &[f64; K]) -> Result<[f64; N], MechanismError> {
+        self.check_configuration(q)?;
+        if u.iter().any(|v| !v.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "free speeds",
+                values: u.to_vec(),
+            });
+        }
+        let (a, _) = self.constraint_rows(q, &[0.0; N]);
+        Ok(self.partition().rates(&a, u)?.rates)
+    }
+
+    /// The rates and the free speeds' accelerations at (t, q, u).
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::rates`]; [`LagrangeError::SingularReducedMass`] where
+    /// Sᵀ M S is singular.
+    fn derivative(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        u: &[f64; K],
+    ) -> Result<([f64; N], [f64; K]), MechanismError> {
+        self.check_configuration(q)?;
+        let partition = self.partition();
+        let (a, _) = self.constraint_rows(q, &[0.0; N]);
+        let projected = partition.rates(&a, u)?;
+        let (a, rate_terms) = self.constraint_rows(q, &projected.rates);
+        let (mass, forcing) = self.mass_forcing(t, q, &projected.rates);
+        let ud = partition.accelerations(&mass, &forcing, &a, &rate_terms, &projected)?;
+        Ok((projected.rates, ud))
+    }
+
+    /// The constraints' multipliers λ at (t, q, u): M q̈ = f + Aᵀ λ. For a wheel's two
+    /// horizontal rows they are the friction force's components (ground axes) that keep it
+    /// rolling, for its height row the normal force.
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::derivative`].
+    fn multipliers(&self, t: f64, q: &[f64; N], u: &[f64; K]) -> Result<[f64; M], MechanismError> {
+        let partition = self.partition();
+        let (rates, ud) = self.derivative(t, q, u)?;
+        let (a, rate_terms) = self.constraint_rows(q, &rates);
+        let projected = partition.rates(&a, u)?;
+        let q_ddot = partition.full_accelerations(&a, &rate_terms, &projected, &ud)?;
+        let (mass, forcing) = self.mass_forcing(t, q, &rates);
+        Ok(partition.multipliers(&mass, &forcing, &a, &q_ddot)?)
+    }
+
+    /// Puts every wheel on the floor: Newton's method on the height rows over the dependent
+    /// coordinates (the least-norm step), from `q`. Returns the iterations taken.
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::check_configuration`]; [`LagrangeError::LoopNotClosed`] if a
+    /// height stays above [`CONTACT_TOLERANCE`] after [`MAX_NEWTON`] iterations;
+    /// [`LagrangeError::SingularAtState`] if the heights do not depend on the dependent
+    /// coordinates there.
+    fn close_contacts(&self, q: &mut [f64; N]) -> Result<usize, MechanismError> {
+        let partition = self.partition();
+        let mut residual = f64::NAN;
+        for k in 0..MAX_NEWTON {
+            self.check_configuration(q)?;
+            let h = self.heights(q);
+            residual = h.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            if residual <= CONTACT_TOLERANCE {
+                return Ok(k);
+            }
+            // Only the holonomic rows: their Jacobian in the dependent coordinates.
+            let (a, _) = self.constraint_rows(q, &[0.0; N]);
+            let holonomic = self.holonomic_rows();
+            let rows: Vec<usize> = (0..M).filter(|&r| holonomic[r]).collect();
+            let jacobian = nalgebra::DMatrix::from_fn(rows.len(), M, |i, c| {
+                a[(rows[i], partition.dependent[c])]
+            });
+            let values = nalgebra::DVector::from_fn(rows.len(), |i, _| h[rows[i]]);
+            let normal = &jacobian * jacobian.transpose();
+            let singular = LagrangeError::SingularAtState {
+                determinant: normal.determinant(),
+                scale: normal.norm(),
+            };
+            let Some(y) = normal.lu().solve(&values) else {
+                return Err(singular.into());
+            };
+            let step = jacobian.transpose() * y;
+            if step.iter().any(|v| !v.is_finite()) {
+                return Err(singular.into());
+            }
+            for (c, &d) in partition.dependent.iter().enumerate() {
+                q[d] -= step[c];
+            }
+        }
+        Err(LagrangeError::LoopNotClosed {
+            residual,
+            iterations: MAX_NEWTON,
+            tolerance: CONTACT_TOLERANCE,
+        }
+        .into())
+    }
+
+    /// This mechanism as a [`System`] over the state (q, u) of S = n + k entries (a state
+    /// where the projection fails yields NaN, which the steppers report).
+    fn rolling_system<const S: usize>(&self) -> RollingSystem<'_, Self, N, M, K, S>
+    where
+        Self: Sized,
+    {
+        RollingSystem { model: self }
+    }
+}
+
+/// A rolling mechanism as an ODE system: `y = (q, u)`, `y' = (q̇, u̇)`.
+#[derive(Debug)]
+pub struct RollingSystem<'a, T, const N: usize, const M: usize, const K: usize, const S: usize> {
+    model: &'a T,
+}
+
+impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Clone
+    for RollingSystem<'_, T, N, M, K, S>
+{
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Copy
+    for RollingSystem<'_, T, N, M, K, S>
+{
+}
+
+/// Splits a state (q, u) of S = n + k entries.
+pub fn split_rolling<const N: usize, const K: usize, const S: usize>(
+    y: &[f64; S],
+) -> ([f64; N], [f64; K]) {
+    const {
+        assert!(
+            S == N + K,
+            "a rolling state holds n coordinates and k speeds"
+        )
+    };
+    let mut q = [0.0; N];
+    let mut u = [0.0; K];
+    q.copy_from_slice(&y[..N]);
+    u.copy_from_slice(&y[N..]);
+    (q, u)
+}
+
+impl<T, const N: usize, const M: usize, const K: usize, const S: usize> System<S>
+    for RollingSystem<'_, T, N, M, K, S>
+where
+    T: RollingDynamics<N, M, K>,
+{
+    fn rhs(&self, t: f64, y: &[f64; S], dydt: &mut [f64; S]) {
+        let (q, u) = split_rolling::<N, K, S>(y);
+        match self.model.derivative(t, &q, &u) {
+            Ok((qd, ud)) => {
+                dydt[..N].copy_from_slice(&qd);
+                dydt[N..].copy_from_slice(&ud);
+            }
+            Err(_) => dydt.fill(f64::NAN),
+        }
+    }
+}

@@ -1,0 +1,234 @@
+//! A rolling derivation evaluated at run time through the code generator's interpreter: the
+//! path for mechanisms built without the macro, and the reference the tests use.
+
+use nalgebra::{SMatrix, SVector};
+
+use super::derivation::RollingDerivation;
+use super::dynamics::RollingDynamics;
+use crate::codegen::{Bindings, Program};
+use crate::lagrange::Partition;
+use crate::mechanism::error::MechanismError;
+use crate::sym::{Arena, ExprId, SymbolId};
+
+/// A rolling mechanism's M, f, A, Ȧq̇, heights and reports, lowered once and interpreted,
+/// for n = `N` coordinates, m = `M` rows and k = `K` free speeds.
+#[derive(Debug)]
+pub struct RollingModel<const N: usize, const M: usize, const K: usize> {
+    /// Outputs: M row-major (n²), then f (n).
+    dynamics: Program,
+    /// Outputs: A row-major (m n), then Ȧq̇ (m).
+    rows: Program,
+    /// Outputs: the heights (m, zero in nonholonomic rows), then the tilts (one per wheel).
+    positions: Program,
+    /// Outputs: T + V, then every wheel's contact velocity (three each).
+    reports: Program,
+    holonomic: [bool; M],
+    wheels: usize,
+    partition: Partition<M, K>,
+    names: [&'static str; N],
+    q: Vec<SymbolId>,
+    rates: Vec<SymbolId>,
+    time: Option<SymbolId>,
+    bindings: Bindings,
+}
+
+impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
+    /// Lowers `derivation` with a value for each parameter it reads. `names` are the
+    /// coordinates' names (kept for reports).
+    ///
+    /// # Errors
+    /// [`MechanismError::RollingSizes`] if the derivation's sizes are not (N, M, K);
+    /// [`MechanismError::Binding`] for a parameter missing, unknown or not finite.
+    pub fn new(
+        arena: &mut Arena,
+        derivation: &RollingDerivation,
+        names: [&'static str; N],
+        parameters: &[(&str, f64)],
+    ) -> Result<RollingModel<N, M, K>, MechanismError> {
+        let coords = derivation.coordinates();
+        let (n, m, k) = (
+            coords.len(),
+            derivation.rows(),
+            derivation.independent.len(),
+        );
+        if (n, m, k) != (N, M, K) {
+            return Err(MechanismError::RollingSizes {
+                coordinates: n,
+                rows: m,
+                speeds: k,
+                asked: [N, M, K],
+            });
+        }
+        let eqs = &derivation.equations;
+        let mut dyn_out: Vec<ExprId> = eqs.mass.iter().flatten().copied().collect();
+        dyn_out.extend(&eqs.forcing);
+        let mut row_out: Vec<ExprId> = derivation
+            .constraints
+            .coefficients
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        row_out.extend(&derivation.rate_terms);
+        let zero = arena.zero();
+        let mut pos_out: Vec<ExprId> = derivation
+            .constraints
+            .positions
+            .iter()
+            .map(|p| p.unwrap_or(zero))
+            .collect();
+        pos_out.extend(&derivation.tilts);
+        let mut report_out = vec![arena.add(derivation.kinetic, derivation.potential)];
+        report_out.extend(derivation.contact_velocities.iter().flatten());
+        let arena = &*arena;
+        let programs = [
+            Program::lower(arena, &dyn_out),
+            Program::lower(arena, &row_out),
+            Program::lower(arena, &pos_out),
+            Program::lower(arena, &report_out),
+        ];
+        let symbol = |e: ExprId| arena.as_symbol(e);
+        let q: Vec<SymbolId> = coords.q.iter().filter_map(|&e| symbol(e)).collect();
+        let rates: Vec<SymbolId> = coords.rates.iter().filter_map(|&e| symbol(e)).collect();
+        let time = arena.as_symbol(derivation.time);
+        let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).copied().collect();
+        supplied.extend(time);
+        let bindings = Bindings::new(arena, &programs, &supplied, parameters)?;
+        let mut holonomic = [false; M];
+        for (h, p) in holonomic.iter_mut().zip(&derivation.constraints.positions) {
+            *h = p.is_some();
+        }
+        let mut independent = [0; K];
+        independent.copy_from_slice(&derivation.independent);
+        let mut dependent = [0; M];
+        dependent.copy_from_slice(&derivation.dependent);
+        let [dynamics, rows, positions, reports] = programs;
+        Ok(RollingModel {
+            dynamics,
+            rows,
+            positions,
+            reports,
+            holonomic,
+            wheels: derivation.tilts.len(),
+            partition: Partition {
+                independent,
+                dependent,
+            },
+            names,
+            q,
+            rates,
+            time,
+            bindings,
+        })
+    }
+
+    /// Changes the parameter `name`.
+    ///
+    /// # Errors
+    /// [`MechanismError::Binding`] for an unknown name or a value that is not finite.
+    pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
+        self.bindings.set(name, value)?;
+        Ok(self)
+    }
+
+    /// The operation counts of the lowered M and f, and of A and Ȧq̇.
+    pub fn op_counts(&self) -> [usize; 2] {
+        [
+            self.dynamics.op_count().total(),
+            self.rows.op_count().total(),
+        ]
+    }
+
+    fn eval(&self, program: &Program, t: f64, q: &[f64; N], qdot: &[f64; N], out: &mut [f64]) {
+        let inputs = self
+            .q
+            .iter()
+            .copied()
+            .zip(q.iter().copied())
+            .chain(self.rates.iter().copied().zip(qdot.iter().copied()))
+            .chain(self.time.map(|s| (s, t)));
+        self.bindings.eval(program, inputs, out);
+    }
+}
+
+impl<const N: usize, const M: usize, const K: usize> RollingDynamics<N, M, K>
+    for RollingModel<N, M, K>
+{
+    fn partition(&self) -> Partition<M, K> {
+        self.partition
+    }
+
+    fn coordinate_names(&self) -> [&'static str; N] {
+        self.names
+    }
+
+    fn mass_forcing(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
+        let mut out = vec![0.0; N * N + N];
+        self.eval(&self.dynamics, t, q, qdot, &mut out);
+        (
+            SMatrix::from_row_slice(&out[..N * N]),
+            SVector::from_column_slice(&out[N * N..]),
+        )
+    }
+
+    fn constraint_rows(
+        &self,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> (SMatrix<f64, M, N>, SVector<f64, M>) {
+        let mut out = vec![0.0; M * N + M];
+        self.eval(&self.rows, 0.0, q, qdot, &mut out);
+        (
+            SMatrix::from_row_slice(&out[..M * N]),
+            SVector::from_column_slice(&out[M * N..]),
+        )
+    }
+
+    fn holonomic_rows(&self) -> [bool; M] {
+        self.holonomic
+    }
+
+    fn heights(&self, q: &[f64; N]) -> [f64; M] {
+        let mut out = vec![0.0; M + self.wheels];
+        self.eval(&self.positions, 0.0, q, &[0.0; N], &mut out);
+        let mut h = [0.0; M];
+        h.copy_from_slice(&out[..M]);
+        h
+    }
+
+    fn lowest_tilt(&self, q: &[f64; N]) -> (usize, f64) {
+        let mut out = vec![0.0; M + self.wheels];
+        self.eval(&self.positions, 0.0, q, &[0.0; N], &mut out);
+        out[M..]
+            .iter()
+            .copied()
+            .enumerate()
+            .fold((0, f64::INFINITY), |best, (i, v)| {
+                if v < best.1 || v.is_nan() {
+                    (i, v)
+                } else {
+                    best
+                }
+            })
+    }
+
+    fn energy(&self, q: &[f64; N], qdot: &[f64; N]) -> f64 {
+        let mut out = vec![0.0; 1 + 3 * self.wheels];
+        self.eval(&self.reports, 0.0, q, qdot, &mut out);
+        out[0]
+    }
+
+    fn contact_speed(&self, q: &[f64; N], qdot: &[f64; N]) -> f64 {
+        let mut out = vec![0.0; 1 + 3 * self.wheels];
+        self.eval(&self.reports, 0.0, q, qdot, &mut out);
+        out[1..]
+            .chunks(3)
+            .map(|v| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt())
+            .fold(0.0, f64::max)
+    }
+}
