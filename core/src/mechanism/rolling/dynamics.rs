@@ -57,11 +57,25 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// The largest speed of a wheel's material contact point (zero on a rolling motion).
     fn contact_speed(&self, q: &[f64; N], qdot: &[f64; N]) -> f64;
 
-    /// Checks a configuration: finite, and every disk standing (tilt > 0).
+    /// Checks the parameters a description reads from fields (masses and radii not
+    /// negative, inertias physical, everything finite), as literals are checked at compile
+    /// time. The derive overrides it; an interpreted model checks its values when built.
     ///
     /// # Errors
-    /// [`MechanismError::NonFinite`], [`MechanismError::WheelFlat`].
+    /// [`MechanismError::NonFiniteParameter`], [`MechanismError::NegativeParameter`],
+    /// [`MechanismError::Part`].
+    fn check_parameters(&self) -> Result<(), MechanismError> {
+        Ok(())
+    }
+
+    /// Checks a configuration: the parameters ([`RollingDynamics::check_parameters`]),
+    /// finite coordinates, and every disk standing (tilt > 0).
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::check_parameters`]; [`MechanismError::NonFinite`],
+    /// [`MechanismError::WheelFlat`].
     fn check_configuration(&self, q: &[f64; N]) -> Result<(), MechanismError> {
+        self.check_parameters()?;
         if q.iter().any(|v| !v.is_finite()) {
             return Err(MechanismError::NonFinite {
                 quantity: "coordinates",
