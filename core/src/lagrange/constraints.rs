@@ -127,6 +127,16 @@ impl Constraints {
     /// `Ȧ q̇ + ḃ`, one per row: what the differentiated constraints `A q̈ + Ȧ q̇ + ḃ = 0`
     /// hold besides the accelerations (expanded, in q and every rate).
     pub fn rate_terms(&self, arena: &mut Arena, coords: &Coordinates) -> Vec<ExprId> {
+        self.rate_terms_shared(arena, coords)
+            .into_iter()
+            .map(|h| arena.expand(h))
+            .collect()
+    }
+
+    /// [`Constraints::rate_terms`] left unexpanded: the same values, for lowering only. The
+    /// expansion multiplies out products that the hash-consed form shares: the Whipple
+    /// bicycle's five rows lower to 5 936 operations this way against 11 391 expanded.
+    pub fn rate_terms_shared(&self, arena: &mut Arena, coords: &Coordinates) -> Vec<ExprId> {
         self.coefficients
             .iter()
             .zip(&self.offsets)
@@ -140,8 +150,7 @@ impl Constraints {
                     })
                     .collect();
                 terms.push(arena.dt(b));
-                let h = arena.sum(&terms);
-                arena.expand(h)
+                arena.sum(&terms)
             })
             .collect()
     }

@@ -35,7 +35,7 @@ pub struct RollingDerivation {
     /// The wheels' constraint rows A q̇ = 0 (per wheel: the horizontal rows, then the
     /// height row where there is one).
     pub constraints: Constraints,
-    /// Ȧq̇, one per row.
+    /// Ȧq̇, one per row (unexpanded: [`Constraints::rate_terms_shared`]).
     pub rate_terms: Vec<ExprId>,
     /// The free speeds' coordinates, in the declared order.
     pub independent: Vec<usize>,
@@ -225,7 +225,7 @@ impl MechanismScene {
             });
         }
         let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
-        let rate_terms = constraints.rate_terms(arena, &coords);
+        let rate_terms = constraints.rate_terms_shared(arena, &coords);
         let l = arena.sub(lag.kinetic, lag.potential);
         let equations = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
         let power_terms: Vec<ExprId> = lag
