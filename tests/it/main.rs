@@ -40,7 +40,7 @@ mod derive {
 /// Constraints: nonholonomic rolling and closed loops.
 mod constraints {
     mod bicycle;
-    mod disk;
+    pub mod disk;
     mod errors;
     mod four_bar;
     mod rheonomic;
@@ -78,6 +78,7 @@ mod mechanism {
     mod parameters;
     mod pendulum;
     mod recursive;
+    mod rolling;
     mod timing;
     mod top;
 }

@@ -201,8 +201,11 @@ pub enum MechanismError {
         rows: usize,
     },
     /// A rolling disk lies flat (or past it): the cosine of its lean from the vertical,
-    /// |d| = √(1 − (up·n)²), is not positive, and its contact point is undefined.
-    #[error("rolling wheel {wheel} lies flat: the cosine of its lean is {tilt:e}, it must be > 0")]
+    /// |d| = √(1 − (up·n)²), is at most `rolling::MIN_TILT`, and its contact point is
+    /// undefined.
+    #[error(
+        "rolling wheel {wheel} lies flat: the cosine of its lean is {tilt:e}, it must exceed 1e-6"
+    )]
     WheelFlat {
         /// The wheel, in declaration order.
         wheel: usize,

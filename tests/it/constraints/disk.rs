@@ -16,9 +16,9 @@ use proptest::prelude::*;
 
 use crate::common::rng::Rng;
 
-const M: f64 = 1.3;
-const R: f64 = 0.4;
-const G: f64 = 9.81;
+pub const M: f64 = 1.3;
+pub const R: f64 = 0.4;
+pub const G: f64 = 9.81;
 const VALUES: [(&str, f64); 3] = [("m", M), ("r", R), ("g", G)];
 
 /// The disk's Lagrangian, constraints and outputs: energy, the velocity of the material
@@ -108,7 +108,7 @@ pub fn rolling_disk(a: &mut Arena) -> Result<(ConstrainedEquations, Vec<ExprId>)
 /// θ̈ = φ̇² sin θ cos θ + (6/5) φ̇ ψ̇ cos θ + (4g/5r) sin θ,
 /// ψ̈ = −(5/3) φ̇ θ̇ cos θ + 2 θ̇ ψ̇ tan θ
 /// (the forms SymPy issue 27631 quotes).
-fn textbook(theta: f64, rates: [f64; 3]) -> [f64; 3] {
+pub fn textbook(theta: f64, rates: [f64; 3]) -> [f64; 3] {
     let [dphi, dtheta, dpsi] = rates;
     let (s, c) = theta.sin_cos();
     [
@@ -120,7 +120,7 @@ fn textbook(theta: f64, rates: [f64; 3]) -> [f64; 3] {
 
 /// m a_G (horizontal) from the angles' accelerations by hand: G = (x + r sin φ sin θ,
 /// y − r cos φ sin θ), with ẍ = r (ψ̈ cos φ − ψ̇ φ̇ sin φ), ÿ = r (ψ̈ sin φ + ψ̇ φ̇ cos φ).
-fn newton_friction(q: [f64; 3], qd: [f64; 3], qdd: [f64; 3]) -> [f64; 2] {
+pub fn newton_friction(q: [f64; 3], qd: [f64; 3], qdd: [f64; 3]) -> [f64; 2] {
     let ([phi, th, _], [dp, dt, ds], [ap, at, as_]) = (q, qd, qdd);
     let (sf, cf) = phi.sin_cos();
     let (st, ct) = th.sin_cos();

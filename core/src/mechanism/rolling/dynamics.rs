@@ -15,6 +15,11 @@ use crate::ode::System;
 /// (metres, or the length unit of the description).
 pub const CONTACT_TOLERANCE: f64 = 1e-14;
 
+/// The smallest tilt |d| a disk may have: the contact hub − r d/|d| loses about
+/// ε/|d| of its digits as the disk nears lying flat, so within a microradian of flat
+/// ([`MechanismError::WheelFlat`]) it is refused rather than trusted to 1e-10.
+pub const MIN_TILT: f64 = 1e-6;
+
 /// A mechanism with n coordinates whose wheels give m constraint rows, leaving k free
 /// speeds. Implemented by `#[derive(Mechanism)]` for a struct with `rolls = ..` bodies and by
 /// [`super::RollingModel`].
@@ -69,7 +74,7 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     }
 
     /// Checks a configuration: the parameters ([`RollingDynamics::check_parameters`]),
-    /// finite coordinates, and every disk standing (tilt > 0).
+    /// finite coordinates, and every disk standing (tilt > [`MIN_TILT`]).
     ///
     /// # Errors
     /// As [`RollingDynamics::check_parameters`]; [`MechanismError::NonFinite`],
@@ -83,7 +88,7 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
             });
         }
         let (wheel, tilt) = self.lowest_tilt(q);
-        if tilt.is_nan() || tilt <= 0.0 {
+        if tilt.is_nan() || tilt <= MIN_TILT {
             return Err(MechanismError::WheelFlat { wheel, tilt });
         }
         Ok(())

@@ -22,6 +22,6 @@ mod interpreted;
 mod scene;
 
 pub use derivation::RollingDerivation;
-pub use dynamics::{CONTACT_TOLERANCE, RollingDynamics, RollingSystem, split_rolling};
+pub use dynamics::{CONTACT_TOLERANCE, MIN_TILT, RollingDynamics, RollingSystem, split_rolling};
 pub use interpreted::RollingModel;
 pub use scene::{RollingScene, RollingWheel, WheelSurface};
