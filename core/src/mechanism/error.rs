@@ -212,6 +212,20 @@ pub enum MechanismError {
         /// Its |d|.
         tilt: f64,
     },
+    /// A run would start with a wheel off the floor (or into it): a run keeps the heights
+    /// where they start.
+    #[error(
+        "constraint row {row}: a wheel's height above the floor is {height:e} at the start (at \
+         most {allowed:e}); put the wheels down first with close_contacts"
+    )]
+    WheelOffFloor {
+        /// The height row.
+        row: usize,
+        /// Its height.
+        height: f64,
+        /// `lagrange::START_RESIDUAL`.
+        allowed: f64,
+    },
     /// A rolling model built for other sizes than its derivation's.
     #[error(
         "the rolling derivation has {coordinates} coordinates, {rows} constraint rows and \

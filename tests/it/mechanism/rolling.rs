@@ -329,3 +329,65 @@ fn bad_rolling_states_get_typed_errors() {
         "{err}"
     );
 }
+
+/// A disk whose hub rides a prismatic joint along z, so that its height is a coordinate and
+/// the floor a holonomic row: a start off the floor is refused, `close_contacts` puts it
+/// down, and the run then starts.
+#[test]
+fn a_wheel_off_the_floor_is_put_down_before_a_run() {
+    let mut a = Arena::new();
+    let mut scene = carriers(&mut a);
+    let (o, z) = (a.one(), a.zero());
+    let (m, r, g) = (a.parameter("m"), a.parameter("r"), a.parameter("g"));
+    let lift = JointKind::Prismatic { axis: [z, z, o] };
+    scene.bodies.push(MechanismScene::body(
+        &mut a,
+        "lift",
+        Parent::Body(1),
+        lift,
+        &["h"],
+    ));
+    let spin = JointKind::Revolute { axis: [z, o, z] };
+    let mut wheel = MechanismScene::body(&mut a, "wheel", Parent::Body(2), spin, &["psi"]);
+    wheel.mass = m;
+    let moment = a.product(&[m, r, r]);
+    wheel.inertia = [[moment, z, z], [z, moment, z], [z, z, moment]];
+    scene.bodies.push(wheel);
+    scene.gravity = Some([z, z, a.neg(g)]);
+    let rolling = RollingScene {
+        up: [z, z, o],
+        wheels: vec![RollingWheel {
+            body: 3,
+            surface: WheelSurface::Disk {
+                center: [z; 3],
+                axle: [z, o, z],
+                radius: r,
+            },
+        }],
+        speeds: vec!["psi".into()],
+    };
+    let d = scene.derive_rolling(&mut a, &rolling).expect("derives");
+    // x and y roll, h is held: three rows, one of them holonomic.
+    assert_eq!(d.rows(), 3);
+    let model = RollingModel::<4, 3, 1>::new(
+        &mut a,
+        &d,
+        ["x", "y", "h", "psi"],
+        &[("m", 1.0), ("r", 0.5), ("g", 9.81)],
+    )
+    .expect("binds");
+    let mut q = [0.0, 0.0, 0.7, 0.0];
+    let err = model.check_start(&q).unwrap_err();
+    assert!(
+        matches!(err, MechanismError::WheelOffFloor { height, .. } if (height - 0.2).abs() < 1e-15),
+        "{err}"
+    );
+    model.close_contacts(&mut q).expect("closes");
+    assert!((q[2] - 0.5).abs() < 1e-15, "hub at {}", q[2]);
+    model.check_start(&q).expect("on the floor");
+    // Rolling along x at ψ̇ = 2 about +y: the contact r below the hub has the velocity
+    // v_hub + ψ̇ ŷ × (−r ẑ) = v_hub − r ψ̇ x̂ = 0, so ẋ = r ψ̇ and the height stays.
+    let rates = model.rates(&q, &[2.0]).expect("regular");
+    assert!((rates[0] - 1.0).abs() < 1e-15, "ẋ = {}", rates[0]);
+    assert!(rates[2].abs() < 1e-15, "ḣ = {}", rates[2]);
+}

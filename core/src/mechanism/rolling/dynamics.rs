@@ -7,7 +7,7 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition};
+use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, START_RESIDUAL};
 use crate::mechanism::error::MechanismError;
 use crate::ode::System;
 
@@ -92,6 +92,29 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
             return Err(MechanismError::WheelFlat { wheel, tilt });
         }
         Ok(())
+    }
+
+    /// Checks that a run may start at `q`: the configuration is valid and every wheel is on
+    /// the floor to within [`START_RESIDUAL`] (a run only keeps the heights where they
+    /// start; put the wheels down first with [`RollingDynamics::close_contacts`]).
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::check_configuration`]; [`MechanismError::WheelOffFloor`]
+    /// naming the first row whose height is past [`START_RESIDUAL`].
+    fn check_start(&self, q: &[f64; N]) -> Result<(), MechanismError> {
+        self.check_configuration(q)?;
+        match self
+            .heights(q)
+            .iter()
+            .position(|h| h.abs() > START_RESIDUAL || h.is_nan())
+        {
+            Some(row) => Err(MechanismError::WheelOffFloor {
+                row,
+                height: self.heights(q)[row],
+                allowed: START_RESIDUAL,
+            }),
+            None => Ok(()),
+        }
     }
 
     /// Every rate q̇ from the coordinates and the free speeds.
