@@ -75,6 +75,7 @@ mod mechanism {
     mod errors;
     mod examples;
     mod jacobian;
+    mod kane;
     mod parameters;
     mod pendulum;
     mod recursive;

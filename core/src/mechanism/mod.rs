@@ -30,6 +30,7 @@ mod dynamics;
 mod error;
 mod factored;
 mod interpreted;
+mod kane;
 mod kinematics;
 mod quantities;
 pub mod recursive;

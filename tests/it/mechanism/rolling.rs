@@ -95,7 +95,9 @@ fn scale(x: &[f64]) -> f64 {
 fn check_disk(model: &RollingModel<5, 2, 3>, q: [f64; 5], u: [f64; 3]) {
     let (rates, ud) = model.derivative(0.0, &q, &u).expect("regular");
     let want = textbook(q[3], u);
-    let tol = 1e-13 * scale(&want).max(G / R);
+    // The numeric solve of Sᵀ M S loses digits as the disk nears flat (its terms in
+    // 1/cos θ grow past their sum), so the tolerance is relative to the terms.
+    let tol = 1e-13 * scale(&want).max(G / R) / q[3].cos().abs();
     for i in 0..3 {
         assert!(
             (ud[i] - want[i]).abs() <= tol,

@@ -1,5 +1,5 @@
 //! From a mechanism and its rolling wheels to the pieces of Maggi's equations: M(q) and
-//! f(q, q̇) of the unconstrained tree, the constraint rows A(q) q̇ = 0 of the wheels, Ȧq̇,
+//! f(q, q̇) of the unconstrained tree (Kane's method, [`MechanismScene::kane_equations`]), the constraint rows A(q) q̇ = 0 of the wheels, Ȧq̇,
 //! and what a run reports (contact points, their velocities, the energy).
 //!
 //! Each wheel gives, from its contact point P (ground axes) and the material velocity
@@ -226,8 +226,9 @@ impl MechanismScene {
         }
         let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
         let rate_terms = constraints.rate_terms_shared(arena, &coords);
-        let l = arena.sub(lag.kinetic, lag.potential);
-        let equations = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
+        // Kane's method: the Lagrangian route's expansion of the whole tree's momenta took
+        // seconds on the bicycle (see `kane.rs`).
+        let equations = self.kane_from(arena, &lag, &kin);
         let power_terms: Vec<ExprId> = lag
             .forces
             .iter()
