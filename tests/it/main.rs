@@ -81,6 +81,8 @@ mod mechanism {
     mod timing;
     mod top;
 }
+/// The models and generated types shared between threads are `Send + Sync`.
+mod send_sync;
 /// The integrators, events and sampling.
 mod ode {
     mod attitude;
