@@ -45,6 +45,8 @@ mod constraints {
     mod four_bar;
     mod rheonomic;
 }
+/// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
+mod ensemble;
 /// Closed-form solutions.
 mod exact {
     mod attitude;

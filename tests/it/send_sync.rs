@@ -5,12 +5,13 @@
 
 use precess::codegen::{Bindings, EvalWorkspace, Program};
 use precess::contact::{ContactModel, ContactRun, ContactSystem};
+use precess::ensemble::{Ensemble, EnsembleError, EnsembleResults};
 use precess::free::{FreeFlight, FreeModel};
 use precess::lagrange::{ConstrainedModel, ConstrainedSystem};
 use precess::mechanism::{
     ChartedMechanism, MechanismAba, MechanismCharts, MechanismModel, MechanismSystem,
 };
-use precess::ode::{Dop853, Rk4, Trajectory};
+use precess::ode::{Dop853, OdeError, Rk4, Trajectory};
 use precess::prelude::*;
 use precess::sym::{Arena, SymbolId};
 use precess::taylor::{Taylor, TaylorSystem, TaylorTape};
@@ -95,6 +96,10 @@ fn models_and_generated_types_are_send_and_sync() {
     assert_send_sync::<Lorenz>();
     assert_send_sync::<Taylor<Lorenz, 3>>();
     assert_send_sync::<<Lorenz as TaylorSystem<3>>::Workspace>();
+    // The ensemble's own types.
+    assert_send_sync::<Ensemble<'static>>();
+    assert_send_sync::<EnsembleResults<[f64; 6], OdeError>>();
+    assert_send_sync::<EnsembleError<OdeError>>();
 }
 
 fn bits<const N: usize>(y: &[f64; N]) -> [u64; N] {
