@@ -106,12 +106,15 @@ fn bits<const N: usize>(y: &[f64; N]) -> [u64; N] {
     y.map(f64::to_bits)
 }
 
+/// One evaluation: which bindings, x, t, whether t is given (`Some`), a new k set first.
+type Call = (usize, f64, f64, Option<f64>, Option<f64>);
+
 /// An evaluation in the shared per-thread workspace, after any sequence of others (two
 /// bindings of one program, parameters changed between calls, the time input sometimes left
 /// out), gives the same bits as the same call on bindings made fresh for it: nothing of an
 /// earlier call or of another model leaks into a result, which is what makes an ensemble's
 /// results independent of how its runs fall on threads.
-fn shared_matches_fresh(calls: &[(usize, f64, f64, Option<f64>, Option<f64>)]) {
+fn shared_matches_fresh(calls: &[Call]) {
     let mut a = Arena::new();
     let (x, t, k) = (a.input("x"), a.input("t"), a.parameter("k"));
     let kx = a.mul(k, x);

@@ -39,6 +39,7 @@ pub const MAX_REDUCE_BLOCKS: usize = 4096;
 /// Each run is a user closure of its index, `Fn(usize) -> Result<T, E>`, which builds the
 /// run (initial state, parameters, tolerances), integrates it with any integrator and
 /// returns what should be kept of it. See the [module docs](super) for the guarantees.
+#[derive(Clone)]
 pub struct Ensemble<'p> {
     runs: Range<usize>,
     progress: Option<&'p (dyn Fn(EnsembleProgress) + Sync)>,
