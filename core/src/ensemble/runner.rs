@@ -118,6 +118,9 @@ impl<'p> Ensemble<'p> {
     /// The blocks are fixed by the number of runs alone (at most [`MAX_REDUCE_BLOCKS`] of
     /// them), never by the threads, so a floating-point sum comes out to the same bits on
     /// any number of threads. No runs: `identity()`.
+    ///
+    /// A panic in `f` is caught and folded as the run's [`EnsembleError::Panicked`]; one in
+    /// `identity`, `fold` or `combine` is the caller's own and is not caught.
     pub fn reduce<T, E, A, F, I, G, C>(&self, f: F, identity: I, fold: G, combine: C) -> A
     where
         F: Fn(usize) -> Result<T, E> + Sync,
