@@ -5,7 +5,7 @@
 //! so everything the macro computes at compile time can also be computed at run time here.
 //!
 //! The layers, lowest first: the engine ([`sym`], [`codegen`], [`lagrange`], [`linalg`],
-//! [`ode`], [`taylor`], [`exact`]); the bodies and what every scene shares ([`body`],
+//! [`ode`], [`taylor`], [`exact`], and [`ensemble`], which runs many integrations at once); the bodies and what every scene shares ([`body`],
 //! [`rigid`]); the scenes ([`top`], [`free`], [`mechanism`]), each built on the layers below
 //! and none importing another. Every scene has the same files for the same roles (`scene.rs`,
 //! `derivation.rs`, `interpreted.rs`, `dynamics.rs`, `error.rs`, `quantities.rs`); `docs/conventions.md`
@@ -16,6 +16,7 @@
 pub mod body;
 pub mod codegen;
 pub mod contact;
+pub mod ensemble;
 pub mod exact;
 pub mod free;
 pub mod lagrange;

@@ -45,6 +45,8 @@ mod constraints {
     mod four_bar;
     mod rheonomic;
 }
+/// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
+mod ensemble;
 /// Closed-form solutions.
 mod exact {
     mod attitude;
@@ -83,6 +85,8 @@ mod mechanism {
     mod timing;
     mod top;
 }
+/// The models and generated types shared between threads are `Send + Sync`.
+mod send_sync;
 /// The integrators, events and sampling.
 mod ode {
     mod attitude;

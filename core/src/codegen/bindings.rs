@@ -1,10 +1,13 @@
 //! The values a scene's interpreted programs read: parameters set by name once, state and
-//! time written per call, in one environment indexed by symbol and allocated once. The
-//! run-time models of every scene (`TopModel`, `FreeModel`) evaluate through it.
-
-use std::cell::RefCell;
+//! time written per call. The run-time models of every scene (`TopModel`, `FreeModel`)
+//! evaluate through it.
+//!
+//! The parameters are the model's and are only read while it runs; everything a call writes
+//! (the state, time and the program's intermediate values) lives in an [`EvalWorkspace`], so
+//! one model is `Send + Sync` and can be shared by every thread of an ensemble.
 
 use super::program::Program;
+use super::workspace::{EvalWorkspace, next_generation, with_workspace};
 use crate::sym::{Arena, SymbolId, SymbolKind};
 
 /// Why a parameter could not be bound; every scene's error nests it as its `Binding`
@@ -76,12 +79,23 @@ pub(crate) fn check_distinct(values: &[(&str, f64)]) -> Result<(), BindingError>
 }
 
 /// Parameters by name and the environment the programs run in.
+///
+/// `Send + Sync`: evaluation reads the parameters and writes only into an
+/// [`EvalWorkspace`] — the caller's ([`Bindings::eval_in`]) or the calling thread's own
+/// ([`Bindings::eval`]).
 #[derive(Debug)]
 pub struct Bindings {
     /// The parameters the programs read, by name, in alphabetical order.
     parameters: Vec<(String, SymbolId)>,
-    env: RefCell<Vec<f64>>,
-    scratch: RefCell<Vec<f64>>,
+    /// Every symbol's value by index: the parameters set, NaN elsewhere (a workspace copies
+    /// it, then writes the per-call inputs over it).
+    env: Vec<f64>,
+    /// The run-time inputs the programs may read; cleared to NaN before each call so a call
+    /// never sees the inputs of an earlier one.
+    supplied: Vec<SymbolId>,
+    /// Which parameter values `env` holds: unique to this value of `env` over the process, so
+    /// a workspace that last copied it can skip the copy.
+    generation: u64,
 }
 
 impl Bindings {
@@ -119,13 +133,18 @@ impl Bindings {
         read.sort();
         let mut bindings = Bindings {
             parameters: read,
-            env: RefCell::new(vec![f64::NAN; arena.symbol_count()]),
-            scratch: RefCell::new(Vec::new()),
+            env: vec![f64::NAN; arena.symbol_count()],
+            supplied: supplied
+                .iter()
+                .copied()
+                .filter(|s| s.index() < arena.symbol_count())
+                .collect(),
+            generation: next_generation(),
         };
         for &(name, value) in values {
             bindings.set(name, value)?;
         }
-        let env = bindings.env.get_mut();
+        let env = &bindings.env;
         if let Some((name, _)) = bindings
             .parameters
             .iter()
@@ -171,21 +190,69 @@ impl Bindings {
                 value,
             });
         }
-        self.env.get_mut()[s.index()] = value;
+        self.env[s.index()] = value;
+        // Workspaces holding the old values must copy them again.
+        self.generation = next_generation();
         Ok(())
     }
 
-    /// Runs `program` with the per-call `inputs` written into the environment first.
+    /// Runs `program` with the per-call `inputs` written over the parameters, in the
+    /// calling thread's own workspace (allocation-free once it has grown to the largest
+    /// program run on the thread).
     pub fn eval(
         &self,
         program: &Program,
         inputs: impl IntoIterator<Item = (SymbolId, f64)>,
         out: &mut [f64],
     ) {
-        let mut env = self.env.borrow_mut();
-        for (s, v) in inputs {
-            env[s.index()] = v;
+        with_workspace(|ws| self.eval_in(ws, program, inputs, out));
+    }
+
+    /// As [`Bindings::eval`], in the caller's workspace `ws`.
+    ///
+    /// The result depends only on the parameters and `inputs`: an input the call does not
+    /// give reads NaN, whatever `ws` ran before.
+    pub fn eval_in(
+        &self,
+        ws: &mut EvalWorkspace,
+        program: &Program,
+        inputs: impl IntoIterator<Item = (SymbolId, f64)>,
+        out: &mut [f64],
+    ) {
+        self.prepare(ws, inputs);
+        program.eval_into(&ws.env, &mut ws.scratch, out);
+    }
+
+    /// As [`Bindings::eval_in`], the outputs left in `ws` and returned (all of them, in
+    /// order): for models whose outputs are a run-time number long.
+    pub fn eval_to<'w>(
+        &self,
+        ws: &'w mut EvalWorkspace,
+        program: &Program,
+        inputs: impl IntoIterator<Item = (SymbolId, f64)>,
+    ) -> &'w [f64] {
+        self.prepare(ws, inputs);
+        ws.out.clear();
+        ws.out.resize(program.outputs().len(), 0.0);
+        program.eval_into(&ws.env, &mut ws.scratch, &mut ws.out);
+        &ws.out
+    }
+
+    /// Loads the parameters into `ws` (only if it holds another set), clears the run-time
+    /// inputs and writes `inputs`.
+    fn prepare(&self, ws: &mut EvalWorkspace, inputs: impl IntoIterator<Item = (SymbolId, f64)>) {
+        if ws.generation == self.generation && ws.env.len() == self.env.len() {
+            for s in &self.supplied {
+                ws.env[s.index()] = f64::NAN;
+            }
+        } else {
+            ws.env.clone_from(&self.env);
+            ws.generation = self.generation;
         }
-        program.eval_into(&env, &mut self.scratch.borrow_mut(), out);
+        for (s, v) in inputs {
+            if let Some(slot) = ws.env.get_mut(s.index()) {
+                *slot = v;
+            }
+        }
     }
 }

@@ -17,6 +17,7 @@ mod paper;
 mod program;
 mod tokens;
 mod typeset;
+mod workspace;
 
 pub(crate) use bindings::check_distinct;
 pub use bindings::{BindingError, Bindings};
@@ -27,3 +28,5 @@ pub use paper::{paper_equation, paper_latex};
 pub use program::{Op, Program, Slot};
 pub use tokens::{Emitted, f64_literal};
 pub use typeset::{ALIGN_WIDTH, Lines, MethodCost, Typeset};
+pub use workspace::EvalWorkspace;
+pub(crate) use workspace::with_workspace;

@@ -6,13 +6,11 @@
 //! construction and only the positions of a closed loop can drift
 //! ([`ConstrainedModel::close_loop`] pulls them back).
 
-use std::cell::RefCell;
-
 use super::eliminate::ConstrainedEquations;
 use super::error::LagrangeError;
 #[cfg(doc)]
 use crate::codegen::BindingError;
-use crate::codegen::{Bindings, Program};
+use crate::codegen::{Bindings, Program, with_workspace};
 use crate::ode::System;
 use crate::sym::{Arena, ExprId, SymbolId};
 
@@ -36,8 +34,6 @@ pub struct ConstrainedModel {
     pub(super) positions: Option<Program>,
     extra: Program,
     bindings: Bindings,
-    /// The right-hand side's outputs, kept so that a step allocates nothing.
-    buffer: RefCell<Vec<f64>>,
 }
 
 impl ConstrainedModel {
@@ -141,7 +137,6 @@ impl ConstrainedModel {
             positions,
             extra,
             bindings,
-            buffer: RefCell::new(Vec::new()),
         })
     }
 
@@ -161,14 +156,22 @@ impl ConstrainedModel {
     }
 
     pub(super) fn run(&self, p: &Program, t: f64, state: &[f64], out: &mut [f64]) {
+        self.bindings.eval(p, self.inputs(t, state), out);
+    }
+
+    /// The per-call inputs: the state and time by symbol.
+    fn inputs<'s>(
+        &'s self,
+        t: f64,
+        state: &'s [f64],
+    ) -> impl Iterator<Item = (SymbolId, f64)> + 's {
         let inputs = self
             .q
             .iter()
             .chain(&self.u)
             .copied()
             .zip(state.iter().copied());
-        let time = self.time.map(|s| (s, t));
-        self.bindings.eval(p, inputs.chain(time), out);
+        inputs.chain(self.time.map(|s| (s, t)))
     }
 
     pub(super) fn check(&self, state: &[f64]) -> Result<(), LagrangeError> {
@@ -190,16 +193,18 @@ impl ConstrainedModel {
     /// The unchecked right-hand side: `dydt = [q̇, u̇]` at `(t, y)`.
     pub fn rhs_into(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
         let (m, k) = (self.dependent.len(), self.independent.len());
-        let mut out = self.buffer.borrow_mut();
-        out.resize(m + k + 1, 0.0);
-        self.run(&self.rhs, t, y, &mut out);
         for (j, &i) in self.independent.iter().enumerate() {
             dydt[i] = y[self.n + j];
         }
-        for (j, &d) in self.dependent.iter().enumerate() {
-            dydt[d] = out[j];
-        }
-        dydt[self.n..self.n + k].copy_from_slice(&out[m..m + k]);
+        // The outputs are a run-time number long: they go through the thread's workspace,
+        // so the model stays shareable and a step allocates nothing.
+        with_workspace(|ws| {
+            let out = self.bindings.eval_to(ws, &self.rhs, self.inputs(t, y));
+            for (j, &d) in self.dependent.iter().enumerate() {
+                dydt[d] = out[j];
+            }
+            dydt[self.n..self.n + k].copy_from_slice(&out[m..m + k]);
+        });
     }
 
     /// Every rate q̇ (the free ones from the state, the dependent ones from the

@@ -1,13 +1,11 @@
 //! A derived mechanism evaluated at run time through the code generator's interpreter: the
 //! path for mechanisms built without the macro, and the reference the tests use.
 
-use std::cell::RefCell;
-
 use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene};
 use crate::body::{BodyError, Definiteness, check_inertia};
-use crate::codegen::{Bindings, Program};
+use crate::codegen::{Bindings, Program, with_workspace};
 use crate::ode::System;
 use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 
@@ -75,7 +73,6 @@ pub struct MechanismModel {
     /// The value of each parameter bound, so a refused [`MechanismModel::set`] can put the
     /// previous one back.
     values: Vec<(String, f64)>,
-    buffer: RefCell<Vec<f64>>,
 }
 
 /// A body's inertia about its centre (row-major `entries`), under the body language's one
@@ -232,7 +229,6 @@ impl MechanismModel {
             axis_joints: Vec::new(),
             mass_properties: Program::lower(arena, &[]),
             mass_bodies: Vec::new(),
-            buffer: RefCell::new(vec![0.0; outputs.len()]),
             q,
             rates,
             time,
@@ -370,14 +366,23 @@ impl MechanismModel {
     }
 
     fn run(&self, program: &Program, t: f64, q: &[f64], qdot: &[f64], out: &mut [f64]) {
+        self.bindings.eval(program, self.inputs(t, q, qdot), out);
+    }
+
+    /// The per-call inputs: the state and time by symbol.
+    fn inputs<'s>(
+        &'s self,
+        t: f64,
+        q: &'s [f64],
+        qdot: &'s [f64],
+    ) -> impl Iterator<Item = (SymbolId, f64)> + 's {
         let state = self
             .q
             .iter()
             .zip(q)
             .chain(self.rates.iter().zip(qdot))
             .map(|(&s, &v)| (s, v));
-        let time = std::iter::once((self.time, t));
-        self.bindings.eval(program, state.chain(time), out);
+        state.chain(std::iter::once((self.time, t)))
     }
 
     /// q̈ at time t and state (q, q̇).
@@ -487,11 +492,16 @@ impl<const N: usize> System<N> for MechanismSystem<'_, N> {
         let m = self.model;
         let n = m.dof();
         let (q, qdot) = y.split_at(n);
-        let mut buffer = m.buffer.borrow_mut();
-        m.run(&m.accel, t, q, qdot, &mut buffer);
         let (rates, accelerations) = dydt.split_at_mut(n);
         rates.copy_from_slice(qdot);
-        accelerations.copy_from_slice(&buffer[m.pivot_count..]);
+        // The outputs (pivots, then q̈) are a run-time number long: they go through the
+        // thread's workspace, so the model stays shareable and the call allocation-free.
+        with_workspace(|ws| {
+            let out = m.bindings.eval_to(ws, &m.accel, m.inputs(t, q, qdot));
+            for (a, &v) in accelerations.iter_mut().zip(out.iter().skip(m.pivot_count)) {
+                *a = v;
+            }
+        });
     }
 }
 
