@@ -70,6 +70,17 @@ fn models_and_generated_types_are_send_and_sync() {
     assert_send_sync::<MechanismAba>();
     assert_send_sync::<ContactModel>();
     assert_send_sync::<ConstrainedModel>();
+    assert_send_sync::<precess::mechanism::rolling::RollingModel<5, 2, 3>>();
+    assert_send_sync::<
+        precess::mechanism::rolling::RollingSystem<
+            'static,
+            precess::mechanism::rolling::RollingModel<5, 2, 3>,
+            5,
+            2,
+            3,
+            8,
+        >,
+    >();
     assert_send_sync::<TaylorTape<6>>();
     // The systems that borrow them, and integrators over those.
     assert_send_sync::<MechanismSystem<'static, 6>>();
