@@ -196,6 +196,14 @@ impl Bindings {
         Ok(())
     }
 
+    /// The value bound to the parameter `name`, if the programs read it.
+    pub fn value(&self, name: &str) -> Option<f64> {
+        self.parameters
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|&(_, s)| self.env[s.index()])
+    }
+
     /// Runs `program` with the per-call `inputs` written over the parameters, in the
     /// calling thread's own workspace (allocation-free once it has grown to the largest
     /// program run on the thread).

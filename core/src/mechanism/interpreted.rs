@@ -3,13 +3,12 @@
 
 use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
-use super::scene::{JointKind, MechanismScene};
-use crate::body::{BodyError, Definiteness, check_inertia};
+use super::scene::MechanismScene;
 use crate::codegen::{Bindings, Program, with_workspace};
 use crate::ode::System;
-use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
+use crate::sym::{Arena, ExprId, SymbolId};
 
-use super::rules::{check_axis, check_universal_axes};
+use super::parameter_checks::ParameterChecks;
 
 /// A mechanism's q̈, pivots, energy and momenta, lowered once and interpreted.
 ///
@@ -57,14 +56,8 @@ pub struct MechanismModel {
     /// Outputs: the conserved momenta.
     momenta: Program,
     cyclic: Vec<usize>,
-    /// Outputs: the components of the axes of every joint whose axes read a parameter (three
-    /// per axis), named by `axis_joints` with whether the joint is universal (two axes).
-    axes: Program,
-    axis_joints: Vec<(String, bool)>,
-    /// Outputs: the mass and the nine inertia entries of every body whose mass properties
-    /// read a parameter, named by `mass_bodies`.
-    mass_properties: Program,
-    mass_bodies: Vec<String>,
+    /// The checks of the values made of parameters (axes, masses, inertias).
+    checks: ParameterChecks,
     q: Vec<SymbolId>,
     rates: Vec<SymbolId>,
     time: SymbolId,
@@ -78,11 +71,6 @@ pub struct MechanismModel {
 /// A body's inertia about its centre (row-major `entries`), under the body language's one
 /// rule ([`check_inertia`]) with zero moments allowed: the tensor is the body's sum of parts,
 /// so errors number part 0.
-fn body_inertia(entries: &[f64]) -> Result<(), BodyError> {
-    let row =
-        |i: usize| std::array::from_fn(|j| entries.get(3 * i + j).copied().unwrap_or(f64::NAN));
-    check_inertia(0, &[row(0), row(1), row(2)], Definiteness::SemiPositive)
-}
 
 /// Each name once: a name given twice would bind its last value silently.
 fn distinct(parameters: &[(&str, f64)]) -> Result<(), MechanismError> {
@@ -127,61 +115,9 @@ impl MechanismModel {
     ) -> Result<MechanismModel, MechanismError> {
         distinct(parameters)?;
         let derivation = scene.derive(arena, route)?;
-        let mut components = Vec::new();
-        let mut names = Vec::new();
-        for body in &scene.bodies {
-            let (axes, universal): (&[[ExprId; 3]], bool) = match &body.joint.kind {
-                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => {
-                    (std::slice::from_ref(axis), false)
-                }
-                JointKind::Universal { axes } => (axes, true),
-                JointKind::Spherical { .. } => (&[], false),
-            };
-            // Constant axes met the same rules in `MechanismScene::validate`.
-            if axes
-                .iter()
-                .flatten()
-                .all(|&e| arena.as_rational(e).is_some())
-            {
-                continue;
-            }
-            components.extend(axes.iter().flatten());
-            names.push((body.joint.name.clone(), universal));
-        }
         let mut model = Self::from_derivation(arena, &derivation, parameters)?;
         // Mass properties from parameters get the checks literal parts get at compile time.
-        // An inertia the motion never reads (a hinge's moments across its axis) has no
-        // values to check: the model binds only the parameters the derivation reads.
-        let known = derivation.parameters(arena);
-        let bound = |arena: &Arena, e: ExprId| {
-            arena.free_symbols(e).iter().all(|&s| {
-                let symbol = arena.symbol(s);
-                symbol.kind != SymbolKind::Parameter || known.contains(&symbol.name)
-            })
-        };
-        let zero = arena.zero();
-        let mut properties = Vec::new();
-        let mut mass_bodies = Vec::new();
-        for body in &scene.bodies {
-            let mut entries: Vec<ExprId> = std::iter::once(body.mass)
-                .chain(body.inertia.iter().flatten().copied())
-                .collect();
-            if entries.iter().all(|&e| arena.as_rational(e).is_some()) {
-                continue;
-            }
-            if !bound(arena, entries[0]) {
-                entries[0] = zero;
-            }
-            if !entries[1..].iter().all(|&e| bound(arena, e)) {
-                entries[1..].fill(zero);
-            }
-            properties.extend(entries);
-            mass_bodies.push(body.name.clone());
-        }
-        model.axes = Program::lower(arena, &components);
-        model.axis_joints = names;
-        model.mass_properties = Program::lower(arena, &properties);
-        model.mass_bodies = mass_bodies;
+        model.checks = ParameterChecks::new(arena, scene, &[], &derivation.parameters(arena));
         model.check_parameters()?;
         Ok(model)
     }
@@ -225,10 +161,7 @@ impl MechanismModel {
             energy,
             momenta,
             cyclic: d.conserved_momenta.iter().map(|&(i, _)| i).collect(),
-            axes: Program::lower(arena, &[]),
-            axis_joints: Vec::new(),
-            mass_properties: Program::lower(arena, &[]),
-            mass_bodies: Vec::new(),
+            checks: ParameterChecks::none(arena),
             q,
             rates,
             time,
@@ -241,55 +174,10 @@ impl MechanismModel {
         })
     }
 
-    /// The checks of [`MechanismModel::new`] and [`MechanismModel::set`]: every axis made of
-    /// parameters has a length, every mass made of parameters is finite and not negative,
-    /// and every inertia made of parameters is finite and symmetric, with principal moments
-    /// that are not negative and meet the triangle inequality I1 + I2 ≥ I3 (zero moments
-    /// stay allowed: point masses and thin rods have them, and a body with no inertia at all
-    /// is the singular mass matrix's concern).
+    /// The checks of [`MechanismModel::new`] and [`MechanismModel::set`]
+    /// (`parameter_checks.rs`).
     fn check_parameters(&self) -> Result<(), MechanismError> {
-        self.check_axes()?;
-        let mut out = vec![0.0; 10 * self.mass_bodies.len()];
-        self.bindings.eval(&self.mass_properties, [], &mut out);
-        for (body, values) in self.mass_bodies.iter().zip(out.chunks_exact(10)) {
-            let owner = format!("body `{body}`");
-            let mass = values[0];
-            if !mass.is_finite() {
-                return Err(MechanismError::NonFiniteParameter {
-                    owner,
-                    quantity: "mass".into(),
-                    value: mass,
-                });
-            }
-            if mass < 0.0 {
-                return Err(MechanismError::NegativeParameter {
-                    owner,
-                    quantity: "mass".into(),
-                    value: mass,
-                });
-            }
-            body_inertia(&values[1..]).map_err(|error| MechanismError::Part {
-                body: body.clone(),
-                error,
-            })?;
-        }
-        Ok(())
-    }
-
-    fn check_axes(&self) -> Result<(), MechanismError> {
-        let mut out = vec![0.0; self.axes.outputs().len()];
-        self.bindings.eval(&self.axes, [], &mut out);
-        let mut values = out.chunks_exact(3).map(|c| [c[0], c[1], c[2]]);
-        for (joint, universal) in &self.axis_joints {
-            let mut next = || values.next().unwrap_or([f64::NAN; 3]);
-            if *universal {
-                let (outer, inner) = (next(), next());
-                check_universal_axes(joint, outer, inner)?;
-            } else {
-                check_axis(joint, "axis", next())?;
-            }
-        }
-        Ok(())
+        self.checks.check(&self.bindings)
     }
 
     /// The number of coordinates n.

@@ -32,6 +32,7 @@ mod factored;
 mod interpreted;
 mod kane;
 mod kinematics;
+mod parameter_checks;
 mod quantities;
 pub mod recursive;
 pub mod rolling;

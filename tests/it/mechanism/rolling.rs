@@ -393,3 +393,41 @@ fn a_wheel_off_the_floor_is_put_down_before_a_run() {
     assert!((rates[0] - 1.0).abs() < 1e-15, "ẋ = {}", rates[0]);
     assert!(rates[2].abs() < 1e-15, "ḣ = {}", rates[2]);
 }
+
+/// Values made of parameters get the checks literals get: a negative mass or radius is
+/// refused when the model is built and on `set`, which then leaves the model as it was.
+#[test]
+fn negative_masses_and_radii_are_refused() {
+    let build = |m: f64, r: f64| {
+        let mut a = Arena::new();
+        let (scene, rolling) = disk_scene(&mut a, &["phi", "theta", "psi"]);
+        RollingModel::<5, 2, 3>::from_scene(
+            &mut a,
+            &scene,
+            &rolling,
+            NAMES,
+            &[("m", m), ("r", r), ("g", G)],
+        )
+    };
+    let err = build(-1.0, R).unwrap_err();
+    assert!(
+        matches!(&err, MechanismError::NegativeParameter { owner, quantity, value }
+            if owner == "body `wheel`" && quantity == "mass" && *value == -1.0),
+        "{err}"
+    );
+    let err = build(M, -0.2).unwrap_err();
+    assert!(
+        matches!(&err, MechanismError::NegativeParameter { owner, quantity, .. }
+            if owner == "rolling wheel `wheel`" && quantity == "radius"),
+        "{err}"
+    );
+    let mut model = build(M, R).expect("physical");
+    let (q, u) = ([0.0, 0.0, 0.3, 0.2, 0.0], [1.0, 0.5, 4.0]);
+    let before = model.derivative(0.0, &q, &u).expect("regular");
+    let err = model.set("m", -2.0).unwrap_err();
+    assert!(
+        matches!(err, MechanismError::NegativeParameter { .. }),
+        "{err}"
+    );
+    assert_eq!(model.derivative(0.0, &q, &u).expect("regular"), before);
+}

@@ -5,9 +5,12 @@ use nalgebra::{SMatrix, SVector};
 
 use super::derivation::RollingDerivation;
 use super::dynamics::RollingDynamics;
+use super::scene::{RollingScene, WheelSurface};
 use crate::codegen::{Bindings, Program};
 use crate::lagrange::Partition;
 use crate::mechanism::error::MechanismError;
+use crate::mechanism::parameter_checks::ParameterChecks;
+use crate::mechanism::scene::MechanismScene;
 use crate::sym::{Arena, ExprId, SymbolId};
 
 /// A rolling mechanism's M, f, A, Ȧq̇, heights and reports, lowered once and interpreted,
@@ -30,6 +33,8 @@ pub struct RollingModel<const N: usize, const M: usize, const K: usize> {
     rates: Vec<SymbolId>,
     time: Option<SymbolId>,
     bindings: Bindings,
+    /// The values made of parameters, checked at construction and on every `set`.
+    checks: ParameterChecks,
 }
 
 impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
@@ -118,16 +123,70 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
             q,
             rates,
             time,
+            checks: ParameterChecks::none(arena),
             bindings,
         })
     }
 
-    /// Changes the parameter `name`.
+    /// Derives `scene` with its wheels rolling and lowers it, checking every value made of
+    /// parameters by the rules literals meet (axes with a direction, masses and wheel radii
+    /// finite and not negative, physical inertias), as [`crate::mechanism::MechanismModel`]
+    /// does.
     ///
     /// # Errors
-    /// [`MechanismError::Binding`] for an unknown name or a value that is not finite.
+    /// As [`MechanismScene::derive_rolling`] and [`RollingModel::new`];
+    /// [`MechanismError::ZeroAxis`], [`MechanismError::ParallelAxes`],
+    /// [`MechanismError::NonFiniteParameter`], [`MechanismError::NegativeParameter`],
+    /// [`MechanismError::Part`] for values no mechanism can have.
+    pub fn from_scene(
+        arena: &mut Arena,
+        scene: &MechanismScene,
+        rolling: &RollingScene,
+        names: [&'static str; N],
+        parameters: &[(&str, f64)],
+    ) -> Result<RollingModel<N, M, K>, MechanismError> {
+        let derivation = scene.derive_rolling(arena, rolling)?;
+        let mut model = RollingModel::new(arena, &derivation, names, parameters)?;
+        let lengths: Vec<((String, String), ExprId)> = rolling
+            .wheels
+            .iter()
+            .filter_map(|w| {
+                let body = scene.bodies.get(w.body)?;
+                let radius = match w.surface {
+                    WheelSurface::Disk { radius, .. } | WheelSurface::Sphere { radius, .. } => {
+                        radius
+                    }
+                };
+                Some((
+                    (
+                        format!("rolling wheel `{}`", body.name),
+                        "radius".to_owned(),
+                    ),
+                    radius,
+                ))
+            })
+            .collect();
+        let known: Vec<String> = model.bindings.parameters().map(str::to_owned).collect();
+        model.checks = ParameterChecks::new(arena, scene, &lengths, &known);
+        model.checks.check(&model.bindings)?;
+        Ok(model)
+    }
+
+    /// Changes the parameter `name`; a value the checks of [`RollingModel::from_scene`]
+    /// refuse leaves the model as it was.
+    ///
+    /// # Errors
+    /// [`MechanismError::Binding`] for an unknown name or a value that is not finite; those
+    /// of [`RollingModel::from_scene`] for a value no mechanism can have.
     pub fn set(&mut self, name: &str, value: f64) -> Result<&mut Self, MechanismError> {
+        let previous = self.bindings.value(name);
         self.bindings.set(name, value)?;
+        if let Err(e) = self.checks.check(&self.bindings) {
+            if let Some(previous) = previous {
+                self.bindings.set(name, previous)?;
+            }
+            return Err(e);
+        }
         Ok(self)
     }
 
