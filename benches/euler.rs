@@ -3,7 +3,7 @@
 //! dividing by each moment, and with its coefficients folded into constants), and the generic
 //! nalgebra form I⁻¹ (G − ω × I ω) with the inverse precomputed.
 //!
-//! Run with `cargo bench --bench euler`.
+//! Run with `cargo bench -p precess-benches --bench euler`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::{Matrix3, Vector3};

@@ -2,7 +2,7 @@
 //! near-separatrix body to t = 100, for Vern9, DOP853, DOPRI5, RK4, the splittings and the exact
 //! solution.
 //!
-//! `cargo bench --bench integrators` prints the work-precision table (error, right-hand-side
+//! `cargo bench -p precess-benches --bench integrators` prints the work-precision table (error, right-hand-side
 //! evaluations) and then times each configuration with criterion.
 //! `PRECESS_ALLOC_PROBE=<n> valgrind ./integrators-…` runs each stepping loop n times without
 //! criterion: the heap-allocation count valgrind reports does not change with n, i.e. the

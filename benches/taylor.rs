@@ -6,7 +6,7 @@
 //! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
 //! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates).
 //!
-//! `cargo bench --bench taylor` prints the table (error against the closed form, steps,
+//! `cargo bench -p precess-benches --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
 //! few configurations with criterion (`-- jet` for the cost of a jet against one evaluation
 //! of f, `-- step` for what a step costs besides its jet). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on

@@ -4,7 +4,7 @@
 //! and the free body against the same recurrences interpreted from a tape built at run time
 //! ([`TaylorTape`]).
 //!
-//! Run with `cargo bench --bench taylor_coefficients -- --warm-up-time 1 --measurement-time 3`.
+//! Run with `cargo bench -p precess-benches --bench taylor_coefficients -- --warm-up-time 1 --measurement-time 3`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use precess::prelude::*;

@@ -13,7 +13,7 @@ printed below, measured on an empty propagation), and for the heavy top one Pyth
 per event. heyoka takes one tolerance; precess's runs use rtol = atol = tol.
 
 The references are copied here, not read from disk: B5's published 30-digit y(20); the exact
-torque-free states from precess's `FreeBodyExact` (printed by `cargo bench --bench taylor`);
+torque-free states from precess's `FreeBodyExact` (printed by `cargo bench -p precess-benches --bench taylor`);
 the heavy top's moments, M g l and exact nutation period from its body description and
 `HeavyTopTheory` (printed by the same bench).
 """

@@ -11,7 +11,7 @@ m0 = (0, 2, 0.01), T = 200) in its three accuracy modes, for comparison with the
 
 Each time is the median (and minimum) over 21 batches of one `propagate_until` from the
 initial state, Python call overhead included (about 1 µs). The references are the exact
-m(200) of precess's `FreeBodyExact`, as printed by `cargo bench --bench taylor`.
+m(200) of precess's `FreeBodyExact`, as printed by `cargo bench -p precess-benches --bench taylor`.
 """
 
 import heyoka as hy
