@@ -68,10 +68,6 @@ pub struct MechanismModel {
     values: Vec<(String, f64)>,
 }
 
-/// A body's inertia about its centre (row-major `entries`), under the body language's one
-/// rule ([`check_inertia`]) with zero moments allowed: the tensor is the body's sum of parts,
-/// so errors number part 0.
-
 /// Each name once: a name given twice would bind its last value silently.
 fn distinct(parameters: &[(&str, f64)]) -> Result<(), MechanismError> {
     for (i, &(name, first)) in parameters.iter().enumerate() {

@@ -172,6 +172,9 @@ fn not_negative(owner: String, quantity: &str, value: f64) -> Result<(), Mechani
     Ok(())
 }
 
+/// A body's inertia about its centre (row-major `entries`), under the body language's one
+/// rule ([`check_inertia`]) with zero moments allowed: the tensor is the body's sum of parts,
+/// so errors number part 0.
 fn body_inertia(entries: &[f64]) -> Result<(), BodyError> {
     let row =
         |i: usize| std::array::from_fn(|j| entries.get(3 * i + j).copied().unwrap_or(f64::NAN));
