@@ -40,6 +40,7 @@ mod derive {
 /// Constraints: nonholonomic rolling and closed loops.
 mod constraints {
     mod bicycle;
+    mod bicycle_macro;
     mod disk;
     mod errors;
     mod four_bar;

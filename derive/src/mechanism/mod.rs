@@ -14,6 +14,7 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
+mod rolling;
 mod tree;
 
 use precess_core::sym::Arena;
