@@ -39,8 +39,10 @@ pub(super) fn expand(
             cx.error_spanned_by(
                 &rolling.speeds,
                 format!(
-                    "the wheels give {rows} constraint rows on {coordinates} coordinates, so {} speeds are free: `speeds` names {got}",
-                    coordinates.saturating_sub(rows)
+                    "the wheels give {} on {}, leaving {} free: `speeds` must name that many coordinates, and names {got}",
+                    counted(rows, "constraint row"),
+                    counted(coordinates, "coordinate"),
+                    counted(coordinates.saturating_sub(rows), "speed"),
                 ),
             );
             return None;
@@ -211,4 +213,13 @@ pub(super) fn expand(
             #check_parameters
         }
     })
+}
+
+/// `1 row`, `2 rows`.
+fn counted(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("{n} {what}")
+    } else {
+        format!("{n} {what}s")
+    }
 }
