@@ -45,6 +45,7 @@ mod constraints {
     mod errors;
     mod four_bar;
     mod rheonomic;
+    mod rolling_macro;
 }
 /// Closed-form solutions.
 mod exact {
