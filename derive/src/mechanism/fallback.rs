@@ -25,9 +25,15 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
     let coordinates = written_coordinates(input);
+    let rolling = rolls(input);
     // Each name once as a const (case aside, as the consts are named), N counting every one
-    // written: a duplicate is its own error, and the uses are sized for what was written.
-    let mut named: Vec<String> = Vec::new();
+    // written: a duplicate is its own error, and the uses are sized for what was written. A
+    // rolling stub has `STATE` and `SPEEDS` of its own (a coordinate so named is an error).
+    let mut named: Vec<String> = if rolling {
+        vec!["STATE".to_owned(), "SPEEDS".to_owned()]
+    } else {
+        Vec::new()
+    };
     let unique = coordinates.iter().enumerate().filter(|(_, c)| {
         let upper = c.to_string().to_uppercase();
         let new = !named.contains(&upper);
@@ -44,7 +50,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let stub = quote!(::core::unimplemented!(
         "the #[derive(Mechanism)] description has errors"
     ));
-    if rolls(input) {
+    if rolling {
         return rolling_stub(
             ident,
             coordinates.len(),
@@ -163,6 +169,7 @@ fn rolling_stub(
     stub: &TokenStream,
 ) -> TokenStream {
     let p = Private;
+    let written = speeds.filter(|&k| k <= n).unwrap_or(0);
     let (generics, m, k, state) = match speeds.filter(|&k| k <= n) {
         Some(k) => {
             let m = n - k;
@@ -182,6 +189,8 @@ fn rolling_stub(
             #(#consts)*
             #[doc(hidden)]
             pub const STATE: usize = #state;
+            #[doc(hidden)]
+            pub const SPEEDS: [usize; #written] = [0; #written];
         }
 
         #[automatically_derived]

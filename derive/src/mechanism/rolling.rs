@@ -257,6 +257,18 @@ pub(super) fn rolling(
             ),
         );
     }
+    // The struct's consts are named after the coordinates, beside `STATE` and `SPEEDS`.
+    for c in coordinates {
+        let upper = c.to_string().to_uppercase();
+        if upper == "STATE" || upper == "SPEEDS" {
+            ck.cx.error_spanned_by(
+                c,
+                format!(
+                    "a rolling mechanism's struct gets the consts `STATE` and `SPEEDS`, so a coordinate may not be named `{c}`: rename it"
+                ),
+            );
+        }
+    }
     let (first_body, first_key) = match wheels.first() {
         Some((_, name, spec)) => (name.clone(), spec.key.clone()),
         None => return Some(None),

@@ -86,3 +86,31 @@ fn a_ball_with_a_negative_radius_field_is_refused() {
         "{err}"
     );
 }
+
+/// The cart of docs/attributes.md: a wheel of radius r on a cart along x.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81, up = z, speeds = [theta])]
+#[body(cart, parent = ground, joint = prismatic(axis = x), q = s,
+       parts(particle(mass = 1.0)))]
+#[body(wheel, parent = cart, joint = revolute(axis = y, at = [0.0, 0.0, r]), q = theta,
+       parts(disk(mass = 0.5, radius = r, axis = y)),
+       rolls = disk(radius = r, axle = y))]
+struct Cart {
+    r: f64,
+}
+
+#[test]
+fn the_docs_cart_rolls_at_r_theta_dot_and_keeps_rolling_at_constant_speed() {
+    let cart = Cart { r: 0.2 };
+    // The foot of the wheel is still: ṡ + (θ̇ ŷ × (−r ẑ))·x̂ = ṡ − r θ̇ = 0.
+    let rates = cart.rates(&[0.0, 0.0], &[1.0]).expect("rates");
+    assert!((rates[Cart::S] - 0.2).abs() < 1e-15, "{rates:?}");
+    // One row (the horizontal one along the rail); the height is held by the joints.
+    assert_eq!(Cart::STATE, 3);
+    assert_eq!(Cart::SPEEDS, [Cart::THETA]);
+    // Level floor, no force along it: θ̈ = 0 at any angle and speed.
+    let (_, ud) = cart
+        .derivative(0.0, &[0.3, 1.1], &[-4.0])
+        .expect("derivative");
+    assert!(ud[0].abs() < 1e-14, "{ud:?}");
+}
