@@ -41,6 +41,7 @@ mod derive {
 mod constraints {
     mod bicycle;
     mod bicycle_macro;
+    mod bicycle_macro_cross;
     mod disk;
     mod errors;
     mod four_bar;
