@@ -1,19 +1,20 @@
 //! The benchmark bicycle of Meijaard, Papadopoulos, Ruina & Schwab (Proc. R. Soc. A 463,
-//! 2007): the Carvallo–Whipple model derived nonlinear by the symbolic engine, linearised
-//! about the upright straight run, its eigenvalues against the forward speed, and the weave
-//! and capsize speeds that bound its self-stable range.
+//! 2007): the Carvallo–Whipple model derived nonlinear by `#[derive(Mechanism)]` at compile
+//! time (examples/mechanisms/bicycle.rs: four bodies on three massless carriers, two
+//! knife-edge wheels declared `rolls = disk(..)`), linearised about the upright straight run,
+//! its eigenvalues against the forward speed, and the weave and capsize speeds that bound its
+//! self-stable range.
 //!
 //! ```sh
 //! cargo run --release --example bicycle [plot directory]
 //! ```
 //!
-//! Four rigid bodies — rear wheel, rear frame with rider, fork with handlebar, front wheel
-//! — in eight coordinates (rear contact x, y; yaw, roll, pitch, steer; two wheel angles),
-//! two knife-edge wheels rolling without slip: four rolling rows and the front wheel's
-//! contact height, five constraints leaving three free speeds (roll, steer, rear wheel).
-//! The linearisation recovers the paper's M, C₁, K₀, K₂ (its eq. 5.3–5.6); the eigenvalues
-//! are compared with its Table 2 at 0 … 10 m/s, and a nonlinear run at 5 m/s shows the
-//! weave dying out with the energy kept.
+//! Eight coordinates (rear contact x, y; yaw, roll, pitch; the rear wheel's angle on the
+//! frame, steer, the front wheel's angle), two wheels rolling without slip: four rolling rows
+//! and the front wheel's contact height, five constraints leaving three free speeds (roll,
+//! steer, rear wheel). The linearisation recovers the paper's M, C₁, K₀, K₂ (its eq.
+//! 5.3–5.6); the eigenvalues are compared with its Table 2 at 1 … 10 m/s, and a nonlinear run
+//! at 5 m/s shows the weave dying out with the energy kept.
 
 mod common;
 
@@ -21,9 +22,108 @@ use std::error::Error;
 use std::time::Instant;
 
 use common::{Axes, Series, Table, plot};
-use precess::nalgebra::Matrix2;
+use precess::mechanism::rolling::split_rolling;
+use precess::nalgebra::{Matrix2, Matrix3, Matrix4};
 use precess::ode::{AdaptiveConfig, Dop853};
-use precess_testkit::bicycle::{CAPSIZE_SPEED, Linear, Parameters, TABLE_2, WEAVE_SPEED, Whipple};
+use precess::prelude::*;
+use precess_testkit::bicycle::{CAPSIZE_SPEED, Linear, TABLE_2, WEAVE_SPEED};
+
+#[path = "mechanisms/bicycle.rs"]
+mod mechanism;
+use mechanism::Bicycle;
+
+/// [φ̈, δ̈] at roll φ, steer δ and their rates x, the rear wheel turning at −v / r_R, the
+/// pitch put back on the floor first.
+fn lateral(bike: &Bicycle, x: [f64; 4], v: f64) -> Result<[f64; 2], MechanismError> {
+    let mut q = [0.0; 8];
+    q[Bicycle::PHI] = x[0];
+    q[Bicycle::DELTA] = x[1];
+    bike.close_contacts(&mut q)?;
+    let (_, ud) = bike.derivative(0.0, &q, &[x[2], x[3], -v / bike.r_r])?;
+    Ok([ud[0], ud[1]])
+}
+
+/// ∂[φ̈, δ̈]/∂x_j at the upright run at speed v: for an angle, central differences
+/// Richardson-extrapolated twice (steps 10⁻², ½·10⁻², ¼·10⁻²: error O(h⁶)); for a rate, one
+/// central difference of step 1, exact since the accelerations are quadratic in the speeds.
+fn column(bike: &Bicycle, j: usize, v: f64) -> Result<[f64; 2], MechanismError> {
+    let central = |h: f64| -> Result<[f64; 2], MechanismError> {
+        let (mut xp, mut xm) = ([0.0; 4], [0.0; 4]);
+        xp[j] = h;
+        xm[j] = -h;
+        let (p, m) = (lateral(bike, xp, v)?, lateral(bike, xm, v)?);
+        Ok([(p[0] - m[0]) / (2.0 * h), (p[1] - m[1]) / (2.0 * h)])
+    };
+    if j >= 2 {
+        return central(1.0);
+    }
+    let h = 1e-2;
+    let d = [central(h)?, central(h / 2.0)?, central(h / 4.0)?];
+    Ok([0, 1].map(|i| {
+        let r1 = (4.0 * d[1][i] - d[0][i]) / 3.0;
+        let r2 = (4.0 * d[2][i] - d[1][i]) / 3.0;
+        (16.0 * r2 - r1) / 15.0
+    }))
+}
+
+/// The lower half [∂u̇/∂(φ, δ), ∂u̇/∂(φ̇, δ̇)] of the lateral state matrix at speed v.
+fn lower(bike: &Bicycle, v: f64) -> Result<(Matrix2<f64>, Matrix2<f64>), MechanismError> {
+    let c: Vec<[f64; 2]> = (0..4)
+        .map(|j| column(bike, j, v))
+        .collect::<Result<_, _>>()?;
+    Ok((
+        Matrix2::new(c[0][0], c[1][0], c[0][1], c[1][1]),
+        Matrix2::new(c[2][0], c[3][0], c[2][1], c[3][1]),
+    ))
+}
+
+/// The paper's M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0 from the derived bicycle: M is the
+/// lateral block of the reduced mass matrix Sᵀ M S at the upright run; u̇ = M⁻¹ r, so
+/// ∂u̇/∂q = −M⁻¹ (g K₀ + v² K₂) and ∂u̇/∂q̇ = −v M⁻¹ C₁, exactly quadratic and linear in v:
+/// the speeds 0 and 1 fix them.
+fn linearise(bike: &Bicycle) -> Result<Linear, Box<dyn Error>> {
+    let mut q = [0.0; 8];
+    bike.close_contacts(&mut q)?;
+    let partition = bike.partition();
+    let (a, _) = bike.constraint_rows(&q, &[0.0; 8]);
+    let projected = partition.rates(&a, &[0.0; 3])?;
+    let (mass, _) = bike.mass_forcing(0.0, &q, &[0.0; 8]);
+    let s = projected.projection;
+    let reduced: Matrix3<f64> = s.transpose() * mass * s;
+    let m = Matrix2::new(
+        reduced[(0, 0)],
+        reduced[(0, 1)],
+        reduced[(1, 0)],
+        reduced[(1, 1)],
+    );
+    let (p0, _) = lower(bike, 0.0)?;
+    let (p1, d1) = lower(bike, 1.0)?;
+    Ok(Linear {
+        m,
+        k0: -(m * p0) / bike.g,
+        k2: -(m * (p1 - p0)),
+        c1: -(m * d1),
+        g: bike.g,
+    })
+}
+
+/// The eigenvalues at speed v from a fresh Jacobian (no use of the structure in v).
+fn direct_eigenvalues(
+    bike: &Bicycle,
+    v: f64,
+) -> Result<Vec<precess::nalgebra::Complex<f64>>, Box<dyn Error>> {
+    let (p, d) = lower(bike, v)?;
+    let mut a = Matrix4::zeros();
+    a[(0, 2)] = 1.0;
+    a[(1, 3)] = 1.0;
+    for i in 0..2 {
+        for j in 0..2 {
+            a[(2 + i, j)] = p[(i, j)];
+            a[(2 + i, 2 + j)] = d[(i, j)];
+        }
+    }
+    Ok(precess::linalg::eigenvalues(&a)?)
+}
 
 fn matrix_rows(table: &mut Table, name: &str, got: &Matrix2<f64>, paper: &Matrix2<f64>) {
     for i in 0..2 {
@@ -34,19 +134,13 @@ fn matrix_rows(table: &mut Table, name: &str, got: &Matrix2<f64>, paper: &Matrix
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
+    // Derived when this example was compiled: M, f, A, Ȧq̇ as straight-line code.
+    let bike = Bicycle::benchmark();
     let started = Instant::now();
-    let bike = Whipple::new(&Parameters::benchmark())?;
-    let derived = started.elapsed();
+    let lin = linearise(&bike)?;
     println!(
-        "derived and lowered in {:.2} s: M and f {} operations, A and Ȧq̇ {}",
-        derived.as_secs_f64(),
-        bike.op_counts[0],
-        bike.op_counts[1]
-    );
-    let started = Instant::now();
-    let lin = bike.linearise()?;
-    println!(
-        "linearised in {:.1} ms (Richardson-extrapolated central differences, Newton on the pitch)",
+        "derived by #[derive(Mechanism)] at compile time; linearised in {:.1} ms \
+         (Richardson-extrapolated central differences, Newton on the pitch)",
         1e3 * started.elapsed().as_secs_f64()
     );
     let paper = Linear::published();
@@ -77,7 +171,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut worst = 0.0_f64;
     for (k, &(cap, re, im, caster)) in TABLE_2.iter().enumerate() {
         let v = (k + 1) as f64;
-        let eig = lin.eigenvalues(v)?;
+        let eig = direct_eigenvalues(&bike, v)?;
         let real: Vec<f64> = eig.iter().filter(|z| z.im == 0.0).map(|z| z.re).collect();
         let pair = eig.iter().find(|z| z.im > 0.0);
         let (got_cap, got_caster) = match real.as_slice() {
@@ -135,9 +229,13 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     // The nonlinear model at 5 m/s, pushed with a roll rate of 0.5 rad/s: the weave decays.
     let y0 = bike.upright(5.0, 0.5)?;
-    let e0 = bike.outputs(&y0)?[0];
+    let energy = |y: &[f64; Bicycle::STATE]| -> Result<f64, MechanismError> {
+        let (q, u) = split_rolling::<8, 3, { Bicycle::STATE }>(y);
+        Ok(bike.energy(&q, &bike.rates(&q, &u)?))
+    };
+    let e0 = energy(&y0)?;
     let mut ode = Dop853::new(
-        bike.system(),
+        bike.rolling_system::<{ Bicycle::STATE }>(),
         0.0,
         y0,
         AdaptiveConfig::with_tol(1e-12, 1e-12),
@@ -151,20 +249,18 @@ fn main() -> Result<(), Box<dyn Error>> {
     for k in 1..=1000 {
         ode.advance_to(k as f64 * 0.01)?;
         let y = *ode.y();
-        let out = bike.outputs(&y)?;
-        drift = drift.max(((out[0] - e0) / e0).abs());
-        slip = out[1..].iter().fold(slip, |s, v| s.max(v.abs()));
-        let mut q = [0.0; 8];
-        q.copy_from_slice(&y[..8]);
-        height = height.max(bike.front_height(&q).abs());
-        lean.push((ode.t(), y[3]));
-        steer.push((ode.t(), y[5]));
+        drift = drift.max(((energy(&y)? - e0) / e0).abs());
+        let (q, u) = split_rolling::<8, 3, { Bicycle::STATE }>(&y);
+        slip = slip.max(bike.contact_speed(&q, &bike.rates(&q, &u)?));
+        height = bike.heights(&q).iter().fold(height, |m, h| m.max(h.abs()));
+        lean.push((ode.t(), y[Bicycle::PHI]));
+        steer.push((ode.t(), y[Bicycle::DELTA]));
     }
     println!(
         "\nnonlinear run at 5 m/s for 10 s: energy kept to {drift:.1e} (relative), contact slip \
          ≤ {slip:.1e} m/s, front wheel on the ground to {height:.1e} m, lean {:.2e} rad at \
          the end",
-        ode.y()[3]
+        ode.y()[Bicycle::PHI]
     );
     let path = plot(
         "bicycle_weave.svg",

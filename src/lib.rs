@@ -85,6 +85,7 @@ pub mod prelude {
         ContactDynamics, ContactError, ContactSystem, LawKind, Phase, Reaction,
     };
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
+    pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
     };
@@ -109,12 +110,15 @@ pub mod __private {
     };
     pub use precess_core::exact::Dd;
     pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
+    pub use precess_core::lagrange::Partition;
     pub use precess_core::mechanism::charts::SphericalJoint;
+    pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, MechanismDynamics, MechanismError, check_axis,
         check_universal_axes,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
+    pub use precess_core::nalgebra::{SMatrix, SVector};
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::TaylorSystem;

@@ -47,9 +47,10 @@ pub fn derive_rigid_body(input: TokenStream) -> TokenStream {
 
 /// Derives `MechanismDynamics<N>` (and the ODE `System<2N>`) for a tree of rigid bodies
 /// described by `#[body(...)]` attributes, one per body with the joint to its parent, and
-/// `#[mechanism(...)]` settings (gravity).
+/// `#[mechanism(...)]` settings (gravity). When bodies roll on a floor (`rolls = disk(..)`
+/// or `sphere(..)`, with `up` and `speeds`), it derives `RollingDynamics<N, M, K>` instead.
 ///
-/// See `docs/mechanisms.md` for the language.
+/// See `docs/mechanisms.md` and `docs/attributes.md` for the language.
 #[proc_macro_derive(Mechanism, attributes(mechanism, body))]
 pub fn derive_mechanism(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);

@@ -40,10 +40,13 @@ mod derive {
 /// Constraints: nonholonomic rolling and closed loops.
 mod constraints {
     mod bicycle;
+    mod bicycle_macro;
+    mod bicycle_macro_cross;
     pub mod disk;
     mod errors;
     mod four_bar;
     mod rheonomic;
+    mod rolling_macro;
 }
 /// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
 mod ensemble;

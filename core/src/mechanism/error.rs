@@ -156,6 +156,17 @@ pub enum MechanismError {
         /// Its value.
         value: f64,
     },
+    /// A rolling body's radius, or its disk axle's squared length, that the struct's fields
+    /// make zero or negative (or NaN); literals are refused by the derive.
+    #[error("{owner}: {quantity} must be positive, got {value:e} from the struct's fields")]
+    NonPositiveParameter {
+        /// The rolling body (`` body `rear_wheel` ``).
+        owner: String,
+        /// The quantity (`rolling radius`, `|axle|²`).
+        quantity: String,
+        /// Its value.
+        value: f64,
+    },
     /// A part of a body breaks, for the values of the struct's fields, a rule of the body
     /// language that literal parts meet at compile time (a zero mass is allowed: a massless
     /// link is the singular mass matrix's concern).

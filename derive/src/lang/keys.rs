@@ -278,6 +278,22 @@ pub const SEQUENCE: &str = "sequence";
 pub const ROUTE: &str = "route";
 /// The joint kinds.
 pub const JOINT_KINDS: &[&str] = &precess_core::mechanism::JointKind::NAMES;
+/// The surface a mechanism's body rolls on the floor with, `rolls = disk(..)` or
+/// `rolls = sphere(..)`.
+pub const ROLLS: &str = "rolls";
+/// The floor's upward normal of a mechanism with rolling bodies: a signed ground axis.
+pub const UP: &str = "up";
+/// The coordinates whose rates are a rolling mechanism's free speeds, `speeds = [a, b]`.
+pub const SPEEDS: &str = "speeds";
+/// The axle of a rolling disk, normal to its rim's plane.
+pub const AXLE: &str = "axle";
+/// The rolling surfaces of `rolls = ..`, `name(required keys; optional keys)`, in the order
+/// the docs list them: a disk rim about its hub `at` (the origin when left out) normal to
+/// its axle, and a ball about its centre `at`.
+pub const ROLLING_SURFACES: &[(&str, &[&str], &[&str])] = &[
+    ("disk", &[RADIUS, AXLE], &[AT]),
+    ("sphere", &[RADIUS], &[AT]),
+];
 /// The `key = value` settings of `#[link(...)]` (besides its name and its groups).
 pub const LINK_KEYS: &[&str] = &[
     PARENT,
@@ -287,11 +303,12 @@ pub const LINK_KEYS: &[&str] = &[
     EFFORT,
     BODY_TORQUE,
     SPACE_TORQUE,
+    ROLLS,
 ];
 /// The `name(...)` groups of `#[link(...)]`.
 pub const LINK_GROUPS: &[&str] = &[PARTS_GROUP, SPRING];
 /// The keys of `#[mechanism(...)]`.
-pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE, TAYLOR];
+pub const MECHANISM_KEYS: &[&str] = &[GRAVITY, ROUTE, TAYLOR, UP, SPEEDS];
 /// The routes of [`ROUTE`].
 pub const ROUTES: &[&str] = &precess_core::mechanism::Route::NAMES;
 

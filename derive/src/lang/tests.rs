@@ -85,7 +85,29 @@ fn every_expansion() -> Vec<(&'static str, String)> {
                 struct Pendulum;
             }),
         ),
+        (
+            "rolling mechanism",
+            mechanism(quote! {
+                #[mechanism(gravity = 9.81, up = z, speeds = [theta])]
+                #[body(cart, parent = ground, joint = prismatic(axis = x), q = s,
+                       parts(particle(mass = 1.0)))]
+                #[body(wheel, parent = cart, joint = revolute(axis = y, at = [0.0, 0.0, r]),
+                       q = theta, parts(disk(mass = 0.5, radius = r, axis = y)),
+                       rolls = disk(radius = r, axle = y))]
+                struct Cart { r: f64 }
+            }),
+        ),
         ("taylor_system", system),
+        (
+            "rolling stubs",
+            mechanism(quote! {
+                #[mechanism(gravity = 9.81, up = z, speeds = [theta])]
+                #[body(wheel, parent = ground, joint = revolute(axis = y), q = theta,
+                       parts(disk(mass = 0.5, radius = 0.5, axis = y)),
+                       rolls = disk(radius = -0.5, axle = y))]
+                struct Broken;
+            }),
+        ),
         (
             "stubs",
             rigid_body(quote! {
@@ -104,7 +126,7 @@ fn generated_code_names_precess_only_through_the_hidden_module() {
     for (what, code) in every_expansion() {
         assert!(code.contains(":: precess :: __private"), "{what}: {code}");
         assert!(
-            !code.contains("compile_error") || what == "stubs",
+            !code.contains("compile_error") || what.ends_with("stubs"),
             "{what}: {code}"
         );
         let leaks = outside_private(&code);
@@ -113,6 +135,29 @@ fn generated_code_names_precess_only_through_the_hidden_module() {
             "{what} names precess outside __private: {leaks:?}"
         );
     }
+}
+
+/// A mechanism whose bodies roll implements `RollingDynamics<n, m, k>` and not the
+/// `MechanismDynamics` and `System<2n>` of a state (q, q̇) it does not have.
+#[test]
+fn a_rolling_mechanism_implements_rolling_dynamics_only() {
+    let code = every_expansion()
+        .into_iter()
+        .find(|(what, _)| *what == "rolling mechanism")
+        .map(|(_, code)| code)
+        .unwrap_or_default();
+    assert!(
+        code.contains("RollingDynamics < 2usize , 1usize , 1usize >"),
+        "{code}"
+    );
+    assert!(!code.contains("MechanismDynamics"), "{code}");
+    assert!(!code.contains("System <"), "{code}");
+    assert!(code.contains("pub const STATE : usize = 3usize"), "{code}");
+    // The field radius is checked at run time, as a literal is at compile time.
+    assert!(
+        method(&code, "check_parameters").contains("NonPositiveParameter"),
+        "{code}"
+    );
 }
 
 /// The first message of an expansion's errors, with the text it is spanned on.

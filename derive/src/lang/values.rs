@@ -239,6 +239,19 @@ impl Checker<'_> {
                     }
                 }
             }
+            // The sine and cosine of a value: an angle among the fields (a bicycle's steer
+            // axis tilted by its head angle λ is [sin λ, 0, cos λ]).
+            Expr::Call(call)
+                if call.args.len() == 1
+                    && path_ident(&call.func).is_some_and(|f| f == "sin" || f == "cos") =>
+            {
+                let x = self.scalar(call.args.first()?)?;
+                if path_ident(&call.func).is_some_and(|f| f == "sin") {
+                    Some(self.arena.sin(x))
+                } else {
+                    Some(self.arena.cos(x))
+                }
+            }
             Expr::Path(p) => match p.path.get_ident() {
                 Some(ident) => self.field(ident),
                 None => {

@@ -10,6 +10,7 @@ use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
+use super::rolling::{CheckedRolling, RollingSettings, WheelSpec};
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, part_list};
 use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
@@ -37,6 +38,8 @@ pub struct CheckedMechanism {
     /// Each body's parts as written, in the order of `scene.bodies`: those made of fields are
     /// checked at run time with the rules literal parts met here.
     pub parts: Vec<Description<ExprId>>,
+    /// The wheels, the floor and the free speeds, when bodies roll.
+    pub rolling: Option<CheckedRolling>,
 }
 
 /// One link as read, before the tree is checked.
@@ -55,6 +58,8 @@ pub(super) struct LinkSpec<'a> {
     pub(super) body: MechanismBody,
     /// Its parts as written.
     pub(super) parts: Description<ExprId>,
+    /// Its rolling surface, if it rolls.
+    pub(super) rolls: Option<WheelSpec>,
 }
 
 /// Checks every attribute; `None` after recording why the mechanism cannot be derived.
@@ -64,7 +69,7 @@ pub fn check(
     links: &Links,
 ) -> Option<CheckedMechanism> {
     let errors_before = ck.cx.error_count();
-    let (gravity, route) = mechanism_settings(ck, settings);
+    let (gravity, route, rolling_settings) = mechanism_settings(ck, settings);
     let mut specs: Vec<LinkSpec> = Vec::new();
     let mut efforts = Vec::new();
     for link in &links.links {
@@ -94,36 +99,52 @@ pub fn check(
         .iter()
         .flat_map(|s| s.coordinates.iter().cloned())
         .collect();
-    let (bodies, parts) = specs
-        .into_iter()
-        .zip(parents)
-        .map(|(mut spec, parent)| {
-            spec.body.joint.parent = parent;
-            (spec.body, spec.parts)
-        })
-        .unzip();
+    let mut wheels = Vec::new();
+    let mut bodies = Vec::with_capacity(specs.len());
+    let mut parts = Vec::with_capacity(specs.len());
+    for (index, (mut spec, parent)) in specs.into_iter().zip(parents).enumerate() {
+        spec.body.joint.parent = parent;
+        if let Some(rolls) = spec.rolls {
+            wheels.push((index, spec.name.to_string(), rolls));
+        }
+        bodies.push(spec.body);
+        parts.push(spec.parts);
+    }
+    let rolling = super::rolling::rolling(ck, &rolling_settings, wheels, &coordinates)?;
     Some(CheckedMechanism {
         scene: MechanismScene { bodies, gravity },
         coordinates,
         efforts,
         route,
         parts,
+        rolling,
     })
 }
 
-/// `gravity = g` (along −z) or `gravity = [gx, gy, gz]`, and `route = ...`.
-fn mechanism_settings(
+/// `gravity = g` (along −z) or `gravity = [gx, gy, gz]`, `route = ...`, and the rolling
+/// keys as written (read once the bodies are known).
+fn mechanism_settings<'s>(
     ck: &mut Checker,
-    settings: &Parsed<KeyValue>,
-) -> (Option<[ExprId; 3]>, Route) {
+    settings: &'s Parsed<KeyValue>,
+) -> (Option<[ExprId; 3]>, Route, RollingSettings<'s>) {
     let mut gravity = None;
     let mut route = Route::Auto;
+    // The first of each (a repeat is an error of `distinct`).
+    let first = |k: &str| settings.items.iter().find(|kv| kv.key == k);
+    let rolling = RollingSettings {
+        up: first(keys::UP),
+        speeds: first(keys::SPEEDS),
+        route: first(keys::ROUTE),
+        taylor: first(keys::TAYLOR),
+    };
     let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
     let cx = ck.cx;
     for KeyValue { key, value } in distinct(cx, &settings.items, &in_mechanism) {
         match keys::MECHANISM_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => gravity = ck.gravity(value),
             Some(keys::ROUTE) => route = ck.route(value),
+            // Read once the bodies are known.
+            Some(keys::UP | keys::SPEEDS) => {}
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
@@ -135,7 +156,7 @@ fn mechanism_settings(
             ),
         }
     }
-    (gravity, route)
+    (gravity, route, rolling)
 }
 
 /// A link's mass, centre and inertia about the centre, and its parts as written.
@@ -152,6 +173,7 @@ pub(super) struct LinkKeys<'a> {
     pub(super) body_torque: Option<&'a Expr>,
     pub(super) space_torque: Option<&'a Expr>,
     pub(super) spring: Option<(&'a Ident, &'a [KeyValue])>,
+    pub(super) rolls: Option<(&'a Ident, &'a Expr)>,
     pub(super) parts: Option<(&'a Ident, &'a [Item])>,
 }
 
@@ -208,6 +230,9 @@ impl Checker<'_> {
                         keys::did_you_mean(&name.to_string(), known())
                     ),
                 ),
+                LinkItem::Item(Item::Setting(kv)) if kv.key == keys::ROLLS => {
+                    k.rolls = Some((&kv.key, &kv.value));
+                }
                 LinkItem::Item(Item::Setting(kv)) => {
                     let slot = match kv.key.to_string().as_str() {
                         keys::PARENT => &mut k.parent,
@@ -284,6 +309,12 @@ impl Checker<'_> {
         };
         let dof = joint.as_ref().map_or(1, |j| j.kind.dof());
         let loads = self.loads(&k, dof, efforts);
+        let rolls = k.rolls.map(|(key, e)| {
+            self.rolls(e).map(|surface| WheelSpec {
+                surface,
+                key: key.clone(),
+            })
+        });
         let body_torque = k.body_torque.map(|e| self.vector(e));
         let space_torque = k.space_torque.map(|e| self.vector(e));
         let parts = match k.parts {
@@ -333,6 +364,7 @@ impl Checker<'_> {
             coordinates,
             body,
             parts: description,
+            rolls: rolls.flatten(),
         })
     }
 

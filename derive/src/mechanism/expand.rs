@@ -6,6 +6,7 @@
 use std::collections::HashSet;
 
 use precess_core::codegen::Emitted;
+use precess_core::lagrange::Coordinates;
 use precess_core::mechanism::MechanismDerivation;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
@@ -19,6 +20,7 @@ use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
 
 mod charts;
+mod rolling;
 
 /// Past this many operations q̈ and its pivots are emitted once, in a function the checked
 /// and the unchecked method share (a 10-link chain's are about 2 000).
@@ -31,6 +33,9 @@ pub fn expand(
     checked: &CheckedMechanism,
     taylor: Option<usize>,
 ) -> Option<TokenStream> {
+    if let Some(rolling) = &checked.rolling {
+        return rolling::expand(ex, checked, rolling);
+    }
     let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
     let arena = &mut *ex.arena;
     let p = Private;
@@ -56,7 +61,8 @@ pub fn expand(
     let low = Lowering::new(cx, ident, symbols);
     let method = Method {
         low: &low,
-        derivation: &derivation,
+        coordinates: &derivation.coordinates,
+        time: derivation.time,
         efforts: &checked.efforts,
     };
     let MechanismDerivation {
@@ -257,9 +263,12 @@ fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
 
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
 pub(super) struct Method<'a> {
-    low: &'a Lowering<'a>,
-    derivation: &'a MechanismDerivation,
-    efforts: &'a [UserEffort],
+    pub(super) low: &'a Lowering<'a>,
+    /// q and q̇, read from `q` and `qdot`.
+    pub(super) coordinates: &'a Coordinates,
+    /// The time symbol, read from `t`.
+    pub(super) time: ExprId,
+    pub(super) efforts: &'a [UserEffort],
 }
 
 impl Method<'_> {
@@ -270,13 +279,13 @@ impl Method<'_> {
         outputs: &[ExprId],
         build: impl FnOnce(&[TokenStream]) -> TokenStream,
     ) -> TokenStream {
-        let c = &self.derivation.coordinates;
+        let c = self.coordinates;
         let mut reads: Vec<(ExprId, TokenStream)> = Vec::new();
         for (k, (&q, &v)) in c.q.iter().zip(&c.rates).enumerate() {
             reads.push((q, quote!(q[#k])));
             reads.push((v, quote!(qdot[#k])));
         }
-        reads.push((self.derivation.time, quote!(t)));
+        reads.push((self.time, quote!(t)));
         let read = symbols_read(arena, outputs);
         // A user function is called only by the methods whose result reads its value.
         let calls = self.efforts.iter().filter_map(|e| {

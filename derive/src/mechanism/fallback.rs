@@ -15,6 +15,7 @@ use super::attr::LinkItem;
 use super::joint::path_ident;
 use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::syntax::KeyValue;
 
 /// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -24,9 +25,15 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
     let coordinates = written_coordinates(input);
+    let rolling = rolls(input);
     // Each name once as a const (case aside, as the consts are named), N counting every one
-    // written: a duplicate is its own error, and the uses are sized for what was written.
-    let mut named: Vec<String> = Vec::new();
+    // written: a duplicate is its own error, and the uses are sized for what was written. A
+    // rolling stub has `STATE` and `SPEEDS` of its own (a coordinate so named is an error).
+    let mut named: Vec<String> = if rolling {
+        vec!["STATE".to_owned(), "SPEEDS".to_owned()]
+    } else {
+        Vec::new()
+    };
     let unique = coordinates.iter().enumerate().filter(|(_, c)| {
         let upper = c.to_string().to_uppercase();
         let new = !named.contains(&upper);
@@ -43,6 +50,15 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let stub = quote!(::core::unimplemented!(
         "the #[derive(Mechanism)] description has errors"
     ));
+    if rolling {
+        return rolling_stub(
+            ident,
+            coordinates.len(),
+            written_speeds(input),
+            consts,
+            &stub,
+        );
+    }
     let n = coordinates.len();
     let (dynamics_generics, system_generics, n, s) = if n == 0 {
         (
@@ -113,4 +129,94 @@ fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
         }
     }
     names
+}
+
+/// True if a `#[body(...)]` declares `rolls = ..`: the mechanism's impl is then
+/// `RollingDynamics`, not `MechanismDynamics`.
+fn rolls(input: &DeriveInput) -> bool {
+    link_lists(input).any(|list| {
+        list.iter()
+            .any(|item| item.setting().is_some_and(|kv| kv.key == keys::ROLLS))
+    })
+}
+
+/// The number of names in `speeds = [..]` of `#[mechanism(...)]`, if written.
+fn written_speeds(input: &DeriveInput) -> Option<usize> {
+    input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident(keys::MECHANISM))
+        .filter_map(|a| {
+            a.parse_args_with(Punctuated::<KeyValue, Token![,]>::parse_terminated)
+                .ok()
+        })
+        .flatten()
+        .find(|kv| kv.key == keys::SPEEDS)
+        .and_then(|kv| match kv.value {
+            Expr::Array(a) => Some(a.elems.len()),
+            _ => None,
+        })
+}
+
+/// The stubs of a rolling mechanism: the coordinate consts, `STATE` and
+/// `RollingDynamics<N, N − K, K>` for the N coordinates and K speeds written (every M and K
+/// when the speeds could not be read, or name more than the coordinates).
+fn rolling_stub(
+    ident: &Ident,
+    n: usize,
+    speeds: Option<usize>,
+    consts: impl Iterator<Item = TokenStream>,
+    stub: &TokenStream,
+) -> TokenStream {
+    let p = Private;
+    let written = speeds.filter(|&k| k <= n).unwrap_or(0);
+    let (generics, m, k, state) = match speeds.filter(|&k| k <= n) {
+        Some(k) => {
+            let m = n - k;
+            let state = n + k;
+            (TokenStream::new(), quote!(#m), quote!(#k), quote!(#state))
+        }
+        None => (
+            quote!(<const __M: usize, const __K: usize>),
+            quote!(__M),
+            quote!(__K),
+            quote!(#n),
+        ),
+    };
+    quote! {
+        #[automatically_derived]
+        impl #ident {
+            #(#consts)*
+            #[doc(hidden)]
+            pub const STATE: usize = #state;
+            #[doc(hidden)]
+            pub const SPEEDS: [usize; #written] = [0; #written];
+        }
+
+        #[automatically_derived]
+        impl #generics #p::RollingDynamics<#n, #m, #k> for #ident {
+            fn partition(&self) -> #p::Partition<#m, #k> { #stub }
+            fn coordinate_names(&self) -> [&'static str; #n] { #stub }
+            fn mass_forcing(&self, _: f64, _: &[f64; #n], _: &[f64; #n]) -> (#p::SMatrix<f64, #n, #n>, #p::SVector<f64, #n>) { #stub }
+            fn constraint_rows(&self, _: &[f64; #n], _: &[f64; #n]) -> (#p::SMatrix<f64, #m, #n>, #p::SVector<f64, #m>) { #stub }
+            fn holonomic_rows(&self) -> [bool; #m] { #stub }
+            fn heights(&self, _: &[f64; #n]) -> [f64; #m] { #stub }
+            fn lowest_tilt(&self, _: &[f64; #n]) -> (usize, f64) { #stub }
+            fn energy(&self, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
+            fn contact_speed(&self, _: &[f64; #n], _: &[f64; #n]) -> f64 { #stub }
+        }
+    }
+}
+
+/// The item lists of the `#[body(...)]` attributes that parse.
+fn link_lists(input: &DeriveInput) -> impl Iterator<Item = Vec<LinkItem>> + '_ {
+    input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident(keys::LINK))
+        .filter_map(|a| {
+            a.parse_args_with(Punctuated::<LinkItem, Token![,]>::parse_terminated)
+                .ok()
+        })
+        .map(|list| list.into_iter().collect())
 }

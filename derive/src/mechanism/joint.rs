@@ -207,7 +207,7 @@ impl Checker<'_> {
 
     /// `x`, `y`, `z` (or negated) or `[x, y, z]`; a literal axis of zero length has no
     /// direction.
-    fn joint_axis(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
+    pub(super) fn joint_axis(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
         let (inner, negated) = match e {
             Expr::Unary(u) if matches!(u.op, syn::UnOp::Neg(_)) => (&*u.expr, true),
             _ => (e, false),

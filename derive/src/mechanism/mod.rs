@@ -3,8 +3,9 @@
 //! joint) and `#[mechanism(...)]` settings, in the phases every attribute has over `lang/`:
 //! `attr` (syntax), `check` (meaning, with a body's joint in `joint`, its loads in `loads`
 //! and the tree's rules in `tree`), `expand` (the `MechanismDynamics` impl, with
-//! `parameters`, `jacobian` and `expand/charts`) and `fallback` (the stubs). This file is the
-//! derive's driver.
+//! `parameters`, `jacobian` and `expand/charts`) and `fallback` (the stubs). Bodies that roll
+//! on a floor (`rolls = ..`, with `up` and `speeds`) are read in `rolling` and expanded to
+//! `impl RollingDynamics` by `expand/rolling` instead. This file is the derive's driver.
 
 pub mod attr;
 pub mod check;
@@ -14,6 +15,7 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
+mod rolling;
 mod tree;
 
 use precess_core::sym::Arena;

@@ -7,6 +7,7 @@
 
 use precess_core::body::{Description, Part, evaluate};
 use precess_core::codegen::Emitted;
+use precess_core::mechanism::rolling::WheelSurface;
 use precess_core::mechanism::{JointKind, MechanismScene};
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -18,7 +19,7 @@ use crate::lang::symbols::Lowering;
 use crate::lang::tokens::{orientation, shape};
 
 /// `fn check_parameters(&self)`, or nothing when no checked value reads a field.
-pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> TokenStream {
+pub fn method(low: &Lowering, arena: &mut Arena, checked: &CheckedMechanism) -> TokenStream {
     let p = Private;
     let user = |e: ExprId| checked.efforts.iter().any(|u| u.symbol == e);
     let mut checks = Checks::default();
@@ -65,6 +66,11 @@ pub fn method(low: &Lowering, arena: &Arena, checked: &CheckedMechanism) -> Toke
         }
         for (index, part) in parts.parts.iter().enumerate() {
             checks.part(arena, &body.name, index, part);
+        }
+    }
+    if let Some(rolling) = &checked.rolling {
+        for (wheel, body) in rolling.scene.wheels.iter().zip(&rolling.bodies) {
+            checks.wheel(arena, body, &wheel.surface);
         }
     }
     if checks.values.is_empty() {
@@ -147,6 +153,55 @@ impl Checks {
                 }
             }}
         }));
+    }
+
+    /// A value that must be positive (a rolling radius, an axle's squared length).
+    fn positive(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
+        if !reads_field(arena, e) {
+            return;
+        }
+        self.finite(arena, owner, quantity.clone(), e);
+        let i = self.values.len() - 1;
+        let owner = owner.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
+            quote! {{
+                let __v: f64 = #v;
+                if !(__v > 0.0) {
+                    return ::core::result::Result::Err(#p::MechanismError::NonPositiveParameter {
+                        owner: ::std::string::String::from(#owner),
+                        quantity: ::std::string::String::from(#quantity),
+                        value: __v,
+                    });
+                }
+            }}
+        }));
+    }
+
+    /// A rolling body's surface: its hub or centre finite, its radius positive, a disk's
+    /// axle finite with a positive squared length (literals were checked while expanding).
+    fn wheel(&mut self, arena: &mut Arena, body: &str, surface: &WheelSurface) {
+        let owner = format!("body `{body}`");
+        let (center, radius, axle) = match *surface {
+            WheelSurface::Disk {
+                center,
+                axle,
+                radius,
+            } => (center, radius, Some(axle)),
+            WheelSurface::Sphere { center, radius } => (center, radius, None),
+        };
+        for (k, &e) in center.iter().enumerate() {
+            self.finite(arena, &owner, format!("rolling at[{k}]"), e);
+        }
+        self.positive(arena, &owner, "rolling radius".to_owned(), radius);
+        if let Some(axle) = axle {
+            for (k, &e) in axle.iter().enumerate() {
+                self.finite(arena, &owner, format!("axle[{k}]"), e);
+            }
+            let squares: Vec<ExprId> = axle.iter().map(|&c| arena.mul(c, c)).collect();
+            let squared = arena.sum(&squares);
+            self.positive(arena, &owner, "|axle|²".to_owned(), squared);
+        }
     }
 
     /// A joint's axes (one, or a universal joint's two) to `check_axis` or

@@ -63,7 +63,8 @@ pub(super) fn expand_charts(
         };
         let method = Method {
             low,
-            derivation: &derivation,
+            coordinates: &derivation.coordinates,
+            time: derivation.time,
             efforts: &[],
         };
         let accel = method.body(arena, &derivation.accelerations, |o| quote!([#(#o),*]));

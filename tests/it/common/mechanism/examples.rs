@@ -5,6 +5,8 @@
 
 #[path = "../../../../examples/mechanisms/babyboot.rs"]
 pub mod babyboot;
+#[path = "../../../../examples/mechanisms/bicycle.rs"]
+pub mod bicycle;
 #[path = "../../../../examples/mechanisms/chain.rs"]
 pub mod chain;
 #[path = "../../../../examples/mechanisms/double_pendulum.rs"]

@@ -1,0 +1,225 @@
+//! Expansion of a mechanism whose bodies roll: the engine's `derive_rolling` (M, f, the
+//! wheels' rows A and Ȧq̇, heights, tilts, contact velocities, T + V), each method one
+//! straight-line block quoted into `impl RollingDynamics<N, M, K>`; the provided methods
+//! of the trait finish Maggi's projection numerically. No `MechanismDynamics` and no
+//! `System<2N>`: the state is (q, u), n coordinates and k free speeds, not (q, q̇).
+
+use precess_core::mechanism::MechanismError;
+use precess_core::mechanism::rolling::RollingDerivation;
+use precess_core::sym::ExprId;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::LitStr;
+
+use super::Method;
+use crate::lang::expansion::Expansion;
+use crate::lang::private::Private;
+use crate::lang::symbols::Lowering;
+use crate::mechanism::check::CheckedMechanism;
+use crate::mechanism::rolling::CheckedRolling;
+
+/// `impl RollingDynamics<N, M, K>`, the coordinate consts and `STATE`, or `None` after
+/// recording why the equations could not be derived (the wrong number of free speeds is
+/// spanned on `speeds`).
+pub(super) fn expand(
+    ex: &mut Expansion,
+    checked: &CheckedMechanism,
+    rolling: &CheckedRolling,
+) -> Option<TokenStream> {
+    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
+    let arena = &mut *ex.arena;
+    let p = Private;
+    let derivation: RollingDerivation = match checked.scene.derive_rolling(arena, &rolling.scene) {
+        Ok(d) => d,
+        Err(MechanismError::SpeedCount {
+            got,
+            coordinates,
+            rows,
+        }) => {
+            cx.error_spanned_by(
+                &rolling.speeds,
+                format!(
+                    "the wheels give {} on {}, leaving {} free: `speeds` must name that many coordinates, and names {got}",
+                    counted(rows, "constraint row"),
+                    counted(coordinates, "coordinate"),
+                    counted(coordinates.saturating_sub(rows), "speed"),
+                ),
+            );
+            return None;
+        }
+        Err(e @ MechanismError::UnknownSpeed { .. }) => {
+            cx.error_spanned_by(&rolling.speeds, e);
+            return None;
+        }
+        Err(e) => {
+            cx.error_spanned_by(
+                ident,
+                format!("cannot derive the rolling mechanism's equations of motion: {e}"),
+            );
+            return None;
+        }
+    };
+    let coords = derivation.coordinates();
+    let (n, m, k) = (
+        coords.len(),
+        derivation.rows(),
+        derivation.independent.len(),
+    );
+    let wheels = derivation.tilts.len();
+    let mut symbols = parameters.tokens();
+    for effort in &checked.efforts {
+        let local = super::local_of(effort);
+        symbols.insert_expr(arena, effort.symbol, quote!(#local));
+    }
+    let low = Lowering::new(cx, ident, symbols);
+    let method = Method {
+        low: &low,
+        coordinates: coords,
+        time: derivation.time,
+        efforts: &checked.efforts,
+    };
+    let eqs = &derivation.equations;
+    let mass: Vec<ExprId> = eqs.mass.iter().flatten().copied().collect();
+    let dynamics: Vec<ExprId> = mass.iter().chain(&eqs.forcing).copied().collect();
+    let mass_forcing = method.body(arena, &dynamics, |o| {
+        let (mm, f) = o.split_at((n * n).min(o.len()));
+        quote! {(
+            #p::SMatrix::<f64, #n, #n>::from_row_slice(&[#(#mm),*]),
+            #p::SVector::<f64, #n>::from_column_slice(&[#(#f),*]),
+        )}
+    });
+    let rows: Vec<ExprId> = derivation
+        .constraints
+        .coefficients
+        .iter()
+        .flatten()
+        .chain(&derivation.rate_terms)
+        .copied()
+        .collect();
+    let constraint_rows = method.body(arena, &rows, |o| {
+        let (a, r) = o.split_at((m * n).min(o.len()));
+        quote! {(
+            #p::SMatrix::<f64, #m, #n>::from_row_slice(&[#(#a),*]),
+            #p::SVector::<f64, #m>::from_column_slice(&[#(#r),*]),
+        )}
+    });
+    let zero = arena.zero();
+    let heights: Vec<ExprId> = derivation
+        .constraints
+        .positions
+        .iter()
+        .map(|h| h.unwrap_or(zero))
+        .collect();
+    let heights = method.body(arena, &heights, |o| quote!([#(#o),*]));
+    let holonomic = derivation.constraints.positions.iter().map(Option::is_some);
+    let tilts = method.body(arena, &derivation.tilts, |o| {
+        quote! {
+            let __tilts: [f64; #wheels] = [#(#o),*];
+            // The smallest, or the first NaN: a NaN tilt is no standing wheel either.
+            __tilts.iter().copied().enumerate().fold((0, f64::INFINITY), |__best, (__i, __v)| {
+                if __v < __best.1 || __v.is_nan() { (__i, __v) } else { __best }
+            })
+        }
+    });
+    let total = arena.add(derivation.kinetic, derivation.potential);
+    let energy = method.body(arena, &[total], |o| quote!(#(#o)*));
+    let velocities: Vec<ExprId> = derivation
+        .contact_velocities
+        .iter()
+        .flatten()
+        .copied()
+        .collect();
+    let contact_speed = method.body(arena, &velocities, |o| {
+        let speeds = o.chunks(3).map(|v| quote!((#(#v * #v)+*).sqrt()));
+        quote!([#(#speeds),*].iter().copied().fold(0.0_f64, f64::max))
+    });
+    let names: Vec<LitStr> = checked
+        .coordinates
+        .iter()
+        .map(|c| LitStr::new(&c.to_string(), c.span()))
+        .collect();
+    let independent = &derivation.independent;
+    let dependent = &derivation.dependent;
+    let consts = checked.coordinates.iter().enumerate().map(|(i, c)| {
+        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
+        let doc = format!("The index of the coordinate `{c}` in q and q̇.");
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #i;
+        }
+    });
+    let state = n + k;
+    let state_doc = format!(
+        "The length of the rolling state (q, u): {n} coordinates, then the {k} free speeds; \
+         `model.rolling_system::<{{{ident}::STATE}}>()` is the ODE system over it."
+    );
+    let check_parameters = super::super::parameters::method(&low, arena, checked);
+    Some(quote! {
+        #[automatically_derived]
+        impl #ident {
+            #(#consts)*
+            #[doc = #state_doc]
+            pub const STATE: usize = #state;
+            /// The coordinates whose rates are the free speeds u, in the state's order.
+            pub const SPEEDS: [usize; #k] = [#(#independent),*];
+        }
+
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #p::RollingDynamics<#n, #m, #k> for #ident {
+            fn partition(&self) -> #p::Partition<#m, #k> {
+                #p::Partition {
+                    independent: [#(#independent),*],
+                    dependent: [#(#dependent),*],
+                }
+            }
+
+            fn coordinate_names(&self) -> [&'static str; #n] {
+                [#(#names),*]
+            }
+
+            fn mass_forcing(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> (#p::SMatrix<f64, #n, #n>, #p::SVector<f64, #n>) #mass_forcing
+
+            fn constraint_rows(&self, q: &[f64; #n], qdot: &[f64; #n]) -> (#p::SMatrix<f64, #m, #n>, #p::SVector<f64, #m>) {
+                // The wheels' rows do not depend on time.
+                let t = 0.0_f64;
+                #constraint_rows
+            }
+
+            fn holonomic_rows(&self) -> [bool; #m] {
+                [#(#holonomic),*]
+            }
+
+            fn heights(&self, q: &[f64; #n]) -> [f64; #m] {
+                let (t, qdot) = (0.0_f64, &[0.0_f64; #n]);
+                #heights
+            }
+
+            fn lowest_tilt(&self, q: &[f64; #n]) -> (usize, f64) {
+                let (t, qdot) = (0.0_f64, &[0.0_f64; #n]);
+                #tilts
+            }
+
+            fn energy(&self, q: &[f64; #n], qdot: &[f64; #n]) -> f64 {
+                let t = 0.0_f64;
+                #energy
+            }
+
+            fn contact_speed(&self, q: &[f64; #n], qdot: &[f64; #n]) -> f64 {
+                let t = 0.0_f64;
+                #contact_speed
+            }
+
+            #check_parameters
+        }
+    })
+}
+
+/// `1 row`, `2 rows`.
+fn counted(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("{n} {what}")
+    } else {
+        format!("{n} {what}s")
+    }
+}
