@@ -12,7 +12,8 @@
 //!   `FreeBodyExact`.
 //!
 //! `cargo bench --bench ensemble` prints the table (best of 3 whole ensembles of
-//! `PRECESS_ENSEMBLE_RUNS` runs, 1000 unless set) and then times the tol 1e-12 ensembles with
+//! `PRECESS_ENSEMBLE_RUNS` runs, 1000 unless set; "loop" is the same runs in a plain loop on
+//! one thread, without the ensemble) and then times the tol 1e-12 ensembles with
 //! criterion. `scripts/heyoka_ensemble.py` runs heyoka's ensembles on the same problems and
 //! tolerances; docs/performance.md ("Many at once") sets them side by side. No SIMD lanes
 //! here: batch lanes are not built yet.
@@ -128,6 +129,31 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
                 n as f64 / secs
             );
         }
+        // The same runs in a plain loop, without the ensemble: what the ensemble costs.
+        let (secs, _) = best_of_3(|| {
+            (0..n)
+                .map(|i| heavy_top(i, n, t_end, tol).unwrap())
+                .fold(0.0, |a, c| a + c)
+        });
+        println!(
+            "{:<9} {tol:>7.0e} {:<10} {:>9} {:>10.0}",
+            "heavy top",
+            "loop",
+            "",
+            n as f64 / secs
+        );
+        let (secs, _) = best_of_3(|| {
+            (0..n)
+                .map(|i| free_body(i, n, tol).unwrap()[0])
+                .fold(0.0, |a, c| a + c)
+        });
+        println!(
+            "{:<9} {tol:>7.0e} {:<10} {:>9} {:>10.0}",
+            "free body",
+            "loop",
+            "",
+            n as f64 / secs
+        );
         for threads in [1, cores] {
             let (secs, results) = best_of_3(|| {
                 pool(threads).install(|| Ensemble::new(0..n).run(|i| free_body(i, n, tol)))
