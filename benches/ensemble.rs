@@ -11,6 +11,9 @@
 //!   m0 = (0, 2, 0.01 (1 + i / N)) to T = 200; the error is the largest over the runs against
 //!   `FreeBodyExact`.
 //!
+//! Beside them, the same problems in the form heyoka integrates, as equations through
+//! `taylor_system!`: "top (EP)" is (a) in Euler–Poisson form, "free (eq)" is (b).
+//!
 //! `cargo bench --bench ensemble` prints the table (best of 3 whole ensembles of
 //! `PRECESS_ENSEMBLE_RUNS` runs, 1000 unless set; "loop" is the same runs in a plain loop on
 //! one thread, without the ensemble) and then times the tol 1e-12 ensembles with
@@ -32,6 +35,32 @@ use precess::top::HeavyTopTheory;
 use precess_testkit::systems::{FreeBody, SpinningTop};
 
 const FREE_I: [f64; 3] = [3.0, 5.0, 9.0];
+
+precess::taylor_system! {
+    /// The heavy top of (a) in Euler–Poisson form, as heyoka integrates it: ω and the upward
+    /// vertical γ in body axes, r = (I1 − I3)/I1 and s = M g l / I1 of `SpinningTop` written
+    /// out (`scripts/heyoka_ensemble.py` computes the same doubles), γ3 = cos θ.
+    struct EulerPoisson;
+    state [w1, w2, w3, g1, g2, g3];
+    taylor = 24;
+    d/dt w1 = 0.7338597364012156 * w2 * w3 + 169.65662315850153 * g2;
+    d/dt w2 = -0.7338597364012156 * w3 * w1 - 169.65662315850153 * g1;
+    d/dt w3 = 0.0 * w3;
+    d/dt g1 = g2 * w3 - g3 * w2;
+    d/dt g2 = g3 * w1 - g1 * w3;
+    d/dt g3 = g1 * w2 - g2 * w1;
+}
+
+precess::taylor_system! {
+    /// The torque-free body of (b) as equations, ṁ = m × I⁻¹m for I = (3, 5, 9), its
+    /// constants 1/I3 − 1/I2, 1/I1 − 1/I3, 1/I2 − 1/I1 written out.
+    struct FreeEquations;
+    state [m1, m2, m3];
+    taylor = 24;
+    d/dt m1 = -0.0888888888888889 * m2 * m3;
+    d/dt m2 = 0.2222222222222222 * m3 * m1;
+    d/dt m3 = -0.1333333333333333 * m1 * m2;
+}
 const THETA0_DEG: f64 = 20.0;
 const SPIN: f64 = 150.0;
 
@@ -57,6 +86,28 @@ fn heavy_top(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> 
         ode.step(t_end)?;
     }
     Ok(ode.y()[1].cos())
+}
+
+/// Run i of (a) in Euler–Poisson form (`EulerPoisson`): γ3 = cos θ at `t_end`.
+fn heavy_top_ep(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> {
+    let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
+    let (s, c) = THETA0_DEG.to_radians().sin_cos();
+    let y0 = [0.0, 0.0, SPIN, s * psi0.sin(), s * psi0.cos(), c];
+    let mut ode = Taylor::new(EulerPoisson, 0.0, y0, TaylorConfig::with_tol(tol, tol))?;
+    while ode.t() < t_end {
+        ode.step(t_end)?;
+    }
+    Ok(ode.y()[5])
+}
+
+/// Run i of (b) through the equations of `taylor_system!` (`FreeEquations`): m(200).
+fn free_equations(i: usize, n: usize, tol: f64) -> Result<[f64; 3], OdeError> {
+    let cfg = TaylorConfig::with_tol(tol, tol);
+    let mut ode = Taylor::new(FreeEquations, 0.0, free_m0(i, n), cfg)?;
+    while ode.t() < 200.0 {
+        ode.step(200.0)?;
+    }
+    Ok(*ode.y())
 }
 
 /// Run i of (b)'s initial state.
@@ -154,6 +205,39 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
             "",
             n as f64 / secs
         );
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads)
+                    .install(|| Ensemble::new(0..n).run(|i| heavy_top_ep(i, n, t_end, tol)))
+            });
+            let err = results
+                .outputs()
+                .map(|(_, c)| (c - cos_end).abs())
+                .fold(0.0, f64::max);
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {err:>9.2e} {:>10.0}",
+                "top (EP)",
+                n as f64 / secs
+            );
+        }
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads).install(|| Ensemble::new(0..n).run(|i| free_equations(i, n, tol)))
+            });
+            let run0 = results
+                .get(0)
+                .and_then(|r| r.as_ref().ok())
+                .map(|m| m.iter().zip(free_exact[0]).map(|(a, b)| (a - b).abs()))
+                .map_or(f64::NAN, |e| e.fold(0.0, f64::max));
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {:>9} {:>10.0}   (run 0's error {run0:.2e})",
+                "free (eq)",
+                "",
+                n as f64 / secs
+            );
+        }
         for threads in [1, cores] {
             let (secs, results) = best_of_3(|| {
                 pool(threads).install(|| Ensemble::new(0..n).run(|i| free_body(i, n, tol)))
