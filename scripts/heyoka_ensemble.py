@@ -8,7 +8,9 @@ the same references: runs per second of
 
 each by `ensemble_propagate_until` (one scalar integrator per run, copied from a template)
 and `ensemble_propagate_until_batch` (runs in SIMD lanes, `recommended_simd_size()` of them),
-on one worker and on all cores (Python threads; heyoka releases the GIL while it integrates).
+on one worker and on all cores (Python threads; heyoka releases the GIL while it integrates),
+and by plain loops that reuse one integrator (scalar, or batch on one thread per core). The
+bench's "top (EP)" and "free (eq)" rows integrate these same equations in precess.
 
     pip install heyoka
     python3 scripts/heyoka_ensemble.py [N]
