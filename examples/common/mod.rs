@@ -139,7 +139,18 @@ const PALETTE: [RGBColor; 6] = [
 
 /// Writes the series as an SVG line plot to `file` under [`plot_dir`], and returns its path.
 pub fn plot(file: &str, axes: &Axes, series: &[Series]) -> Result<PathBuf, Box<dyn Error>> {
-    let path = plot_dir()?.join(file);
+    plot_in(&plot_dir()?, file, axes, series)
+}
+
+/// As [`plot`], into the directory `dir` (for an example whose arguments are not just a
+/// directory).
+pub fn plot_in(
+    dir: &std::path::Path,
+    file: &str,
+    axes: &Axes,
+    series: &[Series],
+) -> Result<PathBuf, Box<dyn Error>> {
+    let path = dir.join(file);
     let finite = |v: f64, log: bool| v.is_finite() && (!log || v > 0.0);
     let points = series
         .iter()

@@ -50,6 +50,8 @@ mod constraints {
 }
 /// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
 mod ensemble;
+/// Sharding: the sleeping-top sweep whole and as shards merged from CSV, to the bit.
+mod ensemble_shards;
 /// Closed-form solutions.
 mod exact {
     mod attitude;

@@ -1,0 +1,292 @@
+//! Many at once: runs per second of whole ensembles (`precess::ensemble`), on one core (a
+//! rayon pool of one thread) and on all of them, at several tolerances, with each ensemble's
+//! error against a closed form beside it:
+//!
+//! - (a) the heavy top of `examples/heavy_top.rs` (`SpinningTop`: the generated angle form
+//!   and its generated Taylor recurrences) released at rest 20° from the vertical spinning at
+//!   150 rad/s, to 10¼ nutation periods, run i turned by ψ0 = 2π i / N about its figure axis —
+//!   a symmetry, so every run has the same exact cos θ(t) (`HeavyTopMotion::cos_theta_at`) but
+//!   its own arithmetic; the error is the largest over the runs;
+//! - (b) the torque-free body I = (3, 5, 9) (`FreeBody`, Taylor) from
+//!   m0 = (0, 2, 0.01 (1 + i / N)) to T = 200; the error is the largest over the runs against
+//!   `FreeBodyExact`.
+//!
+//! Beside them, the same problems in the form heyoka integrates, as equations through
+//! `taylor_system!`: "top (EP)" is (a) in Euler–Poisson form, "free (eq)" is (b).
+//!
+//! `cargo bench -p precess-benches --bench ensemble` prints the table (best of 3 whole ensembles of
+//! `PRECESS_ENSEMBLE_RUNS` runs, 1000 unless set; "loop" is the same runs in a plain loop on
+//! one thread, without the ensemble) and then times the tol 1e-12 ensembles with
+//! criterion. `scripts/heyoka_ensemble.py` runs heyoka's ensembles on the same problems and
+//! tolerances; docs/performance.md ("Many at once") sets them side by side. No SIMD lanes
+//! here: batch lanes are not built yet.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::{Criterion, Throughput};
+use precess::ensemble::Ensemble;
+use precess::ensemble::rayon::{ThreadPool, ThreadPoolBuilder};
+use precess::exact::FreeBodyExact;
+use precess::ode::OdeError;
+use precess::prelude::*;
+use precess::taylor::{Taylor, TaylorConfig};
+use precess::top::HeavyTopTheory;
+use precess_testkit::systems::{FreeBody, SpinningTop};
+
+const FREE_I: [f64; 3] = [3.0, 5.0, 9.0];
+
+precess::taylor_system! {
+    /// The heavy top of (a) in Euler–Poisson form, as heyoka integrates it: ω and the upward
+    /// vertical γ in body axes, r = (I1 − I3)/I1 and s = M g l / I1 of `SpinningTop` written
+    /// out (`scripts/heyoka_ensemble.py` computes the same doubles), γ3 = cos θ.
+    struct EulerPoisson;
+    state [w1, w2, w3, g1, g2, g3];
+    taylor = 24;
+    d/dt w1 = 0.7338597364012156 * w2 * w3 + 169.65662315850153 * g2;
+    d/dt w2 = -0.7338597364012156 * w3 * w1 - 169.65662315850153 * g1;
+    d/dt w3 = 0.0 * w3;
+    d/dt g1 = g2 * w3 - g3 * w2;
+    d/dt g2 = g3 * w1 - g1 * w3;
+    d/dt g3 = g1 * w2 - g2 * w1;
+}
+
+precess::taylor_system! {
+    /// The torque-free body of (b) as equations, ṁ = m × I⁻¹m for I = (3, 5, 9), its
+    /// constants 1/I3 − 1/I2, 1/I1 − 1/I3, 1/I2 − 1/I1 written out.
+    struct FreeEquations;
+    state [m1, m2, m3];
+    taylor = 24;
+    d/dt m1 = -0.0888888888888889 * m2 * m3;
+    d/dt m2 = 0.2222222222222222 * m3 * m1;
+    d/dt m3 = -0.1333333333333333 * m1 * m2;
+}
+const THETA0_DEG: f64 = 20.0;
+const SPIN: f64 = 150.0;
+
+/// The heavy top's span, 10¼ exact nutation periods, and its exact cos θ there.
+fn heavy_top_reference() -> (f64, f64) {
+    let top = SpinningTop;
+    let moments = top.principal().moments;
+    let mgl = top.mass() * 9.81 * top.center_of_mass().z;
+    let theory = HeavyTopTheory::new(moments[0], moments[2], mgl).unwrap();
+    let motion = theory
+        .motion_from_angles(&[0.0, THETA0_DEG.to_radians(), 0.0], &[0.0, 0.0, SPIN])
+        .unwrap();
+    let t_end = 10.25 * motion.nutation_period();
+    (t_end, motion.cos_theta_at(t_end).unwrap())
+}
+
+/// Run i of (a): cos θ at `t_end`.
+fn heavy_top(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> {
+    let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
+    let y0 = [0.0, THETA0_DEG.to_radians(), psi0, 0.0, 0.0, SPIN];
+    let mut ode = Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))?;
+    while ode.t() < t_end {
+        ode.step(t_end)?;
+    }
+    Ok(ode.y()[1].cos())
+}
+
+/// Run i of (a) in Euler–Poisson form (`EulerPoisson`): γ3 = cos θ at `t_end`.
+fn heavy_top_ep(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> {
+    let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
+    let (s, c) = THETA0_DEG.to_radians().sin_cos();
+    let y0 = [0.0, 0.0, SPIN, s * psi0.sin(), s * psi0.cos(), c];
+    let mut ode = Taylor::new(EulerPoisson, 0.0, y0, TaylorConfig::with_tol(tol, tol))?;
+    while ode.t() < t_end {
+        ode.step(t_end)?;
+    }
+    Ok(ode.y()[5])
+}
+
+/// Run i of (b) through the equations of `taylor_system!` (`FreeEquations`): m(200).
+fn free_equations(i: usize, n: usize, tol: f64) -> Result<[f64; 3], OdeError> {
+    let cfg = TaylorConfig::with_tol(tol, tol);
+    let mut ode = Taylor::new(FreeEquations, 0.0, free_m0(i, n), cfg)?;
+    while ode.t() < 200.0 {
+        ode.step(200.0)?;
+    }
+    Ok(*ode.y())
+}
+
+/// Run i of (b)'s initial state.
+fn free_m0(i: usize, n: usize) -> [f64; 3] {
+    [0.0, 2.0, 0.01 * (1.0 + i as f64 / n as f64)]
+}
+
+/// Run i of (b): m(200).
+fn free_body(i: usize, n: usize, tol: f64) -> Result<[f64; 3], OdeError> {
+    let cfg = TaylorConfig::with_tol(tol, tol);
+    let mut ode = Taylor::new(FreeBody(FREE_I), 0.0, free_m0(i, n), cfg)?;
+    while ode.t() < 200.0 {
+        ode.step(200.0)?;
+    }
+    Ok(*ode.y())
+}
+
+fn pool(threads: usize) -> ThreadPool {
+    ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+}
+
+/// The best of 3 times of `f` in seconds, and its last result.
+fn best_of_3<T>(mut f: impl FnMut() -> T) -> (f64, T) {
+    let mut best = f64::INFINITY;
+    let mut out = f();
+    for _ in 0..3 {
+        let start = Instant::now();
+        out = f();
+        best = best.min(start.elapsed().as_secs_f64());
+    }
+    (best, out)
+}
+
+fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
+    let free_exact: Vec<[f64; 3]> = (0..n)
+        .map(|i| {
+            FreeBodyExact::new(FREE_I, free_m0(i, n))
+                .unwrap()
+                .m_at(200.0)
+                .unwrap()
+                .into()
+        })
+        .collect();
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!(
+        "{n} runs per ensemble, {cores} cores, load {}",
+        load.split_whitespace().next().unwrap_or("?")
+    );
+    println!("heavy top: T = 10¼ periods = {t_end:.17e}, exact cos θ(T) = {cos_end:.17e}");
+    println!(
+        "{:<9} {:>7} {:<10} {:>9} {:>10}",
+        "problem", "tol", "threads", "error", "runs/s"
+    );
+    for tol in [1e-10, 1e-12, 1e-14] {
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads).install(|| Ensemble::new(0..n).run(|i| heavy_top(i, n, t_end, tol)))
+            });
+            let err = results
+                .outputs()
+                .map(|(_, c)| (c - cos_end).abs())
+                .fold(0.0, f64::max);
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {err:>9.2e} {:>10.0}",
+                "heavy top",
+                n as f64 / secs
+            );
+        }
+        // The same runs in a plain loop, without the ensemble: what the ensemble costs.
+        let (secs, _) = best_of_3(|| {
+            (0..n)
+                .map(|i| heavy_top(i, n, t_end, tol).unwrap())
+                .fold(0.0, |a, c| a + c)
+        });
+        println!(
+            "{:<9} {tol:>7.0e} {:<10} {:>9} {:>10.0}",
+            "heavy top",
+            "loop",
+            "",
+            n as f64 / secs
+        );
+        let (secs, _) = best_of_3(|| {
+            (0..n)
+                .map(|i| free_body(i, n, tol).unwrap()[0])
+                .fold(0.0, |a, c| a + c)
+        });
+        println!(
+            "{:<9} {tol:>7.0e} {:<10} {:>9} {:>10.0}",
+            "free body",
+            "loop",
+            "",
+            n as f64 / secs
+        );
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads)
+                    .install(|| Ensemble::new(0..n).run(|i| heavy_top_ep(i, n, t_end, tol)))
+            });
+            let err = results
+                .outputs()
+                .map(|(_, c)| (c - cos_end).abs())
+                .fold(0.0, f64::max);
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {err:>9.2e} {:>10.0}",
+                "top (EP)",
+                n as f64 / secs
+            );
+        }
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads).install(|| Ensemble::new(0..n).run(|i| free_equations(i, n, tol)))
+            });
+            let run0 = results
+                .get(0)
+                .and_then(|r| r.as_ref().ok())
+                .map(|m| m.iter().zip(free_exact[0]).map(|(a, b)| (a - b).abs()))
+                .map_or(f64::NAN, |e| e.fold(0.0, f64::max));
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {:>9} {:>10.0}   (run 0's error {run0:.2e})",
+                "free (eq)",
+                "",
+                n as f64 / secs
+            );
+        }
+        for threads in [1, cores] {
+            let (secs, results) = best_of_3(|| {
+                pool(threads).install(|| Ensemble::new(0..n).run(|i| free_body(i, n, tol)))
+            });
+            let err = results
+                .outputs()
+                .flat_map(|(i, m)| m.iter().zip(free_exact[i]).map(|(a, b)| (a - b).abs()))
+                .fold(0.0, f64::max);
+            let run0 = results
+                .get(0)
+                .and_then(|r| r.as_ref().ok())
+                .map(|m| m.iter().zip(free_exact[0]).map(|(a, b)| (a - b).abs()))
+                .map_or(f64::NAN, |e| e.fold(0.0, f64::max));
+            assert_eq!(results.failures(), 0);
+            println!(
+                "{:<9} {tol:>7.0e} {threads:<10} {err:>9.2e} {:>10.0}   (run 0's error {run0:.2e})",
+                "free body",
+                n as f64 / secs
+            );
+        }
+    }
+}
+
+fn main() {
+    let n: usize = std::env::var("PRECESS_ENSEMBLE_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1000);
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    let (t_end, cos_end) = heavy_top_reference();
+    if std::env::var("PRECESS_ENSEMBLE_TABLE").as_deref() != Ok("0") {
+        table(n, cores, t_end, cos_end);
+    }
+    let mut c = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3))
+        .configure_from_args();
+    let mut g = c.benchmark_group("ensemble");
+    g.throughput(Throughput::Elements(n as u64));
+    for threads in [1, cores] {
+        let p = pool(threads);
+        g.bench_function(format!("heavy top tol 1e-12, {threads} threads"), |b| {
+            b.iter(|| p.install(|| Ensemble::new(0..n).run(|i| heavy_top(i, n, t_end, 1e-12))))
+        });
+        g.bench_function(format!("free body tol 1e-12, {threads} threads"), |b| {
+            b.iter(|| p.install(|| Ensemble::new(0..n).run(|i| free_body(black_box(i), n, 1e-12))))
+        });
+    }
+    g.finish();
+    c.final_summary();
+}
