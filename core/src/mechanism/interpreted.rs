@@ -392,7 +392,8 @@ impl<const N: usize> System<N> for MechanismSystem<'_, N> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::body::{About, Part, Shape, check_part};
+    use crate::body::{About, BodyError, Part, Shape, check_part};
+    use crate::mechanism::JointKind;
     use crate::mechanism::Parent;
     use crate::rigid::AngleSequence;
 
