@@ -150,3 +150,4 @@ mod contact {
     mod support;
     mod tippe_top;
 }
+mod variational;
