@@ -8,6 +8,7 @@ use nalgebra::{DMatrix, Matrix2, Matrix3, Matrix6};
 use precess::mechanism::{MechanismModel, Route};
 use precess::ode::{AdaptiveConfig, Dop853, Rk4, System};
 use precess::sym::{Arena, ExprId};
+use precess::taylor::{Taylor, TaylorConfig};
 use precess::top::{TopModel, TopScene};
 use precess::variational::{
     BenettinConfig, FlowMap, Layout, VariationalEquations, VariationalError, VariationalSystem,
@@ -590,5 +591,107 @@ fn the_augmented_program_shares_f_and_j() {
             "{name}: {} > {bound}",
             augmented.total()
         );
+    }
+}
+
+precess::taylor_system! {
+    /// The Lorenz system with its three tangent vectors written out by hand (J of the
+    /// Lorenz field times each): a second formulation of the variational equations, for the
+    /// Taylor integrator.
+    struct LorenzTangents;
+    state [x, y, z, u0, v0, w0, u1, v1, w1, u2, v2, w2];
+    taylor = 20;
+    d/dt x = 10.0 * (y - x);
+    d/dt y = x * (28.0 - z) - y;
+    d/dt z = x * y - 8.0 / 3.0 * z;
+    d/dt u0 = 10.0 * (v0 - u0);
+    d/dt v0 = (28.0 - z) * u0 - v0 - x * w0;
+    d/dt w0 = y * u0 + x * v0 - 8.0 / 3.0 * w0;
+    d/dt u1 = 10.0 * (v1 - u1);
+    d/dt v1 = (28.0 - z) * u1 - v1 - x * w1;
+    d/dt w1 = y * u1 + x * v1 - 8.0 / 3.0 * w1;
+    d/dt u2 = 10.0 * (v2 - u2);
+    d/dt v2 = (28.0 - z) * u2 - v2 - x * w2;
+    d/dt w2 = y * u2 + x * v2 - 8.0 / 3.0 * w2;
+}
+
+/// Benettin's method over another stepper and another formulation: the hand-written
+/// tangent equations of `taylor_system!` on the Taylor integrator give the same published
+/// spectrum and the same exact sum.
+#[test]
+fn the_lorenz_spectrum_through_taylor_system() {
+    let layout = Layout {
+        n: 3,
+        tangents: 3,
+        sensitivities: 0,
+    };
+    let y0 = layout.initial_state::<12>(&[1.0, 1.0, 20.0]).unwrap();
+    let mut ode = Taylor::new(
+        LorenzTangents,
+        0.0,
+        y0,
+        TaylorConfig::with_tol(1e-12, 1e-12),
+    )
+    .unwrap();
+    let cfg = BenettinConfig {
+        interval: 0.1,
+        duration: 1000.0,
+        transient: 10.0,
+    };
+    let run = benettin(&mut ode, layout, &cfg).unwrap();
+    let l = &run.exponents;
+    let sum: f64 = l.iter().sum();
+    eprintln!("Lorenz by Taylor: {l:?}, sum {sum}, {:?}", run.stats);
+    assert_relative_eq!(sum, -41.0 / 3.0, max_relative = 1e-9);
+    assert_relative_eq!(l[0], 0.9056, max_relative = 0.01);
+    assert!(l[1].abs() < 0.005, "{l:?}");
+    assert_relative_eq!(l[2], -14.5723, max_relative = 0.002);
+}
+
+/// A heavy top with unequal moments (1, 1.5, 0.7) and its centre on the third axis is not
+/// integrable; in Eulerian form (ω and R, twelve entries, no chart) J has zero trace in
+/// principal axes, so Σλ = 0 for every finite time, and the spectrum pairs: λ₁ ≈ −λ₁₂ with
+/// ten exponents near zero (energy, the vertical momentum, the flow direction, and the six
+/// orthonormality conditions of R with their partners).
+#[test]
+fn the_heavy_top_spectrum_comes_in_pairs() {
+    let mut a = Arena::new();
+    let z = a.zero();
+    let i = ["I1", "I2", "I3"].map(|n| a.parameter(n));
+    let mut scene = TopScene::free(&mut a, [[i[0], z, z], [z, i[1], z], [z, z, i[2]]]);
+    scene.mass = a.parameter("M");
+    scene.center = [z, z, a.parameter("l")];
+    scene.gravity = Some(a.parameter("g"));
+    let eq = VariationalEquations::from_eulerian_top(&mut a, &scene, 12, &[]).unwrap();
+    let values = [
+        ("I1", 1.0),
+        ("I2", 1.5),
+        ("I3", 0.7),
+        ("M", 1.0),
+        ("g", 1.0),
+        ("l", 1.0),
+    ];
+    let sys = VariationalSystem::<156>::new(&a, &eq, &values).unwrap();
+    // Tilted 1.5 rad about the first axis, turning slowly: kinetic and potential energy
+    // of one size, the chaotic regime (λ₁ ≈ 0.24; a fast spin is nearly the free body and
+    // regular).
+    let (c, s) = (1.5f64.cos(), 1.5f64.sin());
+    let x0 = [0.5, 0.3, 0.2, 1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c];
+    let cfg = BenettinConfig {
+        interval: 1.0,
+        duration: 400.0,
+        transient: 20.0,
+    };
+    let run = sys
+        .lyapunov(0.0, &x0, &cfg, AdaptiveConfig::with_tol(1e-11, 1e-11))
+        .unwrap();
+    let l = &run.exponents;
+    let sum: f64 = l.iter().sum();
+    eprintln!("heavy top, Eulerian: {l:?}, sum {sum:e}, {:?}", run.stats);
+    assert!(l[0] > 0.1, "{l:?}");
+    assert!(sum.abs() < 1e-9, "{sum:e}");
+    assert!((l[0] + l[11]).abs() < 0.01 * l[0], "{l:?}");
+    for k in 1..11 {
+        assert!(l[k].abs() < 0.05 * l[0], "{l:?}");
     }
 }
