@@ -429,6 +429,35 @@ fn bad_inputs_are_typed_errors() {
         Some(VariationalError::InvalidTransient { transient }) if transient.is_nan()
     ));
     assert!(matches!(
+        run(
+            BenettinConfig {
+                interval: 1e-300,
+                ..good
+            },
+            [1.0, 0.0]
+        ),
+        Some(VariationalError::TooManyIntervals {
+            max: precess::variational::MAX_INTERVALS,
+            ..
+        })
+    ));
+    // A duration lost in rounding beside a late start has no time to average over.
+    let late = sys.initial_state(&[1.0, 0.0]).unwrap();
+    let mut ode_late = Dop853::new(&sys, 1e20, late, ode).unwrap();
+    assert_eq!(
+        benettin(
+            &mut ode_late,
+            sys.layout(),
+            &BenettinConfig {
+                duration: 1.0,
+                interval: 1.0,
+                transient: 0.0
+            }
+        )
+        .err(),
+        Some(VariationalError::NonPositiveDuration { duration: 0.0 })
+    );
+    assert!(matches!(
         run(good, [1.0, f64::INFINITY]),
         Some(VariationalError::NonFinite { index: 1, value }) if value == f64::INFINITY
     ));

@@ -101,6 +101,18 @@ pub enum VariationalError {
         /// The time given.
         duration: f64,
     },
+    /// More renormalisation intervals than [`MAX_INTERVALS`](super::MAX_INTERVALS): the run
+    /// would not end in any useful time.
+    #[error(
+        "{intervals} renormalisation intervals asked for (transient and duration over the \
+         interval); at most {max}: lengthen the interval or shorten the run"
+    )]
+    TooManyIntervals {
+        /// Intervals the settings need.
+        intervals: f64,
+        /// The limit.
+        max: u64,
+    },
     /// The transient is negative or not finite.
     #[error("the transient is {transient}: it must be zero or positive and finite")]
     InvalidTransient {

@@ -32,7 +32,13 @@ pub struct Layout {
 impl Layout {
     /// n + n·m + n·k, the length of the augmented state.
     pub fn len(&self) -> usize {
-        self.n * (1 + self.tangents + self.sensitivities)
+        // Saturating: a layout built by hand with absurd sizes is refused by the size
+        // checks rather than overflowing.
+        self.n.saturating_mul(
+            self.tangents
+                .saturating_add(self.sensitivities)
+                .saturating_add(1),
+        )
     }
 
     /// `true` only for an empty state.
@@ -42,14 +48,16 @@ impl Layout {
 
     /// The range of tangent vector `j` (column j of Φ) in the augmented state.
     pub fn tangent(&self, j: usize) -> core::ops::Range<usize> {
-        let start = self.n * (1 + j);
-        start..start + self.n
+        let start = self.n.saturating_mul(j.saturating_add(1));
+        start..start.saturating_add(self.n)
     }
 
     /// The range of ∂x/∂p_j (column j of S) in the augmented state.
     pub fn sensitivity(&self, j: usize) -> core::ops::Range<usize> {
-        let start = self.n * (1 + self.tangents + j);
-        start..start + self.n
+        let start = self
+            .n
+            .saturating_mul(self.tangents.saturating_add(j).saturating_add(1));
+        start..start.saturating_add(self.n)
     }
 
     /// Refuses a const-generic size that is not [`Layout::len`].

@@ -7,6 +7,10 @@ use super::layout::{Layout, check_finite};
 use super::system::VariationalSystem;
 use crate::ode::{AdaptiveConfig, Dop853, Stats, Stepper};
 
+/// The most renormalisation intervals one [`benettin`] run takes (transient and average
+/// together): 10⁹, some days of the cheapest system's right-hand sides.
+pub const MAX_INTERVALS: u64 = 1_000_000_000;
+
 /// How long to average and how often to re-orthonormalise.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BenettinConfig {
@@ -26,7 +30,7 @@ impl BenettinConfig {
     ///
     /// # Errors
     /// [`VariationalError::NonPositiveInterval`], [`VariationalError::NonPositiveDuration`],
-    /// [`VariationalError::InvalidTransient`].
+    /// [`VariationalError::InvalidTransient`], [`VariationalError::TooManyIntervals`].
     pub fn validate(&self) -> Result<(), VariationalError> {
         let positive = |v: f64| v.is_finite() && v > 0.0;
         if !positive(self.interval) {
@@ -42,6 +46,15 @@ impl BenettinConfig {
         if !(self.transient.is_finite() && self.transient >= 0.0) {
             return Err(VariationalError::InvalidTransient {
                 transient: self.transient,
+            });
+        }
+        let intervals =
+            (self.transient / self.interval).ceil() + (self.duration / self.interval).ceil();
+        // Finite or +∞ (a tiny interval), never NaN: the three times are checked above.
+        if intervals > MAX_INTERVALS as f64 {
+            return Err(VariationalError::TooManyIntervals {
+                intervals,
+                max: MAX_INTERVALS,
             });
         }
         Ok(())
@@ -114,7 +127,9 @@ fn orthonormalise(
 /// # Errors
 /// [`VariationalError::SizeMismatch`] if `N` is not the layout's length,
 /// [`VariationalError::NoTangents`], the configuration's errors
-/// ([`BenettinConfig::validate`]), [`VariationalError::NonFinite`] for the stepper's state,
+/// ([`BenettinConfig::validate`]), [`VariationalError::NonPositiveDuration`] also when the
+/// duration vanishes in rounding beside the start time, [`VariationalError::NonFinite`] for
+/// the stepper's state,
 /// [`VariationalError::DegenerateTangents`], and the stepper's own failures in
 /// [`VariationalError::Ode`].
 pub fn benettin<S, const N: usize>(
@@ -140,6 +155,14 @@ where
     let transient_steps = (config.transient / config.interval).ceil() as u64;
     let averaged_steps = (config.duration / config.interval).ceil().max(1.0) as u64;
     let t_start = t0 + config.transient;
+    let t_end = t_start + config.duration;
+    if t_end <= t_start {
+        // The duration is lost in rounding next to t₀ + transient: there is no time to
+        // average over.
+        return Err(VariationalError::NonPositiveDuration {
+            duration: t_end - t_start,
+        });
+    }
     let at = |stepper: &mut S, t: f64, logs: &mut [f64]| -> Result<(), VariationalError> {
         while stepper.t() < t {
             stepper.step(t)?;
@@ -154,7 +177,6 @@ where
         let t = (t0 + k as f64 * config.interval).min(t_start);
         at(stepper, t, &mut discard)?;
     }
-    let t_end = t_start + config.duration;
     for k in 1..=averaged_steps {
         let t = (t_start + k as f64 * config.interval).min(t_end);
         at(stepper, t, &mut logs)?;
