@@ -7,7 +7,8 @@
 //! The layers, lowest first: the engine ([`sym`], [`codegen`], [`lagrange`], [`linalg`],
 //! [`ode`], [`taylor`], [`exact`], and [`ensemble`], which runs many integrations at once); the bodies and what every scene shares ([`body`],
 //! [`rigid`]); the scenes ([`top`], [`free`], [`mechanism`]), each built on the layers below
-//! and none importing another. Every scene has the same files for the same roles (`scene.rs`,
+//! and none importing another; above them [`variational`], the state transition matrix and
+//! Lyapunov exponents of any symbolic right-hand side, the scenes' included. Every scene has the same files for the same roles (`scene.rs`,
 //! `derivation.rs`, `interpreted.rs`, `dynamics.rs`, `error.rs`, `quantities.rs`); `docs/conventions.md`
 //! states the shape.
 #![forbid(unsafe_code)]
@@ -29,6 +30,7 @@ pub mod rigid;
 pub mod sym;
 pub mod taylor;
 pub mod top;
+pub mod variational;
 
 /// The linear-algebra crate precess's types come from, re-exported so users and generated
 /// code agree on one version.

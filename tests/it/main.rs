@@ -155,3 +155,4 @@ mod contact {
     mod support;
     mod tippe_top;
 }
+mod variational;
