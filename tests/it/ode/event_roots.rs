@@ -464,3 +464,31 @@ proptest! {
         }
     }
 }
+
+/// A case the property test above found (its seed is not kept in the regressions, where it
+/// would fail every run): a dip of 1e-3 Σ|A| between two roots 7.4 ms apart, inside the
+/// beat of two close frequencies (26.0 and 27.1 rad/s). DOP853's scan finds both roots;
+/// the Taylor integrator's scan, over its far longer steps, finds neither, so the
+/// interpolant's error estimate is too small there. Kept as a failing, ignored test until
+/// the scan is fixed: `cargo test -p precess --test it -- --ignored taylor_misses`.
+#[test]
+#[ignore = "known miss of the Taylor scan: both roots of a 7 ms dip (see the doc comment)"]
+fn taylor_misses_a_shallow_pair_in_a_beat() {
+    let amps = [0.9521940533276592, 0.8342935472331764, 0.5762471339241876];
+    let omegas = [6.000115648719028, 27.08034854307633, 26.038471104595125];
+    let phases = [5.152946613068597, 1.2810683954004747, 6.260217977937406];
+    let s = sum_of_sines(amps, omegas, phases);
+    let t_m = 7.334700208708147;
+    let delta = 0.001 * amps.iter().sum::<f64>();
+    let s_m = s(t_m);
+    let g = move |t: f64| s(t) - s_m - delta;
+    let pair = [7.330994629666139, 7.3383906504342455];
+    for found in found_by_both(g, 10.0) {
+        for r in pair {
+            assert!(
+                found.iter().any(|t| (t - r).abs() < 1e-9),
+                "root {r} missed"
+            );
+        }
+    }
+}
