@@ -26,7 +26,7 @@ fn linear() -> &'static Linear {
 
 /// Largest entrywise error, relative to the entry where it is nonzero and absolute where
 /// the paper prints 0.
-fn worst(got: &Matrix2<f64>, want: &Matrix2<f64>) -> f64 {
+pub(super) fn worst(got: &Matrix2<f64>, want: &Matrix2<f64>) -> f64 {
     got.iter()
         .zip(want.iter())
         .map(|(g, w)| {

@@ -30,7 +30,7 @@ fn model(m: &NumMechanism, values: Values, route: Route) -> MechanismModel {
 
 /// A random state: angles anywhere, slides within ±0.5, spherical θ (ZXZ) or pitch (ZYX)
 /// kept away from the chart's singularity.
-fn random_state(m: &NumMechanism, rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn random_state(m: &NumMechanism, rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
     let mut q = Vec::new();
     for b in &m.bodies {
         match &b.joint {

@@ -8,32 +8,10 @@
 use nalgebra::{DMatrix, DVector};
 use precess::sym::{Arena, SymbolKind};
 
-use super::engine::{double_pendulum, pendulum, spatial_chain, spherical_on_arm};
+use super::engine::{double_pendulum, pendulum, random_state, spatial_chain, spherical_on_arm};
 use crate::common::mechanism::rng::Rng;
-use crate::common::mechanism::{NumJoint, NumMechanism, Values, relative_difference, rnea, scene};
+use crate::common::mechanism::{NumMechanism, Values, relative_difference, rnea, scene};
 use precess::rigid::AngleSequence;
-
-fn random_state(m: &NumMechanism, rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
-    let mut q = Vec::new();
-    for b in &m.bodies {
-        match &b.joint {
-            NumJoint::Prismatic(_) => q.push(rng.uniform(-0.5, 0.5)),
-            NumJoint::Spherical(AngleSequence::Zxz) => q.extend([
-                rng.uniform(-3.0, 3.0),
-                rng.uniform(0.3, 2.8),
-                rng.uniform(-3.0, 3.0),
-            ]),
-            NumJoint::Spherical(AngleSequence::Zyx) => q.extend([
-                rng.uniform(-3.0, 3.0),
-                rng.uniform(-1.2, 1.2),
-                rng.uniform(-3.0, 3.0),
-            ]),
-            j => q.extend((0..j.dof()).map(|_| rng.uniform(-3.1, 3.1))),
-        }
-    }
-    let qd = (0..q.len()).map(|_| rng.uniform(-2.0, 2.0)).collect();
-    (q, qd)
-}
 
 /// The worst relative difference of Kane's q̈ from the RNEA's over 200 states.
 fn worst(m: &NumMechanism, values: Values, seed: u64) -> f64 {
