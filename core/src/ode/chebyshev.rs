@@ -120,6 +120,11 @@ pub(crate) fn node(a: f64, b: f64, j: usize) -> f64 {
     }
 }
 
+/// The abscissa x_J = −cos(Jπ/16) ∈ [−1, 1] of point J of the 16-grid.
+pub(crate) fn node_x(j: usize) -> f64 {
+    -cos16(j)
+}
+
 /// The interpolant's Chebyshev coefficients c_0 … c_n (p(x) = Σ c_k T_k(x)) from the
 /// values at the degree-n points of `grid`, n ∈ {4, 8, 16} (16 for any other n).
 pub(crate) fn coefficients(grid: &Grid, n: usize) -> Grid {

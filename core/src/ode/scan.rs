@@ -6,20 +6,31 @@
 //! solution ([`Stepper::state_at`](super::Stepper::state_at)): first at degree 4 (the ends,
 //! whose values are known, and three inner points), then 8 and 16 while the interpolant's
 //! last two Chebyshev coefficients stay above [`TAIL`] times the largest |g| on the piece,
-//! then in halves of the piece, down to 2^−[`MAX_SPLITS`] of the step. A piece is passed
-//! over as rootless, resolved or not, when its interpolant stays more than 8 error
-//! estimates away from 0 and that estimate is at most [`TRUSTED_TAIL`] (10⁻³) of the
-//! largest |g| on the piece: a larger one means the points alias g, and its coefficients
-//! are no measure of the error. On each resolved piece p, the interpolant, is monotone
-//! between its critical points, which are isolated exactly on its Bernstein form
-//! ([`super::chebyshev`]); g itself is evaluated at those where p comes within its error
-//! estimate of 0 or changes sign, so that between two consecutive points of the returned
-//! sequence p has at most one root. Each sign change of g along the sequence is then
-//! located on g itself by [`super::events::locate_root`]: an interpolant decides where to
-//! look, never what is reported.
+//! then in halves of the piece, down to 2^−[`MAX_SPLITS`] of the step.
 //!
-//! Cost: on a step where g is slow, three evaluations of the state and of g besides the
-//! step's ends (the three shared by every event of the run), and a 5 × 5 transform.
+//! An interpolant is judged only on evidence it did not make: the interpolant of degree
+//! n/2 must have predicted g at the points of degree n that it never saw, within
+//! [`TRUSTED_TAIL`] (10⁻³) of the largest |g|. Only then is a piece passed over as
+//! rootless (its interpolant more than 8 error estimates away from 0, the estimate being
+//! the larger of that prediction gap and the last coefficients) or taken as resolved. The
+//! coefficients of the points alone are no such evidence: on a g aliased onto five points,
+//! or a low polynomial at them that dips between them, they are small or 0 by chance.
+//!
+//! On each resolved piece p, the interpolant, is monotone between its critical points,
+//! which are isolated exactly on its Bernstein form ([`super::chebyshev`]); g itself is
+//! evaluated at those where p comes within its error estimate of 0 or changes sign, so that
+//! between two consecutive points of the returned sequence p has at most one root. Each
+//! sign change of g along the sequence is then located on g itself by
+//! [`super::events::locate_root`]: an interpolant decides where to look, never what is
+//! reported.
+//!
+//! What no scan of samples can promise: a g that agrees at 9 points with a polynomial of
+//! degree 4 and reaches 0 between them is passed over (the points see nothing else). Any
+//! other g, however fast, is split until it is resolved or the piece is 2⁻⁶ of the step.
+//!
+//! Cost: on a step where g is slow, seven evaluations of the state and of g besides the
+//! step's ends (the first pass's three shared by every event of the run, then the four
+//! points of degree 8 that confirm them), and a 5 × 5 and a 9 × 9 transform.
 
 use super::chebyshev::{self, Grid, MAX_DEGREE};
 use super::error::OdeError;
@@ -36,13 +47,11 @@ pub(crate) const MAX_SPLITS: u32 = 6;
 /// to be passed over without resolving it further.
 const EXCLUSION_MARGIN: f64 = 8.0;
 
-/// The largest error estimate, as a fraction of the largest |g| at the interpolant's
-/// points, that is trusted for passing a piece over. On a g that the points do not resolve
-/// (a term of g several periods long across the piece, aliased onto five points) the last
-/// coefficients are as large as g's unresolved part unless they happen to cancel, and such
-/// a coincidence is what lets a dip between two roots pass as rootless; a g that the
-/// points do resolve (slow against the step, the common case) has an estimate far below
-/// this and still costs the first pass only.
+/// The largest error, as a fraction of the largest |g| at the interpolant's points, that
+/// is trusted for judging a piece: both the gap between g at the new points and the
+/// previous interpolant's prediction there, and the last coefficients. A g that the points
+/// resolve (slow against the step, the common case) is far below this at degree 8 and
+/// costs the first pass and its check only.
 pub(crate) const TRUSTED_TAIL: f64 = 1e-3;
 
 /// The first pass's inner points on the 16-grid (degree 4: J = 4, 8, 12).
@@ -86,30 +95,45 @@ fn scan_piece(
 ) -> Result<(), OdeError> {
     let g_b = grid[MAX_DEGREE];
     let mut n = 4;
+    // How far g at the points added last lay from the previous interpolant: the only
+    // error estimate made with values the interpolant did not see (∞ before any).
+    let mut gap = f64::INFINITY;
     let (c, tail) = loop {
         let c = chebyshev::coefficients(&grid, n);
         let scale = (0..=n).fold(0.0f64, |m, j| m.max(grid[j * MAX_DEGREE / n].abs()));
         let tail = c[n - 1].abs() + c[n].abs();
+        // The points of degree n alone are no evidence that g is resolved: on a g several
+        // periods long across the piece, aliased onto them, the last coefficients can be
+        // small by chance (a Taylor step 0.8 long over sines of 26 and 27 rad/s had at
+        // degree 4 a tail of 6.9e-4 of max |g| and passed as rootless over two roots 7 ms
+        // apart), and on a g that is a low polynomial at the points and dips between them
+        // they are 0. So a piece is judged only once the interpolant of degree n/2 has
+        // predicted g at the new points within `TRUSTED_TAIL` of max |g| (`confirmed`),
+        // and its error is taken as the larger of that gap and the tail.
+        let confirmed = gap <= TRUSTED_TAIL * scale;
+        let error = tail.max(gap);
         // |p| ≥ |c_0| − Σ_{k≥1} |c_k| on [−1, 1]: a piece whose interpolant stays away from
-        // 0 by several times its error estimate has no root (the common case of a g far
-        // from its roots: the first pass alone), provided the estimate is one. Half of a
-        // Taylor step, 0.4 long, over a sum of sines up to 28 rad/s had at degree 4 an
-        // estimate 0.049 against max |g| 0.93 and stayed 0.54 from 0, more than 8 × 0.049,
-        // over a dip to −0.026 between roots 0.0217 apart: an estimate that large says the
-        // points do not resolve g, so it is not trusted (`TRUSTED_TAIL`).
+        // 0 by several times its error stays away from 0 itself (the common case of a g far
+        // from its roots), provided the error is trusted (`TRUSTED_TAIL`).
         let spread: f64 = c[1..=n].iter().map(|v| v.abs()).sum();
-        if tail <= TRUSTED_TAIL * scale && c[0].abs() - spread > EXCLUSION_MARGIN * tail {
+        if confirmed
+            && tail <= TRUSTED_TAIL * scale
+            && c[0].abs() - spread > EXCLUSION_MARGIN * error
+        {
             out.push((b, g_b));
             return Ok(());
         }
-        if tail <= TAIL * scale {
+        if confirmed && tail <= TAIL * scale {
             break (c, tail);
         }
         if n < MAX_DEGREE {
-            // The points of degree 2n between those of degree n.
+            // The points of degree 2n between those of degree n, each against p of degree n.
             let stride = MAX_DEGREE / (2 * n);
+            gap = 0.0;
             for j in (stride..MAX_DEGREE).step_by(2 * stride) {
                 grid[j] = eval(chebyshev::node(a, b, j))?;
+                let predicted = chebyshev::clenshaw(&c, n, chebyshev::node_x(j));
+                gap = gap.max((grid[j] - predicted).abs());
             }
             n *= 2;
             continue;
@@ -178,12 +202,13 @@ mod tests {
     }
 
     #[test]
-    fn a_slow_function_costs_the_first_pass_only() {
+    fn a_slow_function_costs_the_first_pass_and_its_check() {
+        // The four points of degree 8 confirm the first pass, even on a line.
         let (p, calls) = points(|t| t - 0.3, 0.0, 1.0);
-        assert_eq!(calls, 0);
+        assert_eq!(calls, 4);
         assert_eq!(sign_changes(&p), 1);
         let (p, calls) = points(|t| (0.1 * t).cos() + 0.5, 0.0, 1.0);
-        assert_eq!((calls, p.len()), (0, 2));
+        assert_eq!((calls, p.len()), (4, 2));
     }
 
     #[test]
@@ -199,8 +224,84 @@ mod tests {
         // (t − 0.4)(t − 0.41) + 0: positive at both ends, two roots 0.01 apart.
         let (p, calls) = points(|t| (t - 0.4) * (t - 0.41), 0.0, 1.0);
         assert_eq!(sign_changes(&p), 2, "{p:?}");
-        // Exact at degree 4: one more evaluation, at the critical point.
-        assert_eq!(calls, 1);
+        // Exact at degree 4, confirmed by the four points of degree 8, then one more
+        // evaluation at the critical point.
+        assert_eq!(calls, 5);
+    }
+
+    /// Whether each of `roots` lies in a change of sign between consecutive points.
+    fn bracketed(p: &[(f64, f64)], roots: &[f64]) -> bool {
+        roots.iter().all(|&r| {
+            p.windows(2)
+                .any(|w| w[0].0 < r && r <= w[1].0 && (w[0].1 < 0.0) != (w[1].1 < 0.0))
+        })
+    }
+
+    #[test]
+    fn a_shallow_pair_in_a_beat_is_bracketed_on_a_long_step() {
+        // The step the Taylor integrator took over a dip 1e-3 Σ|A| deep in the beat of
+        // 26.0 and 27.1 rad/s (tests/it/ode/event_roots.rs, found by its property test):
+        // at degree 4 the last coefficients were 6.9e-4 of max |g| by aliasing, and the
+        // step passed as rootless. The roots, by bisection on g to adjacent doubles, are
+        // 7.330994629666139 and 7.3383906504342455.
+        let amps = [
+            0.952_194_053_327_659_2,
+            0.834_293_547_233_176_4,
+            0.576_247_133_923_987_6,
+        ];
+        let omegas = [
+            6.000_115_648_719_028,
+            27.080_348_543_076_33,
+            26.038_471_104_595_125,
+        ];
+        let phases = [
+            5.152_946_613_068_597,
+            1.281_068_395_400_474_7,
+            6.260_217_977_937_406,
+        ];
+        let Some((g, _, pair)) = planted_dip(amps, omegas, phases, 7.3347, 1e-3) else {
+            panic!("the planted dip has two roots");
+        };
+        assert!((pair[0] - 7.330_994_629_666_139).abs() < 1e-12, "{pair:?}");
+        assert!(
+            (pair[1] - 7.338_390_650_434_245_5).abs() < 1e-12,
+            "{pair:?}"
+        );
+        let (p, _) = points(g, 7.081_703_052_716_543, 7.878_785_844_311_958);
+        assert!(bracketed(&p, &pair), "{p:?}");
+    }
+
+    /// q(x) + κ ω(x) on [a, b] (x ∈ [−1, 1]), ω vanishing at the five points of the first
+    /// pass: those points see the line q alone.
+    fn hidden_dip(q: [f64; 2], kappa: f64, (a, b): (f64, f64)) -> impl Fn(f64) -> f64 + Copy {
+        let r2 = core::f64::consts::FRAC_1_SQRT_2.powi(2);
+        move |t: f64| {
+            let x = (2.0 * t - a - b) / (b - a);
+            q[0] + q[1] * x + kappa * x * (x * x - 1.0) * (x * x - r2)
+        }
+    }
+
+    /// The changes of sign of g over 20 000 equal parts of [a, b], each to 1e-12.
+    fn brute_roots(g: impl Fn(f64) -> f64, a: f64, b: f64) -> Vec<f64> {
+        let n = 20_000;
+        let at = |i: usize| a + (b - a) * i as f64 / n as f64;
+        let mut roots = Vec::new();
+        for i in 0..n {
+            let (mut lo, mut hi) = (at(i), at(i + 1));
+            if (g(lo) < 0.0) == (g(hi) < 0.0) {
+                continue;
+            }
+            while hi - lo > 1e-12 {
+                let m = 0.5 * (lo + hi);
+                if (g(m) < 0.0) == (g(lo) < 0.0) {
+                    lo = m
+                } else {
+                    hi = m
+                }
+            }
+            roots.push(hi);
+        }
+        roots
     }
 
     /// Σ Aᵢ sin(ωᵢ t + φᵢ) shifted down to dip δ below 0 at a local minimum near `t0`:
@@ -292,6 +393,25 @@ mod tests {
                     .any(|w| w[0].0 < r && r <= w[1].0 && (w[0].1 < 0.0) != (w[1].1 < 0.0));
                 proptest::prop_assert!(bracketed, "root {} of {:?} on [{}, {}]", r, pair, a, a + h);
             }
+        }
+
+        /// A line that the first pass's five points see alone, plus a quintic that vanishes
+        /// at them and dips through 0 between them: every root is bracketed. Before the
+        /// first pass had to be confirmed by points it did not see, its coefficients beyond
+        /// the line were 0 and every such step passed as rootless.
+        #[test]
+        fn a_dip_hidden_between_the_first_points_is_bracketed(
+            level in 0.05f64..1.0,
+            slope in -0.04f64..0.04,
+            kappa in proptest::prop_oneof![-40.0f64..-2.0, 2.0f64..40.0],
+            a in -5.0f64..5.0,
+            h in 1e-3f64..3.0,
+        ) {
+            let g = hidden_dip([level, slope], kappa, (a, a + h));
+            let roots = brute_roots(g, a, a + h);
+            proptest::prop_assume!(!roots.is_empty());
+            let (p, _) = points(g, a, a + h);
+            proptest::prop_assert!(bracketed(&p, &roots), "{:?} against {:?}", p, roots);
         }
     }
 }
