@@ -57,7 +57,11 @@ struct Row {
 }
 
 fn print(title: &str, rows: &[Row]) {
-    let width = rows.iter().map(|r| r.quantity.chars().count()).max().unwrap_or(8);
+    let width = rows
+        .iter()
+        .map(|r| r.quantity.chars().count())
+        .max()
+        .unwrap_or(8);
     println!("\n{title}");
     println!(
         "  {:<width$}  {:>16}  {:>16}  {:>10}  {:>10}  {:>8}",
@@ -144,7 +148,10 @@ fn main() -> Result<(), Box<dyn Error>> {
             let inside = samples
                 .iter()
                 .filter(|x| {
-                    let d = (x[PLANE.0] - map.state[PLANE.0], x[PLANE.1] - map.state[PLANE.1]);
+                    let d = (
+                        x[PLANE.0] - map.state[PLANE.0],
+                        x[PLANE.1] - map.state[PLANE.1],
+                    );
                     mahalanobis2(&p, PLANE, d) <= 4.0
                 })
                 .count() as f64
@@ -201,11 +208,11 @@ fn table_rows(t: f64, m: &Moments, map: &FlowMap, p: &DMatrix<f64>) -> Vec<Row> 
     rows
 }
 
-/// The cloud at one time in the (φ, θ) plane about the nominal state (at most 3000 dots:
+/// The cloud at one time in the (φ, θ) plane about the nominal state (at most 600 dots:
 /// more only blacken the figure), with the linearised 1σ and 2σ ellipses.
 fn group(t: f64, samples: &[[f64; 6]], map: &FlowMap, p: &DMatrix<f64>) -> CloudGroup {
     let (i, j) = PLANE;
-    let stride = samples.len().div_ceil(3000).max(1);
+    let stride = samples.len().div_ceil(600).max(1);
     let dots: Vec<(f64, f64)> = samples
         .iter()
         .step_by(stride)
@@ -215,6 +222,9 @@ fn group(t: f64, samples: &[[f64; 6]], map: &FlowMap, p: &DMatrix<f64>) -> Cloud
     CloudGroup {
         label: format!("t = {t}: {} of the runs, 1σ and 2σ", dots.len()),
         dots,
-        curves: vec![ellipse((0.0, 0.0), block, 1.0), ellipse((0.0, 0.0), block, 2.0)],
+        curves: vec![
+            ellipse((0.0, 0.0), block, 1.0),
+            ellipse((0.0, 0.0), block, 2.0),
+        ],
     }
 }

@@ -163,9 +163,8 @@ impl Map {
     /// (θ0, ω3) of run `index`: the centre of its cell.
     pub fn cell(&self, index: usize) -> (f64, f64) {
         let (ix, iy) = (index % self.nx.max(1), index / self.nx.max(1));
-        let at = |(lo, hi): (f64, f64), k: usize, n: usize| {
-            lo + (hi - lo) * (k as f64 + 0.5) / n as f64
-        };
+        let at =
+            |(lo, hi): (f64, f64), k: usize, n: usize| lo + (hi - lo) * (k as f64 + 0.5) / n as f64;
         (at(self.theta, ix, self.nx), at(self.spin, iy, self.ny))
     }
 
