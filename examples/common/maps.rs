@@ -219,7 +219,7 @@ pub fn cloud(
         chart.draw_series(
             g.dots
                 .iter()
-                .map(|&p| Circle::new(p, 1, colour.mix(0.45).filled())),
+                .map(|&p| Circle::new(p, 2, colour.mix(0.6).filled())),
         )?;
         for curve in &g.curves {
             chart.draw_series(LineSeries::new(

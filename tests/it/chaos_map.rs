@@ -16,8 +16,9 @@ fn generic() -> [f64; 12] {
 }
 
 /// Lagrange's and Kovalevskaya's tops are integrable: a tangent vector on their tori grows
-/// linearly, so λ₁(T) ≈ ln(c T) / T. Both stay below ln T / T at T = 100 and 400, and four
-/// times the time at least halves the exponent (a chaotic orbit's would stay where it is).
+/// linearly, so λ₁(T) ≈ ln(c T) / T. Both stay below 1.5 ln T / T at T = 100 and 400 (they
+/// reach 0.6 to 0.85 of ln T / T), and four times the time at least halves the exponent (a
+/// chaotic orbit's would stay where it is).
 /// Two starts each: the example's generic one, and the cell where the map's top is chaotic
 /// (θ0 = 0.5 rad, ω3 = 1 rad/s), where a top that is not integrable is likely to be chaotic
 /// too (an asymmetric top may have regular orbits, so one start alone proves little).
@@ -40,10 +41,10 @@ fn integrable_tops_have_exponents_falling_as_ln_t_over_t() {
             long / short
         );
         assert!(
-            short > 0.0 && short < 100f64.ln() / 100.0,
+            short > 0.0 && short < 1.5 * 100f64.ln() / 100.0,
             "{name}: {short}"
         );
-        assert!(long < 400f64.ln() / 400.0, "{name}: {long}");
+        assert!(long < 1.5 * 400f64.ln() / 400.0, "{name}: {long}");
         assert!(long < 0.5 * short, "{name}: {short} then {long}");
     }
 }
