@@ -48,6 +48,9 @@ mod constraints {
     mod rheonomic;
     mod rolling_macro;
 }
+/// The physics of the `chaos_map` example: Lyapunov exponents of integrable and chaotic
+/// tops, against ln T / T, a closed form and two nearby trajectories.
+mod chaos_map;
 /// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
 mod ensemble;
 /// Sharding: the sleeping-top sweep whole and as shards merged from CSV, to the bit.
@@ -90,6 +93,9 @@ mod mechanism {
     mod timing;
     mod top;
 }
+/// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
+/// linearised flow map Φ P₀ Φᵀ.
+mod monte_carlo_top;
 /// The models and generated types shared between threads are `Send + Sync`.
 mod send_sync;
 /// The integrators, events and sampling.
