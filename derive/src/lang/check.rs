@@ -7,6 +7,7 @@ use precess_core::sym::Arena;
 
 use super::ast::Input;
 use super::ctxt::Ctxt;
+use super::scalar::Expect;
 use super::symbols::FieldParameters;
 
 /// Converts attribute values into expressions of the macro's arena, recording every error.
@@ -21,6 +22,8 @@ pub struct Checker<'a> {
     pub arena: &'a mut Arena,
     /// The fields read so far, each with its parameter symbol.
     pub(crate) parameters: &'a mut FieldParameters,
+    /// The dimension the key being read wants, if it has one (see `scalar.rs`).
+    pub(crate) expect: Option<Expect>,
 }
 
 impl<'a> Checker<'a> {
@@ -36,6 +39,7 @@ impl<'a> Checker<'a> {
             input,
             arena,
             parameters,
+            expect: None,
         }
     }
 }
