@@ -43,3 +43,29 @@ impl<'a> Checker<'a> {
         }
     }
 }
+
+impl Checker<'_> {
+    /// Refuses every field read by a value whose name is one of the scene's `coordinates`
+    /// (`whose` names them in the message, `the top's angles (zxz)`); false after an error.
+    ///
+    /// The generated code cannot confuse them (a field is read as `self.theta`, a coordinate
+    /// from the state, and the engine keeps the two symbols apart), but the printed
+    /// equations would: both would print as θ, one letter for two quantities.
+    pub(crate) fn refuse_coordinate_names(&self, coordinates: &[String], whose: &str) -> bool {
+        let mut ok = true;
+        for field in self.parameters.fields() {
+            let name = field.to_string();
+            if coordinates.contains(&name) {
+                self.cx.error_spanned_by(
+                    field,
+                    format!(
+                        "field `{name}` has the name of a coordinate of {whose} ({}): the printed equations would show both as `{name}`; rename the field, e.g. `{name}_0`",
+                        coordinates.join(", ")
+                    ),
+                );
+                ok = false;
+            }
+        }
+        ok
+    }
+}

@@ -150,6 +150,14 @@ pub fn check(
     }
     let user = [(keys::TORQUE, settings.torque.is_some())];
     settings.taylor = taylor.order(ck.cx, &user);
+    // Every field the body and the top read is known by now.
+    let names = settings.angles.names().map(str::to_owned);
+    let sequence = match settings.angles {
+        AngleSequence::Zxz => "zxz",
+        AngleSequence::Zyx => "zyx",
+    };
+    let whose = format!("the top (`{} = {sequence}`)", keys::ANGLES);
+    ck.refuse_coordinate_names(&names, &whose);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
 }
