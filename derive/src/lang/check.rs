@@ -59,7 +59,7 @@ impl Checker<'_> {
                 self.cx.error_spanned_by(
                     field,
                     format!(
-                        "field `{name}` has the name of a coordinate of {whose} ({}): the printed equations would show both as `{name}`; rename the field, e.g. `{name}_0`",
+                        "field `{name}` has the name of one of the coordinates of {whose} ({}): the printed equations would show both as `{name}`; rename the field, e.g. `{name}_0`",
                         coordinates.join(", ")
                     ),
                 );

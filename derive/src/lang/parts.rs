@@ -72,6 +72,15 @@ impl Checker<'_> {
             }
             let Some(key) = table.key(&written) else {
                 let allowed: Vec<&str> = table.allowed().collect();
+                // A solid's density is listed with the mass it stands for.
+                let listed: Vec<&str> = allowed
+                    .iter()
+                    .filter(|&&k| k != keys::DENSITY)
+                    .map(|&k| match k {
+                        keys::MASS if table.solid => "mass (or density)",
+                        k => k,
+                    })
+                    .collect();
                 // The explicit body's alias is a key one may have meant too.
                 let alias = (table.kind == keys::PartKind::Explicit).then_some(keys::CENTER);
                 let known = allowed.iter().copied().chain(alias);
@@ -83,7 +92,7 @@ impl Checker<'_> {
                         "unknown key `{}` for `{}`: allowed keys are {}{}",
                         kv.key,
                         table.name,
-                        allowed.join(", "),
+                        listed.join(", "),
                         keys::did_you_mean(&written, known)
                     ),
                 );

@@ -78,7 +78,7 @@ impl Dim {
     /// What the errors call it: its name and its SI unit, `a length (m)`.
     pub fn describe(self) -> String {
         const NAMED: &[(Dim, &str)] = &[
-            (Dim::NONE, "a pure number (an angle in rad)"),
+            (Dim::NONE, "a pure number (an angle in rad, or `20 deg`)"),
             (Dim::MASS, "a mass (kg)"),
             (Dim::LENGTH, "a length (m)"),
             (dim(0, 0, 1), "a time (s)"),
@@ -323,7 +323,8 @@ fn rewrite(tokens: Vec<TokenTree>, found: &mut bool) -> Vec<TokenTree> {
                     if matches!(rest.peek(), Some(TokenTree::Punct(p)) if p.as_char() == '-') {
                         unit.extend(rest.next());
                     }
-                    if matches!(rest.peek(), Some(TokenTree::Literal(_))) {
+                    // The power, whatever it is: `parse_unit` says what is allowed.
+                    if !matches!(rest.peek(), Some(TokenTree::Punct(p)) if p.as_char() == ',') {
                         unit.extend(rest.next());
                     }
                 }
@@ -341,7 +342,7 @@ fn rewrite(tokens: Vec<TokenTree>, found: &mut bool) -> Vec<TokenTree> {
                 _ => break,
             }
         }
-        out.push(units_macro(operand, unit));
+        out.extend(units_macro(operand, unit));
     }
     out
 }
@@ -373,7 +374,7 @@ fn operand_len(out: &[TokenTree]) -> usize {
 
 /// `__units!((operand) unit)`, spanned from the operand's first token to the unit's last,
 /// so an error on the whole value underlines both.
-fn units_macro(operand: Vec<TokenTree>, unit: Vec<TokenTree>) -> TokenTree {
+fn units_macro(operand: Vec<TokenTree>, unit: Vec<TokenTree>) -> [TokenTree; 3] {
     let first = operand.first().map_or(Span::call_site(), TokenTree::span);
     let last = unit.last().map_or(first, TokenTree::span);
     let mut inner = Group::new(Delimiter::Parenthesis, operand.into_iter().collect());
@@ -384,17 +385,11 @@ fn units_macro(operand: Vec<TokenTree>, unit: Vec<TokenTree>) -> TokenTree {
     args.set_span(last);
     let mut bang = Punct::new('!', Spacing::Alone);
     bang.set_span(first);
-    let macro_call: TokenStream = [
+    [
         TokenTree::Ident(Ident::new(UNITS_MACRO, first)),
         TokenTree::Punct(bang),
         TokenTree::Group(args),
     ]
-    .into_iter()
-    .collect();
-    // One group, so the caller pushes it as one token; syn sees a macro call inside.
-    let mut g = Group::new(Delimiter::None, macro_call);
-    g.set_span(first);
-    TokenTree::Group(g)
 }
 
 #[cfg(test)]
@@ -438,6 +433,70 @@ mod tests {
         assert!(e.contains("did you mean"), "{e}");
         let e = unit_of("m^x").err().unwrap_or_default();
         assert!(e.contains("whole power"), "{e}");
+    }
+
+    /// Each unit's size in SI and its (kg, m, s) exponents, written out again as f64s from
+    /// the definitions, independently of the table the parser reads.
+    const SI: &[(&str, f64, [i8; 3])] = &[
+        ("m", 1.0, [0, 1, 0]),
+        ("km", 1e3, [0, 1, 0]),
+        ("cm", 1e-2, [0, 1, 0]),
+        ("mm", 1e-3, [0, 1, 0]),
+        ("kg", 1.0, [1, 0, 0]),
+        ("g", 1e-3, [1, 0, 0]),
+        ("mg", 1e-6, [1, 0, 0]),
+        ("s", 1.0, [0, 0, 1]),
+        ("ms", 1e-3, [0, 0, 1]),
+        ("min", 60.0, [0, 0, 1]),
+        ("h", 3600.0, [0, 0, 1]),
+        ("rad", 1.0, [0, 0, 0]),
+        ("deg", std::f64::consts::PI / 180.0, [0, 0, 0]),
+        ("rev", std::f64::consts::TAU, [0, 0, 0]),
+        ("Hz", 1.0, [0, 0, -1]),
+        ("rpm", std::f64::consts::TAU / 60.0, [0, 0, -1]),
+        ("N", 1.0, [1, 1, -2]),
+    ];
+
+    proptest::proptest! {
+        // As the crate's other properties: a failure prints its case; no seed file.
+        #![proptest_config(proptest::test_runner::Config {
+            cases: 256,
+            failure_persistence: None,
+            ..proptest::test_runner::Config::default()
+        })]
+
+        /// Any unit of up to four names, each with a power and joined by a space, `*` or
+        /// `/`, has the product of its names' sizes and the sum of their dimensions.
+        #[test]
+        fn a_compound_unit_is_the_product_of_its_names(
+            factors in proptest::collection::vec(
+                (0..SI.len(), -3i64..=3, 0..3usize), 1..=4
+            )
+        ) {
+            let mut text = String::new();
+            let (mut size, mut dims) = (1.0f64, [0i64; 3]);
+            for (k, &(unit, power, join)) in factors.iter().enumerate() {
+                let power = if power == 0 { 1 } else { power };
+                let (name, si, d) = SI[unit];
+                // The first name has no join; `/` divides by the one name after it.
+                let sign = if k > 0 && join == 2 { -1 } else { 1 };
+                if k > 0 {
+                    text.push_str([" ", " * ", " / "][join]);
+                }
+                text.push_str(&format!("{name}^{power}"));
+                size *= si.powi((sign * power) as i32);
+                for i in 0..3 {
+                    dims[i] += sign * power * i64::from(d[i]);
+                }
+            }
+            let (scale, dim) = unit_of(&text).map_err(proptest::test_runner::TestCaseError::fail)?;
+            let ours = scale.ratio.to_f64() * std::f64::consts::PI.powi(scale.pi);
+            proptest::prop_assert!(
+                ((ours - size) / size).abs() < 1e-13,
+                "{text}: {ours} against {size}"
+            );
+            proptest::prop_assert_eq!([i64::from(dim.m), i64::from(dim.l), i64::from(dim.t)], dims, "{}", text);
+        }
     }
 
     #[test]

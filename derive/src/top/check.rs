@@ -156,7 +156,7 @@ pub fn check(
         AngleSequence::Zxz => "zxz",
         AngleSequence::Zyx => "zyx",
     };
-    let whose = format!("the top (`{} = {sequence}`)", keys::ANGLES);
+    let whose = format!("the top in `{} = {sequence}`", keys::ANGLES);
     ck.refuse_coordinate_names(&names, &whose);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
