@@ -97,18 +97,6 @@ impl PartKeys {
             .copied()
     }
 
-    /// Why the part takes no density, if it takes none: it has no volume.
-    pub fn no_volume(&self) -> Option<&'static str> {
-        match self.kind {
-            _ if self.solid => None,
-            PartKind::Particle => Some("a particle is a point: it has no volume"),
-            PartKind::Shell | PartKind::Disk | PartKind::Ring | PartKind::Rod => {
-                Some("it is thin: its mass lies on a surface or a line, with no volume")
-            }
-            _ => Some("it is given by its mass properties, with no shape to take a volume of"),
-        }
-    }
-
     /// The key `written` stands for in this part (`center` is the explicit body's `at`).
     pub fn key(&self, written: &str) -> Option<&'static str> {
         let written = if self.kind == PartKind::Explicit && written == CENTER {

@@ -10,7 +10,7 @@ use syn::parse::ParseStream;
 use syn::{Expr, Ident};
 
 use super::check::Checker;
-use super::keys::{self, PartKind, part_list};
+use super::keys::{self, PartKeys, PartKind, part_list};
 use super::syntax::{Item, KeyValue};
 use super::units::Dim;
 
@@ -30,6 +30,18 @@ pub fn rotation_message(e: &BodyError) -> String {
             "the matrix is a reflection (det = {determinant}), not a rotation: a rotation has det = +1; negate one column, or swap two"
         ),
         _ => e.to_string(),
+    }
+}
+
+/// Why the part takes no density, if it takes none: it has no volume.
+fn no_volume(table: &PartKeys) -> Option<&'static str> {
+    match table.kind {
+        _ if table.solid => None,
+        PartKind::Particle => Some("a particle is a point: it has no volume"),
+        PartKind::Shell | PartKind::Disk | PartKind::Ring | PartKind::Rod => {
+            Some("it is thin: its mass lies on a surface or a line, with no volume")
+        }
+        _ => Some("it is given by its mass properties, with no shape to take a volume of"),
     }
 }
 
@@ -57,7 +69,7 @@ impl Checker<'_> {
         let mut suggested: Vec<&'static str> = Vec::new();
         for kv in keys {
             let written = kv.key.to_string();
-            if let (keys::DENSITY, Some(why)) = (written.as_str(), table.no_volume()) {
+            if let (keys::DENSITY, Some(why)) = (written.as_str(), no_volume(table)) {
                 self.cx.error_spanned_by(
                     &kv.key,
                     format!(
