@@ -162,3 +162,10 @@ mod contact {
     mod tippe_top;
 }
 mod variational;
+/// Values as measured: units, density, constant arithmetic, names.
+mod values {
+    mod constants;
+    mod density;
+    mod names;
+    mod units;
+}

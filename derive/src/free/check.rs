@@ -9,6 +9,7 @@ use crate::lang::check::Checker;
 use crate::lang::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
 use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::taylor::TaylorKey;
+use crate::lang::units::Dim;
 
 /// The checked `#[free(...)]` settings: what acts on the body.
 #[derive(Default)]
@@ -106,11 +107,28 @@ fn setting<'a>(
     }
     seen.push(key);
     match FREE_KEYS.iter().find(|&&k| key == k).copied() {
-        Some(keys::GRAVITY) => settings.gravity = gravity(ck, value),
-        Some(keys::DRAG) => settings.drag = non_negative(ck, value, keys::DRAG),
-        Some(keys::DAMPING) => settings.damping = non_negative(ck, value, keys::DAMPING),
-        Some(keys::BODY_TORQUE) => settings.body_torque = ck.vector(value),
-        Some(keys::SPACE_TORQUE) => settings.space_torque = ck.vector(value),
+        Some(keys::GRAVITY) => {
+            settings.gravity =
+                ck.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| gravity(ck, value))
+        }
+        Some(keys::DRAG) => {
+            settings.drag = ck.expecting(Dim::DRAG, keys::DRAG, |ck| {
+                non_negative(ck, value, keys::DRAG)
+            })
+        }
+        Some(keys::DAMPING) => {
+            settings.damping = ck.expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| {
+                non_negative(ck, value, keys::DAMPING)
+            })
+        }
+        Some(keys::BODY_TORQUE) => {
+            settings.body_torque =
+                ck.expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(value))
+        }
+        Some(keys::SPACE_TORQUE) => {
+            settings.space_torque =
+                ck.expecting(Dim::TORQUE, keys::SPACE_TORQUE, |ck| ck.vector(value))
+        }
         Some(keys::FORCE) => settings.force = user_fn(ck, value, keys::FORCE),
         Some(keys::TORQUE) => settings.torque = user_fn(ck, value, keys::TORQUE),
         _ if FREE_FORCES.iter().any(|&f| key == f) => ck.cx.error_spanned_by(
@@ -205,8 +223,8 @@ fn force_part(ck: &mut Checker, name: &Ident, kvs: &[KeyValue]) -> Option<(bool,
         );
         return None;
     };
-    let force = ck.vector(force);
-    let at = point(ck, at);
+    let force = ck.expecting(Dim::FORCE, keys::FORCE, |ck| ck.vector(force));
+    let at = ck.expecting(Dim::LENGTH, keys::FORCE_AT, |ck| point(ck, at));
     let (force, at) = (force?, at?);
     ok.then_some((kind == keys::SPACE_FORCE, AppliedForce { force, at }))
 }

@@ -7,6 +7,7 @@ use precess_core::sym::Arena;
 
 use super::ast::Input;
 use super::ctxt::Ctxt;
+use super::scalar::Expect;
 use super::symbols::FieldParameters;
 
 /// Converts attribute values into expressions of the macro's arena, recording every error.
@@ -21,6 +22,8 @@ pub struct Checker<'a> {
     pub arena: &'a mut Arena,
     /// The fields read so far, each with its parameter symbol.
     pub(crate) parameters: &'a mut FieldParameters,
+    /// The dimension the key being read wants, if it has one (see `scalar.rs`).
+    pub(crate) expect: Option<Expect>,
 }
 
 impl<'a> Checker<'a> {
@@ -36,6 +39,33 @@ impl<'a> Checker<'a> {
             input,
             arena,
             parameters,
+            expect: None,
         }
+    }
+}
+
+impl Checker<'_> {
+    /// Refuses every field read by a value whose name is one of the scene's `coordinates`
+    /// (`whose` names them in the message, `the top's angles (zxz)`); false after an error.
+    ///
+    /// The generated code cannot confuse them (a field is read as `self.theta`, a coordinate
+    /// from the state, and the engine keeps the two symbols apart), but the printed
+    /// equations would: both would print as θ, one letter for two quantities.
+    pub(crate) fn refuse_coordinate_names(&self, coordinates: &[String], whose: &str) -> bool {
+        let mut ok = true;
+        for field in self.parameters.fields() {
+            let name = field.to_string();
+            if coordinates.contains(&name) {
+                self.cx.error_spanned_by(
+                    field,
+                    format!(
+                        "field `{name}` has the name of one of the coordinates of {whose} ({}): the printed equations would show both as `{name}`; rename the field, e.g. `{name}_0`",
+                        coordinates.join(", ")
+                    ),
+                );
+                ok = false;
+            }
+        }
+        ok
     }
 }

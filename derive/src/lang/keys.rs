@@ -10,6 +10,8 @@ pub const TOP: &str = "top";
 
 /// The mass of a part.
 pub const MASS: &str = "mass";
+/// The density of a solid part, instead of its mass: mass = density × volume.
+pub const DENSITY: &str = "density";
 /// A radius (sphere, shell, cylinder, disk, ring, cone).
 pub const RADIUS: &str = "radius";
 /// A full length, end to end (cylinder, tube, rod).
@@ -80,12 +82,19 @@ pub struct PartKeys {
     pub required: &'static [&'static str],
     /// Keys it may have.
     pub optional: &'static [&'static str],
+    /// True for a solid, whose `mass` may be given as a [`DENSITY`] instead.
+    pub solid: bool,
 }
 
 impl PartKeys {
     /// Every key it accepts, required first.
     pub fn allowed(&self) -> impl Iterator<Item = &'static str> {
-        self.required.iter().chain(self.optional).copied()
+        let density: &[&str] = if self.solid { &[DENSITY] } else { &[] };
+        self.required
+            .iter()
+            .chain(self.optional)
+            .chain(density)
+            .copied()
     }
 
     /// The key `written` stands for in this part (`center` is the explicit body's `at`).
@@ -160,6 +169,15 @@ const fn part(
         alias: None,
         required,
         optional,
+        solid: matches!(
+            kind,
+            PartKind::Sphere
+                | PartKind::Cuboid
+                | PartKind::Cylinder
+                | PartKind::Tube
+                | PartKind::Cone
+                | PartKind::Ellipsoid
+        ),
     }
 }
 

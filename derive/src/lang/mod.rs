@@ -9,8 +9,10 @@
 //! - `syntax`: the grammar of lists, `key = value` settings and `name(key = value, ...)`
 //!   groups, one parser for every attribute.
 //! - `check`: the checker all values go through (one arena, one list of fields read);
-//!   `values`, the value language it reads (numbers, fields, arithmetic, vectors, tensors,
+//!   `values` and `scalar`, the value language it reads (numbers, fields, arithmetic, vectors, tensors,
 //!   axes, rotations); `parts`, the part language of `#[rigid]` and a mechanism body.
+//! - `units`: units on values (`2 cm`, `7.8 g/cm^3`), attached to what they follow before
+//!   syn reads a value, and the dimensions each key's values are checked against.
 //! - `expansion`: what every expansion reads; `symbols`, the lowering of the arena's
 //!   expressions to Rust reading the fields; `tokens`, the body language's values as Rust.
 //! - `taylor`: the `taylor = K` key of every attribute, found, checked and expanded in one
@@ -25,10 +27,12 @@ pub mod expansion;
 pub mod keys;
 pub mod parts;
 pub mod private;
+pub mod scalar;
 pub mod symbols;
 pub mod syntax;
 pub mod taylor;
 pub mod tokens;
+pub mod units;
 pub mod values;
 
 #[cfg(test)]

@@ -4,13 +4,15 @@
 //! `parse_nested_meta`, so an unknown part or key is reported by the checker and skipped, and
 //! every error in the list is collected.
 
+use proc_macro2::TokenTree;
 use syn::ext::IdentExt;
-use syn::parse::{Parse, ParseStream};
+use syn::parse::{Parse, ParseStream, discouraged::Speculative};
 use syn::punctuated::Punctuated;
 use syn::{Attribute, Expr, Ident, Meta, Token, parenthesized};
 
 use super::ctxt::Ctxt;
 use super::keys;
+use super::units;
 
 /// `key = value`.
 pub struct KeyValue {
@@ -27,8 +29,26 @@ impl Parse for KeyValue {
             return Err(input.error(format!("expected `{key} = value`")));
         }
         input.parse::<Token![=]>()?;
-        let value = input.parse()?;
+        let value = parse_value(input)?;
         Ok(KeyValue { key, value })
+    }
+}
+
+/// A value: an expression, with units attached (`2 cm` becomes an expression syn reads,
+/// see `units.rs`). A value without units is parsed as written, with syn's own errors.
+pub fn parse_value(input: ParseStream) -> syn::Result<Expr> {
+    let fork = input.fork();
+    let mut tokens = Vec::new();
+    // A value ends at the next comma of its list: commas inside it sit in groups.
+    while !fork.is_empty() && !fork.peek(Token![,]) {
+        tokens.push(fork.parse::<TokenTree>()?);
+    }
+    match units::attach(tokens) {
+        Some(rewritten) => {
+            input.advance_to(&fork);
+            syn::parse2(rewritten)
+        }
+        None => input.parse(),
     }
 }
 
@@ -64,7 +84,7 @@ impl Item {
             })
         } else if input.peek(Token![=]) {
             input.parse::<Token![=]>()?;
-            let value = input.parse()?;
+            let value = parse_value(input)?;
             Ok(Item::Setting(Box::new(KeyValue { key: name, value })))
         } else {
             Err(syn::Error::new(name.span(), expected(&name)))

@@ -5,13 +5,13 @@
 use precess_core::body::{About, Axis, Orientation, check_orientation};
 use precess_core::sym::{Arena, ExprId, SymError, parse_decimal};
 use quote::ToTokens;
-use syn::{BinOp, Expr, Ident, Lit, UnOp};
+use syn::{Expr, Ident, Lit, UnOp};
 
 use super::check::Checker;
 use super::ctxt::Ctxt;
 use super::parts::rotation_message;
 
-const VALUES: &str = "values are number literals, names of the struct's f64 fields, or `+ - * /` and parentheses on them";
+pub(crate) const VALUES: &str = "values are number literals (with units, `2 cm`), names of the struct's f64 fields, `PI`, `TAU`, or `+ - * /`, parentheses, `sqrt`, `powi` on them";
 
 impl Checker<'_> {
     /// `x`, `y` or `z`.
@@ -206,88 +206,13 @@ impl Checker<'_> {
         }
     }
 
-    /// A scalar value: a literal, an f64 field, or arithmetic on them.
-    pub fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
-        match e {
-            Expr::Lit(l) => self.literal(&l.lit),
-            Expr::Paren(p) => self.scalar(&p.expr),
-            Expr::Group(g) => self.scalar(&g.expr),
-            Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => {
-                let v = self.scalar(&u.expr)?;
-                Some(self.arena.neg(v))
-            }
-            Expr::Binary(b) => {
-                let (l, r) = (self.scalar(&b.left), self.scalar(&b.right));
-                let (l, r) = (l?, r?);
-                match b.op {
-                    BinOp::Add(_) => Some(self.arena.add(l, r)),
-                    BinOp::Sub(_) => Some(self.arena.sub(l, r)),
-                    BinOp::Mul(_) => Some(self.arena.mul(l, r)),
-                    // A divisor that is identically zero has no value anywhere.
-                    BinOp::Div(_) => match self.arena.div(l, r) {
-                        Ok(v) => Some(v),
-                        Err(_) => {
-                            self.cx
-                                .error_spanned_by(&b.right, "division by a value that is zero");
-                            None
-                        }
-                    },
-                    _ => {
-                        self.cx
-                            .error_spanned_by(b.op, format!("unsupported operator: {VALUES}"));
-                        None
-                    }
-                }
-            }
-            // The sine and cosine of a value: an angle among the fields (a bicycle's steer
-            // axis tilted by its head angle λ is [sin λ, 0, cos λ]).
-            Expr::Call(call)
-                if call.args.len() == 1
-                    && path_ident(&call.func).is_some_and(|f| f == "sin" || f == "cos") =>
-            {
-                let x = self.scalar(call.args.first()?)?;
-                if path_ident(&call.func).is_some_and(|f| f == "sin") {
-                    Some(self.arena.sin(x))
-                } else {
-                    Some(self.arena.cos(x))
-                }
-            }
-            Expr::Path(p) => match p.path.get_ident() {
-                Some(ident) => self.field(ident),
-                None => {
-                    let last = p
-                        .path
-                        .segments
-                        .last()
-                        .map(|s| s.ident.to_string())
-                        .unwrap_or_default();
-                    if ["INFINITY", "NEG_INFINITY", "NAN"].contains(&last.as_str()) {
-                        self.cx.error_spanned_by(
-                            e,
-                            format!("non-finite value: {VALUES}, and must be finite"),
-                        );
-                    } else {
-                        self.cx
-                            .error_spanned_by(e, format!("unsupported value: {VALUES}"));
-                    }
-                    None
-                }
-            },
-            _ => {
-                self.cx
-                    .error_spanned_by(e, format!("unsupported value: {VALUES}"));
-                None
-            }
-        }
-    }
-
     /// A number literal, exactly (`0.03` is 3/100).
-    fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
+    pub(crate) fn literal(&mut self, lit: &Lit) -> Option<ExprId> {
         number_literal(self.cx, self.arena, lit, VALUES)
     }
 
     /// A field name: it must exist and be an f64 (the body's parameters are f64).
-    fn field(&mut self, ident: &Ident) -> Option<ExprId> {
+    pub(crate) fn field(&mut self, ident: &Ident) -> Option<ExprId> {
         let name = ident.to_string();
         let Some(field) = self.input.field(ident) else {
             let available: Vec<String> = self
@@ -332,7 +257,7 @@ impl Checker<'_> {
 }
 
 /// The single identifier a path expression is, if it is one.
-fn path_ident(e: &Expr) -> Option<&Ident> {
+pub(crate) fn path_ident(e: &Expr) -> Option<&Ident> {
     match e {
         Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
         _ => None,

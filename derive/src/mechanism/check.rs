@@ -99,6 +99,10 @@ pub fn check(
         .iter()
         .flat_map(|s| s.coordinates.iter().cloned())
         .collect();
+    let names: Vec<String> = coordinates.iter().map(Ident::to_string).collect();
+    if !ck.refuse_coordinate_names(&names, "the mechanism") {
+        return None;
+    }
     let mut wheels = Vec::new();
     let mut bodies = Vec::with_capacity(specs.len());
     let mut parts = Vec::with_capacity(specs.len());

@@ -14,6 +14,7 @@ use crate::lang::keys::{self, part_list};
 use crate::lang::parts::{KeySpans, rotation_message};
 use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::taylor::TaylorKey;
+use crate::lang::units;
 
 /// The checked description and the symbolic body computed from it.
 pub struct CheckedBody {
@@ -106,7 +107,8 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
                     continue;
                 }
                 pivot_key = Some(key);
-                description.pivot = ck.vector(value);
+                description.pivot =
+                    ck.expecting(units::Dim::LENGTH, keys::PIVOT, |ck| ck.vector(value));
                 spans.pivot = Some(value.to_token_stream());
             }
             // Read by `TaylorKey` above.

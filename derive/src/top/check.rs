@@ -13,6 +13,7 @@ use crate::lang::check::Checker;
 use crate::lang::keys::{self, TOP_KEYS};
 use crate::lang::syntax::{KeyValue, Parsed, distinct};
 use crate::lang::taylor::TaylorKey;
+use crate::lang::units::Dim;
 
 /// The checked `#[top(...)]` settings: the torques the scene declares and its angles.
 pub struct TopSettings {
@@ -75,56 +76,64 @@ pub fn check(
     for KeyValue { key, value } in distinct(cx, &items.items, &in_top) {
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => {
-                settings.gravity = ck.scalar(value).filter(|&g| {
-                    let literal = constant(ck, g);
-                    literal_rule(
-                        ck,
-                        value,
-                        TopParameters {
-                            gravity: literal,
-                            ..TopParameters::default()
-                        },
-                    )
-                });
+                settings.gravity = ck
+                    .expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| ck.scalar(value))
+                    .filter(|&g| {
+                        let literal = constant(ck, g);
+                        literal_rule(
+                            ck,
+                            value,
+                            TopParameters {
+                                gravity: literal,
+                                ..TopParameters::default()
+                            },
+                        )
+                    });
             }
             Some(keys::DAMPING) => {
-                settings.damping = ck.scalar(value).filter(|&k| {
-                    let literal = constant(ck, k);
-                    literal_rule(
-                        ck,
-                        value,
-                        TopParameters {
-                            damping: literal,
-                            ..TopParameters::default()
-                        },
-                    )
-                });
+                settings.damping = ck
+                    .expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| ck.scalar(value))
+                    .filter(|&k| {
+                        let literal = constant(ck, k);
+                        literal_rule(
+                            ck,
+                            value,
+                            TopParameters {
+                                damping: literal,
+                                ..TopParameters::default()
+                            },
+                        )
+                    });
             }
             Some(keys::BODY_TORQUE) => {
-                settings.body_torque = ck.vector(value).filter(|v| {
-                    let literal = constant_vector(ck, v);
-                    literal_rule(
-                        ck,
-                        value,
-                        TopParameters {
-                            body_torque: literal,
-                            ..TopParameters::default()
-                        },
-                    )
-                });
+                settings.body_torque = ck
+                    .expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(value))
+                    .filter(|v| {
+                        let literal = constant_vector(ck, v);
+                        literal_rule(
+                            ck,
+                            value,
+                            TopParameters {
+                                body_torque: literal,
+                                ..TopParameters::default()
+                            },
+                        )
+                    });
             }
             Some(keys::SPACE_TORQUE) => {
-                settings.space_torque = ck.vector(value).filter(|v| {
-                    let literal = constant_vector(ck, v);
-                    literal_rule(
-                        ck,
-                        value,
-                        TopParameters {
-                            space_torque: literal,
-                            ..TopParameters::default()
-                        },
-                    )
-                });
+                settings.space_torque = ck
+                    .expecting(Dim::TORQUE, keys::SPACE_TORQUE, |ck| ck.vector(value))
+                    .filter(|v| {
+                        let literal = constant_vector(ck, v);
+                        literal_rule(
+                            ck,
+                            value,
+                            TopParameters {
+                                space_torque: literal,
+                                ..TopParameters::default()
+                            },
+                        )
+                    });
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
@@ -141,6 +150,14 @@ pub fn check(
     }
     let user = [(keys::TORQUE, settings.torque.is_some())];
     settings.taylor = taylor.order(ck.cx, &user);
+    // Every field the body and the top read is known by now.
+    let names = settings.angles.names().map(str::to_owned);
+    let sequence = match settings.angles {
+        AngleSequence::Zxz => "zxz",
+        AngleSequence::Zyx => "zyx",
+    };
+    let whose = format!("the top in `{} = {sequence}`", keys::ANGLES);
+    ck.refuse_coordinate_names(&names, &whose);
     let ok = items.complete && ck.cx.error_count() == errors_before;
     ok.then_some(Some(settings))
 }

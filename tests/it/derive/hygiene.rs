@@ -42,8 +42,9 @@ scenes! {
     Plain: h,
     // Time.
     T: t, Time: time,
-    // The ZXZ angles, their rates and accelerations.
-    Phi: phi, Theta: theta, Psi: psi,
+    // The ZXZ angles' rates and accelerations (the angles themselves, the coordinates of
+    // this top, are refused: its printed equations would show two quantities as one letter;
+    // see the ui case `top_field_named_like_a_coordinate`).
     PhiDot: phi_dot, ThetaDot: theta_dot, PsiDot: psi_dot,
     PhiDdot: phi_ddot, ThetaDdot: theta_ddot, PsiDdot: psi_ddot,
     // The ZYX angles, their rates and accelerations.

@@ -1,7 +1,7 @@
 use precess::prelude::*;
 
 #[derive(RigidBody)]
-#[rigid(sphere(mass = 1.0, radius = r.sqrt()))]
+#[rigid(sphere(mass = 1.0, radius = r.ln()))]
 struct Body {
     r: f64,
 }
