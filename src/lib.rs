@@ -137,6 +137,11 @@ pub mod __private {
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
 
+/// The lanes guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/lanes.md")]
+#[cfg(doctest)]
+pub struct LanesDoctests;
+
 /// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
 #[doc = include_str!("../docs/free-bodies.md")]
 #[cfg(doctest)]
