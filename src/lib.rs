@@ -122,6 +122,9 @@ pub mod __private {
     pub use precess_core::ode::System;
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::TaylorSystem;
+    pub use precess_core::taylor::batch::Lanes;
+    pub use precess_core::taylor::batch::TaylorLanes;
+    pub use precess_core::taylor::batch::kernels as lane_kernels;
     pub use precess_core::taylor::compact::low_orders;
     pub use precess_core::taylor::kernels;
     pub use precess_core::top::{TopDynamics, TopParameters};
@@ -133,6 +136,11 @@ pub mod __private {
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// The lanes guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/lanes.md")]
+#[cfg(doctest)]
+pub struct LanesDoctests;
 
 /// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
 #[doc = include_str!("../docs/free-bodies.md")]

@@ -55,6 +55,8 @@ mod chaos_map;
 mod ensemble;
 /// Sharding: the sleeping-top sweep whole and as shards merged from CSV, to the bit.
 mod ensemble_shards;
+/// Batch lanes: L Taylor trajectories stepped at once.
+mod lanes;
 /// Closed-form solutions.
 mod exact {
     mod attitude;

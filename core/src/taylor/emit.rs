@@ -32,6 +32,9 @@ struct Sums {
     split: bool,
     /// The kernels called through their never-inlined twins.
     outlined: bool,
+    /// The code steps `__L` trajectories at once: every value is a `Lanes<__L>`
+    /// (`super::batch`), the sums go through `super::batch::kernels`.
+    lanes: bool,
 }
 
 impl Sums {
@@ -39,10 +42,32 @@ impl Sums {
     /// path all generated code names precess through.
     fn kernel(self, name: &str) -> TokenStream {
         let f = Ident::new(name, Span::call_site());
-        if self.outlined {
+        if self.lanes {
+            quote!(::precess::__private::lane_kernels::#f)
+        } else if self.outlined {
             quote!(::precess::__private::kernels::outlined::#f)
         } else {
             quote!(::precess::__private::kernels::#f)
+        }
+    }
+
+    /// The type of a value: `f64`, or `Lanes<__L>` in the lanes.
+    fn num(self) -> TokenStream {
+        if self.lanes {
+            quote!(::precess::__private::Lanes<__L>)
+        } else {
+            quote!(f64)
+        }
+    }
+
+    /// `e` as a value: itself, or in the lanes a `Lanes<__L>` made of it (an `f64` literal
+    /// splat to every lane, a `Lanes` kept).
+    fn value(self, e: TokenStream) -> TokenStream {
+        if self.lanes {
+            let num = self.num();
+            quote!(<#num>::from(#e))
+        } else {
+            e
         }
     }
 }
@@ -102,6 +127,68 @@ impl Tape {
         max_order: usize,
         symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
     ) -> TaylorTokens {
+        let sums = Sums {
+            split: self.split_products(),
+            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
+            lanes: false,
+        };
+        self.emit(max_order, symbol, sums)
+    }
+
+    /// The recurrences of [`Tape::to_tokens`] on `L` trajectories at once: every value a
+    /// [`Lanes<__L>`](super::batch::Lanes), `__L` a const generic the caller's `impl` declares,
+    /// the sums through [`super::batch::kernels`]; each lane's operations are the scalar
+    /// code's in the same order, so a lane's coefficients are a scalar call's bit for bit.
+    /// `symbol` gives each scalar symbol as an expression of type `Lanes<__L>`. The body reads
+    /// `ws`, `t: Lanes<__L>`, `y: &[Lanes<__L>; N]`, `order` and `coeffs: &mut [[Lanes<__L>;
+    /// N]]`.
+    ///
+    /// `None` for a tape with a primitive function ([`SeriesOp::Func`], whose emitted code is
+    /// written for `f64`) or with [`OUTLINE_KERNELS_FROM_SUMS`] sums or more (the lanes
+    /// multiply a body the compiler already struggles with): such a scene keeps its scalar
+    /// recurrences only.
+    ///
+    /// ```
+    /// use precess_core::sym::Arena;
+    /// use precess_core::taylor::Tape;
+    /// let mut a = Arena::new();
+    /// let x = a.coordinate("x");
+    /// let rhs = a.mul(x, x); // x' = x²
+    /// let tape = Tape::new(&a, &[x], None, &[rhs]).unwrap();
+    /// let code = tape.to_lane_tokens(20, &mut |_| quote::quote!(0.0)).unwrap();
+    /// assert!(code.workspace.to_string().contains("Lanes < __L >"));
+    /// ```
+    pub fn to_lane_tokens(
+        &self,
+        max_order: usize,
+        symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
+    ) -> Option<TaylorTokens> {
+        let has_func = self
+            .steps
+            .iter()
+            .any(|st| matches!(st.op, SeriesOp::Func(..)))
+            || self
+                .scalars
+                .iter()
+                .any(|op| matches!(op, ScalarOp::Func(..)));
+        if has_func || self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS {
+            return None;
+        }
+        let sums = Sums {
+            split: self.split_products(),
+            outlined: false,
+            lanes: true,
+        };
+        Some(self.emit(max_order, symbol, sums))
+    }
+
+    /// The code of [`Tape::to_tokens`] and of the lanes ([`Tape::to_lane_tokens`]).
+    fn emit(
+        &self,
+        max_order: usize,
+        symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
+        sums: Sums,
+    ) -> TaylorTokens {
         let scalar_operand = |i: u32| -> TokenStream {
             match self.scalars.get(i as usize) {
                 Some(ScalarOp::Const(c)) => f64_literal(*c),
@@ -112,6 +199,8 @@ impl Tape {
             }
         };
         let mut scalars = TokenStream::new();
+        let num = sums.num();
+        let zero = sums.value(quote!(0.0f64));
         for (i, op) in self.scalars.iter().enumerate() {
             let s = scalar_operand;
             let rhs = match *op {
@@ -125,17 +214,18 @@ impl Tape {
                     let a = s(a);
                     quote!(-#a)
                 }
-                ScalarOp::Sqrt(a) => method(s(a), "sqrt"),
+                ScalarOp::Sqrt(a) => method(s(a), "sqrt", sums),
                 ScalarOp::Powf(a, r) => {
-                    let (a, r) = (s(a), f64_literal(r));
-                    quote!(f64::powf(#a, #r))
+                    let (a, r, num) = (sums.value(s(a)), f64_literal(r), sums.num());
+                    quote!(<#num>::powf(#a, #r))
                 }
-                ScalarOp::Sin(a) => method(s(a), "sin"),
-                ScalarOp::Cos(a) => method(s(a), "cos"),
+                ScalarOp::Sin(a) => method(s(a), "sin", sums),
+                ScalarOp::Cos(a) => method(s(a), "cos", sums),
                 ScalarOp::Func(f, a) => f.call_tokens(s(a)),
             };
             let id = Ident::new(&format!("__s{i}"), Span::call_site());
-            scalars.extend(quote!(let #id: f64 = #rhs;));
+            let (rhs, num) = (sums.value(rhs), sums.num());
+            scalars.extend(quote!(let #id: #num = #rhs;));
         }
         let layout = &self.layout();
         // Only the series that are not `let`s get a row: fewer rows, a smaller workspace.
@@ -152,12 +242,9 @@ impl Tape {
         // the only one read beyond what this call writes, so it is written whole.
         let time = self.time.map(|ti| {
             let id = series(ti);
-            quote!(*#id = [0.0f64; __K + 1]; #id[0] = t; #id[1] = 1.0;)
+            let one = sums.value(quote!(1.0f64));
+            quote!(*#id = [#zero; __K + 1]; #id[0] = t; #id[1] = #one;)
         });
-        let sums = Sums {
-            split: self.split_products(),
-            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
-        };
         let first = self
             .steps
             .iter()
@@ -178,6 +265,7 @@ impl Tape {
         // f's order-k coefficient into the state's order k + 1: at order 0 as it is, at
         // order k ≥ 1 divided by k + 1 (`__inv`); a scalar output has order 0 only.
         let output = |order_zero: bool| {
+            let zero = &zero;
             let f = self.outputs.iter().enumerate().map(move |(i, out)| {
                 let state = series(i as u32);
                 match (*out, order_zero) {
@@ -190,10 +278,10 @@ impl Tape {
                         quote!(#state[__k + 1] = #v * __inv;)
                     }
                     (Value::Scalar(x), true) => {
-                        let v = scalar_operand(x);
+                        let v = sums.value(scalar_operand(x));
                         quote!(#state[1] = #v;)
                     }
-                    (Value::Scalar(_), false) => quote!(#state[__k + 1] = 0.0;),
+                    (Value::Scalar(_), false) => quote!(#state[__k + 1] = #zero;),
                 }
             });
             quote!(#(#f)*)
@@ -231,7 +319,7 @@ impl Tape {
             let __n: usize = if __n < __top { __n } else { __top };
             if ws.len() != #rows {
                 ws.clear();
-                ws.resize(#rows, [0.0f64; __K + 1]);
+                ws.resize(#rows, [#zero; __K + 1]);
             }
             let [#(#bindings),*] = &mut ws[..] else {
                 return;
@@ -250,7 +338,7 @@ impl Tape {
         };
         TaylorTokens {
             body,
-            workspace: quote!(::std::vec::Vec<[f64; #max_order + 1]>),
+            workspace: quote!(::std::vec::Vec<[#num; #max_order + 1]>),
             series: rows,
         }
     }
@@ -424,13 +512,19 @@ fn interior_id(out: u32, tag: &str) -> Ident {
 
 /// Stores a step's value at the current order `k`: as its `let`, and into its row if it
 /// has one.
-fn store(out: u32, layout: &Layout, k: TokenStream, value_expr: TokenStream) -> TokenStream {
-    let v = value(out);
+fn store(
+    out: u32,
+    layout: &Layout,
+    k: TokenStream,
+    value_expr: TokenStream,
+    sums: Sums,
+) -> TokenStream {
+    let (v, num) = (value(out), sums.num());
     if layout.is_local(out) {
-        quote!(let #v: f64 = #value_expr;)
+        quote!(let #v: #num = #value_expr;)
     } else {
         let o = series(out);
-        quote!(let #v: f64 = #value_expr; #o[#k] = #v;)
+        quote!(let #v: #num = #value_expr; #o[#k] = #v;)
     }
 }
 
@@ -460,23 +554,23 @@ fn order_zero(
         SeriesOp::Square(a) => binary(x(a), quote!(*), x(a)),
         SeriesOp::Div(a, b) => binary(x(a), quote!(/), x(b)),
         SeriesOp::ScalarDiv(c, a) => binary(s(c), quote!(/), x(a)),
-        SeriesOp::Sqrt(a) => method(x(a), "sqrt"),
+        SeriesOp::Sqrt(a) => method(x(a), "sqrt", sums),
         SeriesOp::Powf(a, r) => {
-            let (a, r) = (x(a), f64_literal(r));
-            quote!(f64::powf(#a, #r))
+            let (a, r, num) = (x(a), f64_literal(r), sums.num());
+            quote!(<#num>::powf(#a, #r))
         }
         SeriesOp::SinCos(a) => {
             let (o, c) = (series(out), series(out + 1));
             let (vs, vc) = (value(out), value(out + 1));
-            let a = x(a);
+            let (a, num) = (x(a), sums.num());
             return quote! {
-                let (#vs, #vc): (f64, f64) = f64::sin_cos(#a);
+                let (#vs, #vc): (#num, #num) = <#num>::sin_cos(#a);
                 #o[0] = #vs;
                 #c[0] = #vc;
             };
         }
     };
-    store(out, layout, quote!(0), value_expr)
+    store(out, layout, quote!(0), value_expr, sums)
 }
 
 /// The first phase of one step at the order `__k ≥ 1`: the part of its sum that reads
@@ -490,27 +584,28 @@ fn interior(out: u32, op: SeriesOp, layout: &Layout, sums: Sums) -> TokenStream 
     );
     let o = series(out);
     let i = interior_id(out, "");
+    let num = sums.num();
     match op {
         // Σⱼ₌₁ᵏ⁻¹ a_j b_{k−j}: the Cauchy product less a_0 b_k + a_k b_0.
         SeriesOp::Mul(a, b) if split => {
             let (a, b) = (series(a), series(b));
-            quote!(let #i: f64 = #dot(&#a[1..__k], &#b[1..__k]);)
+            quote!(let #i: #num = #dot(&#a[1..__k], &#b[1..__k]);)
         }
         SeriesOp::Square(a) => {
             let a = series(a);
-            quote!(let #i: f64 = #square_interior(&#a[1..__k]);)
+            quote!(let #i: #num = #square_interior(&#a[1..__k]);)
         }
         // Σⱼ₌₁ᵏ⁻¹ b_j c_{k−j}: the quotient's sum less b_k c_0.
         SeriesOp::Div(_, b) | SeriesOp::ScalarDiv(_, b) => {
             let b = series(b);
-            quote!(let #i: f64 = #dot(&#b[1..__k], &#o[1..__k]);)
+            quote!(let #i: #num = #dot(&#b[1..__k], &#o[1..__k]);)
         }
         // The root's whole sum Σⱼ₌₁ᵏ⁻¹ c_j c_{k−j} reads lower orders only.
-        SeriesOp::Sqrt(_) => quote!(let #i: f64 = #square(&#o[1..__k]);),
+        SeriesOp::Sqrt(_) => quote!(let #i: #num = #square(&#o[1..__k]);),
         // Σⱼ₌₁ᵏ⁻¹ (r(k − j) − j) a_{k−j} c_j: the real power's sum less r k a_k c_0.
         SeriesOp::Powf(a, r) => {
             let (a, r, power) = (series(a), f64_literal(r), sums.kernel("power_interior"));
-            quote!(let #i: f64 = #power(&#a[1..__k], &#o[1..__k], #r);)
+            quote!(let #i: #num = #power(&#a[1..__k], &#o[1..__k], #r);)
         }
         // Σⱼ₌₁ᵏ⁻¹ d_j C_{k−j} and Σⱼ₌₁ᵏ⁻¹ d_j S_{k−j}, less d_k C_0 and d_k S_0.
         SeriesOp::Func(f, a) => func_code(out, f, a, layout, sums).interior,
@@ -518,8 +613,8 @@ fn interior(out: u32, op: SeriesOp, layout: &Layout, sums: Sums) -> TokenStream 
             let (c, d) = (series(out + 1), series(out + 2));
             let (is, ic) = (interior_id(out, "s"), interior_id(out, "c"));
             quote! {
-                let #is: f64 = #dot(&#d[1..__k], &#c[1..__k]);
-                let #ic: f64 = #dot(&#d[1..__k], &#o[1..__k]);
+                let #is: #num = #dot(&#d[1..__k], &#c[1..__k]);
+                let #ic: #num = #dot(&#d[1..__k], &#o[1..__k]);
             }
         }
         _ => TokenStream::new(),
@@ -586,18 +681,19 @@ fn order_k(
             let (a, c, d) = (at(a), series(out + 1), series(out + 2));
             let (vs, vc) = (value(out), value(out + 1));
             let (is, ic) = (interior_id(out, "s"), interior_id(out, "c"));
+            let num = sums.num();
             return quote! {
-                let __dk: f64 = (__k as f64) * #a;
+                let __dk: #num = (__k as f64) * #a;
                 #d[__k] = __dk;
                 let __inv_k: f64 = 1.0 / (__k as f64);
-                let #vs: f64 = (#is + __dk * #c[0]) * __inv_k;
-                let #vc: f64 = -(#ic + __dk * #o[0]) * __inv_k;
+                let #vs: #num = (#is + __dk * #c[0]) * __inv_k;
+                let #vc: #num = -(#ic + __dk * #o[0]) * __inv_k;
                 #o[__k] = #vs;
                 #c[__k] = #vc;
             };
         }
     };
-    store(out, layout, quote!(__k), value_expr)
+    store(out, layout, quote!(__k), value_expr, sums)
 }
 
 /// The emitted code of a primitive's step `out = f(a)`, by the primitive
@@ -621,9 +717,14 @@ fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {
     quote!(#a #op #b)
 }
 
-fn method(a: TokenStream, name: &str) -> TokenStream {
+fn method(a: TokenStream, name: &str, sums: Sums) -> TokenStream {
     let f = Ident::new(name, Span::call_site());
-    quote!(f64::#f(#a))
+    if sums.lanes {
+        let (a, num) = (sums.value(a), sums.num());
+        quote!(<#num>::#f(#a))
+    } else {
+        quote!(f64::#f(#a))
+    }
 }
 
 #[cfg(test)]

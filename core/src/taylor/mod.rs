@@ -7,9 +7,11 @@
 //! - [`Tape`] decomposes a symbolic right-hand side into elementary operations on series,
 //!   each with its automatic-differentiation recurrence; [`TaylorTape`] interprets it at run
 //!   time and [`Tape::to_tokens`] emits it as Rust for the derive macros (`taylor = K`).
+//! - [`batch`] steps `L` trajectories at once, their recurrences on SIMD lanes.
 //! - [`Taylor`] steps with them: order and step from the tolerance, dense output from the
 //!   step polynomial, compensated sums; [`solve`] and [`solve_dense`] drive it in one call.
 
+pub mod batch;
 pub mod compact;
 mod emit;
 mod integrator;

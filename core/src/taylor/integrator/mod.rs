@@ -265,10 +265,54 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         if !self.low.is_empty() {
             return self.step_extended(t_limit);
         }
-        let Some(mut rule) = self.step_rule(t_limit)? else {
+        let Some(rule) = self.step_rule(t_limit)? else {
             return Ok(());
         };
         self.jet(rule.order)?;
+        self.finish_step(rule, t_limit)
+    }
+
+    /// The order the next step towards `t_limit` needs of its jet (`None`: `t_limit` is the
+    /// current time): what a batch of lanes computes for this lane before
+    /// [`Taylor::lane_step`].
+    ///
+    /// # Errors
+    /// As [`Taylor::step`] before its jet; [`OdeError::InvalidParameter`] in the extended
+    /// mode, which the lanes do not have.
+    pub(crate) fn lane_order(&self, t_limit: f64) -> Result<Option<usize>, OdeError> {
+        if let Some(low) = self.cfg.extended {
+            return Err(OdeError::InvalidParameter {
+                name: "extended (the lanes step in f64 only)",
+                value: low as f64,
+            });
+        }
+        Ok(self.step_rule(t_limit)?.map(|r| r.order))
+    }
+
+    /// [`Taylor::step`] with the jet written by `fill` (the rows of orders 0 … p, p the
+    /// order [`Taylor::lane_order`] gave) instead of computed here: the rest of the step is
+    /// the scalar step's, so with the same coefficients the lane lands where a scalar run
+    /// does, bit for bit.
+    ///
+    /// # Errors
+    /// As [`Taylor::step`].
+    pub(crate) fn lane_step(
+        &mut self,
+        t_limit: f64,
+        fill: impl FnOnce(&mut [[f64; N]]),
+    ) -> Result<(), OdeError> {
+        let Some(rule) = self.step_rule(t_limit)? else {
+            return Ok(());
+        };
+        fill(rows_to_order(&mut self.coeffs, rule.order)?);
+        self.jets += 1;
+        self.stats.rhs_evals += rule.order as u64;
+        self.finish_step(rule, t_limit)
+    }
+
+    /// The step after its jet of order `rule.order`: the jet again at the top order if it
+    /// vanishes, the step size, the sum and the commit.
+    fn finish_step(&mut self, mut rule: StepRule<N>, t_limit: f64) -> Result<(), OdeError> {
         if self.cfg.fixed_step.is_none()
             && rule.order < self.top_order
             && radius::vanishes(&self.coeffs[..=rule.order])

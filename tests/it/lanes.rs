@@ -1,0 +1,259 @@
+//! Batch lanes (`precess::taylor::batch`): every lane bit for bit the scalar run of the same
+//! trajectory, each lane against the torque-free body's closed form, lanes with their own
+//! end times, parameters, step sizes and events, and lanes of mixed failure.
+
+use precess::exact::FreeBodyExact;
+use precess::ode::{Event, OdeError, Run, StopReason};
+use precess::taylor::batch::{BatchTaylor, Lanes, TaylorLanes};
+use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use proptest::prelude::*;
+
+precess::taylor_system! {
+    /// The torque-free body ṁ = m × I⁻¹m with its three constants as parameters:
+    /// a = 1/I3 − 1/I2, b = 1/I1 − 1/I3, c = 1/I2 − 1/I1.
+    struct Free { a: f64, b: f64, c: f64 }
+    state [m1, m2, m3];
+    taylor = 30;
+    d/dt m1 = a * m2 * m3;
+    d/dt m2 = b * m3 * m1;
+    d/dt m3 = c * m1 * m2;
+}
+
+precess::taylor_system! {
+    /// A forced pendulum with a quotient, a root and the time: every kind of recurrence
+    /// the lanes emit (sine–cosine, quotient, square root, real power, time series).
+    struct Mixed { k: f64, w: f64 }
+    state [x, v];
+    taylor = 30;
+    d/dt x = v;
+    d/dt v = -k * sin(x) + cos(w * t) / sqrt(1.0 + v * v) - 0.1 * (1.0 + x * x).powf(0.75) * v;
+}
+
+fn free(inertia: [f64; 3]) -> Free {
+    let [i1, i2, i3] = inertia;
+    Free {
+        a: 1.0 / i3 - 1.0 / i2,
+        b: 1.0 / i1 - 1.0 / i3,
+        c: 1.0 / i2 - 1.0 / i1,
+    }
+}
+
+const INERTIA: [f64; 3] = [3.0, 5.0, 9.0];
+
+/// The scalar run of one lane: its end state, and its number of steps.
+fn scalar<S: TaylorSystem<N>, const N: usize>(
+    sys: S,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    cfg: TaylorConfig,
+) -> Result<([f64; N], u64), OdeError> {
+    let mut ode = Taylor::new(sys, t0, y0, cfg)?;
+    ode.advance_to(t_end)?;
+    Ok((*ode.y(), ode.stats().steps))
+}
+
+fn bits<const N: usize>(y: &[f64; N]) -> [u64; N] {
+    y.map(f64::to_bits)
+}
+
+#[test]
+fn the_generated_lane_jets_are_the_scalar_jets_bit_for_bit() {
+    // Four lanes of the mixed system at unrelated points: each lane's 31 coefficients
+    // against a scalar call on that lane.
+    let systems = [
+        Mixed { k: 1.0, w: 0.3 },
+        Mixed { k: 2.5, w: 1.7 },
+        Mixed { k: 0.1, w: -0.9 },
+        Mixed { k: 9.0, w: 4.0 },
+    ];
+    let t = [0.0, 1.25, -3.5, 17.0];
+    let y = [[0.3, -1.0], [2.0, 0.5], [-1.1, 3.0], [0.0, 0.0]];
+    let mut lanes = vec![[Lanes::<4>::splat(0.0); 2]; 31];
+    let yl = [Lanes(y.map(|y| y[0])), Lanes(y.map(|y| y[1]))];
+    let refs = [&systems[0], &systems[1], &systems[2], &systems[3]];
+    Mixed::lane_coefficients_into(refs, &mut Default::default(), Lanes(t), &yl, 30, &mut lanes);
+    for l in 0..4 {
+        let mut c = vec![[0.0; 2]; 31];
+        systems[l].coefficients(t[l], &y[l], 30, &mut c);
+        for k in 0..=30 {
+            let lane = [lanes[k][0].0[l], lanes[k][1].0[l]];
+            assert_eq!(bits(&lane), bits(&c[k]), "lane {l}, order {k}");
+        }
+        assert!(c[30].iter().all(|v| v.is_finite() && *v != 0.0));
+    }
+}
+
+#[test]
+fn lanes_end_where_scalar_runs_end_bit_for_bit_each_at_its_own_time() {
+    // Four bodies with their own moments, starts and end times: different step sizes and
+    // numbers of steps in every lane.
+    let inertias = [
+        [3.0, 5.0, 9.0],
+        [1.0, 2.0, 3.0],
+        [2.0, 2.5, 7.0],
+        [4.0, 6.0, 6.5],
+    ];
+    let y0 = [
+        [0.0, 2.0, 0.01],
+        [1.0, 0.2, -0.5],
+        [0.3, -1.5, 2.0],
+        [-2.0, 0.1, 0.7],
+    ];
+    let t_end = [200.0, 37.5, 123.25, 5.0];
+    let cfg = TaylorConfig::with_tol(1e-12, 1e-12);
+    let mut batch = BatchTaylor::new(inertias.map(free), [0.0; 4], y0, cfg);
+    let ends = batch.advance_to(t_end);
+    let mut steps = Vec::new();
+    for l in 0..4 {
+        let end = ends[l].unwrap();
+        let (y, n) = scalar(free(inertias[l]), 0.0, y0[l], t_end[l], cfg).unwrap();
+        assert_eq!(end.t, t_end[l]);
+        assert!(!end.event);
+        assert_eq!(bits(&end.y), bits(&y), "lane {l}");
+        let lane = batch.lane(l).unwrap().unwrap();
+        assert_eq!(lane.stats().steps, n, "lane {l}");
+        steps.push(n);
+    }
+    // The lanes really diverged: their step counts differ.
+    steps.sort_unstable();
+    steps.dedup();
+    assert_eq!(steps.len(), 4, "{steps:?}");
+}
+
+#[test]
+fn each_lane_meets_the_closed_form_of_the_torque_free_body() {
+    // Eight lanes of (3, 5, 9) near the unstable middle axis, to T = 200 at tol 1e-13:
+    // each lane against the Jacobi-function solution.
+    let y0: [[f64; 3]; 8] = core::array::from_fn(|l| [0.0, 2.0, 0.01 * (1.0 + l as f64 / 8.0)]);
+    let cfg = TaylorConfig::with_tol(1e-13, 1e-13);
+    let mut batch = BatchTaylor::new([(); 8].map(|()| free(INERTIA)), [0.0; 8], y0, cfg);
+    let ends = batch.advance_to([200.0; 8]);
+    let mut worst = 0.0f64;
+    for l in 0..8 {
+        let exact = FreeBodyExact::new(INERTIA, y0[l])
+            .unwrap()
+            .m_at(200.0)
+            .unwrap();
+        let y = ends[l].unwrap().y;
+        for i in 0..3 {
+            worst = worst.max((y[i] - exact[i]).abs());
+        }
+    }
+    // |m| = 2 and the run passes the separatrix's neighbourhood a few times, which
+    // amplifies a step's error some 10²-fold: 8.3e-12 measured.
+    assert!(worst < 1e-10, "largest error {worst:e}");
+}
+
+#[test]
+fn a_lane_with_nan_parameters_or_state_fails_alone() {
+    let y0 = [
+        [0.0, 2.0, 0.01],
+        [f64::NAN, 1.0, 0.0],
+        [1.0, 0.2, -0.5],
+        [0.3, -1.5, 2.0],
+    ];
+    let mut systems = [free(INERTIA), free(INERTIA), free(INERTIA), free(INERTIA)];
+    systems[2].b = f64::NAN;
+    let cfg = TaylorConfig::with_tol(1e-12, 1e-12);
+    let mut batch = BatchTaylor::new(systems, [0.0; 4], y0, cfg);
+    let ends = batch.advance_to([50.0; 4]);
+    assert!(
+        matches!(ends[1], Err(OdeError::NonFiniteInitialState { .. })),
+        "{:?}",
+        ends[1]
+    );
+    assert!(
+        matches!(ends[2], Err(OdeError::NonFiniteState { t }) if t == 0.0),
+        "{:?}",
+        ends[2]
+    );
+    for l in [0, 3] {
+        let (y, _) = scalar(free(INERTIA), 0.0, y0[l], 50.0, cfg).unwrap();
+        assert_eq!(bits(&ends[l].unwrap().y), bits(&y), "lane {l}");
+    }
+    // The failed lanes stay out; the others go on.
+    let again = batch.advance_to([60.0; 4]);
+    assert!(again[1].is_err() && again[2].is_err());
+    assert_eq!(again[0].unwrap().t, 60.0);
+    assert!(batch.lane(2).unwrap().is_err());
+}
+
+#[test]
+fn a_lane_whose_stop_is_behind_it_fails_alone() {
+    let cfg = TaylorConfig::with_tol(1e-10, 1e-10);
+    let y0 = [[0.0, 2.0, 0.01], [1.0, 0.2, -0.5]];
+    let mut batch = BatchTaylor::new([free(INERTIA), free(INERTIA)], [0.0, 5.0], y0, cfg);
+    let ends = batch.advance_to([3.0, 2.0]);
+    assert!(
+        matches!(ends[1], Err(OdeError::StopBeforeCurrent { .. })),
+        "{:?}",
+        ends[1]
+    );
+    assert_eq!(ends[0].unwrap().t, 3.0);
+}
+
+#[test]
+fn each_lane_stops_at_its_own_event_as_a_scalar_run_does() {
+    // The event m1 = threshold(l), a different one in every lane, from four starts; the
+    // scalar reference locates it with `Run`'s terminal event on the same steps.
+    let y0 = [
+        [0.0, 2.0, 0.01],
+        [1.0, 0.2, -0.5],
+        [0.3, -1.5, 2.0],
+        [-2.0, 0.1, 0.7],
+    ];
+    let threshold = [0.5, -0.1, 0.2, 10.0];
+    let cfg = TaylorConfig::with_tol(1e-13, 1e-13);
+    let mut batch = BatchTaylor::new([(); 4].map(|()| free(INERTIA)), [0.0; 4], y0, cfg);
+    let ends = batch.advance_until([100.0; 4], |l, _, y| y[0] - threshold[l]);
+    for l in 0..4 {
+        let end = ends[l].unwrap();
+        let mut ode = Taylor::new(free(INERTIA), 0.0, y0[l], cfg).unwrap();
+        let g = move |_t: f64, y: &[f64; 3]| y[0] - threshold[l];
+        let out = Run::new(&mut ode, 100.0)
+            .sample_none()
+            .event(Event::new("m1").terminal(), g)
+            .integrate()
+            .unwrap();
+        if out.stop == StopReason::End {
+            // Lane 3: |m1| never reaches 10 (|m| < 2.2).
+            assert!(!end.event && end.t == 100.0, "lane {l}: {end:?}");
+            assert_eq!(bits(&end.y), bits(&out.state));
+            continue;
+        }
+        assert!(end.event, "lane {l}");
+        assert!(
+            (end.t - out.t).abs() < 1e-12,
+            "lane {l}: {} against {}",
+            end.t,
+            out.t
+        );
+        assert!(
+            (end.y[0] - threshold[l]).abs() < 1e-12,
+            "lane {l}: {:?}",
+            end.y
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Any four starts, moments and end times: every lane is the scalar run, bit for bit.
+    #[test]
+    fn any_lanes_are_the_scalar_runs(
+        m in prop::array::uniform4(prop::array::uniform3(-3.0f64..3.0)),
+        inertia in prop::array::uniform4(prop::array::uniform3(0.5f64..10.0)),
+        t_end in prop::array::uniform4(0.0f64..20.0),
+        tol in prop::sample::select(vec![1e-6, 1e-10, 1e-14]),
+    ) {
+        let cfg = TaylorConfig::with_tol(tol, tol);
+        let mut batch = BatchTaylor::new(inertia.map(free), [0.0; 4], m, cfg);
+        let ends = batch.advance_to(t_end);
+        for l in 0..4 {
+            let want = scalar(free(inertia[l]), 0.0, m[l], t_end[l], cfg).map(|(y, _)| bits(&y));
+            prop_assert_eq!(ends[l].map(|e| bits(&e.y)), want, "lane {}", l);
+        }
+    }
+}
