@@ -156,3 +156,8 @@ mod contact {
     mod tippe_top;
 }
 mod variational;
+/// What every scene offers alike: parameters checked by every integrator before its first
+/// step.
+mod scenes {
+    mod checks;
+}

@@ -169,7 +169,7 @@ pub fn expand(
     // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
     let taylor = settings.taylor.map(|order| {
         let (state, rhs) = lagrangian;
-        crate::lang::taylor::expand(
+        crate::lang::taylor::expand_checked(
             cx,
             ident,
             arena,
@@ -178,6 +178,7 @@ pub fn expand(
             &rhs,
             TokenStream::new(),
             order,
+            quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
         )
     });
     Some(quote! {
