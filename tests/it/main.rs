@@ -157,7 +157,8 @@ mod contact {
 }
 mod variational;
 /// What every scene offers alike: parameters checked by every integrator before its first
-/// step.
+/// step, the closed-form theory from a derived top.
 mod scenes {
     mod checks;
+    mod theory;
 }

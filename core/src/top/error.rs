@@ -8,6 +8,8 @@ use crate::codegen::BindingError;
 use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
 use crate::rigid::ChartError;
 
+use super::theory::TheoryError;
+
 /// What a top refuses: a state its angle or Eulerian form cannot take, settings out of range,
 /// a body that breaks a rule, the chart switch's and the interpreted model's failures.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -86,6 +88,10 @@ pub enum TopError {
     /// The stepper of a driver failed, or a stop time is not finite or lies in the past.
     #[error(transparent)]
     Ode(#[from] OdeError),
+    /// The closed forms do not apply to this top ([`super::TopDynamics::theory`]: not
+    /// symmetric about its z axis, a centre off it, no gravity, other torques).
+    #[error(transparent)]
+    Theory(#[from] TheoryError),
 }
 
 impl TopError {
