@@ -157,8 +157,9 @@ mod contact {
 }
 mod variational;
 /// What every scene offers alike: parameters checked by every integrator before its first
-/// step, the closed-form theory from a derived top.
+/// step, the closed-form theory from a derived top, the quantities of a run.
 mod scenes {
     mod checks;
+    mod quantities;
     mod theory;
 }
