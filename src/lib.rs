@@ -119,7 +119,7 @@ pub mod __private {
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::nalgebra::{SMatrix, SVector};
-    pub use precess_core::ode::System;
+    pub use precess_core::ode::{OdeError, System};
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::taylor::batch::Lanes;
@@ -127,7 +127,7 @@ pub mod __private {
     pub use precess_core::taylor::batch::kernels as lane_kernels;
     pub use precess_core::taylor::compact::low_orders;
     pub use precess_core::taylor::kernels;
-    pub use precess_core::top::{TopDynamics, TopParameters};
+    pub use precess_core::top::{TopDynamics, TopError, TopParameters};
     pub use std::borrow::Cow;
     pub use std::vec;
 }

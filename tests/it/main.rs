@@ -171,3 +171,11 @@ mod values {
     mod names;
     mod units;
 }
+
+/// What every scene offers alike: parameters checked by every integrator before its first
+/// step, the closed-form theory from a derived top, the quantities of a run.
+mod scenes {
+    mod checks;
+    mod quantities;
+    mod theory;
+}

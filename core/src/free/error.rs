@@ -6,7 +6,7 @@ use thiserror::Error;
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::exact::ExactError;
-use crate::ode::OdeError;
+use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
 
 /// Why a free body could not be derived, set up, integrated or answered.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -83,4 +83,40 @@ pub enum FreeError {
     /// The exact attitude could not be set up or evaluated.
     #[error(transparent)]
     Exact(#[from] ExactError),
+}
+
+impl FreeError {
+    /// This refusal as the integrators report it, from
+    /// [`System::check_parameters`](crate::ode::System::check_parameters):
+    /// [`OdeError::InvalidSystemParameter`] naming the parameter or the body's quantity with
+    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is).
+    ///
+    /// ```
+    /// use precess::free::FreeError;
+    /// use precess::ode::OdeError;
+    /// let e = FreeError::NegativeCoefficient { name: "drag", value: -0.1 }.into_ode_error();
+    /// assert!(matches!(
+    ///     e,
+    ///     OdeError::InvalidSystemParameter { ref quantity, value, .. } if quantity == "drag" && value == -0.1
+    /// ));
+    /// ```
+    pub fn into_ode_error(self) -> OdeError {
+        let named = match &self {
+            FreeError::Ode(e) => return e.clone(),
+            FreeError::Body(b) => body_quantity(b),
+            FreeError::Binding(b) => binding_quantity(b),
+            FreeError::NonFiniteParameter { name, value } => (name.clone(), *value),
+            FreeError::NegativeCoefficient { name, value } => ((*name).to_owned(), *value),
+            FreeError::InvalidInertia { mass, moments } => {
+                if mass.is_finite() && *mass > 0.0 {
+                    let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
+                    ("principal moment".to_owned(), smallest)
+                } else {
+                    ("mass".to_owned(), *mass)
+                }
+            }
+            _ => ("parameters".to_owned(), f64::NAN),
+        };
+        refused(named, &self)
+    }
 }

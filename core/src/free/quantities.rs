@@ -8,9 +8,11 @@ use crate::ode::Quantities;
 
 /// The standard quantities of a free body over its state (the array of [`super::layout`]):
 /// `energy` (½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x), `power` (dE/dt of every force but gravity),
-/// `p` (|M v|) and `L` (|x × M v + R I ω|, about the space origin).
+/// `p` (|M v|) and `L` (|x × M v + R I ω|, about the space origin), then that angular
+/// momentum's space components `L_x`, `L_y`, `L_z`.
 ///
-/// Add them to a run with [`Run::quantities`](crate::ode::Run::quantities).
+/// Add them to a run with [`Run::quantities`](crate::ode::Run::quantities); name the state
+/// columns of its CSV with [`FreeQuantities::state_names`], as a top's and a mechanism's.
 ///
 /// # Examples
 ///
@@ -41,7 +43,7 @@ use crate::ode::Quantities;
 ///     .sample_every(0.1)
 ///     .quantities(FreeQuantities::new(&Brick))
 ///     .integrate()?;
-/// assert_eq!(out.trajectory.quantity_names(), ["energy", "power", "p", "L"]);
+/// assert_eq!(out.trajectory.quantity_names(), ["energy", "power", "p", "L", "L_x", "L_y", "L_z"]);
 /// for e in out.trajectory.column("energy").unwrap() {
 ///     assert_relative_eq!(e, e0, max_relative = 1e-10);
 /// }
@@ -61,19 +63,51 @@ impl<'a, F: FreeDynamics> FreeQuantities<'a, F> {
     pub fn new(body: &'a F) -> Self {
         Self { body }
     }
+
+    /// The names of the state of [`super::layout`], for
+    /// [`Trajectory::set_state_names`](crate::ode::Trajectory::set_state_names): the centre
+    /// `x, y, z`, its velocity `vx, vy, vz`, the quaternion `qw, qx, qy, qz` (principal to
+    /// space) and ω in principal axes `omega_1, omega_2, omega_3`.
+    ///
+    /// ```
+    /// use precess::free::{FreeQuantities, layout};
+    /// use precess::prelude::*;
+    ///
+    /// #[derive(RigidBody)]
+    /// #[rigid(sphere(mass = 1.0, radius = 0.1))]
+    /// #[free(gravity = 9.81)]
+    /// struct Ball;
+    ///
+    /// let names = FreeQuantities::<Ball>::state_names();
+    /// assert_eq!(names[layout::QUATERNION], "qw");
+    /// assert_eq!(names[layout::OMEGA + 2], "omega_3");
+    /// ```
+    pub fn state_names() -> [String; STATE_LEN] {
+        [
+            "x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "omega_1", "omega_2",
+            "omega_3",
+        ]
+        .map(String::from)
+    }
 }
 
 impl<F: FreeDynamics> Quantities<[f64; STATE_LEN]> for FreeQuantities<'_, F> {
     fn names(&self) -> Vec<String> {
-        ["energy", "power", "p", "L"].map(String::from).to_vec()
+        ["energy", "power", "p", "L", "L_x", "L_y", "L_z"]
+            .map(String::from)
+            .to_vec()
     }
 
     fn evaluate(&mut self, t: f64, y: &[f64; STATE_LEN], out: &mut [f64]) {
+        let l = self.body.angular_momentum_origin(y);
         let values = [
             self.body.energy(y),
             self.body.power(t, y),
             self.body.linear_momentum(y).norm(),
-            self.body.angular_momentum_origin(y).norm(),
+            l.norm(),
+            l.x,
+            l.y,
+            l.z,
         ];
         for (o, v) in out.iter_mut().zip(values) {
             *o = v;

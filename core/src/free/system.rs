@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 
 use super::dynamics::FreeDynamics;
 use super::state::{FreeState, STATE_LEN};
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 use crate::rigid::{RigidBodyModel, RigidState};
 
 /// A derived free body as an ODE system on the state array of [`super::layout`], for the
@@ -45,6 +45,13 @@ impl<T: FreeDynamics> System<STATE_LEN> for FreeSystem<'_, T> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
         self.0.free_rhs(t, y, dydt);
+    }
+
+    /// The body's [`FreeDynamics::check_parameters`], before any step.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.0
+            .check_parameters()
+            .map_err(super::error::FreeError::into_ode_error)
     }
 }
 

@@ -7,7 +7,7 @@ use thiserror::Error;
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::lagrange::LagrangeError;
-use crate::ode::OdeError;
+use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
 use crate::rigid::ChartError;
 use crate::sym::SymError;
 
@@ -316,6 +316,56 @@ pub enum MechanismError {
     /// A constructor of the symbolic engine failed.
     #[error(transparent)]
     Sym(#[from] SymError),
+}
+
+impl MechanismError {
+    /// This refusal as the integrators report it, from
+    /// [`System::check_parameters`](crate::ode::System::check_parameters) (the derive's
+    /// `impl System` calls it): [`OdeError::InvalidSystemParameter`] naming the owner and
+    /// quantity with its value and this error's message ([`MechanismError::Ode`] is passed
+    /// on as it is).
+    ///
+    /// ```
+    /// use precess::mechanism::MechanismError;
+    /// use precess::ode::OdeError;
+    /// let e = MechanismError::NegativeParameter {
+    ///     owner: "joint `hinge`".into(),
+    ///     quantity: "damper of theta".into(),
+    ///     value: -0.3,
+    /// };
+    /// assert!(matches!(
+    ///     e.into_ode_error(),
+    ///     OdeError::InvalidSystemParameter { ref quantity, value, .. }
+    ///         if quantity == "joint `hinge`: damper of theta" && value == -0.3
+    /// ));
+    /// ```
+    pub fn into_ode_error(self) -> OdeError {
+        let named = match &self {
+            MechanismError::Ode(e) => return e.clone(),
+            MechanismError::NonFiniteParameter {
+                owner,
+                quantity,
+                value,
+            }
+            | MechanismError::NegativeParameter {
+                owner,
+                quantity,
+                value,
+            }
+            | MechanismError::NonPositiveParameter {
+                owner,
+                quantity,
+                value,
+            } => (format!("{owner}: {quantity}"), *value),
+            MechanismError::Part { body, error } => {
+                let (quantity, value) = body_quantity(error);
+                (format!("body `{body}`: {quantity}"), value)
+            }
+            MechanismError::Binding(b) => binding_quantity(b),
+            _ => ("parameters".to_owned(), f64::NAN),
+        };
+        refused(named, &self)
+    }
 }
 
 /// Why an axis has no direction.

@@ -5,7 +5,7 @@ use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::MechanismScene;
 use crate::codegen::{Bindings, Program, with_workspace};
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 use crate::sym::{Arena, ExprId, SymbolId};
 
 use super::parameter_checks::ParameterChecks;
@@ -386,6 +386,14 @@ impl<const N: usize> System<N> for MechanismSystem<'_, N> {
                 *a = v;
             }
         });
+    }
+
+    /// The model's checks of its values ([`MechanismModel::set`] already refuses a bad one,
+    /// so this holds for a model built through the API; it is the hook all the same).
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.model
+            .check_parameters()
+            .map_err(MechanismError::into_ode_error)
     }
 }
 

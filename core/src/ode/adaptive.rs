@@ -49,11 +49,13 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     /// Starts at `(t0, y0)`; validates everything before any work.
     ///
     /// # Errors
-    /// Invalid configuration, a non-finite `t0` or a non-finite `y0`.
+    /// Invalid configuration, a non-finite `t0` or a non-finite `y0`, and the system's own
+    /// refusal of its parameters ([`System::check_parameters`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: AdaptiveConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
+        sys.check_parameters()?;
         let mut k = [[0.0; N]; 21];
         sys.rhs(t0, &y0, &mut k[0]);
         let mut me = Self {
@@ -151,6 +153,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         self.t_prev
     }
 
+    /// [`System::check_parameters`] of the driver's system, for a restart.
+    pub(super) fn check_system(&self) -> Result<(), OdeError> {
+        self.sys.check_parameters()
+    }
+
     /// Puts the driver at `(t, y)` for [`Stepper::restart`](super::Stepper::restart) (the
     /// caller checks the values): the next step re-evaluates f there, the dense output of the
     /// step before is dropped, the step size and the controller's memory are kept.
@@ -202,11 +209,13 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
     ///
     /// # Errors
     /// [`OdeError::NonFiniteTime`] or [`OdeError::NonFiniteInitialState`] for non-finite
-    /// input, [`OdeError::NonFiniteState`] if f is not finite there; the integrator is left
-    /// as it was on error.
+    /// input, [`OdeError::NonFiniteState`] if f is not finite there, the system's
+    /// [`System::check_parameters`] (a system changed by [`Adaptive::modify_system`] is checked
+    /// again here); the integrator is left as it was on error.
     pub fn reinitialise(&mut self, t0: f64, y0: [f64; N]) -> Result<(), OdeError> {
         check_span(t0, t0)?;
         check_finite(&y0)?;
+        self.sys.check_parameters()?;
         let mut f0 = [0.0; N];
         self.sys.rhs(t0, &y0, &mut f0);
         self.stats.rhs_evals += 1;

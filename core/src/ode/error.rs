@@ -8,7 +8,7 @@ use crate::exact::ExactError;
 ///
 /// Every variant carries the numbers that explain it, so a caller can report
 /// `t` and `h` without re-running anything.
-#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[derive(Debug, Clone, PartialEq, Error)]
 pub enum OdeError {
     /// The controller asked for a step too small to change `t` in floating point.
     #[error("step size underflow at t = {t}: h = {h:e} is below the resolution of t")]
@@ -229,6 +229,42 @@ pub enum OdeError {
         /// The highest order asked in double-double (`TaylorConfig::extended`).
         low: usize,
     },
+    /// A value of the system's parameters breaks a rule of its scene (a negative mass, a
+    /// negative gravity, a NaN stiffness, …), found by
+    /// [`System::check_parameters`](super::System::check_parameters) when the integrator was
+    /// built or restarted, before any step.
+    #[error("the system's parameters are refused before the first step: {message}")]
+    InvalidSystemParameter {
+        /// The quantity, as the scene names it (`mass`, `gravity`, `stiffness of theta`, …).
+        quantity: String,
+        /// Its value.
+        value: f64,
+        /// The scene's own explanation (the display of its error), naming the part or joint.
+        message: String,
+    },
+}
+
+impl OdeError {
+    /// The error of a system whose `quantity` has the unphysical `value`, explained by the
+    /// scene's own error: what a [`System::check_parameters`](super::System::check_parameters)
+    /// returns.
+    ///
+    /// ```
+    /// use precess_core::ode::OdeError;
+    /// let e = OdeError::system_parameter("gravity", -9.81, "gravity must be ≥ 0");
+    /// assert!(matches!(e, OdeError::InvalidSystemParameter { value, .. } if value == -9.81));
+    /// ```
+    pub fn system_parameter(
+        quantity: impl Into<String>,
+        value: f64,
+        message: impl core::fmt::Display,
+    ) -> OdeError {
+        OdeError::InvalidSystemParameter {
+            quantity: quantity.into(),
+            value,
+            message: message.to_string(),
+        }
+    }
 }
 
 /// Checks that every component of `y` is finite.

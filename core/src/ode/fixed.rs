@@ -78,6 +78,16 @@ pub trait FixedStepMethod {
         Ok(())
     }
 
+    /// Checks the method's parameters once, when a [`FixedStepper`] is built or restarted
+    /// (default: nothing to check), as [`super::System::check_parameters`] does for the
+    /// systems.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidSystemParameter`] naming the quantity and its value.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        Ok(())
+    }
+
     /// Advances `y` from `t` by `h > 0`; on error `y` is left as it was.
     ///
     /// # Errors
@@ -91,6 +101,9 @@ impl<M: FixedStepMethod + ?Sized> FixedStepMethod for &M {
     type State = M::State;
     fn check_state(&self, y: &Self::State) -> Result<(), OdeError> {
         (**self).check_state(y)
+    }
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        (**self).check_parameters()
     }
     fn advance(&self, t: f64, y: &mut Self::State, h: f64) -> Result<(), OdeError> {
         (**self).advance(t, y, h)
@@ -134,13 +147,14 @@ impl<M: FixedStepMethod> FixedStepper<M> {
     ///
     /// # Errors
     /// [`OdeError::InvalidStep`], [`OdeError::NonFiniteTime`], or the method's
-    /// [`FixedStepMethod::check_state`].
+    /// [`FixedStepMethod::check_state`] and [`FixedStepMethod::check_parameters`].
     pub fn new(method: M, t0: f64, y0: M::State, cfg: FixedStepConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         if !t0.is_finite() {
             return Err(OdeError::NonFiniteTime { t: t0 });
         }
         method.check_state(&y0)?;
+        method.check_parameters()?;
         Ok(Self {
             method,
             cfg,
@@ -219,6 +233,7 @@ impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
             return Err(OdeError::NonFiniteTime { t });
         }
         self.method.check_state(&state)?;
+        self.method.check_parameters()?;
         self.t = t;
         self.t_prev = t;
         self.y_prev = state.clone();

@@ -24,6 +24,7 @@ mod error;
 mod events;
 mod fixed;
 mod pairs;
+mod parameters;
 mod rk4;
 mod run;
 mod sampling;
@@ -46,6 +47,7 @@ pub use fixed::{FixedStepMethod, FixedStepper};
 pub use pairs::{
     ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,
 };
+pub(crate) use parameters::{binding_quantity, body_quantity, refused};
 pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;

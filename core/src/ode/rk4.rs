@@ -45,11 +45,13 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
     ///
     /// # Errors
     /// [`OdeError::InvalidStep`] for `h ≤ 0` or non-finite, [`OdeError::NonFiniteTime`] or
-    /// [`OdeError::NonFiniteInitialState`] for a non-finite `t0` or `y0`.
+    /// [`OdeError::NonFiniteInitialState`] for a non-finite `t0` or `y0`, the system's own
+    /// refusal of its parameters ([`System::check_parameters`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: FixedStepConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         check_span(t0, t0)?;
         check_finite(&y0)?;
+        sys.check_parameters()?;
         Ok(Self {
             sys,
             cfg,
@@ -264,6 +266,7 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
     fn restart(&mut self, t: f64, state: [f64; N]) -> Result<(), OdeError> {
         check_span(t, t)?;
         check_finite(&state)?;
+        self.sys.check_parameters()?;
         (self.t, self.y, self.y_lo) = (t, state, [0.0; N]);
         self.forget_last_step();
         Ok(())

@@ -109,6 +109,7 @@ macro_rules! inherent_stepper {
                     return Err($crate::ode::OdeError::NonFiniteTime { t });
                 }
                 $crate::ode::check_finite(&state)?;
+                self.check_system()?;
                 self.reset_state(t, state);
                 Ok(())
             }

@@ -1,5 +1,7 @@
 //! The system trait: a right-hand side written in place.
 
+use super::error::OdeError;
+
 /// An ordinary differential equation `y' = f(t, y)` on `ℝᴺ`.
 ///
 /// The state is a fixed-size array so the steppers never allocate.
@@ -19,6 +21,20 @@
 pub trait System<const N: usize> {
     /// Writes `f(t, y)` into `dydt`.
     fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]);
+
+    /// Checks the system's parameters (masses, gravity, stiffnesses, … read from a struct's
+    /// fields or bound at run time) under the rules of its scene. Every integrator calls it
+    /// once when it is built or restarted, so no run starts on unphysical values; the
+    /// right-hand side itself stays unchecked, for the steppers' inner loops.
+    ///
+    /// The default has nothing to check. The derived scenes and the interpreted models
+    /// implement it with the checks their checked methods already make.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidSystemParameter`] naming the quantity and carrying its value.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        Ok(())
+    }
 }
 
 /// Adapts a closure `|t, y, dydt|` into a [`System`].
@@ -45,6 +61,10 @@ where
 impl<S: System<N> + ?Sized, const N: usize> System<N> for &S {
     fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
         (**self).rhs(t, y, dydt)
+    }
+
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        (**self).check_parameters()
     }
 }
 

@@ -155,10 +155,26 @@ pub trait TaylorSystem<const N: usize> {
         let _ = (ws, t, y, order, coeffs, low);
         false
     }
+
+    /// Checks the system's parameters under the rules of its scene, once, when the
+    /// [`Taylor`](crate::taylor::Taylor) integrator is built or restarted: the same hook as
+    /// [`System::check_parameters`](crate::ode::System::check_parameters). The default has
+    /// nothing to check; the derived scenes implement it with their own checks.
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidSystemParameter`](crate::ode::OdeError::InvalidSystemParameter)
+    /// naming the quantity and carrying its value.
+    fn check_parameters(&self) -> Result<(), crate::ode::OdeError> {
+        Ok(())
+    }
 }
 
 impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
     type Workspace = S::Workspace;
+
+    fn check_parameters(&self) -> Result<(), crate::ode::OdeError> {
+        (**self).check_parameters()
+    }
 
     fn max_order(&self) -> usize {
         (**self).max_order()

@@ -13,7 +13,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
 use super::error::TopError;
-use crate::ode::{Dop853, Stats, System, check_stop};
+use crate::ode::{Dop853, OdeError, Stats, System, check_stop};
 use crate::rigid::{
     AngleSequence, ChartConfig, ChartError, angles_from_rotation, check_rotation, rates_from_omega,
 };
@@ -75,6 +75,10 @@ impl<C: AngleChart> Charts<C> {
 impl<C: AngleChart> System<6> for Charts<C> {
     fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
         self.active().rhs(t, y, dydt);
+    }
+
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.active().check_all().map_err(TopError::into_ode_error)
     }
 }
 

@@ -5,6 +5,7 @@ use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
 use super::parameters::TopParameters;
+use super::theory::{HeavyTopTheory, derived_theory};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
@@ -58,6 +59,11 @@ use crate::rigid::{check_chart, rates_from_omega};
 pub trait TopDynamics: RigidBody {
     /// The declared angle sequence.
     const SEQUENCE: AngleSequence;
+
+    /// The first declared torque other than gravity, by its `#[top(...)]` name (`damping`,
+    /// `body_torque`, `space_torque`, `torque`), or `None` when gravity is all that acts
+    /// (the heavy-top closed forms of [`TopDynamics::theory`] then apply).
+    const BEYOND_GRAVITY: Option<&'static str> = None;
 
     /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
     fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
@@ -139,6 +145,54 @@ pub trait TopDynamics: RigidBody {
     {
         self.check_all()?;
         Ok(self)
+    }
+
+    /// The symmetric heavy top's closed forms for this top ([`HeavyTopTheory`]: steady
+    /// precession, the sleeping top's threshold, the nutation bounds and period of a
+    /// motion, its precession), with I1 = I2, I3 about the pivot and M g l = M g l_z read
+    /// from the top's own mass, centre of mass and gravity (l_z the height of the centre
+    /// above the pivot along the description z axis; negative below it).
+    ///
+    /// The closed forms are in the ZXZ angles of the description z axis, the angles of the
+    /// top's ZXZ chart.
+    ///
+    /// # Examples
+    ///
+    /// A cylinder of 0.3 kg, radius 1 cm and length 20 cm standing on its end: I3 = ½ m r²,
+    /// I1 = m (3 r² + h²)/12 + m (h/2)² and M g l = m g h/2, so it sleeps above
+    /// ω3 = √(4 M g l I1)/I3:
+    ///
+    /// ```
+    /// use approx::assert_relative_eq;
+    /// use precess::prelude::*;
+    ///
+    /// #[derive(RigidBody)]
+    /// #[rigid(
+    ///     cylinder(mass = 0.3, radius = 0.01, length = 0.2, axis = z, at = [0.0, 0.0, 0.1]),
+    ///     pivot = [0.0, 0.0, 0.0],
+    /// )]
+    /// #[top(gravity = 9.81)]
+    /// struct Rod;
+    ///
+    /// let (m, r, h, g) = (0.3, 0.01, 0.2, 9.81);
+    /// let (i1, i3, mgl) = (m * (3.0 * r * r + h * h) / 12.0 + m * h * h / 4.0, 0.5 * m * r * r, m * g * h / 2.0);
+    /// let theory = Rod.theory()?;
+    /// assert_relative_eq!(theory.mgl(), mgl, max_relative = 1e-15);
+    /// assert_relative_eq!(theory.sleeping_threshold(), (4.0 * mgl * i1).sqrt() / i3, max_relative = 1e-14);
+    /// # Ok::<(), precess::top::TopError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`TopDynamics::check_all`] first; then, in [`TopError::Theory`]:
+    /// [`TheoryError::OtherTorque`](super::TheoryError::OtherTorque) when damping or another torque is declared
+    /// ([`TopDynamics::BEYOND_GRAVITY`]); [`TheoryError::ProductsOfInertia`](super::TheoryError::ProductsOfInertia) when the z
+    /// axis is not principal about the pivot; [`TheoryError::NotSymmetric`](super::TheoryError::NotSymmetric) when
+    /// Ixx ≠ Iyy about the pivot; [`TheoryError::CentreOffAxis`](super::TheoryError::CentreOffAxis) when the centre of mass
+    /// lies off the z axis through the pivot (each beyond
+    /// [`super::SYMMETRY_TOLERANCE`] relative); [`TheoryError::NoGravity`](super::TheoryError::NoGravity) when gravity is
+    /// undeclared or zero, or the centre of mass is at the pivot.
+    fn theory(&self) -> Result<HeavyTopTheory, TopError> {
+        derived_theory(self)
     }
 
     /// The scene's equations as a paper prints them (L, the equations of motion, q̈, the

@@ -5,8 +5,10 @@ use thiserror::Error;
 
 use crate::body::BodyError;
 use crate::codegen::BindingError;
-use crate::ode::OdeError;
+use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
 use crate::rigid::ChartError;
+
+use super::theory::TheoryError;
 
 /// What a top refuses: a state its angle or Eulerian form cannot take, settings out of range,
 /// a body that breaks a rule, the chart switch's and the interpreted model's failures.
@@ -86,4 +88,37 @@ pub enum TopError {
     /// The stepper of a driver failed, or a stop time is not finite or lies in the past.
     #[error(transparent)]
     Ode(#[from] OdeError),
+    /// The closed forms do not apply to this top ([`super::TopDynamics::theory`]: not
+    /// symmetric about its z axis, a centre off it, no gravity, other torques).
+    #[error(transparent)]
+    Theory(#[from] TheoryError),
+}
+
+impl TopError {
+    /// This refusal as the integrators report it, from
+    /// [`System::check_parameters`](crate::ode::System::check_parameters):
+    /// [`OdeError::InvalidSystemParameter`] naming the setting or the body's quantity with
+    /// its value and this error's message ([`TopError::Ode`] is passed on as it is).
+    ///
+    /// ```
+    /// use precess::ode::OdeError;
+    /// use precess::top::TopError;
+    /// let e = TopError::NegativeGravity { value: -9.81 }.into_ode_error();
+    /// assert!(matches!(
+    ///     e,
+    ///     OdeError::InvalidSystemParameter { ref quantity, value, .. } if quantity == "gravity" && value == -9.81
+    /// ));
+    /// ```
+    pub fn into_ode_error(self) -> OdeError {
+        let named = match &self {
+            TopError::Ode(e) => return e.clone(),
+            TopError::Body(b) => body_quantity(b),
+            TopError::Binding(b) => binding_quantity(b),
+            TopError::NonFiniteParameter { parameter, value } => ((*parameter).to_owned(), *value),
+            TopError::NegativeGravity { value } => ("gravity".to_owned(), *value),
+            TopError::NegativeDamping { value } => ("damping".to_owned(), *value),
+            _ => ("parameters".to_owned(), f64::NAN),
+        };
+        refused(named, &self)
+    }
 }

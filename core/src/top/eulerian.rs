@@ -4,7 +4,7 @@ use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
 use super::dynamics::TopDynamics;
 use super::error::TopError;
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 
 /// The Eulerian form of a derived top as an ODE system with state
 /// `[q_w, q_x, q_y, q_z, ω₁, ω₂, ω₃]` (unit quaternion body to space, body ω):
@@ -120,5 +120,10 @@ impl<T: TopDynamics> System<7> for EulerianTop<'_, T> {
             .eulerian_rhs(t, &UnitQuaternion::new_normalize(q), &w);
         d[..4].copy_from_slice(&[qd.w, qd.i, qd.j, qd.k]);
         d[4..].copy_from_slice(wd.as_slice());
+    }
+
+    /// The top's [`TopDynamics::check_all`]: body and settings, before any step.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.0.check_all().map_err(TopError::into_ode_error)
     }
 }

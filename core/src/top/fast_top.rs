@@ -4,7 +4,7 @@
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
 use crate::body::RigidBody;
-use crate::ode::OdeError;
+use crate::ode::{OdeError, body_quantity, refused};
 use crate::rigid::{BodyMomentum, ExactFreeFlow, FreeFlow, Gravity, PotentialSplitting};
 
 /// A body about its pivot as a [`PotentialSplitting`]: the exact free-body flow with the
@@ -59,8 +59,11 @@ impl FastTop {
     /// gravity `g` along −z.
     ///
     /// # Errors
-    /// [`OdeError::InvalidInertia`] if the principal moments are not positive;
-    /// [`OdeError::InvalidParameter`] for a non-finite or negative `g`.
+    /// [`OdeError::InvalidSystemParameter`] for a body that breaks a rule of its description
+    /// for its field values ([`RigidBody::validate`]: a negative mass, say, which would turn
+    /// the weight upward while the moments stay positive); [`OdeError::InvalidInertia`] if
+    /// the principal moments are not positive; [`OdeError::InvalidParameter`] for a
+    /// non-finite or negative `g`.
     pub fn new(body: &impl RigidBody, g: f64) -> Result<FastTop, OdeError> {
         if !(g.is_finite() && g >= 0.0) {
             return Err(OdeError::InvalidParameter {
@@ -68,6 +71,8 @@ impl FastTop {
                 value: g,
             });
         }
+        body.validate()
+            .map_err(|e| refused(body_quantity(&e), &e))?;
         let principal = body.principal();
         let p = principal.rotation;
         let lever = body.center_of_mass() - body.reference_point();

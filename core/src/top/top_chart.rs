@@ -5,7 +5,7 @@ use nalgebra::Matrix3;
 use super::angle_chart::AngleChart;
 use super::dynamics::TopDynamics;
 use super::error::TopError;
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 use crate::rigid::AngleSequence;
 
 /// One chart of a derived top as an ODE system with state `[q, q̇]`: use it with any
@@ -76,6 +76,11 @@ impl<T: TopDynamics> System<6> for TopChart<'_, T> {
         let a = self.top.accelerations_unchecked_in(self.sequence, t, y);
         dydt[..3].copy_from_slice(&y[3..]);
         dydt[3..].copy_from_slice(&a);
+    }
+
+    /// The top's [`TopDynamics::check_all`]: body and settings, before any step.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.top.check_all().map_err(TopError::into_ode_error)
     }
 }
 

@@ -158,7 +158,7 @@ pub fn expand(
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
     let taylor = settings.taylor.map(|order| {
         let prelude = preludes.for_outputs(arena, &derivation.rhs);
-        crate::lang::taylor::expand(
+        crate::lang::taylor::expand_checked(
             cx,
             ident,
             arena,
@@ -167,6 +167,7 @@ pub fn expand(
             &derivation.rhs,
             prelude,
             order,
+            quote!(#p::FreeDynamics::check_parameters(self).map_err(#p::FreeError::into_ode_error)),
         )
     });
     let low = Lowering::new(cx, ident, symbols);

@@ -112,6 +112,25 @@ pub fn expand(
     prelude: TokenStream,
     order: usize,
 ) -> TokenStream {
+    let ok = quote!(::core::result::Result::Ok(()));
+    expand_checked(cx, ident, arena, symbols, state, rhs, prelude, order, ok)
+}
+
+/// [`expand`] with the body of `TaylorSystem::check_parameters`: an expression of type
+/// `Result<(), OdeError>` reading `self` (a scene's own checks of its field values, which
+/// the Taylor integrator calls once when it is built or restarted).
+#[allow(clippy::too_many_arguments)]
+pub fn expand_checked(
+    cx: &Ctxt,
+    ident: &Ident,
+    arena: &Arena,
+    symbols: &SymbolTokens,
+    state: &[ExprId],
+    rhs: &[ExprId],
+    prelude: TokenStream,
+    order: usize,
+    check_parameters: TokenStream,
+) -> TokenStream {
     let p = Private;
     let n = state.len();
     let state: Option<Vec<SymbolId>> = state.iter().map(|&e| arena.as_symbol(e)).collect();
@@ -179,6 +198,10 @@ pub fn expand(
             ) -> bool {
                 #prelude
                 #extended
+            }
+
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::OdeError> {
+                #check_parameters
             }
         }
     }

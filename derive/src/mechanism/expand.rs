@@ -235,6 +235,11 @@ pub fn expand(
                 );
                 *dydt = [#(#dydt),*];
             }
+
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::OdeError> {
+                #p::MechanismDynamics::<#n>::check_parameters(self)
+                    .map_err(#p::MechanismError::into_ode_error)
+            }
         }
 
         #charts
@@ -314,7 +319,8 @@ fn taylor_system(
 ) -> TokenStream {
     let (state, rhs) = derivation.first_order_system();
     let symbols = parameters.tokens();
-    crate::lang::taylor::expand(
+    let (p, n) = (Private, state.len() / 2);
+    crate::lang::taylor::expand_checked(
         cx,
         ident,
         arena,
@@ -323,5 +329,7 @@ fn taylor_system(
         &rhs,
         TokenStream::new(),
         order,
+        quote!(#p::MechanismDynamics::<#n>::check_parameters(self)
+            .map_err(#p::MechanismError::into_ode_error)),
     )
 }

@@ -153,6 +153,7 @@ pub fn expand(
     let equations = super::equations::method(cx, ident, arena, &scene);
     let declared_t = sequence_tokens(scene.sequence);
     let parameters = top_parameters(&low, arena, settings);
+    let beyond_gravity = beyond_gravity(settings);
     let Methods {
         arms:
             ChartArms {
@@ -169,7 +170,7 @@ pub fn expand(
     // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
     let taylor = settings.taylor.map(|order| {
         let (state, rhs) = lagrangian;
-        crate::lang::taylor::expand(
+        crate::lang::taylor::expand_checked(
             cx,
             ident,
             arena,
@@ -178,6 +179,7 @@ pub fn expand(
             &rhs,
             TokenStream::new(),
             order,
+            quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
         )
     });
     Some(quote! {
@@ -187,6 +189,8 @@ pub fn expand(
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::TopDynamics for #ident {
             const SEQUENCE: #p::AngleSequence = #declared_t;
+
+            const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond_gravity;
 
             fn top_parameters(&self) -> #p::TopParameters #parameters
 
@@ -225,6 +229,23 @@ pub fn expand(
             #equations
         }
     })
+}
+
+/// `TopDynamics::BEYOND_GRAVITY`: the first declared torque other than gravity, by its
+/// attribute name (a declared zero counts: the declaration decides, not the value).
+fn beyond_gravity(settings: &TopSettings) -> TokenStream {
+    let declared = [
+        ("damping", settings.damping.is_some()),
+        ("body_torque", settings.body_torque.is_some()),
+        ("space_torque", settings.space_torque.is_some()),
+        ("torque", settings.torque.is_some()),
+    ]
+    .into_iter()
+    .find(|(_, declared)| *declared);
+    match declared {
+        Some((name, _)) => quote!(::core::option::Option::Some(#name)),
+        None => quote!(::core::option::Option::None),
+    }
 }
 
 /// The body of `top_parameters`: the declared settings' values, read from the fields where

@@ -5,7 +5,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
 use crate::mechanism::MechanismError;
-use crate::ode::{Dop853, Stats, System, check_stop};
+use crate::ode::{Dop853, OdeError, Stats, System, check_stop};
 use crate::rigid::charts::state_in_chart;
 use crate::rigid::{
     AngleSequence, ChartConfig, ChartError, check_chart, check_rotation, joint_rate_matrix,
@@ -74,6 +74,12 @@ struct InCharts<D> {
 impl<D: ChartedDynamics<S>, const S: usize> System<S> for InCharts<D> {
     fn rhs(&self, t: f64, y: &[f64; S], dydt: &mut [f64; S]) {
         self.dynamics.rhs_in(self.charts, t, y, dydt);
+    }
+
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.dynamics
+            .check_parameters()
+            .map_err(MechanismError::into_ode_error)
     }
 }
 

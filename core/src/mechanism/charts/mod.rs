@@ -22,6 +22,7 @@ mod model_charts;
 pub use driver::ChartedMechanism;
 pub use model_charts::MechanismCharts;
 
+use super::MechanismError;
 use super::scene::{JointKind, MechanismScene};
 use crate::rigid::AngleSequence;
 
@@ -176,6 +177,18 @@ pub trait ChartedDynamics<const S: usize> {
     /// The energy T + V at the state `y` of the chart set `charts` (NaN for a chart set that
     /// is not available).
     fn energy_in(&self, charts: ChartSet, t: f64, y: &[f64; S]) -> f64;
+
+    /// Checks the parameters read from fields (as
+    /// [`MechanismDynamics::check_parameters`](super::MechanismDynamics::check_parameters)
+    /// does), once, when [`ChartedMechanism::new`] starts or the driver restarts. The derive
+    /// overrides it; a run-time [`MechanismCharts`] checks its values when built.
+    ///
+    /// # Errors
+    /// [`MechanismError::NonFiniteParameter`], [`MechanismError::NegativeParameter`],
+    /// [`MechanismError::Part`].
+    fn check_parameters(&self) -> Result<(), MechanismError> {
+        Ok(())
+    }
 }
 
 impl<const S: usize, D: ChartedDynamics<S> + ?Sized> ChartedDynamics<S> for &D {
@@ -193,5 +206,8 @@ impl<const S: usize, D: ChartedDynamics<S> + ?Sized> ChartedDynamics<S> for &D {
     }
     fn energy_in(&self, charts: ChartSet, t: f64, y: &[f64; S]) -> f64 {
         (**self).energy_in(charts, t, y)
+    }
+    fn check_parameters(&self) -> Result<(), MechanismError> {
+        (**self).check_parameters()
     }
 }

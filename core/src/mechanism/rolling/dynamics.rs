@@ -9,7 +9,7 @@ use nalgebra::{SMatrix, SVector};
 
 use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, START_RESIDUAL};
 use crate::mechanism::error::MechanismError;
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 
 /// The tolerance on the wheels' heights that [`RollingDynamics::close_contacts`] reaches
 /// (metres, or the length unit of the description).
@@ -281,5 +281,12 @@ where
             }
             Err(_) => dydt.fill(f64::NAN),
         }
+    }
+
+    /// The model's [`RollingDynamics::check_parameters`], before any step.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.model
+            .check_parameters()
+            .map_err(MechanismError::into_ode_error)
     }
 }

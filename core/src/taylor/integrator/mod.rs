@@ -133,13 +133,15 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// ([`OdeError::TaylorOrderTooHigh`]), the extended mode asked of a system that does not
     /// implement it ([`OdeError::NoExtendedCoefficients`]), a
     /// non-finite `t0` ([`OdeError::NonFiniteTime`]) or `y0`
-    /// ([`OdeError::NonFiniteInitialState`]).
+    /// ([`OdeError::NonFiniteInitialState`]), the system's own refusal of its parameters
+    /// ([`TaylorSystem::check_parameters`]).
     pub fn new(sys: S, t0: f64, y0: [f64; N], cfg: TaylorConfig) -> Result<Self, OdeError> {
         cfg.validate()?;
         if !t0.is_finite() {
             return Err(OdeError::NonFiniteTime { t: t0 });
         }
         check_finite(&y0)?;
+        sys.check_parameters()?;
         let system_max = sys.max_order();
         if system_max < 2 {
             return Err(OdeError::InvalidParameter {
@@ -233,6 +235,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// Start of the last step: dense output covers `[last_step_start, t]`.
     pub fn last_step_start(&self) -> f64 {
         self.last.t
+    }
+
+    /// [`TaylorSystem::check_parameters`] of the integrator's system, for a restart.
+    pub(crate) fn check_system(&self) -> Result<(), OdeError> {
+        self.sys.check_parameters()
     }
 
     /// Puts the integrator at `(t, y)` (the caller checks the values): no dense output

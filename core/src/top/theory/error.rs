@@ -113,6 +113,52 @@ pub enum TheoryError {
     /// An elliptic function or integral failed (a time too large to reduce, for one).
     #[error(transparent)]
     Exact(#[from] ExactError),
+    /// A derived top's description z axis (the axis its Euler angles ride) is not a principal
+    /// axis about the pivot: a product of inertia is not zero, so the top is not symmetric
+    /// about it.
+    #[error(
+        "the top's products of inertia about the pivot (Ixy = {ixy}, Ixz = {ixz}, Iyz = \
+         {iyz}) are not zero (relative {relative:e} above {limit:e}): the closed forms need a \
+         top symmetric about its description z axis"
+    )]
+    ProductsOfInertia {
+        /// Ixy about the pivot, description axes.
+        ixy: f64,
+        /// Ixz.
+        ixz: f64,
+        /// Iyz.
+        iyz: f64,
+        /// The largest |product| over the largest moment.
+        relative: f64,
+        /// The largest relative value taken as zero.
+        limit: f64,
+    },
+    /// A derived top's centre of mass is off its description z axis through the pivot: the
+    /// gravity torque is then not M g l sin θ about the line of nodes.
+    #[error(
+        "the top's centre of mass lies off its symmetry axis, at x = {x}, y = {y} from it \
+         (relative {relative:e} above {limit:e}): the closed forms need it on the axis"
+    )]
+    CentreOffAxis {
+        /// Its x from the pivot, description axes.
+        x: f64,
+        /// Its y from the pivot.
+        y: f64,
+        /// √(x² + y²) over its distance from the pivot.
+        relative: f64,
+        /// The largest relative offset taken as zero.
+        limit: f64,
+    },
+    /// A derived top declares a torque besides gravity: the heavy-top closed forms do not
+    /// hold for it.
+    #[error(
+        "the top also declares {declared}: the heavy-top closed forms hold under gravity alone"
+    )]
+    OtherTorque {
+        /// The setting, as `#[top(...)]` names it (`damping`, `body_torque`, `space_torque`,
+        /// `torque`).
+        declared: &'static str,
+    },
 }
 
 /// Rejects NaN and ±∞, naming the input.

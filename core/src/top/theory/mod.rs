@@ -5,11 +5,13 @@
 //! against DOP853 runs of a derived top. The derivations are in `docs/theory.md`.
 
 mod cubic;
+mod derived;
 mod error;
 mod heavy;
 mod motion;
 mod torque_free;
 
+pub(crate) use derived::derived_theory;
 pub use error::TheoryError;
 pub use heavy::{
     HeavyTopTheory, STEADY_TOLERANCE, SYMMETRY_TOLERANCE, SleepingTop, SteadyPrecession,

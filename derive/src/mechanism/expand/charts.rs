@@ -136,6 +136,10 @@ pub(super) fn expand_charts(
                     _ => f64::NAN,
                 }
             }
+
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::MechanismError> {
+                #p::MechanismDynamics::<#n>::check_parameters(self)
+            }
         }
     })
 }
