@@ -106,7 +106,7 @@ fn lanes_end_where_scalar_runs_end_bit_for_bit_each_at_its_own_time() {
     let ends = batch.advance_to(t_end);
     let mut steps = Vec::new();
     for l in 0..4 {
-        let end = ends[l].unwrap();
+        let end = ends[l].clone().unwrap();
         let (y, n) = scalar(free(inertias[l]), 0.0, y0[l], t_end[l], cfg).unwrap();
         assert_eq!(end.t, t_end[l]);
         assert!(!end.event);
@@ -135,7 +135,7 @@ fn each_lane_meets_the_closed_form_of_the_torque_free_body() {
             .unwrap()
             .m_at(200.0)
             .unwrap();
-        let y = ends[l].unwrap().y;
+        let y = ends[l].clone().unwrap().y;
         for i in 0..3 {
             worst = worst.max((y[i] - exact[i]).abs());
         }
@@ -170,12 +170,12 @@ fn a_lane_with_nan_parameters_or_state_fails_alone() {
     );
     for l in [0, 3] {
         let (y, _) = scalar(free(INERTIA), 0.0, y0[l], 50.0, cfg).unwrap();
-        assert_eq!(bits(&ends[l].unwrap().y), bits(&y), "lane {l}");
+        assert_eq!(bits(&ends[l].clone().unwrap().y), bits(&y), "lane {l}");
     }
     // The failed lanes stay out; the others go on.
     let again = batch.advance_to([60.0; 4]);
     assert!(again[1].is_err() && again[2].is_err());
-    assert_eq!(again[0].unwrap().t, 60.0);
+    assert_eq!(again[0].clone().unwrap().t, 60.0);
     assert!(batch.lane(2).unwrap().is_err());
 }
 
@@ -190,7 +190,7 @@ fn a_lane_whose_stop_is_behind_it_fails_alone() {
         "{:?}",
         ends[1]
     );
-    assert_eq!(ends[0].unwrap().t, 3.0);
+    assert_eq!(ends[0].clone().unwrap().t, 3.0);
 }
 
 #[test]
@@ -208,7 +208,7 @@ fn each_lane_stops_at_its_own_event_as_a_scalar_run_does() {
     let mut batch = BatchTaylor::new([(); 4].map(|()| free(INERTIA)), [0.0; 4], y0, cfg);
     let ends = batch.advance_until([100.0; 4], |l, _, y| y[0] - threshold[l]);
     for l in 0..4 {
-        let end = ends[l].unwrap();
+        let end = ends[l].clone().unwrap();
         let mut ode = Taylor::new(free(INERTIA), 0.0, y0[l], cfg).unwrap();
         let g = move |_t: f64, y: &[f64; 3]| y[0] - threshold[l];
         let out = Run::new(&mut ode, 100.0)
@@ -253,7 +253,7 @@ proptest! {
         let ends = batch.advance_to(t_end);
         for l in 0..4 {
             let want = scalar(free(inertia[l]), 0.0, m[l], t_end[l], cfg).map(|(y, _)| bits(&y));
-            prop_assert_eq!(ends[l].map(|e| bits(&e.y)), want, "lane {}", l);
+            prop_assert_eq!(ends[l].clone().map(|e| bits(&e.y)), want, "lane {}", l);
         }
     }
 }

@@ -94,7 +94,7 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
     pub fn lane(&self, l: usize) -> Option<Result<&Taylor<S, N>, OdeError>> {
         self.lanes.get(l).map(|lane| match lane {
             Lane::Live(ode) => Ok(ode),
-            Lane::Failed(e) => Err(*e),
+            Lane::Failed(e) => Err(e.clone()),
         })
     }
 
@@ -123,7 +123,7 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
         t_end: [f64; L],
         mut g: impl FnMut(usize, f64, &[f64; N]) -> f64,
     ) -> [Result<LaneEnd<N>, OdeError>; L] {
-        let mut ends: [Option<Result<LaneEnd<N>, OdeError>>; L] = [None; L];
+        let mut ends: [Option<Result<LaneEnd<N>, OdeError>>; L] = core::array::from_fn(|_| None);
         let mut g_last = [0.0f64; L];
         for (l, lane) in self.lanes.iter().enumerate() {
             match lane {
@@ -133,7 +133,7 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
                     Ok(v) => g_last[l] = v,
                     Err(e) => ends[l] = Some(Err(e)),
                 },
-                Lane::Failed(e) => ends[l] = Some(Err(*e)),
+                Lane::Failed(e) => ends[l] = Some(Err(e.clone())),
             }
         }
         let mut orders = [None::<usize>; L];
@@ -187,7 +187,7 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
         // A lane whose step failed is out of the batch from now on.
         for (lane, end) in self.lanes.iter_mut().zip(&ends) {
             if let (Lane::Live(_), Some(Err(e))) = (&*lane, end) {
-                *lane = Lane::Failed(*e);
+                *lane = Lane::Failed(e.clone());
             }
         }
         // Every lane has its end when no lane needs an order: the fallback is never taken.
