@@ -30,6 +30,8 @@ mod chaos;
 mod common;
 #[path = "common/maps.rs"]
 mod maps;
+#[path = "common/shards.rs"]
+mod shards;
 
 use std::error::Error;
 use std::path::{Path, PathBuf};
@@ -39,6 +41,7 @@ use chaos::{ASYMMETRIC, KOVALEVSKAYA, LAGRANGE, Map, TORQUE_FREE};
 use common::Table;
 use maps::{Grid, HeatLabels, heat_map};
 use precess::ensemble::{Ensemble, EnsembleProgress, rayon};
+use shards::{parse_shard, shard};
 
 /// The default map: 48 tilts × 36 spins, each run averaged over 100 time units (above
 /// ω3 ≈ 4 every orbit of this top is regular).
@@ -94,13 +97,7 @@ fn args() -> Result<Args, Box<dyn Error>> {
             }
             "--shard" => {
                 let s = it.next().ok_or("--shard needs k/n")?;
-                let bad = || format!("--shard {s}: expected k/n with 0 ≤ k < n");
-                let (k, n) = s.split_once('/').ok_or_else(bad)?;
-                let (k, n) = (k.parse().map_err(|_| bad())?, n.parse().map_err(|_| bad())?);
-                if k >= n {
-                    return Err(bad().into());
-                }
-                out.shard = Some((k, n));
+                out.shard = Some(parse_shard(&s)?);
             }
             "--merge" => merging = true,
             "--out" => out.dir = it.next().ok_or("--out needs a directory")?.into(),
@@ -117,14 +114,6 @@ fn args() -> Result<Args, Box<dyn Error>> {
     }
     std::fs::create_dir_all(&out.dir)?;
     Ok(out)
-}
-
-/// Shard `k` of `n` of the runs `0..total`, as `common/sweep.rs` cuts them: consecutive
-/// runs, the first `total % n` shards one run longer.
-fn shard(k: usize, n: usize, total: usize) -> std::ops::Range<usize> {
-    let (base, extra) = (total / n, total % n);
-    let start = k * base + k.min(extra);
-    start..start + base + usize::from(k < extra)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {

@@ -20,6 +20,8 @@
 //! docs/ensembles.md spreads the shards over a Slurm job array, Ray or Kubernetes.
 
 mod common;
+#[path = "common/shards.rs"]
+mod shards;
 #[path = "common/sweep.rs"]
 mod sweep;
 
@@ -31,7 +33,8 @@ use common::{Axes, Series, Table, plot_in};
 use precess::ensemble::{Ensemble, EnsembleProgress, rayon};
 use precess::prelude::*;
 use precess::top::{HeavyTopTheory, SleepingTop};
-use sweep::{FALLEN, Row, SweepTop, THETA0, read_csv, shard, write_csv};
+use shards::{parse_shard, shard};
+use sweep::{FALLEN, Row, SweepTop, THETA0, read_csv, write_csv};
 
 /// The sweep: 10⁴ spins from 3 to 5 rad/s about the threshold 4, each run at most 300 s.
 const SWEEP: sweep::Sweep = sweep::Sweep {
@@ -66,13 +69,7 @@ fn args() -> Result<Args, Box<dyn Error>> {
             }
             "--shard" => {
                 let s = it.next().ok_or("--shard needs k/n")?;
-                let bad = || format!("--shard {s}: expected k/n with 0 ≤ k < n");
-                let (k, n) = s.split_once('/').ok_or_else(bad)?;
-                let (k, n) = (k.parse().map_err(|_| bad())?, n.parse().map_err(|_| bad())?);
-                if k >= n {
-                    return Err(bad().into());
-                }
-                out.shard = Some((k, n));
+                out.shard = Some(parse_shard(&s)?);
             }
             "--merge" => merging = true,
             "--out" => out.dir = it.next().ok_or("--out needs a directory")?.into(),

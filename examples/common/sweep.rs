@@ -13,7 +13,6 @@
 #![allow(dead_code)] // the example and the test each use the part they need
 
 use std::error::Error;
-use std::ops::Range;
 
 use precess::ode::AdaptiveConfig;
 use precess::prelude::*;
@@ -128,17 +127,6 @@ fn crossing((t0, a): (f64, f64), (t1, b): (f64, f64), level: f64) -> f64 {
     } else {
         t1
     }
-}
-
-/// Shard `k` of `n` of the runs `0..total`: consecutive runs, the first `total % n` shards
-/// one run longer; empty when `n` is 0 or `k ≥ n`.
-pub fn shard(k: usize, n: usize, total: usize) -> Range<usize> {
-    if n == 0 || k >= n {
-        return total..total;
-    }
-    let (base, extra) = (total / n, total % n);
-    let start = k * base + k.min(extra);
-    start..start + base + usize::from(k < extra)
 }
 
 /// The rows as CSV, header first. Numbers are written in Rust's shortest form that reads

@@ -3,6 +3,8 @@
 //! gives the same rows and the same threshold to the bit — and that threshold agrees with
 //! ω3² = 4 M g l I1 / I3².
 
+#[path = "../../examples/common/shards.rs"]
+mod shards;
 #[path = "../../examples/common/sweep.rs"]
 mod sweep;
 
@@ -10,7 +12,8 @@ use precess::ensemble::Ensemble;
 use precess::prelude::*;
 use precess::top::HeavyTopTheory;
 
-use sweep::{Row, Sweep, read_csv, shard, threshold_from_falls, threshold_from_growth, write_csv};
+use shards::{parse_shard, shard};
+use sweep::{Row, Sweep, read_csv, threshold_from_falls, threshold_from_growth, write_csv};
 
 /// A short sweep: 24 spins from 3 to 4.5 rad/s (threshold 4), runs of at most 60 s, so the
 /// spins up to about 3.95 fall.
@@ -111,4 +114,14 @@ fn a_merge_refuses_a_duplicated_run_and_a_malformed_line() {
     assert!(read_csv("1,2,3\n").is_err());
     // A shard of no runs writes only its header, which merges to nothing.
     assert!(read_csv(&write_csv(&[])).unwrap().is_empty());
+}
+
+#[test]
+fn a_shard_argument_is_k_of_n_with_k_below_n() {
+    assert_eq!(parse_shard("0/3"), Ok((0, 3)));
+    assert_eq!(parse_shard("2/3"), Ok((2, 3)));
+    for bad in ["3/3", "1", "a/3", "1/b", "-1/3", "1/0"] {
+        let err = parse_shard(bad).expect_err(bad);
+        assert!(err.contains(bad), "{err}");
+    }
 }
