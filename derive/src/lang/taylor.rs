@@ -173,7 +173,7 @@ pub fn expand_checked(
         arena,
         symbols,
         &prelude,
-        &state_exprs,
+        state_exprs,
         rhs,
         order,
     );
