@@ -18,8 +18,10 @@
 //! `PRECESS_ENSEMBLE_RUNS` runs, 1000 unless set; "loop" is the same runs in a plain loop on
 //! one thread, without the ensemble) and then times the tol 1e-12 ensembles with
 //! criterion. `scripts/heyoka_ensemble.py` runs heyoka's ensembles on the same problems and
-//! tolerances; docs/performance.md ("Many at once") sets them side by side. No SIMD lanes
-//! here: batch lanes are not built yet.
+//! tolerances; docs/performance.md ("Many at once") sets them side by side. Rows
+//! "k×L lanes" step the same runs L at a time in batch lanes (`Ensemble::lanes`) on k
+//! threads: the generated recurrences of `SpinningTop` and of `FreeEquations` on
+//! `Lanes<L>`, bit-identical to their scalar rows.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -86,6 +88,72 @@ fn heavy_top(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> 
         ode.step(t_end)?;
     }
     Ok(ode.y()[1].cos())
+}
+
+/// Run i of (a)'s integrator at its start, for the lanes ([`Ensemble::lanes`]), which step
+/// it as `heavy_top` does, to the same bits.
+fn heavy_top_start(i: usize, n: usize, tol: f64) -> Result<Taylor<SpinningTop, 6>, OdeError> {
+    let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
+    let y0 = [0.0, THETA0_DEG.to_radians(), psi0, 0.0, 0.0, SPIN];
+    Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
+}
+
+/// One row of (a) stepped `L` runs at a time in batch lanes on `threads` threads.
+fn heavy_top_lanes_row<const L: usize>(
+    n: usize,
+    threads: usize,
+    t_end: f64,
+    cos_end: f64,
+    tol: f64,
+) {
+    let (secs, results) = best_of_3(|| {
+        pool(threads).install(|| {
+            Ensemble::new(0..n).lanes::<L>().integrate(
+                t_end,
+                |i| heavy_top_start(i, n, tol),
+                |_, ode| ode.y()[1].cos(),
+            )
+        })
+    });
+    let err = results
+        .outputs()
+        .map(|(_, c)| (c - cos_end).abs())
+        .fold(0.0, f64::max);
+    assert_eq!(results.failures(), 0);
+    println!(
+        "{:<9} {tol:>7.0e} {:<10} {err:>9.2e} {:>10.0}",
+        "heavy top",
+        format!("{threads}×{L} lanes"),
+        n as f64 / secs
+    );
+}
+
+/// One row of (b) through `FreeEquations`, `L` runs at a time in lanes on `threads` threads.
+fn free_equations_lanes_row<const L: usize>(n: usize, threads: usize, tol: f64) {
+    let (secs, results) = best_of_3(|| {
+        pool(threads).install(|| {
+            Ensemble::new(0..n).lanes::<L>().integrate(
+                200.0,
+                |i| {
+                    Taylor::new(
+                        FreeEquations,
+                        0.0,
+                        free_m0(i, n),
+                        TaylorConfig::with_tol(tol, tol),
+                    )
+                },
+                |_, ode| *ode.y(),
+            )
+        })
+    });
+    assert_eq!(results.failures(), 0);
+    println!(
+        "{:<9} {tol:>7.0e} {:<10} {:>9} {:>10.0}",
+        "free (eq)",
+        format!("{threads}×{L} lanes"),
+        "",
+        n as f64 / secs
+    );
 }
 
 /// Run i of (a) in Euler–Poisson form (`EulerPoisson`): γ3 = cos θ at `t_end`.
@@ -180,6 +248,11 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
                 n as f64 / secs
             );
         }
+        // The same runs in batch lanes: 4 doubles fill an AVX2 register, 8 an AVX-512 one.
+        for threads in [1, cores] {
+            heavy_top_lanes_row::<4>(n, threads, t_end, cos_end, tol);
+            heavy_top_lanes_row::<8>(n, threads, t_end, cos_end, tol);
+        }
         // The same runs in a plain loop, without the ensemble: what the ensemble costs.
         let (secs, _) = best_of_3(|| {
             (0..n)
@@ -237,6 +310,10 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
                 "",
                 n as f64 / secs
             );
+        }
+        for threads in [1, cores] {
+            free_equations_lanes_row::<4>(n, threads, tol);
+            free_equations_lanes_row::<8>(n, threads, tol);
         }
         for threads in [1, cores] {
             let (secs, results) = best_of_3(|| {

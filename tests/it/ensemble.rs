@@ -478,3 +478,91 @@ fn integrate_takes_the_splittings_too() {
         assert!((m - m10).abs().max() < 1e-8, "run {i}: {m:?}");
     }
 }
+
+precess::taylor_system! {
+    /// The pendulum ẍ = −k sin x, k a parameter.
+    struct Pendulum { k: f64 }
+    state [x, v];
+    taylor = 24;
+    d/dt x = v;
+    d/dt v = -k * sin(x);
+}
+
+/// Run `i` of the lanes' ensemble, with a failure of every kind at fixed indices: a NaN
+/// parameter (5), a panic (7), a start after the end (9), an error of the closure (11).
+fn pendulum_run(i: usize) -> Result<Taylor<Pendulum, 2>, BoxError> {
+    let k = if i == 5 {
+        f64::NAN
+    } else {
+        1.0 + 0.1 * i as f64
+    };
+    assert!(i != 7, "run 7 refuses to start");
+    if i == 11 {
+        return Err("run 11 has no start".into());
+    }
+    let t0 = if i == 9 { 10.0 } else { 0.0 };
+    let x0 = 0.2 + 0.1 * i as f64;
+    Ok(Taylor::new(
+        Pendulum { k },
+        t0,
+        [x0, 0.0],
+        TaylorConfig::with_tol(1e-13, 1e-13),
+    )?)
+}
+
+/// 23 pendulums (not a multiple of the lanes) in chunks of 4 and of 3 lanes on 1, 2 and 3
+/// threads: the same outputs bit for bit and the same errors at the same indices as the
+/// scalar ensemble; the energy v²/2 − k cos x of each run kept to 1e-12.
+#[test]
+fn lanes_give_the_scalar_ensembles_bits_on_any_number_of_threads() {
+    let t_end = 6.0;
+    let output = |_: usize, ode: &Taylor<Pendulum, 2>| (bits(ode.y()), ode.stats().steps);
+    let scalar = Ensemble::new(0..23).integrate(t_end, pendulum_run, output);
+    let scalar = format!("{scalar:?}");
+    for pool in pools() {
+        let four = pool.install(|| {
+            Ensemble::new(0..23)
+                .lanes::<4>()
+                .integrate(t_end, pendulum_run, output)
+        });
+        assert_eq!(
+            format!("{four:?}"),
+            scalar,
+            "4 lanes, {} threads",
+            pool.current_num_threads()
+        );
+        let three = pool.install(|| {
+            Ensemble::new(0..23)
+                .lanes::<3>()
+                .integrate(t_end, pendulum_run, output)
+        });
+        assert_eq!(
+            format!("{three:?}"),
+            scalar,
+            "3 lanes, {} threads",
+            pool.current_num_threads()
+        );
+    }
+    let results = Ensemble::new(0..23).lanes::<4>().integrate(
+        t_end,
+        pendulum_run,
+        |i, ode: &Taylor<Pendulum, 2>| {
+            let k = 1.0 + 0.1 * i as f64;
+            let energy = |x: f64, v: f64| 0.5 * v * v - k * x.cos();
+            (energy(ode.y()[0], ode.y()[1]) - energy(0.2 + 0.1 * i as f64, 0.0)).abs()
+        },
+    );
+    assert_eq!(results.outputs().count(), 19);
+    for (i, drift) in results.outputs() {
+        assert!(*drift < 1e-12, "run {i}: energy drifted by {drift:e}");
+    }
+    let failed: Vec<usize> = results.errors().map(EnsembleError::index).collect();
+    assert_eq!(failed, [5, 7, 9, 11]);
+    assert!(
+        matches!(results.get(7), Some(Err(EnsembleError::Panicked { message, .. })) if message.contains("refuses"))
+    );
+    let chunks = Ensemble::new(3..3)
+        .lanes::<4>()
+        .integrate(t_end, pendulum_run, output);
+    assert!(chunks.is_empty());
+}

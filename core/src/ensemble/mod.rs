@@ -6,7 +6,8 @@
 //! go to the threads of the current rayon pool; [`Ensemble::run`] keeps every result at its
 //! index ([`EnsembleResults`]), [`Ensemble::reduce`] folds them into one value instead, and
 //! [`Ensemble::integrate`] is the common case of a [`crate::ode::Stepper`] taken to an end
-//! time.
+//! time. [`Ensemble::lanes`] steps Taylor runs `L` at a time in batch lanes
+//! ([`EnsembleLanes::integrate`]), with the same outputs bit for bit.
 //!
 //! # Guarantees
 //! - **Determinism.** A run's result depends only on its index (given a closure that does):
@@ -62,10 +63,12 @@
 
 mod error;
 mod integrate;
+mod lanes;
 mod results;
 mod runner;
 
 pub use error::EnsembleError;
+pub use lanes::EnsembleLanes;
 pub use results::EnsembleResults;
 pub use runner::{Ensemble, EnsembleProgress, MAX_REDUCE_BLOCKS};
 

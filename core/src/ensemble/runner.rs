@@ -147,7 +147,7 @@ impl<'p> Ensemble<'p> {
         partials.into_iter().fold(identity(), combine)
     }
 
-    fn report(&self, done: &AtomicUsize) {
+    pub(super) fn report(&self, done: &AtomicUsize) {
         let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
         if let Some(report) = self.progress {
             report(EnsembleProgress {
@@ -178,7 +178,7 @@ fn run_one<T, E>(
 }
 
 /// The text of a panic's payload (`panic!` gives a `&str` or a `String`).
-fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+pub(super) fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
     if let Some(s) = payload.downcast_ref::<&str>() {
         (*s).to_owned()
     } else if let Some(s) = payload.downcast_ref::<String>() {

@@ -3,7 +3,8 @@
 //! attribute's settings ([`TaylorKey::find`], a repeat an error), its order checked
 //! ([`TaylorKey::order`]), and the `impl TaylorSystem<N>` emitted from the scene's right-hand
 //! side through precess-core's Taylor tape (`precess_core::taylor::Tape::to_tokens`), so the
-//! generated and the interpreted recurrences are one decomposition ([`expand`]). Scenes
+//! generated and the interpreted recurrences are one decomposition ([`expand`]), with its
+//! `impl TaylorLanes<N, L>` for the batch lanes beside it (`taylor_system/lanes.rs`). Scenes
 //! without the key emit nothing here.
 
 use precess_core::codegen::Program;
@@ -133,6 +134,7 @@ pub fn expand_checked(
 ) -> TokenStream {
     let p = Private;
     let n = state.len();
+    let state_exprs = state;
     let state: Option<Vec<SymbolId>> = state.iter().map(|&e| arena.as_symbol(e)).collect();
     let Some(state) = state.filter(|s| s.len() == rhs.len()) else {
         cx.error_spanned_by(
@@ -164,6 +166,17 @@ pub fn expand_checked(
     // The extended mode's double-double low orders, from tables of the same tape (a symbol
     // without a value was reported above).
     let extended = tape.extended_tokens(order, &mut |s| symbols.get(s).unwrap_or_default());
+    // The same tape in batch lanes, reading the symbols as the scalar code does: every
+    // scene with `taylor = K` steps in `BatchTaylor` too.
+    let lanes = crate::taylor_system::lanes::lane_impl(
+        ident,
+        arena,
+        symbols,
+        &prelude,
+        state_exprs,
+        rhs,
+        order,
+    );
     quote! {
         #[automatically_derived]
         #[allow(unused_variables, unused_mut, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -204,5 +217,7 @@ pub fn expand_checked(
                 #check_parameters
             }
         }
+
+        #lanes
     }
 }

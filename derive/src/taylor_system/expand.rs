@@ -93,12 +93,6 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         TokenStream::new(),
         checked.order,
     );
-    let field_pairs: Vec<(ExprId, &syn::Ident)> = fields
-        .iter()
-        .copied()
-        .zip(checked.fields.iter().copied())
-        .collect();
-    let lanes = super::lanes::lane_impl(ident, &arena, &state, &field_pairs, &rhs, checked.order);
     let names = checked
         .state
         .iter()
@@ -121,7 +115,5 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         }
 
         #taylor
-
-        #lanes
     })
 }

@@ -8,7 +8,7 @@
 mod attr;
 mod check;
 mod expand;
-mod lanes;
+pub(crate) mod lanes;
 mod values;
 
 pub use expand::expand;

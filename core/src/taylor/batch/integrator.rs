@@ -62,16 +62,33 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
     /// Starts lane `l` at `(t0[l], y0[l])` with `systems[l]`, each as [`Taylor::new`] would;
     /// a lane it refuses keeps the error and is out of the batch.
     pub fn new(systems: [S; L], t0: [f64; L], y0: [[f64; N]; L], cfg: TaylorConfig) -> Self {
-        let lanes: Vec<Lane<S, N, L>> = systems
+        let mut starts = systems.into_iter().zip(t0).zip(y0);
+        Self::from_integrators(core::array::from_fn(|_| match starts.next() {
+            Some(((s, t), y)) => Taylor::new(s, t, y, cfg),
+            // The three arrays have L entries each: never reached.
+            None => Err(OdeError::InvalidParameter {
+                name: "lane without a start",
+                value: f64::NAN,
+            }),
+        }))
+    }
+
+    /// Puts `L` scalar integrators (each with its own configuration, as
+    /// [`Taylor::new`] built it) into one batch; an `Err` lane is out of the batch with
+    /// its error, as is one in the extended mode ([`OdeError::InvalidParameter`]).
+    ///
+    /// Each lane then takes exactly the steps the integrator would have taken alone.
+    pub fn from_integrators(odes: [Result<Taylor<S, N>, OdeError>; L]) -> Self {
+        let lanes: Vec<Lane<S, N, L>> = odes
             .into_iter()
-            .zip(t0)
-            .zip(y0)
-            .map(|((s, t), y)| match Taylor::new(s, t, y, cfg) {
-                Ok(ode) if cfg.extended.is_none() => Lane::Live(ode),
-                Ok(_) => Lane::Failed(OdeError::InvalidParameter {
-                    name: "extended (the lanes step in f64 only)",
-                    value: cfg.extended.unwrap_or(0) as f64,
-                }),
+            .map(|ode| match ode {
+                Ok(ode) => match ode.config().extended {
+                    None => Lane::Live(ode),
+                    Some(low) => Lane::Failed(OdeError::InvalidParameter {
+                        name: "extended (the lanes step in f64 only)",
+                        value: low as f64,
+                    }),
+                },
                 Err(e) => Lane::Failed(e),
             })
             .collect();
