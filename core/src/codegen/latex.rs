@@ -312,3 +312,34 @@ pub fn decimal(v: f64, digits: usize) -> String {
     let decimals = usize::try_from(i32::try_from(digits).unwrap_or(17) - 1 - e).unwrap_or(0);
     trim(&format!("{v:.decimals$}"))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 10⁻⁵⁰ · 5⁻² beyond i128s, times `k`.
+    fn tiny(k: i128) -> Rational {
+        let a = Rational::new(k, 10i128.pow(30)).unwrap_or(Rational::ONE);
+        let b = Rational::new(1, 25 * 10i128.pow(20)).unwrap_or(Rational::ONE);
+        a.checked_mul(b).unwrap_or(Rational::ONE)
+    }
+
+    /// A value only the scaled form holds prints as an exact decimal times a power of ten,
+    /// the stray 5⁻² folded (= 4 · 10⁻²), its sign in front and never inside a factor.
+    #[test]
+    fn scaled_rationals_print_as_exact_decimals() {
+        assert_eq!(tiny(1).scaled().1, 1, "the test needs the scaled form");
+        assert_ne!(tiny(1).scaled().2, 0, "the test needs the scaled form");
+        assert_eq!(rational(tiny(1)), r"4 \cdot 10^{-52}");
+        assert_eq!(rational(tiny(7)), r"2.8 \cdot 10^{-51}");
+        assert_eq!(rational(tiny(-7)), r"-2.8 \cdot 10^{-51}");
+    }
+
+    #[test]
+    fn decimals_keep_the_significant_digits_asked() {
+        assert_eq!(decimal(0.038_389_412, 6), "0.0383894");
+        assert_eq!(decimal(6.617_138e-5, 6), r"6.61714 \cdot 10^{-5}");
+        assert_eq!(decimal(-1234.5, 6), "-1234.5");
+        assert_eq!(decimal(0.0, 6), "0");
+    }
+}

@@ -597,7 +597,7 @@ fn a_literal_top_prints_named_mass_properties() {
             .map(str::len)
             .max()
             .unwrap_or(0);
-        assert!(longest <= 6, "a long number in {line}");
+        assert!(longest <= 7, "a long number in {line}");
     }
 }
 
@@ -635,12 +635,16 @@ fn every_line_of_a_literal_top_evaluates_to_the_generated_code() {
     }
     assert_eq!(named, eq.values.len());
     assert!(named >= 8, "{:?}", eq.values);
-    for line in eq.lines() {
+    // The definitions hold the decimals; no other line holds a number past 7 digits.
+    for line in eq
+        .lines()
+        .filter(|l| !eq.definitions.iter().any(|d| d == l))
+    {
         let longest = line
             .split(|c: char| !c.is_ascii_digit())
             .map(str::len)
             .max()
             .unwrap_or(0);
-        assert!(longest <= 6, "a long number in {line}");
+        assert!(longest <= 7, "a long number in {line}");
     }
 }
