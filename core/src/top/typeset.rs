@@ -159,8 +159,8 @@ impl TopScene {
             .all(|&(i, j)| arena.as_rational(t[i][j]).is_some_and(|r| r.is_zero()));
         if diagonal {
             let mut seen: Vec<(ExprId, ExprId)> = Vec::new();
-            for k in 0..3 {
-                let e = t[k][k];
+            for (k, row) in t.iter().enumerate() {
+                let e = row[k];
                 let named = match seen.iter().find(|(d, _)| *d == e) {
                     Some(&(_, n)) => n,
                     None => namer.name(arena, e, &format!("I_{}", k + 1)),
