@@ -218,15 +218,31 @@ fn rational(r: Rational) -> String {
     }
 }
 
-/// Numerator and denominator of |r|; beyond ratios of i128s, the numerator carries the
-/// powers: n · 10^k · 2^a (or 5^b).
+/// Numerator and denominator of |r|; beyond ratios of i128s, the numerator is a decimal
+/// times a power of ten, `7.0505 \cdot 10^{-30}`, the stray powers of 2 or 5 folded into its
+/// digits (5⁻² = 4 · 10⁻²), exactly; `n \cdot 2^{a}` only if folding would overflow.
 pub(super) fn fraction(r: Rational) -> (String, String) {
     let (n, d, two, five) = r.abs_value().scaled();
+    if two == 0 && five == 0 {
+        return (n.to_string(), d.to_string());
+    }
+    // n · 2^two · 5^five = n · 10^ten · (2 or 5)^rest.
     let ten = if two.signum() == five.signum() {
         two.signum() * two.abs().min(five.abs())
     } else {
         0
     };
+    let folded = [(2i128, 5i128, two - ten), (5, 2, five - ten)]
+        .into_iter()
+        .try_fold((n, ten), |(n, ten), (base, other, e)| {
+            // base^e for e < 0 is other^|e| · 10^e.
+            let (factor, e_abs, shift) = if e >= 0 { (base, e, 0) } else { (other, -e, e) };
+            let p = factor.checked_pow(u32::try_from(e_abs).ok()?)?;
+            Some((n.checked_mul(p)?, ten + shift))
+        });
+    if let Some((n, ten)) = folded {
+        return (scientific(n, ten), d.to_string());
+    }
     let mut top = vec![n.to_string()];
     for (base, e) in [(10, ten), (2, two - ten), (5, five - ten)] {
         if e != 0 {
@@ -237,4 +253,93 @@ pub(super) fn fraction(r: Rational) -> (String, String) {
         top.remove(0);
     }
     (top.join(" \\cdot "), d.to_string())
+}
+
+/// The integer `n · 10^k` written exactly: its digits with the point after the first,
+/// `\cdot 10^{e}` unless e is 0, trailing zeros dropped.
+fn scientific(n: i128, k: i32) -> String {
+    let digits = n.unsigned_abs().to_string();
+    let digits = digits.trim_end_matches('0');
+    let zeros = n.unsigned_abs().to_string().len() - digits.len();
+    let e = k + i32::try_from(zeros + digits.len()).unwrap_or(i32::MAX) - 1;
+    if digits.is_empty() {
+        return "0".to_owned();
+    }
+    let mantissa = match digits.split_at(1) {
+        (head, "") => head.to_owned(),
+        (head, tail) => format!("{head}.{tail}"),
+    };
+    if e == 0 {
+        mantissa
+    } else {
+        format!("{mantissa} \\cdot 10^{{{e}}}")
+    }
+}
+
+/// `v` as LaTeX to `digits` significant digits, trailing zeros dropped: plainly between
+/// 0.001 and 10⁴ (`9.81`, `0.0345`), else as `m \cdot 10^{e}` (`7.27512 \cdot 10^{-6}`).
+///
+/// ```
+/// use precess_core::codegen::decimal;
+/// assert_eq!(decimal(9.81, 6), "9.81");
+/// assert_eq!(decimal(-0.034_512_345, 3), "-0.0345");
+/// assert_eq!(decimal(7.275_118_53e-6, 6), r"7.27512 \cdot 10^{-6}");
+/// assert_eq!(decimal(12_345.6, 2), r"1.2 \cdot 10^{4}");
+/// ```
+pub fn decimal(v: f64, digits: usize) -> String {
+    let digits = digits.max(1);
+    let sci = format!("{:.*e}", digits - 1, v);
+    let Some((mantissa, exponent)) = sci.split_once('e') else {
+        return sci;
+    };
+    let e: i32 = exponent.parse().unwrap_or(0);
+    let trim = |m: &str| -> String {
+        if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            m.to_owned()
+        }
+    };
+    if v == 0.0 || !v.is_finite() || !(-3..4).contains(&e) {
+        let m = trim(mantissa);
+        return if e == 0 || v == 0.0 || !v.is_finite() {
+            m
+        } else {
+            format!("{m} \\cdot 10^{{{e}}}")
+        };
+    }
+    // Plain: as many decimals as leave `digits` significant ones.
+    let decimals = usize::try_from(i32::try_from(digits).unwrap_or(17) - 1 - e).unwrap_or(0);
+    trim(&format!("{v:.decimals$}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 10⁻⁵⁰ · 5⁻² beyond i128s, times `k`.
+    fn tiny(k: i128) -> Rational {
+        let a = Rational::new(k, 10i128.pow(30)).unwrap_or(Rational::ONE);
+        let b = Rational::new(1, 25 * 10i128.pow(20)).unwrap_or(Rational::ONE);
+        a.checked_mul(b).unwrap_or(Rational::ONE)
+    }
+
+    /// A value only the scaled form holds prints as an exact decimal times a power of ten,
+    /// the stray 5⁻² folded (= 4 · 10⁻²), its sign in front and never inside a factor.
+    #[test]
+    fn scaled_rationals_print_as_exact_decimals() {
+        assert_eq!(tiny(1).scaled().1, 1, "the test needs the scaled form");
+        assert_ne!(tiny(1).scaled().2, 0, "the test needs the scaled form");
+        assert_eq!(rational(tiny(1)), r"4 \cdot 10^{-52}");
+        assert_eq!(rational(tiny(7)), r"2.8 \cdot 10^{-51}");
+        assert_eq!(rational(tiny(-7)), r"-2.8 \cdot 10^{-51}");
+    }
+
+    #[test]
+    fn decimals_keep_the_significant_digits_asked() {
+        assert_eq!(decimal(0.038_389_412, 6), "0.0383894");
+        assert_eq!(decimal(6.617_138e-5, 6), r"6.61714 \cdot 10^{-5}");
+        assert_eq!(decimal(-1234.5, 6), "-1234.5");
+        assert_eq!(decimal(0.0, 6), "0");
+    }
 }

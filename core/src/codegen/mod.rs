@@ -22,7 +22,7 @@ mod workspace;
 pub(crate) use bindings::check_distinct;
 pub use bindings::{BindingError, Bindings};
 pub use count::OpCount;
-pub use latex::latex;
+pub use latex::{decimal, latex};
 pub(crate) use paper::Paper;
 pub use paper::{paper_equation, paper_latex};
 pub use program::{Op, Program, Slot};

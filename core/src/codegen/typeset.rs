@@ -62,8 +62,14 @@ pub struct Typeset {
     /// The conserved momenta, `p_q = ∂L/∂q̇` for each coordinate L does not depend on.
     pub conserved: Lines,
     /// What the named quantities in the lines above stand for (`I_{xx} = …`), for a body
-    /// whose mass properties depend on fields.
+    /// whose mass properties depend on fields; for a body of literal parts, the decimal
+    /// value of each named mass property to six significant digits (`I_{1} = 7.27512 \cdot
+    /// 10^{-6}`), the table a paper prints beside its equations.
     pub definitions: Lines,
+    /// The exact values behind the decimal ones in `definitions`: each named constant's
+    /// LaTeX and the `f64` the generated code uses, written so it reads back bit for bit
+    /// (`("I_{1}", "7.275118530795e-6")`). Empty when no constant is named.
+    pub values: Cow<'static, [(Cow<'static, str>, Cow<'static, str>)]>,
     /// The operation count of each generated method.
     pub costs: Cow<'static, [MethodCost]>,
 }
@@ -78,6 +84,14 @@ impl Typeset {
             .iter()
             .find(|c| c.method == method)
             .map(|c| c.ops)
+    }
+
+    /// The exact value of the named constant printed as `symbol` (`"I_{1}"`), if one is.
+    pub fn value(&self, symbol: &str) -> Option<f64> {
+        self.values
+            .iter()
+            .find(|(s, _)| s == symbol)
+            .and_then(|(_, v)| v.parse().ok())
     }
 
     /// Every line, in order: L, the equations, the accelerations, the conserved momenta and
@@ -258,6 +272,7 @@ mod tests {
             accelerations: Cow::Borrowed(&[]),
             conserved: Cow::Borrowed(&[]),
             definitions: Cow::Borrowed(&[]),
+            values: Cow::Borrowed(&[]),
             costs: Cow::Borrowed(&[]),
         }
     }

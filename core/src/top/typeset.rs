@@ -6,6 +6,7 @@ use std::borrow::Cow;
 
 use super::derivation::TopDerivation;
 use super::scene::TopScene;
+use crate::codegen::decimal;
 use crate::codegen::{Lines, MethodCost, Paper, Program, Typeset};
 use crate::lagrange::LagrangeError;
 use crate::sym::mat3::Mat3;
@@ -71,6 +72,14 @@ impl TopScene {
     ) -> Result<Typeset, LagrangeError> {
         let top = self.derive(arena)?;
         let costs = self.costs(arena, &top, attitude, omega)?;
+        // The lines are printed from the scene with its constant mass properties named (the
+        // costs above are of the code, which uses the constants).
+        let (named, values) = self.named(arena);
+        let top = if values.is_empty() {
+            top
+        } else {
+            named.derive(arena)?
+        };
         let lagrangian = arena.sub(top.kinetic, top.potential);
         let c = top.coords().clone();
         let mut equations = Vec::with_capacity(c.len());
@@ -104,15 +113,86 @@ impl TopScene {
                     Some(format!("p_{{{}}} = {}", latex_of(arena, q), paper.latex(p)))
                 })
                 .collect();
-        let definitions = definitions(arena, &paper, &top);
+        let mut definitions = definitions(arena, &paper, &top);
+        definitions.extend(
+            values
+                .iter()
+                .map(|(symbol, v)| format!("{symbol} = {}", decimal(*v, VALUE_DIGITS))),
+        );
+        let values = values
+            .into_iter()
+            .map(|(symbol, v)| (Cow::Owned(symbol), Cow::Owned(format!("{v:?}"))))
+            .collect();
         Ok(Typeset {
             lagrangian: Cow::Owned(lagrangian),
             equations: owned(equations),
             accelerations: owned(accelerations),
             conserved: owned(conserved),
             definitions: owned(definitions),
+            values: Cow::Owned(values),
             costs: Cow::Owned(costs),
         })
+    }
+
+    /// This scene with its constant mass properties and gravity replaced by parameters named
+    /// as a textbook names them, and the LaTeX and value of each name, in order of name.
+    ///
+    /// A body of literal parts has exact rationals of twenty digits for mass properties
+    /// (values given in units or with π are f64s made exact), which would print in every
+    /// term. Named: the moments I₁, I₂, I₃ of a diagonal tensor (one name for equal moments,
+    /// so a symmetric top reads I₁, I₃), else the entries I_xx … of the tensor; the mass M;
+    /// the distance l of a centre on the z axis, else its components c_x, c_y, c_z; gravity
+    /// g. Zeros stay zeros. For a body that depends on fields only a constant that prints
+    /// long is named (a literal `0.01` among fields stays as typed). A name some symbol of
+    /// the arena already has is primed.
+    fn named(&self, arena: &mut Arena) -> (TopScene, Vec<(String, f64)>) {
+        let t = self.inertia;
+        let props = t.iter().flatten().chain(&self.center).chain([&self.mass]);
+        let literal = props.clone().all(|&e| arena.free_symbols(e).is_empty());
+        let mut namer = Namer {
+            literal,
+            values: Vec::new(),
+        };
+        let mut scene = self.clone();
+        let diagonal = [(0, 1), (0, 2), (1, 2)]
+            .iter()
+            .all(|&(i, j)| arena.as_rational(t[i][j]).is_some_and(|r| r.is_zero()));
+        if diagonal {
+            let mut seen: Vec<(ExprId, ExprId)> = Vec::new();
+            for (k, row) in t.iter().enumerate() {
+                let e = row[k];
+                let named = match seen.iter().find(|(d, _)| *d == e) {
+                    Some(&(_, n)) => n,
+                    None => namer.name(arena, e, &format!("I_{}", k + 1)),
+                };
+                seen.push((e, named));
+                scene.inertia[k][k] = named;
+            }
+        } else {
+            const AXES: [&str; 3] = ["x", "y", "z"];
+            for i in 0..3 {
+                for j in i..3 {
+                    let n = namer.name(arena, t[i][j], &format!("I_{}{}", AXES[i], AXES[j]));
+                    scene.inertia[i][j] = n;
+                    scene.inertia[j][i] = n;
+                }
+            }
+        }
+        scene.mass = namer.name(arena, self.mass, "M");
+        let on_axis = self.center[..2]
+            .iter()
+            .all(|&e| arena.as_rational(e).is_some_and(|r| r.is_zero()));
+        if on_axis {
+            scene.center[2] = namer.name(arena, self.center[2], "l");
+        } else {
+            for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+                scene.center[k] = namer.name(arena, self.center[k], &format!("c_{axis}"));
+            }
+        }
+        scene.gravity = self.gravity.map(|g| namer.name(arena, g, "g"));
+        let mut values = namer.values;
+        values.sort_by(|a, b| a.0.cmp(&b.0));
+        (scene, values)
     }
 
     /// The paper-form printer of this scene: a user torque's inputs show as τ₁, τ₂, τ₃ (its
@@ -162,6 +242,49 @@ impl TopScene {
                 ops: Program::lower(arena, outputs).op_count(),
             })
             .collect())
+    }
+}
+
+/// Significant digits of the values in the definitions (the exact ones are in
+/// [`Typeset::values`]).
+const VALUE_DIGITS: usize = 6;
+
+/// Gives names to the constants of a scene.
+struct Namer {
+    /// Every mass property is a constant: name them all.
+    literal: bool,
+    /// The LaTeX and value of each name given.
+    values: Vec<(String, f64)>,
+}
+
+impl Namer {
+    /// `e` itself unless it is a constant to name; then a fresh parameter called `name`
+    /// (primed while a symbol has the name or its LaTeX).
+    fn name(&mut self, arena: &mut Arena, e: ExprId, name: &str) -> ExprId {
+        if !arena.free_symbols(e).is_empty() {
+            return e;
+        }
+        let long = match arena.as_rational(e) {
+            Some(r) if r.is_zero() => return e,
+            Some(r) => !matches!(r.fraction(), Some((n, d)) if n.abs() < 1000 && d < 1000),
+            None => true,
+        };
+        if !self.literal && !long {
+            return e;
+        }
+        // Equal constants keep their own names (M = l = 1 is a coincidence of values);
+        // only equal moments share one, which `TopScene::named` decides.
+        let mut n = name.to_owned();
+        while arena.symbols().any(|(_, s)| s.name == n) {
+            n.push('\'');
+        }
+        let value = arena.eval(e, &[]);
+        let p = arena.parameter(&n);
+        let latex = arena
+            .as_symbol(p)
+            .map_or_else(|| n.clone(), |s| arena.symbol(s).latex.clone());
+        self.values.push((latex, value));
+        p
     }
 }
 

@@ -97,6 +97,10 @@ fn typeset_tokens(t: &Typeset) -> TokenStream {
     let conserved = lines(&t.conserved);
     let definitions = lines(&t.definitions);
     let costs = t.costs.iter().map(cost_tokens);
+    let values = t.values.iter().map(|(symbol, value)| {
+        let (symbol, value) = (symbol.as_ref(), value.as_ref());
+        quote!((#p::Cow::Borrowed(#symbol), #p::Cow::Borrowed(#value)))
+    });
     quote! {
         #p::Typeset {
             lagrangian: #p::Cow::Borrowed(#lagrangian),
@@ -104,6 +108,7 @@ fn typeset_tokens(t: &Typeset) -> TokenStream {
             accelerations: #accelerations,
             conserved: #conserved,
             definitions: #definitions,
+            values: #p::Cow::Borrowed(&[#(#values),*]),
             costs: #p::Cow::Borrowed(&[#(#costs),*]),
         }
     }

@@ -211,8 +211,29 @@ fn check_lines<T: TopDynamics + RigidBody>(
     for (i, t) in tau.iter().enumerate() {
         vars.insert(format!("\\tau_{{{}}}", i + 1), *t);
     }
+    // Named constants read exactly from `values`; their definitions give them to six digits.
+    for (symbol, _) in eq.values.iter() {
+        let v = eq.value(symbol).expect("a number");
+        vars.insert(symbol.to_string(), v);
+    }
     // Definitions may name each other: evaluate until every one is known.
-    let mut pending: Vec<&str> = eq.definitions.iter().map(AsRef::as_ref).collect();
+    let mut pending: Vec<&str> = eq
+        .definitions
+        .iter()
+        .map(AsRef::as_ref)
+        .filter(|line| {
+            let (name, value) = line.split_once(" = ").expect("a definition");
+            let Some(&exact) = vars.get(name) else {
+                return true;
+            };
+            let read = eval_ok(value, &vars);
+            assert!(
+                (read - exact).abs() <= 5e-6 * exact.abs(),
+                "{line} vs {exact}"
+            );
+            false
+        })
+        .collect();
     while !pending.is_empty() {
         let before = pending.len();
         pending.retain(|line| {
@@ -498,4 +519,132 @@ fn general_scene(a: &mut Arena) -> TopScene {
     scene.gravity = Some(a.parameter("g"));
     scene.damping = Some(a.parameter("k"));
     scene
+}
+
+/// A wooden top of literal parts in cm, g and kg/m³: a cone of wood on its apex under a
+/// brass stem. Its mass properties are exact rationals of twenty digits.
+#[derive(RigidBody)]
+#[rigid(
+    cone(density = 0.7 g/cm^3, radius = 3 cm, height = 4 cm, axis = -z, at = [0, 0, 4 cm]),
+    cylinder(mass = 12 g, radius = 5 mm, length = 3 cm, at = [0, 0, 5.5 cm]),
+    pivot = [0, 0, 0],
+)]
+#[top(gravity = 9.81)]
+struct Wooden;
+
+/// The same top tilted off its axis: a general tensor and an off-axis centre.
+#[derive(RigidBody)]
+#[rigid(
+    cone(density = 700, radius = 0.03, height = 0.04, axis = -z, at = [0.002, 0, 0.04]),
+    cuboid(mass = 12 g, size = [1 cm, 2 cm, 3 cm], at = [0, 0, 5.5 cm], rotate = x(20 deg)),
+    pivot = [0, 0, 0],
+)]
+#[top(gravity = 981 cm/s^2)]
+struct Tilted;
+
+/// A symmetric top of literal parts prints Goldstein's lines, the very strings of the top
+/// whose mass properties are fields, with its values named I₁, I₃, M, l, g; the table gives
+/// them to six digits and `values` exactly, both checked against `inertia()`, `principal()`,
+/// `mass()` and `center_of_mass()`; no line holds a long number.
+#[test]
+fn a_literal_top_prints_named_mass_properties() {
+    let eq = Wooden.equations();
+    let field = HEAVY.equations();
+    assert_eq!(eq.lagrangian, field.lagrangian);
+    for (l, f) in eq.equations.iter().zip(field.equations.iter()) {
+        assert_eq!(l, f);
+    }
+    assert_eq!(eq.accelerations, field.accelerations);
+    assert_eq!(eq.conserved, field.conserved);
+    let i = Wooden.inertia();
+    let moments = Wooden.principal().moments;
+    let expected = [
+        ("I_{1}", i[(0, 0)], "6.61714 \\cdot 10^{-5}"),
+        ("I_{3}", i[(2, 2)], "7.27513 \\cdot 10^{-6}"),
+        ("M", Wooden.mass(), "0.0383894"),
+        ("g", 9.81, "9.81"),
+        ("l", Wooden.center_of_mass().z, "0.0378147"),
+    ];
+    assert_eq!(eq.values.len(), expected.len());
+    assert_eq!(eq.definitions.len(), expected.len());
+    for ((symbol, value, printed), line) in expected.into_iter().zip(eq.definitions.iter()) {
+        let exact = eq
+            .value(symbol)
+            .unwrap_or_else(|| panic!("no value {symbol}"));
+        assert!(
+            (exact - value).abs() <= 1e-15 * value.abs(),
+            "{symbol}: {exact} vs {value}"
+        );
+        assert_eq!(line, &format!("{symbol} = {printed}"));
+        let read = eval_ok(printed, &HashMap::new());
+        assert!(
+            (read - value).abs() <= 5e-6 * value.abs(),
+            "{line} vs {value}"
+        );
+    }
+    // The principal moments are I₁, I₁, I₃ (a cone and a cylinder on one axis).
+    let exact = |s| eq.value(s).unwrap_or(f64::NAN);
+    assert!(
+        (moments.x - exact("I_{1}")).abs() <= 1e-15 && (moments.z - exact("I_{3}")).abs() <= 1e-15
+    );
+    for line in eq.lines() {
+        assert!(
+            !line.contains("\\cdot") || eq.definitions.iter().any(|d| d == line),
+            "{line}"
+        );
+        let longest = line
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max()
+            .unwrap_or(0);
+        assert!(longest <= 7, "a long number in {line}");
+    }
+}
+
+/// Every printed line of literal tops, read back with the exact values of their names,
+/// agrees with the generated code, and its table with the body's mass properties.
+#[test]
+fn every_line_of_a_literal_top_evaluates_to_the_generated_code() {
+    check_lines(&Wooden, &[], [0.0; 3], 9.81, 4);
+    check_lines(&Tilted, &[], [0.0; 3], 9.81, 5);
+    let eq = Tilted.equations();
+    let i = Tilted.inertia();
+    let c = Tilted.center_of_mass();
+    let mut named = 0;
+    for (symbol, value) in [
+        ("I_{xx}", i[(0, 0)]),
+        ("I_{xy}", i[(0, 1)]),
+        ("I_{xz}", i[(0, 2)]),
+        ("I_{yy}", i[(1, 1)]),
+        ("I_{yz}", i[(1, 2)]),
+        ("I_{zz}", i[(2, 2)]),
+        ("M", Tilted.mass()),
+        ("c_{x}", c.x),
+        ("c_{y}", c.y),
+        ("c_{z}", c.z),
+        ("g", 9.81),
+    ] {
+        // A zero stays a zero: only nonzero values are named.
+        let exact = eq.value(symbol).unwrap_or(0.0);
+        named += usize::from(exact != 0.0);
+        assert!(
+            (exact - value).abs() <= 1e-14 * value.abs(),
+            "{symbol}: {exact} vs {value} in {:?}",
+            eq.values
+        );
+    }
+    assert_eq!(named, eq.values.len());
+    assert!(named >= 8, "{:?}", eq.values);
+    // The definitions hold the decimals; no other line holds a number past 7 digits.
+    for line in eq
+        .lines()
+        .filter(|l| !eq.definitions.iter().any(|d| d == l))
+    {
+        let longest = line
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max()
+            .unwrap_or(0);
+        assert!(longest <= 7, "a long number in {line}");
+    }
 }
