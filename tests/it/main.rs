@@ -175,6 +175,7 @@ mod values {
 /// What every scene offers alike: parameters checked by every integrator before its first
 /// step, the closed-form theory from a derived top, the quantities of a run.
 mod scenes {
+    mod accessors;
     mod checks;
     mod quantities;
     mod theory;

@@ -58,6 +58,31 @@ pub trait FreeDynamics: RigidBody {
     /// when gravity is all that acts (the exact flow then applies).
     const BEYOND_GRAVITY: Option<&'static str>;
 
+    /// The slot of the state component called `name` in the array of [`super::layout`], if
+    /// there is one, by the names of [`FreeQuantities::state_names`](super::FreeQuantities::state_names)
+    /// (`x`, `vx`, `qw`, `omega_2`, …). The derive gives the same slots as consts named in
+    /// capitals (`Self::VX`, `Self::OMEGA_2`), as a mechanism's coordinates.
+    ///
+    /// ```
+    /// use precess::free::{FreeDynamics, layout};
+    /// use precess::prelude::*;
+    ///
+    /// #[derive(RigidBody)]
+    /// #[rigid(sphere(mass = 1.0, radius = 0.1))]
+    /// #[free(gravity = 9.81)]
+    /// struct Ball;
+    ///
+    /// assert_eq!(Ball::coordinate("vz"), Some(layout::VELOCITY + 2));
+    /// assert_eq!(Ball::OMEGA_1, layout::OMEGA);
+    /// assert_eq!(Ball::coordinate("theta"), None);
+    /// ```
+    fn coordinate(name: &str) -> Option<usize>
+    where
+        Self: Sized,
+    {
+        super::STATE_NAMES.iter().position(|&c| c == name)
+    }
+
     /// Principal moments about the centre of mass and the rotation from principal to
     /// description axes (the frame of the state's attitude and ω).
     fn principal_cm(&self) -> Principal;

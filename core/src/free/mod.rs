@@ -36,7 +36,7 @@ pub use exact::FreeExact;
 pub use flight::{FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
-pub use quantities::FreeQuantities;
+pub use quantities::{FreeQuantities, STATE_NAMES};
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};

@@ -6,6 +6,13 @@ use super::dynamics::FreeDynamics;
 use super::state::STATE_LEN;
 use crate::ode::Quantities;
 
+/// The names of the state's slots, in the order of [`super::layout`]: what
+/// [`FreeQuantities::state_names`] heads the CSV with and [`FreeDynamics::coordinate`] looks
+/// up (the derive's consts `X` … `OMEGA_3` are the same slots in capitals).
+pub const STATE_NAMES: [&str; STATE_LEN] = [
+    "x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "omega_1", "omega_2", "omega_3",
+];
+
 /// The standard quantities of a free body over its state (the array of [`super::layout`]):
 /// `energy` (½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x), `power` (dE/dt of every force but gravity),
 /// `p` (|M v|) and `L` (|x × M v + R I ω|, about the space origin), then that angular
@@ -83,11 +90,7 @@ impl<'a, F: FreeDynamics> FreeQuantities<'a, F> {
     /// assert_eq!(names[layout::OMEGA + 2], "omega_3");
     /// ```
     pub fn state_names() -> [String; STATE_LEN] {
-        [
-            "x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "omega_1", "omega_2",
-            "omega_3",
-        ]
-        .map(String::from)
+        STATE_NAMES.map(String::from)
     }
 }
 

@@ -16,8 +16,8 @@
 //!   generic O(n) reference the benchmarks compare against.
 //! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
-//! - [`MechanismQuantities`] gives a run's trajectory the energy, power and conserved momenta
-//!   per sample, named as a top's.
+//! - [`MechanismQuantities`] gives a run's trajectory the energy, its kinetic and potential
+//!   parts, the power and every generalised momentum per sample, named as a top's.
 //! - [`rolling`]: bodies whose wheels roll without slip on a floor (nonholonomic rows, the
 //!   Whipple bicycle), [`MechanismScene::derive_rolling`] and [`rolling::RollingDynamics`].
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`

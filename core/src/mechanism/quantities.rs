@@ -1,21 +1,17 @@
-//! The standard quantities of a derived mechanism as trajectory columns: energy, power and the
-//! conserved momenta, per sample of a run over `[q, q̇]`, named as a top's are.
+//! The standard quantities of a derived mechanism as trajectory columns: energy and its two
+//! parts, power and every generalised momentum, per sample of a run over `[q, q̇]`, named as a
+//! top's are.
 
 use super::dynamics::{MechanismDynamics, split_state};
 use crate::ode::Quantities;
 
-/// A generic state at which [`MechanismQuantities::new`] asks which momenta the mechanism
-/// conserves (the answer depends on the mechanism, not on the state).
-fn probe<const N: usize>() -> ([f64; N], [f64; N]) {
-    let q = std::array::from_fn(|i| 0.3 + 0.1 * i as f64);
-    let qdot = std::array::from_fn(|i| 0.1 + 0.05 * i as f64);
-    (q, qdot)
-}
-
 /// The standard quantities of a mechanism of `N` coordinates over the state `[q, q̇]` of
-/// `S = 2N` numbers (the generated `System` impl's): `energy` (T + V), `power` (dE/dt of the
-/// loads E does not hold), then each conserved momentum `p_<coordinate>`, as
-/// a top's `TopQuantities` names them.
+/// `S = 2N` numbers (the generated `System` impl's): `energy` (T + V), `kinetic` (T),
+/// `potential` (V), `power` (dE/dt of the loads E does not hold), then the generalised
+/// momentum `p_<coordinate>` = ∂L/∂q̇ = (M(q) q̇)ᵢ of every coordinate
+/// ([`MechanismDynamics::momenta`]), as a top's `TopQuantities` names its momenta. Those of
+/// the cyclic coordinates ([`MechanismDynamics::conserved_momenta`]) stay constant along a
+/// run; the others are there to be read (an impulse, a phase portrait in (q, p)).
 ///
 /// Add them to a run with [`Run::quantities`](crate::ode::Run::quantities); name the state
 /// columns with [`MechanismQuantities::state_names`].
@@ -23,7 +19,8 @@ fn probe<const N: usize>() -> ([f64; N], [f64; N]) {
 /// # Examples
 ///
 /// A pendulum of unit mass on a massless rod of length 2 under g = 9.81, released at rest
-/// from θ0 = 0.5: E = −m g l cos θ0 all along, and the power is zero.
+/// from θ0 = 0.5: E = −m g l cos θ0 all along, and the power is zero. At t = 0, T = 0,
+/// V = E and p_θ = m l² θ̇ = 0.
 ///
 /// ```
 /// use approx::assert_relative_eq;
@@ -42,17 +39,21 @@ fn probe<const N: usize>() -> ([f64; N], [f64; N]) {
 ///     .sample_every(0.5)
 ///     .quantities(MechanismQuantities::new(&Pendulum))
 ///     .integrate()?;
-/// assert_eq!(out.trajectory.quantity_names(), ["energy", "power"]);
+/// let names = ["energy", "kinetic", "potential", "power", "p_theta"];
+/// assert_eq!(out.trajectory.quantity_names(), names);
 /// for e in out.trajectory.column("energy").unwrap() {
 ///     assert_relative_eq!(e, -9.81 * 2.0 * 0.5f64.cos(), max_relative = 1e-10);
 /// }
+/// let q0 = out.trajectory.quantities(0).unwrap();
+/// assert_eq!((q0[1], q0[4]), (0.0, 0.0));
+/// assert_relative_eq!(q0[2], -9.81 * 2.0 * 0.5f64.cos(), max_relative = 1e-14);
 /// assert_eq!(MechanismQuantities::<Pendulum, 1>::state_names(), ["theta", "theta_dot"]);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
 /// A unit mass a unit length down a hinge about x, on a massless turntable about the vertical:
 /// gravity does not read φ, so p_φ = m l² sin²θ φ̇ is conserved, sin²(0.5) · 2 from θ0 = 0.5
-/// and φ̇0 = 2.
+/// and φ̇0 = 2, while p_θ = m l² θ̇ is not.
 ///
 /// ```
 /// use approx::assert_relative_eq;
@@ -74,7 +75,8 @@ fn probe<const N: usize>() -> ([f64; N], [f64; N]) {
 ///     .sample_every(0.5)
 ///     .quantities(MechanismQuantities::new(&Conical))
 ///     .integrate()?;
-/// assert_eq!(out.trajectory.quantity_names(), ["energy", "power", "p_phi"]);
+/// let names = ["energy", "kinetic", "potential", "power", "p_phi", "p_theta"];
+/// assert_eq!(out.trajectory.quantity_names(), names);
 /// for p in out.trajectory.column("p_phi").unwrap() {
 ///     assert_relative_eq!(p, 0.5f64.sin().powi(2) * 2.0, max_relative = 1e-10);
 /// }
@@ -83,19 +85,12 @@ fn probe<const N: usize>() -> ([f64; N], [f64; N]) {
 #[derive(Debug, Clone, Copy)]
 pub struct MechanismQuantities<'a, D, const N: usize> {
     mechanism: &'a D,
-    /// Which coordinates' momenta the mechanism conserves.
-    conserved: [bool; N],
 }
 
 impl<'a, D: MechanismDynamics<N>, const N: usize> MechanismQuantities<'a, D, N> {
     /// The quantities of `mechanism`.
     pub fn new(mechanism: &'a D) -> Self {
-        let (q, qdot) = probe::<N>();
-        let conserved = mechanism.conserved_momenta(&q, &qdot).map(|p| p.is_some());
-        Self {
-            mechanism,
-            conserved,
-        }
+        Self { mechanism }
     }
 
     /// The names of the state `[q, q̇]`, for
@@ -112,15 +107,12 @@ impl<D: MechanismDynamics<N>, const N: usize, const S: usize> Quantities<[f64; S
     for MechanismQuantities<'_, D, N>
 {
     fn names(&self) -> Vec<String> {
-        let mut names = vec!["energy".to_string(), "power".to_string()];
-        for (name, _) in D::COORDINATES
-            .iter()
-            .zip(self.conserved)
-            .filter(|(_, c)| *c)
-        {
-            names.push(format!("p_{name}"));
-        }
-        names
+        let momenta = D::COORDINATES.iter().map(|name| format!("p_{name}"));
+        ["energy", "kinetic", "potential", "power"]
+            .map(String::from)
+            .into_iter()
+            .chain(momenta)
+            .collect()
     }
 
     fn evaluate(&mut self, t: f64, y: &[f64; S], out: &mut [f64]) {
@@ -129,19 +121,18 @@ impl<D: MechanismDynamics<N>, const N: usize, const S: usize> Quantities<[f64; S
             out.fill(f64::NAN);
             return;
         };
-        let momenta = self.mechanism.conserved_momenta(&q, &qdot);
-        let conserved = momenta
-            .iter()
-            .zip(self.conserved)
-            .filter(|(_, c)| *c)
-            // A mechanism conserves a momentum everywhere or nowhere; NaN would say otherwise.
-            .map(|(p, _)| p.unwrap_or(f64::NAN));
+        let (kinetic, potential) = (
+            self.mechanism.kinetic(&q, &qdot),
+            self.mechanism.potential(&q),
+        );
         let values = [
-            self.mechanism.energy(&q, &qdot),
+            kinetic + potential,
+            kinetic,
+            potential,
             self.mechanism.power(t, &q, &qdot),
         ]
         .into_iter()
-        .chain(conserved);
+        .chain(self.mechanism.momenta(&q, &qdot));
         for (o, v) in out.iter_mut().zip(values) {
             *o = v;
         }

@@ -65,6 +65,31 @@ pub trait TopDynamics: RigidBody {
     /// (the heavy-top closed forms of [`TopDynamics::theory`] then apply).
     const BEYOND_GRAVITY: Option<&'static str> = None;
 
+    /// The index of the angle called `name` in q and q̇ of [`TopDynamics::SEQUENCE`] (`"phi"`,
+    /// `"theta"`, `"psi"` in ZXZ; `"yaw"`, `"pitch"`, `"roll"` in ZYX), if there is one: in
+    /// the state `[q, q̇]` the angle is slot i and its rate slot 3 + i. The derive gives the
+    /// same indices as consts named in capitals (`Self::THETA`), as a mechanism's.
+    ///
+    /// ```
+    /// use precess::prelude::*;
+    ///
+    /// #[derive(RigidBody)]
+    /// #[rigid(body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+    ///         pivot = [0.0, 0.0, 0.0])]
+    /// #[top(gravity = 9.81)]
+    /// struct Heavy;
+    ///
+    /// assert_eq!(Heavy::coordinate("theta"), Some(Heavy::THETA));
+    /// assert_eq!((Heavy::PHI, Heavy::THETA, Heavy::PSI), (0, 1, 2));
+    /// assert_eq!(Heavy::coordinate("roll"), None);
+    /// ```
+    fn coordinate(name: &str) -> Option<usize>
+    where
+        Self: Sized,
+    {
+        Self::SEQUENCE.names().iter().position(|&c| c == name)
+    }
+
     /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
     fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
 

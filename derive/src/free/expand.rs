@@ -3,11 +3,11 @@
 //! quoted into `impl FreeDynamics for …`.
 
 use precess_core::codegen::{Emitted, f64_literal};
-use precess_core::free::{CmFrame, FreeDerivation, FreeScene, STATE_LEN, cm_frame};
+use precess_core::free::{CmFrame, FreeDerivation, FreeScene, STATE_LEN, STATE_NAMES, cm_frame};
 use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
-use quote::{ToTokens, quote};
+use quote::{ToTokens, format_ident, quote};
 use syn::LitStr;
 
 use super::check::FreeSettings;
@@ -207,8 +207,14 @@ pub fn expand(
         None => quote!(::core::option::Option::None),
     };
     let check = check_parameters(parameters, &low, arena, settings);
+    let slots = slot_consts(ident);
     Some(quote! {
         #taylor
+
+        #[automatically_derived]
+        impl #ident {
+            #(#slots)*
+        }
 
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -342,4 +348,22 @@ fn check_parameters(
         }
         ::core::result::Result::Ok(())
     })
+}
+
+/// A const per slot of the state, named in capitals after [`STATE_NAMES`] (`X`, `VX`, `QW`,
+/// `OMEGA_2`, …), as a mechanism's derive names its coordinates: `y[Body::VZ]` reads what the
+/// CSV column `vz` holds.
+fn slot_consts(ident: &syn::Ident) -> Vec<TokenStream> {
+    STATE_NAMES
+        .iter()
+        .enumerate()
+        .map(|(k, name)| {
+            let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
+            let doc = format!("The slot of `{name}` in the free body's state array.");
+            quote! {
+                #[doc = #doc]
+                pub const #upper: usize = #k;
+            }
+        })
+        .collect()
 }

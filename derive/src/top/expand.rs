@@ -9,7 +9,7 @@ use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId};
 use precess_core::top::{TopDerivation, TopScene};
 use proc_macro2::TokenStream;
-use quote::{quote, quote_spanned};
+use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
 use super::check::TopSettings;
@@ -182,8 +182,24 @@ pub fn expand(
             quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
         )
     });
+    let angles = scene.sequence.names().into_iter().enumerate().map(|(k, name)| {
+        let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
+        let doc = format!(
+            "The index of the angle `{name}` in q and q̇ of the declared chart (its rate is slot {} of the state [q, q̇]).",
+            k + 3
+        );
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #k;
+        }
+    });
     Some(quote! {
         #taylor
+
+        #[automatically_derived]
+        impl #ident {
+            #(#angles)*
+        }
 
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
