@@ -13,6 +13,8 @@ use precess::ode::{AdaptiveConfig, Dop853, Quantities, Run};
 use precess::prelude::*;
 use proptest::prelude::*;
 
+use crate::common::mechanism::examples::double_pendulum::DoublePendulum;
+
 /// A 2 kg box of 10 × 20 × 30 cm, force-free.
 #[derive(RigidBody)]
 #[rigid(cuboid(mass = 2.0, size = [0.1, 0.2, 0.3]))]
@@ -83,21 +85,8 @@ fn a_tumbling_box_keeps_the_angular_momentum_formed_by_hand() {
     );
 }
 
-/// A double pendulum of point masses on relative angles (θ1 of the upper rod from the
-/// downward vertical, θ2 of the lower rod from the upper one), both hinges about x.
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81)]
-#[body(upper, parent = ground, joint = revolute(name = shoulder, axis = x), q = theta1,
-       parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
-#[body(lower, parent = upper, joint = revolute(name = elbow, axis = x, at = [0.0, 0.0, -l1]),
-       q = theta2, parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
-struct DoublePendulum {
-    m1: f64,
-    l1: f64,
-    m2: f64,
-    l2: f64,
-}
-
+// The double pendulum of `examples/double_pendulum.rs` (relative angles: θ1 of the upper
+// rod from the downward vertical, θ2 of the lower rod from the upper one; point masses).
 const PENDULUM: DoublePendulum = DoublePendulum {
     m1: 1.3,
     l1: 0.9,
