@@ -22,35 +22,13 @@ use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
+#[path = "common/peer_problems.rs"]
+mod peer_problems;
+use peer_problems::{EulerPoisson, FreeEquations};
+
 const FREE_I: [f64; 3] = [3.0, 5.0, 9.0];
 const THETA0_DEG: f64 = 20.0;
 const SPIN: f64 = 150.0;
-
-precess::taylor_system! {
-    /// The heavy top in Euler–Poisson form, as `benches/ensemble.rs` and heyoka integrate
-    /// it (the constants of `SpinningTop` written out).
-    #[derive(Clone, Copy, Debug)]
-    struct EulerPoisson;
-    state [w1, w2, w3, g1, g2, g3];
-    taylor = 24;
-    d/dt w1 = 0.7338597364012156 * w2 * w3 + 169.65662315850153 * g2;
-    d/dt w2 = -0.7338597364012156 * w3 * w1 - 169.65662315850153 * g1;
-    d/dt w3 = 0.0 * w3;
-    d/dt g1 = g2 * w3 - g3 * w2;
-    d/dt g2 = g3 * w1 - g1 * w3;
-    d/dt g3 = g1 * w2 - g2 * w1;
-}
-
-precess::taylor_system! {
-    /// The torque-free body ṁ = m × I⁻¹m for I = (3, 5, 9).
-    #[derive(Clone, Copy, Debug)]
-    struct FreeEquations;
-    state [m1, m2, m3];
-    taylor = 24;
-    d/dt m1 = -0.0888888888888889 * m2 * m3;
-    d/dt m2 = 0.2222222222222222 * m3 * m1;
-    d/dt m3 = -0.1333333333333333 * m1 * m2;
-}
 
 /// The heavy top's span, 10¼ exact nutation periods, and its exact cos θ there.
 fn heavy_top_reference() -> (f64, f64) {
