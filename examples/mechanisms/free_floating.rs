@@ -47,3 +47,30 @@ pub fn cuboid_moments(m: f64, [a, b, c]: [f64; 3]) -> [f64; 3] {
         m * (a * a + b * b) / 12.0,
     ]
 }
+
+/// The bus's roll θ as a function of the hinge angle β when the satellite's angular
+/// momentum is zero and it moves in the plane normal to x (the panel released at rest from
+/// `beta0`). The two bodies joined at the hinge have, about their common centre,
+/// L = I₁ θ̇ + I₂ (θ̇ + β̇) + μ r² (θ̇ + α'(β) β̇) = 0, with I₁, I₂ the moments about x, μ the
+/// reduced mass, r = a + Rx(β) d the vector between the centres in bus axes
+/// (r² = a² + d² + 2 a d cos β) and α'(β) r² = d (d + a cos β) the turning of r with β. So
+/// dθ/dβ = −(I₂ + μ d (d + a cos β)) / (I₁ + I₂ + μ r²), a function of β alone, and θ is its
+/// integral from `beta0` (Simpson's rule on 2 000 intervals, exact to rounding here).
+pub fn roll_at_zero_momentum(beta0: f64, beta: f64) -> f64 {
+    let i1 = cuboid_moments(BUS_MASS, BUS_SIZE)[0];
+    let i2 = cuboid_moments(PANEL_MASS, PANEL_SIZE)[0];
+    let mu = BUS_MASS * PANEL_MASS / (BUS_MASS + PANEL_MASS);
+    let (a, d) = (HINGE, PANEL_ARM);
+    let f = |b: f64| {
+        let r2 = a * a + d * d + 2.0 * a * d * b.cos();
+        (i2 + mu * d * (d + a * b.cos())) / (i1 + i2 + mu * r2)
+    };
+    let n = 2000;
+    let h = (beta - beta0) / f64::from(n);
+    let mut sum = f(beta0) + f(beta);
+    for k in 1..n {
+        let w = if k % 2 == 1 { 4.0 } else { 2.0 };
+        sum += w * f(beta0 + h * f64::from(k));
+    }
+    -sum * h / 3.0
+}

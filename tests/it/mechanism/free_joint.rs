@@ -11,6 +11,7 @@ use crate::common;
 
 use common::mechanism::examples::free_floating::{
     BUS_MASS, BUS_SIZE, HINGE, PANEL_ARM, PANEL_MASS, PANEL_SIZE, Satellite, cuboid_moments,
+    roll_at_zero_momentum,
 };
 use precess::exact::FreeBodyExact;
 use precess::mechanism::charts::{ChartedDynamics, ChartedMechanism, MechanismCharts};
@@ -282,31 +283,6 @@ fn a_thrown_satellite_keeps_its_momenta_and_its_centre_falls_on_the_parabola() {
     assert!(energy < 1e-10, "energy: {energy:e}");
 }
 
-/// The bus's roll as a function of the hinge angle at zero angular momentum, for the
-/// planar motion about x: two bodies joined at the hinge have
-/// L = I₁ Ω + I₂ (Ω + β̇) + μ r² (Ω + α'(β) β̇) = 0 about the common centre, with μ the reduced
-/// mass, r the vector between the centres (a + Rx(β) d in bus axes, r² = a² + d² + 2 a d cos β)
-/// and α'(β) r² = d (d + a cos β), so dΩ/dβ = −f(β), f = (I₂ + μ d (d + a cos β)) / (I₁ + I₂ +
-/// μ r²): the roll is −∫ f dβ from the start, by Simpson's rule.
-fn roll_at(beta0: f64, beta: f64) -> f64 {
-    let i1 = cuboid_moments(BUS_MASS, BUS_SIZE)[0];
-    let i2 = cuboid_moments(PANEL_MASS, PANEL_SIZE)[0];
-    let mu = BUS_MASS * PANEL_MASS / (BUS_MASS + PANEL_MASS);
-    let (a, d) = (HINGE, PANEL_ARM);
-    let f = |b: f64| {
-        let r2 = a * a + d * d + 2.0 * a * d * b.cos();
-        (i2 + mu * d * (d + a * b.cos())) / (i1 + i2 + mu * r2)
-    };
-    let n = 2000;
-    let h = (beta - beta0) / f64::from(n);
-    let mut sum = f(beta0) + f(beta);
-    for k in 1..n {
-        let w = if k % 2 == 1 { 4.0 } else { 2.0 };
-        sum += w * f(beta0 + h * f64::from(k));
-    }
-    -sum * h / 3.0
-}
-
 #[test]
 fn a_satellite_at_zero_angular_momentum_turns_its_bus_as_its_panel_swings() {
     // In orbit (no gravity), released at rest with the panel sprung 1 rad open: L = 0
@@ -328,7 +304,7 @@ fn a_satellite_at_zero_angular_momentum_turns_its_bus_as_its_panel_swings() {
         worst_l = worst_l.max(l.norm() / scale);
         let r = run.joint_rotation(0).unwrap();
         let roll = r[(2, 1)].atan2(r[(1, 1)]);
-        let expected = roll_at(beta0, run.state()[Satellite::BETA]);
+        let expected = roll_at_zero_momentum(beta0, run.state()[Satellite::BETA]);
         worst_roll = worst_roll.max((roll - expected).abs());
         turned = turned.max(roll.abs());
         // Planar: the bus turns about x alone.
