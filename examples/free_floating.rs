@@ -66,8 +66,8 @@ fn totals(run: &ChartedMechanism<&Satellite, 14>) -> Option<[Vector3<f64>; 3]> {
     let center = (centers[0] * masses[0] + centers[1] * masses[1]) / total;
     let velocity = (velocities[0] * masses[0] + velocities[1] * masses[1]) / total;
     let mut l = r * i_bus * omega + r * turn * i_panel * panel_omega;
-    for i in 0..2 {
-        l += masses[i] * (centers[i] - center).cross(&(velocities[i] - velocity));
+    for ((&m, c), v) in masses.iter().zip(&centers).zip(&velocities) {
+        l += m * (c - center).cross(&(v - velocity));
     }
     Some([center, velocity, l])
 }

@@ -225,9 +225,9 @@ fn totals(b: &Bodies, g: f64, k: f64, beta: f64) -> Totals {
     let velocity = (b.velocities[0] * masses[0] + b.velocities[1] * masses[1]) / total;
     let mut angular = b.spins[0] + b.spins[1];
     let mut energy = b.rotational[0] + b.rotational[1] + 0.5 * k * beta * beta;
-    for i in 0..2 {
-        angular += masses[i] * (b.centers[i] - center).cross(&(b.velocities[i] - velocity));
-        energy += 0.5 * masses[i] * b.velocities[i].norm_squared() + masses[i] * g * b.centers[i].z;
+    for ((&m, c), v) in masses.iter().zip(&b.centers).zip(&b.velocities) {
+        angular += m * (c - center).cross(&(v - velocity));
+        energy += 0.5 * m * v.norm_squared() + m * g * c.z;
     }
     Totals {
         center,
