@@ -86,6 +86,7 @@ mod mechanism {
     mod engine;
     mod errors;
     mod examples;
+    mod free_joint;
     mod jacobian;
     mod kane;
     mod parameters;

@@ -152,7 +152,7 @@ impl MechanismAba {
                     let (outer, inner) = (numeric(&axes[0])?, numeric(&axes[1])?);
                     super::check_universal_axes(joint, outer, inner)?;
                 }
-                super::JointKind::Spherical { .. } => {}
+                super::JointKind::Spherical { .. } | super::JointKind::Free { .. } => {}
             }
         }
         let (symbolic, _) = flatten(arena, scene)?;

@@ -73,6 +73,25 @@ pub enum MechanismError {
         /// Its second value.
         second: f64,
     },
+    /// A free joint hanging from a body rather than the ground: a free joint attaches a
+    /// mechanism's base body to the ground.
+    #[error(
+        "free joint `{joint}` hangs from body `{parent}`: a free joint attaches the base body to the ground (use a spherical or other joint between bodies)"
+    )]
+    FreeJointNotOnGround {
+        /// The joint.
+        joint: String,
+        /// The body it hangs from (its index when there is no such body).
+        parent: String,
+    },
+    /// A second free joint: a mechanism has one base body flying free.
+    #[error("free joints `{first}` and `{second}`: a mechanism has at most one, on its base body")]
+    SecondFreeJoint {
+        /// The first free joint, in body order.
+        first: String,
+        /// The second.
+        second: String,
+    },
     /// A joint with the wrong number of coordinate names.
     #[error("joint `{joint}` ({kind}) has {got} coordinate names, expected {expected}")]
     WrongCoordinateCount {

@@ -27,7 +27,8 @@
 //! sine term carries a square root), except that an axis along x, y or z uses the
 //! elementary rotation so the trigonometry stays canonical; its ω_rel is n q̇. A universal
 //! joint is two revolutes, a spherical joint the Euler angles of its sequence (the tops'
-//! charts).
+//! charts), a free joint the translation d = (x, y, z) in the parent's axes followed by the
+//! Euler angles of its sequence.
 
 use super::error::MechanismError;
 use super::scene::{JointKind, MechanismScene, Parent};
@@ -185,6 +186,14 @@ fn joint_motion(
             JointMotion {
                 rotation: sequence.rotation(arena, q),
                 translation: [z; 3],
+                omega: sequence.body_rates(arena, &coords),
+            }
+        }
+        JointKind::Free { sequence } => {
+            let coords = Coordinates::from_symbols(arena, &q[3..6])?;
+            JointMotion {
+                rotation: sequence.rotation(arena, &q[3..6]),
+                translation: [q[0], q[1], q[2]],
                 omega: sequence.body_rates(arena, &coords),
             }
         }

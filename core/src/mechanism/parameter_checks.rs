@@ -64,7 +64,7 @@ impl ParameterChecks {
                     (std::slice::from_ref(axis), false)
                 }
                 JointKind::Universal { axes } => (axes, true),
-                JointKind::Spherical { .. } => (&[], false),
+                JointKind::Spherical { .. } | JointKind::Free { .. } => (&[], false),
             };
             // Constant axes met the same rules in `MechanismScene::validate`.
             if axes.iter().flatten().all(constant) {

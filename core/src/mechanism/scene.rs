@@ -10,7 +10,9 @@
 //!   coordinates the child's frame is the parent's frame translated to `at`; the joint then
 //!   moves it: a revolute turns it by q about `axis`, a prismatic slides it by q along `axis`,
 //!   a universal turns it by q₁ about `axes[0]` and then by q₂ about `axes[1]` (the second
-//!   axis in the once-turned frame), a spherical turns it by the Euler angles of `sequence`.
+//!   axis in the once-turned frame), a spherical turns it by the Euler angles of `sequence`,
+//!   and a free joint slides it by (x, y, z) along the parent's axes and then turns it by the
+//!   Euler angles of `sequence` (six coordinates: a base body flying free of the ground).
 //! - Axes are in the parent's frame and need not be unit vectors (they are normalised).
 
 use crate::rigid::AngleSequence;
@@ -50,6 +52,14 @@ pub enum JointKind {
         /// The angle sequence (the tops' [`AngleSequence`]).
         sequence: AngleSequence,
     },
+    /// Six coordinates: the body frame's origin slides by (x, y, z) along the parent's axes
+    /// (the ground's, since a free joint attaches a base body to the ground), then turns by
+    /// the three Euler angles of `sequence`, charted and re-charted as a spherical joint's
+    /// are. A free-floating mechanism: a satellite with a panel, a thrown linkage.
+    Free {
+        /// The angle sequence of the three rotations.
+        sequence: AngleSequence,
+    },
 }
 
 impl JointKind {
@@ -59,12 +69,14 @@ impl JointKind {
             JointKind::Revolute { .. } | JointKind::Prismatic { .. } => 1,
             JointKind::Universal { .. } => 2,
             JointKind::Spherical { .. } => 3,
+            JointKind::Free { .. } => 6,
         }
     }
 
     /// The kinds' names in the attribute language (`joint = revolute(..)`): the one list,
     /// which the derive reads too.
-    pub const NAMES: [&'static str; 4] = ["revolute", "prismatic", "universal", "spherical"];
+    pub const NAMES: [&'static str; 5] =
+        ["revolute", "prismatic", "universal", "spherical", "free"];
 
     /// The kind's name in the attribute language, one of [`JointKind::NAMES`].
     pub fn name(&self) -> &'static str {
@@ -73,6 +85,18 @@ impl JointKind {
             JointKind::Prismatic { .. } => JointKind::NAMES[1],
             JointKind::Universal { .. } => JointKind::NAMES[2],
             JointKind::Spherical { .. } => JointKind::NAMES[3],
+            JointKind::Free { .. } => JointKind::NAMES[4],
+        }
+    }
+
+    /// The Euler-angle sequence and the offset of the first angle among the joint's
+    /// coordinates, for the joints whose rotation is three Euler angles (spherical: 0,
+    /// free: 3, after its translations); `None` for the others.
+    pub fn euler_angles(&self) -> Option<(AngleSequence, usize)> {
+        match self {
+            JointKind::Spherical { sequence } => Some((*sequence, 0)),
+            JointKind::Free { sequence } => Some((*sequence, 3)),
+            _ => None,
         }
     }
 }

@@ -17,13 +17,16 @@ impl MechanismScene {
     /// the parents form no cycle; no axis is identically zero, and axes of constants meet
     /// [`crate::mechanism::check_axis`] and, for a universal joint,
     /// [`crate::mechanism::check_universal_axes`] (axes of parameters are checked for their
-    /// values by the run-time model, by the same functions).
+    /// values by the run-time model, by the same functions); a free joint hangs from the
+    /// ground, and there is at most one.
     ///
     /// # Errors
     /// [`MechanismError::NoMovingJoint`], [`MechanismError::WrongCoordinateCount`],
     /// [`MechanismError::WrongLoadCount`], [`MechanismError::DuplicateName`],
     /// [`MechanismError::UnknownParent`], [`MechanismError::Cycle`],
-    /// [`MechanismError::ZeroAxis`], [`MechanismError::ParallelAxes`], each naming the body,
+    /// [`MechanismError::ZeroAxis`], [`MechanismError::ParallelAxes`],
+    /// [`MechanismError::FreeJointNotOnGround`], [`MechanismError::SecondFreeJoint`], each
+    /// naming the body,
     /// joint or coordinate.
     ///
     /// # Examples
@@ -95,7 +98,38 @@ impl MechanismScene {
             }
             literal_axes(arena, joint)?;
         }
+        self.free_joints()?;
         self.topological_order()
+    }
+
+    /// A free joint flies its body free of the ground: it must hang from the ground (a body
+    /// free of another body is a second tree, or a six-coordinate joint the engine does not
+    /// chart), and there is at most one, the base body's (two would be two mechanisms).
+    fn free_joints(&self) -> Result<(), MechanismError> {
+        let mut first: Option<&str> = None;
+        for body in &self.bodies {
+            let joint = &body.joint;
+            if !matches!(joint.kind, JointKind::Free { .. }) {
+                continue;
+            }
+            if let Parent::Body(p) = joint.parent {
+                return Err(MechanismError::FreeJointNotOnGround {
+                    joint: joint.name.clone(),
+                    parent: self
+                        .bodies
+                        .get(p)
+                        .map_or_else(|| p.to_string(), |b| b.name.clone()),
+                });
+            }
+            if let Some(first) = first {
+                return Err(MechanismError::SecondFreeJoint {
+                    first: first.to_owned(),
+                    second: joint.name.clone(),
+                });
+            }
+            first = Some(&joint.name);
+        }
+        Ok(())
     }
 
     /// Parents before children, by repeated sweeps (trees are shallow next to the cost of
@@ -163,7 +197,7 @@ fn literal_axes(arena: &Arena, joint: &Joint) -> Result<(), MechanismError> {
     let axes: &[[ExprId; 3]] = match &joint.kind {
         JointKind::Revolute { axis } | JointKind::Prismatic { axis } => std::slice::from_ref(axis),
         JointKind::Universal { axes } => axes,
-        JointKind::Spherical { .. } => &[],
+        JointKind::Spherical { .. } | JointKind::Free { .. } => &[],
     };
     if axes.iter().any(zero) {
         return Err(MechanismError::ZeroAxis {

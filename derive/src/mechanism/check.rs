@@ -52,6 +52,8 @@ pub(super) struct LinkSpec<'a> {
     pub(super) joint_name: Ident,
     /// False when the joint is named after its body.
     pub(super) joint_named: bool,
+    /// The joint's kind as written.
+    pub(super) joint_kind: Ident,
     /// The joint's coordinates.
     pub(super) coordinates: Vec<Ident>,
     /// The body for the scene (its parent set once the tree is checked).
@@ -295,7 +297,7 @@ impl Checker<'_> {
             None => {
                 self.cx.error_spanned_by(
                     name,
-                    format!("body `{name}` has no joint: add `{} = revolute(axis = x)` (or prismatic, universal, spherical)", keys::JOINT),
+                    format!("body `{name}` has no joint: add `{} = revolute(axis = x)` (or prismatic, universal, spherical, free)", keys::JOINT),
                 );
                 None
             }
@@ -305,7 +307,7 @@ impl Checker<'_> {
             (None, _) => {
                 self.cx.error_spanned_by(
                     name,
-                    format!("body `{name}` does not name its joint's coordinates: add `{} = name` (or `{} = [a, b]`, `[a, b, c]` for universal and spherical joints)", keys::COORDINATES, keys::COORDINATES),
+                    format!("body `{name}` does not name its joint's coordinates: add `{} = name` (or `{} = [a, b]`, `[a, b, c]` for universal and spherical joints, six names for a free joint)", keys::COORDINATES, keys::COORDINATES),
                 );
                 None
             }
@@ -340,6 +342,7 @@ impl Checker<'_> {
         }
         let (joint, coordinates, loads, parts) = (joint?, coordinates?, loads?, parts?);
         let joint_named = joint.name.is_some();
+        let joint_kind = joint.kind_ident.clone();
         let joint_name = joint.name.unwrap_or_else(|| name.clone());
         let (mass, center, inertia, description) = parts;
         let mut body = MechanismBody {
@@ -365,6 +368,7 @@ impl Checker<'_> {
             parent,
             joint_name,
             joint_named,
+            joint_kind,
             coordinates,
             body,
             parts: description,
@@ -457,7 +461,11 @@ impl Checker<'_> {
             let expected = match dof {
                 1 => format!("`{} = name`", keys::COORDINATES),
                 2 => format!("`{} = [a, b]`", keys::COORDINATES),
-                _ => format!("`{} = [a, b, c]`", keys::COORDINATES),
+                3 => format!("`{} = [a, b, c]`", keys::COORDINATES),
+                _ => format!(
+                    "`{} = [x, y, z, a, b, c]` (three translations, then three angles)",
+                    keys::COORDINATES
+                ),
             };
             self.cx.error_spanned_by(
                 e,

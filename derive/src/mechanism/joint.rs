@@ -18,12 +18,14 @@ pub(super) struct JointSpec {
     pub(super) at: [ExprId; 3],
     /// Its kind and axes.
     pub(super) kind: JointKind,
+    /// The kind as written (`free`, …), for errors about where the joint may go.
+    pub(super) kind_ident: Ident,
 }
 
 impl Checker<'_> {
     /// `kind(name = .., axis = .., at = ..)`.
     pub(super) fn joint(&mut self, e: &Expr) -> Option<JointSpec> {
-        const EXPECTED: &str = "expected a joint `revolute(axis = x, at = [x, y, z])`, `prismatic(axis = ..)`, `universal(axes = [x, y])` or `spherical(sequence = zxz)`";
+        const EXPECTED: &str = "expected a joint `revolute(axis = x, at = [x, y, z])`, `prismatic(axis = ..)`, `universal(axes = [x, y])`, `spherical(sequence = zxz)` or `free(sequence = zxz)`";
         let (kind_ident, args): (&Ident, Vec<&Expr>) = match e {
             Expr::Call(c) => match path_ident(&c.func) {
                 Some(i) => (i, c.args.iter().collect()),
@@ -48,7 +50,7 @@ impl Checker<'_> {
         let allowed: &[&str] = match kind_name.as_str() {
             "revolute" | "prismatic" => &[keys::NAME, keys::AXIS, keys::AT],
             "universal" => &[keys::NAME, keys::AXES, keys::AT],
-            "spherical" => &[keys::NAME, keys::SEQUENCE, keys::AT],
+            "spherical" | "free" => &[keys::NAME, keys::SEQUENCE, keys::AT],
             _ => {
                 self.cx.error_spanned_by(
                     kind_ident,
@@ -169,16 +171,10 @@ impl Checker<'_> {
                 }
             },
             _ => match value(keys::SEQUENCE) {
-                None => Some(JointKind::Spherical {
-                    sequence: AngleSequence::Zxz,
-                }),
+                None => Some(angles(&kind_name, AngleSequence::Zxz)),
                 Some(v) => match path_ident(v).map(|i| i.to_string()).as_deref() {
-                    Some("zxz") => Some(JointKind::Spherical {
-                        sequence: AngleSequence::Zxz,
-                    }),
-                    Some("zyx") => Some(JointKind::Spherical {
-                        sequence: AngleSequence::Zyx,
-                    }),
+                    Some("zxz") => Some(angles(&kind_name, AngleSequence::Zxz)),
+                    Some("zyx") => Some(angles(&kind_name, AngleSequence::Zyx)),
                     _ => {
                         self.cx.error_spanned_by(
                             v,
@@ -202,6 +198,7 @@ impl Checker<'_> {
             name,
             at: at?,
             kind: kind?,
+            kind_ident: kind_ident.clone(),
         })
     }
 
@@ -271,6 +268,15 @@ impl Checker<'_> {
             *o = self.arena.as_rational(c)?.to_f64();
         }
         Some(out)
+    }
+}
+
+/// A spherical joint, or a free one (`kind_name` is one of the two), turning by `sequence`.
+fn angles(kind_name: &str, sequence: AngleSequence) -> JointKind {
+    if kind_name == "free" {
+        JointKind::Free { sequence }
+    } else {
+        JointKind::Spherical { sequence }
     }
 }
 

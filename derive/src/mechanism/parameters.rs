@@ -40,7 +40,7 @@ pub fn method(low: &Lowering, arena: &mut Arena, checked: &CheckedMechanism) -> 
                 checks.axes(arena, &joint.name, std::slice::from_ref(axis));
             }
             JointKind::Universal { axes } => checks.axes(arena, &joint.name, axes),
-            JointKind::Spherical { .. } => {}
+            JointKind::Spherical { .. } | JointKind::Free { .. } => {}
         }
         for (coordinate, load) in joint.coordinates.iter().zip(&joint.loads) {
             if let Some(spring) = &load.spring {

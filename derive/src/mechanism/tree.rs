@@ -1,7 +1,7 @@
-//! The tree's rules on the bodies as read: names unique, parents known, and every chain of
-//! parents ending at the ground.
+//! The tree's rules on the bodies as read: names unique, parents known, every chain of
+//! parents ending at the ground, and a free joint only on the one base body.
 
-use precess_core::mechanism::Parent;
+use precess_core::mechanism::{JointKind, Parent};
 
 use super::check::LinkSpec;
 use crate::lang::check::Checker;
@@ -124,5 +124,40 @@ pub(super) fn tree(ck: &Checker, specs: &[LinkSpec]) -> Option<Vec<Parent>> {
             at = next;
         }
     }
+    free_joints(ck, specs, &parents);
     (ck.cx.error_count() == errors_before).then_some(parents)
+}
+
+/// A free joint flies the base body: it hangs from the ground, and there is one at most
+/// (the rules of `MechanismScene::validate`, spanned on the joint).
+fn free_joints(ck: &Checker, specs: &[LinkSpec], parents: &[Parent]) {
+    let mut first: Option<&LinkSpec> = None;
+    for (spec, parent) in specs.iter().zip(parents) {
+        if !matches!(spec.body.joint.kind, JointKind::Free { .. }) {
+            continue;
+        }
+        if let (Parent::Body(_), Some(p)) = (parent, spec.parent) {
+            ck.cx.error_spanned_by(
+                &spec.joint_kind,
+                format!(
+                    "a `free` joint attaches the base body to `{}`, but `{}` hangs from `{p}`: give it `{} = {}`, or join it to `{p}` by a spherical, universal, revolute or prismatic joint",
+                    keys::GROUND,
+                    spec.name,
+                    keys::PARENT,
+                    keys::GROUND
+                ),
+            );
+            continue;
+        }
+        match first {
+            Some(f) => ck.cx.error_spanned_by(
+                &spec.joint_kind,
+                format!(
+                    "a second `free` joint: `{}` already flies free, and a mechanism has one base body; join `{}` to the mechanism's bodies by another joint",
+                    f.name, spec.name
+                ),
+            ),
+            None => first = Some(spec),
+        }
+    }
 }

@@ -66,7 +66,8 @@ impl ChartSet {
     }
 }
 
-/// A spherical joint as the chart switch sees it.
+/// A spherical joint as the chart switch sees it; a free joint's three rotations are one
+/// too (its `first` is its first angle, after its three translations).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SphericalJoint {
     /// The joint's name.
@@ -79,25 +80,29 @@ pub struct SphericalJoint {
     pub switchable: bool,
 }
 
-/// The spherical joints of `scene`, in body order (bit j of a [`ChartSet`] is the j-th).
+/// The spherical joints of `scene`, with the rotations of its free joint, in body order
+/// (bit j of a [`ChartSet`] is the j-th).
 pub fn spherical_joints(scene: &MechanismScene) -> Vec<SphericalJoint> {
     let offsets = scene.coordinate_offsets();
     scene
         .bodies
         .iter()
         .zip(offsets)
-        .filter_map(|(body, first)| match body.joint.kind {
-            JointKind::Spherical { sequence } => Some(SphericalJoint {
+        .filter_map(|(body, first)| {
+            let (sequence, angle) = body.joint.kind.euler_angles()?;
+            Some(SphericalJoint {
                 name: body.joint.name.clone(),
-                first,
+                first: first + angle,
                 declared: sequence,
+                // Only loads on the angles tie a joint to its chart: a free joint's
+                // translations are the same coordinates in both.
                 switchable: body
                     .joint
                     .loads
                     .iter()
+                    .skip(angle)
                     .all(|l| l.spring.is_none() && l.damper.is_none() && l.effort.is_none()),
-            }),
-            _ => None,
+            })
         })
         .collect()
 }
@@ -142,14 +147,16 @@ pub fn chart_variants(switchable: &[bool]) -> Vec<ChartSet> {
     }
 }
 
-/// `scene` with every spherical joint switched in `charts` turned to its partner sequence
-/// (the scene is data: nothing else changes, so deriving the copy gives that chart's
-/// equations).
+/// `scene` with every spherical (or free) joint switched in `charts` turned to its partner
+/// sequence (the scene is data: nothing else changes, so deriving the copy gives that
+/// chart's equations).
 pub fn scene_in_charts(scene: &MechanismScene, charts: ChartSet) -> MechanismScene {
     let mut out = scene.clone();
     let mut j = 0;
     for body in &mut out.bodies {
-        if let JointKind::Spherical { sequence } = &mut body.joint.kind {
+        if let JointKind::Spherical { sequence } | JointKind::Free { sequence } =
+            &mut body.joint.kind
+        {
             *sequence = charts.sequence(j, *sequence);
             j += 1;
         }

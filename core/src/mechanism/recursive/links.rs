@@ -173,6 +173,17 @@ pub(crate) fn flatten(
                 .iter()
                 .map(|&k| (Motion::Turn, unit(arena, k)))
                 .collect(),
+            // Three slides along the parent's axes (a slide leaves the frame's axes where
+            // they were, so each is along the parent's), then the spherical joint's turns.
+            JointKind::Free { sequence } => (0..3)
+                .map(|k| (Motion::Slide, unit(arena, k)))
+                .chain(
+                    sequence
+                        .axes()
+                        .iter()
+                        .map(|&k| (Motion::Turn, unit(arena, k))),
+                )
+                .collect(),
         };
         let last = axes.len() - 1;
         for (k, (motion, axis)) in axes.into_iter().enumerate() {

@@ -11,6 +11,8 @@ pub mod bicycle;
 pub mod chain;
 #[path = "../../../../examples/mechanisms/double_pendulum.rs"]
 pub mod double_pendulum;
+#[path = "../../../../examples/mechanisms/free_floating.rs"]
+pub mod free_floating;
 #[path = "../../../../examples/mechanisms/gimballed_gyroscope.rs"]
 pub mod gimballed_gyroscope;
 
