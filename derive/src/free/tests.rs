@@ -97,3 +97,38 @@ fn free_and_top_together_are_refused_with_both_stubs() {
     assert!(code.contains("cannot be combined"), "{code}");
     assert!(code.contains("TopDynamics for Both") && code.contains("FreeDynamics for Both"));
 }
+
+#[test]
+fn repeated_wrenches_are_summed_and_each_called_once() {
+    let code = expand(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1))]
+        #[free(gravity = 9.81, wrench = table, wrench = wall)]
+        struct Ball;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    let rhs = method(&code, "free_rhs");
+    println!("free_rhs: {rhs}\n");
+    // One call of each function, their values added, then resolved once.
+    assert_eq!(
+        rhs.matches("table (self , t , & __state)").count(),
+        1,
+        "{rhs}"
+    );
+    assert_eq!(
+        rhs.matches("wall (self , t , & __state)").count(),
+        1,
+        "{rhs}"
+    );
+    assert!(
+        rhs.contains("table (self , t , & __state) + wall (self , t , & __state)"),
+        "{rhs}"
+    );
+    assert_eq!(rhs.matches("space_part").count(), 1, "{rhs}");
+    assert!(
+        code.contains("Option :: Some (\"a user wrench\")"),
+        "{code}"
+    );
+    // Energy and momenta do not depend on the forces.
+    assert!(!method(&code, "energy").contains("__state"));
+    assert!(!method(&code, "angular_momentum_origin").contains("__w"));
+}

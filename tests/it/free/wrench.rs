@@ -310,3 +310,87 @@ fn a_non_finite_wrench_is_a_typed_error_naming_the_part() {
             .is_ok()
     );
 }
+
+/// One property-test case: a force and torque in space axes, and a second force at a point
+/// (space coordinates), read by the two probes' wrench functions.
+#[derive(Clone, Copy, Default)]
+struct Case {
+    force: [f64; 3],
+    torque: [f64; 3],
+    point_force: [f64; 3],
+    point: [f64; 3],
+}
+
+thread_local! {
+    static CASE: std::cell::Cell<Case> = std::cell::Cell::new(Case::default());
+}
+
+/// The case given in space axes and at its point.
+#[derive(RigidBody)]
+#[rigid(
+    cuboid(mass = 1.5, size = [0.2, 0.3, 0.4]),
+    particle(mass = 0.2, at = [0.1, 0.0, 0.1]),
+)]
+#[free(wrench = case_in_space)]
+struct SpaceProbe;
+
+fn case_in_space(_: &SpaceProbe, _: f64, _: &FreeState) -> AppliedWrench {
+    let c = CASE.with(std::cell::Cell::get);
+    AppliedWrench::space(c.force, c.torque) + AppliedWrench::at_point_space(c.point_force, c.point)
+}
+
+/// The same case in description axes, the lever torque and both conversions by hand.
+#[derive(RigidBody)]
+#[rigid(
+    cuboid(mass = 1.5, size = [0.2, 0.3, 0.4]),
+    particle(mass = 0.2, at = [0.1, 0.0, 0.1]),
+)]
+#[free(wrench = case_in_body)]
+struct BodyProbe;
+
+fn case_in_body(b: &BodyProbe, _: f64, s: &FreeState) -> AppliedWrench {
+    let c = CASE.with(std::cell::Cell::get);
+    let g = Vector3::from(c.point_force);
+    let lever = (Vector3::from(c.point) - s.position).cross(&g);
+    let to_space =
+        s.attitude * UnitQuaternion::from_rotation_matrix(&b.principal_cm().rotation).inverse();
+    let f = to_space.inverse() * (Vector3::from(c.force) + g);
+    let tau = to_space.inverse() * (Vector3::from(c.torque) + lever);
+    AppliedWrench::body(f, tau)
+}
+
+fn vector() -> impl proptest::strategy::Strategy<Value = [f64; 3]> {
+    proptest::array::uniform3(-10.0..10.0f64)
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// A frame mixed up (a space torque taken as a body one, a lever about the wrong point,
+    /// a conversion the wrong way round) makes the two probes disagree at some attitude.
+    #[test]
+    fn a_wrench_resolves_the_same_in_every_frame(
+        angles in vector(),
+        position in vector(),
+        force in vector(),
+        torque in vector(),
+        point_force in vector(),
+        point in vector(),
+    ) {
+        CASE.with(|cell| cell.set(Case { force, torque, point_force, point }));
+        let s = FreeState {
+            position: Vector3::from(position),
+            velocity: Vector3::zeros(),
+            attitude: UnitQuaternion::from_euler_angles(angles[0], angles[1], angles[2]),
+            omega_principal: Vector3::zeros(),
+        };
+        let y = s.to_array();
+        let (a, b) = (SpaceProbe.wrench(0.0, &y), BodyProbe.wrench(0.0, &y));
+        let scale = 1.0 + a.force_space.norm() + a.torque_principal.norm();
+        proptest::prop_assert!((a.force_space - b.force_space).norm() < 1e-13 * scale);
+        proptest::prop_assert!(
+            (a.torque_principal - b.torque_principal).norm() < 1e-13 * scale,
+            "{} vs {}", a.torque_principal, b.torque_principal
+        );
+    }
+}
