@@ -9,8 +9,9 @@ use precess_core::free::{
 use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
-use quote::{ToTokens, format_ident, quote};
+use quote::{ToTokens, format_ident, quote, quote_spanned};
 use syn::LitStr;
+use syn::spanned::Spanned;
 
 use super::check::FreeSettings;
 use crate::lang::expansion::Expansion;
@@ -29,7 +30,7 @@ struct Preludes {
     /// The user torque function and the symbols of its value.
     torque: Option<(TokenStream, [ExprId; 3])>,
     /// The user wrench functions and the symbols of their sum's four parts.
-    wrench: Option<(Vec<TokenStream>, [ExprId; 12])>,
+    wrench: Option<(Vec<syn::Path>, [ExprId; 12])>,
 }
 
 impl Preludes {
@@ -65,20 +66,28 @@ impl Preludes {
         }
         out
     }
-}
 
-impl Preludes {
     /// The wrench functions called and their sum resolved into its four parts, if `reads`
-    /// says an output needs them: one call per function per evaluation.
+    /// says an output needs them: one call per function per evaluation. Each function is
+    /// first bound as a typed pointer spanned on its path, so a wrong signature is reported
+    /// there, naming the expected and the found one.
     fn wrench_call(&self, reads: &dyn Fn(&[ExprId]) -> bool) -> Option<TokenStream> {
         let p = Private;
         let (paths, symbols) = self.wrench.as_ref()?;
         if !reads(symbols) {
             return None;
         }
-        let calls = paths.iter().map(|path| quote!(#path(self, t, &__state)));
+        let locals: Vec<syn::Ident> = (0..paths.len())
+            .map(|k| format_ident!("__wrench_fn{k}"))
+            .collect();
+        let binds = paths.iter().zip(&locals).map(|(path, local)| {
+            quote_spanned! {path.span()=>
+                let #local: fn(&Self, f64, &#p::FreeState) -> #p::AppliedWrench = #path;
+            }
+        });
         Some(quote! {
-            let __w: #p::AppliedWrench = #(#calls)+*;
+            #(#binds)*
+            let __w: #p::AppliedWrench = #(#locals(self, t, &__state))+*;
             let (__w_fs, __w_ts) = __w.space_part(&__state.position);
             let (__w_fd, __w_td) = __w.description_part();
         })
@@ -168,8 +177,7 @@ fn scene(
             let (local, c) = (&locals[k / 3], k % 3);
             symbols.insert_expr(arena, e, quote!(#local[#c]));
         }
-        let paths = settings.wrenches.iter().map(ToTokens::to_token_stream);
-        preludes.wrench = Some((paths.collect(), all));
+        preludes.wrench = Some((settings.wrenches.clone(), all));
         scene.user_wrench = Some(inputs);
     }
     (scene, preludes)
