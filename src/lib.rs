@@ -109,7 +109,9 @@ pub mod __private {
         Reaction, SurfaceKind,
     };
     pub use precess_core::exact::Dd;
-    pub use precess_core::free::{FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench};
+    pub use precess_core::free::{
+        AppliedWrench, FreeDynamics, FreeError, FreeState, STATE_LEN, Wrench,
+    };
     pub use precess_core::lagrange::Partition;
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::rolling::RollingDynamics;

@@ -74,6 +74,7 @@ mod free {
     mod steppers;
     mod thrust;
     mod top;
+    mod wrench;
 }
 /// The symmetric eigensolver.
 mod linalg {

@@ -161,6 +161,15 @@ impl FreeScene {
         if let Some(u) = self.user_torque {
             torques.push(mat_vec(arena, &to_principal, &u));
         }
+        if let Some(w) = &self.user_wrench {
+            // Space parts as given (force) or turned into principal axes by Rᵀ (torque);
+            // description parts into principal axes, the force then into space by R.
+            forces.push(w.force_space);
+            let fp = mat_vec(arena, &to_principal, &w.force_description);
+            forces.push(mat_vec(arena, rotation, &fp));
+            torques.push(mat_vec(arena, &to_body, &w.torque_space));
+            torques.push(mat_vec(arena, &to_principal, &w.torque_description));
+        }
         Wrench {
             force: sum_vectors(arena, &forces),
             conservative,

@@ -96,6 +96,33 @@ pub trait FreeDynamics: RigidBody {
     /// The total force and the torque about the centre of mass.
     fn wrench(&self, t: f64, y: &[f64; STATE_LEN]) -> Wrench;
 
+    /// The total force and torque, checked: the state is finite with a non-zero
+    /// quaternion and the wrench (a user function's value included) is finite.
+    ///
+    /// # Errors
+    /// As [`FreeState::from_array`] for the state; [`FreeError::NonFiniteWrench`] naming the
+    /// total force (space axes) or torque (principal axes) that holds NaN or ±∞.
+    fn try_wrench(&self, t: f64, y: &[f64; STATE_LEN]) -> Result<Wrench, FreeError> {
+        FreeState::from_array(y)?;
+        let w = self.wrench(t, y);
+        let parts = [
+            ("total force, space axes", w.force_space),
+            (
+                "total torque about the centre of mass, principal axes",
+                w.torque_principal,
+            ),
+        ];
+        for (part, v) in parts {
+            if v.iter().any(|c| !c.is_finite()) {
+                return Err(FreeError::NonFiniteWrench {
+                    part,
+                    values: [v.x, v.y, v.z],
+                });
+            }
+        }
+        Ok(w)
+    }
+
     /// The energy ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x.
     fn energy(&self, y: &[f64; STATE_LEN]) -> f64;
 

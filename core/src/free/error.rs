@@ -36,6 +36,15 @@ pub enum FreeError {
         /// Its value.
         value: f64,
     },
+    /// A part of a wrench — a user function's [`super::AppliedWrench`] or the total — holds
+    /// NaN or ±∞.
+    #[error("non-finite wrench: the {part} is {values:?}")]
+    NonFiniteWrench {
+        /// Which part: the force or the torque, and its frame.
+        part: &'static str,
+        /// Its components.
+        values: [f64; 3],
+    },
     /// The mass or a principal moment is not finite and positive.
     #[error(
         "mass and principal moments must be finite and > 0: mass = {mass}, moments = {moments:?}"

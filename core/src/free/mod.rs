@@ -3,7 +3,8 @@
 //! A scene over the engine, in one place:
 //! - [`FreeScene`] holds the forces and torques as data (uniform gravity, body- and
 //!   space-fixed forces at body points, body- and space-fixed torques, linear drag on the
-//!   centre of mass and on the rotation, user functions) and [`FreeScene::derive`] derives the
+//!   centre of mass and on the rotation, user functions, an [`AppliedWrench`] whose frame its
+//!   constructor names) and [`FreeScene::derive`] derives the
 //!   right-hand side, the wrench, the energy, its power balance and the momenta symbolically,
 //!   so only what is declared appears; [`cm_frame`] decides the principal frame about the
 //!   centre of mass.
@@ -28,6 +29,7 @@ mod quantities;
 mod scene;
 mod state;
 mod system;
+mod wrench;
 
 pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
@@ -40,3 +42,4 @@ pub use quantities::{FreeQuantities, STATE_NAMES};
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};
+pub use wrench::{AppliedWrench, WrenchInputs};

@@ -1,6 +1,7 @@
 //! A free body, described: its mass and principal moments and the forces and torques it
 //! declares, as expressions (`derivation.rs` derives its equations).
 
+use super::wrench::WrenchInputs;
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId};
 
@@ -58,6 +59,10 @@ pub struct FreeScene {
     /// A torque about the centre of mass supplied at run time, description axes, as three
     /// input symbols.
     pub user_torque: Option<[ExprId; 3]>,
+    /// A wrench supplied at run time (an [`super::AppliedWrench`] resolved into its four
+    /// parts): forces through the centre of mass and torques about it, in space and in
+    /// description axes.
+    pub user_wrench: Option<WrenchInputs>,
 }
 
 impl FreeScene {
@@ -80,6 +85,7 @@ impl FreeScene {
             damping: None,
             user_force: None,
             user_torque: None,
+            user_wrench: None,
         }
     }
 
@@ -100,6 +106,7 @@ impl FreeScene {
             (self.damping.is_some(), "damping"),
             (self.user_force.is_some(), "a user force"),
             (self.user_torque.is_some(), "a user torque"),
+            (self.user_wrench.is_some(), "a user wrench"),
         ]
         .into_iter()
         .find_map(|(declared, name)| declared.then_some(name))

@@ -32,6 +32,9 @@ pub struct FreeSettings {
     pub force: Option<syn::Path>,
     /// The path of a user torque function (description axes).
     pub torque: Option<syn::Path>,
+    /// The paths of user wrench functions (`fn(&Self, f64, &FreeState) -> AppliedWrench`),
+    /// their values summed.
+    pub wrenches: Vec<syn::Path>,
     /// The maximum order of the generated Taylor recurrences, if asked for.
     pub taylor: Option<usize>,
 }
@@ -86,6 +89,7 @@ pub fn check(
     let user = [
         (keys::FORCE, settings.force.is_some()),
         (keys::TORQUE, settings.torque.is_some()),
+        (keys::WRENCH, !settings.wrenches.is_empty()),
     ];
     settings.taylor = taylor.order(ck.cx, &user);
     let ok = items.complete && ck.cx.error_count() == errors_before;
@@ -99,6 +103,11 @@ fn setting<'a>(
     seen: &mut Vec<&'a Ident>,
     KeyValue { key, value }: &'a KeyValue,
 ) {
+    // Wrenches may repeat: several contacts, each its own function, add.
+    if key == keys::WRENCH {
+        settings.wrenches.extend(user_fn(ck, value, keys::WRENCH));
+        return;
+    }
     // Each setting once: two gravities or two drags would be ambiguous.
     if seen.contains(&key) {
         ck.cx
@@ -297,15 +306,18 @@ fn user_fn(ck: &mut Checker, value: &Expr, what: &str) -> Option<syn::Path> {
     match value {
         Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
         _ => {
-            let returns = if what == keys::FORCE {
-                "the force on the centre of mass, space axes"
-            } else {
-                "the torque about the centre of mass, description axes"
+            let message = match what {
+                keys::WRENCH => format!(
+                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> AppliedWrench` (time, state → force and torque, in the frame its constructor names: `AppliedWrench::space`, `AppliedWrench::body` or `AppliedWrench::at_point_space`)"
+                ),
+                keys::FORCE => format!(
+                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the force on the centre of mass, space axes)"
+                ),
+                _ => format!(
+                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the torque about the centre of mass, description axes)"
+                ),
             };
-            ck.cx.error_spanned_by(
-                value,
-                format!("`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → {returns})"),
-            );
+            ck.cx.error_spanned_by(value, message);
             None
         }
     }

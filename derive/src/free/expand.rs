@@ -3,12 +3,15 @@
 //! quoted into `impl FreeDynamics for …`.
 
 use precess_core::codegen::{Emitted, f64_literal};
-use precess_core::free::{CmFrame, FreeDerivation, FreeScene, STATE_LEN, STATE_NAMES, cm_frame};
+use precess_core::free::{
+    CmFrame, FreeDerivation, FreeScene, STATE_LEN, STATE_NAMES, WrenchInputs, cm_frame,
+};
 use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
-use quote::{ToTokens, format_ident, quote};
+use quote::{ToTokens, format_ident, quote, quote_spanned};
 use syn::LitStr;
+use syn::spanned::Spanned;
 
 use super::check::FreeSettings;
 use crate::lang::expansion::Expansion;
@@ -26,6 +29,8 @@ struct Preludes {
     force: Option<(TokenStream, [ExprId; 3])>,
     /// The user torque function and the symbols of its value.
     torque: Option<(TokenStream, [ExprId; 3])>,
+    /// The user wrench functions and the symbols of their sum's four parts.
+    wrench: Option<(Vec<syn::Path>, [ExprId; 12])>,
 }
 
 impl Preludes {
@@ -53,12 +58,39 @@ impl Preludes {
                 reads(symbols)
                     .then(|| quote!(let #local: #p::Vector3<f64> = #path(self, t, &__state);))
             })
+            .chain(self.wrench_call(&reads))
             .collect();
         if !calls.is_empty() {
             out.extend(quote!(let __state = #p::FreeState::from_array_unchecked(y);));
             out.extend(calls);
         }
         out
+    }
+
+    /// The wrench functions called and their sum resolved into its four parts, if `reads`
+    /// says an output needs them: one call per function per evaluation. Each function is
+    /// first bound as a typed pointer spanned on its path, so a wrong signature is reported
+    /// there, naming the expected and the found one.
+    fn wrench_call(&self, reads: &dyn Fn(&[ExprId]) -> bool) -> Option<TokenStream> {
+        let p = Private;
+        let (paths, symbols) = self.wrench.as_ref()?;
+        if !reads(symbols) {
+            return None;
+        }
+        let locals: Vec<syn::Ident> = (0..paths.len())
+            .map(|k| format_ident!("__wrench_fn{k}"))
+            .collect();
+        let binds = paths.iter().zip(&locals).map(|(path, local)| {
+            quote_spanned! {path.span()=>
+                let #local: fn(&Self, f64, &#p::FreeState) -> #p::AppliedWrench = #path;
+            }
+        });
+        Some(quote! {
+            #(#binds)*
+            let __w: #p::AppliedWrench = #(#locals(self, t, &__state))+*;
+            let (__w_fs, __w_ts) = __w.space_part(&__state.position);
+            let (__w_fd, __w_td) = __w.description_part();
+        })
     }
 }
 
@@ -78,6 +110,7 @@ fn scene(
         principal: Vec::new(),
         force: None,
         torque: None,
+        wrench: None,
     };
     match frame {
         CmFrame::Diagonal(m) => scene.moments = *m,
@@ -131,6 +164,22 @@ fn scene(
     preludes.torque = user(arena, &settings.torque, quote!(__u), "tau_user_");
     scene.user_force = preludes.force.as_ref().map(|(_, u)| *u);
     scene.user_torque = preludes.torque.as_ref().map(|(_, u)| *u);
+    if !settings.wrenches.is_empty() {
+        let inputs = WrenchInputs::new(arena, "wrench_");
+        let locals = [
+            quote!(__w_fs),
+            quote!(__w_ts),
+            quote!(__w_fd),
+            quote!(__w_td),
+        ];
+        let all = inputs.symbols();
+        for (k, &e) in all.iter().enumerate() {
+            let (local, c) = (&locals[k / 3], k % 3);
+            symbols.insert_expr(arena, e, quote!(#local[#c]));
+        }
+        preludes.wrench = Some((settings.wrenches.clone(), all));
+        scene.user_wrench = Some(inputs);
+    }
     (scene, preludes)
 }
 

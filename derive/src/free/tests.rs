@@ -97,3 +97,32 @@ fn free_and_top_together_are_refused_with_both_stubs() {
     assert!(code.contains("cannot be combined"), "{code}");
     assert!(code.contains("TopDynamics for Both") && code.contains("FreeDynamics for Both"));
 }
+
+#[test]
+fn repeated_wrenches_are_summed_and_each_called_once() {
+    let code = expand(quote! {
+        #[rigid(sphere(mass = 1.0, radius = 0.1))]
+        #[free(gravity = 9.81, wrench = table, wrench = wall)]
+        struct Ball;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    // The right-hand side, the wrench and the power read the wrench (energy and momenta do
+    // not): in each, each function is bound once as a typed pointer, both are called and
+    // added, and the sum is resolved once. (The whole code is searched: `method` would stop
+    // at the pointer type's `fn`.)
+    for needle in [
+        "= table ;",
+        "= wall ;",
+        "__wrench_fn0 (self , t , & __state) + __wrench_fn1 (self , t , & __state)",
+        ". space_part (& __state . position)",
+    ] {
+        assert_eq!(code.matches(needle).count(), 3, "{needle}: {code}");
+    }
+    assert!(
+        code.contains("Option :: Some (\"a user wrench\")"),
+        "{code}"
+    );
+    // Energy and momenta do not depend on the forces.
+    assert!(!method(&code, "energy").contains("__state"));
+    assert!(!method(&code, "angular_momentum_origin").contains("__w"));
+}

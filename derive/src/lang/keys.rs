@@ -239,6 +239,9 @@ pub const DRAG: &str = "drag";
 pub const FORCE: &str = "force";
 /// Where a force part acts: `[x, y, z]` or `center`.
 pub const FORCE_AT: &str = "at";
+/// A user function returning force and torque together, a setting of `#[free]` that may
+/// repeat (the wrenches add).
+pub const WRENCH: &str = "wrench";
 /// The value of [`FORCE_AT`] naming the centre of mass.
 pub const CENTER_POINT: &str = "center";
 
@@ -251,6 +254,7 @@ pub const FREE_KEYS: &[&str] = &[
     DAMPING,
     FORCE,
     TORQUE,
+    WRENCH,
     TAYLOR,
 ];
 /// The force parts of `#[free(...)]`, `name(force = [..], at = [..])`.
