@@ -12,9 +12,11 @@ pub enum Scale {
 
 /// The range an axis shows for data spanning `lo..=hi`: the data with a margin on each side.
 ///
-/// Linear: 5 % of the span on each side; a single value v ≠ 0 gets ±5 % of |v|, and 0 gets
-/// ±1. Logarithmic: 5 % of the span in decades on each side, at least 0.1 decade (a factor
-/// 10^0.1 ≈ 1.26), so that points on the frame stay visible. `lo` and `hi` must be finite with
+/// Linear: 5 % of the span on each side (at least 10⁻⁹ of the largest magnitude, so that a
+/// quantity constant to rounding still gets a readable axis); a single value v ≠ 0 gets
+/// ±5 % of |v|, and 0 gets ±1. Logarithmic: 5 % of the span in decades on each side, at least 0.1 decade (a factor
+/// 10^0.1 ≈ 1.26; never past 10^±305), so that points on the frame stay visible. `lo` and
+/// `hi` must be finite with
 /// `lo ≤ hi` (and positive for [`Scale::Log`]); the figures check their data before asking.
 ///
 /// # Examples
@@ -29,10 +31,14 @@ pub fn axis_range(lo: f64, hi: f64, scale: Scale) -> (f64, f64) {
     match scale {
         Scale::Linear => {
             let span = hi - lo;
+            let magnitude = lo.abs().max(hi.abs());
             let pad = if span > 0.0 {
-                0.05 * span
+                // A span of a few ulps (an energy conserved to 1e-16) is widened to 1e-9 of
+                // the magnitude, and a subnormal one to 1e-300: a range narrower than the
+                // spacing of the numbers in it has no ticks to step through.
+                (0.05 * span).max(1e-9 * magnitude).max(1e-300)
             } else if lo != 0.0 {
-                0.05 * lo.abs()
+                (0.05 * lo.abs()).max(1e-300)
             } else {
                 1.0
             };
@@ -41,7 +47,8 @@ pub fn axis_range(lo: f64, hi: f64, scale: Scale) -> (f64, f64) {
         Scale::Log => {
             let decades = (hi / lo).log10();
             let factor = 10f64.powf((0.05 * decades).max(0.1));
-            (lo / factor, hi * factor)
+            // The margin stops short of the floating-point range's ends.
+            ((lo / factor).max(1e-305), (hi * factor).min(1e305))
         }
     }
 }

@@ -74,6 +74,22 @@ pub enum PlotError {
         /// The value.
         value: f64,
     },
+    /// A value too large (|v| > 10³⁰⁰), or outside 10⁻¹⁰⁰..=10¹⁰⁰ on a logarithmic axis, for
+    /// the axis's range, its margin and its ticks to stay finite.
+    #[error(
+        "the {coordinate} value {value:e} at index {index} of `{series}` is out of range \
+         (a figure takes |v| ≤ 1e300, and 1e-100 ≤ v ≤ 1e100 on a logarithmic axis)"
+    )]
+    OutOfRange {
+        /// The series' label or the column's name.
+        series: String,
+        /// The axis the value is drawn along.
+        coordinate: Coordinate,
+        /// The value's index in its series.
+        index: usize,
+        /// The value.
+        value: f64,
+    },
     /// A column asked for by name is neither a state column nor a quantity of the trajectory.
     #[error("the trajectory has no column `{name}` (it has: {available})")]
     UnknownColumn {

@@ -145,8 +145,9 @@ const PALETTE: [RGBColor; 10] = [
 /// # Errors
 /// [`PlotError::NoSeries`] for no series, [`PlotError::EmptySeries`] for a series without
 /// points, [`PlotError::NonFinite`] for a NaN or infinite coordinate,
-/// [`PlotError::NotPositiveOnLog`] for a value ≤ 0 on a logarithmic axis (each with the
-/// series, the index and the value), [`PlotError::Io`] when the directory or the file cannot
+/// [`PlotError::NotPositiveOnLog`] for a value ≤ 0 on a logarithmic axis,
+/// [`PlotError::OutOfRange`] for |v| > 10³⁰⁰, or v outside 10⁻¹⁰⁰..=10¹⁰⁰ on a logarithmic axis (each with
+/// the series, the index and the value), [`PlotError::Io`] when the directory or the file cannot
 /// be written, [`PlotError::Backend`] when plotters refuses the figure.
 ///
 /// # Examples
@@ -229,7 +230,33 @@ pub(crate) fn check(
             value,
         });
     }
+    // Beyond these the padded range, or plotters' ticks, would overflow to infinity.
+    let out = match scale {
+        Scale::Linear => value.abs() > LIMIT,
+        // plotters' logarithmic ticks do not finish over some 600 decades.
+        Scale::Log => !(1.0 / LOG_LIMIT..=LOG_LIMIT).contains(&value),
+    };
+    if out {
+        return Err(PlotError::OutOfRange {
+            series: series.to_string(),
+            coordinate,
+            index,
+            value,
+        });
+    }
     Ok(())
+}
+
+/// The largest magnitude a figure takes on a linear axis.
+const LIMIT: f64 = 1e300;
+
+/// The largest value a logarithmic axis takes, and its inverse the smallest.
+const LOG_LIMIT: f64 = 1e100;
+
+/// `v` as a tick shows it: 0 for a linear tick that is 0 but for rounding (−2.2e-16 on an
+/// axis 2 wide). A log axis has no ticks that small beside its others.
+fn snap(v: f64, span: f64) -> f64 {
+    if v.abs() < 1e-9 * span.abs() { 0.0 } else { v }
 }
 
 /// Draws the checked figure into `svg`.
@@ -259,8 +286,8 @@ fn render(
                 .axis_desc_style(("sans-serif", 16))
                 .label_style(("sans-serif", 13))
                 .light_line_style(RGBColor(235, 235, 235))
-                .x_label_formatter(&|v| tick_label(*v))
-                .y_label_formatter(&|v| tick_label(*v))
+                .x_label_formatter(&|v| tick_label(snap(*v, x1 - x0)))
+                .y_label_formatter(&|v| tick_label(snap(*v, y1 - y0)))
                 .draw()?;
             for (k, s) in series.iter().enumerate() {
                 let color = PALETTE[s.color.unwrap_or(k) % PALETTE.len()];
