@@ -180,8 +180,11 @@ pub fn figure(
     Ok(path)
 }
 
+/// An axis's shown range, (from, to).
+type Span = (f64, f64);
+
 /// Checks every point and returns the padded x and y ranges.
-fn ranges(figure: &Figure, series: &[Series]) -> Result<((f64, f64), (f64, f64)), PlotError> {
+fn ranges(figure: &Figure, series: &[Series]) -> Result<(Span, Span), PlotError> {
     if series.is_empty() {
         return Err(PlotError::NoSeries);
     }
