@@ -107,7 +107,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     let y0 = [2.0, -1.0, 0.0, 0.0];
     let e0 = p.energy(&[y0[0], y0[1]], &[y0[2], y0[3]]);
     let mut ode = Dop853::new(&p, 0.0, y0, AdaptiveConfig::with_tol(1e-12, 1e-14))?;
-    let (mut theta, mut drift) = (Vec::new(), Vec::new());
+    let (mut times, mut theta1, mut theta2, mut rate1) = (vec![], vec![], vec![], vec![]);
+    let mut drift = Vec::new();
     let mut worst: f64 = 0.0;
     for k in 1..=3000 {
         let t = 0.01 * k as f64;
@@ -116,7 +117,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         let e = p.energy(&[y[0], y[1]], &[y[2], y[3]]);
         let rel = ((e - e0) / e0).abs();
         worst = worst.max(rel);
-        theta.push((t, y[0], y[1]));
+        times.push(t);
+        theta1.push(y[0]);
+        theta2.push(y[1]);
+        rate1.push(y[2]);
         drift.push((t, rel.max(1e-18)));
     }
     let y = ode.y();
@@ -134,22 +138,21 @@ fn main() -> Result<(), Box<dyn Error>> {
         ode.stats().steps
     );
 
-    let path = plot(
-        "double_pendulum.svg",
-        &Axes {
-            title: "Double pendulum: a chaotic swing from θ = (2, −1)",
-            x: "t [s]",
-            y: "angle [rad]",
-            log_x: false,
-            log_y: false,
-        },
-        &[
-            Series::line("θ1", theta.iter().map(|&(t, a, _)| (t, a)).collect()),
-            Series::line(
-                "θ2 (relative)",
-                theta.iter().map(|&(t, _, b)| (t, b)).collect(),
-            ),
-        ],
+    // The library's one-call figures: the angles against time, and the upper rod's phase
+    // portrait (θ1 against θ̇1), which a chaotic swing fills instead of closing.
+    let dir = common::plot_dir()?;
+    let path = precess::plot::time_series(
+        dir.join("double_pendulum.svg"),
+        "Double pendulum: a chaotic swing from θ = (2, −1)",
+        &times,
+        &[("θ1", &theta1), ("θ2 (relative)", &theta2)],
+    )?;
+    println!("  wrote {}", path.display());
+    let path = precess::plot::phase_portrait(
+        dir.join("double_pendulum_phase.svg"),
+        "Double pendulum: the upper rod's phase portrait over 30 s",
+        ("θ1 [rad]", &theta1),
+        ("θ̇1 [rad/s]", &rate1),
     )?;
     println!("  wrote {}", path.display());
     let path = plot(

@@ -14,7 +14,7 @@ mod common;
 
 use std::error::Error;
 
-use common::{Axes, Series, Table, plot};
+use common::Table;
 use precess::exact::FreeBodyExact;
 use precess::ode::{AdaptiveConfig, Dop853, Event, FnSystem, Run};
 use precess::prelude::*;
@@ -51,7 +51,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     });
     let t_end = 20.0;
     let mut ode = Dop853::new(sys, 0.0, w0.into(), AdaptiveConfig::with_tol(1e-12, 1e-12))?;
-    let out = Run::new(&mut ode, t_end)
+    let mut out = Run::new(&mut ode, t_end)
         .sample_every(0.005)
         .event(Event::new("flip"), move |_t, w: &[f64; 3]| w[mid])
         .integrate()?;
@@ -89,28 +89,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     table.print("Wing nut spun near its intermediate axis (DOP853, rtol 1e-12; theory 2K/λ)");
 
-    let column = |k: usize| -> Vec<(f64, f64)> {
-        out.trajectory
-            .times()
-            .iter()
-            .zip(out.trajectory.states())
-            .map(|(t, w)| (*t, w[k]))
-            .collect()
-    };
-    let path = plot(
-        "dzhanibekov.svg",
-        &Axes {
-            title: "Wing nut: body angular velocity, flipping every 2K/λ",
-            x: "t [s]",
-            y: "ω [rad/s]",
-            log_x: false,
-            log_y: false,
-        },
-        &[
-            Series::line("ω1", column(0)),
-            Series::line("ω2", column(1)),
-            Series::line("ω3", column(2)),
-        ],
+    // The library draws the recorded trajectory in one call, its columns named as the CSV
+    // names them.
+    out.trajectory.set_state_names(["ω1", "ω2", "ω3"])?;
+    let path = precess::plot::trajectory(
+        common::plot_dir()?.join("dzhanibekov.svg"),
+        "Wing nut: body angular velocity ω [rad/s], flipping every 2K/λ",
+        &out.trajectory,
+        &[],
     )?;
     println!("  figure: {}", path.display());
     Ok(())

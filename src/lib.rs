@@ -154,6 +154,11 @@ pub struct FreeBodiesDoctests;
 #[cfg(doctest)]
 pub struct MechanismsDoctests;
 
+/// The plotting guide's example, compiled and run as a doctest so it cannot go stale.
+#[doc = include_str!("../docs/plots.md")]
+#[cfg(all(doctest, feature = "plot"))]
+pub struct PlotsDoctests;
+
 /// The constraint guide's example, compiled and run as a doctest so it cannot go stale.
 #[doc = include_str!("../docs/constraints.md")]
 #[cfg(doctest)]

@@ -26,6 +26,8 @@ mod layering;
 pub mod linalg;
 pub mod mechanism;
 pub mod ode;
+#[cfg(feature = "plot")]
+pub mod plot;
 pub mod rigid;
 pub mod sym;
 pub mod taylor;

@@ -1,5 +1,5 @@
-//! What the gallery examples share: the table of measured against theory, and line plots
-//! written as SVG.
+//! What the gallery examples share: the table of measured against theory, and the shorthand
+//! for figures drawn by `precess::plot`.
 //!
 //! Each example is one physical scene; it prints its table and writes its figures to
 //! `target/precess-plots/`, or to the directory given as the first command-line argument.
@@ -9,14 +9,13 @@
 use std::error::Error;
 use std::path::PathBuf;
 
-use plotters::prelude::*;
-
-/// The directory for figures: the first command-line argument, else `target/precess-plots`.
+/// The directory for figures: the first command-line argument, else
+/// [`precess::plot::DEFAULT_DIR`] (`target/precess-plots`).
 pub fn plot_dir() -> Result<PathBuf, Box<dyn Error>> {
     let dir = std::env::args()
         .nth(1)
         .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from("target/precess-plots"));
+        .unwrap_or_else(|| PathBuf::from(precess::plot::DEFAULT_DIR));
     std::fs::create_dir_all(&dir)?;
     Ok(dir)
 }
@@ -73,7 +72,7 @@ pub fn relative_error(measured: f64, theory: f64) -> f64 {
     }
 }
 
-/// One curve of a figure.
+/// One curve of a figure (the examples' shorthand for [`precess::plot::Series`]).
 pub struct Series {
     /// The legend's label.
     pub label: String,
@@ -117,117 +116,45 @@ pub struct Axes<'a> {
     pub log_y: bool,
 }
 
-/// A tick label: plain decimals for moderate magnitudes, scientific notation otherwise.
-fn tick(v: f64) -> String {
-    let a = v.abs();
-    if a == 0.0 || (1e-2..1e4).contains(&a) {
-        let s = format!("{v:.4}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        format!("{v:.1e}")
-    }
-}
-
-const PALETTE: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(23, 190, 207),
-];
-
 /// Writes the series as an SVG line plot to `file` under [`plot_dir`], and returns its path.
 pub fn plot(file: &str, axes: &Axes, series: &[Series]) -> Result<PathBuf, Box<dyn Error>> {
     plot_in(&plot_dir()?, file, axes, series)
 }
 
 /// As [`plot`], into the directory `dir` (for an example whose arguments are not just a
-/// directory).
+/// directory): [`precess::plot::figure`], except that points a logarithmic axis cannot show
+/// (an error of exactly 0) or that are not finite are left out rather than refused, and so
+/// is a series left without points, as the examples' figures always did.
 pub fn plot_in(
     dir: &std::path::Path,
     file: &str,
     axes: &Axes,
     series: &[Series],
 ) -> Result<PathBuf, Box<dyn Error>> {
-    let path = dir.join(file);
-    let finite = |v: f64, log: bool| v.is_finite() && (!log || v > 0.0);
-    let points = series
+    let drawable = |v: f64, log: bool| v.is_finite() && (!log || v > 0.0);
+    let series: Vec<precess::plot::Series> = series
         .iter()
-        .flat_map(|s| s.points.iter())
-        .filter(|(x, y)| finite(*x, axes.log_x) && finite(*y, axes.log_y));
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y) in points {
-        (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
-    }
-    if x0 > x1 {
-        return Err(format!("nothing to plot in {file}").into());
-    }
-    let pad = |lo: f64, hi: f64, log: bool| {
-        if log {
-            (lo / 1.5, hi * 1.5)
-        } else {
-            let d = if hi > lo {
-                0.05 * (hi - lo)
+        .map(|s| {
+            let points = s
+                .points
+                .iter()
+                .copied()
+                .filter(|&(x, y)| drawable(x, axes.log_x) && drawable(y, axes.log_y))
+                .collect();
+            if s.markers {
+                precess::plot::Series::markers(s.label.as_str(), points)
             } else {
-                0.5 * lo.abs().max(1.0)
-            };
-            (lo - d, hi + d)
-        }
-    };
-    let ((x0, x1), (y0, y1)) = (pad(x0, x1, axes.log_x), pad(y0, y1, axes.log_y));
-
-    let root = SVGBackend::new(&path, (900, 560)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut builder = ChartBuilder::on(&root);
-    builder
-        .caption(axes.title, ("sans-serif", 22))
-        .margin(16)
-        .x_label_area_size(48)
-        .y_label_area_size(80);
-    // Four combinations of linear and logarithmic axes, each its own coordinate type.
-    macro_rules! draw {
-        ($x:expr, $y:expr) => {{
-            let mut chart = builder.build_cartesian_2d($x, $y)?;
-            chart
-                .configure_mesh()
-                .x_desc(axes.x)
-                .y_desc(axes.y)
-                .axis_desc_style(("sans-serif", 16))
-                .label_style(("sans-serif", 13))
-                .x_label_formatter(&|v| tick(*v))
-                .y_label_formatter(&|v| tick(*v))
-                .draw()?;
-            for (k, s) in series.iter().enumerate() {
-                let color = PALETTE[k % PALETTE.len()];
-                let pts = s
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|(x, y)| finite(*x, axes.log_x) && finite(*y, axes.log_y));
-                let drawn = if s.markers {
-                    chart.draw_series(pts.map(|p| Circle::new(p, 4, color.filled())))?
-                } else {
-                    chart.draw_series(LineSeries::new(pts, color.stroke_width(2)))?
-                };
-                drawn
-                    .label(s.label.as_str())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
+                precess::plot::Series::line(s.label.as_str(), points)
             }
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.8))
-                .border_style(BLACK)
-                .draw()?;
-        }};
+        })
+        .filter(|s| !s.points.is_empty())
+        .collect();
+    let mut figure = precess::plot::Figure::new(axes.title).axes(axes.x, axes.y);
+    if axes.log_x {
+        figure = figure.log_x();
     }
-    match (axes.log_x, axes.log_y) {
-        (false, false) => draw!(x0..x1, y0..y1),
-        (true, false) => draw!((x0..x1).log_scale(), y0..y1),
-        (false, true) => draw!(x0..x1, (y0..y1).log_scale()),
-        (true, true) => draw!((x0..x1).log_scale(), (y0..y1).log_scale()),
+    if axes.log_y {
+        figure = figure.log_y();
     }
-    root.present()?;
-    drop(root);
-    Ok(path)
+    Ok(precess::plot::figure(dir.join(file), &figure, &series)?)
 }

@@ -100,6 +100,8 @@ mod mechanism {
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
 /// linearised flow map Φ P₀ Φᵀ.
 mod monte_carlo_top;
+/// The figures of `precess::plot`: what the SVG holds, the axes' ranges, each error.
+mod plot;
 /// The models and generated types shared between threads are `Send + Sync`.
 mod send_sync;
 /// The integrators, events and sampling.

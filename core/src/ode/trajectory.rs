@@ -198,6 +198,15 @@ impl<St: StateColumns> Trajectory<St> {
         Ok(())
     }
 
+    /// The names of the state columns: those given to [`Trajectory::set_state_names`], else
+    /// the defaults of [`StateColumns::column_name`].
+    pub fn state_column_names(&self) -> Vec<String> {
+        match &self.state_names {
+            Some(names) => names.clone(),
+            None => (0..St::column_count()).map(St::column_name).collect(),
+        }
+    }
+
     /// Writes the trajectory as CSV: a header `t, <state columns>, <quantities>`, then one
     /// row per sample. Numbers are written so that they read back to the same `f64`.
     ///

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use plotters::prelude::*;
+use precess::plot::{Series, Style, Work};
 
 use super::methods::{Outcome, Setting, methods};
 use super::problems::{
@@ -417,82 +417,54 @@ fn adding_a_method(md: &mut String) -> Result<(), Box<dyn Error>> {
 /// How a plain-sums variant's label ends.
 const PLAIN_SUFFIX: &str = ", plain sums";
 
-const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(23, 190, 207),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-];
-
-/// The log-log figure of error against median time: a line per method, hollow markers
-/// for peers.
+/// The log-log figure of error against median time, drawn by `precess::plot`: a line with
+/// markers per method, markers alone for peers, a plain-sums variant dashed in its method's
+/// colour (so the before and after of the numerical floor read as one method, and colours do
+/// not run out). Runs whose error is 0 or not finite have no place on the log axis and are
+/// left out.
 fn figure(
     path: &Path,
     problem: Problem,
     mine: &[&Row],
     theirs: &[&PeerRow],
 ) -> Result<(), Box<dyn Error>> {
-    // (legend, points, a peer's).
-    type Curve = (String, Vec<(f64, f64)>, bool);
-    let mut series: Vec<Curve> = Vec::new();
+    let drawable = |(w, e): (f64, f64)| w > 0.0 && e > 0.0 && e.is_finite();
+    let mut series: Vec<Series> = Vec::new();
+    let mut add = |label: String, point: (f64, f64), style: Style| match series
+        .iter_mut()
+        .find(|s| s.label == label)
+    {
+        Some(s) => s.points.push(point),
+        None => series.push(Series::styled(label, vec![point], style)),
+    };
     for r in mine {
-        let p = (r.seconds, r.outcome.error);
-        if !(p.0 > 0.0 && p.1 > 0.0 && p.1.is_finite()) {
-            continue;
-        }
-        match series.iter_mut().find(|s| s.0 == r.method) {
-            Some(s) => s.1.push(p),
-            None => series.push((r.method.clone(), vec![p], false)),
+        let point = (r.seconds, r.outcome.error);
+        if drawable(point) {
+            let style = if r.method.ends_with(PLAIN_SUFFIX) {
+                Style::Dashed
+            } else {
+                Style::LineAndMarkers
+            };
+            add(r.method.clone(), point, style);
         }
     }
     for p in theirs {
-        let name = format!("{} {}", p.peer, p.method);
-        let pt = (p.seconds, p.error);
-        if !(pt.0 > 0.0 && pt.1 > 0.0 && pt.1.is_finite()) {
-            continue;
-        }
-        match series.iter_mut().find(|s| s.0 == name) {
-            Some(s) => s.1.push(pt),
-            None => series.push((name, vec![pt], true)),
+        let point = (p.seconds, p.error);
+        if drawable(point) {
+            add(format!("{} {}", p.peer, p.method), point, Style::Markers);
         }
     }
-    let pts = series.iter().flat_map(|s| s.1.iter());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y) in pts {
-        (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
-    }
-    if x0 > x1 {
+    if series.is_empty() {
         return Ok(());
     }
-    let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(problem.title(), ("sans-serif", 18))
-        .margin(16)
-        .x_label_area_size(48)
-        .y_label_area_size(80)
-        .build_cartesian_2d(
-            (x0 / 2.0..x1 * 2.0).log_scale(),
-            (y0 / 3.0..y1 * 3.0).log_scale(),
-        )?;
-    chart
-        .configure_mesh()
-        .x_desc("median time / s")
-        .y_desc("error")
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()?;
-    // A plain-sums variant shares its method's colour and is dashed, so the before and after
-    // of the numerical floor read as one method, and colours do not run out.
-    let mut bases: Vec<&str> = Vec::new();
-    for (label, points, peer) in &series {
-        let base = label.strip_suffix(PLAIN_SUFFIX).unwrap_or(label);
+    // One colour per method, whatever its variants.
+    let mut bases: Vec<String> = Vec::new();
+    for s in &mut series {
+        let base = s
+            .label
+            .strip_suffix(PLAIN_SUFFIX)
+            .unwrap_or(&s.label)
+            .to_string();
         let k = match bases.iter().position(|b| *b == base) {
             Some(k) => k,
             None => {
@@ -500,49 +472,8 @@ fn figure(
                 bases.len() - 1
             }
         };
-        let color = PALETTE[k % PALETTE.len()];
-        let plain = label.ends_with(PLAIN_SUFFIX);
-        let mut sorted = points.clone();
-        sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
-        if *peer {
-            chart
-                .draw_series(
-                    sorted
-                        .iter()
-                        .map(|&p| TriangleMarker::new(p, 6, color.stroke_width(2))),
-                )?
-                .label(label.as_str())
-                .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 6, color.stroke_width(2)));
-        } else {
-            chart.draw_series(sorted.iter().map(|&p| Circle::new(p, 3, color.filled())))?;
-            let annotated = if plain {
-                chart.draw_series(DashedLineSeries::new(
-                    sorted.iter().copied(),
-                    6,
-                    4,
-                    color.stroke_width(2),
-                ))?
-            } else {
-                chart.draw_series(LineSeries::new(
-                    sorted.iter().copied(),
-                    color.stroke_width(2),
-                ))?
-            };
-            annotated.label(label.as_str()).legend(move |(x, y)| {
-                PathElement::new(
-                    vec![(x, y), (x + 20, y)],
-                    color.stroke_width(if plain { 1 } else { 2 }),
-                )
-            });
-        }
+        s.color = Some(k);
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()?;
-    root.present()?;
+    precess::plot::work_precision(path, problem.title(), Work::Seconds, &series)?;
     Ok(())
 }
