@@ -70,6 +70,7 @@ mod free {
     mod balance;
     mod errors;
     mod exact;
+    mod gyrostat;
     mod reference;
     mod steppers;
     mod thrust;

@@ -1,6 +1,7 @@
 //! A free body, described: its mass and principal moments and the forces and torques it
 //! declares, as expressions (`derivation.rs` derives its equations).
 
+use super::rotor::Rotor;
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId};
 
@@ -58,6 +59,9 @@ pub struct FreeScene {
     /// A torque about the centre of mass supplied at run time, description axes, as three
     /// input symbols.
     pub user_torque: Option<[ExprId; 3]>,
+    /// Internal rotors spinning at constant rates relative to the body: the body is then a
+    /// gyrostat (see [`Rotor`]).
+    pub rotors: Vec<Rotor>,
 }
 
 impl FreeScene {
@@ -80,6 +84,7 @@ impl FreeScene {
             damping: None,
             user_force: None,
             user_torque: None,
+            rotors: Vec::new(),
         }
     }
 
@@ -100,6 +105,7 @@ impl FreeScene {
             (self.damping.is_some(), "damping"),
             (self.user_force.is_some(), "a user force"),
             (self.user_torque.is_some(), "a user torque"),
+            (!self.rotors.is_empty(), "a rotor"),
         ]
         .into_iter()
         .find_map(|(declared, name)| declared.then_some(name))
