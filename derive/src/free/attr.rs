@@ -18,7 +18,7 @@ fn expected(name: &Ident) -> String {
         )
     } else if name == keys::ROTOR {
         format!(
-            "`{name}({} = [x, y, z], {} = J, {} = rate)`",
+            "`{name}({} = [x, y, z], {} = J, {} = Ω)`",
             keys::AXIS,
             keys::INERTIA,
             keys::RATE

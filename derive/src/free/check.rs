@@ -141,7 +141,7 @@ fn setting<'a>(
         _ if key == keys::ROTOR => ck.cx.error_spanned_by(
             key,
             format!(
-                "`{key}` is a part: write `{key}({} = [x, y, z], {} = J, {} = rate)`",
+                "`{key}` is a part: write `{key}({} = [x, y, z], {} = J, {} = Ω)`",
                 keys::AXIS,
                 keys::INERTIA,
                 keys::RATE

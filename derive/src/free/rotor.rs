@@ -30,7 +30,7 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
             ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` for `{}` in `{within}`: allowed keys are {}{}",
+                    "unknown key `{key}` for `{}` in {within}: allowed keys are {}{}",
                     keys::ROTOR,
                     ROTOR_KEYS.join(", "),
                     keys::did_you_mean(&key.to_string(), ROTOR_KEYS.iter().copied())
@@ -48,6 +48,11 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
         }
         slots[at] = Some(value);
     }
+    // An unknown or repeated key is the error to fix first; a key it stood for would be
+    // reported missing too.
+    if !ok {
+        return None;
+    }
     let [axis, inertia, rate] = slots;
     let (Some(axis), Some(inertia), Some(rate)) = (axis, inertia, rate) else {
         // The wheel needs all three: which way it spins, how heavy it is, how fast.
@@ -60,7 +65,7 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
         ck.cx.error_spanned_by(
             name,
             format!(
-                "`{}` needs {}: write `{}({} = [x, y, z], {} = J, {} = rate)` (axis in description axes, J its axial moment of inertia, rate its spin relative to the body)",
+                "`{}` needs {}: write `{}({} = [x, y, z], {} = J, {} = Ω)` (the axis fixed in the body, description axes; J the wheel's moment of inertia about it; Ω its spin relative to the body, e.g. `3000 rpm`)",
                 keys::ROTOR,
                 missing.join(" and "),
                 keys::ROTOR,
@@ -74,11 +79,10 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
     let axis = ck.expecting(Dim::NONE, keys::AXIS, |ck| rotor_axis(ck, axis));
     let inertia = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
     let rate = ck.expecting(RATE, keys::RATE, |ck| ck.scalar(rate));
-    let (axis, inertia, rate) = (axis?, inertia?, rate?);
-    ok.then_some(Rotor {
-        axis,
-        inertia,
-        rate,
+    Some(Rotor {
+        axis: axis?,
+        inertia: inertia?,
+        rate: rate?,
     })
 }
 
