@@ -70,6 +70,8 @@ mod free {
     mod balance;
     mod errors;
     mod exact;
+    mod gyrostat;
+    mod gyrostat_example;
     mod reference;
     mod steppers;
     mod thrust;

@@ -7,6 +7,7 @@
 //! needs are ever lowered.
 
 use super::error::FreeError;
+use super::rotor::principal_momentum;
 use super::scene::{ForcePoint, FreeScene};
 use super::state::STATE_LEN;
 use crate::rigid::{quaternion_rate, rotation_of_quaternion};
@@ -18,20 +19,22 @@ use crate::sym::{Arena, ExprId, Rational};
 pub struct FreeDerivation {
     /// The state symbols, in the order of [`super::layout`].
     pub state: [ExprId; STATE_LEN],
-    /// The right-hand side ẏ: ẋ = v, v̇ = F/M, q̇ = ½ q ⊗ (0, ω), ω̇ = I⁻¹(τ − ω × I ω).
+    /// The right-hand side ẏ: ẋ = v, v̇ = F/M, q̇ = ½ q ⊗ (0, ω), ω̇ = I⁻¹(τ − ω × (I ω + h))
+    /// (h the rotors' relative momentum, principal axes; absent without rotors).
     pub rhs: [ExprId; STATE_LEN],
     /// The total force F, space axes.
     pub force: [ExprId; 3],
     /// The total torque τ about the centre of mass, principal axes.
     pub torque: [ExprId; 3],
-    /// The energy E = ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x.
+    /// The energy E = ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x (with rotors at constant rate, the
+    /// integral that is conserved: their motor's work is not in it).
     pub energy: ExprId,
     /// The power of every force but gravity, P = F'·v + τ·ω (F' = F − M g), so that
     /// dE/dt = P.
     pub power: ExprId,
     /// The linear momentum M v, space axes.
     pub linear_momentum: [ExprId; 3],
-    /// The angular momentum about the space origin, x × M v + R I ω, space axes.
+    /// The angular momentum about the space origin, x × M v + R (I ω + h), space axes.
     pub angular_momentum: [ExprId; 3],
 }
 
@@ -40,7 +43,8 @@ impl FreeScene {
     /// momenta, over fresh input symbols for the state.
     ///
     /// # Errors
-    /// [`FreeError::ZeroInertia`] if the mass or a principal moment is identically zero.
+    /// [`FreeError::ZeroInertia`] if the mass or a principal moment is identically zero;
+    /// [`FreeError::ZeroRotorAxis`] if a rotor's axis is.
     pub fn derive(&self, arena: &mut Arena) -> Result<FreeDerivation, FreeError> {
         const NAMES: [&str; STATE_LEN] = [
             "x", "y", "z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z", "omega_1", "omega_2",
@@ -59,7 +63,11 @@ impl FreeScene {
         } = self.wrench(arena, &rotation, &v, &omega);
         let inv_mass = reciprocal(arena, self.mass, "mass")?;
         let accel = force.map(|f| arena.mul(inv_mass, f));
-        let omega_dot = self.euler(arena, &omega, &torque)?;
+        let h = principal_momentum(arena, &self.rotors, &self.principal_rotation)?;
+        let mut omega_dot = self.euler(arena, &omega, &torque)?;
+        if let Some(h) = h {
+            omega_dot = self.gyrostat(arena, &omega, &h, omega_dot)?;
+        }
         let q_dot = quaternion_rate(arena, q, omega);
         let mut rhs = [arena.zero(); STATE_LEN];
         rhs[..3].copy_from_slice(&v);
@@ -85,7 +93,11 @@ impl FreeScene {
         let power = arena.add(fv, tw);
         let linear_momentum = v.map(|c| arena.mul(self.mass, c));
         let orbital = cross(arena, &x, &linear_momentum);
-        let spin = mat_vec(arena, &rotation, &i_omega);
+        let body_momentum = match h {
+            Some(h) => std::array::from_fn(|k| arena.add(i_omega[k], h[k])),
+            None => i_omega,
+        };
+        let spin = mat_vec(arena, &rotation, &body_momentum);
         let angular_momentum: [ExprId; 3] = std::array::from_fn(|k| arena.add(orbital[k], spin[k]));
         Ok(FreeDerivation {
             state,
@@ -206,6 +218,40 @@ impl FreeScene {
             };
             let drive = arena.mul(inverse, torque[i]);
             out[i] = arena.add(gyro, drive);
+        }
+        Ok(out)
+    }
+}
+
+impl FreeScene {
+    /// The rotors' gyroscopic term added to Euler's equations: ω̇ᵢ −= (ω × h)ᵢ/Iᵢ, with
+    /// (ω × h)ᵢ = ωⱼ hₖ − ωₖ hⱼ; a component of h that is zero removes its products.
+    fn gyrostat(
+        &self,
+        arena: &mut Arena,
+        omega: &[ExprId; 3],
+        h: &[ExprId; 3],
+        euler: [ExprId; 3],
+    ) -> Result<[ExprId; 3], FreeError> {
+        const MOMENTS: [&str; 3] = [
+            "principal moment I1",
+            "principal moment I2",
+            "principal moment I3",
+        ];
+        let h = h.map(|c| fold(arena, c));
+        let mut out = euler;
+        for i in 0..3 {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            let inverse = reciprocal(arena, self.moments[i], MOMENTS[i])?;
+            // −(ωⱼ hₖ − ωₖ hⱼ)/Iᵢ = (hⱼ/Iᵢ) ωₖ − (hₖ/Iᵢ) ωⱼ, each coefficient folded.
+            let cj = arena.mul(h[j], inverse);
+            let cj = fold(arena, cj);
+            let ck = arena.mul(h[k], inverse);
+            let ck = fold(arena, ck);
+            let plus = arena.mul(cj, omega[k]);
+            let minus = arena.mul(ck, omega[j]);
+            let term = arena.sub(plus, minus);
+            out[i] = arena.add(out[i], term);
         }
         Ok(out)
     }

@@ -62,6 +62,25 @@ pub enum FreeError {
         /// Which: "mass" or "principal moment I1" …
         quantity: &'static str,
     },
+    /// A rotor's axis is zero as an expression: it names no direction to spin about.
+    #[error("rotor {rotor} has a zero axis: give a non-zero body-fixed direction")]
+    ZeroRotorAxis {
+        /// The rotor's index, in the order declared.
+        rotor: usize,
+    },
+    /// A rotor's axial moment is not finite and positive, or its axis not finite and
+    /// non-zero, for the current field values: the rule literals meet at compile time.
+    #[error(
+        "rotor {rotor}: its inertia must be finite and > 0 and its axis finite and non-zero: inertia = {inertia}, |axis| = {axis_norm}"
+    )]
+    InvalidRotor {
+        /// The rotor's index, in the order declared.
+        rotor: usize,
+        /// Its axial moment of inertia.
+        inertia: f64,
+        /// The length of its axis.
+        axis_norm: f64,
+    },
     /// The exact flow was asked of a body under forces other than uniform gravity.
     #[error(
         "the exact flow needs a body under uniform gravity alone, but it also declares {declared}"
@@ -122,6 +141,15 @@ impl FreeError {
                     ("principal moment".to_owned(), smallest)
                 } else {
                     ("mass".to_owned(), *mass)
+                }
+            }
+            FreeError::InvalidRotor {
+                inertia, axis_norm, ..
+            } => {
+                if inertia.is_finite() && *inertia > 0.0 {
+                    ("rotor axis".to_owned(), *axis_norm)
+                } else {
+                    ("rotor inertia".to_owned(), *inertia)
                 }
             }
             _ => ("parameters".to_owned(), f64::NAN),

@@ -6,7 +6,7 @@
 //!   centre of mass and on the rotation, user functions, an [`AppliedWrench`] whose frame its
 //!   constructor names) and [`FreeScene::derive`] derives the
 //!   right-hand side, the wrench, the energy, its power balance and the momenta symbolically,
-//!   so only what is declared appears; [`cm_frame`] decides the principal frame about the
+//!   so only what is declared appears; a [`Rotor`] makes the body a gyrostat; [`cm_frame`] decides the principal frame about the
 //!   centre of mass.
 //! - [`FreeState`] is the state with its frames in its names; [`layout`] places it in the
 //!   array of [`STATE_LEN`] numbers the steppers integrate.
@@ -26,6 +26,7 @@ mod flight;
 mod frame;
 mod interpreted;
 mod quantities;
+mod rotor;
 mod scene;
 mod state;
 mod system;
@@ -39,6 +40,7 @@ pub use flight::{FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};
+pub use rotor::Rotor;
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};

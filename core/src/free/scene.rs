@@ -2,6 +2,7 @@
 //! declares, as expressions (`derivation.rs` derives its equations).
 
 use super::wrench::WrenchInputs;
+use super::rotor::Rotor;
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId};
 
@@ -63,6 +64,9 @@ pub struct FreeScene {
     /// parts): forces through the centre of mass and torques about it, in space and in
     /// description axes.
     pub user_wrench: Option<WrenchInputs>,
+    /// Internal rotors spinning at constant rates relative to the body: the body is then a
+    /// gyrostat (see [`Rotor`]).
+    pub rotors: Vec<Rotor>,
 }
 
 impl FreeScene {
@@ -86,6 +90,7 @@ impl FreeScene {
             user_force: None,
             user_torque: None,
             user_wrench: None,
+            rotors: Vec::new(),
         }
     }
 
@@ -107,6 +112,7 @@ impl FreeScene {
             (self.user_force.is_some(), "a user force"),
             (self.user_torque.is_some(), "a user torque"),
             (self.user_wrench.is_some(), "a user wrench"),
+            (!self.rotors.is_empty(), "a rotor"),
         ]
         .into_iter()
         .find_map(|(declared, name)| declared.then_some(name))

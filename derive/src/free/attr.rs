@@ -16,6 +16,13 @@ fn expected(name: &Ident) -> String {
             keys::FORCE,
             keys::FORCE_AT
         )
+    } else if name == keys::ROTOR {
+        format!(
+            "`{name}({} = [x, y, z], {} = J, {} = Ω)`",
+            keys::AXIS,
+            keys::INERTIA,
+            keys::RATE
+        )
     } else {
         format!("`{name} = value`")
     };

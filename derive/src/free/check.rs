@@ -1,7 +1,7 @@
 //! Meaning of the `#[free(...)]` items: keys against the table in `keys.rs`, values with the
 //! value rules of `lang::values` in the same arena, one function per rule with its reason.
 
-use precess_core::free::{AppliedForce, ForcePoint};
+use precess_core::free::{AppliedForce, ForcePoint, Rotor};
 use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
@@ -37,6 +37,8 @@ pub struct FreeSettings {
     pub wrenches: Vec<syn::Path>,
     /// The maximum order of the generated Taylor recurrences, if asked for.
     pub taylor: Option<usize>,
+    /// Internal rotors at constant relative rates (the body is a gyrostat).
+    pub rotors: Vec<Rotor>,
 }
 
 /// Checks the `#[free]` items, if the struct has any attribute. `None` after an error
@@ -75,6 +77,11 @@ pub fn check(
             // Read by `TaylorKey` above.
             Item::Setting(kv) if kv.key == keys::TAYLOR => {}
             Item::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
+            Item::Group { name, keys } if name == keys::ROTOR => {
+                if let Some(rotor) = super::rotor::check(ck, name, keys, &in_free) {
+                    settings.rotors.push(rotor);
+                }
+            }
             Item::Group { name, keys } => {
                 if let Some((space, force)) = force_part(ck, name, keys) {
                     if space {
@@ -140,6 +147,15 @@ fn setting<'a>(
         }
         Some(keys::FORCE) => settings.force = user_fn(ck, value, keys::FORCE),
         Some(keys::TORQUE) => settings.torque = user_fn(ck, value, keys::TORQUE),
+        _ if key == keys::ROTOR => ck.cx.error_spanned_by(
+            key,
+            format!(
+                "`{key}` is a part: write `{key}({} = [x, y, z], {} = J, {} = Ω)`",
+                keys::AXIS,
+                keys::INERTIA,
+                keys::RATE
+            ),
+        ),
         _ if FREE_FORCES.iter().any(|&f| key == f) => ck.cx.error_spanned_by(
             key,
             format!(
@@ -161,11 +177,13 @@ fn unknown(key: &Ident) -> String {
     let written = key.to_string();
     let known = FREE_KEYS.iter().chain(FREE_FORCES).copied();
     format!(
-        "unknown key `{key}` in `#[{}]`: expected {}, or a force {}{}",
+        "unknown key `{key}` in `#[{}]`: expected {}, a force {}, or `{}({})`{}",
         keys::FREE,
         FREE_KEYS.join(", "),
         forces.join(" or "),
-        keys::did_you_mean(&written, known)
+        keys::ROTOR,
+        keys::ROTOR_KEYS.join(", "),
+        keys::did_you_mean(&written, known.chain([keys::ROTOR]))
     )
 }
 

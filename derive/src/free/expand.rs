@@ -151,6 +151,7 @@ fn scene(
     scene.space_torque = settings.space_torque;
     scene.drag = settings.drag;
     scene.damping = settings.damping;
+    scene.rotors = settings.rotors.clone();
     // A user function's value enters the derivation as three input symbols.
     let mut user = |arena: &mut Arena, path: &Option<syn::Path>, local: TokenStream, name: &str| {
         let path = path.as_ref()?;
@@ -382,10 +383,12 @@ fn check_parameters(
             }
         }
     });
+    let rotors = super::rotor::check_tokens(low, arena, &settings.rotors);
     quote!({
         #(#fields)*
         #lets
         #(#signs)*
+        #rotors
         #p::RigidBody::validate(self)?;
         let __mass = #p::RigidBody::mass(self);
         let __m = #p::FreeDynamics::principal_cm(self).moments;

@@ -262,6 +262,13 @@ pub const FREE_FORCES: &[&str] = &[BODY_FORCE, SPACE_FORCE];
 /// The keys of a force part: both required.
 pub const FORCE_KEYS: &[&str] = &[FORCE, FORCE_AT];
 
+/// An internal rotor of a free body or a top, `rotor(axis = .., inertia = .., rate = ..)`.
+pub const ROTOR: &str = "rotor";
+/// A rotor's constant spin rate relative to the body.
+pub const RATE: &str = "rate";
+/// The keys of a rotor: all required.
+pub const ROTOR_KEYS: &[&str] = &[AXIS, INERTIA, RATE];
+
 /// The keys `#[rigid(...)]` takes beside its parts.
 pub const RIGID_KEYS: &[&str] = &[PIVOT, TAYLOR];
 
