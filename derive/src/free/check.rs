@@ -177,7 +177,7 @@ fn unknown(key: &Ident) -> String {
     let written = key.to_string();
     let known = FREE_KEYS.iter().chain(FREE_FORCES).copied();
     format!(
-        "unknown key `{key}` in `#[{}]`: expected {}, a force {}, or `{}({})`{}",
+        "unknown key `{key}` in `#[{}]`: expected {}, a force {}, or a rotor {}({}){}",
         keys::FREE,
         FREE_KEYS.join(", "),
         forces.join(" or "),
