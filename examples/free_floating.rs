@@ -121,17 +121,8 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     // Thrown on Earth, tumbling.
     let thrown = Satellite { g: 9.81, k: 40.0 };
-    let mut y0 = [0.0; 14];
-    y0[Satellite::Z] = 2.0;
-    y0[Satellite::BETA] = 0.4;
-    y0[7 + Satellite::X] = 1.2;
-    y0[7 + Satellite::Y] = -0.5;
-    y0[7 + Satellite::Z] = 6.0;
-    y0[7 + Satellite::BETA] = 1.5;
-    let spin = [(
-        *Rotation3::from_euler_angles(0.2, 0.4, -0.3).matrix(),
-        Vector3::new(0.7, -0.4, 1.1),
-    )];
+    let (y0, r0, omega0) = mechanism::thrown_start();
+    let spin = [(r0, omega0)];
     let mut run = ChartedMechanism::from_attitudes(&thrown, 0.0, y0, &spin, config())?;
     let [c0, v0, l0] = totals(&run).ok_or("state")?;
     let e0 = run.energy();

@@ -74,3 +74,18 @@ pub fn roll_at_zero_momentum(beta0: f64, beta: f64) -> f64 {
     }
     -sum * h / 3.0
 }
+
+/// The thrown satellite's start, shared by the example and its test: the state (the bus 2 m
+/// up, thrown at (1.2, −0.5, 6) m/s with the panel 0.4 rad open and opening at 1.5 rad/s),
+/// and the bus's attitude and rates (ZYX angles 0.2, 0.4, −0.3; ω in body axes).
+pub fn thrown_start() -> ([f64; 14], Matrix3<f64>, Vector3<f64>) {
+    let mut y0 = [0.0; 14];
+    y0[Satellite::Z] = 2.0;
+    y0[Satellite::BETA] = 0.4;
+    y0[7 + Satellite::X] = 1.2;
+    y0[7 + Satellite::Y] = -0.5;
+    y0[7 + Satellite::Z] = 6.0;
+    y0[7 + Satellite::BETA] = 1.5;
+    let attitude = *Rotation3::from_euler_angles(0.2, 0.4, -0.3).matrix();
+    (y0, attitude, Vector3::new(0.7, -0.4, 1.1))
+}

@@ -11,7 +11,7 @@ use crate::common;
 
 use common::mechanism::examples::free_floating::{
     BUS_MASS, BUS_SIZE, HINGE, PANEL_ARM, PANEL_MASS, PANEL_SIZE, Satellite, cuboid_moments,
-    roll_at_zero_momentum,
+    roll_at_zero_momentum, thrown_start,
 };
 use precess::exact::FreeBodyExact;
 use precess::mechanism::charts::{ChartedDynamics, ChartedMechanism, MechanismCharts};
@@ -240,15 +240,8 @@ fn totals(b: &Bodies, g: f64, k: f64, beta: f64) -> Totals {
 #[test]
 fn a_thrown_satellite_keeps_its_momenta_and_its_centre_falls_on_the_parabola() {
     let sat = Satellite { g: G, k: 40.0 };
-    let mut y0 = [0.0; 14];
-    y0[Satellite::Z] = 2.0;
-    y0[Satellite::BETA] = 0.4;
-    y0[7 + Satellite::X] = 1.2;
-    y0[7 + Satellite::Y] = -0.5;
-    y0[7 + Satellite::Z] = 6.0;
-    y0[7 + Satellite::BETA] = 1.5;
-    let r0 = *Rotation3::from_euler_angles(0.2, 0.4, -0.3).matrix();
-    let omega0 = Vector3::new(0.7, -0.4, 1.1);
+    // The example's throw.
+    let (y0, r0, omega0) = thrown_start();
     let mut run =
         ChartedMechanism::from_attitudes(&sat, 0.0, y0, &[(r0, omega0)], tight()).unwrap();
     let beta = |run: &ChartedMechanism<&Satellite, 14>| run.state()[Satellite::BETA];
