@@ -174,6 +174,7 @@ mod variational;
 mod values {
     mod constants;
     mod density;
+    mod mechanism_units;
     mod names;
     mod units;
 }

@@ -49,6 +49,8 @@ impl Dim {
     pub const DRAG: Dim = dim(1, 0, -1);
     /// N m s = kg m²/s: a damping torque per angular rate.
     pub const ROTARY_DAMPING: Dim = dim(1, 2, -1);
+    /// N/m = kg/s²: a spring's force per stretch (a rotary spring's N m/rad is a torque).
+    pub const STIFFNESS: Dim = dim(1, 0, -2);
 
     /// The product's dimension; `None` past the exponents' range (no real unit gets there).
     pub fn times(self, o: Dim) -> Option<Dim> {
@@ -91,6 +93,7 @@ impl Dim {
             (Dim::TORQUE, "a torque (N m)"),
             (Dim::DRAG, "a drag coefficient (kg/s)"),
             (Dim::ROTARY_DAMPING, "a rotary damping coefficient (N m s)"),
+            (Dim::STIFFNESS, "a stiffness (N/m)"),
         ];
         if let Some((_, name)) = NAMED.iter().find(|(d, _)| *d == self) {
             return (*name).to_owned();

@@ -10,10 +10,12 @@ use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
 use super::joint::path_ident;
+use super::loads::Coordinate;
 use super::rolling::{CheckedRolling, RollingSettings, WheelSpec};
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, part_list};
 use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
+use crate::lang::units::Dim;
 
 /// A coordinate's generalised force computed by a user function `f(&self, t, &q, &qdot)`.
 pub struct UserEffort {
@@ -313,16 +315,22 @@ impl Checker<'_> {
             }
             (Some(_), None) => None,
         };
-        let dof = joint.as_ref().map_or(1, |j| j.kind.dof());
-        let loads = self.loads(&k, dof, efforts);
+        let measures = joint
+            .as_ref()
+            .map_or(vec![Coordinate::Angle], |j| measures(&j.kind));
+        let loads = self.loads(&k, &measures, efforts);
         let rolls = k.rolls.map(|(key, e)| {
             self.rolls(e).map(|surface| WheelSpec {
                 surface,
                 key: key.clone(),
             })
         });
-        let body_torque = k.body_torque.map(|e| self.vector(e));
-        let space_torque = k.space_torque.map(|e| self.vector(e));
+        let body_torque = k
+            .body_torque
+            .map(|e| self.expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(e)));
+        let space_torque = k
+            .space_torque
+            .map(|e| self.expecting(Dim::TORQUE, keys::SPACE_TORQUE, |ck| ck.vector(e)));
         let parts = match k.parts {
             Some((keyword, items)) => self.link_parts(keyword, items),
             None => {
@@ -496,6 +504,16 @@ impl Checker<'_> {
 /// The part with a zero mass put to 1, so `check_part` judges the rest of a massless part
 /// (its geometry) by the body language's rules; the same substitution the generated
 /// `check_parameters` makes for a field's zero mass.
+/// What each of a joint's coordinates measures, in the order of its coordinates.
+fn measures(kind: &JointKind) -> Vec<Coordinate> {
+    use Coordinate::{Angle, Length};
+    match kind {
+        JointKind::Prismatic { .. } => vec![Length],
+        JointKind::Free { .. } => vec![Length, Length, Length, Angle, Angle, Angle],
+        other => vec![Angle; other.dof()],
+    }
+}
+
 fn massless_as_unit(numeric: &Description<f64>) -> Description<f64> {
     let mut index = 0;
     let indices = numeric.map(&mut |_| {

@@ -9,6 +9,7 @@ use syn::{Expr, Ident};
 
 use crate::lang::check::Checker;
 use crate::lang::keys;
+use crate::lang::units::Dim;
 
 /// A joint as read.
 pub(super) struct JointSpec {
@@ -118,7 +119,7 @@ impl Checker<'_> {
             None => None,
         };
         let at = match value(keys::AT) {
-            Some(v) => self.vector(v),
+            Some(v) => self.expecting(Dim::LENGTH, keys::AT, |ck| ck.vector(v)),
             None => Some([self.arena.zero(); 3]),
         };
         let kind = match kind_name.as_str() {
@@ -236,7 +237,7 @@ impl Checker<'_> {
             );
             return None;
         }
-        let axis = self.vector(e)?;
+        let axis = self.expecting(Dim::NONE, keys::AXIS, |ck| ck.vector(e))?;
         let zero = self.arena.zero();
         if axis.iter().all(|&c| self.arena.expand(c) == zero) {
             self.cx.error_spanned_by(

@@ -9,23 +9,69 @@ use super::check::{LinkKeys, UserEffort};
 use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys;
+use crate::lang::units::Dim;
+
+/// What one coordinate of a joint measures: the dimensions its loads take follow from it.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(super) enum Coordinate {
+    /// An angle (revolute, universal, spherical, a free joint's rotations): spring in N m/rad,
+    /// damper in N m s, effort a torque, rest an angle.
+    Angle,
+    /// A length (prismatic, a free joint's translations): spring in N/m, damper in N s/m,
+    /// effort a force, rest a length.
+    Length,
+}
+
+impl Coordinate {
+    fn stiffness(self) -> Dim {
+        match self {
+            Coordinate::Angle => Dim::TORQUE,
+            Coordinate::Length => Dim::STIFFNESS,
+        }
+    }
+
+    fn damper(self) -> Dim {
+        match self {
+            Coordinate::Angle => Dim::ROTARY_DAMPING,
+            Coordinate::Length => Dim::DRAG,
+        }
+    }
+
+    fn effort(self) -> Dim {
+        match self {
+            Coordinate::Angle => Dim::TORQUE,
+            Coordinate::Length => Dim::FORCE,
+        }
+    }
+
+    fn rest(self) -> Dim {
+        match self {
+            Coordinate::Angle => Dim::NONE,
+            Coordinate::Length => Dim::LENGTH,
+        }
+    }
+}
 
 impl Checker<'_> {
     /// The loads of a joint's coordinates: spring, damper and effort, one value each per
-    /// coordinate (`[a, b]` for a joint of two).
+    /// coordinate (`[a, b]` for a joint of two), each in the dimension its coordinate's kind
+    /// gives it (a value with units in another is a spanned error).
     pub(super) fn loads(
         &mut self,
         k: &LinkKeys,
-        dof: usize,
+        coordinates: &[Coordinate],
         efforts: &mut Vec<UserEffort>,
     ) -> Option<Vec<CoordinateLoad>> {
+        let dof = coordinates.len();
         let mut loads = vec![CoordinateLoad::default(); dof];
         let mut ok = true;
         if let Some(e) = k.damper {
             match self.per_coordinate(e, dof, keys::DAMPER) {
                 Some(values) => {
-                    for (load, v) in loads.iter_mut().zip(values) {
-                        load.damper = self.non_negative(v, keys::DAMPER);
+                    for ((load, v), c) in loads.iter_mut().zip(values).zip(coordinates) {
+                        load.damper = self.expecting(c.damper(), keys::DAMPER, |ck| {
+                            ck.non_negative(v, keys::DAMPER)
+                        });
                         ok &= load.damper.is_some();
                     }
                 }
@@ -35,8 +81,9 @@ impl Checker<'_> {
         if let Some(e) = k.effort {
             match self.per_coordinate(e, dof, keys::EFFORT) {
                 Some(values) => {
-                    for (load, v) in loads.iter_mut().zip(values) {
-                        load.effort = self.effort(v, efforts);
+                    for ((load, v), c) in loads.iter_mut().zip(values).zip(coordinates) {
+                        load.effort =
+                            self.expecting(c.effort(), keys::EFFORT, |ck| ck.effort(v, efforts));
                         ok &= load.effort.is_some();
                     }
                 }
@@ -96,10 +143,17 @@ impl Checker<'_> {
                     };
                     match ks {
                         Some(ks) => {
-                            for (i, (load, kv)) in loads.iter_mut().zip(ks).enumerate() {
-                                let stiffness = self.non_negative(kv, keys::STIFFNESS);
+                            for (i, ((load, kv), c)) in
+                                loads.iter_mut().zip(ks).zip(coordinates).enumerate()
+                            {
+                                let stiffness =
+                                    self.expecting(c.stiffness(), keys::STIFFNESS, |ck| {
+                                        ck.non_negative(kv, keys::STIFFNESS)
+                                    });
                                 let rest = match (&rests, rest) {
-                                    (Some(r), _) => r.get(i).and_then(|&r| self.scalar(r)),
+                                    (Some(r), _) => r.get(i).and_then(|&r| {
+                                        self.expecting(c.rest(), keys::REST, |ck| ck.scalar(r))
+                                    }),
                                     (None, None) => Some(self.arena.zero()),
                                     (None, Some(_)) => None,
                                 };
@@ -180,12 +234,12 @@ impl Checker<'_> {
         Some(symbol)
     }
 
-    /// `gravity = g` (along −z) or `[gx, gy, gz]`.
+    /// `gravity = g` (along −z) or `[gx, gy, gz]`, an acceleration.
     pub(super) fn gravity(&mut self, e: &Expr) -> Option<[ExprId; 3]> {
         if let Expr::Array(_) = e {
-            return self.vector(e);
+            return self.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| ck.vector(e));
         }
-        let g = self.scalar(e)?;
+        let g = self.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| ck.scalar(e))?;
         let z = self.arena.zero();
         Some([z, z, self.arena.neg(g)])
     }

@@ -10,6 +10,7 @@ use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys;
 use crate::lang::syntax::KeyValue;
+use crate::lang::units::Dim;
 
 /// A body's rolling surface as read, with the tokens its errors are spanned on.
 pub struct WheelSpec {
@@ -118,9 +119,10 @@ impl Checker<'_> {
             return None;
         }
         let value = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, v)| *v);
-        let radius = value(keys::RADIUS).and_then(|v| self.rolling_radius(v));
+        let radius = value(keys::RADIUS)
+            .and_then(|v| self.expecting(Dim::LENGTH, keys::RADIUS, |ck| ck.rolling_radius(v)));
         let center = match value(keys::AT) {
-            Some(v) => self.vector(v),
+            Some(v) => self.expecting(Dim::LENGTH, keys::AT, |ck| ck.vector(v)),
             None => Some([self.arena.zero(); 3]),
         };
         if kind == "sphere" {
