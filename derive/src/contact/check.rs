@@ -11,6 +11,7 @@ use syn::{Attribute, Expr, Ident};
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, CONTACT_KEYS, LAWS, SURFACES};
 use crate::lang::syntax::{Item, KeyValue, Parsed};
+use crate::lang::units::Dim;
 use crate::rigid::check::CheckedBody;
 
 use super::forms::{at_least_zero, law_list, read_law, read_surface, surface_list};
@@ -105,12 +106,14 @@ pub fn check(
             }
             Some(keys::LAW) => law = read_law(ck, value),
             Some(keys::GRAVITY) => {
-                gravity = at_least_zero(
-                    ck,
-                    value,
-                    "`gravity`",
-                    "it is g along −z; one pulling up would lift the body off the table",
-                );
+                gravity = ck.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| {
+                    at_least_zero(
+                        ck,
+                        value,
+                        "`gravity`",
+                        "it is g along −z; one pulling up would lift the body off the table",
+                    )
+                });
             }
             _ => ck.cx.error_spanned_by(
                 key,

@@ -8,6 +8,7 @@ use syn::{Expr, Ident};
 
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, LAWS, SURFACES};
+use crate::lang::units::Dim;
 
 /// One argument of a call form: `key = value`, or a bare word (`frictionless`).
 enum Arg<'a> {
@@ -183,13 +184,17 @@ pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
         return None;
     }
     let of = |key: &str| format!("`{key}` of `{kind}`");
-    let placement = |ck: &mut Checker, key: &str| match value_of(&args, key) {
-        Some(v) => ck.vector(v),
+    let placement = |ck: &mut Checker, key: &'static str| match value_of(&args, key) {
+        Some(v) => ck.expecting(Dim::LENGTH, key, |ck| ck.vector(v)),
         None => Some([ck.arena.zero(); 3]),
+    };
+    // Every size of a surface is a length.
+    let positive = |ck: &mut Checker, value: &Expr, key: &'static str| {
+        ck.expecting(Dim::LENGTH, key, |ck| positive(ck, value, &of(key)))
     };
     match kind {
         "sphere" | "disk_rim" => {
-            let radius = positive(ck, value_of(&args, keys::RADIUS)?, &of(keys::RADIUS));
+            let radius = positive(ck, value_of(&args, keys::RADIUS)?, keys::RADIUS);
             let center = placement(ck, keys::SURFACE_CENTER);
             let (radius, center) = (radius?, center?);
             Some(if kind == "sphere" {
@@ -199,8 +204,9 @@ pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
             })
         }
         "ellipsoid" => {
-            let semi_axes =
-                positive_vector(ck, value_of(&args, keys::SEMI_AXES)?, &of(keys::SEMI_AXES));
+            let semi_axes = ck.expecting(Dim::LENGTH, keys::SEMI_AXES, |ck| {
+                positive_vector(ck, value_of(&args, keys::SEMI_AXES)?, &of(keys::SEMI_AXES))
+            });
             let center = placement(ck, keys::SURFACE_CENTER);
             Some(Surface::Ellipsoid {
                 center: center?,
@@ -208,9 +214,9 @@ pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
             })
         }
         "torus" => {
-            let radius = positive(ck, value_of(&args, keys::RADIUS)?, &of(keys::RADIUS));
+            let radius = positive(ck, value_of(&args, keys::RADIUS)?, keys::RADIUS);
             let tube_value = value_of(&args, keys::TUBE)?;
-            let tube = positive(ck, tube_value, &of(keys::TUBE));
+            let tube = positive(ck, tube_value, keys::TUBE);
             let center = placement(ck, keys::SURFACE_CENTER);
             let (radius, tube, center) = (radius?, tube?, center?);
             tube_within(ck, tube_value, radius, tube)?;
@@ -224,7 +230,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
             let curvature_radius = positive(
                 ck,
                 value_of(&args, keys::CURVATURE_RADIUS)?,
-                &of(keys::CURVATURE_RADIUS),
+                keys::CURVATURE_RADIUS,
             );
             let vertex = placement(ck, keys::VERTEX);
             Some(Surface::Paraboloid {
@@ -271,9 +277,20 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
         return None;
     };
     let args = keyed(ck, name, &args, allowed)?;
-    let coefficient = |ck: &mut Checker, key: &str| -> Option<Option<ExprId>> {
+    // A resistance is a torque per angular rate, viscous friction a force per slip speed,
+    // a friction coefficient a pure number.
+    let coefficient = |ck: &mut Checker, key: &'static str| -> Option<Option<ExprId>> {
+        let dim = match key {
+            keys::ROLLING_RESISTANCE | keys::SPIN_RESISTANCE => Dim::ROTARY_DAMPING,
+            keys::VISCOUS => Dim::DRAG,
+            _ => Dim::NONE,
+        };
         match value_of(&args, key) {
-            Some(v) => non_negative(ck, v, &format!("`{key}` of `{kind}`")).map(Some),
+            Some(v) => ck
+                .expecting(dim, key, |ck| {
+                    non_negative(ck, v, &format!("`{key}` of `{kind}`"))
+                })
+                .map(Some),
             None => Some(None),
         }
     };
