@@ -405,7 +405,7 @@ fn check_parameters(
 /// A const per slot of the state, named in capitals after [`STATE_NAMES`] (`X`, `VX`, `QW`,
 /// `OMEGA_2`, …), as a mechanism's derive names its coordinates: `y[Body::VZ]` reads what the
 /// CSV column `vz` holds.
-fn slot_consts(ident: &syn::Ident) -> Vec<TokenStream> {
+pub(super) fn slot_consts(ident: &syn::Ident) -> Vec<TokenStream> {
     STATE_NAMES
         .iter()
         .enumerate()

@@ -1,5 +1,6 @@
 //! The stub `impl FreeDynamics` emitted next to the errors when the struct declares a free
-//! body, so code using the trait does not add errors to the real ones.
+//! body, so code using the trait does not add errors to the real ones; with it the state's
+//! slot names (`Body::VZ`), which do not depend on the description.
 
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -7,13 +8,20 @@ use syn::DeriveInput;
 
 use crate::lang::private::Private;
 
-/// A stub `impl FreeDynamics` for `input`.
+/// A stub `impl FreeDynamics` for `input`, and its slot consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
+    let slots = super::expand::slot_consts(ident);
     quote! {
+        #[automatically_derived]
+        impl #impl_generics #ident #ty_generics #where_clause {
+            #(#slots)*
+        }
+
+
         #[automatically_derived]
         impl #impl_generics #p::FreeDynamics for #ident #ty_generics #where_clause {
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = ::core::option::Option::None;
