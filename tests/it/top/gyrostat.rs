@@ -365,3 +365,48 @@ fn quantities_count_the_wheels_momentum() {
     quantities.evaluate(0.0, &angle_state(&[0.1, 0.8, 0.2], &[0.0; 3]), &mut out);
     assert_relative_eq!(out[at], gyro_h().norm(), max_relative = 1e-14);
 }
+
+/// A scene built at run time with a rotor whose rate is a parameter, interpreted by
+/// `TopModel`: the same steady precession is an equilibrium, and the rate changes it.
+#[test]
+fn run_time_scene_with_a_rotor() {
+    use precess::free::Rotor;
+    use precess::sym::Arena;
+    use precess::top::{TopModel, TopScene};
+    let mut a = Arena::new();
+    let (one, half, z) = (
+        a.one(),
+        a.constant(precess::sym::Rational::new(1, 2).unwrap()),
+        a.zero(),
+    );
+    let mut scene = TopScene::free(&mut a, [[one, z, z], [z, one, z], [z, z, half]]);
+    scene.center = [z, z, one];
+    scene.gravity = Some(one);
+    let (j, rate) = (a.parameter("J"), a.parameter("Omega"));
+    scene.rotors.push(Rotor {
+        axis: [z, z, one],
+        inertia: j,
+        rate,
+    });
+    let derivation = scene.derive(&mut a).unwrap();
+    let (theta, w3, omega_p) = gyrotop_precession();
+    let state = [0.0, theta, 0.0, omega_p, 0.0, w3 - omega_p * theta.cos()];
+    let mut model = TopModel::new(&mut a, &derivation, &[("J", 0.2), ("Omega", 10.0)]).unwrap();
+    assert!(
+        model
+            .accelerations(&state)
+            .unwrap()
+            .iter()
+            .all(|x| x.abs() < 1e-13)
+    );
+    assert_relative_eq!(model.momenta(&state)[2], 0.5 * w3 + 2.0, epsilon = 1e-13);
+    // Without the wheel's momentum the same state is not steady: θ̈ = 1/4 (from the
+    // equation in the header with h = 0: sin θ (½ Ω_p² − 5 Ω_p + 1)).
+    model.set("Omega", 0.0).unwrap();
+    let expected = theta.sin() * (omega_p * omega_p * theta.cos() - 5.0 * omega_p + 1.0);
+    assert_relative_eq!(
+        model.accelerations(&state).unwrap()[1],
+        expected,
+        epsilon = 1e-13
+    );
+}
