@@ -47,6 +47,7 @@ fn main() {
         space_torque: None,
         damping: None,
         user_torque: None,
+        rotors: Vec::new(),
     };
     let d = scene.derive(&mut a).unwrap();
     let co = d.coords();

@@ -217,6 +217,7 @@ pub fn interpreted_top<T: RigidBody + TopDynamics>(top: &T, g: f64, order: usize
         space_torque: None,
         damping: None,
         user_torque: None,
+        rotors: Vec::new(),
     };
     let d = scene.derive(&mut a).expect("a top's scene derives");
     let co = d.coords();

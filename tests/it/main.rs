@@ -149,6 +149,7 @@ mod top {
     mod checks;
     mod cross_check;
     mod gimbal;
+    mod gyrostat;
     mod linear;
     mod motion;
     mod theory;

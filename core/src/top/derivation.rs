@@ -24,6 +24,9 @@ pub struct TopDerivation {
     pub kinetic: ExprId,
     /// Potential energy V = M g (R c)·ẑ.
     pub potential: ExprId,
+    /// The rotors' term ω·h of the Lagrangian (zero without rotors): linear in q̇, so it
+    /// changes the equations but not the conserved Jacobi integral T + V.
+    pub gyrostatic: ExprId,
     /// The angle sequence of the coordinates.
     pub sequence: AngleSequence,
     /// The generalised forces of the non-potential torques, `Q = Bᵀ τ`.
@@ -34,7 +37,14 @@ pub struct TopDerivation {
 }
 
 impl TopDerivation {
-    /// The energy T + V, conserved when no non-potential torque is declared.
+    /// The Lagrangian L = T + ω·h − V.
+    pub fn lagrangian(&self, arena: &mut Arena) -> ExprId {
+        let t = arena.add(self.kinetic, self.gyrostatic);
+        arena.sub(t, self.potential)
+    }
+
+    /// The energy T + V, conserved when no non-potential torque is declared (with rotors
+    /// too: it is the Jacobi integral Σ q̇ᵢ ∂L/∂q̇ᵢ − L, the linear ω·h dropping out).
     pub fn energy(&self, arena: &mut Arena) -> ExprId {
         arena.add(self.kinetic, self.potential)
     }
@@ -69,11 +79,13 @@ impl TopDerivation {
 }
 
 impl TopScene {
-    /// Derives the angle-form equations of motion.
+    /// Derives the angle-form equations of motion from L = ½ ωᵀ I ω + ω·h − V, with h the
+    /// rotors' relative momentum ([`TopScene::rotor_momentum`]).
     ///
     /// # Errors
     /// As [`EquationsOfMotion::derive`] and [`EquationsOfMotion::solve`]; a singular inertia
-    /// tensor gives [`LagrangeError::SingularMassMatrix`].
+    /// tensor gives [`LagrangeError::SingularMassMatrix`]; a rotor with an identically zero
+    /// axis [`LagrangeError::Sym`].
     pub fn derive(&self, arena: &mut Arena) -> Result<TopDerivation, LagrangeError> {
         let coords = self.sequence.coordinates(arena);
         let rotation = self.sequence.rotation(arena, &coords.q);
@@ -94,7 +106,15 @@ impl TopScene {
             }
             None => arena.zero(),
         };
-        let lagrangian = arena.sub(kinetic, potential);
+        let gyrostatic = match self.rotor_momentum(arena)? {
+            Some(h) => {
+                let wh = dot(arena, &omega, &h);
+                arena.expand(wh)
+            }
+            None => arena.zero(),
+        };
+        let lagrangian = arena.add(kinetic, gyrostatic);
+        let lagrangian = arena.sub(lagrangian, potential);
         let tau = self.applied_torque(arena, &rotation, &omega);
         let bt = transpose(&b);
         let forces: Vec<ExprId> = mat_vec(arena, &bt, &tau)
@@ -120,18 +140,20 @@ impl TopScene {
             sequence: self.sequence,
             kinetic,
             potential,
+            gyrostatic,
             forces,
             conserved_momenta,
         })
     }
 
-    /// The Eulerian form `ω̇ = I⁻¹ (τ − ω × I ω)` with the gravity torque
-    /// `c × (Rᵀ(−M g ẑ))`, in terms of the attitude matrix entries `rotation` (body to
-    /// space) and the body angular velocity `omega`, both supplied as expressions
-    /// (usually input symbols).
+    /// The Eulerian form `ω̇ = I⁻¹ (τ − ω × (I ω + h))` with the gravity torque
+    /// `c × (Rᵀ(−M g ẑ))` and the rotors' momentum h (none without rotors), in terms of
+    /// the attitude matrix entries `rotation` (body to space) and the body angular velocity
+    /// `omega`, both supplied as expressions (usually input symbols).
     ///
     /// # Errors
-    /// [`LagrangeError::SingularMassMatrix`] if the inertia tensor is singular.
+    /// [`LagrangeError::SingularMassMatrix`] if the inertia tensor is singular;
+    /// [`LagrangeError::Sym`] for a rotor with an identically zero axis.
     pub fn eulerian_rhs(
         &self,
         arena: &mut Arena,
@@ -152,8 +174,11 @@ impl TopScene {
                 tau[k] = arena.add(tau[k], gt[k]);
             }
         }
-        let i_omega = mat_vec(arena, &self.inertia, omega);
-        let gyro = cross(arena, omega, &i_omega);
+        let mut momentum = mat_vec(arena, &self.inertia, omega);
+        if let Some(h) = self.rotor_momentum(arena)? {
+            momentum = std::array::from_fn(|k| arena.add(momentum[k], h[k]));
+        }
+        let gyro = cross(arena, omega, &momentum);
         let rhs: Vec<ExprId> = (0..3).map(|k| arena.sub(tau[k], gyro[k])).collect();
         let m: Vec<Vec<ExprId>> = self.inertia.iter().map(|r| r.to_vec()).collect();
         let det = determinant(arena, &m);

@@ -65,6 +65,16 @@ pub trait TopDynamics: RigidBody {
     /// (the heavy-top closed forms of [`TopDynamics::theory`] then apply).
     const BEYOND_GRAVITY: Option<&'static str> = None;
 
+    /// How many internal rotors `#[top(rotor(...))]` declares (a gyrostat when > 0).
+    const ROTORS: usize = 0;
+
+    /// The rotors' total relative angular momentum h = Σ J Ω â in body (description) axes,
+    /// for the current field values; zero without rotors. The top's angular momentum about
+    /// the pivot is I ω + h.
+    fn rotor_momentum(&self) -> Vector3<f64> {
+        Vector3::zeros()
+    }
+
     /// The index of the angle called `name` in q and q̇ of [`TopDynamics::SEQUENCE`] (`"phi"`,
     /// `"theta"`, `"psi"` in ZXZ; `"yaw"`, `"pitch"`, `"roll"` in ZYX), if there is one: in
     /// the state `[q, q̇]` the angle is slot i and its rate slot 3 + i. The derive gives the
@@ -110,7 +120,7 @@ pub trait TopDynamics: RigidBody {
     /// (`None` for the others).
     fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [Option<f64>; 3];
 
-    /// The Eulerian form: ω̇ = I⁻¹(τ − ω × I ω), with the same torques, for the attitude
+    /// The Eulerian form: ω̇ = I⁻¹(τ − ω × (I ω + h)), with the same torques and rotors, for the attitude
     /// (body to space) and body angular velocity ω.
     fn eulerian_rhs(
         &self,
@@ -215,7 +225,9 @@ pub trait TopDynamics: RigidBody {
     /// Ixx ≠ Iyy about the pivot; [`TheoryError::CentreOffAxis`](super::TheoryError::CentreOffAxis) when the centre of mass
     /// lies off the z axis through the pivot (each beyond
     /// [`super::SYMMETRY_TOLERANCE`] relative); [`TheoryError::NoGravity`](super::TheoryError::NoGravity) when gravity is
-    /// undeclared or zero, or the centre of mass is at the pivot.
+    /// undeclared or zero, or the centre of mass is at the pivot;
+    /// [`TheoryError::Rotor`](super::TheoryError::Rotor) when the top carries rotors
+    /// ([`TopDynamics::ROTORS`]).
     fn theory(&self) -> Result<HeavyTopTheory, TopError> {
         derived_theory(self)
     }

@@ -62,6 +62,19 @@ pub enum TopError {
         /// The value given.
         value: f64,
     },
+    /// A rotor's axial moment is not finite and positive, or its axis not finite and
+    /// non-zero, for the current field values: the rule literals meet at compile time.
+    #[error(
+        "rotor {rotor}: its inertia must be finite and > 0 and its axis finite and non-zero: inertia = {inertia}, |axis| = {axis_norm}"
+    )]
+    InvalidRotor {
+        /// The rotor's index, in the order declared.
+        rotor: usize,
+        /// Its axial moment of inertia.
+        inertia: f64,
+        /// The length of its axis.
+        axis_norm: f64,
+    },
     /// The body of a top breaks a rule of its description (a field-valued mass, say), found
     /// by [`super::TopDynamics::check_all`].
     #[error(transparent)]
@@ -117,6 +130,15 @@ impl TopError {
             TopError::NonFiniteParameter { parameter, value } => ((*parameter).to_owned(), *value),
             TopError::NegativeGravity { value } => ("gravity".to_owned(), *value),
             TopError::NegativeDamping { value } => ("damping".to_owned(), *value),
+            TopError::InvalidRotor {
+                inertia, axis_norm, ..
+            } => {
+                if inertia.is_finite() && *inertia > 0.0 {
+                    ("rotor axis".to_owned(), *axis_norm)
+                } else {
+                    ("rotor inertia".to_owned(), *inertia)
+                }
+            }
             _ => ("parameters".to_owned(), f64::NAN),
         };
         refused(named, &self)

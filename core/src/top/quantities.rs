@@ -11,7 +11,7 @@ const PROBE: ([f64; 3], [f64; 3]) = ([0.3, 0.7, 0.2], [0.1, 0.2, 0.3]);
 
 /// The standard quantities of a top in its declared angle chart (state `[q, q̇]`, as
 /// [`super::TopChart::declared`] integrates): `energy` (T + V), `omega` (|ω|), `L` (|L| about
-/// the pivot, |I ω|), then each conserved momentum `p_<angle>` (`p_phi`, `p_psi` for a
+/// the pivot, |I ω + h| with the rotors' momentum h), then each conserved momentum `p_<angle>` (`p_phi`, `p_psi` for a
 /// symmetric top under gravity in ZXZ).
 ///
 /// Add them to a run with [`Run::quantities`](crate::ode::Run::quantities); name the state
@@ -114,7 +114,7 @@ impl<T: TopDynamics + RigidBody> Quantities<[f64; 6]> for TopQuantities<'_, T> {
         let values = [
             self.top.energy(&q, &q_dot),
             omega.norm(),
-            self.top.angular_momentum(&omega).norm(),
+            (self.top.angular_momentum(&omega) + self.top.rotor_momentum()).norm(),
         ]
         .into_iter()
         .chain(conserved);

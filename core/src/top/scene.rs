@@ -1,9 +1,10 @@
-//! A top about a fixed pivot, described: its body and the torques it declares, as
-//! expressions (`derivation.rs` derives its equations).
+//! A top about a fixed pivot, described: its body, the torques it declares and its internal
+//! rotors, as expressions (`derivation.rs` derives its equations).
 
+use crate::free::Rotor;
 use crate::rigid::AngleSequence;
-use crate::sym::mat3::{Mat3, mat_vec, transpose};
-use crate::sym::{Arena, ExprId};
+use crate::sym::mat3::{Mat3, dot, mat_vec, transpose};
+use crate::sym::{Arena, ExprId, SymError};
 
 /// A top: a rigid body turning about a fixed pivot at the space origin, under the torques
 /// the scene declares. Undeclared torques (`None`) contribute no terms at all.
@@ -29,6 +30,11 @@ pub struct TopScene {
     pub damping: Option<ExprId>,
     /// A torque supplied at run time, in body axes, as three input symbols.
     pub user_torque: Option<[ExprId; 3]>,
+    /// Internal rotors at constant relative rates, which make the top a gyrostat: their
+    /// relative momentum h = Σ J Ω â (body axes) adds ω·h to the Lagrangian and turns
+    /// Euler's gyroscopic term into ω × (I ω + h). The inertia includes the wheels as if
+    /// locked. Empty: the equations are exactly those of a top without rotors.
+    pub rotors: Vec<Rotor>,
 }
 
 impl TopScene {
@@ -46,7 +52,31 @@ impl TopScene {
             space_torque: None,
             damping: None,
             user_torque: None,
+            rotors: Vec::new(),
         }
+    }
+
+    /// The rotors' total relative angular momentum h = Σₖ Jₖ Ωₖ aₖ/|aₖ| in body axes, or
+    /// `None` without rotors (so a top without one derives exactly what it did before).
+    ///
+    /// # Errors
+    /// [`SymError`] (a division by zero) for a rotor whose axis is identically zero.
+    pub fn rotor_momentum(&self, arena: &mut Arena) -> Result<Option<[ExprId; 3]>, SymError> {
+        if self.rotors.is_empty() {
+            return Ok(None);
+        }
+        let mut parts: Vec<[ExprId; 3]> = Vec::with_capacity(self.rotors.len());
+        for r in &self.rotors {
+            let a2 = dot(arena, &r.axis, &r.axis);
+            let norm = arena.sqrt(a2)?;
+            let scale = arena.mul(r.inertia, r.rate);
+            let scale = arena.div(scale, norm)?;
+            parts.push(r.axis.map(|c| arena.mul(scale, c)));
+        }
+        Ok(Some(std::array::from_fn(|i| {
+            let terms: Vec<ExprId> = parts.iter().map(|p| p[i]).collect();
+            arena.sum(&terms)
+        })))
     }
 
     /// The sum of the non-potential torques in body axes (zero if none is declared).

@@ -80,7 +80,7 @@ impl TopScene {
         } else {
             named.derive(arena)?
         };
-        let lagrangian = arena.sub(top.kinetic, top.potential);
+        let lagrangian = top.lagrangian(arena);
         let c = top.coords().clone();
         let mut equations = Vec::with_capacity(c.len());
         for (row, &f) in top.equations.mass.iter().zip(&top.equations.forcing) {
@@ -303,7 +303,7 @@ fn latex_of(arena: &Arena, e: ExprId) -> String {
 /// `name = definition` for every abbreviation the derivation's lines name, and those their
 /// definitions name in turn, in order of name.
 fn definitions(arena: &Arena, paper: &Paper<'_>, top: &TopDerivation) -> Vec<String> {
-    let mut queue: Vec<ExprId> = vec![top.kinetic, top.potential];
+    let mut queue: Vec<ExprId> = vec![top.kinetic, top.gyrostatic, top.potential];
     queue.extend(top.forces.iter().copied());
     let mut found: Vec<SymbolId> = Vec::new();
     while let Some(e) = queue.pop() {

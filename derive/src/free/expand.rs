@@ -383,7 +383,7 @@ fn check_parameters(
             }
         }
     });
-    let rotors = super::rotor::check_tokens(low, arena, &settings.rotors);
+    let rotors = super::rotor::check_tokens(low, arena, &settings.rotors, &quote!(#p::FreeError));
     quote!({
         #(#fields)*
         #lets

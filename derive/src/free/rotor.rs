@@ -13,7 +13,6 @@ use syn::{Expr, Ident};
 
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, ROTOR_KEYS};
-use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::lang::syntax::KeyValue;
 use crate::lang::units::Dim;
@@ -136,13 +135,14 @@ fn positive(ck: &mut Checker, value: &Expr) -> Option<ExprId> {
 }
 
 /// Statements for `check_parameters`: each rotor's inertia positive and axis non-zero for the
-/// current field values (all finite already), else `FreeError::InvalidRotor`.
+/// current field values (all finite already), else `<error>::InvalidRotor`, with `error`
+/// the attribute's error enum (`FreeError`, `TopError`: both carry the variant).
 pub fn check_tokens(
     low: &Lowering,
     arena: &precess_core::sym::Arena,
     rotors: &[Rotor],
+    error: &TokenStream,
 ) -> TokenStream {
-    let p = Private;
     let values: Vec<ExprId> = rotors
         .iter()
         .flat_map(|r| std::iter::once(r.inertia).chain(r.axis))
@@ -157,7 +157,7 @@ pub fn check_tokens(
             let __j: f64 = #j;
             let __a: f64 = (#((#a) * (#a))+*).sqrt();
             if !(__j.is_finite() && __j > 0.0 && __a.is_finite() && __a > 0.0) {
-                return ::core::result::Result::Err(#p::FreeError::InvalidRotor {
+                return ::core::result::Result::Err(#error::InvalidRotor {
                     rotor: #k,
                     inertia: __j,
                     axis_norm: __a,

@@ -1,12 +1,29 @@
-//! Syntax of the `#[top(...)]` list: `key = value` items, whose meaning `check.rs` decides.
-//! A bare `#[top]` is the empty list: a top under no declared torque.
+//! Syntax of the `#[top(...)]` list: `key = value` settings and `rotor(key = value, ...)`
+//! groups, in the grammar of `lang::syntax`, whose meaning `check.rs` decides. A bare
+//! `#[top]` is the empty list: a top under no declared torque.
 
-use syn::Attribute;
+use syn::{Attribute, Ident};
 
 use crate::lang::ctxt::Ctxt;
-use crate::lang::syntax::{KeyValue, Parsed, parse_settings};
+use crate::lang::keys;
+use crate::lang::syntax::{Item, Parsed, parse_items};
 
-/// The items of every `#[top(...)]` attribute.
-pub fn parse(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<KeyValue> {
-    parse_settings(cx, attrs)
+/// What `#[top]` expected where `name` stands alone: a rotor's form, or a setting's.
+fn expected(name: &Ident) -> String {
+    let expected = if name == keys::ROTOR {
+        format!(
+            "`{name}({} = [x, y, z], {} = J, {} = Ω)`",
+            keys::AXIS,
+            keys::INERTIA,
+            keys::RATE
+        )
+    } else {
+        format!("`{name} = value`")
+    };
+    format!("expected {expected}")
+}
+
+/// The items of every `#[top(...)]` attribute (a bare `#[top]` has none).
+pub fn parse(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<Item> {
+    parse_items(cx, attrs, true, expected)
 }

@@ -3,6 +3,7 @@
 //! `precess_core::top::TopParameters` on the values that are literals (field values meet the
 //! same rules at run time, in the generated `TopDynamics::check_parameters`).
 
+use precess_core::free::Rotor;
 use precess_core::nalgebra::Vector3;
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::ExprId;
@@ -11,7 +12,7 @@ use syn::Expr;
 
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, TOP_KEYS};
-use crate::lang::syntax::{KeyValue, Parsed, distinct};
+use crate::lang::syntax::{Item, KeyValue, Parsed, distinct};
 use crate::lang::taylor::TaylorKey;
 use crate::lang::units::Dim;
 
@@ -31,6 +32,8 @@ pub struct TopSettings {
     pub angles: AngleSequence,
     /// The maximum order of the generated Taylor recurrences, if asked for.
     pub taylor: Option<usize>,
+    /// Internal rotors at constant relative rates (the top is a gyrostat).
+    pub rotors: Vec<Rotor>,
 }
 
 /// Checks the `#[top]` items, if the struct has any. `None` after an error (recorded),
@@ -38,7 +41,7 @@ pub struct TopSettings {
 /// `#[rigid]` attribute could not be read, so a missing pivot is not reported twice.
 pub fn check(
     ck: &mut Checker,
-    items: &Parsed<KeyValue>,
+    items: &Parsed<Item>,
     declares_pivot: Option<bool>,
 ) -> Option<Option<TopSettings>> {
     let Some(&first) = ck.input.top.first() else {
@@ -65,15 +68,42 @@ pub fn check(
         torque: None,
         angles: AngleSequence::Zxz,
         taylor: None,
+        rotors: Vec::new(),
     };
     let in_top = format!("`#[{}]`", keys::TOP);
+    let top_settings = items.items.iter().filter_map(|item| match item {
+        Item::Setting(kv) => Some(&**kv),
+        Item::Group { .. } => None,
+    });
     let taylor = TaylorKey::find(
         ck.cx,
-        items.items.iter().map(|kv| (&kv.key, &kv.value)),
+        top_settings.clone().map(|kv| (&kv.key, &kv.value)),
         &in_top,
     );
+    // The groups: rotors, each checked by the rules `#[free]` holds them to.
+    for item in &items.items {
+        if let Item::Group { name, keys } = item {
+            if name == keys::ROTOR {
+                if let Some(rotor) = crate::free::rotor::check(ck, name, keys, &in_top) {
+                    settings.rotors.push(rotor);
+                }
+            } else {
+                ck.cx.error_spanned_by(
+                    name,
+                    format!(
+                        "unknown group `{name}(...)` in `#[{}]`: the only group is `{}({} = [x, y, z], {} = J, {} = Ω)`, an internal rotor; settings are written `key = value`",
+                        keys::TOP,
+                        keys::ROTOR,
+                        keys::AXIS,
+                        keys::INERTIA,
+                        keys::RATE
+                    ),
+                );
+            }
+        }
+    }
     let cx = ck.cx;
-    for KeyValue { key, value } in distinct(cx, &items.items, &in_top) {
+    for KeyValue { key, value } in distinct(cx, top_settings, &in_top) {
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
             Some(keys::GRAVITY) => {
                 settings.gravity = ck
@@ -140,9 +170,10 @@ pub fn check(
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}{}",
+                    "unknown key `{key}` in `#[{}]`: expected {}, or a rotor `{}(...)`{}",
                     keys::TOP,
                     TOP_KEYS.join(", "),
+                    keys::ROTOR,
                     keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),

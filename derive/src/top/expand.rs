@@ -34,6 +34,7 @@ fn scene(arena: &mut Arena, checked: &CheckedBody, settings: &TopSettings) -> To
         space_torque: settings.space_torque,
         damping: settings.damping,
         user_torque: None,
+        rotors: settings.rotors.clone(),
     }
 }
 
@@ -154,6 +155,13 @@ pub fn expand(
     let declared_t = sequence_tokens(scene.sequence);
     let parameters = top_parameters(&low, arena, settings);
     let beyond_gravity = beyond_gravity(settings);
+    let rotors = match rotor_methods(&low, arena, &scene) {
+        Ok(rotors) => rotors,
+        Err(e) => {
+            cx.error_spanned_by(ident, format!("cannot derive the top's rotors: {e}"));
+            return None;
+        }
+    };
     let Methods {
         arms:
             ChartArms {
@@ -210,6 +218,8 @@ pub fn expand(
 
             fn top_parameters(&self) -> #p::TopParameters #parameters
 
+            #rotors
+
             #[inline]
             fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
                 match seq { #(#accel)* }
@@ -243,6 +253,52 @@ pub fn expand(
             ) -> #p::Vector3<f64> #eulerian
 
             #equations
+        }
+    })
+}
+
+/// `ROTORS`, `rotor_momentum` and a `check_parameters` that judges the rotors' field values
+/// (rate finite, inertia positive, axis non-zero) before the settings; nothing without
+/// rotors, so the trait's defaults stand.
+fn rotor_methods(
+    low: &Lowering,
+    arena: &mut Arena,
+    scene: &TopScene,
+) -> Result<TokenStream, precess_core::sym::SymError> {
+    let p = Private;
+    let Some(h) = scene.rotor_momentum(arena)? else {
+        return Ok(TokenStream::new());
+    };
+    let count = scene.rotors.len();
+    let Emitted { lets, outputs } = low.lower(arena, &h);
+    let error = quote!(#p::TopError);
+    let shapes = crate::free::rotor::check_tokens(low, arena, &scene.rotors, &error);
+    let rates: Vec<ExprId> = scene.rotors.iter().map(|r| r.rate).collect();
+    let Emitted {
+        lets: rate_lets,
+        outputs: rate_values,
+    } = low.lower(arena, &rates);
+    Ok(quote! {
+        const ROTORS: usize = #count;
+
+        fn rotor_momentum(&self) -> #p::Vector3<f64> {
+            #lets
+            #p::Vector3::new(#(#outputs),*)
+        }
+
+        fn check_parameters(&self) -> ::core::result::Result<(), #p::TopError> {
+            #rate_lets
+            #(
+                let __rate: f64 = #rate_values;
+                if !__rate.is_finite() {
+                    return ::core::result::Result::Err(#p::TopError::NonFiniteParameter {
+                        parameter: "rotor rate",
+                        value: __rate,
+                    });
+                }
+            )*
+            #shapes
+            self.top_parameters().check()
         }
     })
 }

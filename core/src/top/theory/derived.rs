@@ -1,6 +1,6 @@
 //! The heavy-top theory of a derived top: I1, I3 about the pivot and M g l read from the
 //! top's own mass properties and gravity, after checking that the closed forms apply
-//! (symmetric about the description z axis, centre of mass on it, gravity alone).
+//! (symmetric about the description z axis, centre of mass on it, gravity alone, no rotor).
 
 use super::error::TheoryError;
 use super::heavy::{HeavyTopTheory, SYMMETRY_TOLERANCE};
@@ -12,6 +12,9 @@ pub(crate) fn derived_theory<T: TopDynamics + ?Sized>(top: &T) -> Result<HeavyTo
     top.check_all()?;
     if let Some(declared) = T::BEYOND_GRAVITY {
         return Err(TheoryError::OtherTorque { declared }.into());
+    }
+    if T::ROTORS > 0 {
+        return Err(TheoryError::Rotor { rotors: T::ROTORS }.into());
     }
     let i = top.inertia();
     let scale = i[(0, 0)].max(i[(1, 1)]).max(i[(2, 2)]);

@@ -159,6 +159,15 @@ pub enum TheoryError {
         /// `torque`).
         declared: &'static str,
     },
+    /// A derived top carries internal rotors (a gyrostat): their momentum h adds to the
+    /// spin momentum, so the heavy-top closed forms, written for h = 0, do not hold.
+    #[error(
+        "the top carries {rotors} rotor(s): the heavy-top closed forms hold for a top without rotors"
+    )]
+    Rotor {
+        /// How many rotors the top declares.
+        rotors: usize,
+    },
 }
 
 /// Rejects NaN and ±∞, naming the input.

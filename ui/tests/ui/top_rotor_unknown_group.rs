@@ -1,0 +1,8 @@
+use precess::prelude::*;
+
+#[derive(RigidBody)]
+#[rigid(body(mass = 1.0, at = [0.0, 0.0, 0.1], inertia = diag(0.01, 0.01, 0.02), about = pivot), pivot = [0.0, 0.0, 0.0])]
+#[top(gravity = 9.81, wheel(axis = [0, 0, 1], inertia = 0.001, rate = 3000 rpm))]
+struct Gyrotop;
+
+fn main() {}
