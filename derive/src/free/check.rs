@@ -147,15 +147,9 @@ fn setting<'a>(
         }
         Some(keys::FORCE) => settings.force = user_fn(ck, value, keys::FORCE),
         Some(keys::TORQUE) => settings.torque = user_fn(ck, value, keys::TORQUE),
-        _ if key == keys::ROTOR => ck.cx.error_spanned_by(
-            key,
-            format!(
-                "`{key}` is a part: write `{key}({} = [x, y, z], {} = J, {} = Ω)`",
-                keys::AXIS,
-                keys::INERTIA,
-                keys::RATE
-            ),
-        ),
+        _ if key == keys::ROTOR => ck
+            .cx
+            .error_spanned_by(key, super::rotor::written_as_setting()),
         _ if FREE_FORCES.iter().any(|&f| key == f) => ck.cx.error_spanned_by(
             key,
             format!(

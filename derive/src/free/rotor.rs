@@ -20,6 +20,18 @@ use crate::lang::units::Dim;
 /// A rate, 1/s (`rpm`, `Hz`, `rad/s`).
 const RATE: Dim = Dim { m: 0, l: 0, t: -1 };
 
+/// The message for `rotor = ..` written as a setting: a rotor is a group of its own keys.
+pub fn written_as_setting() -> String {
+    format!(
+        "`{}` is a part: write `{}({} = [x, y, z], {} = J, {} = Ω)`",
+        keys::ROTOR,
+        keys::ROTOR,
+        keys::AXIS,
+        keys::INERTIA,
+        keys::RATE
+    )
+}
+
 /// Checks one `rotor(...)` group of the attribute `within` (`#[free]`, `#[top]`).
 pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> Option<Rotor> {
     let mut slots: [Option<&Expr>; 3] = [None; 3];

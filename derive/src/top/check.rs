@@ -167,13 +167,17 @@ pub fn check(
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
+            _ if key == keys::ROTOR => ck
+                .cx
+                .error_spanned_by(key, crate::free::rotor::written_as_setting()),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}, or a rotor `{}(...)`{}",
+                    "unknown key `{key}` in `#[{}]`: expected {}, or a rotor {}({}){}",
                     keys::TOP,
                     TOP_KEYS.join(", "),
                     keys::ROTOR,
+                    keys::ROTOR_KEYS.join(", "),
                     keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),
