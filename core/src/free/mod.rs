@@ -32,6 +32,7 @@ mod state;
 mod system;
 mod wrench;
 
+pub use crate::rigid::Rotor;
 pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
@@ -40,7 +41,6 @@ pub use flight::{FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};
-pub use rotor::Rotor;
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
 pub use state::{FreeState, STATE_LEN, attitude_of, layout};
 pub use system::{FreeLie, FreeSystem};

@@ -1,51 +1,10 @@
-//! Internal rotors: symmetric wheels spinning at a constant rate relative to the body about a
-//! body-fixed axis, which make the body a gyrostat.
-//!
-//! A wheel symmetric about its axis a and spun at the relative rate Ω carries the relative
-//! angular momentum h = J Ω â (J its axial moment, â = a/|a|), constant in the body. The
-//! body's own inertia I includes the wheel as if it were locked (its transverse and axial
-//! moments about the centre of mass are part of the body's parts), so the total angular
-//! momentum about the centre of mass is I ω + h and Euler's equations become the
-//! Volterra–Zhukovsky equations of the gyrostat,
-//!
-//! I ω̇ = τ − ω × (I ω + h).
-//!
-//! The motor that holds Ω constant does work on the wheel, so the wheel's own kinetic energy
-//! is not the conserved one; ½ ωᵀ I ω is (its rate is ω·τ, the term ω·(ω × h) vanishing).
+//! A free body's rotors ([`Rotor`], shared with tops in `rigid`): their total relative
+//! momentum in principal axes, for the Volterra–Zhukovsky equations I ω̇ = τ − ω × (I ω + h).
 
 use super::error::FreeError;
-use crate::sym::mat3::{Mat3, dot, mat_vec, transpose};
+use crate::rigid::{Rotor, total_momentum};
+use crate::sym::mat3::{Mat3, mat_vec, transpose};
 use crate::sym::{Arena, ExprId};
-
-/// A symmetric wheel spinning at a constant rate relative to the body.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rotor {
-    /// Its spin axis, fixed in the body, description axes (any non-zero length: it is
-    /// normalised).
-    pub axis: [ExprId; 3],
-    /// Its moment of inertia J about its own axis.
-    pub inertia: ExprId,
-    /// Its spin rate Ω relative to the body (rad/s, signed about `axis`).
-    pub rate: ExprId,
-}
-
-impl Rotor {
-    /// Its relative angular momentum h = J Ω a/|a|, description axes.
-    ///
-    /// # Errors
-    /// [`FreeError::ZeroRotorAxis`] (naming `index`) if the axis is identically zero.
-    pub fn momentum(&self, arena: &mut Arena, index: usize) -> Result<[ExprId; 3], FreeError> {
-        let a2 = dot(arena, &self.axis, &self.axis);
-        let zero = || FreeError::ZeroRotorAxis { rotor: index };
-        if arena.is_zero(a2).unwrap_or(false) {
-            return Err(zero());
-        }
-        let norm = arena.sqrt(a2).map_err(|_| zero())?;
-        let scale = arena.mul(self.inertia, self.rate);
-        let scale = arena.div(scale, norm).map_err(|_| zero())?;
-        Ok(self.axis.map(|c| arena.mul(scale, c)))
-    }
-}
 
 /// The rotors' total relative momentum in principal axes, Rₚ𝒹ᵀ Σ hₖ, or `None` without
 /// rotors (so a body without one derives exactly the expressions it did before).
@@ -57,16 +16,10 @@ pub(super) fn principal_momentum(
     rotors: &[Rotor],
     principal_rotation: &Mat3,
 ) -> Result<Option<[ExprId; 3]>, FreeError> {
-    if rotors.is_empty() {
+    let Some(total) =
+        total_momentum(arena, rotors).map_err(|(rotor, _)| FreeError::ZeroRotorAxis { rotor })?
+    else {
         return Ok(None);
-    }
-    let mut parts: Vec<[ExprId; 3]> = Vec::with_capacity(rotors.len());
-    for (k, r) in rotors.iter().enumerate() {
-        parts.push(r.momentum(arena, k)?);
-    }
-    let total: [ExprId; 3] = std::array::from_fn(|i| {
-        let terms: Vec<ExprId> = parts.iter().map(|p| p[i]).collect();
-        arena.sum(&terms)
-    });
+    };
     Ok(Some(mat_vec(arena, &transpose(principal_rotation), &total)))
 }

@@ -1,8 +1,8 @@
 //! A free body, described: its mass and principal moments and the forces and torques it
 //! declares, as expressions (`derivation.rs` derives its equations).
 
-use super::rotor::Rotor;
 use super::wrench::WrenchInputs;
+use crate::rigid::Rotor;
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId};
 

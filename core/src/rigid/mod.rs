@@ -13,6 +13,7 @@ mod kinematics;
 mod lie;
 mod quaternion_expr;
 mod rkmk4;
+mod rotor;
 mod splitting;
 mod state;
 
@@ -25,6 +26,7 @@ pub use kinematics::{dexpinv_right, exp_rotation, rotate_body};
 pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
 pub use quaternion_expr::{quaternion_rate, rotation_of_quaternion};
 pub use rkmk4::Rkmk4;
+pub use rotor::{Rotor, total_momentum};
 pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,
     SplittingOrder,

@@ -1,9 +1,9 @@
 //! A top about a fixed pivot, described: its body, the torques it declares and its internal
 //! rotors, as expressions (`derivation.rs` derives its equations).
 
-use crate::free::Rotor;
 use crate::rigid::AngleSequence;
-use crate::sym::mat3::{Mat3, dot, mat_vec, transpose};
+use crate::rigid::{Rotor, total_momentum};
+use crate::sym::mat3::{Mat3, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, SymError};
 
 /// A top: a rigid body turning about a fixed pivot at the space origin, under the torques
@@ -62,21 +62,7 @@ impl TopScene {
     /// # Errors
     /// [`SymError`] (a division by zero) for a rotor whose axis is identically zero.
     pub fn rotor_momentum(&self, arena: &mut Arena) -> Result<Option<[ExprId; 3]>, SymError> {
-        if self.rotors.is_empty() {
-            return Ok(None);
-        }
-        let mut parts: Vec<[ExprId; 3]> = Vec::with_capacity(self.rotors.len());
-        for r in &self.rotors {
-            let a2 = dot(arena, &r.axis, &r.axis);
-            let norm = arena.sqrt(a2)?;
-            let scale = arena.mul(r.inertia, r.rate);
-            let scale = arena.div(scale, norm)?;
-            parts.push(r.axis.map(|c| arena.mul(scale, c)));
-        }
-        Ok(Some(std::array::from_fn(|i| {
-            let terms: Vec<ExprId> = parts.iter().map(|p| p[i]).collect();
-            arena.sum(&terms)
-        })))
+        total_momentum(arena, &self.rotors).map_err(|(_, e)| e)
     }
 
     /// The sum of the non-potential torques in body axes (zero if none is declared).

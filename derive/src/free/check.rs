@@ -78,7 +78,7 @@ pub fn check(
             Item::Setting(kv) if kv.key == keys::TAYLOR => {}
             Item::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
             Item::Group { name, keys } if name == keys::ROTOR => {
-                if let Some(rotor) = super::rotor::check(ck, name, keys, &in_free) {
+                if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_free) {
                     settings.rotors.push(rotor);
                 }
             }
@@ -149,7 +149,7 @@ fn setting<'a>(
         Some(keys::TORQUE) => settings.torque = user_fn(ck, value, keys::TORQUE),
         _ if key == keys::ROTOR => ck
             .cx
-            .error_spanned_by(key, super::rotor::written_as_setting()),
+            .error_spanned_by(key, crate::lang::rotor::written_as_setting()),
         _ if FREE_FORCES.iter().any(|&f| key == f) => ck.cx.error_spanned_by(
             key,
             format!(

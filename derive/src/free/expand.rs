@@ -383,7 +383,8 @@ fn check_parameters(
             }
         }
     });
-    let rotors = super::rotor::check_tokens(low, arena, &settings.rotors, &quote!(#p::FreeError));
+    let rotors =
+        crate::lang::rotor::check_tokens(low, arena, &settings.rotors, &quote!(#p::FreeError));
     quote!({
         #(#fields)*
         #lets

@@ -7,7 +7,6 @@ pub mod attr;
 pub mod check;
 pub mod expand;
 pub mod fallback;
-pub mod rotor;
 
 #[cfg(test)]
 mod tests;

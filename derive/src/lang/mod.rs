@@ -27,6 +27,7 @@ pub mod expansion;
 pub mod keys;
 pub mod parts;
 pub mod private;
+pub mod rotor;
 pub mod scalar;
 pub mod symbols;
 pub mod syntax;

@@ -3,9 +3,9 @@
 //! `precess_core::top::TopParameters` on the values that are literals (field values meet the
 //! same rules at run time, in the generated `TopDynamics::check_parameters`).
 
-use precess_core::free::Rotor;
 use precess_core::nalgebra::Vector3;
 use precess_core::rigid::AngleSequence;
+use precess_core::rigid::Rotor;
 use precess_core::sym::ExprId;
 use precess_core::top::TopParameters;
 use syn::Expr;
@@ -84,7 +84,7 @@ pub fn check(
     for item in &items.items {
         if let Item::Group { name, keys } = item {
             if name == keys::ROTOR {
-                if let Some(rotor) = crate::free::rotor::check(ck, name, keys, &in_top) {
+                if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_top) {
                     settings.rotors.push(rotor);
                 }
             } else {
@@ -169,7 +169,7 @@ pub fn check(
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
             _ if key == keys::ROTOR => ck
                 .cx
-                .error_spanned_by(key, crate::free::rotor::written_as_setting()),
+                .error_spanned_by(key, crate::lang::rotor::written_as_setting()),
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(

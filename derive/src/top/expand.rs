@@ -272,7 +272,7 @@ fn rotor_methods(
     let count = scene.rotors.len();
     let Emitted { lets, outputs } = low.lower(arena, &h);
     let error = quote!(#p::TopError);
-    let shapes = crate::free::rotor::check_tokens(low, arena, &scene.rotors, &error);
+    let shapes = crate::lang::rotor::check_tokens(low, arena, &scene.rotors, &error);
     let rates: Vec<ExprId> = scene.rotors.iter().map(|r| r.rate).collect();
     let Emitted {
         lets: rate_lets,

@@ -370,7 +370,7 @@ fn quantities_count_the_wheels_momentum() {
 /// `TopModel`: the same steady precession is an equilibrium, and the rate changes it.
 #[test]
 fn run_time_scene_with_a_rotor() {
-    use precess::free::Rotor;
+    use precess::rigid::Rotor;
     use precess::sym::Arena;
     use precess::top::{TopModel, TopScene};
     let mut a = Arena::new();

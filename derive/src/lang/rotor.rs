@@ -5,7 +5,7 @@
 //! `check_parameters` at run time for fields.
 
 use precess_core::codegen::Emitted;
-use precess_core::free::Rotor;
+use precess_core::rigid::Rotor;
 use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
 use quote::quote;
