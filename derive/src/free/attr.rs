@@ -17,12 +17,7 @@ fn expected(name: &Ident) -> String {
             keys::FORCE_AT
         )
     } else if name == keys::ROTOR {
-        format!(
-            "`{name}({} = [x, y, z], {} = J, {} = Ω)`",
-            keys::AXIS,
-            keys::INERTIA,
-            keys::RATE
-        )
+        crate::lang::rotor::form()
     } else {
         format!("`{name} = value`")
     };

@@ -20,16 +20,20 @@ use crate::lang::units::Dim;
 /// A rate, 1/s (`rpm`, `Hz`, `rad/s`).
 const RATE: Dim = Dim { m: 0, l: 0, t: -1 };
 
-/// The message for `rotor = ..` written as a setting: a rotor is a group of its own keys.
-pub fn written_as_setting() -> String {
+/// The rotor's form as the messages write it: `` `rotor(axis = [x, y, z], inertia = J, rate = Ω)` ``.
+pub fn form() -> String {
     format!(
-        "`{}` is a part: write `{}({} = [x, y, z], {} = J, {} = Ω)`",
-        keys::ROTOR,
+        "`{}({} = [x, y, z], {} = J, {} = Ω)`",
         keys::ROTOR,
         keys::AXIS,
         keys::INERTIA,
         keys::RATE
     )
+}
+
+/// The message for `rotor = ..` written as a setting: a rotor is a group of its own keys.
+pub fn written_as_setting() -> String {
+    format!("`{}` is a part: write {}", keys::ROTOR, form())
 }
 
 /// Checks one `rotor(...)` group of the attribute `within` (`#[free]`, `#[top]`).

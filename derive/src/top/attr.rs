@@ -11,12 +11,7 @@ use crate::lang::syntax::{Item, Parsed, parse_items};
 /// What `#[top]` expected where `name` stands alone: a rotor's form, or a setting's.
 fn expected(name: &Ident) -> String {
     let expected = if name == keys::ROTOR {
-        format!(
-            "`{name}({} = [x, y, z], {} = J, {} = Ω)`",
-            keys::AXIS,
-            keys::INERTIA,
-            keys::RATE
-        )
+        crate::lang::rotor::form()
     } else {
         format!("`{name} = value`")
     };
