@@ -130,6 +130,7 @@ pub mod __private {
     pub use precess_core::taylor::compact::low_orders;
     pub use precess_core::taylor::kernels;
     pub use precess_core::top::{TopDynamics, TopError, TopParameters};
+    pub use precess_core::variational::{Layout, VariationalError};
     pub use std::borrow::Cow;
     pub use std::vec;
 }

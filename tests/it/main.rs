@@ -171,6 +171,7 @@ mod contact {
     mod tippe_top;
 }
 mod variational;
+mod variational_derive;
 /// Values as measured: units, density, constant arithmetic, names.
 mod values {
     mod constants;

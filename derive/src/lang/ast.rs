@@ -3,7 +3,7 @@
 //! checks read), keeping the original tokens for spans.
 
 use quote::ToTokens;
-use syn::{Attribute, Data, DeriveInput, Fields, Ident, Type};
+use syn::{Attribute, Data, DeriveInput, Fields, Ident, Type, Visibility};
 
 use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
@@ -12,6 +12,8 @@ use crate::lang::keys;
 pub struct Input<'a> {
     /// Its name.
     pub ident: &'a Ident,
+    /// Its visibility, which the types generated beside it take.
+    pub vis: &'a Visibility,
     /// Its named fields (none for a unit struct).
     pub fields: Vec<Field<'a>>,
     /// All its attributes.
@@ -119,6 +121,7 @@ impl<'a> Input<'a> {
         };
         let mut ast = Input {
             ident: &input.ident,
+            vis: &input.vis,
             fields,
             attrs: &input.attrs,
             rigid: Vec::new(),

@@ -12,6 +12,8 @@ use crate::lang::syntax::{Item, Parsed, parse_items};
 fn expected(name: &Ident) -> String {
     let expected = if name == keys::ROTOR {
         crate::lang::rotor::form()
+    } else if name == super::variational::VARIATIONAL {
+        super::variational::form()
     } else {
         format!("`{name} = value`")
     };

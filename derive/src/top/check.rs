@@ -34,6 +34,8 @@ pub struct TopSettings {
     pub taylor: Option<usize>,
     /// Internal rotors at constant relative rates (the top is a gyrostat).
     pub rotors: Vec<Rotor>,
+    /// The generated variational equations, if asked for.
+    pub variational: Option<super::variational::VariationalKey>,
 }
 
 /// Checks the `#[top]` items, if the struct has any. `None` after an error (recorded),
@@ -69,6 +71,7 @@ pub fn check(
         angles: AngleSequence::Zxz,
         taylor: None,
         rotors: Vec::new(),
+        variational: None,
     };
     let in_top = format!("`#[{}]`", keys::TOP);
     let top_settings = items.items.iter().filter_map(|item| match item {
@@ -80,10 +83,14 @@ pub fn check(
         top_settings.clone().map(|kv| (&kv.key, &kv.value)),
         &in_top,
     );
-    // The groups: rotors, each checked by the rules `#[free]` holds them to.
+    // The groups: rotors, each checked by the rules `#[free]` holds them to; the
+    // variational group once every field the equations read is known, after the settings.
+    let mut variational = Vec::new();
     for item in &items.items {
         if let Item::Group { name, keys } = item {
-            if name == keys::ROTOR {
+            if name == super::variational::VARIATIONAL {
+                variational.push((name, keys));
+            } else if name == keys::ROTOR {
                 if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_top) {
                     settings.rotors.push(rotor);
                 }
@@ -91,12 +98,13 @@ pub fn check(
                 ck.cx.error_spanned_by(
                     name,
                     format!(
-                        "unknown group `{name}(...)` in `#[{}]`: the only group is `{}({} = [x, y, z], {} = J, {} = Ω)`, an internal rotor; settings are written `key = value`",
+                        "unknown group `{name}(...)` in `#[{}]`: the groups are `{}({} = [x, y, z], {} = J, {} = Ω)`, an internal rotor, and {}, the generated variational equations; settings are written `key = value`",
                         keys::TOP,
                         keys::ROTOR,
                         keys::AXIS,
                         keys::INERTIA,
-                        keys::RATE
+                        keys::RATE,
+                        super::variational::form()
                     ),
                 );
             }
@@ -185,6 +193,17 @@ pub fn check(
     }
     let user = [(keys::TORQUE, settings.torque.is_some())];
     settings.taylor = taylor.order(ck.cx, &user);
+    for (k, (name, keys)) in variational.into_iter().enumerate() {
+        if k > 0 {
+            ck.cx.error_spanned_by(
+                name,
+                format!("duplicate group `{name}(...)` in {in_top}: one set of variational equations per top"),
+            );
+        } else {
+            settings.variational =
+                super::variational::check(ck, name, keys, settings.torque.is_some());
+        }
+    }
     // Every field the body and the top read is known by now.
     let names = settings.angles.names().map(str::to_owned);
     let sequence = match settings.angles {

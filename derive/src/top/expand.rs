@@ -175,6 +175,10 @@ pub fn expand(
         eulerian,
         lagrangian,
     } = methods;
+    let variational = settings.variational.as_ref().map(|key| {
+        let (state, rhs) = &lagrangian;
+        super::variational::expand(cx, ident, arena, &taylor_symbols, (state, rhs), key)
+    });
     // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
     let taylor = settings.taylor.map(|order| {
         let (state, rhs) = lagrangian;
@@ -203,6 +207,8 @@ pub fn expand(
     });
     Some(quote! {
         #taylor
+
+        #variational
 
         #[automatically_derived]
         impl #ident {

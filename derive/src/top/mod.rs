@@ -2,13 +2,14 @@
 //! sequence, in the phases every attribute has over `lang/`: `attr` (syntax), `check`
 //! (meaning, its values read by the shared checker into the arena `#[rigid]` built), `expand`
 //! (the `TopDynamics` impl, with its typeset equations in `equations`) and `fallback` (its
-//! stub).
+//! stub); `variational` is the `variational(...)` group, checked and emitted.
 
 pub mod attr;
 pub mod check;
 pub mod equations;
 pub mod expand;
 pub mod fallback;
+pub mod variational;
 
 #[cfg(test)]
 mod tests;
