@@ -287,7 +287,7 @@ fn the_generated_heavy_top_spectrum_pairs_and_sums_to_liouville() {
     );
     assert!((l[0] + l[5]).abs() < 0.05 * l[0], "{l:?}");
     for k in 1..5 {
-        assert!(l[k].abs() < 0.1 * l[0], "{l:?}");
+        assert!(l[k].abs() < 0.15 * l[0], "{l:?}");
     }
 }
 

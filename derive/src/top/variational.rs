@@ -143,17 +143,17 @@ fn sensitivity_fields(ck: &Checker, value: &Expr) -> Vec<(Ident, SymbolId)> {
     };
     let read: Vec<&Ident> = ck.parameters.fields().collect();
     let read_list = if read.is_empty() {
-        "the top reads no field".to_owned()
+        "the top's equations read no field".to_owned()
     } else {
         let names: Vec<String> = read.iter().map(|f| format!("`{f}`")).collect();
-        format!("the fields it reads are {}", names.join(", "))
+        format!("the fields they read are {}", names.join(", "))
     };
     let mut fields: Vec<(Ident, SymbolId)> = Vec::new();
     for element in &array.elems {
         let Some(field) = path_ident(element) else {
             cx.error_spanned_by(
                 element,
-                format!("`{SENSITIVITIES}` expects field names, `[m, l]`; {read_list}"),
+                format!("`{SENSITIVITIES}` expects the names of fields the top's equations read, `[m, l]`: {read_list}"),
             );
             continue;
         };
@@ -178,7 +178,10 @@ fn sensitivity_fields(ck: &Checker, value: &Expr) -> Vec<(Ident, SymbolId)> {
             ),
             None => cx.error_spanned_by(
                 field,
-                format!("no field `{field}` in `{}`: {read_list}", ck.input.ident),
+                format!(
+                    "no field `{field}` in `{}`: a sensitivity names a field the top's equations read, and {read_list}",
+                    ck.input.ident
+                ),
             ),
         }
     }
@@ -358,7 +361,9 @@ mod tests {
             "{code}"
         );
         let rhs = method(&code, "__precess_variational_rhs");
-        let lets = rhs.matches("let ").count();
+        // One `let __pN` per instruction, a sine and a cosine sharing one `sin_cos` (the
+        // `let (…) = { … }` blocks only group the statements).
+        let lets = rhs.matches("let __p").count() + 2 * rhs.matches("sin_cos (").count();
         let writes = rhs.matches("dydt [").count();
 
         let mut a = Arena::new();
