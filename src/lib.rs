@@ -164,3 +164,9 @@ pub struct PlotsDoctests;
 #[doc = include_str!("../docs/constraints.md")]
 #[cfg(doctest)]
 pub struct ConstraintsDoctests;
+
+/// The variational guide's example of the generated type, compiled and run as a doctest so
+/// it cannot go stale.
+#[doc = include_str!("../docs/variational.md")]
+#[cfg(doctest)]
+pub struct VariationalDoctests;
