@@ -34,6 +34,7 @@ mod derive {
     mod mechanism;
     mod parametric;
     mod rotated;
+    mod signs;
     mod taylor;
     mod top;
 }

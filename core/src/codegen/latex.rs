@@ -68,7 +68,7 @@ impl Latex<'_> {
             },
             Task::Sum(e) => self.sum(e),
             Task::Term(e) => {
-                if self.coefficient(e).is_negative() {
+                if self.negative(e) {
                     vec![text("-"), Task::TermBody(e)]
                 } else {
                     vec![Task::TermBody(e)]
@@ -102,11 +102,7 @@ impl Latex<'_> {
             if i == 0 {
                 out.push(Task::Term(t));
             } else {
-                let sign = if self.coefficient(t).is_negative() {
-                    " - "
-                } else {
-                    " + "
-                };
+                let sign = if self.negative(t) { " - " } else { " + " };
                 out.push(text(sign));
                 out.push(Task::TermBody(t));
             }
@@ -114,29 +110,41 @@ impl Latex<'_> {
         out
     }
 
-    /// The rational coefficient of a term (one if it has none).
-    fn coefficient(&self, e: ExprId) -> Rational {
+    /// The constant factors of a term: the constant itself, or every constant factor of a
+    /// product. A product holds several when multiplying them out overflowed (the exact
+    /// values of f64s, as a body of literal parts has), and any of them may be negative.
+    fn constants(&self, e: ExprId) -> Vec<Rational> {
         match self.arena.node(e) {
-            Node::Const(r) => *r,
-            Node::Mul(f) => match f.first().map(|&x| self.arena.node(x)) {
-                Some(Node::Const(r)) => *r,
-                _ => Rational::ONE,
-            },
-            _ => Rational::ONE,
+            Node::Const(r) => vec![*r],
+            Node::Mul(f) => f
+                .iter()
+                .filter_map(|&x| match self.arena.node(x) {
+                    Node::Const(r) => Some(*r),
+                    _ => None,
+                })
+                .collect(),
+            _ => Vec::new(),
         }
     }
 
-    /// A term without its sign, as `c \frac{num}{den}`.
+    /// Whether a term is negative: an odd number of its constant factors are. The sign is
+    /// written once, before the term, so no factor inside it reads as a subtraction.
+    fn negative(&self, e: ExprId) -> bool {
+        self.constants(e).iter().filter(|r| r.is_negative()).count() % 2 == 1
+    }
+
+    /// A term without its sign, as `c \frac{num}{den}`; several constant factors join with
+    /// `\cdot`, their numerators above the bar and their denominators below it.
     fn term_body(&self, e: ExprId) -> Vec<Task> {
         let factors: Vec<ExprId> = match self.arena.node(e) {
             Node::Const(r) => return vec![text(rational(r.abs_value()))],
-            Node::Mul(f) => match f.first().map(|&x| self.arena.node(x)) {
-                Some(Node::Const(_)) => f[1..].to_vec(),
-                _ => f.to_vec(),
-            },
+            Node::Mul(f) => f
+                .iter()
+                .copied()
+                .filter(|&x| !matches!(self.arena.node(x), Node::Const(_)))
+                .collect(),
             _ => vec![e],
         };
-        let c = self.coefficient(e).abs_value();
         let (mut num, mut den) = (Vec::new(), Vec::new());
         for &f in &factors {
             match self.arena.node(f) {
@@ -144,7 +152,12 @@ impl Latex<'_> {
                 _ => num.push((f, 1)),
             }
         }
-        let (c_top, c_bottom) = fraction(c);
+        let (tops, bottoms): (Vec<String>, Vec<String>) = self
+            .constants(e)
+            .into_iter()
+            .map(|c| fraction(c.abs_value()))
+            .unzip();
+        let (c_top, c_bottom) = (dot_product(tops), dot_product(bottoms));
         let in_frac = !den.is_empty() || c_bottom != "1";
         if !in_frac {
             return self.render(&num, &c_top, false);
@@ -207,6 +220,16 @@ impl Latex<'_> {
             Node::Cos(u) => vec![text("\\cos"), Task::Argument(*u)],
             Node::Func(f, u) => vec![text(f.latex()), Task::Argument(*u)],
         }
+    }
+}
+
+/// Numbers multiplied with `\cdot`, ones left out; `1` for none.
+fn dot_product(numbers: Vec<String>) -> String {
+    let kept: Vec<String> = numbers.into_iter().filter(|n| n != "1").collect();
+    if kept.is_empty() {
+        "1".to_owned()
+    } else {
+        kept.join(" \\cdot ")
     }
 }
 

@@ -117,7 +117,9 @@ impl FreeError {
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the parameter or the body's quantity with
-    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is).
+    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is); a
+    /// [`FreeError::NonFiniteWrench`] is named `wrench: <part>` with its first component
+    /// that is not finite.
     ///
     /// ```
     /// use precess::free::FreeError;
@@ -152,8 +154,42 @@ impl FreeError {
                     ("rotor inertia".to_owned(), *inertia)
                 }
             }
+            // The wrench's part and its first component that is not finite: what a user
+            // looks for in their force function.
+            FreeError::NonFiniteWrench { part, values } => {
+                let bad = values.iter().copied().find(|c| !c.is_finite());
+                (format!("wrench: {part}"), bad.unwrap_or(f64::NAN))
+            }
             _ => ("parameters".to_owned(), f64::NAN),
         };
         refused(named, &self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A wrench that is not finite is named by its part and its bad component, not as
+    /// "parameters".
+    #[test]
+    fn a_non_finite_wrench_names_its_part() {
+        let e = FreeError::NonFiniteWrench {
+            part: "force, description axes",
+            values: [0.5, f64::INFINITY, f64::NAN],
+        }
+        .into_ode_error();
+        match e {
+            OdeError::InvalidSystemParameter {
+                quantity,
+                value,
+                message,
+            } => {
+                assert_eq!(quantity, "wrench: force, description axes");
+                assert_eq!(value, f64::INFINITY);
+                assert!(message.contains("non-finite wrench"), "{message}");
+            }
+            other => panic!("not a refused parameter: {other:?}"),
+        }
     }
 }

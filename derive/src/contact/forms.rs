@@ -280,14 +280,17 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
     // A resistance is a torque per angular rate, viscous friction a force per slip speed,
     // a friction coefficient a pure number.
     let coefficient = |ck: &mut Checker, key: &'static str| -> Option<Option<ExprId>> {
-        let dim = match key {
-            keys::ROLLING_RESISTANCE | keys::SPIN_RESISTANCE => Dim::ROTARY_DAMPING,
-            keys::VISCOUS => Dim::DRAG,
-            _ => Dim::NONE,
+        let (dim, what) = match key {
+            keys::ROLLING_RESISTANCE | keys::SPIN_RESISTANCE => (Dim::ROTARY_DAMPING, None),
+            keys::VISCOUS => (Dim::DRAG, None),
+            _ => (
+                Dim::NONE,
+                Some("a pure number (a friction coefficient has no units)"),
+            ),
         };
         match value_of(&args, key) {
             Some(v) => ck
-                .expecting(dim, key, |ck| {
+                .expecting_as(dim, what, key, |ck| {
                     non_negative(ck, v, &format!("`{key}` of `{kind}`"))
                 })
                 .map(Some),

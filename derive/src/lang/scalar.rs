@@ -28,6 +28,9 @@ pub struct Expect {
     pub dim: Dim,
     /// The key, as the user wrote it.
     pub key: &'static str,
+    /// What the key takes, where the dimension's own name reads worse (a rotary spring's
+    /// N m per rad has a torque's dimension).
+    pub what: Option<&'static str>,
 }
 
 impl Checker<'_> {
@@ -38,7 +41,19 @@ impl Checker<'_> {
         key: &'static str,
         f: impl FnOnce(&mut Self) -> T,
     ) -> T {
-        let saved = self.expect.replace(Expect { dim, key });
+        self.expecting_as(dim, None, key, f)
+    }
+
+    /// [`Checker::expecting`], an error saying the key takes `what` (when given) rather
+    /// than the dimension's own name.
+    pub(crate) fn expecting_as<T>(
+        &mut self,
+        dim: Dim,
+        what: Option<&'static str>,
+        key: &'static str,
+        f: impl FnOnce(&mut Self) -> T,
+    ) -> T {
+        let saved = self.expect.replace(Expect { dim, key, what });
         let out = f(self);
         self.expect = saved;
         out
@@ -56,7 +71,9 @@ impl Checker<'_> {
                 format!(
                     "`{}` takes {}, but this value is {}",
                     expect.key,
-                    expect.dim.describe(),
+                    expect
+                        .what
+                        .map_or_else(|| expect.dim.describe(), str::to_owned),
                     d.describe()
                 ),
             );

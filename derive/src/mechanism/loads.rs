@@ -30,6 +30,15 @@ impl Coordinate {
         }
     }
 
+    /// How an error names the stiffness: a rotary one has a torque's dimension (a radian
+    /// has none), but is a torque per radian.
+    fn stiffness_name(self) -> Option<&'static str> {
+        match self {
+            Coordinate::Angle => Some("a rotary stiffness (N m per rad)"),
+            Coordinate::Length => None,
+        }
+    }
+
     fn damper(self) -> Dim {
         match self {
             Coordinate::Angle => Dim::ROTARY_DAMPING,
@@ -146,10 +155,12 @@ impl Checker<'_> {
                             for (i, ((load, kv), c)) in
                                 loads.iter_mut().zip(ks).zip(coordinates).enumerate()
                             {
-                                let stiffness =
-                                    self.expecting(c.stiffness(), keys::STIFFNESS, |ck| {
-                                        ck.non_negative(kv, keys::STIFFNESS)
-                                    });
+                                let stiffness = self.expecting_as(
+                                    c.stiffness(),
+                                    c.stiffness_name(),
+                                    keys::STIFFNESS,
+                                    |ck| ck.non_negative(kv, keys::STIFFNESS),
+                                );
                                 let rest = match (&rests, rest) {
                                     (Some(r), _) => r.get(i).and_then(|&r| {
                                         self.expecting(c.rest(), keys::REST, |ck| ck.scalar(r))

@@ -1,19 +1,38 @@
 //! The stub `impl TopDynamics` emitted next to the errors when the struct declares a top, so code
-//! using the trait does not add errors to the real ones.
+//! using the trait does not add errors to the real ones; with it the angle consts (`Top::THETA`)
+//! of the sequence `angles = ..` names, read from the tokens as written whatever else is wrong.
 
-use proc_macro2::TokenStream;
-use quote::quote;
-use syn::DeriveInput;
+use proc_macro2::{TokenStream, TokenTree};
+use quote::{format_ident, quote};
+use syn::{DeriveInput, Meta};
 
+use crate::lang::keys;
 use crate::lang::private::Private;
 
-/// A stub `impl TopDynamics` for `input`.
+/// A stub `impl TopDynamics` for `input`, and its angle consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let stub = quote!(::core::unimplemented!("the #[top] description has errors"));
+    let angles = written_angles(input)
+        .into_iter()
+        .enumerate()
+        .map(|(k, name)| {
+            let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
+            // Both sets count from zero when both are emitted.
+            let k = k % 3;
+            quote! {
+                #[doc(hidden)]
+                pub const #upper: usize = #k;
+            }
+        });
     quote! {
+        #[automatically_derived]
+        impl #impl_generics #ident #ty_generics #where_clause {
+            #(#angles)*
+        }
+
         #[automatically_derived]
         impl #impl_generics #p::TopDynamics for #ident #ty_generics #where_clause {
             const SEQUENCE: #p::AngleSequence = #p::AngleSequence::Zxz;
@@ -27,5 +46,34 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             fn eulerian_rhs(&self, _: f64, _: &#p::UnitQuaternion<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
             fn equations(&self) -> &'static #p::Typeset { #stub }
         }
+    }
+}
+
+/// The angle names of the sequence `angles = ..` writes in `#[top(...)]`: φ, θ, ψ when none
+/// is written (the default), yaw, pitch, roll for `zyx`, and both sets for a sequence that
+/// is neither (its error is reported; whichever the user meant, their uses resolve).
+/// Read from the top-level tokens, so an error elsewhere in the attribute cannot hide it.
+fn written_angles(input: &DeriveInput) -> Vec<&'static str> {
+    const ZXZ: [&str; 3] = ["phi", "theta", "psi"];
+    const ZYX: [&str; 3] = ["yaw", "pitch", "roll"];
+    let mut sequence: Option<String> = None;
+    for attr in input.attrs.iter().filter(|a| a.path().is_ident(keys::TOP)) {
+        let Meta::List(list) = &attr.meta else {
+            continue;
+        };
+        let tokens: Vec<TokenTree> = list.tokens.clone().into_iter().collect();
+        for window in tokens.windows(3) {
+            if let [TokenTree::Ident(key), TokenTree::Punct(eq), value] = window
+                && key == keys::ANGLES
+                && eq.as_char() == '='
+            {
+                sequence = Some(value.to_string());
+            }
+        }
+    }
+    match sequence.as_deref() {
+        None | Some("zxz") => ZXZ.to_vec(),
+        Some("zyx") => ZYX.to_vec(),
+        Some(_) => ZXZ.into_iter().chain(ZYX).collect(),
     }
 }

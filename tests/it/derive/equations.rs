@@ -542,6 +542,54 @@ struct Wooden;
 #[top(gravity = 981 cm/s^2)]
 struct Tilted;
 
+/// A pendulum-like top of literal parts hanging below its pivot: its centre of mass is at a
+/// negative l, so the potential and the θ equation carry a negative named constant.
+#[derive(RigidBody)]
+#[rigid(
+    cylinder(mass = 0.35, radius = 2 cm, length = 6 cm, at = [0, 0, -9 cm]),
+    sphere(mass = 0.12, radius = 1.5 cm, at = [0, 0, -14.3 cm]),
+    pivot = [0, 0, 0],
+)]
+#[top(gravity = 9.81)]
+struct Hanging;
+
+/// An asymmetric top of literal parts, parts at negative offsets on every axis: negative
+/// products of inertia and negative components of the centre of mass.
+#[derive(RigidBody)]
+#[rigid(
+    cuboid(mass = 0.2, size = [3 cm, 2 cm, 1 cm], at = [-1.7 cm, 0.4 cm, -2.1 cm]),
+    sphere(mass = 0.07, radius = 1 cm, at = [0.9 cm, 2.3 cm, 1.3 cm]),
+    rod(mass = 0.05, length = 8 cm, axis = x, at = [0, 0.6 cm, 3.3 cm]),
+    pivot = [0, 0, 0],
+)]
+#[top(gravity = 9.81)]
+struct Askew;
+
+/// Literal tops with negative values among their mass properties read back line for line:
+/// the hanging top (l < 0) against its centre of mass, the askew one (negative products of
+/// inertia and centre components) against its tensor; every line agrees with the
+/// generated code.
+#[test]
+fn literal_tops_with_negative_values_read_back() {
+    let c = Hanging.center_of_mass();
+    assert!(c.z < -0.09, "{c}");
+    let eq = Hanging.equations();
+    let l = eq.value("l").unwrap_or(f64::NAN);
+    assert!((l - c.z).abs() <= 1e-15, "l = {l} vs {}", c.z);
+    check_lines(&Hanging, &[], [0.0; 3], 9.81, 6);
+    let i = Askew.inertia();
+    assert!(i[(0, 2)] < 0.0 && i[(1, 2)] < 0.0, "{i}");
+    let eq = Askew.equations();
+    for (symbol, value) in [("I_{xz}", i[(0, 2)]), ("I_{yz}", i[(1, 2)])] {
+        let exact = eq.value(symbol).unwrap_or(f64::NAN);
+        assert!(
+            (exact - value).abs() <= 1e-15,
+            "{symbol} = {exact} vs {value}"
+        );
+    }
+    check_lines(&Askew, &[], [0.0; 3], 9.81, 7);
+}
+
 /// A symmetric top of literal parts prints Goldstein's lines, the very strings of the top
 /// whose mass properties are fields, with its values named I₁, I₃, M, l, g; the table gives
 /// them to six digits and `values` exactly, both checked against `inertia()`, `principal()`,
