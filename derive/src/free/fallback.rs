@@ -14,7 +14,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
-    let slots = super::expand::slot_consts(ident);
+    let slots = super::expand::slot_consts(ident, &[]);
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {

@@ -84,7 +84,11 @@ pub fn check(
     for item in &items.items {
         if let Item::Group { name, keys } = item {
             if name == keys::ROTOR {
-                if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_top) {
+                // A driven rotor is refused inside `check`: the top's state has no slot for
+                // its rate.
+                if let Some(crate::lang::rotor::Checked::Constant(rotor)) =
+                    crate::lang::rotor::check(ck, name, keys, &in_top, false)
+                {
                     settings.rotors.push(rotor);
                 }
             } else {
