@@ -524,7 +524,7 @@ fn literal_driven_inertia(
             cx.error_spanned_by(
                 &d.inertia_expr,
                 format!(
-                    "rotor {declared}'s `inertia` is too large for the body: once its driven wheels turn freely the body keeps I − Σ J â âᵀ, whose smallest principal moment is {smallest:.6} here; it must be positive (a wheel's J below the body's own moment about its axis)"
+                    "rotor {declared}'s `inertia` is too large for the body: with its driven wheels turning freely the body keeps I − Σ J â âᵀ about its centre of mass, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the body's own moment about the wheel's axis)"
                 ),
             );
             None

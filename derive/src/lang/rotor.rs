@@ -33,6 +33,12 @@ pub fn form() -> String {
     )
 }
 
+/// The keys a rotor takes where `driven` rotors are allowed (`#[free]`) or not (`#[top]`:
+/// no `torque`).
+pub fn allowed_keys(driven: bool) -> &'static [&'static str] {
+    if driven { ROTOR_KEYS } else { &ROTOR_KEYS[..3] }
+}
+
 /// The message for `rotor = ..` written as a setting: a rotor is a group of its own keys.
 pub fn written_as_setting() -> String {
     format!("`{}` is a part: write {}", keys::ROTOR, form())
@@ -76,8 +82,8 @@ pub fn check(
                 format!(
                     "unknown key `{key}` for `{}` in {within}: allowed keys are {}{}",
                     keys::ROTOR,
-                    ROTOR_KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), ROTOR_KEYS.iter().copied())
+                    allowed_keys(driven).join(", "),
+                    keys::did_you_mean(&key.to_string(), allowed_keys(driven).iter().copied())
                 ),
             );
             ok = false;
@@ -142,7 +148,10 @@ pub fn check(
         }
         let driven_form = if driven {
             format!(
-                ", or `{}` = path for a wheel turned by a motor (`fn(&Self, f64, &[f64]) -> f64`, time and state → its torque)",
+                ", or `{}({} = [x, y, z], {} = J, {} = path)` for a wheel turned by a motor (`fn(&Self, f64, &[f64]) -> f64`: time and the whole state → its torque)",
+                keys::ROTOR,
+                keys::AXIS,
+                keys::INERTIA,
                 keys::TORQUE
             )
         } else {

@@ -181,7 +181,7 @@ pub fn check(
                     keys::TOP,
                     TOP_KEYS.join(", "),
                     keys::ROTOR,
-                    keys::ROTOR_KEYS.join(", "),
+                    crate::lang::rotor::allowed_keys(false).join(", "),
                     keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),
