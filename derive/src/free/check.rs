@@ -92,7 +92,7 @@ pub fn check(
                         settings.rotors.push(rotor);
                         settings.rotor_index.push(index);
                     }
-                    Some(Checked::Driven(driven)) => settings.driven.push((index, driven)),
+                    Some(Checked::Driven(driven)) => settings.driven.push((index, *driven)),
                     None => {}
                 }
             }

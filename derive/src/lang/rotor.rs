@@ -61,7 +61,7 @@ pub enum Checked {
     /// `rate = Ω`.
     Constant(Rotor),
     /// `torque = path`.
-    Driven(Driven),
+    Driven(Box<Driven>),
 }
 
 /// Checks one `rotor(...)` group of the attribute `within` (`#[free]`, `#[top]`); a driven
@@ -175,12 +175,12 @@ pub fn check(
     let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
     if let Some(torque) = torque {
         let path = motor(ck, torque);
-        return Some(Checked::Driven(Driven {
+        return Some(Checked::Driven(Box::new(Driven {
             axis: axis?,
             inertia: inertia_value?,
             torque: path?,
             inertia_expr: inertia.clone(),
-        }));
+        })));
     }
     let rate = rate.and_then(|rate| ck.expecting(RATE, keys::RATE, |ck| ck.scalar(rate)));
     Some(Checked::Constant(Rotor {
