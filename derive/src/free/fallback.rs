@@ -46,6 +46,12 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let driven = driven_names(input);
     let slots = super::expand::slot_consts(ident, &driven);
     let n = precess_core::free::STATE_LEN + driven.len();
+    // The trait's default N without driven rotors, as a user writes it.
+    let dynamics = if driven.is_empty() {
+        quote!(#p::FreeDynamics)
+    } else {
+        quote!(#p::FreeDynamics<#n>)
+    };
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {
@@ -54,7 +60,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
 
 
         #[automatically_derived]
-        impl #impl_generics #p::FreeDynamics<#n> for #ident #ty_generics #where_clause {
+        impl #impl_generics #dynamics for #ident #ty_generics #where_clause {
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = ::core::option::Option::None;
             const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven),*];
             fn principal_cm(&self) -> #p::Principal { #stub }
