@@ -72,6 +72,7 @@ mod free {
     mod errors;
     mod exact;
     mod gyrostat;
+    mod gyrostat_driven;
     mod gyrostat_example;
     mod reference;
     mod steppers;

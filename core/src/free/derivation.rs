@@ -36,6 +36,30 @@ pub struct FreeDerivation {
     pub linear_momentum: [ExprId; 3],
     /// The angular momentum about the space origin, x × M v + R (I ω + h), space axes.
     pub angular_momentum: [ExprId; 3],
+    /// The driven rotors' relative rates Ωₖ: the state symbols after the 13 of
+    /// [`super::layout`], in the order of [`FreeScene::driven`] (empty without).
+    pub rotor_rates: Vec<ExprId>,
+    /// Their rates of change, Ω̇ₖ = uₖ/Jₖ − âₖ·ω̇.
+    pub rotor_rhs: Vec<ExprId>,
+    /// For each driven rotor k, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ in principal axes: the inertia the body
+    /// keeps once the first k + 1 wheels turn freely, which must stay positive definite.
+    pub driven_inertia: Vec<Mat3>,
+}
+
+impl FreeDerivation {
+    /// The whole state: the 13 symbols of [`super::layout`], then the driven rotors' rates.
+    pub fn full_state(&self) -> Vec<ExprId> {
+        self.state
+            .iter()
+            .chain(&self.rotor_rates)
+            .copied()
+            .collect()
+    }
+
+    /// The whole right-hand side, in the order of [`FreeDerivation::full_state`].
+    pub fn full_rhs(&self) -> Vec<ExprId> {
+        self.rhs.iter().chain(&self.rotor_rhs).copied().collect()
+    }
 }
 
 impl FreeScene {
@@ -43,8 +67,9 @@ impl FreeScene {
     /// momenta, over fresh input symbols for the state.
     ///
     /// # Errors
-    /// [`FreeError::ZeroInertia`] if the mass or a principal moment is identically zero;
-    /// [`FreeError::ZeroRotorAxis`] if a rotor's axis is.
+    /// [`FreeError::ZeroInertia`] if the mass or a principal moment is identically zero, or
+    /// the determinant of I − Σ Jₖ âₖ âₖᵀ with driven rotors; [`FreeError::ZeroRotorAxis`] if
+    /// a rotor's axis is (a driven rotor counted after the constant-rate ones).
     pub fn derive(&self, arena: &mut Arena) -> Result<FreeDerivation, FreeError> {
         const NAMES: [&str; STATE_LEN] = [
             "x", "y", "z", "v_x", "v_y", "v_z", "q_w", "q_x", "q_y", "q_z", "omega_1", "omega_2",
@@ -63,11 +88,32 @@ impl FreeScene {
         } = self.wrench(arena, &rotation, &v, &omega);
         let inv_mass = reciprocal(arena, self.mass, "mass")?;
         let accel = force.map(|f| arena.mul(inv_mass, f));
-        let h = principal_momentum(arena, &self.rotors, &self.principal_rotation)?;
-        let mut omega_dot = self.euler(arena, &omega, &torque)?;
-        if let Some(h) = h {
-            omega_dot = self.gyrostat(arena, &omega, &h, omega_dot)?;
-        }
+        // A driven wheel's rate is a state slot; its momentum J Ω â reads that symbol.
+        let rotor_rates: Vec<ExprId> = (0..self.driven.len())
+            .map(|k| arena.input(&format!("Omega_rotor_{k}")))
+            .collect();
+        let mut wheels = self.rotors.clone();
+        wheels.extend(
+            self.driven
+                .iter()
+                .zip(&rotor_rates)
+                .map(|(r, &rate)| r.at_rate(rate)),
+        );
+        let h = principal_momentum(arena, &wheels, &self.principal_rotation)?;
+        let (omega_dot, rotor_rhs, driven_inertia) = match h {
+            Some(h) if !self.driven.is_empty() => {
+                self.driven_dynamics(arena, &omega, &torque, &h, &rotor_rates)?
+            }
+            Some(h) => {
+                let euler = self.euler(arena, &omega, &torque)?;
+                (
+                    self.gyrostat(arena, &omega, &h, euler)?,
+                    Vec::new(),
+                    Vec::new(),
+                )
+            }
+            None => (self.euler(arena, &omega, &torque)?, Vec::new(), Vec::new()),
+        };
         let q_dot = quaternion_rate(arena, q, omega);
         let mut rhs = [arena.zero(); STATE_LEN];
         rhs[..3].copy_from_slice(&v);
@@ -79,7 +125,26 @@ impl FreeScene {
         let translational = arena.product(&[half, self.mass, v2]);
         let i_omega: [ExprId; 3] = std::array::from_fn(|k| arena.mul(self.moments[k], omega[k]));
         let two_t = dot(arena, &omega, &i_omega);
-        let rotational = arena.mul(half, two_t);
+        let mut rotational = arena.mul(half, two_t);
+        if !self.driven.is_empty() {
+            // The driven wheels' own energy: Σ Jₖ Ωₖ âₖ·ω + ½ Σ Jₖ Ωₖ² (a constant-rate
+            // wheel's is left out, its motor's work not being in the balance).
+            let driven: Vec<_> = self
+                .driven
+                .iter()
+                .zip(&rotor_rates)
+                .map(|(r, &rate)| r.at_rate(rate))
+                .collect();
+            if let Some(hd) = principal_momentum(arena, &driven, &self.principal_rotation)? {
+                let coupling = dot(arena, &hd, &omega);
+                rotational = arena.add(rotational, coupling);
+            }
+            for (r, &rate) in self.driven.iter().zip(&rotor_rates) {
+                let w2 = arena.mul(rate, rate);
+                let own = arena.product(&[half, r.inertia, w2]);
+                rotational = arena.add(rotational, own);
+            }
+        }
         let mut energy = arena.add(translational, rotational);
         if let Some(g) = self.gravity {
             // V = −M g·x: the work of the weight is −ΔV.
@@ -90,7 +155,12 @@ impl FreeScene {
         let applied: [ExprId; 3] = std::array::from_fn(|k| arena.sub(force[k], conservative[k]));
         let fv = dot(arena, &applied, &v);
         let tw = dot(arena, &torque, &omega);
-        let power = arena.add(fv, tw);
+        let mut power = arena.add(fv, tw);
+        for (r, &rate) in self.driven.iter().zip(&rotor_rates) {
+            // The motor's work on its wheel: uₖ Ωₖ.
+            let motor = arena.mul(r.torque, rate);
+            power = arena.add(power, motor);
+        }
         let linear_momentum = v.map(|c| arena.mul(self.mass, c));
         let orbital = cross(arena, &x, &linear_momentum);
         let body_momentum = match h {
@@ -108,6 +178,9 @@ impl FreeScene {
             power,
             linear_momentum,
             angular_momentum,
+            rotor_rates,
+            rotor_rhs,
+            driven_inertia,
         })
     }
 
@@ -274,7 +347,7 @@ fn sum_vectors(arena: &mut Arena, terms: &[[ExprId; 3]]) -> [ExprId; 3] {
 
 /// A constant expression as one constant, so no arithmetic on constants is left for run
 /// time (exact when it folded to a rational, else its value rounded once).
-fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
+pub(super) fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
     if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
         return e;
     }
@@ -286,7 +359,11 @@ fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
 ///
 /// # Errors
 /// [`FreeError::ZeroInertia`] naming `quantity` when e is identically zero.
-fn reciprocal(arena: &mut Arena, e: ExprId, quantity: &'static str) -> Result<ExprId, FreeError> {
+pub(super) fn reciprocal(
+    arena: &mut Arena,
+    e: ExprId,
+    quantity: &'static str,
+) -> Result<ExprId, FreeError> {
     if arena.is_zero(e).unwrap_or(false) {
         return Err(FreeError::ZeroInertia { quantity });
     }

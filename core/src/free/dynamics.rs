@@ -20,7 +20,9 @@ pub struct Wrench {
 /// A free body, its equations derived at compile time by `#[free(...)]`.
 ///
 /// The state is the array of [`super::layout`]: the centre of mass and its velocity in space
-/// axes, the attitude quaternion (principal → space) and ω in principal axes. The generated
+/// axes, the attitude quaternion (principal → space) and ω in principal axes; a body with
+/// driven rotors appends their relative rates, so its state holds `N` = 13 + their number
+/// (named in [`FreeDynamics::DRIVEN_ROTORS`]). The generated
 /// methods are straight-line code without checks, for the steppers' inner loops; they read
 /// the quaternion at any non-zero size (the attitude is formed from q/|q|). Build states with
 /// [`FreeState::to_array`], check parameters with [`FreeDynamics::check_parameters`].
@@ -53,10 +55,15 @@ pub struct Wrench {
 /// // Energy is conserved: the weight is the only force and it has a potential.
 /// assert_relative_eq!(Brick.power(0.0, &s.to_array()), 0.0);
 /// ```
-pub trait FreeDynamics: RigidBody {
+pub trait FreeDynamics<const N: usize = STATE_LEN>: RigidBody {
     /// The first declared force or torque other than uniform gravity, by its name, or `None`
     /// when gravity is all that acts (the exact flow then applies).
     const BEYOND_GRAVITY: Option<&'static str>;
+
+    /// The names of the state slots after the 13 of [`super::layout`]: one per driven rotor,
+    /// `rotor_k` for the rotor declared k-th (counting from 0), holding its relative rate Ωₖ
+    /// (rad/s). The derive gives each slot a const in capitals (`Self::ROTOR_0`).
+    const DRIVEN_ROTORS: &'static [&'static str] = &[];
 
     /// The slot of the state component called `name` in the array of [`super::layout`], if
     /// there is one, by the names of [`FreeQuantities::state_names`](super::FreeQuantities::state_names)
@@ -80,7 +87,10 @@ pub trait FreeDynamics: RigidBody {
     where
         Self: Sized,
     {
-        super::STATE_NAMES.iter().position(|&c| c == name)
+        super::STATE_NAMES
+            .iter()
+            .chain(Self::DRIVEN_ROTORS)
+            .position(|&c| c == name)
     }
 
     /// Principal moments about the centre of mass and the rotation from principal to
@@ -91,19 +101,24 @@ pub trait FreeDynamics: RigidBody {
     fn gravity(&self) -> Vector3<f64>;
 
     /// Writes ẏ at time `t` and state `y` into `dydt`.
-    fn free_rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]);
+    fn free_rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]);
 
     /// The total force and the torque about the centre of mass.
-    fn wrench(&self, t: f64, y: &[f64; STATE_LEN]) -> Wrench;
+    fn wrench(&self, t: f64, y: &[f64; N]) -> Wrench;
 
     /// The total force and torque, checked: the state is finite with a non-zero
     /// quaternion and the wrench (a user function's value included) is finite.
     ///
     /// # Errors
-    /// As [`FreeState::from_array`] for the state; [`FreeError::NonFiniteWrench`] naming the
-    /// total force (space axes) or torque (principal axes) that holds NaN or ±∞.
-    fn try_wrench(&self, t: f64, y: &[f64; STATE_LEN]) -> Result<Wrench, FreeError> {
-        FreeState::from_array(y)?;
+    /// [`FreeError::StateLength`] for a state shorter than 13; as [`FreeState::from_array`]
+    /// for the state; [`FreeError::NonFiniteWrench`] naming the total force (space axes) or
+    /// torque (principal axes) that holds NaN or ±∞.
+    fn try_wrench(&self, t: f64, y: &[f64; N]) -> Result<Wrench, FreeError> {
+        let head = y.first_chunk::<STATE_LEN>().ok_or(FreeError::StateLength {
+            len: N,
+            expected: STATE_LEN + Self::DRIVEN_ROTORS.len(),
+        })?;
+        FreeState::from_array(head)?;
         let w = self.wrench(t, y);
         let parts = [
             ("total force, space axes", w.force_space),
@@ -123,17 +138,20 @@ pub trait FreeDynamics: RigidBody {
         Ok(w)
     }
 
-    /// The energy ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x.
-    fn energy(&self, y: &[f64; STATE_LEN]) -> f64;
+    /// The energy ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x, with driven rotors plus their wheels' own
+    /// Σ Jₖ Ωₖ âₖ·ω + ½ Σ Jₖ Ωₖ² (the true total).
+    fn energy(&self, y: &[f64; N]) -> f64;
 
-    /// The power of every force but gravity, F'·v + τ·ω: dE/dt along the motion.
-    fn power(&self, t: f64, y: &[f64; STATE_LEN]) -> f64;
+    /// The power of every force but gravity, F'·v + τ·ω (+ Σ uₖ Ωₖ, the driven rotors'
+    /// motors): dE/dt along the motion.
+    fn power(&self, t: f64, y: &[f64; N]) -> f64;
 
     /// The linear momentum M v, space axes.
-    fn linear_momentum(&self, y: &[f64; STATE_LEN]) -> Vector3<f64>;
+    fn linear_momentum(&self, y: &[f64; N]) -> Vector3<f64>;
 
-    /// The angular momentum about the space origin, x × M v + R I ω, space axes.
-    fn angular_momentum_origin(&self, y: &[f64; STATE_LEN]) -> Vector3<f64>;
+    /// The angular momentum about the space origin, x × M v + R (I ω + h), space axes (h the
+    /// rotors' relative momentum).
+    fn angular_momentum_origin(&self, y: &[f64; N]) -> Vector3<f64>;
 
     /// Checks the struct's fields that the body and its forces read, and the body's rules
     /// for their values.

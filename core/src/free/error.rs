@@ -81,6 +81,28 @@ pub enum FreeError {
         /// The length of its axis.
         axis_norm: f64,
     },
+    /// With driven rotors, the body's inertia once its driven wheels turn freely,
+    /// I − Σ Jₖ âₖ âₖᵀ, is not positive definite for the current values: a wheel's axial
+    /// moment reaches the body's own about that axis (the rule literals meet at compile time).
+    #[error(
+        "rotor {rotor}: the body without its driven wheels' axial moments, I − Σ J â âᵀ, must be positive definite, but its smallest principal moment is {smallest} (a wheel's J must stay below the body's moment about its axis)"
+    )]
+    DrivenInertia {
+        /// The rotor's index: in the order declared for a derived body, in
+        /// [`super::FreeScene::driven`] for a run-time scene.
+        rotor: usize,
+        /// The smallest eigenvalue of I − Σ J â âᵀ over the wheels up to this one.
+        smallest: f64,
+    },
+    /// A state array too short for the free body: the 13 slots of [`super::layout`] and one
+    /// per driven rotor.
+    #[error("a state of {len} numbers; this free body's holds {expected}")]
+    StateLength {
+        /// The length given.
+        len: usize,
+        /// The length the body's state has.
+        expected: usize,
+    },
     /// The exact flow was asked of a body under forces other than uniform gravity.
     #[error(
         "the exact flow needs a body under uniform gravity alone, but it also declares {declared}"
@@ -114,6 +136,26 @@ pub enum FreeError {
 }
 
 impl FreeError {
+    /// Checks that the body's inertia about its centre of mass `inertia` stays positive
+    /// definite as each driven rotor's axial moment is taken out (see
+    /// [`crate::rigid::first_singular_driven`]); `rotors` holds (declared index, axis, J).
+    ///
+    /// # Errors
+    /// [`FreeError::DrivenInertia`] naming the first rotor that breaks it.
+    pub fn check_driven_inertia(
+        inertia: &nalgebra::Matrix3<f64>,
+        rotors: &[(usize, [f64; 3], f64)],
+    ) -> Result<(), FreeError> {
+        let wheels: Vec<([f64; 3], f64)> = rotors.iter().map(|&(_, a, j)| (a, j)).collect();
+        match crate::rigid::first_singular_driven(inertia, &wheels) {
+            Some((k, smallest)) => Err(FreeError::DrivenInertia {
+                rotor: rotors.get(k).map_or(k, |r| r.0),
+                smallest,
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the parameter or the body's quantity with
@@ -160,6 +202,7 @@ impl FreeError {
                 let bad = values.iter().copied().find(|c| !c.is_finite());
                 (format!("wrench: {part}"), bad.unwrap_or(f64::NAN))
             }
+            FreeError::DrivenInertia { smallest, .. } => ("rotor inertia".to_owned(), *smallest),
             _ => ("parameters".to_owned(), f64::NAN),
         };
         refused(named, &self)

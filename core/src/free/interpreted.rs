@@ -6,11 +6,10 @@ use nalgebra::Vector3;
 use super::derivation::FreeDerivation;
 use super::dynamics::Wrench;
 use super::error::FreeError;
-use super::state::STATE_LEN;
 #[cfg(doc)]
 use crate::codegen::BindingError;
 use crate::codegen::{Bindings, Program};
-use crate::ode::System;
+use crate::ode::{OdeError, System};
 use crate::sym::{Arena, SymbolId};
 
 /// A free body's equations, lowered once and interpreted.
@@ -47,7 +46,10 @@ pub struct FreeModel {
     energy: Program,
     power: Program,
     momenta: Program,
-    state: [SymbolId; STATE_LEN],
+    /// The entries of each I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, nine per driven rotor, row by row.
+    driven: Program,
+    /// The state symbols: the 13 of the layout, then the driven rotors' rates.
+    state: Vec<SymbolId>,
     /// The parameters by name and the environment the programs run in.
     bindings: Bindings,
 }
@@ -66,11 +68,15 @@ impl FreeModel {
         derivation: &FreeDerivation,
         parameters: &[(&str, f64)],
     ) -> Result<FreeModel, FreeError> {
-        let state = derivation.state.map(|e| {
-            arena
-                .as_symbol(e)
-                .unwrap_or_else(|| unreachable!("the derivation's state entries are symbols"))
-        });
+        let state: Vec<SymbolId> = derivation
+            .full_state()
+            .into_iter()
+            .map(|e| {
+                arena
+                    .as_symbol(e)
+                    .unwrap_or_else(|| unreachable!("the derivation's state entries are symbols"))
+            })
+            .collect();
         let d = derivation;
         let wrench: Vec<_> = d.force.iter().chain(&d.torque).copied().collect();
         let momenta: Vec<_> = d
@@ -79,22 +85,31 @@ impl FreeModel {
             .chain(&d.angular_momentum)
             .copied()
             .collect();
+        let driven: Vec<_> = d
+            .driven_inertia
+            .iter()
+            .flatten()
+            .flatten()
+            .copied()
+            .collect();
         let programs = [
-            Program::lower(arena, &d.rhs),
+            Program::lower(arena, &d.full_rhs()),
             Program::lower(arena, &wrench),
             Program::lower(arena, &[d.energy]),
             Program::lower(arena, &[d.power]),
             Program::lower(arena, &momenta),
+            Program::lower(arena, &driven),
         ];
         let bindings =
             Bindings::new(arena, &programs, &state, parameters).map_err(FreeError::from)?;
-        let [rhs, wrench, energy, power, momenta] = programs;
+        let [rhs, wrench, energy, power, momenta, driven] = programs;
         Ok(FreeModel {
             rhs,
             wrench,
             energy,
             power,
             momenta,
+            driven,
             state,
             bindings,
         })
@@ -115,13 +130,41 @@ impl FreeModel {
         Ok(self)
     }
 
-    fn run(&self, p: &Program, y: &[f64; STATE_LEN], out: &mut [f64]) {
+    fn run(&self, p: &Program, y: &[f64], out: &mut [f64]) {
         self.bindings
-            .eval(p, self.state.iter().copied().zip(*y), out);
+            .eval(p, self.state.iter().copied().zip(y.iter().copied()), out);
+    }
+
+    /// The length of the state: 13, and one per driven rotor.
+    pub fn state_len(&self) -> usize {
+        self.state.len()
+    }
+
+    /// Checks the driven rotors for the current parameters: the body's inertia stays
+    /// positive definite as each wheel's axial moment is taken out.
+    ///
+    /// # Errors
+    /// [`FreeError::DrivenInertia`] naming the first rotor (its index in
+    /// [`super::FreeScene::driven`]) for which it does not.
+    pub fn check_driven(&self) -> Result<(), FreeError> {
+        let mut out = vec![0.0; self.driven.outputs().len()];
+        self.run(&self.driven, &[], &mut out);
+        for (rotor, a) in out.chunks_exact(9).enumerate() {
+            let m = nalgebra::Matrix3::from_row_slice(a);
+            let smallest = if m.iter().all(|v| v.is_finite()) {
+                m.symmetric_eigenvalues().min()
+            } else {
+                f64::NAN
+            };
+            if smallest.is_nan() || smallest <= 0.0 {
+                return Err(FreeError::DrivenInertia { rotor, smallest });
+            }
+        }
+        Ok(())
     }
 
     /// The total force (space axes) and torque about the centre of mass (principal axes).
-    pub fn wrench(&self, y: &[f64; STATE_LEN]) -> Wrench {
+    pub fn wrench<const N: usize>(&self, y: &[f64; N]) -> Wrench {
         let mut out = [0.0; 6];
         self.run(&self.wrench, y, &mut out);
         Wrench {
@@ -131,21 +174,21 @@ impl FreeModel {
     }
 
     /// The energy ½ M |v|² + ½ Σ Iᵢ ωᵢ² − M g·x.
-    pub fn energy(&self, y: &[f64; STATE_LEN]) -> f64 {
+    pub fn energy<const N: usize>(&self, y: &[f64; N]) -> f64 {
         let mut out = [0.0];
         self.run(&self.energy, y, &mut out);
         out[0]
     }
 
     /// The power of every force but gravity: dE/dt.
-    pub fn power(&self, y: &[f64; STATE_LEN]) -> f64 {
+    pub fn power<const N: usize>(&self, y: &[f64; N]) -> f64 {
         let mut out = [0.0];
         self.run(&self.power, y, &mut out);
         out[0]
     }
 
     /// The linear momentum and the angular momentum about the origin, space axes.
-    pub fn momenta(&self, y: &[f64; STATE_LEN]) -> (Vector3<f64>, Vector3<f64>) {
+    pub fn momenta<const N: usize>(&self, y: &[f64; N]) -> (Vector3<f64>, Vector3<f64>) {
         let mut out = [0.0; 6];
         self.run(&self.momenta, y, &mut out);
         (
@@ -155,8 +198,26 @@ impl FreeModel {
     }
 }
 
-impl System<STATE_LEN> for FreeModel {
-    fn rhs(&self, _t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
-        self.run(&self.rhs, y, dydt);
+/// On the state of [`FreeModel::state_len`] numbers (13 without driven rotors); any other `N`
+/// is refused by [`System::check_parameters`] before a step.
+impl<const N: usize> System<N> for FreeModel {
+    fn rhs(&self, _t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
+        if N == self.state.len() {
+            self.run(&self.rhs, y, dydt);
+        } else {
+            dydt.fill(f64::NAN);
+        }
+    }
+
+    /// The state's length, and [`FreeModel::check_driven`].
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        if N != self.state.len() {
+            return Err(FreeError::StateLength {
+                len: N,
+                expected: self.state.len(),
+            }
+            .into_ode_error());
+        }
+        self.check_driven().map_err(FreeError::into_ode_error)
     }
 }

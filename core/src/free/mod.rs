@@ -32,7 +32,7 @@ mod state;
 mod system;
 mod wrench;
 
-pub use crate::rigid::Rotor;
+pub use crate::rigid::{DrivenRotor, Rotor};
 pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;

@@ -65,12 +65,30 @@ pub struct FreeQuantities<'a, F> {
     body: &'a F,
 }
 
-impl<'a, F: FreeDynamics> FreeQuantities<'a, F> {
+impl<'a, F> FreeQuantities<'a, F> {
     /// The quantities of `body`.
     pub fn new(body: &'a F) -> Self {
         Self { body }
     }
+}
 
+impl<F> FreeQuantities<'_, F> {
+    /// The names of the whole state of a body with `N` slots: the 13 of
+    /// [`FreeQuantities::state_names`], then `rotor_k` for each driven rotor (the slot
+    /// `Self::ROTOR_k` indexes, holding its relative rate Ωₖ).
+    pub fn all_state_names<const N: usize>() -> Vec<String>
+    where
+        F: FreeDynamics<N>,
+    {
+        STATE_NAMES
+            .iter()
+            .chain(F::DRIVEN_ROTORS)
+            .map(|&s| s.to_owned())
+            .collect()
+    }
+}
+
+impl<F: FreeDynamics> FreeQuantities<'_, F> {
     /// The names of the state of [`super::layout`], for
     /// [`Trajectory::set_state_names`](crate::ode::Trajectory::set_state_names): the centre
     /// `x, y, z`, its velocity `vx, vy, vz`, the quaternion `qw, qx, qy, qz` (principal to
@@ -94,14 +112,14 @@ impl<'a, F: FreeDynamics> FreeQuantities<'a, F> {
     }
 }
 
-impl<F: FreeDynamics> Quantities<[f64; STATE_LEN]> for FreeQuantities<'_, F> {
+impl<const N: usize, F: FreeDynamics<N>> Quantities<[f64; N]> for FreeQuantities<'_, F> {
     fn names(&self) -> Vec<String> {
         ["energy", "power", "p", "L", "L_x", "L_y", "L_z"]
             .map(String::from)
             .to_vec()
     }
 
-    fn evaluate(&mut self, t: f64, y: &[f64; STATE_LEN], out: &mut [f64]) {
+    fn evaluate(&mut self, t: f64, y: &[f64; N], out: &mut [f64]) {
         let l = self.body.angular_momentum_origin(y);
         let values = [
             self.body.energy(y),

@@ -2,7 +2,7 @@
 //! declares, as expressions (`derivation.rs` derives its equations).
 
 use super::wrench::WrenchInputs;
-use crate::rigid::Rotor;
+use crate::rigid::{DrivenRotor, Rotor};
 use crate::sym::mat3::Mat3;
 use crate::sym::{Arena, ExprId};
 
@@ -67,6 +67,9 @@ pub struct FreeScene {
     /// Internal rotors spinning at constant rates relative to the body: the body is then a
     /// gyrostat (see [`Rotor`]).
     pub rotors: Vec<Rotor>,
+    /// Internal rotors turned by motor torques: each one's relative rate is a state slot
+    /// after the 13 of [`super::layout`], in this order (see [`DrivenRotor`]).
+    pub driven: Vec<DrivenRotor>,
 }
 
 impl FreeScene {
@@ -91,6 +94,7 @@ impl FreeScene {
             user_torque: None,
             user_wrench: None,
             rotors: Vec::new(),
+            driven: Vec::new(),
         }
     }
 
@@ -113,6 +117,7 @@ impl FreeScene {
             (self.user_torque.is_some(), "a user torque"),
             (self.user_wrench.is_some(), "a user wrench"),
             (!self.rotors.is_empty(), "a rotor"),
+            (!self.driven.is_empty(), "a driven rotor"),
         ]
         .into_iter()
         .find_map(|(declared, name)| declared.then_some(name))

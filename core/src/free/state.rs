@@ -111,18 +111,21 @@ impl FreeState {
     }
 
     /// The state of an array without checks, for generated code in a stepper's inner loop
-    /// (a user force function's argument): the quaternion normalised, NaN if it is zero.
-    pub fn from_array_unchecked(y: &[f64; STATE_LEN]) -> FreeState {
-        let part = |at: usize| Vector3::new(y[at], y[at + 1], y[at + 2]);
-        let at = layout::QUATERNION;
+    /// (a user force function's argument): the quaternion normalised, NaN if it is zero. The
+    /// array may be longer (a body's driven rotors' rates follow the 13 slots); a slot a
+    /// shorter one lacks reads NaN.
+    pub fn from_array_unchecked<const N: usize>(y: &[f64; N]) -> FreeState {
+        let at = |k: usize| y.get(k).copied().unwrap_or(f64::NAN);
+        let part = |k: usize| Vector3::new(at(k), at(k + 1), at(k + 2));
+        let q = layout::QUATERNION;
         FreeState {
             position: part(layout::POSITION),
             velocity: part(layout::VELOCITY),
             attitude: UnitQuaternion::new_normalize(Quaternion::new(
-                y[at],
-                y[at + 1],
-                y[at + 2],
-                y[at + 3],
+                at(q),
+                at(q + 1),
+                at(q + 2),
+                at(q + 3),
             )),
             omega_principal: part(layout::OMEGA),
         }

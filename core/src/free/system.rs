@@ -4,12 +4,13 @@
 use nalgebra::Vector3;
 
 use super::dynamics::FreeDynamics;
-use super::state::{FreeState, STATE_LEN};
+use super::state::FreeState;
 use crate::ode::{OdeError, System};
 use crate::rigid::{RigidBodyModel, RigidState};
 
-/// A derived free body as an ODE system on the state array of [`super::layout`], for the
-/// adaptive pairs, RK4 and [`super::FreeFlight`].
+/// A derived free body as an ODE system on the state array of [`super::layout`] (and its
+/// driven rotors' rates, if any), for the adaptive pairs, RK4 and [`super::FreeFlight`] (which
+/// takes the 13-slot state only).
 ///
 /// ```
 /// use approx::assert_relative_eq;
@@ -41,9 +42,9 @@ impl<T> Clone for FreeSystem<'_, T> {
 
 impl<T> Copy for FreeSystem<'_, T> {}
 
-impl<T: FreeDynamics> System<STATE_LEN> for FreeSystem<'_, T> {
+impl<const N: usize, T: FreeDynamics<N>> System<N> for FreeSystem<'_, T> {
     #[inline]
-    fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
+    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
         self.0.free_rhs(t, y, dydt);
     }
 
@@ -56,7 +57,8 @@ impl<T: FreeDynamics> System<STATE_LEN> for FreeSystem<'_, T> {
 }
 
 /// A derived free body as the rigid-body model of the Lie-group stepper
-/// [`crate::rigid::Rkmk4`], whose steps keep the attitude on SO(3) by construction.
+/// [`crate::rigid::Rkmk4`], whose steps keep the attitude on SO(3) by construction (a body
+/// without driven rotors: the model's state has no slot for their rates).
 ///
 /// ```
 /// use approx::assert_relative_eq;

@@ -12,6 +12,26 @@
 //!
 //! The motor that holds Ω constant does work on the wheel, so the wheel's own kinetic energy
 //! is not the conserved one; ½ ωᵀ I ω is (its rate is ω·τ, the term ω·(ω × h) vanishing).
+//!
+//! # Driven rotors
+//!
+//! A [`DrivenRotor`] k is turned by a motor torque uₖ instead: its relative rate Ωₖ is a state
+//! variable, the motor's reaction −uₖ âₖ acts on the body, and with I still the inertia with
+//! every wheel locked, h = Σ Jₖ Ωₖ âₖ and τ the external torque (body axes),
+//!
+//! (I − Σ Jₖ âₖ âₖᵀ) ω̇ = τ − ω × (I ω + h) − Σ uₖ âₖ,   Ω̇ₖ = uₖ/Jₖ − âₖ·ω̇.
+//!
+//! (The wheel's axial spin is ω·â + Ω and J (ω̇·â + Ω̇) = u; the body's momentum balance with
+//! the wheel's axial part taken out gives the first line.) I − Σ Jₖ âₖ âₖᵀ is the inertia of
+//! the body without its free wheels' axial moments, and must be positive definite. The
+//! kinetic energy is the true total,
+//!
+//! T = ½ ωᵀ I ω + Σ Jₖ Ωₖ âₖ·ω + ½ Σ Jₖ Ωₖ²,   dT/dt = ω·τ + Σ uₖ Ωₖ,
+//!
+//! and the total angular momentum R (I ω + h) in space is conserved when τ = 0, whatever the
+//! motors do (their torques are internal).
+
+use nalgebra::{Matrix3, Vector3};
 
 use crate::sym::mat3::dot;
 use crate::sym::{Arena, ExprId, SymError};
@@ -42,6 +62,42 @@ impl Rotor {
     }
 }
 
+/// A symmetric wheel turned by a motor: its relative rate is a state variable, its
+/// acceleration set by the motor torque (see the module's equations).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrivenRotor {
+    /// Its spin axis, fixed in the body, description axes (any non-zero length: it is
+    /// normalised).
+    pub axis: [ExprId; 3],
+    /// Its moment of inertia J about its own axis.
+    pub inertia: ExprId,
+    /// The motor torque u on the wheel about `axis` (N m; the body feels −u â): a constant,
+    /// a parameter, or an input symbol a user function supplies.
+    pub torque: ExprId,
+}
+
+impl DrivenRotor {
+    /// Its unit axis â = a/|a|, description axes.
+    ///
+    /// # Errors
+    /// [`SymError`] (a division by zero) if the axis is identically zero.
+    pub fn unit_axis(&self, arena: &mut Arena) -> Result<[ExprId; 3], SymError> {
+        let a2 = dot(arena, &self.axis, &self.axis);
+        let norm = arena.sqrt(a2)?;
+        let inv = arena.recip(norm)?;
+        Ok(self.axis.map(|c| arena.mul(inv, c)))
+    }
+
+    /// The wheel at the relative rate `rate` as a [`Rotor`], for its momentum J Ω â.
+    pub fn at_rate(&self, rate: ExprId) -> Rotor {
+        Rotor {
+            axis: self.axis,
+            inertia: self.inertia,
+            rate,
+        }
+    }
+}
+
 /// The rotors' total relative angular momentum Σₖ hₖ in description axes, or `None` without
 /// rotors (so a body without one derives exactly the expressions it did before).
 ///
@@ -62,4 +118,39 @@ pub fn total_momentum(
         let terms: Vec<ExprId> = parts.iter().map(|p| p[i]).collect();
         arena.sum(&terms)
     })))
+}
+
+/// The first driven rotor k (an index into `rotors`) for which the body's inertia once the
+/// wheels up to k turn freely, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, is not positive definite, with that
+/// matrix's smallest eigenvalue (NaN if an entry is not finite). `inertia` is about the centre
+/// of mass; each rotor is (its axis, its J) in the same axes, an axis of any non-zero length.
+///
+/// ```
+/// use nalgebra::Matrix3;
+/// use precess_core::rigid::first_singular_driven;
+///
+/// let i = Matrix3::from_diagonal(&[2.0, 2.0, 1.0].into());
+/// assert_eq!(first_singular_driven(&i, &[([0.0, 0.0, 3.0], 0.5)]), None);
+/// // A wheel as heavy about the axis as the whole body leaves it no moment there.
+/// let (rotor, smallest) = first_singular_driven(&i, &[([1.0, 0.0, 0.0], 0.5), ([0.0, 0.0, 1.0], 1.0)]).unwrap();
+/// assert_eq!(rotor, 1);
+/// assert!(smallest.abs() < 1e-15);
+/// ```
+pub fn first_singular_driven(
+    inertia: &Matrix3<f64>,
+    rotors: &[([f64; 3], f64)],
+) -> Option<(usize, f64)> {
+    let mut a = *inertia;
+    for (k, (axis, j)) in rotors.iter().enumerate() {
+        let axis = Vector3::from(*axis);
+        a -= (*j / axis.norm_squared()) * axis * axis.transpose();
+        if !a.iter().all(|v| v.is_finite()) {
+            return Some((k, f64::NAN));
+        }
+        let smallest = a.symmetric_eigenvalues().min();
+        if smallest.is_nan() || smallest <= 0.0 {
+            return Some((k, smallest));
+        }
+    }
+    None
 }

@@ -75,6 +75,16 @@ pub enum TopError {
         /// The length of its axis.
         axis_norm: f64,
     },
+    /// [`super::FastTop::of_top`] was asked of a top with more than gravity: the splitting
+    /// models the weight alone (no rotor, damping or constant torque).
+    #[error(
+        "the fast-top splitting models a top under gravity alone, but this one also declares {declared}: integrate it with TopChart, ChartedTop or EulerianTop"
+    )]
+    FastTopBeyondGravity {
+        /// What else it declares: "a rotor", or the `#[top]` name of a torque (`damping`,
+        /// `body_torque`, `space_torque`, `torque`).
+        declared: &'static str,
+    },
     /// The body of a top breaks a rule of its description (a field-valued mass, say), found
     /// by [`super::TopDynamics::check_all`].
     #[error(transparent)]

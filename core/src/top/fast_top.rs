@@ -3,6 +3,8 @@
 
 use nalgebra::{Rotation3, UnitQuaternion, Vector3};
 
+use super::dynamics::TopDynamics;
+use super::error::TopError;
 use crate::body::RigidBody;
 use crate::ode::{OdeError, body_quantity, refused};
 use crate::rigid::{BodyMomentum, ExactFreeFlow, FreeFlow, Gravity, PotentialSplitting};
@@ -58,6 +60,9 @@ impl FastTop {
     /// The fast-top splitting of `body` (which should have a pivot: the reference point) under
     /// gravity `g` along −z.
     ///
+    /// It reads the body alone: a derived top's rotors, damping and torques are not seen.
+    /// [`FastTop::of_top`] takes a derived top and refuses what the splitting does not model.
+    ///
     /// # Errors
     /// [`OdeError::InvalidSystemParameter`] for a body that breaks a rule of its description
     /// for its field values ([`RigidBody::validate`]: a negative mass, say, which would turn
@@ -87,6 +92,44 @@ impl FastTop {
             },
             principal_to_description: p,
         })
+    }
+
+    /// The fast-top splitting of a derived top under its declared gravity, its parameters
+    /// checked first ([`TopDynamics::check_all`]).
+    ///
+    /// ```
+    /// use precess::prelude::*;
+    /// use precess::top::{FastTop, TopError};
+    ///
+    /// #[derive(RigidBody)]
+    /// #[rigid(body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot), pivot = [0.0, 0.0, 0.0])]
+    /// #[top(gravity = 1.0, rotor(axis = [0, 0, 1], inertia = 0.1, rate = 10))]
+    /// struct Gyrotop;
+    ///
+    /// assert_eq!(
+    ///     FastTop::of_top(&Gyrotop),
+    ///     Err(TopError::FastTopBeyondGravity { declared: "a rotor" })
+    /// );
+    /// ```
+    ///
+    /// # Errors
+    /// [`TopError::FastTopBeyondGravity`] for a top with a rotor or a torque other than
+    /// gravity (the splitting models the weight alone); as [`TopDynamics::check_all`] and
+    /// [`FastTop::new`] (in [`TopError::Ode`]).
+    pub fn of_top<T: TopDynamics>(top: &T) -> Result<FastTop, TopError> {
+        let declared = if T::ROTORS > 0 {
+            Some("a rotor")
+        } else {
+            T::BEYOND_GRAVITY
+        };
+        if let Some(declared) = declared {
+            return Err(TopError::FastTopBeyondGravity { declared });
+        }
+        top.check_all()?;
+        Ok(FastTop::new(
+            top,
+            top.top_parameters().gravity.unwrap_or(0.0),
+        )?)
     }
 
     /// The splitting's state for a description-frame attitude (body to space) and body ω

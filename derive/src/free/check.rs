@@ -7,6 +7,7 @@ use syn::{Attribute, Expr, Ident};
 
 use crate::lang::check::Checker;
 use crate::lang::keys::{self, FORCE_KEYS, FREE_FORCES, FREE_KEYS};
+use crate::lang::rotor::{Checked, Driven};
 use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::taylor::TaylorKey;
 use crate::lang::units::Dim;
@@ -37,8 +38,13 @@ pub struct FreeSettings {
     pub wrenches: Vec<syn::Path>,
     /// The maximum order of the generated Taylor recurrences, if asked for.
     pub taylor: Option<usize>,
-    /// Internal rotors at constant relative rates (the body is a gyrostat).
+    /// Internal rotors at constant relative rates (the body is a gyrostat), with their
+    /// index among all the rotors declared.
     pub rotors: Vec<Rotor>,
+    /// The declared index of each of `rotors`.
+    pub rotor_index: Vec<usize>,
+    /// Internal rotors turned by motors, with their index among all the rotors declared.
+    pub driven: Vec<(usize, Driven)>,
 }
 
 /// Checks the `#[free]` items, if the struct has any attribute. `None` after an error
@@ -72,14 +78,22 @@ pub fn check(
         Item::Group { .. } => None,
     });
     let taylor = TaylorKey::find(ck.cx, free_settings, &in_free);
+    let mut declared_rotors = 0usize;
     for item in &items.items {
         match item {
             // Read by `TaylorKey` above.
             Item::Setting(kv) if kv.key == keys::TAYLOR => {}
             Item::Setting(kv) => setting(ck, &mut settings, &mut seen, kv),
             Item::Group { name, keys } if name == keys::ROTOR => {
-                if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_free) {
-                    settings.rotors.push(rotor);
+                let index = declared_rotors;
+                declared_rotors += 1;
+                match crate::lang::rotor::check(ck, name, keys, &in_free, true) {
+                    Some(Checked::Constant(rotor)) => {
+                        settings.rotors.push(rotor);
+                        settings.rotor_index.push(index);
+                    }
+                    Some(Checked::Driven(driven)) => settings.driven.push((index, *driven)),
+                    None => {}
                 }
             }
             Item::Group { name, keys } => {
@@ -97,6 +111,7 @@ pub fn check(
         (keys::FORCE, settings.force.is_some()),
         (keys::TORQUE, settings.torque.is_some()),
         (keys::WRENCH, !settings.wrenches.is_empty()),
+        (keys::TORQUE, !settings.driven.is_empty()),
     ];
     settings.taylor = taylor.order(ck.cx, &user);
     let ok = items.complete && ck.cx.error_count() == errors_before;

@@ -3,9 +3,8 @@
 //! quoted into `impl FreeDynamics for …`.
 
 use precess_core::codegen::{Emitted, f64_literal};
-use precess_core::free::{
-    CmFrame, FreeDerivation, FreeScene, STATE_LEN, STATE_NAMES, WrenchInputs, cm_frame,
-};
+use precess_core::free::{CmFrame, FreeDerivation, FreeScene, STATE_NAMES, WrenchInputs, cm_frame};
+use precess_core::rigid::DrivenRotor;
 use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
@@ -31,6 +30,8 @@ struct Preludes {
     torque: Option<(TokenStream, [ExprId; 3])>,
     /// The user wrench functions and the symbols of their sum's four parts.
     wrench: Option<(Vec<syn::Path>, [ExprId; 12])>,
+    /// The driven rotors' motor functions and the symbols of their torques.
+    motors: Vec<(syn::Path, ExprId)>,
 }
 
 impl Preludes {
@@ -63,6 +64,17 @@ impl Preludes {
         if !calls.is_empty() {
             out.extend(quote!(let __state = #p::FreeState::from_array_unchecked(y);));
             out.extend(calls);
+        }
+        // Each motor function bound as a typed pointer spanned on its path, so a wrong
+        // signature is reported there; called once per evaluation that reads its torque.
+        for (k, (path, symbol)) in self.motors.iter().enumerate() {
+            if reads(std::slice::from_ref(symbol)) {
+                let (f, u) = (format_ident!("__motor_fn{k}"), format_ident!("__motor{k}"));
+                out.extend(quote_spanned! {path.span()=>
+                    let #f: fn(&Self, f64, &[f64]) -> f64 = #path;
+                });
+                out.extend(quote!(let #u: f64 = #f(self, t, &y[..]);));
+            }
         }
         out
     }
@@ -111,6 +123,7 @@ fn scene(
         force: None,
         torque: None,
         wrench: None,
+        motors: Vec::new(),
     };
     match frame {
         CmFrame::Diagonal(m) => scene.moments = *m,
@@ -152,6 +165,18 @@ fn scene(
     scene.drag = settings.drag;
     scene.damping = settings.damping;
     scene.rotors = settings.rotors.clone();
+    for (k, (_, d)) in settings.driven.iter().enumerate() {
+        // The motor's torque enters the derivation as an input symbol its function supplies.
+        let u = arena.input(&format!("u_rotor_{k}"));
+        let local = format_ident!("__motor{k}");
+        symbols.insert_expr(arena, u, quote!(#local));
+        preludes.motors.push((d.torque.clone(), u));
+        scene.driven.push(DrivenRotor {
+            axis: d.axis,
+            inertia: d.inertia,
+            torque: u,
+        });
+    }
     // A user function's value enters the derivation as three input symbols.
     let mut user = |arena: &mut Arena, path: &Option<syn::Path>, local: TokenStream, name: &str| {
         let path = path.as_ref()?;
@@ -205,7 +230,10 @@ pub fn expand(
         .ok()?;
     let mut symbols = parameters.tokens();
     let (scene, preludes) = scene(arena, checked, settings, &frame, &mut symbols);
+    literal_driven_inertia(cx, arena, checked, settings)?;
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
+    let full_state = derivation.full_state();
+    let n = full_state.len();
     let taylor = settings.taylor.map(|order| {
         let prelude = preludes.for_outputs(arena, &derivation.rhs);
         crate::lang::taylor::expand_checked(
@@ -224,10 +252,10 @@ pub fn expand(
     let method = Method {
         low: &low,
         preludes: &preludes,
-        state: &derivation.state,
+        state: &full_state,
     };
+    let rhs = derivation.full_rhs();
     let FreeDerivation {
-        rhs,
         force,
         torque,
         energy,
@@ -236,7 +264,7 @@ pub fn expand(
         angular_momentum,
         ..
     } = &derivation;
-    let rhs = method.body(arena, rhs, |o| quote!(*dydt = [#(#o),*];));
+    let rhs = method.body(arena, &rhs, |o| quote!(*dydt = [#(#o),*];));
     let wrench_outputs: Vec<ExprId> = force.iter().chain(torque).copied().collect();
     let wrench = method.body(arena, &wrench_outputs, |o| {
         let (f, t) = o.split_at(3);
@@ -257,7 +285,12 @@ pub fn expand(
         None => quote!(::core::option::Option::None),
     };
     let check = check_parameters(parameters, &low, arena, settings);
-    let slots = slot_consts(ident);
+    let driven_names: Vec<String> = settings
+        .driven
+        .iter()
+        .map(|(k, _)| format!("rotor_{k}"))
+        .collect();
+    let slots = slot_consts(ident, &driven_names);
     Some(quote! {
         #taylor
 
@@ -268,8 +301,10 @@ pub fn expand(
 
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
-        impl #p::FreeDynamics for #ident {
+        impl #p::FreeDynamics<#n> for #ident {
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond;
+
+            const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven_names),*];
 
             #[inline]
             fn principal_cm(&self) -> #p::Principal { #principal }
@@ -278,18 +313,18 @@ pub fn expand(
             fn gravity(&self) -> #p::Vector3<f64> #gravity
 
             #[inline]
-            fn free_rhs(&self, t: f64, y: &[f64; #STATE_LEN], dydt: &mut [f64; #STATE_LEN]) #rhs
+            fn free_rhs(&self, t: f64, y: &[f64; #n], dydt: &mut [f64; #n]) #rhs
 
             #[inline]
-            fn wrench(&self, t: f64, y: &[f64; #STATE_LEN]) -> #p::Wrench #wrench
+            fn wrench(&self, t: f64, y: &[f64; #n]) -> #p::Wrench #wrench
 
-            fn energy(&self, y: &[f64; #STATE_LEN]) -> f64 #energy
+            fn energy(&self, y: &[f64; #n]) -> f64 #energy
 
-            fn power(&self, t: f64, y: &[f64; #STATE_LEN]) -> f64 #power
+            fn power(&self, t: f64, y: &[f64; #n]) -> f64 #power
 
-            fn linear_momentum(&self, y: &[f64; #STATE_LEN]) -> #p::Vector3<f64> #linear
+            fn linear_momentum(&self, y: &[f64; #n]) -> #p::Vector3<f64> #linear
 
-            fn angular_momentum_origin(&self, y: &[f64; #STATE_LEN]) -> #p::Vector3<f64> #angular
+            fn angular_momentum_origin(&self, y: &[f64; #n]) -> #p::Vector3<f64> #angular
 
             fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> #check
         }
@@ -300,7 +335,7 @@ pub fn expand(
 struct Method<'a> {
     low: &'a Lowering<'a>,
     preludes: &'a Preludes,
-    state: &'a [ExprId; STATE_LEN],
+    state: &'a [ExprId],
 }
 
 impl Method<'_> {
@@ -383,8 +418,35 @@ fn check_parameters(
             }
         }
     });
-    let rotors =
-        crate::lang::rotor::check_tokens(low, arena, &settings.rotors, &quote!(#p::FreeError));
+    let mut shapes: Vec<(usize, [ExprId; 3], ExprId)> = settings
+        .rotor_index
+        .iter()
+        .zip(&settings.rotors)
+        .map(|(&k, r)| (k, r.axis, r.inertia))
+        .collect();
+    shapes.extend(settings.driven.iter().map(|(k, d)| (*k, d.axis, d.inertia)));
+    let mut rotors =
+        crate::lang::rotor::check_tokens_indexed(low, arena, &shapes, &quote!(#p::FreeError));
+    if !settings.driven.is_empty() {
+        // The body must keep a positive definite inertia once the driven wheels turn freely.
+        let values: Vec<ExprId> = settings
+            .driven
+            .iter()
+            .flat_map(|(_, d)| d.axis.into_iter().chain([d.inertia]))
+            .collect();
+        let Emitted { lets, outputs } = low.lower(arena, &values);
+        let wheels = outputs.chunks(4).zip(&settings.driven).map(|(o, (k, _))| {
+            let (a, j) = (&o[..3], &o[3]);
+            quote!((#k, [#(#a),*], #j))
+        });
+        rotors.extend(quote!({
+            #lets
+            #p::FreeError::check_driven_inertia(
+                &#p::RigidBody::inertia_cm(self),
+                &[#(#wheels),*],
+            )?;
+        }));
+    }
     quote!({
         #(#fields)*
         #lets
@@ -404,11 +466,13 @@ fn check_parameters(
 }
 
 /// A const per slot of the state, named in capitals after [`STATE_NAMES`] (`X`, `VX`, `QW`,
-/// `OMEGA_2`, …), as a mechanism's derive names its coordinates: `y[Body::VZ]` reads what the
-/// CSV column `vz` holds.
-pub(super) fn slot_consts(ident: &syn::Ident) -> Vec<TokenStream> {
+/// `OMEGA_2`, …) and then `driven` (`ROTOR_0`, …: the driven rotors' rates), as a mechanism's
+/// derive names its coordinates: `y[Body::VZ]` reads what the CSV column `vz` holds.
+pub(super) fn slot_consts(ident: &syn::Ident, driven: &[String]) -> Vec<TokenStream> {
     STATE_NAMES
         .iter()
+        .map(|s| (*s).to_owned())
+        .chain(driven.iter().cloned())
         .enumerate()
         .map(|(k, name)| {
             let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
@@ -419,4 +483,52 @@ pub(super) fn slot_consts(ident: &syn::Ident) -> Vec<TokenStream> {
             }
         })
         .collect()
+}
+
+/// With literal values, the rule a driven rotor adds: the body's inertia about its centre of
+/// mass stays positive definite as each wheel's axial moment is taken out. An error spanned on
+/// the first rotor's `inertia` that breaks it; `None` after recording it.
+fn literal_driven_inertia(
+    cx: &crate::lang::ctxt::Ctxt,
+    arena: &Arena,
+    checked: &CheckedBody,
+    settings: &FreeSettings,
+) -> Option<()> {
+    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
+    // Read only when every value is a literal: a field's rule is checked at run time.
+    let literal = || {
+        let inertia = &checked.body.props.inertia_cm;
+        let mut m = precess_core::nalgebra::Matrix3::zeros();
+        for i in 0..3 {
+            for j in 0..3 {
+                m[(i, j)] = constant(inertia[i][j])?;
+            }
+        }
+        let mut wheels = Vec::new();
+        for (_, d) in &settings.driven {
+            let axis = [
+                constant(d.axis[0])?,
+                constant(d.axis[1])?,
+                constant(d.axis[2])?,
+            ];
+            wheels.push((axis, constant(d.inertia)?));
+        }
+        Some((m, wheels))
+    };
+    let Some((m, wheels)) = literal() else {
+        return Some(());
+    };
+    match precess_core::rigid::first_singular_driven(&m, &wheels) {
+        Some((k, smallest)) => {
+            let (declared, d) = &settings.driven[k];
+            cx.error_spanned_by(
+                &d.inertia_expr,
+                format!(
+                    "rotor {declared}'s `inertia` is too large for the body: with its driven wheels turning freely the body keeps I − Σ J â âᵀ about its centre of mass, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the body's own moment about the wheel's axis)"
+                ),
+            );
+            None
+        }
+        None => Some(()),
+    }
 }

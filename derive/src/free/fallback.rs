@@ -1,12 +1,41 @@
 //! The stub `impl FreeDynamics` emitted next to the errors when the struct declares a free
 //! body, so code using the trait does not add errors to the real ones; with it the state's
-//! slot names (`Body::VZ`), which do not depend on the description.
+//! slot names (`Body::VZ`, and `Body::ROTOR_k` for each rotor written with a `torque`), which
+//! do not depend on the description.
 
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::DeriveInput;
 
+use crate::lang::ctxt::Ctxt;
+use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::syntax::Item;
+
+/// `rotor_k` for each `rotor(...)` group of the `#[free]` attributes that has a `torque` key,
+/// k counting every rotor group: the driven rotors' slot names, read from the syntax alone so
+/// they stand even when the values have errors (the errors are the real expansion's to tell).
+fn driven_names(input: &DeriveInput) -> Vec<String> {
+    let attrs: Vec<&syn::Attribute> = input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident(keys::FREE))
+        .collect();
+    let cx = Ctxt::new();
+    let parsed = super::attr::parse(&cx, &attrs);
+    let _ = cx.check();
+    parsed
+        .items
+        .iter()
+        .filter_map(|item| match item {
+            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
+            _ => None,
+        })
+        .enumerate()
+        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
+        .map(|(k, _)| format!("rotor_{k}"))
+        .collect()
+}
 
 /// A stub `impl FreeDynamics` for `input`, and its slot consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -14,7 +43,15 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
-    let slots = super::expand::slot_consts(ident);
+    let driven = driven_names(input);
+    let slots = super::expand::slot_consts(ident, &driven);
+    let n = precess_core::free::STATE_LEN + driven.len();
+    // The trait's default N without driven rotors, as a user writes it.
+    let dynamics = if driven.is_empty() {
+        quote!(#p::FreeDynamics)
+    } else {
+        quote!(#p::FreeDynamics<#n>)
+    };
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {
@@ -23,16 +60,17 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
 
 
         #[automatically_derived]
-        impl #impl_generics #p::FreeDynamics for #ident #ty_generics #where_clause {
+        impl #impl_generics #dynamics for #ident #ty_generics #where_clause {
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = ::core::option::Option::None;
+            const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven),*];
             fn principal_cm(&self) -> #p::Principal { #stub }
             fn gravity(&self) -> #p::Vector3<f64> { #stub }
-            fn free_rhs(&self, _: f64, _: &[f64; 13], _: &mut [f64; 13]) { #stub }
-            fn wrench(&self, _: f64, _: &[f64; 13]) -> #p::Wrench { #stub }
-            fn energy(&self, _: &[f64; 13]) -> f64 { #stub }
-            fn power(&self, _: f64, _: &[f64; 13]) -> f64 { #stub }
-            fn linear_momentum(&self, _: &[f64; 13]) -> #p::Vector3<f64> { #stub }
-            fn angular_momentum_origin(&self, _: &[f64; 13]) -> #p::Vector3<f64> { #stub }
+            fn free_rhs(&self, _: f64, _: &[f64; #n], _: &mut [f64; #n]) { #stub }
+            fn wrench(&self, _: f64, _: &[f64; #n]) -> #p::Wrench { #stub }
+            fn energy(&self, _: &[f64; #n]) -> f64 { #stub }
+            fn power(&self, _: f64, _: &[f64; #n]) -> f64 { #stub }
+            fn linear_momentum(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #stub }
+            fn angular_momentum_origin(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #stub }
             fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> { #stub }
         }
     }

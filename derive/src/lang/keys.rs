@@ -267,7 +267,7 @@ pub const ROTOR: &str = "rotor";
 /// A rotor's constant spin rate relative to the body.
 pub const RATE: &str = "rate";
 /// The keys of a rotor: all required.
-pub const ROTOR_KEYS: &[&str] = &[AXIS, INERTIA, RATE];
+pub const ROTOR_KEYS: &[&str] = &[AXIS, INERTIA, RATE, TORQUE];
 
 /// The keys `#[rigid(...)]` takes beside its parts.
 pub const RIGID_KEYS: &[&str] = &[PIVOT, TAYLOR];

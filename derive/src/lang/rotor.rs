@@ -1,5 +1,7 @@
 //! `rotor(axis = [x, y, z], inertia = J, rate = Ω)`: an internal wheel spinning at a constant
-//! rate relative to the body, shared by `#[free]` and `#[top]`. Its values go through the
+//! rate relative to the body, shared by `#[free]` and `#[top]`; `rotor(axis = [x, y, z],
+//! inertia = J, torque = path)` (`#[free]` only): a wheel turned by a motor, its rate a state
+//! variable. Its values go through the
 //! same checker as every other value (units, fields, arithmetic), with the rules a rotor
 //! adds: a positive inertia and a non-zero axis, checked now for literals and by
 //! `check_parameters` at run time for fields.
@@ -31,14 +33,47 @@ pub fn form() -> String {
     )
 }
 
+/// The keys a rotor takes where `driven` rotors are allowed (`#[free]`) or not (`#[top]`:
+/// no `torque`).
+pub fn allowed_keys(driven: bool) -> &'static [&'static str] {
+    if driven { ROTOR_KEYS } else { &ROTOR_KEYS[..3] }
+}
+
 /// The message for `rotor = ..` written as a setting: a rotor is a group of its own keys.
 pub fn written_as_setting() -> String {
     format!("`{}` is a part: write {}", keys::ROTOR, form())
 }
 
-/// Checks one `rotor(...)` group of the attribute `within` (`#[free]`, `#[top]`).
-pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> Option<Rotor> {
-    let mut slots: [Option<&Expr>; 3] = [None; 3];
+/// A wheel turned by a motor, as `#[free]` declares it.
+pub struct Driven {
+    /// Its axis, description axes.
+    pub axis: [ExprId; 3],
+    /// Its axial moment J.
+    pub inertia: ExprId,
+    /// The motor function `fn(&Self, f64, &[f64]) -> f64` (time, whole state → u).
+    pub torque: syn::Path,
+    /// The `inertia` value as written, where a literal J too large for the body is reported.
+    pub inertia_expr: Expr,
+}
+
+/// A checked `rotor(...)` group: spun at a constant rate, or driven by a motor.
+pub enum Checked {
+    /// `rate = Ω`.
+    Constant(Rotor),
+    /// `torque = path`.
+    Driven(Box<Driven>),
+}
+
+/// Checks one `rotor(...)` group of the attribute `within` (`#[free]`, `#[top]`); a driven
+/// rotor (`torque = path`) only where `driven` allows it.
+pub fn check(
+    ck: &mut Checker,
+    name: &Ident,
+    kvs: &[KeyValue],
+    within: &str,
+    driven: bool,
+) -> Option<Checked> {
+    let mut slots: [Option<&Expr>; 4] = [None; 4];
     let mut ok = true;
     for KeyValue { key, value } in kvs {
         let Some(at) = ROTOR_KEYS.iter().position(|&k| key == k) else {
@@ -47,8 +82,8 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
                 format!(
                     "unknown key `{key}` for `{}` in {within}: allowed keys are {}{}",
                     keys::ROTOR,
-                    ROTOR_KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), ROTOR_KEYS.iter().copied())
+                    allowed_keys(driven).join(", "),
+                    keys::did_you_mean(&key.to_string(), allowed_keys(driven).iter().copied())
                 ),
             );
             ok = false;
@@ -61,6 +96,19 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
             ok = false;
             continue;
         }
+        if key == keys::TORQUE && !driven {
+            ck.cx.error_spanned_by(
+                key,
+                format!(
+                    "a rotor driven by a motor `{}` is for `#[{}]` only: a rotor in {within} spins at a constant `{} = Ω`",
+                    keys::TORQUE,
+                    keys::FREE,
+                    keys::RATE
+                ),
+            );
+            ok = false;
+            continue;
+        }
         slots[at] = Some(value);
     }
     // An unknown or repeated key is the error to fix first; a key it stood for would be
@@ -68,19 +116,51 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
     if !ok {
         return None;
     }
-    let [axis, inertia, rate] = slots;
-    let (Some(axis), Some(inertia), Some(rate)) = (axis, inertia, rate) else {
+    let [axis, inertia, rate, torque] = slots;
+    if let (Some(_), Some(torque)) = (rate, torque) {
+        // Held at Ω by its motor, or accelerated by a given torque: one wheel cannot be both.
+        ck.cx.error_spanned_by(
+            torque,
+            format!(
+                "a rotor has either `{} = Ω` (held at a constant rate) or `{} = path` (turned by a motor, its rate a state variable), not both",
+                keys::RATE,
+                keys::TORQUE
+            ),
+        );
+        return None;
+    }
+    let (Some(axis), Some(inertia), true) = (axis, inertia, rate.is_some() || torque.is_some())
+    else {
         // The wheel needs all three: which way it spins, how heavy it is, how fast.
-        let missing: Vec<String> = ROTOR_KEYS
+        let mut missing: Vec<String> = ROTOR_KEYS
             .iter()
             .zip(slots)
+            .take(2)
             .filter(|(_, s)| s.is_none())
             .map(|(k, _)| format!("`{k}`"))
             .collect();
+        if rate.is_none() && torque.is_none() {
+            missing.push(if driven {
+                format!("`{}` or `{}`", keys::RATE, keys::TORQUE)
+            } else {
+                format!("`{}`", keys::RATE)
+            });
+        }
+        let driven_form = if driven {
+            format!(
+                ", or `{}({} = [x, y, z], {} = J, {} = path)` for a wheel turned by a motor (`fn(&Self, f64, &[f64]) -> f64`: time and the whole state → its torque)",
+                keys::ROTOR,
+                keys::AXIS,
+                keys::INERTIA,
+                keys::TORQUE
+            )
+        } else {
+            String::new()
+        };
         ck.cx.error_spanned_by(
             name,
             format!(
-                "`{}` needs {}: write `{}({} = [x, y, z], {} = J, {} = Ω)` (the axis fixed in the body, description axes; J the wheel's moment of inertia about it; Ω its spin relative to the body, e.g. `3000 rpm`)",
+                "`{}` needs {}: write `{}({} = [x, y, z], {} = J, {} = Ω)` (the axis fixed in the body, description axes; J the wheel's moment of inertia about it; Ω its spin relative to the body, e.g. `3000 rpm`){driven_form}",
                 keys::ROTOR,
                 missing.join(" and "),
                 keys::ROTOR,
@@ -92,13 +172,39 @@ pub fn check(ck: &mut Checker, name: &Ident, kvs: &[KeyValue], within: &str) -> 
         return None;
     };
     let axis = ck.expecting(Dim::NONE, keys::AXIS, |ck| rotor_axis(ck, axis));
-    let inertia = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
-    let rate = ck.expecting(RATE, keys::RATE, |ck| ck.scalar(rate));
-    Some(Rotor {
+    let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
+    if let Some(torque) = torque {
+        let path = motor(ck, torque);
+        return Some(Checked::Driven(Box::new(Driven {
+            axis: axis?,
+            inertia: inertia_value?,
+            torque: path?,
+            inertia_expr: inertia.clone(),
+        })));
+    }
+    let rate = rate.and_then(|rate| ck.expecting(RATE, keys::RATE, |ck| ck.scalar(rate)));
+    Some(Checked::Constant(Rotor {
         axis: axis?,
-        inertia: inertia?,
+        inertia: inertia_value?,
         rate: rate?,
-    })
+    }))
+}
+
+/// The motor function's path.
+fn motor(ck: &mut Checker, value: &Expr) -> Option<syn::Path> {
+    match value {
+        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
+        _ => {
+            ck.cx.error_spanned_by(
+                value,
+                format!(
+                    "the rotor's `{}` expects a path to a function `fn(&Self, f64, &[f64]) -> f64` (time and the whole state → the motor torque on the wheel about its axis, N m; the state's rotor slots are `Self::ROTOR_k`)",
+                    keys::TORQUE
+                ),
+            );
+            None
+        }
+    }
 }
 
 /// `[x, y, z]`, not zero when written in literals.
@@ -159,15 +265,30 @@ pub fn check_tokens(
     rotors: &[Rotor],
     error: &TokenStream,
 ) -> TokenStream {
+    let indexed: Vec<(usize, [ExprId; 3], ExprId)> = rotors
+        .iter()
+        .enumerate()
+        .map(|(k, r)| (k, r.axis, r.inertia))
+        .collect();
+    check_tokens_indexed(low, arena, &indexed, error)
+}
+
+/// As [`check_tokens`], for rotors given as (declared index, axis, inertia).
+pub fn check_tokens_indexed(
+    low: &Lowering,
+    arena: &precess_core::sym::Arena,
+    rotors: &[(usize, [ExprId; 3], ExprId)],
+    error: &TokenStream,
+) -> TokenStream {
     let values: Vec<ExprId> = rotors
         .iter()
-        .flat_map(|r| std::iter::once(r.inertia).chain(r.axis))
+        .flat_map(|&(_, axis, inertia)| std::iter::once(inertia).chain(axis))
         .collect();
     if values.is_empty() {
         return TokenStream::new();
     }
     let Emitted { lets, outputs } = low.lower(arena, &values);
-    let checks = outputs.chunks(4).enumerate().map(|(k, o)| {
+    let checks = outputs.chunks(4).zip(rotors).map(|(o, &(k, _, _))| {
         let (j, a) = (&o[0], &o[1..]);
         quote! {
             let __j: f64 = #j;

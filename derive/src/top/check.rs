@@ -91,7 +91,11 @@ pub fn check(
             if name == super::variational::VARIATIONAL {
                 variational.push((name, keys));
             } else if name == keys::ROTOR {
-                if let Some(rotor) = crate::lang::rotor::check(ck, name, keys, &in_top) {
+                // A driven rotor is refused inside `check`: the top's state has no slot for
+                // its rate.
+                if let Some(crate::lang::rotor::Checked::Constant(rotor)) =
+                    crate::lang::rotor::check(ck, name, keys, &in_top, false)
+                {
                     settings.rotors.push(rotor);
                 }
             } else {
@@ -185,7 +189,7 @@ pub fn check(
                     keys::TOP,
                     TOP_KEYS.join(", "),
                     keys::ROTOR,
-                    keys::ROTOR_KEYS.join(", "),
+                    crate::lang::rotor::allowed_keys(false).join(", "),
                     keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),

@@ -410,3 +410,42 @@ fn run_time_scene_with_a_rotor() {
         epsilon = 1e-13
     );
 }
+
+/// The same body as [`Gyrotop`] without its wheel: a heavy top the splitting models.
+#[derive(RigidBody)]
+#[rigid(
+    body(mass = 1.0, at = [0.0, 0.0, 1.0], inertia = diag(1.0, 1.0, 0.5), about = pivot),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 1.0)]
+struct PlainHeavy;
+
+/// `FastTop::new` reads the body only, so it cannot see a wheel; `FastTop::of_top` takes the
+/// derived top and refuses a gyrostat (and a damped top) by name rather than integrate it as
+/// if the wheel were not there. A top under gravity alone gets the splitting `new` builds,
+/// with its declared g.
+#[test]
+fn the_fast_top_refuses_a_gyrostat() {
+    use precess::top::FastTop;
+    assert_eq!(
+        FastTop::of_top(&Gyrotop),
+        Err(TopError::FastTopBeyondGravity {
+            declared: "a rotor"
+        })
+    );
+    assert_eq!(
+        FastTop::of_top(&Stopped),
+        Err(TopError::FastTopBeyondGravity {
+            declared: "a rotor"
+        })
+    );
+    assert_eq!(
+        FastTop::of_top(&Wheelless),
+        Err(TopError::FastTopBeyondGravity {
+            declared: "damping"
+        })
+    );
+    let fast = FastTop::of_top(&PlainHeavy).unwrap();
+    assert_eq!(fast, FastTop::new(&PlainHeavy, 1.0).unwrap());
+    assert_eq!(fast.splitting.potential.weight, 1.0);
+}
