@@ -237,7 +237,12 @@ impl Checker<'_> {
             );
             return None;
         }
-        let axis = self.expecting(Dim::NONE, keys::AXIS, |ck| ck.vector(e))?;
+        let axis = self.expecting_as(
+            Dim::NONE,
+            Some("a direction, pure numbers (its length does not matter)"),
+            keys::AXIS,
+            |ck| ck.vector(e),
+        )?;
         let zero = self.arena.zero();
         if axis.iter().all(|&c| self.arena.expand(c) == zero) {
             self.cx.error_spanned_by(
