@@ -65,7 +65,9 @@ pub enum FreeError {
     /// A rotor's axis is zero as an expression: it names no direction to spin about.
     #[error("rotor {rotor} has a zero axis: give a non-zero body-fixed direction")]
     ZeroRotorAxis {
-        /// The rotor's index, in the order declared.
+        /// The rotor's index: in the order declared for a derived body; for a run-time
+        /// [`super::FreeScene`], in its `rotors`, with its `driven` ones counted after them
+        /// (rotor `rotors.len() + k` is `driven[k]`).
         rotor: usize,
     },
     /// A rotor's axial moment is not finite and positive, or its axis not finite and
