@@ -51,6 +51,14 @@ impl Satellite {
         (iz - ix) * n / WHEEL_INERTIA
     }
 
+    /// The amplitude of ω_z in the linearised wobble about a spin n along x started at
+    /// ω_y = a: ω_y = a cos(√k t) drives ω_z = a √k I_y/(h − (I_z − I_x) n) sin(√k t).
+    pub fn z_amplitude(&self, n: f64, a: f64) -> f64 {
+        let [ix, iy, iz] = self.moments();
+        let h = WHEEL_INERTIA * self.wheel;
+        a * self.k(n).sqrt() * iy / (h - (iz - ix) * n)
+    }
+
     /// The principal moments about the centre of mass (along x, y, z).
     pub fn moments(&self) -> [f64; 3] {
         let m = self.principal_cm().moments;
@@ -72,6 +80,16 @@ pub struct Run {
     pub momentum: (f64, f64),
     /// ½ ωᵀ I ω at the start and the end.
     pub energy: (f64, f64),
+}
+
+impl Run {
+    /// The largest |ω_z| sampled [rad/s].
+    pub fn largest_z(&self) -> f64 {
+        self.samples
+            .iter()
+            .map(|(_, w)| w.z.abs())
+            .fold(0.0, f64::max)
+    }
 }
 
 /// Spins the satellite at n about x with ω_y(0) = a, samples every `dt` up to `t_end`.

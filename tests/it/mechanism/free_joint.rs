@@ -80,6 +80,21 @@ fn brick_scene(arena: &mut Arena) -> MechanismScene {
     scene
 }
 
+/// The brick's translations at the throw, attitude `r0` and body rate `omega0`: its
+/// reference point at (0.1, 0.2, 1.0) and its centre moving at V₀ = (1.5, −0.4, 4.0), so the
+/// reference point's velocity is v_o = V₀ − R (ω × c). Returns the 12-slot state with zero
+/// angles and rates (the charts set them from the attitude), C₀ and V₀.
+fn thrown(r0: Matrix3<f64>, omega0: Vector3<f64>) -> ([f64; 12], Vector3<f64>, Vector3<f64>) {
+    let c = Vector3::from(BRICK_CENTER);
+    let v_center0 = Vector3::new(1.5, -0.4, 4.0);
+    let origin0 = Vector3::new(0.1, 0.2, 1.0);
+    let v_origin0 = v_center0 - r0 * omega0.cross(&c);
+    let mut y0 = [0.0; 12];
+    y0[..3].copy_from_slice(origin0.as_slice());
+    y0[6..9].copy_from_slice(v_origin0.as_slice());
+    (y0, origin0 + r0 * c, v_center0)
+}
+
 /// Throws the brick tumbling and compares, at samples to t = 6 s: I ω against m(t) of
 /// `FreeBodyExact` (gravity exerts no torque about the centre), and the centre against
 /// C₀ + V₀ t − ½ g t² ẑ. Returns the worst relative errors (momentum, centre).
@@ -90,14 +105,7 @@ fn throw_brick<D: ChartedDynamics<12>>(dynamics: D) -> (f64, f64) {
     // Near the intermediate axis, so the tumble is far from steady.
     let omega0 = Vector3::new(0.4, 6.0, -0.8);
     let r0 = *Rotation3::from_euler_angles(0.3, -0.5, 1.1).matrix();
-    let v_center0 = Vector3::new(1.5, -0.4, 4.0);
-    let origin0 = Vector3::new(0.1, 0.2, 1.0);
-    let center0 = origin0 + r0 * c;
-    // v_o = v_c − R (ω × c).
-    let v_origin0 = v_center0 - r0 * omega0.cross(&c);
-    let mut y0 = [0.0; 12];
-    y0[..3].copy_from_slice(origin0.as_slice());
-    y0[6..9].copy_from_slice(v_origin0.as_slice());
+    let (y0, center0, v_center0) = thrown(r0, omega0);
     let exact = FreeBodyExact::new(moments, inertia * omega0).unwrap();
     let mut run =
         ChartedMechanism::from_attitudes(dynamics, 0.0, y0, &[(r0, omega0)], tight()).unwrap();
@@ -235,13 +243,7 @@ fn a_taylor_free_brick_tumbles_as_eulers_equations_and_falls_on_the_parabola() {
     // its angular momentum.
     let rz = |a: f64| *Rotation3::from_axis_angle(&Vector3::z_axis(), a).matrix();
     let r0 = rz(0.3) * rx(1.4) * rz(1.3);
-    let v_center0 = Vector3::new(1.5, -0.4, 4.0);
-    let origin0 = Vector3::new(0.1, 0.2, 1.0);
-    let center0 = origin0 + r0 * c;
-    let v_origin0 = v_center0 - r0 * omega0.cross(&c);
-    let mut y0 = [0.0; 12];
-    y0[..3].copy_from_slice(origin0.as_slice());
-    y0[6..9].copy_from_slice(v_origin0.as_slice());
+    let (y0, center0, v_center0) = thrown(r0, omega0);
     let start =
         ChartedMechanism::from_attitudes(&TaylorBrick, 0.0, y0, &[(r0, omega0)], tight()).unwrap();
     assert_eq!(
