@@ -835,6 +835,24 @@ fn step_group(c: &mut Criterion) {
     g.bench_function("B5 tol 1e-10 whole", |b| {
         b.iter(|| integrate(B5, black_box([0.0, 1.0, 1.0]), 20.0, Method::Taylor(tol)))
     });
+    // The defect check's price, in the same run: the same integration with and without it
+    // (its steps are the same; only the check's jet to order 1 and Horner sum differ).
+    for (name, defect_check) in [("on", true), ("off", false)] {
+        let cfg = TaylorConfig {
+            defect_check,
+            ..cfg
+        };
+        g.bench_function(
+            format!("B5 tol 1e-10 advance_to, defect check {name}"),
+            |b| {
+                b.iter(|| {
+                    let mut ode = Taylor::new(B5, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap();
+                    ode.advance_to(20.0).unwrap();
+                    *ode.y()
+                })
+            },
+        );
+    }
     let (_, steps, _) = integrate(B5, [0.0, 1.0, 1.0], 20.0, Method::Taylor(tol));
     let mut ws = Rows::new();
     let mut coeffs = [[0.0; 3]; MAX_ORDER + 1];
@@ -848,7 +866,13 @@ fn step_group(c: &mut Criterion) {
         })
     });
     let replay = Replay::b5();
-    let mut replayed = Taylor::new(&replay, 0.0, [0.0, 1.0, 1.0], cfg).unwrap();
+    // The replayed jet is not the jet of the state it is given, so the defect check would
+    // refuse its steps: the replay times the rule and the sum alone, as before the check.
+    let unchecked = TaylorConfig {
+        defect_check: false,
+        ..cfg
+    };
+    let mut replayed = Taylor::new(&replay, 0.0, [0.0, 1.0, 1.0], unchecked).unwrap();
     let mut replay_steps = 0;
     while replayed.t() < 20.0 {
         replayed.step(20.0).unwrap();
@@ -856,7 +880,7 @@ fn step_group(c: &mut Criterion) {
     }
     g.bench_function(format!("B5 replayed jets, {replay_steps} steps"), |b| {
         b.iter(|| {
-            let mut ode = Taylor::new(&replay, 0.0, black_box([0.0, 1.0, 1.0]), cfg).unwrap();
+            let mut ode = Taylor::new(&replay, 0.0, black_box([0.0, 1.0, 1.0]), unchecked).unwrap();
             while ode.t() < 20.0 {
                 ode.step(20.0).unwrap();
             }

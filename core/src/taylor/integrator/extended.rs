@@ -77,8 +77,23 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.stats.rhs_evals += p as u64;
         // As in the plain step, no scan for finiteness: a NaN or ∞ in the coefficients, f64
         // or double-double, reaches the new state through the sums and is caught there.
+        let (mut h, mut clamped) = self.step_size(&self.coeffs[..=p], rule, t_limit)?;
+        loop {
+            let (y_new, comp_new) = self.extended_sum(p, low_len, &y, h);
+            // The defect check of the plain mode, on the f64 rows: it looks for what the
+            // rows past p would have added, far above the double-double rounding.
+            match self.checked(p, h, &y_new, &rule)? {
+                Some(shorter) => (h, clamped) = (shorter, false),
+                None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
+            }
+        }
+    }
+
+    /// The new state y + Σₖ₌₁ᵖ c_k hᵏ from the state `y` in double-double, with the rows
+    /// past the table's last (`low_len − 1`) in f64: the sum of the module's docs, as
+    /// (y_hi, its Kahan term).
+    fn extended_sum(&self, p: usize, low_len: usize, y: &[Dd; N], h: f64) -> ([f64; N], [f64; N]) {
         let c = &self.coeffs[..=p];
-        let (h, clamped) = self.step_size(c, rule, t_limit)?;
         let low = &self.low[..low_len];
         // L, the highest double-double order (low_len ≥ 1 since the table has row 0).
         let last = low_len - 1;
@@ -105,6 +120,6 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y_new[i] = sum.hi;
             comp_new[i] = -sum.lo;
         }
-        self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
+        (y_new, comp_new)
     }
 }

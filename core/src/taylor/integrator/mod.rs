@@ -5,8 +5,12 @@
 //! - Order p = ⌈1 − ½ ln ε⌉ and step h = e⁻²·e^(−0.7/(p−1))·ρ, ρ the radius of convergence
 //!   estimated from the last rows of coefficients that do not vanish, each component measured
 //!   against its own scale sᵢ (|yᵢ| in the relative mode, with atol/rtol as a floor, and 1 in
-//!   the absolute one; see [`TaylorConfig`] and the `radius` module). No step is rejected: the
-//!   error estimate comes before the step, from the coefficients the step needs anyway.
+//!   the absolute one; see [`TaylorConfig`] and the `radius` module). The estimate comes
+//!   before the step, from the coefficients the step needs anyway.
+//! - After the sum, the defect of the step polynomial at the step's end, f(y_p(h)) − y_p′(h),
+//!   is checked (the `defect` module): a step whose rows of order ≤ p missed what the rows
+//!   past p hold is taken again, shorter, from the same jet, and counted in
+//!   [`Stats::rejections`]. An ordinary step passes and keeps its bits.
 //! - The estimate never trusts a vanishing coefficient: rows that are zero are skipped, rows
 //!   that are tiny are bounded by the rows below them, a jet that vanishes to its order is
 //!   computed again to the highest order allowed, and a step grows at most tenfold over the
@@ -19,6 +23,7 @@
 //!   located on it.
 
 mod config;
+mod defect;
 mod drivers;
 mod extended;
 mod radius;
@@ -37,8 +42,9 @@ use crate::ode::{OdeError, Stats, check_finite, check_stop};
 /// [`Run`](crate::ode::Run) gives it samples, trajectories and events.
 ///
 /// [`Stats::rhs_evals`] counts each computation of the coefficients to order p (a *jet*) as
-/// p right-hand-side evaluations, so that work counts compare with the Runge–Kutta pairs';
-/// [`Taylor::jets`] counts the jets themselves. The recurrence of a product costs k + 1
+/// p right-hand-side evaluations, so that work counts compare with the Runge–Kutta pairs',
+/// and each defect check ([`TaylorConfig::defect_check`]) as one; [`Taylor::jets`] counts
+/// the jets themselves. The recurrence of a product costs k + 1
 /// multiply-adds at order k, so a jet costs about p²/2 products per product of f while its
 /// linear parts cost p; the measured ratio (jet time over one evaluation of f, both
 /// hand-written, on B5) is in `docs/taylor-integrator.md`, with the command that measures it.
@@ -334,11 +340,57 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
         // new state through Horner (h > 0), which is checked in `commit_step`, and an ∞ in
         // the rows the step size reads is caught by `radius::radius`.
-        let c = &self.coeffs[..=p];
-        let (h, clamped) = self.step_size(c, rule, t_limit)?;
-        let increment = horner_increment(c, h);
-        let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
-        self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
+        let (mut h, mut clamped) = self.step_size(&self.coeffs[..=p], rule, t_limit)?;
+        loop {
+            let increment = horner_increment(&self.coeffs[..=p], h);
+            let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
+            match self.checked(p, h, &y_new, &rule)? {
+                Some(shorter) => (h, clamped) = (shorter, false),
+                None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
+            }
+        }
+    }
+
+    /// The defect check of a step of order `p` and size `h` summed to `y_new` (the `defect`
+    /// module), in both modes: `None` to keep the step, or the shorter step to take again
+    /// from the same jet (counted as a rejection). Off with [`TaylorConfig::defect_check`];
+    /// a fixed step is the caller's choice and is not checked.
+    ///
+    /// # Errors
+    /// [`OdeError::StepSizeUnderflow`] when the shorter step no longer changes t.
+    fn checked(
+        &mut self,
+        p: usize,
+        h: f64,
+        y_new: &[f64; N],
+        rule: &StepRule<N>,
+    ) -> Result<Option<f64>, OdeError> {
+        // A non-finite new state (a NaN or ∞ in the jet) is the commit's to refuse, as
+        // `NonFiniteState`: no shorter step from the same jet can mend it.
+        if !self.cfg.defect_check
+            || self.cfg.fixed_step.is_some()
+            || y_new.iter().any(|v| !v.is_finite())
+        {
+            return Ok(None);
+        }
+        self.stats.rhs_evals += 1;
+        let shorter = defect::shorter_step(
+            &self.sys,
+            &mut self.ws,
+            &self.coeffs[..=p],
+            self.t,
+            h,
+            y_new,
+            &rule.weights,
+            rule.eps,
+        );
+        if let Some(h) = shorter {
+            self.stats.rejections += 1;
+            if self.t + h == self.t {
+                return Err(OdeError::StepSizeUnderflow { t: self.t, h });
+            }
+        }
+        Ok(shorter)
     }
 
     /// The coefficients of orders 0 … `order` at the current point, into `self.coeffs`.
