@@ -177,7 +177,7 @@ fn the_generated_transition_matrix_and_sensitivities_match_finite_differences() 
         let (mut up, mut down) = (x0, x0);
         up[j] += h;
         down[j] -= h;
-        let (yu, yd) = (flow(&p, up, t), flow(&p, down, t));
+        let (yu, yd) = (flow(p, up, t), flow(p, down, t));
         for i in 0..4 {
             fd[(i, j)] = (yu[i] - yd[i]) / (2.0 * h);
         }
@@ -189,7 +189,7 @@ fn the_generated_transition_matrix_and_sensitivities_match_finite_differences() 
         let (mut up, mut down) = (p, p);
         *field(&mut up) += h;
         *field(&mut down) -= h;
-        let (yu, yd) = (flow(&up, x0, t), flow(&down, x0, t));
+        let (yu, yd) = (flow(up, x0, t), flow(down, x0, t));
         for i in 0..4 {
             fd_s[(i, j)] = (yu[i] - yd[i]) / (2.0 * h);
         }
@@ -203,7 +203,7 @@ fn the_generated_transition_matrix_and_sensitivities_match_finite_differences() 
     assert!(err_phi < 1e-7, "{err_phi:e}");
     assert!(err_s < 1e-7, "{err_s:e}");
     // x itself is the plain model's flow.
-    let x = flow(&p, x0, t);
+    let x = flow(p, x0, t);
     for k in 0..4 {
         assert!(
             (y[k] - x[k]).abs() < 1e-11,
