@@ -7,18 +7,30 @@
 //! - `benettin/…`: the maximal exponent (one tangent, N = 12) by Benettin's method over
 //!   t = 20 in intervals of 0.5 with DOP853 at 10⁻¹⁰, the same run through both systems.
 //!
-//! `cargo bench -p precess-benches --bench variational`. The two systems evaluate the same
-//! lowered program (the tests hold them bit-identical), so the ratio is the interpreter's
-//! dispatch alone.
+//! The same pair for `#[mechanism(variational(...))]`, on the double pendulum of the
+//! mechanism's variational tests (equal masses and lengths, g = 9.81, released from rest at
+//! θ1 = 2, θ2 = 0.5):
+//!
+//! - `mechanism/rhs/…`: the whole Φ and the sensitivities to l1 and m2 (N = 4 + 16 + 8 = 28);
+//! - `mechanism/benettin/…`: the maximal exponent (N = 8) over t = 20 in intervals of 0.25
+//!   at 10⁻¹⁰.
+//!
+//! `cargo bench -p precess-benches --bench variational`. For the top the two systems
+//! evaluate the same lowered program (the tests hold them bit-identical), so the ratio is
+//! the interpreter's dispatch alone; the mechanism's interpreted scene is built by hand, so
+//! its program is an equal one, not the same (the tests hold them equal to rounding).
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use precess::mechanism::{JointKind, MechanismScene, Parent, Route};
 use precess::ode::{AdaptiveConfig, Dop853, System};
 use precess::prelude::*;
 use precess::sym::Arena;
 use precess::top::TopScene;
-use precess::variational::{BenettinConfig, VariationalEquations, VariationalSystem, benettin};
+use precess::variational::{
+    BenettinConfig, Layout, VariationalEquations, VariationalSystem, benettin,
+};
 
 /// The heavy top with its fields as parameters and the whole Φ and S.
 #[derive(RigidBody, Clone, Copy)]
@@ -85,7 +97,7 @@ fn maximal<S: System<12>>(sys: S, y0: [f64; 12]) -> f64 {
         .expect("the integrator starts");
     benettin(
         &mut ode,
-        precess::variational::Layout {
+        Layout {
             n: 6,
             tangents: 1,
             sensitivities: 0,
@@ -154,5 +166,155 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// The double pendulum with its fields as parameters, the whole Φ and S to l1, m2.
+#[derive(Mechanism, Clone, Copy)]
+#[mechanism(gravity = g, variational(sensitivities = [l1, m2]))]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1,
+       parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -l1]), q = theta2,
+       parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
+struct Double {
+    m1: f64,
+    l1: f64,
+    m2: f64,
+    l2: f64,
+    g: f64,
+}
+
+/// The same pendulum with one tangent vector, for the maximal exponent.
+#[derive(Mechanism, Clone, Copy)]
+#[mechanism(gravity = g, variational(tangents = 1))]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1,
+       parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -l1]), q = theta2,
+       parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
+struct DoubleMaximal {
+    m1: f64,
+    l1: f64,
+    m2: f64,
+    l2: f64,
+    g: f64,
+}
+
+/// The hand scene's parameters: m0, l0 the upper body's, m1, l1 the lower's.
+const PENDULUM: [(&str, f64); 5] = [
+    ("m0", 1.0),
+    ("l0", 1.0),
+    ("m1", 1.0),
+    ("l1", 1.0),
+    ("g", 9.81),
+];
+
+/// The interpreted equations of the same pendulum, its scene built by hand in an arena.
+fn interpreted_pendulum(
+    a: &mut Arena,
+    tangents: usize,
+    sensitivities: &[&str],
+) -> VariationalEquations {
+    let (o, z) = (a.one(), a.zero());
+    let mut scene = MechanismScene::new();
+    for i in 0..2 {
+        let parent = if i == 0 {
+            Parent::Ground
+        } else {
+            Parent::Body(0)
+        };
+        let hinge = JointKind::Revolute { axis: [o, z, z] };
+        let name = format!("phi{i}");
+        let mut b = MechanismScene::body(a, &format!("bob{i}"), parent, hinge, &[&name]);
+        b.mass = a.parameter(&format!("m{i}"));
+        let l = a.parameter(&format!("l{i}"));
+        b.center = [z, z, a.neg(l)];
+        if i == 1 {
+            let l0 = a.parameter("l0");
+            b.joint.at = [z, z, a.neg(l0)];
+        }
+        scene.bodies.push(b);
+    }
+    let g = a.parameter("g");
+    scene.gravity = Some([z, z, a.neg(g)]);
+    let derivation = scene.derive(a, Route::Auto).expect("the pendulum derives");
+    VariationalEquations::from_mechanism(a, &derivation, tangents, sensitivities)
+        .expect("the equations build")
+}
+
+/// Benettin's maximal exponent of the pendulum's `sys` from the bench's start.
+fn maximal_pendulum<S: System<8>>(sys: S, y0: [f64; 8]) -> f64 {
+    let cfg = BenettinConfig {
+        interval: 0.25,
+        duration: 20.0,
+        transient: 0.0,
+    };
+    let mut ode = Dop853::new(sys, 0.0, y0, AdaptiveConfig::with_tol(1e-10, 1e-10))
+        .expect("the integrator starts");
+    let layout = Layout {
+        n: 4,
+        tangents: 1,
+        sensitivities: 0,
+    };
+    benettin(&mut ode, layout, &cfg)
+        .expect("the run succeeds")
+        .exponents[0]
+}
+
+fn bench_mechanism(c: &mut Criterion) {
+    let x0 = [2.0, 0.5, 0.0, 0.0];
+    let p = Double {
+        m1: 1.0,
+        l1: 1.0,
+        m2: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    };
+    let mut a = Arena::new();
+    let full = interpreted_pendulum(&mut a, 4, &["l0", "m1"]);
+    let sys = VariationalSystem::<28>::new(&a, &full, &PENDULUM).expect("the values bind");
+    let generated = p.variational();
+    let mut y = generated.initial_state(&x0).expect("a finite start");
+    // Off the identity, so no product is trivially by one or zero.
+    for (k, v) in y.iter_mut().enumerate().skip(4) {
+        *v += 0.01 * k as f64;
+    }
+    let mut g = c.benchmark_group("variational");
+    g.bench_function("mechanism/rhs/generated_28", |b| {
+        let mut dy = [0.0; 28];
+        b.iter(|| {
+            generated.rhs(0.0, black_box(&y), &mut dy);
+            black_box(dy[27])
+        })
+    });
+    g.bench_function("mechanism/rhs/interpreted_28", |b| {
+        let mut dy = [0.0; 28];
+        b.iter(|| {
+            sys.rhs(0.0, black_box(&y), &mut dy);
+            black_box(dy[27])
+        })
+    });
+    let one = DoubleMaximal {
+        m1: 1.0,
+        l1: 1.0,
+        m2: 1.0,
+        l2: 1.0,
+        g: 9.81,
+    };
+    let mut a1 = Arena::new();
+    let max_eq = interpreted_pendulum(&mut a1, 1, &[]);
+    let max_sys = VariationalSystem::<8>::new(&a1, &max_eq, &PENDULUM).expect("the values bind");
+    let y0 = max_sys.initial_state(&x0).expect("a finite start");
+    let (lg, li) = (
+        maximal_pendulum(one.variational(), y0),
+        maximal_pendulum(&max_sys, y0),
+    );
+    println!("double pendulum maximal exponent over t = 20: generated {lg}, interpreted {li}");
+    g.sample_size(20);
+    g.bench_function("mechanism/benettin/generated_8", |b| {
+        b.iter(|| maximal_pendulum(one.variational(), black_box(y0)))
+    });
+    g.bench_function("mechanism/benettin/interpreted_8", |b| {
+        b.iter(|| maximal_pendulum(&max_sys, black_box(y0)))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_mechanism);
 criterion_main!(benches);

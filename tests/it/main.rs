@@ -100,6 +100,7 @@ mod mechanism {
     mod rolling;
     mod timing;
     mod top;
+    mod variational_derive;
 }
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
 /// linearised flow map Φ P₀ Φᵀ.

@@ -17,6 +17,8 @@
 //!   expressions to Rust reading the fields; `tokens`, the body language's values as Rust.
 //! - `taylor`: the `taylor = K` key of every attribute, found, checked and expanded in one
 //!   place.
+//! - `variational`: the `variational(...)` group of `#[top]` and `#[mechanism]`, checked
+//!   against the scene's state and fields and emitted as `<Name>Variational` in one place.
 //! - `private`: the one hidden path, `::precess::__private`, generated code names precess
 //!   through.
 
@@ -35,6 +37,7 @@ pub mod taylor;
 pub mod tokens;
 pub mod units;
 pub mod values;
+pub mod variational;
 
 #[cfg(test)]
 pub(crate) mod tests;

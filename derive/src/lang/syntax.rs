@@ -151,17 +151,6 @@ pub fn parse_items(
     })
 }
 
-/// The `key = value` items of every attribute of `attrs`; an attribute without a list
-/// (`#[top]`) is the empty list, every key of it optional.
-pub fn parse_settings(cx: &Ctxt, attrs: &[&Attribute]) -> Parsed<KeyValue> {
-    parse_each(cx, attrs, |a| match &a.meta {
-        Meta::Path(_) => Ok(Vec::new()),
-        _ => a
-            .parse_args_with(Punctuated::<KeyValue, Token![,]>::parse_terminated)
-            .map(|list| list.into_iter().collect()),
-    })
-}
-
 /// Parses each attribute with `parse`, recording syntax errors and going on with the rest.
 fn parse_each<T>(
     cx: &Ctxt,

@@ -1,5 +1,5 @@
-//! Syntax of `#[body(...)]`, in the grammar of `lang::syntax` (`#[mechanism(...)]` is a plain
-//! settings list, read by `lang::syntax::parse_settings`), whose meaning `check.rs` decides. A
+//! Syntax of `#[body(...)]`, in the grammar of `lang::syntax` (`#[mechanism(...)]` is a list of
+//! settings and one group, read by `variational::parse`), whose meaning `check.rs` decides. A
 //! link list is its name, then `key = value` settings and `group(...)` items: `parts(...)`
 //! holds parts of `lang::parts`, any other group `key = value`s.
 

@@ -18,6 +18,7 @@ use crate::lang::ctxt::Ctxt;
 use crate::lang::expansion::Expansion;
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
+use crate::lang::variational::VariationalKey;
 
 mod charts;
 mod rolling;
@@ -32,6 +33,7 @@ pub fn expand(
     ex: &mut Expansion,
     checked: &CheckedMechanism,
     taylor: Option<usize>,
+    variational: Option<&VariationalKey>,
 ) -> Option<TokenStream> {
     if let Some(rolling) = &checked.rolling {
         return rolling::expand(ex, checked, rolling);
@@ -51,6 +53,8 @@ pub fn expand(
         }
     };
     let taylor = taylor.map(|k| taylor_system(cx, ident, arena, parameters, &derivation, k));
+    let variational = variational
+        .map(|key| super::variational::expand(cx, ident, arena, parameters, &derivation, key));
     let n = checked.coordinates.len();
     let s = 2 * n;
     let mut symbols = parameters.tokens();
@@ -179,6 +183,8 @@ pub fn expand(
     let charts = charts::expand_charts(cx, ident, arena, &low, checked, route)?;
     Some(quote! {
         #taylor
+
+        #variational
 
         #[automatically_derived]
         impl #ident {

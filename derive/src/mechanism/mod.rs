@@ -5,7 +5,8 @@
 //! and the tree's rules in `tree`), `expand` (the `MechanismDynamics` impl, with
 //! `parameters`, `jacobian` and `expand/charts`) and `fallback` (the stubs). Bodies that roll
 //! on a floor (`rolls = ..`, with `up` and `speeds`) are read in `rolling` and expanded to
-//! `impl RollingDynamics` by `expand/rolling` instead. This file is the derive's driver.
+//! `impl RollingDynamics` by `expand/rolling` instead; the `variational(...)` group of
+//! `#[mechanism]` is read and emitted in `variational`. This file is the derive's driver.
 
 pub mod attr;
 pub mod check;
@@ -17,6 +18,7 @@ mod loads;
 mod parameters;
 mod rolling;
 mod tree;
+mod variational;
 
 use precess_core::sym::Arena;
 use proc_macro2::TokenStream;
@@ -28,7 +30,6 @@ use crate::lang::ctxt::Ctxt;
 use crate::lang::expansion::Expansion;
 use crate::lang::keys;
 use crate::lang::symbols::FieldParameters;
-use crate::lang::syntax;
 use crate::lang::taylor::TaylorKey;
 
 /// The whole derive: the impls, or every error and the stub impls.
@@ -41,7 +42,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 /// Every phase: syntax and meaning of all attributes, then the expansion.
 fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let ast = Input::for_derive(cx, input, "Mechanism")?;
-    let settings = syntax::parse_settings(cx, &ast.attributes(keys::MECHANISM));
+    let (settings, group) = variational::parse(cx, &ast.attributes(keys::MECHANISM));
     let in_mechanism = format!("`#[{}]`", keys::MECHANISM);
     let pairs = settings.items.iter().map(|kv| (&kv.key, &kv.value));
     let taylor = TaylorKey::find(cx, pairs, &in_mechanism);
@@ -50,6 +51,10 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
     let mut parameters = FieldParameters::default();
     let mut ck = Checker::new(cx, &ast, &mut arena, &mut parameters);
     let checked = check::check(&mut ck, &settings, &links)?;
+    let variational = match &group {
+        Some(group) => Some(variational::check(&ck, group, &checked)?),
+        None => None,
+    };
     // An effort computed by a user function has no Taylor coefficients.
     let taylor = taylor.order(cx, &[(keys::EFFORT, !checked.efforts.is_empty())]);
     let mut ex = Expansion {
@@ -58,5 +63,5 @@ fn expand(cx: &Ctxt, input: &DeriveInput) -> Option<TokenStream> {
         arena: &mut arena,
         parameters: &parameters,
     };
-    expand::expand(&mut ex, &checked, taylor)
+    expand::expand(&mut ex, &checked, taylor, variational.as_ref())
 }

@@ -2,7 +2,8 @@
 //! sequence, in the phases every attribute has over `lang/`: `attr` (syntax), `check`
 //! (meaning, its values read by the shared checker into the arena `#[rigid]` built), `expand`
 //! (the `TopDynamics` impl, with its typeset equations in `equations`) and `fallback` (its
-//! stub); `variational` is the `variational(...)` group, checked and emitted.
+//! stub); `variational` is the top's side of the `variational(...)` group, whose checks and
+//! emission are `lang::variational`'s.
 
 pub mod attr;
 pub mod check;
