@@ -1,11 +1,13 @@
 //! `#[top(...)]`: the body as a top about its pivot, its declared torques and angle
 //! sequence, in the phases every attribute has over `lang/`: `attr` (syntax), `check`
 //! (meaning, its values read by the shared checker into the arena `#[rigid]` built), `expand`
-//! (the `TopDynamics` impl, with its typeset equations in `equations`) and `fallback` (its
+//! (the `TopDynamics` impl, with its typeset equations in `equations` and a driven top's
+//! methods in `driven`) and `fallback` (its
 //! stub); `variational` is the `variational(...)` group, checked and emitted.
 
 pub mod attr;
 pub mod check;
+pub mod driven;
 pub mod equations;
 pub mod expand;
 pub mod fallback;
