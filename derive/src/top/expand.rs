@@ -153,22 +153,14 @@ pub fn expand(
             format!("cannot derive the top's equations of motion: {e}"),
         );
     };
-    let (body, equations, extra) = match &driven {
+    // In the order a top without motors always derived them, so it emits what it did.
+    let (body, equations, lagrangian) = match &driven {
         None => {
-            let (body, extra) = undriven(
-                cx,
-                ident,
-                &low,
-                arena,
-                &scene,
-                &user,
-                settings,
-                &taylor_symbols,
-            )
-            .map_err(|e| failed(&e))
-            .ok()?;
+            let (body, lagrangian) = undriven(&low, arena, &scene, &user)
+                .map_err(|e| failed(&e))
+                .ok()?;
             let equations = super::equations::method(cx, ident, arena, &scene);
-            (body, equations, extra)
+            (body, equations, Some(lagrangian))
         }
         Some(inputs) => {
             let methods = super::driven::methods(&low, arena, &scene, inputs, &user)
@@ -178,7 +170,7 @@ pub fn expand(
             // rebuilt over Eulerian inputs made for them.
             eulerian_inputs(arena);
             let equations = super::equations::method(cx, ident, arena, &methods.scene);
-            (methods.tokens, equations, TokenStream::new())
+            (methods.tokens, equations, None)
         }
     };
     let declared_t = sequence_tokens(scene.sequence);
@@ -191,6 +183,31 @@ pub fn expand(
             return None;
         }
     };
+    // `taylor` and `variational(...)` are refused with a driven rotor (check.rs).
+    let extra = lagrangian.map(|(state, rhs)| {
+        let variational = settings.variational.as_ref().map(|key| {
+            super::variational::expand(cx, ident, arena, &taylor_symbols, (&state, &rhs), key)
+        });
+        // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
+        let taylor = settings.taylor.map(|order| {
+            crate::lang::taylor::expand_checked(
+                cx,
+                ident,
+                arena,
+                &taylor_symbols,
+                &state,
+                &rhs,
+                TokenStream::new(),
+                order,
+                quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+            )
+        });
+        quote! {
+            #taylor
+
+            #variational
+        }
+    });
     let n = 6 + settings.driven.len();
     // `TopDynamics` as a user writes it: without N unless the top has motors.
     let dynamics = if driven.is_some() {
@@ -252,18 +269,15 @@ pub fn expand(
 }
 
 /// The methods of a top without motors over `[q, q̇]` (both charts, the declared chart's
-/// Jacobian and momenta, the Eulerian form), and its `taylor` and `variational` items.
-#[allow(clippy::too_many_arguments)]
+/// Jacobian and momenta, the Eulerian form), and the declared chart's state and right-hand
+/// side for `taylor` and `variational(...)`.
+#[allow(clippy::type_complexity)]
 fn undriven(
-    cx: &crate::lang::ctxt::Ctxt,
-    ident: &syn::Ident,
     low: &Lowering,
     arena: &mut Arena,
     scene: &TopScene,
     user: &UserCall,
-    settings: &TopSettings,
-    taylor_symbols: &crate::lang::symbols::SymbolTokens,
-) -> Result<(TokenStream, TokenStream), LagrangeError> {
+) -> Result<(TokenStream, (Vec<ExprId>, Vec<ExprId>)), LagrangeError> {
     let p = Private;
     let Methods {
         arms:
@@ -278,25 +292,6 @@ fn undriven(
         eulerian,
         lagrangian,
     } = methods(low, arena, scene, user)?;
-    let variational = settings.variational.as_ref().map(|key| {
-        let (state, rhs) = &lagrangian;
-        super::variational::expand(cx, ident, arena, taylor_symbols, (state, rhs), key)
-    });
-    // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
-    let taylor = settings.taylor.map(|order| {
-        let (state, rhs) = lagrangian;
-        crate::lang::taylor::expand_checked(
-            cx,
-            ident,
-            arena,
-            taylor_symbols,
-            &state,
-            &rhs,
-            TokenStream::new(),
-            order,
-            quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
-        )
-    });
     let body = quote! {
         #[inline]
         fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
@@ -330,7 +325,7 @@ fn undriven(
             omega: &#p::Vector3<f64>,
         ) -> #p::Vector3<f64> #eulerian
     };
-    Ok((body, quote!(#taylor #variational)))
+    Ok((body, lagrangian))
 }
 
 /// `ROTORS`, `DRIVEN_ROTORS`, `rotor_momentum` and a `check_parameters` that judges the
@@ -374,10 +369,13 @@ fn rotor_methods(
         outputs: rate_values,
     } = low.lower(arena, &rates);
     let driven_names = settings.driven.iter().map(|(k, _)| format!("rotor_{k}"));
+    // Only for a driven top: without one the trait's default (none) stands.
+    let driven_names = (!settings.driven.is_empty())
+        .then(|| quote!(const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven_names),*];));
     Ok(quote! {
         const ROTORS: usize = #count;
 
-        const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven_names),*];
+        #driven_names
 
         #momentum
 

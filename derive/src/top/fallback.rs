@@ -55,7 +55,8 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             }
         });
     let driven = driven_names(input);
-    let n = 6 + driven.len();
+    // Unsuffixed, as the stub always wrote its 6.
+    let n = proc_macro2::Literal::usize_unsuffixed(6 + driven.len());
     let rotors = driven.iter().enumerate().map(|(k, name)| {
         let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
         let slot = 6 + k;
