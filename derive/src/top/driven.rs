@@ -168,7 +168,7 @@ pub(super) fn methods(
         }
 
         #[inline]
-        fn rhs_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n], rate: &mut [f64; #n]) {
+        fn rhs_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n], __rate: &mut [f64; #n]) {
             match seq { #(#rhs)* }
         }
 
@@ -261,7 +261,7 @@ impl Arms {
             #user_call
             #motors
             #lets
-            *rate = [state[3], state[4], state[5], #(#outputs),*];
+            *__rate = [state[3], state[4], state[5], #(#outputs),*];
         }));
         let Emitted { lets, outputs } = low.lower_reading(arena, &[d.energy], &reads);
         self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
