@@ -138,18 +138,19 @@ impl TopScene {
         let external = self.applied_torque(arena, &top.rotation, &top.omega);
         let forces = mat_vec(arena, &transpose(&top.rate_matrix), &external);
         let mut conserved_momenta = Vec::with_capacity(3);
-        for i in 0..3 {
-            let free_of = match arena.as_symbol(top.coords().q[i]) {
+        let coords = top.coords().q.clone();
+        for ((&qi, &force), &momentum) in coords.iter().zip(&forces).zip(&top.equations.momenta) {
+            let free_of = match arena.as_symbol(qi) {
                 Some(q) => {
                     let d = arena.diff(lagrangian, q);
                     let d = arena.expand(d);
-                    let f = arena.expand(forces[i]);
+                    let f = arena.expand(force);
                     d == arena.zero() && f == arena.zero()
                 }
                 None => false,
             };
             conserved_momenta.push(if free_of {
-                Some(subs(arena, top.equations.momenta[i])?)
+                Some(subs(arena, momentum)?)
             } else {
                 None
             });
