@@ -237,13 +237,9 @@ pub fn check(
         }
     }
     // Every field the body and the top read is known by now.
-    let names: Vec<String> = settings
-        .angles
-        .names()
-        .into_iter()
-        .map(str::to_owned)
-        .chain(settings.driven.iter().map(|(k, _)| format!("rotor_{k}")))
-        .collect();
+    // A driven rotor's rate is not among them: its slot is the const `ROTOR_k` and the
+    // printed equations name no symbol `rotor_k`, so a field of that name is harmless.
+    let names = settings.angles.names().map(str::to_owned);
     let sequence = match settings.angles {
         AngleSequence::Zxz => "zxz",
         AngleSequence::Zyx => "zyx",

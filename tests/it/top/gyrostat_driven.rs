@@ -82,15 +82,16 @@ fn motor_off<T>(_: &T, _t: f64, _y: &[f64]) -> f64 {
 #[top(gravity = 9.81, rotor(axis = [0, 0, 1], inertia = 0.01, rate = 150))]
 struct Held;
 
-/// A wheel's J read from a field, on the figure axis of a top with I₃ = 0.02 about it.
+/// A wheel's J read from a field, on the figure axis of a top with I₃ = 0.02 about it. The
+/// field is named as the wheel's slot, which is harmless: the slot is the const `ROTOR_0`.
 #[derive(RigidBody)]
 #[rigid(
     body(mass = 1.0, at = [0.0, 0.0, 0.1], inertia = diag(0.05, 0.05, 0.02), about = pivot),
     pivot = [0.0, 0.0, 0.0],
 )]
-#[top(gravity = 9.81, rotor(axis = [0, 0, 1], inertia = j, torque = motor_off))]
+#[top(gravity = 9.81, rotor(axis = [0, 0, 1], inertia = rotor_0, torque = motor_off))]
 struct FieldWheel {
-    j: f64,
+    rotor_0: f64,
 }
 
 fn tight() -> AdaptiveConfig {
@@ -338,9 +339,10 @@ fn the_chart_switch_carries_the_wheel_through_gimbal_lock() {
 /// cannot take a driven top.
 #[test]
 fn a_driven_tops_parameters_and_state_are_checked() {
-    let ok = FieldWheel { j: 0.005 };
+    let ok = FieldWheel { rotor_0: 0.005 };
     assert_eq!(ok.check_all(), Ok(()));
-    let bad = FieldWheel { j: 0.025 };
+    assert_eq!(FieldWheel::ROTOR_0, 6);
+    let bad = FieldWheel { rotor_0: 0.025 };
     match bad.check_all() {
         Err(TopError::DrivenInertia { rotor, smallest }) => {
             assert_eq!(rotor, 0);
