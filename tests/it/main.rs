@@ -153,6 +153,7 @@ mod top {
     mod cross_check;
     mod gimbal;
     mod gyrostat;
+    mod gyrostat_driven;
     mod linear;
     mod motion;
     mod theory;

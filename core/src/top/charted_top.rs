@@ -11,7 +11,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::angle_chart::AngleChart;
+use super::angle_chart::{AngleChart, at_angles};
 use super::error::TopError;
 use crate::ode::{Dop853, OdeError, Stats, System, check_stop};
 use crate::rigid::{
@@ -53,8 +53,8 @@ use crate::rigid::{
 /// The two charts are taken by value as `[C; 2]`, the type [`super::TopChart::both`]
 /// returns; borrowed charts work too (`[&a, &b]`), as [`AngleChart`] is implemented for
 /// references.
-pub struct ChartedTop<C> {
-    ode: Dop853<Charts<C>, 6>,
+pub struct ChartedTop<C, const N: usize = 6> {
+    ode: Dop853<Charts<C>, N>,
     config: ChartConfig,
     switches: usize,
 }
@@ -66,14 +66,14 @@ struct Charts<C> {
     active: usize,
 }
 
-impl<C: AngleChart> Charts<C> {
+impl<C> Charts<C> {
     fn active(&self) -> &C {
         &self.charts[self.active]
     }
 }
 
-impl<C: AngleChart> System<6> for Charts<C> {
-    fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
+impl<C: AngleChart<N>, const N: usize> System<N> for Charts<C> {
+    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
         self.active().rhs(t, y, dydt);
     }
 
@@ -82,7 +82,7 @@ impl<C: AngleChart> System<6> for Charts<C> {
     }
 }
 
-impl<C: AngleChart> ChartedTop<C> {
+impl<C: AngleChart<N>, const N: usize> ChartedTop<C, N> {
     /// Starts from an attitude `r` (body to space) and a body angular velocity `omega`, in
     /// the better-conditioned of the two charts.
     ///
@@ -103,6 +103,30 @@ impl<C: AngleChart> ChartedTop<C> {
         omega: &Vector3<f64>,
         config: ChartConfig,
     ) -> Result<Self, TopError> {
+        Self::with_rotor_rates(charts, t0, r, omega, &[], config)
+    }
+
+    /// As [`ChartedTop::new`], for a top with driven rotors: `rotor_rates` are the wheels'
+    /// rates Ω relative to the body (rad/s), one per driven rotor in the order of the
+    /// state's slots 6, 7, …, carried through every chart switch unchanged.
+    ///
+    /// # Errors
+    /// [`TopError::RotorRates`] unless `rotor_rates` holds `N − 6` values, all finite; then
+    /// as [`ChartedTop::new`].
+    pub fn with_rotor_rates(
+        charts: [C; 2],
+        t0: f64,
+        r: &Matrix3<f64>,
+        omega: &Vector3<f64>,
+        rotor_rates: &[f64],
+        config: ChartConfig,
+    ) -> Result<Self, TopError> {
+        if rotor_rates.len() + 6 != N || !rotor_rates.iter().all(|v| v.is_finite()) {
+            return Err(TopError::RotorRates {
+                expected: N.saturating_sub(6),
+                given: rotor_rates.to_vec(),
+            });
+        }
         if charts[0].sequence() == charts[1].sequence() {
             return Err(ChartError::SameSequence(charts[0].sequence()).into());
         }
@@ -117,8 +141,8 @@ impl<C: AngleChart> ChartedTop<C> {
             }
             .into());
         }
-        let states = [0, 1].map(|k| state_in(&charts[k], r, omega));
-        let det = |s: &Result<([f64; 6], f64), ChartError>| match s {
+        let states = [0, 1].map(|k| state_in(&charts[k], r, omega, rotor_rates));
+        let det = |s: &Result<([f64; N], f64), ChartError>| match s {
             Ok((_, det)) | Err(ChartError::SingularChart { det, .. }) => *det,
             Err(_) => f64::NAN,
         };
@@ -173,7 +197,9 @@ impl<C: AngleChart> ChartedTop<C> {
         let other = 1 - charts.active;
         let r = here.rotation_at(&y);
         let w = here.omega_at(&y);
-        let Ok((s, det_other)) = state_in(&charts.charts[other], &r, &w) else {
+        // The wheels' rates are relative to the body: the same in either chart.
+        let rotors = y.get(6..).unwrap_or(&[]);
+        let Ok((s, det_other)) = state_in(&charts.charts[other], &r, &w, rotors) else {
             return Ok(());
         };
         if det_other <= det_here {
@@ -192,8 +218,8 @@ impl<C: AngleChart> ChartedTop<C> {
         self.ode.t()
     }
 
-    /// The state `[q, q̇]` in the active chart.
-    pub fn state(&self) -> &[f64; 6] {
+    /// The state `[q, q̇]` in the active chart (`[q, q̇, Ω]` for a driven top).
+    pub fn state(&self) -> &[f64; N] {
         self.ode.y()
     }
 
@@ -231,14 +257,20 @@ impl<C: AngleChart> ChartedTop<C> {
 /// The state of attitude `r` and body rate `omega` in `model`'s chart, with `|det B|` there:
 /// the angles from R, the rates from B(q) q̇ = ω under the one rule of
 /// [`crate::rigid::rates_from_omega`].
-fn state_in<C: AngleChart>(
+fn state_in<C: AngleChart<N>, const N: usize>(
     model: &C,
     r: &Matrix3<f64>,
     omega: &Vector3<f64>,
-) -> Result<([f64; 6], f64), ChartError> {
+    rotor_rates: &[f64],
+) -> Result<([f64; N], f64), ChartError> {
     let q = angles_from_rotation(model.sequence(), r);
-    let b = model.rate_matrix_at(&[q[0], q[1], q[2], 0.0, 0.0, 0.0]);
+    let b = model.rate_matrix_at(&at_angles(&q));
     let qd = rates_from_omega(model.sequence(), &b, &q, omega)?;
     let det = b.determinant().abs();
-    Ok(([q[0], q[1], q[2], qd[0], qd[1], qd[2]], det))
+    let state = std::array::from_fn(|k| match k {
+        0..=2 => q[k],
+        3..=5 => qd[k - 3],
+        _ => rotor_rates.get(k - 6).copied().unwrap_or(f64::NAN),
+    });
+    Ok((state, det))
 }

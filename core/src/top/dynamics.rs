@@ -28,6 +28,23 @@ use crate::rigid::{check_chart, rates_from_omega};
 /// Every top is a [`RigidBody`] (the same derive implements both), so its body is checked
 /// with its settings.
 ///
+/// # Driven rotors
+///
+/// `N` is the length of the state: 6, `[q, q̇]`, for every top but one whose rotors are
+/// turned by motors (`rotor(axis = [..], inertia = J, torque = path)`), whose state is
+/// `[q, q̇, Ω₀, …, Ωₖ₋₁]`, `N = 6 + k`, with each driven wheel's rate relative to the body
+/// (rad/s) in the slot `Self::ROTOR_j` (j counting every rotor as declared, the name
+/// `"rotor_j"` of [`TopDynamics::coordinate`] and [`TopDynamics::DRIVEN_ROTORS`]). The
+/// methods over the whole state (`_in`, [`TopDynamics::rhs_in`]) take it whole. `T:
+/// TopDynamics` is `TopDynamics<6>`, so the helpers written for tops without motors
+/// ([`super::EulerianTop`], [`super::FastTop`], the linearisations, the variational
+/// equations) take no driven top: the compiler refuses it. The methods over `(q, q̇)`
+/// alone cannot see the wheels' rates: on a driven top [`TopDynamics::accelerations`]
+/// returns [`TopError::DrivenState`], [`TopDynamics::accelerations_unchecked`],
+/// [`TopDynamics::energy`] and the generated [`TopDynamics::angle_jacobian`] and
+/// [`TopDynamics::eulerian_rhs`] NaN and [`TopDynamics::conserved_momenta`] `None`
+/// ([`TopDynamics::conserved_momenta_in`] reads the whole state).
+///
 /// # Examples
 ///
 /// The symmetric heavy top with I1 = 1, I3 = ½ about the pivot and M g l = 1 precesses
@@ -56,7 +73,7 @@ use crate::rigid::{check_chart, rates_from_omega};
 /// let vertical = Heavy.accelerations(0.0, &[0.0, 0.0, 0.0], &[0.0, 0.0, 5.0]);
 /// assert!(matches!(vertical, Err(TopError::Chart(ChartError::SingularChart { .. }))));
 /// ```
-pub trait TopDynamics: RigidBody {
+pub trait TopDynamics<const N: usize = 6>: RigidBody {
     /// The declared angle sequence.
     const SEQUENCE: AngleSequence;
 
@@ -65,20 +82,37 @@ pub trait TopDynamics: RigidBody {
     /// (the heavy-top closed forms of [`TopDynamics::theory`] then apply).
     const BEYOND_GRAVITY: Option<&'static str> = None;
 
-    /// How many internal rotors `#[top(rotor(...))]` declares (a gyrostat when > 0).
+    /// How many internal rotors `#[top(rotor(...))]` declares (a gyrostat when > 0),
+    /// driven ones included.
     const ROTORS: usize = 0;
 
-    /// The rotors' total relative angular momentum h = Σ J Ω â in body (description) axes,
-    /// for the current field values; zero without rotors. The top's angular momentum about
-    /// the pivot is I ω + h.
+    /// The names of the driven rotors' rates in the state, in the order of their slots
+    /// 6, 7, …: `"rotor_j"`, j the rotor's place among every rotor declared. Empty (and
+    /// `N = 6`) without motors.
+    const DRIVEN_ROTORS: &'static [&'static str] = &[];
+
+    /// The constant-rate rotors' total relative angular momentum h = Σ J Ω â in body
+    /// (description) axes, for the current field values; zero without rotors. The top's
+    /// angular momentum about the pivot is I ω + h (a driven wheel's part, Jₖ Ωₖ âₖ, reads
+    /// its rate from the state and is not included).
     fn rotor_momentum(&self) -> Vector3<f64> {
         Vector3::zeros()
+    }
+
+    /// Every rotor's relative angular momentum at the state `state` (body axes): h of
+    /// [`TopDynamics::rotor_momentum`] plus each driven wheel's Jₖ Ωₖ âₖ, Ωₖ read from its
+    /// slot. The top's angular momentum about the pivot is I ω + this.
+    fn rotor_momentum_in(&self, state: &[f64; N]) -> Vector3<f64> {
+        let _ = state;
+        self.rotor_momentum()
     }
 
     /// The index of the angle called `name` in q and q̇ of [`TopDynamics::SEQUENCE`] (`"phi"`,
     /// `"theta"`, `"psi"` in ZXZ; `"yaw"`, `"pitch"`, `"roll"` in ZYX), if there is one: in
     /// the state `[q, q̇]` the angle is slot i and its rate slot 3 + i. The derive gives the
-    /// same indices as consts named in capitals (`Self::THETA`), as a mechanism's.
+    /// same indices as consts named in capitals (`Self::THETA`), as a mechanism's. A driven
+    /// rotor's rate `"rotor_j"` gives its slot in the whole state (6 and on), as
+    /// `Self::ROTOR_j` does.
     ///
     /// ```
     /// use precess::prelude::*;
@@ -97,11 +131,34 @@ pub trait TopDynamics: RigidBody {
     where
         Self: Sized,
     {
-        Self::SEQUENCE.names().iter().position(|&c| c == name)
+        Self::SEQUENCE
+            .names()
+            .iter()
+            .position(|&c| c == name)
+            .or_else(|| {
+                Self::DRIVEN_ROTORS
+                    .iter()
+                    .position(|&c| c == name)
+                    .map(|j| 6 + j)
+            })
     }
 
-    /// q̈ in the chart `seq` at time `t` and state `[q, q̇]`.
-    fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3];
+    /// q̈ in the chart `seq` at time `t` and state `[q, q̇]` (`[q, q̇, Ω]` for a driven top).
+    fn accelerations_unchecked_in(&self, seq: AngleSequence, t: f64, state: &[f64; N]) -> [f64; 3];
+
+    /// The whole state's rate in the chart `seq`: `(q̇, q̈)`, and for a driven top the
+    /// wheels' Ω̇ₖ = uₖ/Jₖ − âₖ·ω̇ (generated; this default, for `N = 6`, leaves any slot past
+    /// the sixth at zero). Unchecked, as [`TopDynamics::accelerations_unchecked_in`].
+    fn rhs_in(&self, seq: AngleSequence, t: f64, state: &[f64; N], rate: &mut [f64; N]) {
+        let a = self.accelerations_unchecked_in(seq, t, state);
+        for (k, r) in rate.iter_mut().enumerate() {
+            *r = match k {
+                0..=2 => state.get(k + 3).copied().unwrap_or(f64::NAN),
+                3..=5 => a[k - 3],
+                _ => 0.0,
+            };
+        }
+    }
 
     /// R(q) in the chart `seq`, body to space.
     fn rotation_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
@@ -109,8 +166,9 @@ pub trait TopDynamics: RigidBody {
     /// B(q) in the chart `seq`: ω = B q̇.
     fn rate_matrix_in(&self, seq: AngleSequence, q: &[f64; 3]) -> Matrix3<f64>;
 
-    /// The energy T + V in the chart `seq`.
-    fn energy_in(&self, seq: AngleSequence, state: &[f64; 6]) -> f64;
+    /// The energy T + V in the chart `seq` (for a driven top the wheels' relative spin
+    /// counts: T = ½ ωᵀ I ω + Σ J Ω â·ω + ½ Σ J Ω²).
+    fn energy_in(&self, seq: AngleSequence, state: &[f64; N]) -> f64;
 
     /// The Jacobian of q̈ with respect to `(q, q̇)` in [`TopDynamics::SEQUENCE`]: row i holds
     /// `∂q̈_i/∂(q_0, q_1, q_2, q̇_0, q̇_1, q̇_2)`.
@@ -119,6 +177,14 @@ pub trait TopDynamics: RigidBody {
     /// The momenta `∂L/∂q̇_i` of [`TopDynamics::SEQUENCE`] that are conserved for this scene
     /// (`None` for the others).
     fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [Option<f64>; 3];
+
+    /// [`TopDynamics::conserved_momenta`] over the whole state of the declared chart: for a
+    /// driven top the momenta read the wheels' rates (about the vertical, ẑ·R (I ω + h),
+    /// conserved whatever the motors do, their torques being internal).
+    fn conserved_momenta_in(&self, state: &[f64; N]) -> [Option<f64>; 3] {
+        let [a, b, c, d, e, f] = std::array::from_fn(|k| state.get(k).copied().unwrap_or(f64::NAN));
+        self.conserved_momenta(&[a, b, c], &[d, e, f])
+    }
 
     /// The Eulerian form: ω̇ = I⁻¹(τ − ω × (I ω + h)), with the same torques and rotors, for the attitude
     /// (body to space) and body angular velocity ω.
@@ -267,16 +333,28 @@ pub trait TopDynamics: RigidBody {
 
     /// q̈ in [`TopDynamics::SEQUENCE`], unchecked: NaN or infinite at the chart's gimbal lock (see
     /// [`TopDynamics::accelerations`]).
+    ///
+    /// NaN for a driven top, whose q̈ reads the wheels' rates too: use
+    /// [`TopDynamics::accelerations_unchecked_in`] with the whole state.
     fn accelerations_unchecked(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 3] {
-        self.accelerations_unchecked_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+        match state_of(q, q_dot) {
+            Some(state) => self.accelerations_unchecked_in(Self::SEQUENCE, t, &state),
+            None => [f64::NAN; 3],
+        }
     }
 
     /// q̈ in [`TopDynamics::SEQUENCE`], refusing a state the chart cannot take.
     ///
     /// # Errors
-    /// As [`TopDynamics::accelerations_in`].
+    /// [`TopError::DrivenState`] for a driven top (its q̈ reads the wheels' rates: use
+    /// [`TopDynamics::accelerations_in`] with the whole state); then as
+    /// [`TopDynamics::accelerations_in`].
     fn accelerations(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> Result<[f64; 3], TopError> {
-        self.accelerations_in(Self::SEQUENCE, t, &angle_state(q, q_dot))
+        let state = state_of(q, q_dot).ok_or(TopError::DrivenState {
+            method: "accelerations",
+            rotors: Self::DRIVEN_ROTORS.len(),
+        })?;
+        self.accelerations_in(Self::SEQUENCE, t, &state)
     }
 
     /// q̈ in the chart `seq`, refusing a state the chart cannot take.
@@ -292,11 +370,11 @@ pub trait TopDynamics: RigidBody {
         &self,
         seq: AngleSequence,
         t: f64,
-        state: &[f64; 6],
+        state: &[f64; N],
     ) -> Result<[f64; 3], TopError> {
         self.check_all()?;
         check_state(state)?;
-        let q = [state[0], state[1], state[2]];
+        let q: [f64; 3] = std::array::from_fn(|k| state.get(k).copied().unwrap_or(f64::NAN));
         check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
         let a = self.accelerations_unchecked_in(seq, t, state);
         if a.iter().all(|v| v.is_finite()) {
@@ -309,9 +387,13 @@ pub trait TopDynamics: RigidBody {
         }
     }
 
-    /// The energy T + V in [`TopDynamics::SEQUENCE`].
+    /// The energy T + V in [`TopDynamics::SEQUENCE`]; NaN for a driven top (use
+    /// [`TopDynamics::energy_in`] with the whole state).
     fn energy(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> f64 {
-        self.energy_in(Self::SEQUENCE, &angle_state(q, q_dot))
+        match state_of(q, q_dot) {
+            Some(state) => self.energy_in(Self::SEQUENCE, &state),
+            None => f64::NAN,
+        }
     }
 
     /// The body angular velocity ω = B(q) q̇ of [`TopDynamics::SEQUENCE`].
@@ -340,12 +422,28 @@ pub fn angle_state(q: &[f64; 3], q_dot: &[f64; 3]) -> [f64; 6] {
     [q[0], q[1], q[2], q_dot[0], q_dot[1], q_dot[2]]
 }
 
-/// Checks that the angles and rates of an angle-form state are finite.
+/// `[q, q̇]` as the state of a top of `N` slots: `None` unless `N = 6` (a driven top's
+/// state holds its wheels' rates too, which `(q, q̇)` does not give).
+fn state_of<const N: usize>(q: &[f64; 3], q_dot: &[f64; 3]) -> Option<[f64; N]> {
+    (N == 6).then(|| {
+        let s = angle_state(q, q_dot);
+        std::array::from_fn(|k| s.get(k).copied().unwrap_or(f64::NAN))
+    })
+}
+
+/// Checks that the angles, rates and (for a driven top) wheel rates of an angle-form state
+/// are finite.
 ///
 /// # Errors
-/// [`TopError::NonFinite`] naming the angles q or the rates q̇.
-pub(crate) fn check_state(state: &[f64; 6]) -> Result<(), TopError> {
-    for (quantity, part) in [("angles q", &state[..3]), ("rates q̇", &state[3..])] {
+/// [`TopError::NonFinite`] naming the angles q, the rates q̇ or the rotor rates Ω.
+pub(crate) fn check_state(state: &[f64]) -> Result<(), TopError> {
+    let (angles, rest) = state.split_at(state.len().min(3));
+    let (rates, rotors) = rest.split_at(rest.len().min(3));
+    for (quantity, part) in [
+        ("angles q", angles),
+        ("rates q̇", rates),
+        ("rotor rates Ω", rotors),
+    ] {
         if !part.iter().all(|v| v.is_finite()) {
             return Err(TopError::NonFinite {
                 quantity,

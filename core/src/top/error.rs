@@ -75,6 +75,41 @@ pub enum TopError {
         /// The length of its axis.
         axis_norm: f64,
     },
+    /// With its driven wheels turning freely the body keeps the inertia I − Σ J â âᵀ about the
+    /// pivot, which must be positive definite: a wheel's J at least the body's own moment
+    /// about the wheel's axis leaves it none (the rule literals meet at compile time).
+    #[error(
+        "rotor {rotor}'s inertia is too large for the body: with its driven wheels turning freely the body keeps I − Σ J â âᵀ about the pivot, whose smallest principal moment is {smallest}; it must be positive"
+    )]
+    DrivenInertia {
+        /// The first driven rotor, by its index among every rotor declared, at which the
+        /// inertia stops being positive definite.
+        rotor: usize,
+        /// The smallest eigenvalue of I − Σ J â âᵀ up to that rotor (NaN if not finite).
+        smallest: f64,
+    },
+    /// [`super::ChartedTop::with_rotor_rates`] was given a number of driven rotors' rates
+    /// other than the top's, or one that is not finite.
+    #[error(
+        "the top has {expected} driven rotor(s), so it starts from {expected} finite rotor rate(s), but was given {given:?}"
+    )]
+    RotorRates {
+        /// How many driven rotors the top has.
+        expected: usize,
+        /// The rates given.
+        given: Vec<f64>,
+    },
+    /// A method over the angles and rates `(q, q̇)` alone was asked of a top with driven
+    /// rotors, whose equations read the wheels' rates too.
+    #[error(
+        "`{method}` takes the angles and rates alone, but this top has {rotors} driven rotor(s) whose rates are part of its state: use `{method}_in` with the whole state [q, q̇, Ω]"
+    )]
+    DrivenState {
+        /// The method asked.
+        method: &'static str,
+        /// How many driven rotors the top has.
+        rotors: usize,
+    },
     /// [`super::FastTop::of_top`] was asked of a top with more than gravity: the splitting
     /// models the weight alone (no rotor, damping or constant torque).
     #[error(
@@ -118,6 +153,27 @@ pub enum TopError {
 }
 
 impl TopError {
+    /// The driven rotors' rule: the top's inertia about the pivot stays positive definite as
+    /// each wheel's axial moment is taken out, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ; each rotor is (its index
+    /// among every rotor declared, its axis, its J). The derive's `check_parameters` calls it
+    /// for field values.
+    ///
+    /// # Errors
+    /// [`TopError::DrivenInertia`] naming the first rotor at which it fails.
+    pub fn check_driven_inertia(
+        inertia: &nalgebra::Matrix3<f64>,
+        rotors: &[(usize, [f64; 3], f64)],
+    ) -> Result<(), TopError> {
+        let wheels: Vec<([f64; 3], f64)> = rotors.iter().map(|&(_, a, j)| (a, j)).collect();
+        match crate::rigid::first_singular_driven(inertia, &wheels) {
+            Some((k, smallest)) => Err(TopError::DrivenInertia {
+                rotor: rotors.get(k).map_or(k, |r| r.0),
+                smallest,
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the setting or the body's quantity with
@@ -149,6 +205,7 @@ impl TopError {
                     ("rotor inertia".to_owned(), *inertia)
                 }
             }
+            TopError::DrivenInertia { smallest, .. } => ("rotor inertia".to_owned(), *smallest),
             _ => ("parameters".to_owned(), f64::NAN),
         };
         refused(named, &self)

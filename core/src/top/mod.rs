@@ -25,6 +25,7 @@
 mod angle_chart;
 mod charted_top;
 mod derivation;
+mod driven;
 mod dynamics;
 mod error;
 mod eulerian;
@@ -41,6 +42,7 @@ mod typeset;
 pub use angle_chart::AngleChart;
 pub use charted_top::ChartedTop;
 pub use derivation::TopDerivation;
+pub use driven::DrivenDerivation;
 pub use dynamics::{TopDynamics, angle_state};
 pub use error::TopError;
 pub use eulerian::EulerianTop;

@@ -61,33 +61,44 @@ pub struct TopQuantities<'a, T> {
     conserved: [bool; 3],
 }
 
-impl<'a, T: TopDynamics + RigidBody> TopQuantities<'a, T> {
+impl<'a, T> TopQuantities<'a, T> {
     /// The quantities of `top`.
-    pub fn new(top: &'a T) -> Self {
+    pub fn new<const N: usize>(top: &'a T) -> Self
+    where
+        T: TopDynamics<N>,
+    {
         let (q, q_dot) = PROBE;
-        let conserved = top.conserved_momenta(&q, &q_dot).map(|p| p.is_some());
+        // A driven top's wheels at a generic rate too.
+        let probe: [f64; N] = std::array::from_fn(|k| match k {
+            0..=2 => q[k],
+            3..=5 => q_dot[k - 3],
+            _ => 0.4 + 0.1 * k as f64,
+        });
+        let conserved = top.conserved_momenta_in(&probe).map(|p| p.is_some());
         Self { top, conserved }
     }
 }
 
-impl<T: TopDynamics> TopQuantities<'_, T> {
+impl<T> TopQuantities<'_, T> {
     /// The names of the angle-form state `[q, q̇]` of the declared chart, for
     /// [`Trajectory::set_state_names`](crate::ode::Trajectory::set_state_names): the angles,
     /// then `<angle>_dot`.
-    pub fn state_names() -> [String; 6] {
+    pub fn state_names<const N: usize>() -> [String; N]
+    where
+        T: TopDynamics<N>,
+    {
         let n = T::SEQUENCE.names();
-        [
-            n[0].to_string(),
-            n[1].to_string(),
-            n[2].to_string(),
-            format!("{}_dot", n[0]),
-            format!("{}_dot", n[1]),
-            format!("{}_dot", n[2]),
-        ]
+        std::array::from_fn(|k| match k {
+            0..=2 => n[k].to_string(),
+            3..=5 => format!("{}_dot", n[k - 3]),
+            _ => T::DRIVEN_ROTORS
+                .get(k - 6)
+                .map_or_else(|| format!("slot_{k}"), |r| (*r).to_string()),
+        })
     }
 }
 
-impl<T: TopDynamics + RigidBody> Quantities<[f64; 6]> for TopQuantities<'_, T> {
+impl<T: TopDynamics<N> + RigidBody, const N: usize> Quantities<[f64; N]> for TopQuantities<'_, T> {
     fn names(&self) -> Vec<String> {
         let mut names = vec!["energy".to_string(), "omega".to_string(), "L".to_string()];
         for (name, _) in T::SEQUENCE
@@ -101,10 +112,12 @@ impl<T: TopDynamics + RigidBody> Quantities<[f64; 6]> for TopQuantities<'_, T> {
         names
     }
 
-    fn evaluate(&mut self, _t: f64, y: &[f64; 6], out: &mut [f64]) {
-        let (q, q_dot) = ([y[0], y[1], y[2]], [y[3], y[4], y[5]]);
-        let omega = self.top.omega_from_rates(&q, &q_dot);
-        let momenta = self.top.conserved_momenta(&q, &q_dot);
+    fn evaluate(&mut self, _t: f64, y: &[f64; N], out: &mut [f64]) {
+        let slot = |k: usize| y.get(k).copied().unwrap_or(f64::NAN);
+        let q = [slot(0), slot(1), slot(2)];
+        let omega = self.top.rate_matrix_in(T::SEQUENCE, &q)
+            * nalgebra::Vector3::new(slot(3), slot(4), slot(5));
+        let momenta = self.top.conserved_momenta_in(y);
         let conserved = momenta
             .iter()
             .zip(self.conserved)
@@ -112,9 +125,9 @@ impl<T: TopDynamics + RigidBody> Quantities<[f64; 6]> for TopQuantities<'_, T> {
             // A scene conserves a momentum everywhere or nowhere; NaN would say otherwise.
             .map(|(p, _)| p.unwrap_or(f64::NAN));
         let values = [
-            self.top.energy(&q, &q_dot),
+            self.top.energy_in(T::SEQUENCE, y),
             omega.norm(),
-            (self.top.angular_momentum(&omega) + self.top.rotor_momentum()).norm(),
+            (self.top.angular_momentum(&omega) + self.top.rotor_momentum_in(y)).norm(),
         ]
         .into_iter()
         .chain(conserved);

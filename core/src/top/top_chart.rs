@@ -8,8 +8,9 @@ use super::error::TopError;
 use crate::ode::{OdeError, System};
 use crate::rigid::AngleSequence;
 
-/// One chart of a derived top as an ODE system with state `[q, q̇]`: use it with any
-/// stepper of [`crate::ode`], or two of them with [`super::ChartedTop`].
+/// One chart of a derived top as an ODE system with state `[q, q̇]` (`[q, q̇, Ω]` for a
+/// top with driven rotors, [`TopDynamics::rhs_in`]): use it with any stepper of
+/// [`crate::ode`], or two of them with [`super::ChartedTop`].
 ///
 /// The right-hand side is the generated q̈, unchecked: NaN at the chart's gimbal lock. Near
 /// the vertical, integrate [`TopChart::both`] with [`super::ChartedTop`].
@@ -49,9 +50,12 @@ pub struct TopChart<'a, T> {
     pub sequence: AngleSequence,
 }
 
-impl<'a, T: TopDynamics> TopChart<'a, T> {
+impl<'a, T> TopChart<'a, T> {
     /// The chart of the declared sequence.
-    pub fn declared(top: &'a T) -> Self {
+    pub fn declared<const N: usize>(top: &'a T) -> Self
+    where
+        T: TopDynamics<N>,
+    {
         TopChart {
             top,
             sequence: T::SEQUENCE,
@@ -59,7 +63,10 @@ impl<'a, T: TopDynamics> TopChart<'a, T> {
     }
 
     /// Both charts, the declared one first, for [`super::ChartedTop`].
-    pub fn both(top: &'a T) -> [Self; 2] {
+    pub fn both<const N: usize>(top: &'a T) -> [Self; 2]
+    where
+        T: TopDynamics<N>,
+    {
         [
             Self::declared(top),
             TopChart {
@@ -70,12 +77,10 @@ impl<'a, T: TopDynamics> TopChart<'a, T> {
     }
 }
 
-impl<T: TopDynamics> System<6> for TopChart<'_, T> {
+impl<T: TopDynamics<N>, const N: usize> System<N> for TopChart<'_, T> {
     #[inline]
-    fn rhs(&self, t: f64, y: &[f64; 6], dydt: &mut [f64; 6]) {
-        let a = self.top.accelerations_unchecked_in(self.sequence, t, y);
-        dydt[..3].copy_from_slice(&y[3..]);
-        dydt[3..].copy_from_slice(&a);
+    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
+        self.top.rhs_in(self.sequence, t, y, dydt);
     }
 
     /// The top's [`TopDynamics::check_all`]: body and settings, before any step.
@@ -84,22 +89,25 @@ impl<T: TopDynamics> System<6> for TopChart<'_, T> {
     }
 }
 
-impl<T: TopDynamics> AngleChart for TopChart<'_, T> {
+impl<T: TopDynamics<N>, const N: usize> AngleChart<N> for TopChart<'_, T> {
     fn sequence(&self) -> AngleSequence {
         self.sequence
     }
-    fn rotation_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        self.top
-            .rotation_in(self.sequence, &[state[0], state[1], state[2]])
+    fn rotation_at(&self, state: &[f64; N]) -> Matrix3<f64> {
+        self.top.rotation_in(self.sequence, &angles(state))
     }
-    fn rate_matrix_at(&self, state: &[f64; 6]) -> Matrix3<f64> {
-        self.top
-            .rate_matrix_in(self.sequence, &[state[0], state[1], state[2]])
+    fn rate_matrix_at(&self, state: &[f64; N]) -> Matrix3<f64> {
+        self.top.rate_matrix_in(self.sequence, &angles(state))
     }
-    fn energy_at(&self, state: &[f64; 6]) -> f64 {
+    fn energy_at(&self, state: &[f64; N]) -> f64 {
         self.top.energy_in(self.sequence, state)
     }
     fn check_all(&self) -> Result<(), TopError> {
         self.top.check_all()
     }
+}
+
+/// The angles q of a state.
+fn angles(state: &[f64]) -> [f64; 3] {
+    std::array::from_fn(|k| state.get(k).copied().unwrap_or(f64::NAN))
 }

@@ -1,7 +1,6 @@
 //! `rotor(axis = [x, y, z], inertia = J, rate = Ω)`: an internal wheel spinning at a constant
 //! rate relative to the body, shared by `#[free]` and `#[top]`; `rotor(axis = [x, y, z],
-//! inertia = J, torque = path)` (`#[free]` only): a wheel turned by a motor, its rate a state
-//! variable. Its values go through the
+//! inertia = J, torque = path)`: a wheel turned by a motor, its rate a state variable. Its values go through the
 //! same checker as every other value (units, fields, arithmetic), with the rules a rotor
 //! adds: a positive inertia and a non-zero axis, checked now for literals and by
 //! `check_parameters` at run time for fields.
@@ -44,7 +43,7 @@ pub fn written_as_setting() -> String {
     format!("`{}` is a part: write {}", keys::ROTOR, form())
 }
 
-/// A wheel turned by a motor, as `#[free]` declares it.
+/// A wheel turned by a motor, as `#[free]` and `#[top]` declare it.
 pub struct Driven {
     /// Its axis, description axes.
     pub axis: [ExprId; 3],
@@ -257,23 +256,9 @@ fn positive(ck: &mut Checker, value: &Expr) -> Option<ExprId> {
 }
 
 /// Statements for `check_parameters`: each rotor's inertia positive and axis non-zero for the
-/// current field values (all finite already), else `<error>::InvalidRotor`, with `error`
-/// the attribute's error enum (`FreeError`, `TopError`: both carry the variant).
-pub fn check_tokens(
-    low: &Lowering,
-    arena: &precess_core::sym::Arena,
-    rotors: &[Rotor],
-    error: &TokenStream,
-) -> TokenStream {
-    let indexed: Vec<(usize, [ExprId; 3], ExprId)> = rotors
-        .iter()
-        .enumerate()
-        .map(|(k, r)| (k, r.axis, r.inertia))
-        .collect();
-    check_tokens_indexed(low, arena, &indexed, error)
-}
-
-/// As [`check_tokens`], for rotors given as (declared index, axis, inertia).
+/// current field values (all finite already), else `<error>::InvalidRotor`, with `error` the
+/// attribute's error enum (`FreeError`, `TopError`: both carry the variant); the rotors given
+/// as (index among every rotor declared, axis, inertia).
 pub fn check_tokens_indexed(
     low: &Lowering,
     arena: &precess_core::sym::Arena,

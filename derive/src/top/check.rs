@@ -34,6 +34,11 @@ pub struct TopSettings {
     pub taylor: Option<usize>,
     /// Internal rotors at constant relative rates (the top is a gyrostat).
     pub rotors: Vec<Rotor>,
+    /// Each constant-rate rotor's index among every rotor declared.
+    pub rotor_index: Vec<usize>,
+    /// The rotors turned by motors, with their index among every rotor declared: their
+    /// rates are state variables, after `[q, q̇]`.
+    pub driven: Vec<(usize, crate::lang::rotor::Driven)>,
     /// The generated variational equations, if asked for.
     pub variational: Option<super::variational::VariationalKey>,
 }
@@ -71,6 +76,8 @@ pub fn check(
         angles: AngleSequence::Zxz,
         taylor: None,
         rotors: Vec::new(),
+        rotor_index: Vec::new(),
+        driven: Vec::new(),
         variational: None,
     };
     let in_top = format!("`#[{}]`", keys::TOP);
@@ -86,17 +93,23 @@ pub fn check(
     // The groups: rotors, each checked by the rules `#[free]` holds them to; the
     // variational group once every field the equations read is known, after the settings.
     let mut variational = Vec::new();
+    let mut declared_rotors = 0usize;
     for item in &items.items {
         if let Item::Group { name, keys } = item {
             if name == super::variational::VARIATIONAL {
                 variational.push((name, keys));
             } else if name == keys::ROTOR {
-                // A driven rotor is refused inside `check`: the top's state has no slot for
-                // its rate.
-                if let Some(crate::lang::rotor::Checked::Constant(rotor)) =
-                    crate::lang::rotor::check(ck, name, keys, &in_top, false)
-                {
-                    settings.rotors.push(rotor);
+                let index = declared_rotors;
+                declared_rotors += 1;
+                match crate::lang::rotor::check(ck, name, keys, &in_top, true) {
+                    Some(crate::lang::rotor::Checked::Constant(rotor)) => {
+                        settings.rotors.push(rotor);
+                        settings.rotor_index.push(index);
+                    }
+                    Some(crate::lang::rotor::Checked::Driven(driven)) => {
+                        settings.driven.push((index, *driven));
+                    }
+                    None => {}
                 }
             } else {
                 ck.cx.error_spanned_by(
@@ -189,13 +202,17 @@ pub fn check(
                     keys::TOP,
                     TOP_KEYS.join(", "),
                     keys::ROTOR,
-                    crate::lang::rotor::allowed_keys(false).join(", "),
+                    crate::lang::rotor::allowed_keys(true).join(", "),
                     keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
                 ),
             ),
         }
     }
-    let user = [(keys::TORQUE, settings.torque.is_some())];
+    // A motor is a user function too: its torque has no Taylor coefficients.
+    let user = [
+        (keys::TORQUE, settings.torque.is_some()),
+        (keys::TORQUE, !settings.driven.is_empty()),
+    ];
     settings.taylor = taylor.order(ck.cx, &user);
     for (k, (name, keys)) in variational.into_iter().enumerate() {
         if k > 0 {
@@ -203,12 +220,25 @@ pub fn check(
                 name,
                 format!("duplicate group `{name}(...)` in {in_top}: one set of variational equations per top"),
             );
+        } else if let Some((k, _)) = settings.driven.first() {
+            // The variational equations are over [q, q̇]; a driven top's state and its
+            // motors' derivatives are beyond them.
+            ck.cx.error_spanned_by(
+                name,
+                format!(
+                    "`{name}(...)` cannot be combined with a rotor driven by a motor (rotor {k}'s `{}`): the variational equations are derived over the state [q, q̇] of a top without motors; drop `{name}(...)` or give the rotor a constant `{} = Ω`",
+                    keys::TORQUE,
+                    keys::RATE
+                ),
+            );
         } else {
             settings.variational =
                 super::variational::check(ck, name, keys, settings.torque.is_some());
         }
     }
     // Every field the body and the top read is known by now.
+    // A driven rotor's rate is not among them: its slot is the const `ROTOR_k` and the
+    // printed equations name no symbol `rotor_k`, so a field of that name is harmless.
     let names = settings.angles.names().map(str::to_owned);
     let sequence = match settings.angles {
         AngleSequence::Zxz => "zxz",

@@ -38,7 +38,7 @@ fn scene(arena: &mut Arena, checked: &CheckedBody, settings: &TopSettings) -> To
     }
 }
 
-fn sequence_tokens(s: AngleSequence) -> TokenStream {
+pub(super) fn sequence_tokens(s: AngleSequence) -> TokenStream {
     match s {
         AngleSequence::Zxz => quote!(#Private::AngleSequence::Zxz),
         AngleSequence::Zyx => quote!(#Private::AngleSequence::Zyx),
@@ -95,7 +95,7 @@ impl ChartArms {
 }
 
 /// The declared user torque function, if any: how each method calls it into `__u`.
-struct UserCall(Option<syn::Path>);
+pub(super) struct UserCall(Option<syn::Path>);
 
 impl UserCall {
     /// The statements calling the function, or nothing: `setup` (which binds the attitude
@@ -106,7 +106,7 @@ impl UserCall {
     /// the path in the attribute, naming the expected and the found signature, rather than
     /// errors of the call spread over the derive. (The optimiser sees through the pointer: it
     /// is a constant.)
-    fn call(&self, setup: TokenStream, omega: TokenStream) -> TokenStream {
+    pub(super) fn call(&self, setup: TokenStream, omega: TokenStream) -> TokenStream {
         let Some(path) = &self.0 else {
             return TokenStream::new();
         };
@@ -139,29 +139,146 @@ pub fn expand(
         }
         scene.user_torque = Some(u);
     }
+    // A driven top's motor torques are read from the locals its motor calls bind.
+    let driven = (!settings.driven.is_empty())
+        .then(|| super::driven::DrivenInputs::new(arena, settings, &mut symbols));
+    if driven.is_some() {
+        super::driven::literal_inertia(cx, arena, checked, settings)?;
+    }
     let taylor_symbols = symbols.clone();
     let low = Lowering::new(cx, ident, symbols);
-    let methods = match methods(&low, arena, &scene, &user) {
-        Ok(methods) => methods,
-        Err(e) => {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the top's equations of motion: {e}"),
-            );
-            return None;
+    let failed = |e: &dyn std::fmt::Display| {
+        cx.error_spanned_by(
+            ident,
+            format!("cannot derive the top's equations of motion: {e}"),
+        );
+    };
+    // In the order a top without motors always derived them, so it emits what it did.
+    let (body, equations, lagrangian) = match &driven {
+        None => {
+            let (body, lagrangian) = undriven(&low, arena, &scene, &user)
+                .map_err(|e| failed(&e))
+                .ok()?;
+            let equations = super::equations::method(cx, ident, arena, &scene);
+            (body, equations, Some(lagrangian))
+        }
+        Some(inputs) => {
+            let methods = super::driven::methods(&low, arena, &scene, inputs, &user)
+                .map_err(|e| failed(&e))
+                .ok()?;
+            // The typeset equations are the effective scene's (see `TopScene::derive_driven`),
+            // rebuilt over Eulerian inputs made for them.
+            eulerian_inputs(arena);
+            let equations = super::equations::method(cx, ident, arena, &methods.scene);
+            (methods.tokens, equations, None)
         }
     };
-    let equations = super::equations::method(cx, ident, arena, &scene);
     let declared_t = sequence_tokens(scene.sequence);
     let parameters = top_parameters(&low, arena, settings);
     let beyond_gravity = beyond_gravity(settings);
-    let rotors = match rotor_methods(&low, arena, &scene) {
+    let rotors = match rotor_methods(&low, arena, &scene, settings) {
         Ok(rotors) => rotors,
         Err(e) => {
             cx.error_spanned_by(ident, format!("cannot derive the top's rotors: {e}"));
             return None;
         }
     };
+    // `taylor` and `variational(...)` are refused with a driven rotor (check.rs).
+    let extra = lagrangian.map(|(state, rhs)| {
+        let variational = settings.variational.as_ref().map(|key| {
+            super::variational::expand(cx, ident, arena, &taylor_symbols, (&state, &rhs), key)
+        });
+        // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
+        let taylor = settings.taylor.map(|order| {
+            crate::lang::taylor::expand_checked(
+                cx,
+                ident,
+                arena,
+                &taylor_symbols,
+                &state,
+                &rhs,
+                TokenStream::new(),
+                order,
+                quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+            )
+        });
+        quote! {
+            #taylor
+
+            #variational
+        }
+    });
+    let n = 6 + settings.driven.len();
+    // `TopDynamics` as a user writes it: without N unless the top has motors.
+    let dynamics = if driven.is_some() {
+        quote!(#p::TopDynamics<#n>)
+    } else {
+        quote!(#p::TopDynamics)
+    };
+    let slots = scene
+        .sequence
+        .names()
+        .into_iter()
+        .map(str::to_owned)
+        .chain(settings.driven.iter().map(|(k, _)| format!("rotor_{k}")));
+    let slots = slots.enumerate().map(|(k, name)| {
+        let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
+        let (doc, at) = if k < 3 {
+            (
+                format!(
+                    "The index of the angle `{name}` in q and q̇ of the declared chart (its rate is slot {} of the state [q, q̇]).",
+                    k + 3
+                ),
+                k,
+            )
+        } else {
+            (
+                format!("The slot of the driven rotor `{name}`'s rate Ω in the state [q, q̇, Ω]."),
+                k + 3,
+            )
+        };
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #at;
+        }
+    });
+    Some(quote! {
+        #extra
+
+        #[automatically_derived]
+        impl #ident {
+            #(#slots)*
+        }
+
+        #[automatically_derived]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
+        impl #dynamics for #ident {
+            const SEQUENCE: #p::AngleSequence = #declared_t;
+
+            const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond_gravity;
+
+            fn top_parameters(&self) -> #p::TopParameters #parameters
+
+            #rotors
+
+            #body
+
+            #equations
+        }
+    })
+}
+
+/// The methods of a top without motors over `[q, q̇]` (both charts, the declared chart's
+/// Jacobian and momenta, the Eulerian form), and the declared chart's state and right-hand
+/// side for `taylor` and `variational(...)`.
+#[allow(clippy::type_complexity)]
+fn undriven(
+    low: &Lowering,
+    arena: &mut Arena,
+    scene: &TopScene,
+    user: &UserCall,
+) -> Result<(TokenStream, (Vec<ExprId>, Vec<ExprId>)), LagrangeError> {
+    let p = Private;
     let Methods {
         arms:
             ChartArms {
@@ -174,123 +291,93 @@ pub fn expand(
         momenta,
         eulerian,
         lagrangian,
-    } = methods;
-    let variational = settings.variational.as_ref().map(|key| {
-        let (state, rhs) = &lagrangian;
-        super::variational::expand(cx, ident, arena, &taylor_symbols, (state, rhs), key)
-    });
-    // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
-    let taylor = settings.taylor.map(|order| {
-        let (state, rhs) = lagrangian;
-        crate::lang::taylor::expand_checked(
-            cx,
-            ident,
-            arena,
-            &taylor_symbols,
-            &state,
-            &rhs,
-            TokenStream::new(),
-            order,
-            quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
-        )
-    });
-    let angles = scene.sequence.names().into_iter().enumerate().map(|(k, name)| {
-        let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
-        let doc = format!(
-            "The index of the angle `{name}` in q and q̇ of the declared chart (its rate is slot {} of the state [q, q̇]).",
-            k + 3
-        );
-        quote! {
-            #[doc = #doc]
-            pub const #upper: usize = #k;
-        }
-    });
-    Some(quote! {
-        #taylor
-
-        #variational
-
-        #[automatically_derived]
-        impl #ident {
-            #(#angles)*
+    } = methods(low, arena, scene, user)?;
+    let body = quote! {
+        #[inline]
+        fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
+            match seq { #(#accel)* }
         }
 
-        #[automatically_derived]
-        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
-        impl #p::TopDynamics for #ident {
-            const SEQUENCE: #p::AngleSequence = #declared_t;
-
-            const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond_gravity;
-
-            fn top_parameters(&self) -> #p::TopParameters #parameters
-
-            #rotors
-
-            #[inline]
-            fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
-                match seq { #(#accel)* }
-            }
-
-            #[inline]
-            fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-                match seq { #(#rotation)* }
-            }
-
-            #[inline]
-            fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-                match seq { #(#rate_matrix)* }
-            }
-
-            #[inline]
-            fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; 6]) -> f64 {
-                match seq { #(#energy)* }
-            }
-
-            fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] #jacobian
-
-            fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [::core::option::Option<f64>; 3] #momenta
-
-            #[inline]
-            fn eulerian_rhs(
-                &self,
-                t: f64,
-                attitude: &#p::UnitQuaternion<f64>,
-                omega: &#p::Vector3<f64>,
-            ) -> #p::Vector3<f64> #eulerian
-
-            #equations
+        #[inline]
+        fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+            match seq { #(#rotation)* }
         }
-    })
+
+        #[inline]
+        fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+            match seq { #(#rate_matrix)* }
+        }
+
+        #[inline]
+        fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; 6]) -> f64 {
+            match seq { #(#energy)* }
+        }
+
+        fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] #jacobian
+
+        fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [::core::option::Option<f64>; 3] #momenta
+
+        #[inline]
+        fn eulerian_rhs(
+            &self,
+            t: f64,
+            attitude: &#p::UnitQuaternion<f64>,
+            omega: &#p::Vector3<f64>,
+        ) -> #p::Vector3<f64> #eulerian
+    };
+    Ok((body, lagrangian))
 }
 
-/// `ROTORS`, `rotor_momentum` and a `check_parameters` that judges the rotors' field values
-/// (rate finite, inertia positive, axis non-zero) before the settings; nothing without
-/// rotors, so the trait's defaults stand.
+/// `ROTORS`, `DRIVEN_ROTORS`, `rotor_momentum` and a `check_parameters` that judges the
+/// rotors' field values (a constant rate finite, every inertia positive and axis non-zero,
+/// the inertia left positive definite by the driven wheels) before the settings; nothing
+/// without rotors, so the trait's defaults stand.
 fn rotor_methods(
     low: &Lowering,
     arena: &mut Arena,
     scene: &TopScene,
+    settings: &TopSettings,
 ) -> Result<TokenStream, precess_core::sym::SymError> {
     let p = Private;
-    let Some(h) = scene.rotor_momentum(arena)? else {
+    let h = scene.rotor_momentum(arena)?;
+    if h.is_none() && settings.driven.is_empty() {
         return Ok(TokenStream::new());
-    };
-    let count = scene.rotors.len();
-    let Emitted { lets, outputs } = low.lower(arena, &h);
+    }
+    let count = scene.rotors.len() + settings.driven.len();
+    let momentum = h.map(|h| {
+        let Emitted { lets, outputs } = low.lower(arena, &h);
+        quote! {
+            fn rotor_momentum(&self) -> #p::Vector3<f64> {
+                #lets
+                #p::Vector3::new(#(#outputs),*)
+            }
+        }
+    });
     let error = quote!(#p::TopError);
-    let shapes = crate::lang::rotor::check_tokens(low, arena, &scene.rotors, &error);
+    let mut shapes: Vec<(usize, [ExprId; 3], ExprId)> = settings
+        .rotor_index
+        .iter()
+        .zip(&scene.rotors)
+        .map(|(&k, r)| (k, r.axis, r.inertia))
+        .collect();
+    shapes.extend(settings.driven.iter().map(|(k, d)| (*k, d.axis, d.inertia)));
+    let shapes = crate::lang::rotor::check_tokens_indexed(low, arena, &shapes, &error);
+    let driven_inertia = super::driven::inertia_check(low, arena, settings);
     let rates: Vec<ExprId> = scene.rotors.iter().map(|r| r.rate).collect();
     let Emitted {
         lets: rate_lets,
         outputs: rate_values,
     } = low.lower(arena, &rates);
+    let driven_names = settings.driven.iter().map(|(k, _)| format!("rotor_{k}"));
+    // Only for a driven top: without one the trait's default (none) stands.
+    let driven_names = (!settings.driven.is_empty())
+        .then(|| quote!(const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven_names),*];));
     Ok(quote! {
         const ROTORS: usize = #count;
 
-        fn rotor_momentum(&self) -> #p::Vector3<f64> {
-            #lets
-            #p::Vector3::new(#(#outputs),*)
-        }
+        #driven_names
+
+        #momentum
 
         fn check_parameters(&self) -> ::core::result::Result<(), #p::TopError> {
             #rate_lets
@@ -304,6 +391,7 @@ fn rotor_methods(
                 }
             )*
             #shapes
+            #driven_inertia
             self.top_parameters().check()
         }
     })
@@ -452,6 +540,15 @@ fn declared_chart(
     (jacobian, quote!({ #lets [#(#slots),*] }))
 }
 
+/// The input symbols `R{i}{j}` and `w{k}` of the Eulerian form, which `equations` typesets
+/// the scene over.
+fn eulerian_inputs(arena: &mut Arena) -> (Mat3, [ExprId; 3]) {
+    let rot: Mat3 =
+        std::array::from_fn(|i| std::array::from_fn(|j| arena.input(&format!("R{i}{j}"))));
+    let omega = [arena.input("w0"), arena.input("w1"), arena.input("w2")];
+    (rot, omega)
+}
+
 /// The Eulerian form ω̇(R, ω) over the attitude matrix and ω.
 fn eulerian(
     low: &Lowering,
@@ -460,9 +557,7 @@ fn eulerian(
     user: &UserCall,
 ) -> Result<TokenStream, LagrangeError> {
     let p = Private;
-    let rot: Mat3 =
-        std::array::from_fn(|i| std::array::from_fn(|j| arena.input(&format!("R{i}{j}"))));
-    let omega = [arena.input("w0"), arena.input("w1"), arena.input("w2")];
+    let (rot, omega) = eulerian_inputs(arena);
     let rhs = scene.eulerian_rhs(arena, &rot, &omega)?;
     let mut reads = Vec::new();
     for (i, (&w, row)) in omega.iter().zip(&rot).enumerate() {

@@ -1,13 +1,40 @@
 //! The stub `impl TopDynamics` emitted next to the errors when the struct declares a top, so code
 //! using the trait does not add errors to the real ones; with it the angle consts (`Top::THETA`)
-//! of the sequence `angles = ..` names, read from the tokens as written whatever else is wrong.
+//! of the sequence `angles = ..` names, read from the tokens as written whatever else is wrong,
+//! and for a top with motors `TopDynamics<N>` and the rotor slots (`Top::ROTOR_k`).
 
 use proc_macro2::{TokenStream, TokenTree};
 use quote::{format_ident, quote};
 use syn::{DeriveInput, Meta};
 
+use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::syntax::Item;
+
+/// `rotor_k` for each `rotor(...)` group of the `#[top]` attributes that has a `torque` key,
+/// k counting every rotor group, read from the syntax alone (as `#[free]`'s stub does).
+fn driven_names(input: &DeriveInput) -> Vec<String> {
+    let attrs: Vec<&syn::Attribute> = input
+        .attrs
+        .iter()
+        .filter(|a| a.path().is_ident(keys::TOP))
+        .collect();
+    let cx = Ctxt::new();
+    let parsed = super::attr::parse(&cx, &attrs);
+    let _ = cx.check();
+    parsed
+        .items
+        .iter()
+        .filter_map(|item| match item {
+            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
+            _ => None,
+        })
+        .enumerate()
+        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
+        .map(|(k, _)| format!("rotor_{k}"))
+        .collect()
+}
 
 /// A stub `impl TopDynamics` for `input`, and its angle consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -27,20 +54,38 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
                 pub const #upper: usize = #k;
             }
         });
+    let driven = driven_names(input);
+    // Unsuffixed, as the stub always wrote its 6.
+    let n = proc_macro2::Literal::usize_unsuffixed(6 + driven.len());
+    let rotors = driven.iter().enumerate().map(|(k, name)| {
+        let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
+        let slot = 6 + k;
+        quote! {
+            #[doc(hidden)]
+            pub const #upper: usize = #slot;
+        }
+    });
+    // The trait's default N without motors, as a user writes it.
+    let dynamics = if driven.is_empty() {
+        quote!(#p::TopDynamics)
+    } else {
+        quote!(#p::TopDynamics<#n>)
+    };
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {
             #(#angles)*
+            #(#rotors)*
         }
 
         #[automatically_derived]
-        impl #impl_generics #p::TopDynamics for #ident #ty_generics #where_clause {
+        impl #impl_generics #dynamics for #ident #ty_generics #where_clause {
             const SEQUENCE: #p::AngleSequence = #p::AngleSequence::Zxz;
             fn top_parameters(&self) -> #p::TopParameters { #stub }
-            fn accelerations_unchecked_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; 6]) -> [f64; 3] { #stub }
+            fn accelerations_unchecked_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; #n]) -> [f64; 3] { #stub }
             fn rotation_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
             fn rate_matrix_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
-            fn energy_in(&self, _: #p::AngleSequence, _: &[f64; 6]) -> f64 { #stub }
+            fn energy_in(&self, _: #p::AngleSequence, _: &[f64; #n]) -> f64 { #stub }
             fn angle_jacobian(&self, _: f64, _: &[f64; 3], _: &[f64; 3]) -> [[f64; 6]; 3] { #stub }
             fn conserved_momenta(&self, _: &[f64; 3], _: &[f64; 3]) -> [::core::option::Option<f64>; 3] { #stub }
             fn eulerian_rhs(&self, _: f64, _: &#p::UnitQuaternion<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }

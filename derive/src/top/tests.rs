@@ -132,3 +132,58 @@ fn field_settings_are_read_for_the_run_time_check() {
         "{parameters}"
     );
 }
+
+#[test]
+fn a_driven_top_emits_straight_line_code_over_its_whole_state() {
+    let code = expand(quote! {
+        #[rigid(body(mass = 1.0, at = [0.0, 0.0, 0.1], inertia = diag(0.05, 0.05, 0.02), about = pivot), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, rotor(axis = [0, 0, 1], inertia = 0.001, rate = 3), rotor(axis = [1, 0, 0], inertia = 0.002, torque = motor))]
+        struct Gyro;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    assert!(code.contains("TopDynamics < 7usize > for Gyro"), "{code}");
+    assert!(
+        code.contains("pub const ROTOR_1 : usize = 6usize"),
+        "{code}"
+    );
+    assert!(code.contains("DRIVEN_ROTORS : & 'static [& 'static str] = & [\"rotor_1\"]"));
+    let start = code.find("fn rhs_in").unwrap_or(0);
+    let end = code[start..]
+        .find("fn rotation_in")
+        .map_or(code.len(), |e| start + e);
+    let rhs = &code[start..end];
+    println!("rhs_in: {rhs}\n");
+    // The motor is bound to its documented signature and called once per chart; the rest is
+    // arithmetic: no loop, no branch.
+    assert!(
+        rhs.contains("fn (& Self , f64 , & [f64]) -> f64 = motor ;"),
+        "{rhs}"
+    );
+    assert_eq!(
+        rhs.matches("__motor (self , t , state)").count(),
+        2,
+        "{rhs}"
+    );
+    for word in [" for ", " while ", " loop ", " if "] {
+        assert!(!rhs.contains(word), "{word} in {rhs}");
+    }
+}
+
+#[test]
+fn a_top_without_motors_emits_no_driven_method() {
+    let code = expand(quote! {
+        #[rigid(body(mass = 1.0, at = [0.0, 0.0, 0.1], inertia = diag(0.05, 0.05, 0.02), about = pivot), pivot = [0.0, 0.0, 0.0])]
+        #[top(gravity = 9.81, rotor(axis = [0, 0, 1], inertia = 0.001, rate = 3))]
+        struct Held;
+    });
+    assert!(!code.contains("compile_error"), "{code}");
+    for word in [
+        "rhs_in",
+        "__motor",
+        "DRIVEN_ROTORS",
+        "TopDynamics <",
+        "ROTOR_",
+    ] {
+        assert!(!code.contains(word), "{word} in {code}");
+    }
+}

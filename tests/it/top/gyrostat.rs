@@ -73,14 +73,14 @@ struct Stopped;
 struct Wheelless;
 
 /// Goldstein's ZXZ body rates ω = B q̇, written out.
-fn b_zxz(q: &[f64; 3]) -> Matrix3<f64> {
+pub(super) fn b_zxz(q: &[f64; 3]) -> Matrix3<f64> {
     let (st, ct) = q[1].sin_cos();
     let (sp, cp) = q[2].sin_cos();
     Matrix3::new(st * sp, cp, 0.0, st * cp, -sp, 0.0, ct, 0.0, 1.0)
 }
 
 /// ω̇ = B q̈ + Ḃ q̇ for ZXZ, differentiated by hand.
-fn omega_dot_zxz(q: &[f64; 3], qd: &[f64; 3], qdd: &[f64; 3]) -> Vector3<f64> {
+pub(super) fn omega_dot_zxz(q: &[f64; 3], qd: &[f64; 3], qdd: &[f64; 3]) -> Vector3<f64> {
     let (st, ct) = q[1].sin_cos();
     let (sp, cp) = q[2].sin_cos();
     let [phd, thd, psd] = *qd;
@@ -109,7 +109,7 @@ fn volterra(
 }
 
 /// A state of the ZXZ chart away from its lock (|sin θ| ≥ 0.2).
-fn random_state(rng: &mut Rng) -> ([f64; 3], [f64; 3]) {
+pub(super) fn random_state(rng: &mut Rng) -> ([f64; 3], [f64; 3]) {
     let q = [
         rng.uniform(-3.0, 3.0),
         rng.uniform(0.2, 2.9),

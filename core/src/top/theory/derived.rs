@@ -8,7 +8,9 @@ use crate::top::dynamics::TopDynamics;
 use crate::top::error::TopError;
 
 /// [`TopDynamics::theory`]: the checks in the order a user would fix them.
-pub(crate) fn derived_theory<T: TopDynamics + ?Sized>(top: &T) -> Result<HeavyTopTheory, TopError> {
+pub(crate) fn derived_theory<T: TopDynamics<N> + ?Sized, const N: usize>(
+    top: &T,
+) -> Result<HeavyTopTheory, TopError> {
     top.check_all()?;
     if let Some(declared) = T::BEYOND_GRAVITY {
         return Err(TheoryError::OtherTorque { declared }.into());

@@ -1,0 +1,353 @@
+//! `#[top(rotor(axis = [..], inertia = J, torque = path))]`: a top whose wheels are turned by
+//! motors. Its state is `[q, q̇, Ω₀, …]`, `N = 6 + k`, and its equations come from
+//! `TopScene::derive_driven` (precess-core) in both charts; this module lowers them into
+//! the state-taking methods of `impl TopDynamics<N>`. Emitted only for a driven scene: a top
+//! without motors goes through `expand` alone and emits what it always did.
+
+use precess_core::codegen::Emitted;
+use precess_core::rigid::{AngleSequence, DrivenRotor, Rotor, total_momentum};
+use precess_core::sym::{Arena, ExprId};
+use precess_core::top::{DrivenDerivation, TopScene};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote, quote_spanned};
+use syn::spanned::Spanned;
+
+use super::check::TopSettings;
+use super::expand::{UserCall, sequence_tokens};
+use crate::lang::ctxt::Ctxt;
+use crate::lang::private::Private;
+use crate::lang::symbols::{Lowering, SymbolTokens};
+use crate::rigid::check::CheckedBody;
+
+/// The driven rotors as the derivation takes them: their motor torques input symbols read
+/// from the locals `__motor{k}` the motor calls bind, their rates Ω input symbols read from
+/// the state.
+pub(super) struct DrivenInputs {
+    rotors: Vec<DrivenRotor>,
+    rates: Vec<ExprId>,
+    motors: Vec<syn::Path>,
+}
+
+impl DrivenInputs {
+    /// Makes the symbols of `settings`' driven rotors, registering the motor torques in
+    /// `symbols` (every method reads them from the same locals).
+    pub fn new(arena: &mut Arena, settings: &TopSettings, symbols: &mut SymbolTokens) -> Self {
+        let mut out = DrivenInputs {
+            rotors: Vec::new(),
+            rates: Vec::new(),
+            motors: Vec::new(),
+        };
+        for (k, (declared, d)) in settings.driven.iter().enumerate() {
+            let u = arena.input(&format!("u_rotor_{declared}"));
+            let local = format_ident!("__motor{k}");
+            symbols.insert_expr(arena, u, quote!(#local));
+            out.rotors.push(DrivenRotor {
+                axis: d.axis,
+                inertia: d.inertia,
+                torque: u,
+            });
+            out.rates
+                .push(arena.input(&format!("Omega_rotor_{declared}")));
+            out.motors.push(d.torque.clone());
+        }
+        out
+    }
+
+    /// The state's length, 6 + the driven rotors.
+    pub fn state_len(&self) -> usize {
+        6 + self.rotors.len()
+    }
+
+    /// The statements binding each motor's torque `__motor{k}` from the state: the
+    /// function first bound to the documented fn pointer type, spanned on its path, so a
+    /// function of another signature is one error there.
+    fn calls(&self) -> TokenStream {
+        let calls = self.motors.iter().enumerate().map(|(k, path)| {
+            let local = format_ident!("__motor{k}");
+            let bind = quote_spanned! {path.span()=>
+                let __motor: fn(&Self, f64, &[f64]) -> f64 = #path;
+            };
+            quote!(#bind let #local: f64 = __motor(self, t, state);)
+        });
+        quote!(#(#calls)*)
+    }
+}
+
+/// The state-taking methods of a driven top, by chart.
+#[derive(Default)]
+struct Arms {
+    accel: Vec<TokenStream>,
+    rhs: Vec<TokenStream>,
+    energy: Vec<TokenStream>,
+    rotation: Vec<TokenStream>,
+    rate_matrix: Vec<TokenStream>,
+}
+
+/// The methods of `impl TopDynamics<N>` that a driven top generates in place of the
+/// angle-only ones, and the effective scene of the declared chart (whose equations
+/// `equations()` typesets).
+pub(super) struct DrivenMethods {
+    /// The methods.
+    pub tokens: TokenStream,
+    /// The declared chart's effective scene.
+    pub scene: TopScene,
+}
+
+/// Derives the driven scene in both charts and lowers every method over the whole state.
+pub(super) fn methods(
+    low: &Lowering,
+    arena: &mut Arena,
+    scene: &TopScene,
+    inputs: &DrivenInputs,
+    user: &UserCall,
+) -> Result<DrivenMethods, precess_core::lagrange::LagrangeError> {
+    let p = Private;
+    let n = inputs.state_len();
+    let mut arms = Arms::default();
+    let chart = |arena: &mut Arena, sequence: AngleSequence, arms: &mut Arms| {
+        let d = TopScene {
+            sequence,
+            ..scene.clone()
+        }
+        .derive_driven(arena, &inputs.rotors, &inputs.rates)?;
+        arms.push(low, arena, &d, inputs, user, n);
+        Ok::<_, precess_core::lagrange::LagrangeError>(d)
+    };
+    let zxz = chart(arena, AngleSequence::Zxz, &mut arms)?;
+    let zyx = chart(arena, AngleSequence::Zyx, &mut arms)?;
+    let declared = match scene.sequence {
+        AngleSequence::Zxz => zxz,
+        AngleSequence::Zyx => zyx,
+    };
+    let reads = state_reads(&declared, inputs);
+    let conserved: Vec<ExprId> = declared
+        .conserved_momenta
+        .iter()
+        .flatten()
+        .copied()
+        .collect();
+    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
+    let mut it = outputs.into_iter();
+    let slots = declared.conserved_momenta.iter().map(|m| match m {
+        Some(_) => {
+            let v = it.next();
+            quote!(::core::option::Option::Some(#v))
+        }
+        None => quote!(::core::option::Option::None),
+    });
+    let momenta_in = quote!({ #lets [#(#slots),*] });
+    // Every rotor's momentum at the state: the constant ones' and J Ω â of each driven one.
+    let all: Vec<Rotor> = scene
+        .rotors
+        .iter()
+        .copied()
+        .chain(
+            inputs
+                .rotors
+                .iter()
+                .zip(&inputs.rates)
+                .map(|(d, &rate)| d.at_rate(rate)),
+        )
+        .collect();
+    let h = total_momentum(arena, &all)
+        .map_err(|(_, e)| e)?
+        .unwrap_or([arena.zero(); 3]);
+    let Emitted { lets, outputs } = low.lower_reading(arena, &h, &reads);
+    let momentum_in = quote!({ #lets #p::Vector3::new(#(#outputs),*) });
+    let Arms {
+        accel,
+        rhs,
+        energy,
+        rotation,
+        rate_matrix,
+    } = arms;
+    let tokens = quote! {
+        #[inline]
+        fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n]) -> [f64; 3] {
+            match seq { #(#accel)* }
+        }
+
+        #[inline]
+        fn rhs_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n], __rate: &mut [f64; #n]) {
+            match seq { #(#rhs)* }
+        }
+
+        #[inline]
+        fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+            match seq { #(#rotation)* }
+        }
+
+        #[inline]
+        fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+            match seq { #(#rate_matrix)* }
+        }
+
+        #[inline]
+        fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; #n]) -> f64 {
+            match seq { #(#energy)* }
+        }
+
+        fn rotor_momentum_in(&self, state: &[f64; #n]) -> #p::Vector3<f64> #momentum_in
+
+        fn conserved_momenta_in(&self, state: &[f64; #n]) -> [::core::option::Option<f64>; 3] #momenta_in
+
+        /// A driven top's q̈ reads its wheels' rates, which (q, q̇) do not give: NaN.
+        fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] {
+            [[f64::NAN; 6]; 3]
+        }
+
+        /// A driven top's momenta read its wheels' rates: see `conserved_momenta_in`.
+        fn conserved_momenta(&self, q: &[f64; 3], q_dot: &[f64; 3]) -> [::core::option::Option<f64>; 3] {
+            [::core::option::Option::None; 3]
+        }
+
+        /// A driven top's ω̇ reads its wheels' rates and motors, which (R, ω) do not give: NaN.
+        fn eulerian_rhs(
+            &self,
+            t: f64,
+            attitude: &#p::UnitQuaternion<f64>,
+            omega: &#p::Vector3<f64>,
+        ) -> #p::Vector3<f64> {
+            #p::Vector3::from_element(f64::NAN)
+        }
+    };
+    Ok(DrivenMethods {
+        tokens,
+        scene: declared.scene,
+    })
+}
+
+/// The state symbols of `d` and how the methods read them: `state[k]`.
+fn state_reads(d: &DrivenDerivation, inputs: &DrivenInputs) -> Vec<(ExprId, TokenStream)> {
+    let c = d.effective.coords();
+    c.q.iter()
+        .chain(&c.rates)
+        .chain(&inputs.rates)
+        .enumerate()
+        .map(|(k, &e)| (e, quote!(state[#k])))
+        .collect()
+}
+
+impl Arms {
+    /// Adds the arms of the chart `d` was derived in.
+    fn push(
+        &mut self,
+        low: &Lowering,
+        arena: &mut Arena,
+        d: &DrivenDerivation,
+        inputs: &DrivenInputs,
+        user: &UserCall,
+        n: usize,
+    ) {
+        let p = Private;
+        let top = &d.effective;
+        let seq_t = sequence_tokens(top.sequence);
+        let reads = state_reads(d, inputs);
+        let user_call = user.call(
+            quote! {
+                let __q = [state[0], state[1], state[2]];
+                let __r = <Self as #p::TopDynamics<#n>>::rotation_in(self, #seq_t, &__q);
+                let __w = <Self as #p::TopDynamics<#n>>::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
+            },
+            quote!(&__w),
+        );
+        let motors = inputs.calls();
+        let Emitted { lets, outputs } = low.lower_reading(arena, &d.accel, &reads);
+        self.accel
+            .push(quote!(#seq_t => { #user_call #motors #lets [#(#outputs),*] }));
+        let rhs: Vec<ExprId> = d.accel.iter().chain(&d.rotor_accel).copied().collect();
+        let Emitted { lets, outputs } = low.lower_reading(arena, &rhs, &reads);
+        self.rhs.push(quote!(#seq_t => {
+            #user_call
+            #motors
+            #lets
+            *__rate = [state[3], state[4], state[5], #(#outputs),*];
+        }));
+        let Emitted { lets, outputs } = low.lower_reading(arena, &[d.energy], &reads);
+        self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
+        let angles: Vec<(ExprId, TokenStream)> =
+            (0..3).map(|k| (top.coords().q[k], quote!(q[#k]))).collect();
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rotation.as_flattened(), &angles);
+        self.rotation
+            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+        let Emitted { lets, outputs } =
+            low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
+        self.rate_matrix
+            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+    }
+}
+
+/// With literal values, the rule a driven rotor adds: the top's inertia about the pivot stays
+/// positive definite as each wheel's axial moment is taken out. An error spanned on the first
+/// rotor's `inertia` that breaks it; `None` after recording it.
+pub fn literal_inertia(
+    cx: &Ctxt,
+    arena: &Arena,
+    checked: &CheckedBody,
+    settings: &TopSettings,
+) -> Option<()> {
+    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
+    // Read only when every value is a literal: a field's rule is checked at run time.
+    let literal = || {
+        let inertia = &checked.body.props.inertia;
+        let mut m = precess_core::nalgebra::Matrix3::zeros();
+        for i in 0..3 {
+            for j in 0..3 {
+                m[(i, j)] = constant(inertia[i][j])?;
+            }
+        }
+        let mut wheels = Vec::new();
+        for (_, d) in &settings.driven {
+            let axis = [
+                constant(d.axis[0])?,
+                constant(d.axis[1])?,
+                constant(d.axis[2])?,
+            ];
+            wheels.push((axis, constant(d.inertia)?));
+        }
+        Some((m, wheels))
+    };
+    let Some((m, wheels)) = literal() else {
+        return Some(());
+    };
+    match precess_core::rigid::first_singular_driven(&m, &wheels) {
+        Some((k, smallest)) => {
+            let (declared, d) = &settings.driven[k];
+            cx.error_spanned_by(
+                &d.inertia_expr,
+                format!(
+                    "rotor {declared}'s `inertia` is too large for the top: with its driven wheels turning freely the top keeps I − Σ J â âᵀ about the pivot, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the top's own moment about the wheel's axis)"
+                ),
+            );
+            None
+        }
+        None => Some(()),
+    }
+}
+
+/// Statements for `check_parameters`: the top's inertia about the pivot stays positive
+/// definite with the driven wheels turning freely, for the current field values.
+pub fn inertia_check(low: &Lowering, arena: &Arena, settings: &TopSettings) -> TokenStream {
+    let p = Private;
+    if settings.driven.is_empty() {
+        return TokenStream::new();
+    }
+    let values: Vec<ExprId> = settings
+        .driven
+        .iter()
+        .flat_map(|(_, d)| d.axis.into_iter().chain([d.inertia]))
+        .collect();
+    let Emitted { lets, outputs } = low.lower(arena, &values);
+    let wheels = outputs.chunks(4).zip(&settings.driven).map(|(o, (k, _))| {
+        let (a, j) = (&o[..3], &o[3]);
+        quote!((#k, [#(#a),*], #j))
+    });
+    quote!({
+        #lets
+        #p::TopError::check_driven_inertia(
+            &#p::RigidBody::inertia(self),
+            &[#(#wheels),*],
+        )?;
+    })
+}
