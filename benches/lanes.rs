@@ -63,7 +63,33 @@ fn scalar_pass<S: TaylorSystem<N> + Copy, const N: usize>(
     t_end: f64,
     tol: f64,
 ) -> Vec<[f64; N]> {
-    let cfg = TaylorConfig::with_tol(tol, tol);
+    scalar_pass_with(sys, y0, n, t_end, TaylorConfig::with_tol(tol, tol))
+}
+
+/// The scalar runs without the defect check (`TaylorConfig::defect_check`), Jorba and Zou's
+/// rule alone, as heyoka runs it: its rate beside the checked one is the check's price, and
+/// its bits are the checked runs' when no step was taken again.
+fn unchecked_pass<S: TaylorSystem<N> + Copy, const N: usize>(
+    sys: S,
+    y0: impl Fn(usize) -> [f64; N],
+    n: usize,
+    t_end: f64,
+    tol: f64,
+) -> Vec<[f64; N]> {
+    let cfg = TaylorConfig {
+        defect_check: false,
+        ..TaylorConfig::with_tol(tol, tol)
+    };
+    scalar_pass_with(sys, y0, n, t_end, cfg)
+}
+
+fn scalar_pass_with<S: TaylorSystem<N> + Copy, const N: usize>(
+    sys: S,
+    y0: impl Fn(usize) -> [f64; N],
+    n: usize,
+    t_end: f64,
+    cfg: TaylorConfig,
+) -> Vec<[f64; N]> {
     (0..n)
         .map(|i| {
             let mut ode = Taylor::new(sys, 0.0, y0(i), cfg).unwrap();
@@ -158,6 +184,8 @@ fn table(n: usize, t_end: f64, cos_end: f64) {
         let s = best_of_3(|| scalar_pass(EulerPoisson, top0, n, t_end, tol));
         let reference = s.1.clone();
         row("heavy top", tol, "scalar", n, s, top_err, &reference);
+        let u = best_of_3(|| unchecked_pass(EulerPoisson, top0, n, t_end, tol));
+        row("heavy top", tol, "no check", n, u, top_err, &reference);
         let l4 = best_of_3(|| lane_pass::<_, 6, 4>(EulerPoisson, top0, n, t_end, tol));
         row("heavy top", tol, "lanes 4", n, l4, top_err, &reference);
         let l8 = best_of_3(|| lane_pass::<_, 6, 8>(EulerPoisson, top0, n, t_end, tol));
@@ -165,6 +193,8 @@ fn table(n: usize, t_end: f64, cos_end: f64) {
         let s = best_of_3(|| scalar_pass(FreeEquations, free0, n, 200.0, tol));
         let reference = s.1.clone();
         row("free body", tol, "scalar", n, s, free_err, &reference);
+        let u = best_of_3(|| unchecked_pass(FreeEquations, free0, n, 200.0, tol));
+        row("free body", tol, "no check", n, u, free_err, &reference);
         let l4 = best_of_3(|| lane_pass::<_, 3, 4>(FreeEquations, free0, n, 200.0, tol));
         row("free body", tol, "lanes 4", n, l4, free_err, &reference);
         let l8 = best_of_3(|| lane_pass::<_, 3, 8>(FreeEquations, free0, n, 200.0, tol));

@@ -33,68 +33,93 @@ const CUT: (f64, f64) = (0.1, 0.5);
 
 /// y_p′(h) = Σₖ₌₁ᵖ k c_k hᵏ⁻¹ for every component, and the same sum of the terms' sizes
 /// Σₖ k |c_k| hᵏ⁻¹, which bounds its rounding (an oscillating solution's terms can be far
-/// larger than their sum); by Horner with the order outside (the N chains overlap, as in the
-/// step's own sum).
-fn derivative<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], [f64; N]) {
-    let p = c.len().saturating_sub(1);
-    let (mut s, mut a) = ([0.0; N], [0.0; N]);
-    for k in (1..=p).rev() {
-        let kf = k as f64;
-        for ((si, ai), cki) in s.iter_mut().zip(a.iter_mut()).zip(&c[k]) {
-            *si = *si * h + kf * cki;
-            *ai = *ai * h + kf * cki.abs();
-        }
-    }
-    (s, a)
+/// larger than their sum).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Slope<const N: usize> {
+    value: [f64; N],
+    sizes: [f64; N],
 }
 
-/// The estimated error of the step from `(t, y)` by `h` with the jet `c` (orders 0 … p) to
-/// `y_new`, in units of the step's tolerance: ‖δ‖_w·h/(p + 1), the weights `w` those of the
+/// The step's increment Σₖ₌₁ᵖ c_k hᵏ and its [`Slope`] in one pass over the rows (p ≥ 1),
+/// by Horner with the order outside: the increment's operations are those of the step's own
+/// sum (`horner_increment`), so its bits are; the slope's two chains run beside it, where
+/// a second pass would wait on each chain again.
+pub(super) fn increment_and_slope<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], Slope<N>) {
+    let p = c.len().saturating_sub(1);
+    let Some(top) = c.get(p).filter(|_| p >= 1) else {
+        let zero = [0.0; N];
+        return (
+            zero,
+            Slope {
+                value: zero,
+                sizes: zero,
+            },
+        );
+    };
+    let pf = p as f64;
+    let mut s = *top;
+    let mut value = top.map(|v| pf * v);
+    let mut sizes = top.map(|v| pf * v.abs());
+    for k in (1..p).rev() {
+        let kf = k as f64;
+        for i in 0..N {
+            let cki = c[k][i];
+            s[i] = s[i] * h + cki;
+            value[i] = value[i] * h + kf * cki;
+            sizes[i] = sizes[i] * h + kf * cki.abs();
+        }
+    }
+    (s.map(|si| si * h), Slope { value, sizes })
+}
+
+/// The estimated error of the step of order p from `(t, y)` by `h` to `y_new`, whose
+/// polynomial has the slope `slope` at h, in units of the step's tolerance: ‖δ‖_w·h/(p + 1), the weights `w` those of the
 /// step rule, less the defect's own rounding. NaN when f or y_p′ is not finite (the caller
 /// treats it as a failed check, and the new state's own check names it).
 fn error<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
     ws: &mut S::Workspace,
-    c: &[[f64; N]],
+    p: usize,
     t_end: f64,
     h: f64,
     y_new: &[f64; N],
+    slope: &Slope<N>,
     w: &[f64; N],
 ) -> f64 {
     let mut rows = [[0.0; N]; 2];
     sys.coefficients_into(ws, t_end, y_new, 1, &mut rows);
-    let (slope, sizes) = derivative(c, h);
     let mut worst = 0.0f64;
     for i in 0..N {
-        let (f, d) = (rows[1][i], slope[i]);
-        let excess = ((f - d).abs() - ROUNDING * (f.abs() + sizes[i])) * w[i];
+        let (f, d) = (rows[1][i], slope.value[i]);
+        let excess = ((f - d).abs() - ROUNDING * (f.abs() + slope.sizes[i])) * w[i];
         if excess.is_nan() {
             return f64::NAN;
         }
         worst = worst.max(excess);
     }
-    let p = c.len().saturating_sub(1) as f64;
-    worst * h / (p + 1.0)
+    worst * h / (p as f64 + 1.0)
 }
 
-/// `None` when the step from `t` by `h` to `y_new` passes the defect check at tolerance
-/// `eps` with weights `w`; otherwise the shorter step to take again from the same jet.
+/// `None` when the step of order `p` from `t` by `h` to `y_new`, its polynomial's slope at
+/// h `slope`, passes the defect check at tolerance `eps` with weights `w`; otherwise the
+/// shorter step to take again from the same jet.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn shorter_step<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
     ws: &mut S::Workspace,
-    c: &[[f64; N]],
+    p: usize,
     t: f64,
     h: f64,
     y_new: &[f64; N],
+    slope: &Slope<N>,
     w: &[f64; N],
     eps: f64,
 ) -> Option<f64> {
-    let err = error(sys, ws, c, t + h, h, y_new, w);
+    let err = error(sys, ws, p, t + h, h, y_new, slope, w);
     if err <= eps {
         return None;
     }
-    let p = c.len().saturating_sub(1) as f64;
+    let p = p as f64;
     // A NaN estimate (f not finite at the new state) is cut by the most: the state itself is
     // refused by the commit if it is not finite, and a shorter step may stay where f is.
     let aim = 0.9 * (eps / err).powf(1.0 / (p + 1.0));
@@ -138,29 +163,36 @@ mod tests {
         c
     }
 
-    fn sum(c: &[[f64; 1]], h: f64) -> [f64; 1] {
-        [c.iter().rev().fold(0.0, |s, ck| s * h + ck[0])]
+    #[test]
+    fn the_slope_is_the_polynomial_s_and_the_increment_the_step_s() {
+        // c = (1, 2, −3): y′(h) = 2 − 6h, its terms' sizes 2 + 6h; the increment 2h − 3h².
+        let (inc, slope) = increment_and_slope(&[[1.0], [2.0], [-3.0]], 0.5);
+        assert_eq!((inc, slope.value, slope.sizes), ([0.25], [-1.0], [5.0]));
     }
 
-    #[test]
-    fn the_derivative_is_the_polynomial_s() {
-        // c = (1, 2, −3): y′(h) = 2 − 6h, its terms' sizes 2 + 6h.
-        assert_eq!(derivative(&[[1.0], [2.0], [-3.0]], 0.5), ([-1.0], [5.0]));
+    fn check(c: &[[f64; 1]], h: f64) -> Option<f64> {
+        let (inc, slope) = increment_and_slope(c, h);
+        let y = [c[0][0] + inc[0]];
+        shorter_step(
+            &Decay,
+            &mut (),
+            c.len() - 1,
+            0.0,
+            h,
+            &y,
+            &slope,
+            &[1.0],
+            1e-10,
+        )
     }
 
     #[test]
     fn an_ordinary_step_passes_and_a_long_one_is_cut() {
         // Order 13, ε = 1e-10: a step of 0.7 has an estimated error near 8e-14 and passes.
         let c = jet(13);
-        let w = [1.0];
-        let y = sum(&c, 0.7);
-        assert_eq!(
-            shorter_step(&Decay, &mut (), &c, 0.0, 0.7, &y, &w, 1e-10),
-            None
-        );
+        assert_eq!(check(&c, 0.7), None);
         // A step of 3 has an estimated error near 5e-5 ≫ 1e-10: cut to between 0.3 and 1.5.
-        let y = sum(&c, 3.0);
-        let cut = shorter_step(&Decay, &mut (), &c, 0.0, 3.0, &y, &w, 1e-10);
+        let cut = check(&c, 3.0);
         assert!(
             matches!(cut, Some(h) if (0.3..=1.5).contains(&h)),
             "{cut:?}"
@@ -172,9 +204,10 @@ mod tests {
         // At order 6 and h = 1 the truncation error of e^(−1) is ≈ 1/7! − 1/8! … = 1.76e-4;
         // the estimate ‖δ‖·h/(p + 1) should be within a factor 2 of it.
         let c = jet(6);
-        let y = sum(&c, 1.0);
+        let (inc, slope) = increment_and_slope(&c, 1.0);
+        let y = [1.0 + inc[0]];
         let truth = (y[0] - (-1.0f64).exp()).abs();
-        let est = error(&Decay, &mut (), &c, 1.0, 1.0, &y, &[1.0]);
+        let est = error(&Decay, &mut (), 6, 1.0, 1.0, &y, &slope, &[1.0]);
         assert!(
             est > 0.5 * truth && est < 2.0 * truth,
             "{est:e} against {truth:e}"

@@ -341,18 +341,23 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         // new state through Horner (h > 0), which is checked in `commit_step`, and an ∞ in
         // the rows the step size reads is caught by `radius::radius`.
         let (mut h, mut clamped) = self.step_size(&self.coeffs[..=p], rule, t_limit)?;
-        loop {
+        if !self.cfg.defect_check || self.cfg.fixed_step.is_some() {
             let increment = horner_increment(&self.coeffs[..=p], h);
             let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
-            match self.checked(p, h, &y_new, &rule)? {
+            return self.commit_step(h, p, clamped, t_limit, y_new, comp_new);
+        }
+        loop {
+            let (increment, slope) = defect::increment_and_slope(&self.coeffs[..=p], h);
+            let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
+            match self.checked(p, h, &y_new, &slope, &rule)? {
                 Some(shorter) => (h, clamped) = (shorter, false),
                 None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
             }
         }
     }
 
-    /// The defect check of a step of order `p` and size `h` summed to `y_new` (the `defect`
-    /// module), in both modes: `None` to keep the step, or the shorter step to take again
+    /// The defect check of a step of order `p` and size `h` summed to `y_new`, its
+    /// polynomial's slope at h `slope` (the `defect` module), in both modes: `None` to keep the step, or the shorter step to take again
     /// from the same jet (counted as a rejection). Off with [`TaylorConfig::defect_check`];
     /// a fixed step is the caller's choice and is not checked.
     ///
@@ -363,6 +368,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         p: usize,
         h: f64,
         y_new: &[f64; N],
+        slope: &defect::Slope<N>,
         rule: &StepRule<N>,
     ) -> Result<Option<f64>, OdeError> {
         // A non-finite new state (a NaN or ∞ in the jet) is the commit's to refuse, as
@@ -377,10 +383,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let shorter = defect::shorter_step(
             &self.sys,
             &mut self.ws,
-            &self.coeffs[..=p],
+            p,
             self.t,
             h,
             y_new,
+            slope,
             &rule.weights,
             rule.eps,
         );
