@@ -34,8 +34,11 @@ const CUT: (f64, f64) = (0.1, 0.5);
 /// y_p′(h) = Σₖ₌₁ᵖ k c_k hᵏ⁻¹ for every component, and the same sum of the terms' sizes
 /// Σₖ k |c_k| hᵏ⁻¹, which bounds its rounding (an oscillating solution's terms can be far
 /// larger than their sum).
+/// It belongs to the step of order `p` and size `h` it was summed for.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Slope<const N: usize> {
+    p: usize,
+    h: f64,
     value: [f64; N],
     sizes: [f64; N],
 }
@@ -48,13 +51,13 @@ pub(super) fn increment_and_slope<const N: usize>(c: &[[f64; N]], h: f64) -> ([f
     let p = c.len().saturating_sub(1);
     let Some(top) = c.get(p).filter(|_| p >= 1) else {
         let zero = [0.0; N];
-        return (
-            zero,
-            Slope {
-                value: zero,
-                sizes: zero,
-            },
-        );
+        let slope = Slope {
+            p,
+            h,
+            value: zero,
+            sizes: zero,
+        };
+        return (zero, slope);
     };
     let pf = p as f64;
     let mut s = *top;
@@ -69,19 +72,17 @@ pub(super) fn increment_and_slope<const N: usize>(c: &[[f64; N]], h: f64) -> ([f
             sizes[i] = sizes[i] * h + kf * cki.abs();
         }
     }
-    (s.map(|si| si * h), Slope { value, sizes })
+    (s.map(|si| si * h), Slope { p, h, value, sizes })
 }
 
-/// The estimated error of the step of order p from `(t, y)` by `h` to `y_new`, whose
-/// polynomial has the slope `slope` at h, in units of the step's tolerance: ‖δ‖_w·h/(p + 1), the weights `w` those of the
+/// The estimated error of the step to `y_new` at `t_end` whose polynomial has the slope
+/// `slope` at its end, in units of the step's tolerance: ‖δ‖_w·h/(p + 1), the weights `w` those of the
 /// step rule, less the defect's own rounding. NaN when f or y_p′ is not finite (the caller
 /// treats it as a failed check, and the new state's own check names it).
 fn error<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
     ws: &mut S::Workspace,
-    p: usize,
     t_end: f64,
-    h: f64,
     y_new: &[f64; N],
     slope: &Slope<N>,
     w: &[f64; N],
@@ -97,29 +98,27 @@ fn error<S: TaylorSystem<N>, const N: usize>(
         }
         worst = worst.max(excess);
     }
-    worst * h / (p as f64 + 1.0)
+    worst * slope.h / (slope.p as f64 + 1.0)
 }
 
-/// `None` when the step of order `p` from `t` by `h` to `y_new`, its polynomial's slope at
-/// h `slope`, passes the defect check at tolerance `eps` with weights `w`; otherwise the
-/// shorter step to take again from the same jet.
-#[allow(clippy::too_many_arguments)]
+/// `None` when the step from `t` to `y_new`, its polynomial's slope at its end `slope`,
+/// passes the defect check at tolerance `eps` with weights `w`; otherwise the shorter step
+/// to take again from the same jet.
 pub(super) fn shorter_step<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
     ws: &mut S::Workspace,
-    p: usize,
     t: f64,
-    h: f64,
     y_new: &[f64; N],
     slope: &Slope<N>,
     w: &[f64; N],
     eps: f64,
 ) -> Option<f64> {
-    let err = error(sys, ws, p, t + h, h, y_new, slope, w);
+    let h = slope.h;
+    let err = error(sys, ws, t + h, y_new, slope, w);
     if err <= eps {
         return None;
     }
-    let p = p as f64;
+    let p = slope.p as f64;
     // A NaN estimate (f not finite at the new state) is cut by the most: the state itself is
     // refused by the commit if it is not finite, and a shorter step may stay where f is.
     let aim = 0.9 * (eps / err).powf(1.0 / (p + 1.0));
@@ -173,17 +172,7 @@ mod tests {
     fn check(c: &[[f64; 1]], h: f64) -> Option<f64> {
         let (inc, slope) = increment_and_slope(c, h);
         let y = [c[0][0] + inc[0]];
-        shorter_step(
-            &Decay,
-            &mut (),
-            c.len() - 1,
-            0.0,
-            h,
-            &y,
-            &slope,
-            &[1.0],
-            1e-10,
-        )
+        shorter_step(&Decay, &mut (), 0.0, &y, &slope, &[1.0], 1e-10)
     }
 
     #[test]
@@ -207,7 +196,7 @@ mod tests {
         let (inc, slope) = increment_and_slope(&c, 1.0);
         let y = [1.0 + inc[0]];
         let truth = (y[0] - (-1.0f64).exp()).abs();
-        let est = error(&Decay, &mut (), 6, 1.0, 1.0, &y, &slope, &[1.0]);
+        let est = error(&Decay, &mut (), 1.0, &y, &slope, &[1.0]);
         assert!(
             est > 0.5 * truth && est < 2.0 * truth,
             "{est:e} against {truth:e}"

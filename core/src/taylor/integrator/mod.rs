@@ -349,15 +349,15 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         loop {
             let (increment, slope) = defect::increment_and_slope(&self.coeffs[..=p], h);
             let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
-            match self.checked(p, h, &y_new, &slope, &rule)? {
+            match self.checked(&y_new, &slope, &rule)? {
                 Some(shorter) => (h, clamped) = (shorter, false),
                 None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
             }
         }
     }
 
-    /// The defect check of a step of order `p` and size `h` summed to `y_new`, its
-    /// polynomial's slope at h `slope` (the `defect` module), in both modes: `None` to keep the step, or the shorter step to take again
+    /// The defect check of a step summed to `y_new`, its polynomial's slope at its end
+    /// `slope` (the `defect` module), in both modes: `None` to keep the step, or the shorter step to take again
     /// from the same jet (counted as a rejection). Off with [`TaylorConfig::defect_check`];
     /// a fixed step is the caller's choice and is not checked.
     ///
@@ -365,8 +365,6 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// [`OdeError::StepSizeUnderflow`] when the shorter step no longer changes t.
     fn checked(
         &mut self,
-        p: usize,
-        h: f64,
         y_new: &[f64; N],
         slope: &defect::Slope<N>,
         rule: &StepRule<N>,
@@ -383,9 +381,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let shorter = defect::shorter_step(
             &self.sys,
             &mut self.ws,
-            p,
             self.t,
-            h,
             y_new,
             slope,
             &rule.weights,
