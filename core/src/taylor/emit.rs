@@ -154,7 +154,7 @@ impl Tape {
     /// N]]`.
     ///
     /// `None` for a tape with a primitive function ([`SeriesOp::Func`], whose emitted code is
-    /// written for `f64`) or with [`OUTLINE_KERNELS_FROM_SUMS`] sums or more (the lanes
+    /// written for `f64`) or with `OUTLINE_KERNELS_FROM_SUMS` (512) sums or more (the lanes
     /// multiply a body the compiler already struggles with): such a scene keeps its scalar
     /// recurrences only.
     ///

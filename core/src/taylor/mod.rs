@@ -157,7 +157,7 @@ pub trait TaylorSystem<const N: usize> {
     }
 
     /// Checks the system's parameters under the rules of its scene, once, when the
-    /// [`Taylor`](crate::taylor::Taylor) integrator is built or restarted: the same hook as
+    /// [`Taylor`] integrator is built or restarted: the same hook as
     /// [`System::check_parameters`](crate::ode::System::check_parameters). The default has
     /// nothing to check; the derived scenes implement it with their own checks.
     ///
