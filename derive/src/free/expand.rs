@@ -485,50 +485,18 @@ pub(super) fn slot_consts(ident: &syn::Ident, driven: &[String]) -> Vec<TokenStr
         .collect()
 }
 
-/// With literal values, the rule a driven rotor adds: the body's inertia about its centre of
-/// mass stays positive definite as each wheel's axial moment is taken out. An error spanned on
-/// the first rotor's `inertia` that breaks it; `None` after recording it.
+/// With literal values, the rule a driven rotor adds (`lang::rotor`'s): the body's inertia
+/// about its centre of mass stays positive definite as each wheel's axial moment is taken out.
 fn literal_driven_inertia(
     cx: &crate::lang::ctxt::Ctxt,
     arena: &Arena,
     checked: &CheckedBody,
     settings: &FreeSettings,
 ) -> Option<()> {
-    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
-    // Read only when every value is a literal: a field's rule is checked at run time.
-    let literal = || {
-        let inertia = &checked.body.props.inertia_cm;
-        let mut m = precess_core::nalgebra::Matrix3::zeros();
-        for i in 0..3 {
-            for j in 0..3 {
-                m[(i, j)] = constant(inertia[i][j])?;
-            }
-        }
-        let mut wheels = Vec::new();
-        for (_, d) in &settings.driven {
-            let axis = [
-                constant(d.axis[0])?,
-                constant(d.axis[1])?,
-                constant(d.axis[2])?,
-            ];
-            wheels.push((axis, constant(d.inertia)?));
-        }
-        Some((m, wheels))
+    let about = crate::lang::rotor::InertiaAbout {
+        body: "body",
+        point: "its centre of mass",
     };
-    let Some((m, wheels)) = literal() else {
-        return Some(());
-    };
-    match precess_core::rigid::first_singular_driven(&m, &wheels) {
-        Some((k, smallest)) => {
-            let (declared, d) = &settings.driven[k];
-            cx.error_spanned_by(
-                &d.inertia_expr,
-                format!(
-                    "rotor {declared}'s `inertia` is too large for the body: with its driven wheels turning freely the body keeps I − Σ J â âᵀ about its centre of mass, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the body's own moment about the wheel's axis)"
-                ),
-            );
-            None
-        }
-        None => Some(()),
-    }
+    let inertia = &checked.body.props.inertia_cm;
+    crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, about)
 }

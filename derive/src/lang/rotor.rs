@@ -7,12 +7,13 @@
 
 use precess_core::codegen::Emitted;
 use precess_core::rigid::Rotor;
-use precess_core::sym::ExprId;
+use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::{Expr, Ident};
 
 use crate::lang::check::Checker;
+use crate::lang::ctxt::Ctxt;
 use crate::lang::keys::{self, ROTOR_KEYS};
 use crate::lang::symbols::Lowering;
 use crate::lang::syntax::KeyValue;
@@ -288,4 +289,62 @@ pub fn check_tokens_indexed(
         }
     });
     quote!({ #lets #(#checks)* })
+}
+
+/// Where the driven-rotor rule of [`literal_driven_inertia`] is read: the scene's word for
+/// the body (`"top"`, `"body"`) and the point its inertia is about (`"the pivot"`, `"its
+/// centre of mass"`), for the message.
+pub struct InertiaAbout<'a> {
+    /// The scene's word for the body.
+    pub body: &'a str,
+    /// The point the inertia is about.
+    pub point: &'a str,
+}
+
+/// With literal values, the rule driven rotors add in every scene that has them: the body's
+/// `inertia` (about `about.point`) stays positive definite as each wheel's axial moment is
+/// taken out, I − Σ J â âᵀ. An error spanned on the first rotor's `inertia` that breaks it;
+/// `None` after recording it. A value that reads a field is left to the generated run-time
+/// check.
+pub fn literal_driven_inertia(
+    cx: &Ctxt,
+    arena: &Arena,
+    inertia: &[[ExprId; 3]; 3],
+    driven: &[(usize, Driven)],
+    about: InertiaAbout<'_>,
+) -> Option<()> {
+    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
+    let literal = || {
+        let mut m = precess_core::nalgebra::Matrix3::zeros();
+        for i in 0..3 {
+            for j in 0..3 {
+                m[(i, j)] = constant(inertia[i][j])?;
+            }
+        }
+        let mut wheels = Vec::new();
+        for (_, d) in driven {
+            let axis = [
+                constant(d.axis[0])?,
+                constant(d.axis[1])?,
+                constant(d.axis[2])?,
+            ];
+            wheels.push((axis, constant(d.inertia)?));
+        }
+        Some((m, wheels))
+    };
+    let Some((m, wheels)) = literal() else {
+        return Some(());
+    };
+    let Some((k, smallest)) = precess_core::rigid::first_singular_driven(&m, &wheels) else {
+        return Some(());
+    };
+    let (declared, d) = &driven[k];
+    let InertiaAbout { body, point } = about;
+    cx.error_spanned_by(
+        &d.inertia_expr,
+        format!(
+            "rotor {declared}'s `inertia` is too large for the {body}: with its driven wheels turning freely the {body} keeps I − Σ J â âᵀ about {point}, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the {body}'s own moment about the wheel's axis)"
+        ),
+    );
+    None
 }

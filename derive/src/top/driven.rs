@@ -278,52 +278,20 @@ impl Arms {
     }
 }
 
-/// With literal values, the rule a driven rotor adds: the top's inertia about the pivot stays
-/// positive definite as each wheel's axial moment is taken out. An error spanned on the first
-/// rotor's `inertia` that breaks it; `None` after recording it.
+/// With literal values, the rule a driven rotor adds (`lang::rotor`'s): the top's inertia
+/// about the pivot stays positive definite as each wheel's axial moment is taken out.
 pub fn literal_inertia(
     cx: &Ctxt,
     arena: &Arena,
     checked: &CheckedBody,
     settings: &TopSettings,
 ) -> Option<()> {
-    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
-    // Read only when every value is a literal: a field's rule is checked at run time.
-    let literal = || {
-        let inertia = &checked.body.props.inertia;
-        let mut m = precess_core::nalgebra::Matrix3::zeros();
-        for i in 0..3 {
-            for j in 0..3 {
-                m[(i, j)] = constant(inertia[i][j])?;
-            }
-        }
-        let mut wheels = Vec::new();
-        for (_, d) in &settings.driven {
-            let axis = [
-                constant(d.axis[0])?,
-                constant(d.axis[1])?,
-                constant(d.axis[2])?,
-            ];
-            wheels.push((axis, constant(d.inertia)?));
-        }
-        Some((m, wheels))
+    let about = crate::lang::rotor::InertiaAbout {
+        body: "top",
+        point: "the pivot",
     };
-    let Some((m, wheels)) = literal() else {
-        return Some(());
-    };
-    match precess_core::rigid::first_singular_driven(&m, &wheels) {
-        Some((k, smallest)) => {
-            let (declared, d) = &settings.driven[k];
-            cx.error_spanned_by(
-                &d.inertia_expr,
-                format!(
-                    "rotor {declared}'s `inertia` is too large for the top: with its driven wheels turning freely the top keeps I − Σ J â âᵀ about the pivot, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the top's own moment about the wheel's axis)"
-                ),
-            );
-            None
-        }
-        None => Some(()),
-    }
+    let inertia = &checked.body.props.inertia;
+    crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, about)
 }
 
 /// Statements for `check_parameters`: the top's inertia about the pivot stays positive
