@@ -2,6 +2,7 @@
 
 pub mod body;
 pub mod eulerian;
+pub mod flow;
 pub mod free_bodies;
 pub mod latex;
 pub mod mechanism;
