@@ -23,7 +23,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use precess::mechanism::{JointKind, MechanismScene, Parent, Route};
+use precess::mechanism::Route;
 use precess::ode::{AdaptiveConfig, Dop853, System};
 use precess::prelude::*;
 use precess::sym::Arena;
@@ -211,28 +211,7 @@ fn interpreted_pendulum(
     tangents: usize,
     sensitivities: &[&str],
 ) -> VariationalEquations {
-    let (o, z) = (a.one(), a.zero());
-    let mut scene = MechanismScene::new();
-    for i in 0..2 {
-        let parent = if i == 0 {
-            Parent::Ground
-        } else {
-            Parent::Body(0)
-        };
-        let hinge = JointKind::Revolute { axis: [o, z, z] };
-        let name = format!("phi{i}");
-        let mut b = MechanismScene::body(a, &format!("bob{i}"), parent, hinge, &[&name]);
-        b.mass = a.parameter(&format!("m{i}"));
-        let l = a.parameter(&format!("l{i}"));
-        b.center = [z, z, a.neg(l)];
-        if i == 1 {
-            let l0 = a.parameter("l0");
-            b.joint.at = [z, z, a.neg(l0)];
-        }
-        scene.bodies.push(b);
-    }
-    let g = a.parameter("g");
-    scene.gravity = Some([z, z, a.neg(g)]);
+    let scene = precess_testkit::scenes::double_pendulum(a, None);
     let derivation = scene.derive(a, Route::Auto).expect("the pendulum derives");
     VariationalEquations::from_mechanism(a, &derivation, tangents, sensitivities)
         .expect("the equations build")

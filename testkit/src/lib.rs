@@ -5,5 +5,6 @@
 
 pub mod bicycle;
 pub mod rng;
+pub mod scenes;
 pub mod systems;
 pub mod work_precision;
