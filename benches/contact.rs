@@ -207,6 +207,7 @@ fn scene(a: &mut Arena, which: &str) -> ContactScene {
 fn rolling_state<D: ContactDynamics>(body: &D) -> [f64; STATE_LEN] {
     let attitude = nalgebra::UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1);
     body.rolling_state([0.0, 0.0], &attitude, &Vector3::new(0.4, -0.7, -5.0))
+        .unwrap()
 }
 
 fn contact(c: &mut Criterion) {

@@ -38,7 +38,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let model = Ball;
 
     let q0 = UnitQuaternion::from_euler_angles(0.4, -0.2, 0.3);
-    let y0 = model.rolling_state([0.0, 0.0], &q0, &Vector3::new(4.0, -7.0, 9.0));
+    let y0 = model.rolling_state([0.0, 0.0], &q0, &Vector3::new(4.0, -7.0, 9.0))?;
     let t_end = 100.0;
     let run = sample(&model, y0, 0.005, t_end, 1e-13)?;
 

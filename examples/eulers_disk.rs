@@ -120,7 +120,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let q = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(
         Matrix3::from_columns(&[u, t, n]),
     ));
-    let y0 = model.rolling_state([0.0, 0.0], &q, &(q.inverse() * s.angular_velocity(0.0)));
+    let y0 = model.rolling_state([0.0, 0.0], &q, &(q.inverse() * s.angular_velocity(0.0)))?;
     let sys = Settling {
         model: Disk,
         theory,

@@ -62,7 +62,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let tilt = 0.5_f64.to_radians();
     let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), tilt)
         * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), tilt);
-    let y0 = model.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, -5.0));
+    let y0 = model.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, -5.0))?;
     let t_end = 60.0;
     let run = sample(&model, y0, 2.5e-4, t_end, 1e-12)?;
     if let Some(t) = run.lift_off {

@@ -42,7 +42,7 @@ fn state(model: &Disk, s: &DiskState) -> [f64; STATE_LEN] {
     let rot = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[u, t, n]));
     let q = UnitQuaternion::from_rotation_matrix(&rot);
     let w_body = q.inverse() * s.angular_velocity(0.0);
-    model.rolling_state([0.0, 0.0], &q, &w_body)
+    model.rolling_state([0.0, 0.0], &q, &w_body)?
 }
 
 /// The lean θ of a state: the disk's axis n has n_z = −sin θ.

@@ -170,6 +170,7 @@ mod contact {
     mod reference;
     mod rolling_disk;
     mod routh;
+    mod run_loop;
     mod stick_slip;
     mod support;
     mod tippe_top;

@@ -33,21 +33,7 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
             law: law.name(),
         });
     }
-    let parts: [(&'static str, usize, usize); 4] = [
-        ("position", layout::POSITION, 2),
-        ("velocity", layout::VELOCITY, 2),
-        ("attitude quaternion", layout::QUATERNION, 4),
-        ("omega", layout::OMEGA, 3),
-    ];
-    for (quantity, at, len) in parts {
-        let values = &y[at..at + len];
-        if values.iter().any(|v| !v.is_finite()) {
-            return Err(ContactError::NonFinite {
-                quantity,
-                values: values.to_vec(),
-            });
-        }
-    }
+    check_finite_parts(y)?;
     let at = layout::QUATERNION;
     let quaternion = [y[at], y[at + 1], y[at + 2], y[at + 3]];
     let norm = quaternion.iter().map(|c| c * c).sum::<f64>().sqrt();
@@ -58,26 +44,7 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
             tolerance: QUATERNION_TOLERANCE,
         });
     }
-    let gamma = attitude_of(y).inverse_transform_vector(&Vector3::z());
-    match d.surface_kind() {
-        kind @ (SurfaceKind::DiskRim | SurfaceKind::Torus) => {
-            let tilt = gamma.x.hypot(gamma.y).min(1.0).asin();
-            if tilt < MIN_TILT {
-                return Err(ContactError::FlatDisk {
-                    surface: kind.name(),
-                    tilt,
-                    minimum: MIN_TILT,
-                });
-            }
-        }
-        SurfaceKind::Paraboloid if gamma.z <= 0.0 => {
-            return Err(ContactError::PastParaboloidRim {
-                n3: -gamma.z,
-                maximum: 0.0,
-            });
-        }
-        _ => {}
-    }
+    check_placement(d, y)?;
     if phase == Phase::Rolling {
         let c = d.contact(y);
         // The contact velocity from the state is v_state + R(ω × r) horizontally: zero when
@@ -97,6 +64,61 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
                 tolerance,
             });
         }
+    }
+    Ok(())
+}
+
+/// Every part of `y` finite.
+///
+/// # Errors
+/// [`ContactError::NonFinite`] naming the first part that is not.
+pub(crate) fn check_finite_parts(y: &[f64; STATE_LEN]) -> Result<(), ContactError> {
+    let parts: [(&'static str, usize, usize); 4] = [
+        ("position", layout::POSITION, 2),
+        ("velocity", layout::VELOCITY, 2),
+        ("attitude quaternion", layout::QUATERNION, 4),
+        ("omega", layout::OMEGA, 3),
+    ];
+    for (quantity, at, len) in parts {
+        let values = &y[at..at + len];
+        if values.iter().any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite {
+                quantity,
+                values: values.to_vec(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Whether the support map can place the contact at `y`'s attitude: a disk rim or torus not
+/// lying flat, a paraboloid whose bowl faces the table.
+///
+/// # Errors
+/// [`ContactError::FlatDisk`], [`ContactError::PastParaboloidRim`].
+pub(crate) fn check_placement<D: ContactDynamics + ?Sized>(
+    d: &D,
+    y: &[f64; STATE_LEN],
+) -> Result<(), ContactError> {
+    let gamma = attitude_of(y).inverse_transform_vector(&Vector3::z());
+    match d.surface_kind() {
+        kind @ (SurfaceKind::DiskRim | SurfaceKind::Torus) => {
+            let tilt = gamma.x.hypot(gamma.y).min(1.0).asin();
+            if tilt < MIN_TILT {
+                return Err(ContactError::FlatDisk {
+                    surface: kind.name(),
+                    tilt,
+                    minimum: MIN_TILT,
+                });
+            }
+        }
+        SurfaceKind::Paraboloid if gamma.z <= 0.0 => {
+            return Err(ContactError::PastParaboloidRim {
+                n3: -gamma.z,
+                maximum: 0.0,
+            });
+        }
+        _ => {}
     }
     Ok(())
 }

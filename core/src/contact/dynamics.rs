@@ -5,6 +5,7 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
+use super::checks::ContactValues;
 use super::error::ContactError;
 use super::state::{STATE_LEN, layout};
 use super::surface::SurfaceKind;
@@ -149,6 +150,13 @@ pub trait ContactDynamics {
     /// [`ContactError::CenterOutsideSurface`].
     fn check_parameters(&self) -> Result<(), ContactError>;
 
+    /// The values the parameters' rules are checked on ([`ContactValues`]): the mass, the
+    /// centre of mass, the inertia about it, gravity, the surface and the law's
+    /// coefficients, read from the parameters as they stand (unchecked: see
+    /// [`ContactDynamics::check_parameters`]). A run reads the mass properties from here
+    /// once, for the impulse of a slip that stops and the normal force's denominator.
+    fn values(&self) -> ContactValues;
+
     /// Checks a state for `phase`: finite, a unit quaternion (within 1e-9), a contact the
     /// support map can place, and under rolling a horizontal velocity that does not slip.
     ///
@@ -188,7 +196,28 @@ pub trait ContactDynamics {
     /// The state array of a body rolling without slip: (vx, vy) from the constraint,
     /// −R(ω × r) horizontally, at horizontal `position` with `attitude` (description →
     /// space) and `omega` (description axes).
+    ///
+    /// # Errors
+    /// [`ContactError::NonFinite`] for a NaN or infinite position or ω;
+    /// [`ContactError::FlatDisk`] for a disk rim or torus lying flat and
+    /// [`ContactError::PastParaboloidRim`] for a paraboloid that cannot touch the table at
+    /// that attitude (the support map cannot place the contact, so the velocity rolling
+    /// needs does not exist).
     fn rolling_state(
+        &self,
+        position: [f64; 2],
+        attitude: &UnitQuaternion<f64>,
+        omega: &Vector3<f64>,
+    ) -> Result<[f64; STATE_LEN], ContactError> {
+        let y = self.rolling_state_unchecked(position, attitude, omega);
+        super::checks::check_placement(self, &y)?;
+        super::checks::check_finite_parts(&y)?;
+        Ok(y)
+    }
+
+    /// [`ContactDynamics::rolling_state`] without its checks: NaN velocities where the
+    /// support map cannot place the contact.
+    fn rolling_state_unchecked(
         &self,
         position: [f64; 2],
         attitude: &UnitQuaternion<f64>,

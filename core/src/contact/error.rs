@@ -138,6 +138,69 @@ pub enum ContactError {
         /// The right-hand side.
         values: Vec<f64>,
     },
+    /// A run was started with the body pulled onto the table: the normal force its phase
+    /// needs at the start is negative, so it would leave the table at once. No state with
+    /// N < 0 is a state of a body on a table.
+    #[error(
+        "the normal force at the start is N = {normal} N under {phase:?}: negative, so the \
+         body would leave the table at once (a body on a table needs N ≥ 0); start it where \
+         the table pushes"
+    )]
+    NotPressed {
+        /// The phase asked for.
+        phase: Phase,
+        /// The normal force there.
+        normal: f64,
+    },
+    /// A sliding state under Coulomb friction where the normal force has no consistent
+    /// value (Painlevé's paradox): the denominator 1 − M (γ × r)·I⁻¹(r × (γ − μ û)) of N is
+    /// not positive, so the rigid-body equations give no (or no unique) N.
+    #[error(
+        "Painlevé's paradox at t = {t}: under Coulomb friction (μ = {mu}) the normal force's \
+         denominator is {denominator} ≤ 0, so the rigid body on the table has no consistent \
+         normal force (N = {normal} N from the equations); a smaller μ, or a compliant \
+         contact, resolves it"
+    )]
+    Painleve {
+        /// When.
+        t: f64,
+        /// The friction coefficient.
+        mu: f64,
+        /// The denominator of N.
+        denominator: f64,
+        /// What the equations give for N there.
+        normal: f64,
+    },
+    /// Pure Coulomb sliding whose slip reached zero: the law has no direction for the
+    /// friction at zero slip, and a body that would stop slipping needs the stick–slip law.
+    #[error(
+        "the slip stopped at t = {t} (|u| = {slip:e} m/s, at most {threshold:e}) under pure \
+         Coulomb sliding, whose friction −μN u/|u| has no direction at zero slip: use the \
+         stick–slip law (`stick_slip(mu = ..)`, `ContactLaw::StickSlip`) for a body that may \
+         start rolling"
+    )]
+    SlipStopped {
+        /// When.
+        t: f64,
+        /// The slip speed |u| there.
+        slip: f64,
+        /// The slip speed taken as zero: 10⁻⁹ of the run's velocity scale.
+        threshold: f64,
+    },
+    /// A sliding start under Coulomb friction (sliding or stick–slip) with no slip: the
+    /// friction's direction u/|u| is undefined.
+    #[error(
+        "a sliding start needs a slip, but |u| = {slip:e} m/s is at most {threshold:e}: \
+         Coulomb friction −μN u/|u| has no direction at zero slip; start the body rolling \
+         (Phase::Rolling, with `rolling_state`) under stick–slip, which slides where rolling \
+         cannot hold"
+    )]
+    ZeroSlip {
+        /// The slip speed |u| of the state.
+        slip: f64,
+        /// The slip speed taken as zero.
+        threshold: f64,
+    },
     /// The symbolic derivation failed (a division or root the arena refused).
     #[error(transparent)]
     Sym(#[from] SymError),
@@ -150,4 +213,25 @@ pub enum ContactError {
     /// A stepper failed, or a stop time is not finite or lies in the past.
     #[error(transparent)]
     Ode(#[from] OdeError),
+}
+
+impl ContactError {
+    /// The error as an [`OdeError`] for [`crate::ode::System::check_parameters`]: a stepper's
+    /// error as it is, any other refusal as [`OdeError::InvalidSystemParameter`] naming the
+    /// quantity and carrying its value.
+    pub fn into_ode_error(self) -> OdeError {
+        let named = match &self {
+            ContactError::Ode(e) => return e.clone(),
+            ContactError::Body(b) => crate::ode::body_quantity(b),
+            ContactError::Binding(b) => crate::ode::binding_quantity(b),
+            ContactError::BadParameter { name, value, .. }
+            | ContactError::NegativeCoefficient { name, value } => ((*name).to_owned(), *value),
+            ContactError::BadSurface { name, value, .. } => ((*name).to_owned(), *value),
+            ContactError::CenterOutsideSurface { measure, .. } => {
+                ("centre of mass".to_owned(), *measure)
+            }
+            _ => ("parameters".to_owned(), f64::NAN),
+        };
+        crate::ode::refused(named, &self)
+    }
 }

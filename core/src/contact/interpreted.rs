@@ -77,7 +77,7 @@ impl PhasePrograms {
 /// };
 /// let d = scene.derive(&mut a)?;
 /// let model = ContactModel::new(&mut a, &d, &[("m", 2.0), ("rho", 0.1), ("g", 9.81), ("I", 0.008)])?;
-/// let y = model.rolling_state([0.0, 0.0], &UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1), &Vector3::new(3.0, -1.0, 0.5));
+/// let y = model.rolling_state([0.0, 0.0], &UnitQuaternion::from_euler_angles(0.3, 0.2, 0.1), &Vector3::new(3.0, -1.0, 0.5))?;
 /// let dy = model.accelerations(Phase::Rolling, 0.0, &y)?;
 /// for k in 2..4 { assert_relative_eq!(dy[k], 0.0, epsilon = 1e-12); }
 /// for k in 8..11 { assert_relative_eq!(dy[k], 0.0, epsilon = 1e-12); }
@@ -328,10 +328,14 @@ impl ContactDynamics for ContactModel {
     }
 
     fn check_parameters(&self) -> Result<(), ContactError> {
+        self.values().check()
+    }
+
+    fn values(&self) -> ContactValues {
         let v = self.parameter_values();
         let n = self.lengths.len();
         let pick3 = |at: usize| [v[at], v[at + 1], v[at + 2]];
-        let values = ContactValues {
+        ContactValues {
             mass: v[0],
             center: pick3(1),
             inertia: [pick3(4), pick3(7), pick3(10)],
@@ -350,7 +354,6 @@ impl ContactDynamics for ContactModel {
                 .copied()
                 .zip(v[17 + n..].iter().copied())
                 .collect(),
-        };
-        values.check()
+        }
     }
 }

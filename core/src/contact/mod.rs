@@ -19,6 +19,7 @@ mod derivation;
 mod dynamics;
 mod error;
 mod interpreted;
+mod phases;
 mod quantities;
 mod run;
 mod scene;
@@ -34,6 +35,7 @@ pub use dynamics::{
 };
 pub use error::ContactError;
 pub use interpreted::ContactModel;
+pub use phases::{STICK_FRACTION, normal_denominator};
 pub use quantities::ContactQuantities;
 pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
 pub use scene::{ContactLaw, ContactScene, Friction};

@@ -4,16 +4,17 @@
 
 use super::dynamics::{ContactDynamics, Phase};
 use super::state::STATE_LEN;
-use crate::ode::Quantities;
+use crate::ode::{HybridState, Quantities};
 
 /// The standard quantities of a body on a table in one phase: `energy` (½ M |v|² +
 /// ½ ωᵀ I ω + M g z), `normal` (N), `slip` (|u|, the contact point's speed), `jellett`
 /// (λ = −L·r), `K_z` and `K2` (K·ẑ and |K|², K the angular momentum about the contact
 /// point: both conserved by the Chaplygin ball).
 ///
-/// Add them to a run of a [`super::ContactSystem`] with
-/// [`Run::quantities`](crate::ode::Run::quantities), or evaluate them on a
-/// [`super::ContactRun`]'s states with [`Quantities::evaluate`].
+/// Add them to a [`Run`](crate::ode::Run) of a [`super::ContactRun`] with
+/// [`Run::quantities`](crate::ode::Run::quantities): there each sample is evaluated under
+/// its own phase (the state's mode), so N is rolling's or sliding's as the run was; over
+/// bare state arrays they are evaluated under the phase given to [`ContactQuantities::new`].
 #[derive(Debug, Clone, Copy)]
 pub struct ContactQuantities<'a, D: ?Sized> {
     body: &'a D,
@@ -47,5 +48,22 @@ impl<D: ContactDynamics + ?Sized> Quantities<[f64; STATE_LEN]> for ContactQuanti
         for (o, v) in out.iter_mut().zip(values) {
             *o = v;
         }
+    }
+}
+
+/// On a run's states, each under the phase it was integrated in.
+impl<D: ContactDynamics + ?Sized> Quantities<HybridState<Phase, [f64; STATE_LEN]>>
+    for ContactQuantities<'_, D>
+{
+    fn names(&self) -> Vec<String> {
+        <Self as Quantities<[f64; STATE_LEN]>>::names(self)
+    }
+
+    fn evaluate(&mut self, t: f64, s: &HybridState<Phase, [f64; STATE_LEN]>, out: &mut [f64]) {
+        let mut at = Self {
+            body: self.body,
+            phase: s.mode,
+        };
+        Quantities::<[f64; STATE_LEN]>::evaluate(&mut at, t, &s.x, out);
     }
 }

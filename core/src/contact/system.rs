@@ -1,18 +1,70 @@
 //! A body on a table as the system the steppers take: one phase of its contact as an ODE on
-//! the state array.
+//! the state array, with what the run loop's hooks read of the body ([`super::phases`]).
 
-use super::dynamics::{ContactDynamics, Phase};
+use nalgebra::Matrix3;
+
+use super::dynamics::{ContactDynamics, LawKind, Phase};
+use super::error::ContactError;
 use super::state::STATE_LEN;
-use crate::ode::System;
+use super::surface::SurfaceKind;
+use crate::ode::{OdeError, System};
 
 /// One phase of a body on a table as an ODE system on the state array of
-/// [`super::layout`], for the adaptive pairs and RK4.
+/// [`super::layout`], for any stepper, and as the hooks of the run loop
+/// ([`crate::ode::Hybrid`]): the phase is its mode; lift-off, the friction cone, the slip
+/// stopping, Painlevé's paradox and the support map's limit are its witnesses.
 #[derive(Debug)]
 pub struct ContactSystem<'a, D: ?Sized> {
     /// The body.
     pub body: &'a D,
     /// The phase whose equations are integrated.
     pub phase: Phase,
+    /// What the hooks need of the body, read once.
+    pub(crate) watch: Watch,
+}
+
+/// What the run loop's hooks read of a body: its law, its mass properties and the
+/// coefficient of its friction, read once when the run starts (the body is immutable while
+/// it runs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Watch {
+    pub(crate) law: LawKind,
+    pub(crate) surface: SurfaceKind,
+    /// μ of a Coulomb or stick–slip law.
+    pub(crate) mu: Option<f64>,
+    pub(crate) mass: f64,
+    /// The inertia about the centre of mass and its inverse, description axes.
+    pub(crate) inertia: Matrix3<f64>,
+    pub(crate) inertia_inv: Matrix3<f64>,
+    pub(crate) gravity: f64,
+}
+
+impl<'a, D: ContactDynamics + ?Sized> ContactSystem<'a, D> {
+    /// `body` in `phase`.
+    ///
+    /// # Errors
+    /// As [`ContactDynamics::check_parameters`] (a body whose inertia cannot be inverted
+    /// fails there).
+    pub fn new(body: &'a D, phase: Phase) -> Result<Self, ContactError> {
+        body.check_parameters()?;
+        let v = body.values();
+        let inertia = Matrix3::from_fn(|i, j| v.inertia[i][j]);
+        let inertia_inv = inertia.try_inverse().ok_or(ContactError::BadParameter {
+            name: "inertia",
+            value: inertia.determinant(),
+            rule: "invertible (its determinant is this)",
+        })?;
+        let watch = Watch {
+            law: body.law(),
+            surface: body.surface_kind(),
+            mu: body.friction_coefficient(),
+            mass: v.mass,
+            inertia,
+            inertia_inv,
+            gravity: v.gravity,
+        };
+        Ok(ContactSystem { body, phase, watch })
+    }
 }
 
 impl<D: ?Sized> Clone for ContactSystem<'_, D> {
@@ -27,5 +79,13 @@ impl<D: ContactDynamics + ?Sized> System<STATE_LEN> for ContactSystem<'_, D> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
         self.body.phase_rhs(self.phase, t, y, dydt);
+    }
+
+    /// The body's [`ContactDynamics::check_parameters`], so that any run over a body on a
+    /// table refuses an unphysical one before its first step.
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.body
+            .check_parameters()
+            .map_err(ContactError::into_ode_error)
     }
 }

@@ -6,12 +6,14 @@ use crate::ode::{OdeError, Stepper, check_span};
 
 impl Ensemble<'_> {
     /// Builds a stepper per run with `build(index)` (its system, parameters, initial state
-    /// and tolerances), steps it to `t_end`, and keeps `output(index, &stepper)`.
+    /// and tolerances), steps it to `t_end` (or until it halts by itself: a hybrid run whose
+    /// scene stopped it, which `output` can read from the stepper), and keeps
+    /// `output(index, &stepper)`.
     ///
     /// Any [`Stepper`]: the adaptive pairs ([`crate::ode::Dop853`], …), [`crate::ode::Rk4`],
-    /// the splittings in a [`crate::ode::FixedStepper`], the Taylor integrator. Integrators
-    /// that are not steppers (the charted tops and mechanisms) go through
-    /// [`Ensemble::run`] with a closure that calls their own `advance_to`.
+    /// the splittings in a [`crate::ode::FixedStepper`], the Taylor integrator, and every
+    /// scene's run ([`crate::ode::Hybrid`]: charted tops and mechanisms, free flights,
+    /// bodies on a table).
     ///
     /// # Errors
     /// Per run, as [`EnsembleError::Run`](super::EnsembleError::Run): `build`'s error;
@@ -32,7 +34,7 @@ impl Ensemble<'_> {
         self.run(|index| {
             let mut stepper = build(index)?;
             check_span(stepper.t(), t_end)?;
-            while stepper.t() < t_end {
+            while stepper.t() < t_end && !stepper.halted() {
                 let before = stepper.t();
                 stepper.step(t_end)?;
                 if stepper.t() <= before {

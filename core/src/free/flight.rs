@@ -1,12 +1,14 @@
-//! A free body integrated by an adaptive embedded pair, with the attitude quaternion put back
-//! on the unit sphere after every accepted step.
+//! A free body integrated by an adaptive embedded pair in the one run loop
+//! ([`crate::ode::Hybrid`]), whose hook puts the attitude quaternion back on the unit sphere
+//! after every accepted step.
 
 use super::error::FreeError;
-use super::state::{FreeState, STATE_LEN, attitude_of, layout};
+use super::state::{FreeState, STATE_LEN, layout};
 use crate::ode::{
-    Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, OdeError, Stats, Stepper, System,
-    check_stop,
+    Adaptive, AdaptiveConfig, Dop853Pair, EmbeddedPair, Hooks, Hybrid, HybridState, OdeError,
+    Stats, Stepper, System,
 };
+use crate::rigid::normalise_quaternion;
 
 /// How a [`FreeFlight`] keeps the quaternion on the unit sphere.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -49,10 +51,44 @@ pub enum Projection {
 /// # Ok::<(), precess::free::FreeError>(())
 /// ```
 #[derive(Debug, Clone)]
-pub struct FreeFlight<S, P = Dop853Pair> {
-    ode: Adaptive<S, P, STATE_LEN>,
-    cfg: AdaptiveConfig,
+pub struct FreeFlight<S, P = Dop853Pair>
+where
+    S: System<STATE_LEN>,
+    P: EmbeddedPair,
+{
+    run: Hybrid<Adaptive<Flight<S>, P, STATE_LEN>>,
+}
+
+/// A free body's system with the hook of its flight: the quaternion projected after every
+/// step (or never), one mode, no witnesses.
+#[derive(Debug, Clone)]
+pub struct Flight<S> {
+    sys: S,
     projection: Projection,
+}
+
+impl<S: System<STATE_LEN>> System<STATE_LEN> for Flight<S> {
+    #[inline]
+    fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
+        self.sys.rhs(t, y, dydt)
+    }
+
+    fn check_parameters(&self) -> Result<(), OdeError> {
+        self.sys.check_parameters()
+    }
+}
+
+impl<S> Hooks<[f64; STATE_LEN]> for Flight<S> {
+    type Mode = ();
+    type Halt = core::convert::Infallible;
+
+    fn mode(&self) {}
+
+    fn set_mode(&mut self, _mode: ()) {}
+
+    fn project(&self, x: &mut [f64; STATE_LEN]) -> bool {
+        self.projection == Projection::EveryStep && normalise_quaternion(x, layout::QUATERNION)
+    }
 }
 
 impl<S: System<STATE_LEN>> FreeFlight<S, Dop853Pair> {
@@ -82,21 +118,21 @@ impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
         projection: Projection,
     ) -> Result<Self, FreeError> {
         state.check()?;
+        let flight = Flight { sys, projection };
+        let ode = Adaptive::new(flight, t0, state.to_array(), cfg)?;
         Ok(FreeFlight {
-            ode: Adaptive::new(sys, t0, state.to_array(), cfg)?,
-            cfg,
-            projection,
+            run: Hybrid::new(ode)?.with_max_steps(cfg.max_steps),
         })
     }
 
     /// Current time.
     pub fn t(&self) -> f64 {
-        self.ode.t()
+        self.run.t()
     }
 
     /// The current state array.
     pub fn y(&self) -> &[f64; STATE_LEN] {
-        self.ode.y()
+        &self.run.state().x
     }
 
     /// The current state.
@@ -105,56 +141,33 @@ impl<S: System<STATE_LEN>, P: EmbeddedPair> FreeFlight<S, P> {
     /// As [`FreeState::from_array`] (a state the stepper produced is finite, so only a
     /// quaternion that collapsed to zero can fail).
     pub fn state(&self) -> Result<FreeState, FreeError> {
-        FreeState::from_array(self.ode.y())
+        FreeState::from_array(self.y())
     }
 
     /// Work done so far.
     pub fn stats(&self) -> Stats {
-        self.ode.stats()
+        self.run.stats()
+    }
+
+    /// The run loop itself, for what the flight does not wrap.
+    pub fn run(&self) -> &Hybrid<Adaptive<Flight<S>, P, STATE_LEN>> {
+        &self.run
     }
 
     /// Steps until `t == t_stop` exactly; no step crosses it.
     ///
     /// # Errors
     /// [`FreeError::Ode`] as [`Adaptive::step`] (a non-finite or past `t_stop`, a step size
-    /// underflow, a non-finite state, more than `max_steps` attempts in this call: the budget
-    /// is per run, as for [`Run`](crate::ode::Run), so a flight advanced in many short legs
-    /// never exhausts it).
+    /// underflow, a non-finite state, more than `max_steps` attempts towards `t_stop`: the
+    /// budget is per stop time, as for [`Run`](crate::ode::Run), so a flight advanced in
+    /// many short legs never exhausts it).
     pub fn advance_to(&mut self, t_stop: f64) -> Result<(), FreeError> {
-        check_stop(self.t(), t_stop)?;
-        let start = self.stats();
-        while self.t() < t_stop {
-            let total = self.stats();
-            let attempts = (total.steps + total.rejections) - (start.steps + start.rejections);
-            if attempts >= self.cfg.max_steps {
-                return Err(OdeError::MaxStepsExceeded {
-                    t: self.t(),
-                    max_steps: self.cfg.max_steps,
-                }
-                .into());
-            }
-            self.ode.step(t_stop)?;
-            if self.projection == Projection::EveryStep {
-                self.project()?;
-            }
-        }
-        Ok(())
-    }
-
-    /// Puts q back on the unit sphere and continues the pair from there: its stages belong
-    /// to the unprojected state, so f is evaluated afresh; the step size and the
-    /// controller's memory are kept ([`Stepper::restart`]).
-    fn project(&mut self) -> Result<(), FreeError> {
-        let mut y = *self.ode.y();
-        let q = attitude_of(&y)?;
-        let at = layout::QUATERNION;
-        let unit = [q.w, q.i, q.j, q.k];
-        if y[at..at + 4] == unit {
-            return Ok(());
-        }
-        y[at..at + 4].copy_from_slice(&unit);
-        let t = self.ode.t();
-        Stepper::restart(&mut self.ode, t, y)?;
-        Ok(())
+        Ok(self.run.advance_to(t_stop)?)
     }
 }
+
+crate::ode::delegate_stepper!(
+    [S: System<STATE_LEN>, P: EmbeddedPair] FreeFlight<S, P>,
+    run,
+    HybridState<(), [f64; STATE_LEN]>
+);

@@ -37,7 +37,7 @@ pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
 pub use exact::FreeExact;
-pub use flight::{FreeFlight, Projection};
+pub use flight::{Flight, FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};

@@ -95,6 +95,9 @@ where
 {
     for &stop in stops.iter().filter(|&&s| s < t_end).chain([&t_end]) {
         while ode.t() < stop {
+            if ode.halted() {
+                return Err(OdeError::Halted { t: ode.t() });
+            }
             ode.step(stop)?;
         }
     }
@@ -139,6 +142,9 @@ where
             continue;
         }
         while ode.t() < ti {
+            if ode.halted() {
+                return Err(OdeError::Halted { t: ode.t() });
+            }
             ode.step(t_end)?;
         }
         *o = ode.state_at(ti)?;

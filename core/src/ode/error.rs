@@ -134,6 +134,36 @@ pub enum OdeError {
         /// The value returned.
         value: f64,
     },
+    /// A witness of a hybrid run (a scene's event function: a normal force, a slip speed)
+    /// returned NaN or ±∞.
+    #[error("witness `{witness}`: {value} at t = {t} is not finite")]
+    NonFiniteWitness {
+        /// The witness's name, as its scene gives it.
+        witness: &'static str,
+        /// Time of the evaluation.
+        t: f64,
+        /// The value returned.
+        value: f64,
+    },
+    /// A step was asked of a hybrid run that its scene has halted (read the outcome from
+    /// the run; restart it to go on).
+    #[error("the run was halted by its scene at t = {t}: it takes no more steps")]
+    Halted {
+        /// When the run halted.
+        t: f64,
+    },
+    /// A hybrid run switched mode more times at one instant than it allows: the scene's
+    /// modes send it back and forth without time passing (a Zeno point).
+    #[error(
+        "{switches} switches of mode at t = {t} without time passing: the scene's modes \
+         send the run back and forth (a Zeno point)"
+    )]
+    Zeno {
+        /// The instant.
+        t: f64,
+        /// The switches taken there.
+        switches: usize,
+    },
     /// A derived quantity of a trajectory came out NaN or ±∞.
     #[error("trajectory quantity {column}: {value} at t = {t} is not finite")]
     NonFiniteQuantity {

@@ -206,24 +206,40 @@ const MAX_ITERATIONS: usize = 200;
 /// # Errors
 /// What `f` returns.
 pub(crate) fn locate_root(
+    f: impl FnMut(f64) -> Result<f64, OdeError>,
+    left: (f64, f64),
+    right: (f64, f64),
+) -> Result<f64, OdeError> {
+    Ok(locate_bracket(f, left, right)?.1.0)
+}
+
+/// The final bracket of [`locate_root`]: `((a, f_a), (b, f_b))` with a and b adjacent
+/// doubles (or b a zero of f, a the last point before it), f(a) of the sign of `fa` and f(b)
+/// of the sign of `fb` or 0 (the values as the iteration holds them: the Anderson–Björck
+/// scaling may have shrunk them; their signs are f's). A hybrid run's witness acts at the left end, the last time its
+/// mode held.
+///
+/// # Errors
+/// What `f` returns.
+pub(crate) fn locate_bracket(
     mut f: impl FnMut(f64) -> Result<f64, OdeError>,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),
-) -> Result<f64, OdeError> {
+) -> Result<((f64, f64), (f64, f64)), OdeError> {
     // The side replaced last (−1 left, +1 right) and the bracket widths of the last two
     // iterations, for the Anderson–Björck scaling and the bisection safeguard.
     let mut last_side = 0;
     let mut widths = [f64::INFINITY; 2];
     for _ in 0..MAX_ITERATIONS {
         if fb == 0.0 {
-            return Ok(b);
+            return Ok(((a, fa), (b, fb)));
         }
         let width = b - a;
         // Down to adjacent doubles (the midpoint rounds onto an end): b is then within an
         // ulp of the root of f as computed.
         let middle = 0.5 * (a + b);
         if middle <= a || middle >= b {
-            return Ok(b);
+            return Ok(((a, fa), (b, fb)));
         }
         let bisect = width > 0.5 * widths[0];
         widths = [widths[1], width];
@@ -246,11 +262,11 @@ pub(crate) fn locate_root(
         };
         if c <= a || c >= b {
             // a and b are adjacent doubles.
-            return Ok(b);
+            return Ok(((a, fa), (b, fb)));
         }
         let fc = f(c)?;
         if fc == 0.0 {
-            return Ok(c);
+            return Ok(((a, fa), (c, fc)));
         }
         if (fc < 0.0) == (fb < 0.0) {
             // c replaces b; when b's side moves twice running, a is stale: scale fa down.
@@ -267,7 +283,7 @@ pub(crate) fn locate_root(
             (a, fa, last_side) = (c, fc, -1);
         }
     }
-    Ok(b)
+    Ok(((a, fa), (b, fb)))
 }
 
 #[cfg(test)]

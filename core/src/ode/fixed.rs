@@ -243,6 +243,27 @@ impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
     }
 }
 
+impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
+    type System = M;
+
+    fn system(&self) -> &M {
+        &self.method
+    }
+
+    /// A fixed-step method has no step size to choose: `fresh` changes nothing.
+    fn switch(
+        &mut self,
+        t: f64,
+        state: M::State,
+        _fresh: bool,
+        change: &mut dyn FnMut(&mut M),
+    ) -> Result<(), OdeError> {
+        self.method.check_state(&state)?;
+        change(&mut self.method);
+        self.restart(t, state)
+    }
+}
+
 /// Knuth's TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly, whatever the
 /// magnitudes; the compensated updates keep `e` beside the state and add it back next step.
 #[inline]

@@ -23,6 +23,7 @@ pub(crate) mod drivers;
 mod error;
 mod events;
 mod fixed;
+pub(crate) mod hybrid;
 mod pairs;
 mod parameters;
 mod rk4;
@@ -41,9 +42,13 @@ pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub use events::{Direction, Event, EventHit};
-pub(crate) use events::{crossing, locate_root};
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
+pub(crate) use hybrid::delegate_stepper;
+pub use hybrid::{
+    Action, Cause, HookAction, Hooks, Hybrid, HybridState, MAX_SWITCHES_AT_ONCE, Mode, Switchable,
+    Transition,
+};
 pub use pairs::{
     ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,
 };
@@ -51,7 +56,6 @@ pub(crate) use parameters::{binding_quantity, body_quantity, refused};
 pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;
-pub(crate) use scan::{first_pass_times, scan_step};
 pub use stepper::Stepper;
 pub(crate) use stepper::inherent_stepper;
 pub use system::{FnSystem, Stats, System};

@@ -272,3 +272,25 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         Ok(())
     }
 }
+
+impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
+    type System = S;
+
+    fn system(&self) -> &S {
+        &self.sys
+    }
+
+    /// A fixed-step method has no step size to choose: `fresh` changes nothing.
+    fn switch(
+        &mut self,
+        t: f64,
+        state: [f64; N],
+        _fresh: bool,
+        change: &mut dyn FnMut(&mut S),
+    ) -> Result<(), OdeError> {
+        check_span(t, t)?;
+        check_finite(&state)?;
+        change(&mut self.sys);
+        Stepper::restart(self, t, state)
+    }
+}

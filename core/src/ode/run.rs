@@ -27,6 +27,9 @@ pub enum StopReason {
     Event(usize),
     /// The observer returned [`Control::Stop`].
     Observer,
+    /// The stepper halted the run by itself: a [`Hybrid`](super::Hybrid) run whose scene
+    /// stopped it (read its outcome with [`Hybrid::halt`](super::Hybrid::halt)).
+    Halted,
 }
 
 /// How far a run has come, for a progress callback.
@@ -224,7 +227,7 @@ impl<'a, S: Stepper> Run<'a, S> {
         self
     }
 
-    /// Runs to `t_end`, a terminal event, or the observer's stop.
+    /// Runs to `t_end`, a terminal event, the observer's stop, or the stepper's own halt.
     ///
     /// # Errors
     /// Before any work: [`OdeError::NonFiniteTime`] and [`OdeError::StopBeforeCurrent`] for a
@@ -260,6 +263,10 @@ impl<'a, S: Stepper> Run<'a, S> {
         let mut level = -1.0;
         self.report(&mut level, (t0, t0, t_end), true);
         while self.stepper.t() < t_end {
+            if self.stepper.halted() {
+                out.stop = StopReason::Halted;
+                break;
+            }
             self.stepper.step(t_end)?;
             let (t_a, t_b) = (self.stepper.step_start(), self.stepper.t());
             let y_b = self.stepper.state().clone();
@@ -308,6 +315,9 @@ impl<'a, S: Stepper> Run<'a, S> {
                 break;
             }
             self.report(&mut level, (t0, t_b, t_end), false);
+        }
+        if out.stop == StopReason::End && self.stepper.halted() {
+            out.stop = StopReason::Halted;
         }
         out.t = self.stepper.t();
         out.state = self.stepper.state().clone();

@@ -4,6 +4,7 @@
 
 use super::adaptive::Adaptive;
 use super::error::OdeError;
+use super::hybrid::Switchable;
 use super::pairs::EmbeddedPair;
 use super::system::{Stats, System};
 
@@ -69,6 +70,14 @@ pub trait Stepper {
     /// [`OdeError::NonFiniteTime`], [`OdeError::NonFiniteInitialState`], or what the method
     /// checks of a state.
     fn restart(&mut self, t: f64, state: Self::State) -> Result<(), OdeError>;
+
+    /// Whether the stepper has ended its run by itself (a [`Hybrid`](super::Hybrid) run
+    /// whose scene halted it: a lift-off, a disk fallen flat); a halted stepper takes no
+    /// more steps until it is restarted. The loops over steppers ([`Run`](super::Run),
+    /// ensembles) stop there. The default never halts.
+    fn halted(&self) -> bool {
+        false
+    }
 }
 
 /// The [`Stepper`] of an adaptive driver over `[f64; N]` whose inherent methods carry the
@@ -119,3 +128,30 @@ macro_rules! inherent_stepper {
 pub(crate) use inherent_stepper;
 
 inherent_stepper!([S: System<N>, P: EmbeddedPair, const N: usize] Adaptive<S, P, N>, N);
+
+impl<S: System<N>, P: EmbeddedPair, const N: usize> Switchable for Adaptive<S, P, N> {
+    type System = S;
+
+    fn system(&self) -> &S {
+        Adaptive::system(self)
+    }
+
+    fn switch(
+        &mut self,
+        t: f64,
+        state: [f64; N],
+        fresh: bool,
+        change: &mut dyn FnMut(&mut S),
+    ) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        super::check_finite(&state)?;
+        self.modify_system(|s| change(s));
+        if fresh {
+            self.reinitialise(t, state)
+        } else {
+            Stepper::restart(self, t, state)
+        }
+    }
+}

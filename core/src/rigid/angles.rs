@@ -154,3 +154,16 @@ pub fn angles_from_rotation(seq: AngleSequence, r: &Matrix3<f64>) -> [f64; 3] {
         ],
     }
 }
+
+/// A chart as the mode of a run that switches charts (a top through gimbal lock): its CSV
+/// column `chart` holds 0 for ZXZ and 1 for ZYX.
+impl crate::ode::Mode for AngleSequence {
+    const COLUMN: Option<&'static str> = Some("chart");
+
+    fn number(&self) -> f64 {
+        match self {
+            AngleSequence::Zxz => 0.0,
+            AngleSequence::Zyx => 1.0,
+        }
+    }
+}

@@ -11,6 +11,7 @@ mod angles;
 pub mod charts;
 mod kinematics;
 mod lie;
+mod projection;
 mod quaternion_expr;
 mod rkmk4;
 mod rotor;
@@ -24,6 +25,7 @@ pub use charts::{
 };
 pub use kinematics::{dexpinv_right, exp_rotation, rotate_body};
 pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
+pub use projection::normalise_quaternion;
 pub use quaternion_expr::{quaternion_rate, rotation_of_quaternion};
 pub use rkmk4::Rkmk4;
 pub use rotor::{DrivenRotor, Rotor, first_singular_driven, total_momentum};

@@ -7,13 +7,18 @@
 //! is), so [`ChartedTop`] integrates in one chart and, between steps, moves the state to the
 //! other chart whenever `|det B|` falls below [`ChartConfig::switch_below`] and the other chart
 //! is better conditioned. The state is mapped exactly through the attitude R and the body
-//! angular velocity ω, which both charts share.
+//! angular velocity ω, which both charts share. The run is the one run loop
+//! ([`crate::ode::Hybrid`]): the chart is its mode and the switch its step-end hook, so a
+//! charted top is a [`Stepper`] (trajectories, events, ensembles) whose state carries its
+//! chart.
 
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::{AngleChart, at_angles};
 use super::error::TopError;
-use crate::ode::{Dop853, OdeError, Stats, System, check_stop};
+use crate::ode::{
+    Action, Dop853, HookAction, Hooks, Hybrid, HybridState, OdeError, Stats, Stepper, System,
+};
 use crate::rigid::{
     AngleSequence, ChartConfig, ChartError, angles_from_rotation, check_rotation, rates_from_omega,
 };
@@ -53,17 +58,16 @@ use crate::rigid::{
 /// The two charts are taken by value as `[C; 2]`, the type [`super::TopChart::both`]
 /// returns; borrowed charts work too (`[&a, &b]`), as [`AngleChart`] is implemented for
 /// references.
-pub struct ChartedTop<C, const N: usize = 6> {
-    ode: Dop853<Charts<C>, N>,
-    config: ChartConfig,
-    switches: usize,
+pub struct ChartedTop<C: AngleChart<N>, const N: usize = 6> {
+    run: Hybrid<Dop853<Charts<C>, N>>,
 }
 
-/// The two charts as one ODE system that evaluates the active one, so that the driver owns
-/// them and a switch only changes `active`.
-struct Charts<C> {
+/// The two charts as one ODE system that evaluates the active one, so that the run owns
+/// them and a switch only changes `active`; its hook switches charts between steps.
+pub struct Charts<C> {
     charts: [C; 2],
     active: usize,
+    switch_below: f64,
 }
 
 impl<C> Charts<C> {
@@ -79,6 +83,51 @@ impl<C: AngleChart<N>, const N: usize> System<N> for Charts<C> {
 
     fn check_parameters(&self) -> Result<(), OdeError> {
         self.active().check_all().map_err(TopError::into_ode_error)
+    }
+}
+
+impl<C: AngleChart<N>, const N: usize> Hooks<[f64; N]> for Charts<C> {
+    type Mode = AngleSequence;
+    type Halt = core::convert::Infallible;
+
+    fn mode(&self) -> AngleSequence {
+        self.active().sequence()
+    }
+
+    fn set_mode(&mut self, mode: AngleSequence) {
+        if let Some(k) = self.charts.iter().position(|c| c.sequence() == mode) {
+            self.active = k;
+        }
+    }
+
+    /// Moves to the other chart when the active one nears its singularity and the other is
+    /// better conditioned; stays put otherwise (the active chart is then still regular).
+    fn after_step(
+        &self,
+        _t: f64,
+        s: &HybridState<AngleSequence, [f64; N]>,
+    ) -> Result<HookAction<Self, [f64; N]>, OdeError> {
+        let y = &s.x;
+        let here = self.active();
+        // |det B(q)| is zero exactly at the chart's singularity.
+        let det_here = here.rate_matrix_at(y).determinant().abs();
+        if det_here >= self.switch_below {
+            return Ok(Action::Continue);
+        }
+        let other = &self.charts[1 - self.active];
+        let r = here.rotation_at(y);
+        let w = here.omega_at(y);
+        // The wheels' rates are relative to the body: the same in either chart.
+        let rotors = y.get(6..).unwrap_or(&[]);
+        match state_in(other, &r, &w, rotors) {
+            // A fresh start in the other chart, its first step size from its own f.
+            Ok((state, det_other)) if det_other > det_here => Ok(Action::Switch {
+                mode: other.sequence(),
+                state,
+                fresh: true,
+            }),
+            _ => Ok(Action::Continue),
+        }
     }
 }
 
@@ -159,11 +208,15 @@ impl<C: AngleChart<N>, const N: usize> ChartedTop<C, N> {
                 .into());
             }
         };
-        let ode = Dop853::new(Charts { charts, active }, t0, state, config.stepper)?;
+        let switch_below = config.switch_below;
+        let charts = Charts {
+            charts,
+            active,
+            switch_below,
+        };
+        let ode = Dop853::new(charts, t0, state, config.stepper)?;
         Ok(ChartedTop {
-            ode,
-            config,
-            switches: 0,
+            run: Hybrid::new(ode)?.with_max_steps(config.stepper.max_steps),
         })
     }
 
@@ -175,84 +228,72 @@ impl<C: AngleChart<N>, const N: usize> ChartedTop<C, N> {
     /// [`OdeError::StopBeforeCurrent`](crate::ode::OdeError::StopBeforeCurrent) for one before the current time, and the stepper's
     /// errors (in [`TopError::Ode`]).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), TopError> {
-        check_stop(self.ode.t(), t_end)?;
-        while self.ode.t() < t_end {
-            self.ode.step(t_end)?;
-            self.maybe_switch()?;
-        }
-        Ok(())
+        Ok(self.run.advance_to(t_end)?)
     }
 
-    /// Moves to the other chart when the active one nears its singularity and the other is
-    /// better conditioned; stays put otherwise (the active chart is then still regular).
-    fn maybe_switch(&mut self) -> Result<(), TopError> {
-        let y = *self.ode.y();
-        let charts = self.ode.system();
-        let here = charts.active();
-        // |det B(q)| is zero exactly at the chart's singularity.
-        let det_here = here.rate_matrix_at(&y).determinant().abs();
-        if det_here >= self.config.switch_below {
-            return Ok(());
-        }
-        let other = 1 - charts.active;
-        let r = here.rotation_at(&y);
-        let w = here.omega_at(&y);
-        // The wheels' rates are relative to the body: the same in either chart.
-        let rotors = y.get(6..).unwrap_or(&[]);
-        let Ok((s, det_other)) = state_in(&charts.charts[other], &r, &w, rotors) else {
-            return Ok(());
-        };
-        if det_other <= det_here {
-            return Ok(());
-        }
-        // A fresh start in the other chart, its first step size from its own f.
-        let t = self.ode.t();
-        self.ode.modify_system(|charts| charts.active = other);
-        self.ode.reinitialise(t, s)?;
-        self.switches += 1;
-        Ok(())
+    /// The chart of the loop's current mode (the system's own mode follows at the next
+    /// step, when a switch made at a step's end reaches the stepper).
+    fn chart(&self) -> &C {
+        let charts = &self.run.system().charts;
+        let mode = *self.run.mode();
+        charts
+            .iter()
+            .find(|c| c.sequence() == mode)
+            .unwrap_or(&charts[0])
+    }
+
+    /// The run loop itself: its transitions are the chart switches, with the states on
+    /// both sides.
+    pub fn run(&self) -> &Hybrid<Dop853<Charts<C>, N>> {
+        &self.run
     }
 
     /// Current time.
     pub fn t(&self) -> f64 {
-        self.ode.t()
+        self.run.t()
     }
 
     /// The state `[q, q̇]` in the active chart (`[q, q̇, Ω]` for a driven top).
     pub fn state(&self) -> &[f64; N] {
-        self.ode.y()
+        &self.run.state().x
     }
 
     /// The active chart's angle sequence.
     pub fn sequence(&self) -> AngleSequence {
-        self.ode.system().active().sequence()
+        self.chart().sequence()
     }
 
     /// The attitude R, body to space.
     pub fn rotation(&self) -> Matrix3<f64> {
-        self.ode.system().active().rotation_at(self.ode.y())
+        self.chart().rotation_at(self.state())
     }
 
     /// The body angular velocity ω.
     pub fn omega(&self) -> Vector3<f64> {
-        self.ode.system().active().omega_at(self.ode.y())
+        self.chart().omega_at(self.state())
     }
 
     /// The energy T + V.
     pub fn energy(&self) -> f64 {
-        self.ode.system().active().energy_at(self.ode.y())
+        self.chart().energy_at(self.state())
     }
 
     /// The work done so far, over every chart.
     pub fn stats(&self) -> Stats {
-        self.ode.stats()
+        self.run.stats()
     }
 
     /// How many times the driver changed chart.
     pub fn switches(&self) -> usize {
-        self.switches
+        self.run.transitions().len()
     }
 }
+
+crate::ode::delegate_stepper!(
+    [C: AngleChart<N>, const N: usize] ChartedTop<C, N>,
+    run,
+    HybridState<AngleSequence, [f64; N]>
+);
 
 /// The state of attitude `r` and body rate `omega` in `model`'s chart, with `|det B|` there:
 /// the angles from R, the rates from B(q) q̇ = ω under the one rule of

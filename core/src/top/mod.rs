@@ -40,7 +40,7 @@ mod top_chart;
 mod typeset;
 
 pub use angle_chart::AngleChart;
-pub use charted_top::ChartedTop;
+pub use charted_top::{ChartedTop, Charts};
 pub use derivation::TopDerivation;
 pub use driven::DrivenDerivation;
 pub use dynamics::{TopDynamics, angle_state};

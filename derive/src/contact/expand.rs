@@ -151,7 +151,7 @@ pub fn expand(
         }
         None => quote!({ ::core::option::Option::None }),
     };
-    let check = check_parameters((cx, ident), parameters, &low, arena, settings, checked);
+    let (check, values) = check_parameters((cx, ident), parameters, &low, arena, settings, checked);
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -179,6 +179,8 @@ pub fn expand(
             fn friction_coefficient(&self) -> ::core::option::Option<f64> #friction_coefficient
 
             fn check_parameters(&self) -> ::core::result::Result<(), #p::ContactError> #check
+
+            fn values(&self) -> #p::ContactValues #values
         }
     })
 }
@@ -246,9 +248,10 @@ fn coefficients(law: &ContactLaw) -> Vec<(&'static str, ExprId)> {
     }
 }
 
-/// The body of `check_parameters`: the description keeps its rules (`RigidBody::validate`),
-/// then the scene's values, fields and literals alike, meet the one rule of
-/// `ContactValues::check` that the interpreted model and the compile-time checks apply.
+/// The bodies of `check_parameters` and `values`: the description keeps its rules
+/// (`RigidBody::validate`), then the scene's values (`values`), fields and literals alike,
+/// meet the one rule of `ContactValues::check` that the interpreted model and the
+/// compile-time checks apply.
 fn check_parameters(
     (cx, ident): (&Ctxt, &Ident),
     parameters: &FieldParameters,
@@ -256,7 +259,7 @@ fn check_parameters(
     arena: &Arena,
     settings: &ContactSettings,
     checked: &CheckedBody,
-) -> TokenStream {
+) -> (TokenStream, TokenStream) {
     let p = Private;
     let scene = settings.scene(checked);
     let (placement, lengths) = scene.surface.dimensions();
@@ -275,7 +278,7 @@ fn check_parameters(
             ident,
             "internal error of the derive: the contact's parameter values were not lowered one for one; please report this",
         );
-        return TokenStream::new();
+        return (TokenStream::new(), TokenStream::new());
     };
     let center = [c0, c1, c2];
     let rows = tensor.chunks(3).map(|r| quote!([#(#r),*]));
@@ -298,9 +301,12 @@ fn check_parameters(
             }
         }
     });
-    quote!({
+    let check = quote!({
         #(#fields)*
         #p::RigidBody::validate(self)?;
+        #p::ContactDynamics::values(self).check()
+    });
+    let values = quote!({
         #lets
         #p::ContactValues {
             mass: #mass,
@@ -312,6 +318,6 @@ fn check_parameters(
             lengths: #p::vec![#((#length_names, #length_values)),*],
             coefficients: #p::vec![#((#coefficient_names, #coefficient_values)),*],
         }
-        .check()
-    })
+    });
+    (check, values)
 }

@@ -149,11 +149,13 @@ fn mass_gravity_and_inertia_are_checked() {
 #[test]
 fn states_are_checked() {
     let m = model(&offset_sphere(), ROLLING);
-    let good = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(1.0, 2.0, 3.0),
-    );
+    let good = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(1.0, 2.0, 3.0),
+        )
+        .unwrap();
     assert_eq!(m.check_state(Phase::Rolling, &good), Ok(()));
     // Not derived: a rolling body has no sliding equations.
     assert_eq!(
@@ -240,11 +242,13 @@ fn singular_contacts_are_refused() {
 #[test]
 fn coulomb_sliding_without_slip_is_not_finite() {
     let m = model(&offset_sphere(), NumLaw::Coulomb(0.3));
-    let rolling_like = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(1.0, 0.0, 0.0),
-    );
+    let rolling_like = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(1.0, 0.0, 0.0),
+        )
+        .unwrap();
     assert!(matches!(
         m.accelerations(Phase::Sliding, 0.5, &rolling_like),
         Err(ContactError::NonFiniteResult { phase: Phase::Sliding, t, .. }) if t == 0.5

@@ -127,21 +127,25 @@ fn a_normal_force_that_dips_below_zero_inside_one_step_is_a_lift_off() {
     let t_star = planar.time_to(th_star);
     // The arc of negative N, and how long the sphere takes over it (by symmetry about π).
     let dip = 2.0 * (planar.time_to(pi) - t_star);
-    let y0 = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(w0, 0.0, 0.0),
-    );
+    let y0 = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(w0, 0.0, 0.0),
+        )
+        .unwrap();
     // The model's N at the start against the closed form's.
     let n0 = m.reaction(Phase::Rolling, &y0).normal;
     assert!((n0 / planar.normal(0.0) - 1.0).abs() < 1e-12, "{n0}");
     // The model's own N at the top of the roll (θ = π at the closed form's rate) is
     // negative, as the closed form says.
-    let top = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::from_euler_angles(pi, 0.0, 0.0),
-        &Vector3::new(planar.rate2(pi).sqrt(), 0.0, 0.0),
-    );
+    let top = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::from_euler_angles(pi, 0.0, 0.0),
+            &Vector3::new(planar.rate2(pi).sqrt(), 0.0, 0.0),
+        )
+        .unwrap();
     let n_top = m.reaction(Phase::Rolling, &top).normal;
     assert!(n_top < 0.0, "{n_top}");
     assert!((n_top / planar.normal(pi) - 1.0).abs() < 1e-9, "{n_top}");
@@ -211,11 +215,13 @@ fn a_brief_excursion_out_of_the_friction_cone_inside_one_step_is_a_slip() {
     assert!(cone(th_max - 0.5) > 0.0 && planar.normal(th_max) > 0.0);
     let t_slip = planar.time_to(th_slip);
     let m = model(&body, NumLaw::StickSlip(mu));
-    let y0 = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(w0, 0.0, 0.0),
-    );
+    let y0 = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(w0, 0.0, 0.0),
+        )
+        .unwrap();
     let cfg = AdaptiveConfig::with_tol(1e-8, 1e-10);
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
     let out = run.advance_to(t_slip + 0.01).unwrap();
@@ -271,7 +277,7 @@ proptest::proptest! {
             [0.0, 0.0],
             &UnitQuaternion::from_euler_angles(th0, 0.0, 0.0),
             &Vector3::new(planar.rate2(th0).sqrt(), 0.0, 0.0),
-        );
+        ).unwrap();
         let tol = 10f64.powf(tol_exp);
         let cfg = AdaptiveConfig::with_tol(tol, 1e-2 * tol);
         let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();

@@ -54,7 +54,9 @@ fn the_rattleback_conserves_energy_and_reverses() {
     let m = model(&rattleback(), ROLLING);
     let tilt = 0.5f64.to_radians();
     let q = UnitQuaternion::from_euler_angles(tilt, tilt, 0.0);
-    let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, -5.0));
+    let y0 = m
+        .rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, -5.0))
+        .unwrap();
     let s = samples(&m, Phase::Rolling, y0, 20.0, 0.05);
     let e = drift(&s, |y| m.energy(Phase::Rolling, y));
     let slip = s
@@ -81,7 +83,9 @@ fn the_rattleback_conserves_energy_and_reverses() {
 fn the_chaplygin_ball_conserves_energy_and_its_contact_momentum() {
     let m = model(&chaplygin_ball(), ROLLING);
     let q = UnitQuaternion::from_euler_angles(0.4, -0.3, 1.1);
-    let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(3.0, -2.0, 5.0));
+    let y0 = m
+        .rolling_state([0.0, 0.0], &q, &Vector3::new(3.0, -2.0, 5.0))
+        .unwrap();
     let s = samples(&m, Phase::Rolling, y0, 50.0, 0.5);
     let e = drift(&s, |y| m.energy(Phase::Rolling, y));
     let kz = drift(&s, |y| m.momenta(Phase::Rolling, y).contact.z);
@@ -137,7 +141,7 @@ fn a_uniform_ball_rolls_uniformly() {
     let m = model(&body, ROLLING);
     let q = UnitQuaternion::from_euler_angles(0.3, 0.7, -0.2);
     let w = Vector3::new(4.0, -3.0, 2.0);
-    let y0 = m.rolling_state([0.1, 0.2], &q, &w);
+    let y0 = m.rolling_state([0.1, 0.2], &q, &w).unwrap();
     let s = samples(&m, Phase::Rolling, y0, 5.0, 0.5);
     for (t, y) in &s {
         for k in 0..2 {
@@ -170,7 +174,9 @@ fn a_disk_rolling_upright_stays_upright() {
     // Upright: the disk's axis (description z) horizontal, along space x.
     let q = UnitQuaternion::from_euler_angles(0.0, std::f64::consts::FRAC_PI_2, 0.0);
     for spin in [0.5, 5.0, 50.0] {
-        let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, spin));
+        let y0 = m
+            .rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, spin))
+            .unwrap();
         let s = samples(&m, Phase::Rolling, y0, 0.5, 0.05);
         for (t, y) in &s {
             let gamma = m.contact(y).gamma;
@@ -248,11 +254,13 @@ fn a_fast_eccentric_sphere_lifts_off() {
     let m = model(&body, ROLLING);
     // Centre of mass below the sphere's centre, rolling about space x at 80 rad/s: at the
     // top, N ≈ M (g − e ω²) < 0 for e = 6 mm.
-    let y0 = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(80.0, 0.0, 0.0),
-    );
+    let y0 = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(80.0, 0.0, 0.0),
+        )
+        .unwrap();
     assert!(m.reaction(Phase::Rolling, &y0).normal > 0.0);
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, tight()).unwrap();
     let out = run.advance_to(1.0).unwrap();
@@ -269,12 +277,15 @@ fn a_fast_eccentric_sphere_lifts_off() {
 
 /// Frictionless sliding: no horizontal force ever acts, so the centre of mass moves
 /// uniformly across the table, and the energy holds while the rattleback rocks and spins.
+/// Its rocking is violent (N swings between 0.5 and 97 N, 10 M g) and chaotic: at this
+/// tolerance the run reaches N = 0 near t = 5.9 s and lifts off, rounding deciding whether it
+/// does, so the invariants are taken up to 5 s.
 #[test]
 fn frictionless_sliding_moves_the_centre_uniformly_and_keeps_energy() {
     let m = model(&rattleback(), NumLaw::Frictionless);
     let q = UnitQuaternion::from_euler_angles(0.2, -0.15, 0.3);
     let y0 = state([0.1, -0.2], [0.3, 0.4], &q, &Vector3::new(1.0, 2.0, -5.0));
-    let s = samples(&m, Phase::Sliding, y0, 10.0, 0.1);
+    let s = samples(&m, Phase::Sliding, y0, 5.0, 0.1);
     let e = drift(&s, |y| m.energy(Phase::Sliding, y));
     let mut off: f64 = 0.0;
     for (t, y) in &s {

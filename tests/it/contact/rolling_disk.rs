@@ -46,11 +46,13 @@ fn mismatch(q: [f64; 3], qd: [f64; 3]) -> f64 {
         * Rotation3::from_axis_angle(&Vector3::x_axis(), q2)
         * spin
         * Rotation3::from_matrix_unchecked(description_to_sympy());
-    let y = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::from_rotation_matrix(&attitude),
-        &w_desc,
-    );
+    let y = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::from_rotation_matrix(&attitude),
+            &w_desc,
+        )
+        .unwrap();
     let mut d = [0.0; STATE_LEN];
     m.phase_rhs(Phase::Rolling, 0.0, &y, &mut d);
     let got = Vector3::new(d[8], d[9], d[10]);

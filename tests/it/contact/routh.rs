@@ -22,11 +22,10 @@ fn routh_sphere_conserves_energy_jellett_and_routh() {
         y[10] * (i1 * i3 + mass * i1 * r.norm_squared() + mass * (i3 - i1) * r.z * r.z).sqrt()
     };
     let q = UnitQuaternion::from_euler_angles(0.6, -0.2, 0.0);
-    let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(2.0, -1.0, 30.0));
-    let sys = ContactSystem {
-        body: &m,
-        phase: Phase::Rolling,
-    };
+    let y0 = m
+        .rolling_state([0.0, 0.0], &q, &Vector3::new(2.0, -1.0, 30.0))
+        .unwrap();
+    let sys = ContactSystem::new(&m, Phase::Rolling).unwrap();
     let mut ode = Dop853::new(sys, 0.0, y0, AdaptiveConfig::with_tol(1e-13, 1e-15)).unwrap();
     let out = Run::new(&mut ode, 10.0)
         .sample_every(0.1)

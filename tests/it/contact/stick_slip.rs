@@ -13,11 +13,13 @@ use super::reference::{NumLaw, model, offset_sphere};
 fn an_eccentric_sphere_slips_and_sticks_where_the_cone_says() {
     let mu = 0.15;
     let m = model(&offset_sphere(), NumLaw::StickSlip(mu));
-    let y0 = m.rolling_state(
-        [0.0, 0.0],
-        &UnitQuaternion::identity(),
-        &Vector3::new(25.0, 0.0, 0.0),
-    );
+    let y0 = m
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(25.0, 0.0, 0.0),
+        )
+        .unwrap();
     // At the start, rolling holds (the centre of mass is straight below the sphere's centre).
     let r0 = m.reaction(Phase::Rolling, &y0);
     assert!(r0.friction.norm() < mu * r0.normal);
@@ -75,7 +77,9 @@ fn a_slip_that_stops_where_rolling_cannot_hold_slides_on() {
     let mu = 0.01;
     let m = model(&offset_sphere(), NumLaw::StickSlip(mu));
     let q = UnitQuaternion::from_euler_angles(0.8, 0.0, 0.0);
-    let y0 = m.rolling_state([0.0, 0.0], &q, &Vector3::new(25.0, 0.0, 0.0));
+    let y0 = m
+        .rolling_state([0.0, 0.0], &q, &Vector3::new(25.0, 0.0, 0.0))
+        .unwrap();
     let cfg = AdaptiveConfig::with_tol(1e-12, 1e-14);
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
     let e0 = m.energy(Phase::Sliding, &y0);

@@ -1,11 +1,15 @@
 //! [`ChartedMechanism`]: DOP853 over a mechanism in one chart set, moving each spherical
-//! joint to its partner chart between steps when its `|det B_j|` falls below the threshold.
+//! joint to its partner chart between steps when its `|det B_j|` falls below the threshold:
+//! the one run loop ([`crate::ode::Hybrid`]) with the chart set as its mode and the switch
+//! as its step-end hook.
 
 use nalgebra::{Matrix3, Vector3};
 
 use super::{ChartSet, ChartedDynamics, MAX_SPHERICAL_JOINTS, SphericalJoint};
 use crate::mechanism::MechanismError;
-use crate::ode::{Dop853, OdeError, Stats, System, check_stop};
+use crate::ode::{
+    Action, Dop853, HookAction, Hooks, Hybrid, HybridState, OdeError, Stats, Stepper, System,
+};
 use crate::rigid::charts::state_in_chart;
 use crate::rigid::{
     AngleSequence, ChartConfig, ChartError, check_chart, check_rotation, joint_rate_matrix,
@@ -57,18 +61,17 @@ use crate::rigid::{
 ///
 /// `docs/mechanisms.md` starts a sleeping top standing exactly upright, where its declared
 /// ZXZ chart cannot even start, with [`ChartedMechanism::from_attitudes`].
-pub struct ChartedMechanism<D, const S: usize> {
-    ode: Dop853<InCharts<D>, S>,
-    joints: Vec<SphericalJoint>,
-    config: ChartConfig,
-    switches: usize,
+pub struct ChartedMechanism<D: ChartedDynamics<S>, const S: usize> {
+    run: Hybrid<Dop853<InCharts<D>, S>>,
 }
 
 /// The dynamics and the current chart set as one ODE system, so that a switch only changes
-/// `charts`.
-struct InCharts<D> {
+/// `charts`; its hook moves joints near their lock to their partner charts.
+pub struct InCharts<D> {
     dynamics: D,
     charts: ChartSet,
+    joints: Vec<SphericalJoint>,
+    switch_below: f64,
 }
 
 impl<D: ChartedDynamics<S>, const S: usize> System<S> for InCharts<D> {
@@ -80,6 +83,63 @@ impl<D: ChartedDynamics<S>, const S: usize> System<S> for InCharts<D> {
         self.dynamics
             .check_parameters()
             .map_err(MechanismError::into_ode_error)
+    }
+}
+
+impl<D: ChartedDynamics<S>, const S: usize> Hooks<[f64; S]> for InCharts<D> {
+    type Mode = ChartSet;
+    type Halt = core::convert::Infallible;
+
+    fn mode(&self) -> ChartSet {
+        self.charts
+    }
+
+    fn set_mode(&mut self, mode: ChartSet) {
+        self.charts = mode;
+    }
+
+    /// Moves each joint near its chart's lock to its partner chart when that is better
+    /// conditioned and available; one fresh start if any moved.
+    fn after_step(
+        &self,
+        _t: f64,
+        s: &HybridState<ChartSet, [f64; S]>,
+    ) -> Result<HookAction<Self, [f64; S]>, OdeError> {
+        let n = S / 2;
+        let mut y = s.x;
+        let mut charts = s.mode;
+        for (j, joint) in self.joints.iter().enumerate() {
+            if !joint.switchable {
+                continue;
+            }
+            let (Some(q), Some(qd)) = (triple(&y, joint.first), triple(&y, joint.first + n)) else {
+                continue;
+            };
+            let here = charts.sequence(j, joint.declared);
+            let det_here = joint_rate_matrix(here, &q).determinant().abs();
+            if det_here >= self.switch_below || !self.dynamics.has_charts(charts.toggled(j)) {
+                continue;
+            }
+            let Ok((p, pd, det_other)) = map_to_partner(here, &q, &qd) else {
+                continue;
+            };
+            if det_other <= det_here {
+                continue;
+            }
+            put(&mut y, joint.first, &p);
+            put(&mut y, joint.first + n, &pd);
+            charts = charts.toggled(j);
+        }
+        Ok(if charts == s.mode {
+            Action::Continue
+        } else {
+            // A fresh start in the new chart set, its first step size from its own f.
+            Action::Switch {
+                mode: charts,
+                state: y,
+                fresh: true,
+            }
+        })
     }
 }
 
@@ -132,12 +192,16 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
                 }
             })?;
         }
-        let ode = Dop853::new(InCharts { dynamics, charts }, t0, y0, config.stepper)?;
-        Ok(ChartedMechanism {
-            ode,
+        let switch_below = config.switch_below;
+        let system = InCharts {
+            dynamics,
+            charts,
             joints,
-            config,
-            switches: 0,
+            switch_below,
+        };
+        let ode = Dop853::new(system, t0, y0, config.stepper)?;
+        Ok(ChartedMechanism {
+            run: Hybrid::new(ode)?.with_max_steps(config.stepper.max_steps),
         })
     }
 
@@ -222,118 +286,93 @@ impl<D: ChartedDynamics<S>, const S: usize> ChartedMechanism<D, S> {
     /// errors (a joint that reaches gimbal lock with no chart to switch to makes the
     /// step fail).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), MechanismError> {
-        check_stop(self.ode.t(), t_end)?;
-        while self.ode.t() < t_end {
-            self.ode.step(t_end)?;
-            self.maybe_switch()?;
-        }
-        Ok(())
+        Ok(self.run.advance_to(t_end)?)
     }
 
-    /// Moves each joint near its chart's lock to its partner chart when that is better
-    /// conditioned and available; restarts the stepper once if any moved.
-    fn maybe_switch(&mut self) -> Result<(), MechanismError> {
-        let n = S / 2;
-        let mut y = *self.ode.y();
-        let system = self.ode.system();
-        let mut charts = system.charts;
-        for (j, joint) in self.joints.iter().enumerate() {
-            if !joint.switchable {
-                continue;
-            }
-            let (Some(q), Some(qd)) = (triple(&y, joint.first), triple(&y, joint.first + n)) else {
-                continue;
-            };
-            let here = charts.sequence(j, joint.declared);
-            let det_here = joint_rate_matrix(here, &q).determinant().abs();
-            if det_here >= self.config.switch_below
-                || !system.dynamics.has_charts(charts.toggled(j))
-            {
-                continue;
-            }
-            let Ok((p, pd, det_other)) = map_to_partner(here, &q, &qd) else {
-                continue;
-            };
-            if det_other <= det_here {
-                continue;
-            }
-            put(&mut y, joint.first, &p);
-            put(&mut y, joint.first + n, &pd);
-            charts = charts.toggled(j);
-            self.switches += 1;
-        }
-        if charts != self.ode.system().charts {
-            // A fresh start in the new chart set, its first step size from its own f.
-            let t = self.ode.t();
-            self.ode.modify_system(|s| s.charts = charts);
-            self.ode.reinitialise(t, y)?;
-        }
-        Ok(())
+    fn system(&self) -> &InCharts<D> {
+        self.run.system()
+    }
+
+    fn y(&self) -> &[f64; S] {
+        &self.run.state().x
+    }
+
+    /// The run loop itself: its transitions are the chart switches, with the states on
+    /// both sides.
+    pub fn run(&self) -> &Hybrid<Dop853<InCharts<D>, S>> {
+        &self.run
     }
 
     /// Current time.
     pub fn t(&self) -> f64 {
-        self.ode.t()
+        self.run.t()
     }
 
     /// The state `[q, q̇]` in the current chart set.
     pub fn state(&self) -> &[f64; S] {
-        self.ode.y()
+        self.y()
     }
 
-    /// The current chart set.
+    /// The current chart set (the loop's mode: the system's own follows at the next step).
     pub fn charts(&self) -> ChartSet {
-        self.ode.system().charts
+        *self.run.mode()
     }
 
     /// The spherical joints, in the order of the chart set's bits.
     pub fn joints(&self) -> &[SphericalJoint] {
-        &self.joints
+        &self.system().joints
     }
 
     /// The sequence spherical joint `j` is integrated in now (`None` past the last joint).
     pub fn sequence(&self, j: usize) -> Option<AngleSequence> {
-        let joint = self.joints.get(j)?;
+        let joint = self.joints().get(j)?;
         Some(self.charts().sequence(j, joint.declared))
     }
 
     /// The relative attitude J_j of spherical joint `j` (its child's axes to its parent's).
     pub fn joint_rotation(&self, j: usize) -> Option<Matrix3<f64>> {
-        let q = triple(self.ode.y(), self.joints.get(j)?.first)?;
+        let q = triple(self.y(), self.joints().get(j)?.first)?;
         Some(joint_rotation(self.sequence(j)?, &q))
     }
 
     /// The relative angular velocity ω_j of spherical joint `j`, in its child's axes.
     pub fn joint_omega(&self, j: usize) -> Option<Vector3<f64>> {
-        let first = self.joints.get(j)?.first;
-        let q = triple(self.ode.y(), first)?;
-        let qd = triple(self.ode.y(), first + S / 2)?;
+        let first = self.joints().get(j)?.first;
+        let q = triple(self.y(), first)?;
+        let qd = triple(self.y(), first + S / 2)?;
         Some(joint_rate_matrix(self.sequence(j)?, &q) * Vector3::from(qd))
     }
 
     /// The energy T + V.
     pub fn energy(&self) -> f64 {
-        let system = self.ode.system();
-        system
-            .dynamics
-            .energy_in(system.charts, self.ode.t(), self.ode.y())
+        self.dynamics().energy_in(self.charts(), self.t(), self.y())
     }
 
     /// The dynamics being integrated.
     pub fn dynamics(&self) -> &D {
-        &self.ode.system().dynamics
+        &self.system().dynamics
     }
 
     /// The work done so far, over every chart set.
     pub fn stats(&self) -> Stats {
-        self.ode.stats()
+        self.run.stats()
     }
 
-    /// How many joint switches the driver made.
+    /// How many joint switches the driver made (a switch of two joints at one step counts
+    /// two).
     pub fn switches(&self) -> usize {
-        self.switches
+        let toggled = |tr: &crate::ode::Transition<ChartSet, [f64; S]>| {
+            (tr.before.mode.0 ^ tr.after.mode.0).count_ones() as usize
+        };
+        self.run.transitions().iter().map(toggled).sum()
     }
 }
+
+crate::ode::delegate_stepper!(
+    [D: ChartedDynamics<S>, const S: usize] ChartedMechanism<D, S>,
+    run,
+    HybridState<ChartSet, [f64; S]>
+);
 
 /// Checks the configuration and the dynamics' shape; returns the spherical joints.
 fn check_setup<D: ChartedDynamics<S>, const S: usize>(

@@ -19,7 +19,7 @@
 mod driver;
 mod model_charts;
 
-pub use driver::ChartedMechanism;
+pub use driver::{ChartedMechanism, InCharts};
 pub use model_charts::MechanismCharts;
 
 use super::MechanismError;
@@ -37,6 +37,16 @@ pub const MAX_SPHERICAL_JOINTS: usize = 32;
 /// body order ([`spherical_joints`]). Zero is every joint in its declared sequence.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct ChartSet(pub u32);
+
+/// A chart set as the mode of a charted mechanism's run: its CSV column `charts` holds the
+/// bits.
+impl crate::ode::Mode for ChartSet {
+    const COLUMN: Option<&'static str> = Some("charts");
+
+    fn number(&self) -> f64 {
+        f64::from(self.0)
+    }
+}
 
 impl ChartSet {
     /// Every joint in its declared sequence.

@@ -8,6 +8,31 @@ use crate::taylor::TaylorSystem;
 
 inherent_stepper!([S: TaylorSystem<N>, const N: usize] Taylor<S, N>, N);
 
+/// The Taylor integrator chooses every step from its jet, so a fresh start and a continued
+/// one are the same.
+impl<S: TaylorSystem<N>, const N: usize> crate::ode::Switchable for Taylor<S, N> {
+    type System = S;
+
+    fn system(&self) -> &S {
+        Taylor::system(self)
+    }
+
+    fn switch(
+        &mut self,
+        t: f64,
+        state: [f64; N],
+        _fresh: bool,
+        change: &mut dyn FnMut(&mut S),
+    ) -> Result<(), OdeError> {
+        if !t.is_finite() {
+            return Err(OdeError::NonFiniteTime { t });
+        }
+        crate::ode::check_finite(&state)?;
+        change(self.system_mut());
+        crate::ode::Stepper::restart(self, t, state)
+    }
+}
+
 /// Integrates from `(t0, y0)` to `t_end` with the Taylor integrator, stopping exactly at
 /// each time in `stops` (ascending; those past `t_end` are ignored), as
 /// [`ode::solve`](crate::ode::solve) does for the pairs.

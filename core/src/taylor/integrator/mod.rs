@@ -244,6 +244,12 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     }
 
     /// [`TaylorSystem::check_parameters`] of the integrator's system, for a restart.
+    /// The system, to be changed between steps by a hybrid run (which restarts the
+    /// integrator at once).
+    pub(crate) fn system_mut(&mut self) -> &mut S {
+        &mut self.sys
+    }
+
     pub(crate) fn check_system(&self) -> Result<(), OdeError> {
         self.sys.check_parameters()
     }

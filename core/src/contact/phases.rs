@@ -1,0 +1,360 @@
+//! The contact's hooks in the run loop: its phases (rolling, sliding) as the loop's modes,
+//! and the witnesses at whose roots a body on a table changes phase or stops.
+//!
+//! | witness | watched | positive while | at its root |
+//! | --- | --- | --- | --- |
+//! | `normal force` N | always | the table pushes | lift-off (halt) |
+//! | `friction cone` μN − \|F_t\| | rolling, stick–slip | rolling can hold | slip seeded against the friction rolling needs |
+//! | `slip speed` \|u\| − δ | Coulomb sliding | the body slides | a plastic tangential impulse removes u; rolling if it holds, else the slip restarts (stick–slip); halt with [`ContactError::SlipStopped`] (pure Coulomb) |
+//! | `solvability` D | Coulomb sliding | N has one value | Painlevé's paradox (halt) |
+//! | `support` | disk rims, tori, paraboloids | the support map places the contact | lying flat or past the rim (halt) |
+//!
+//! δ is 10⁻⁹ of the velocity scale V = |v| + |ω||r| + √(g|r|), the rolling states' own
+//! tolerance. Every witness is continuous along a phase's motion (D > 0 keeps N continuous
+//! under Coulomb sliding), so each root is located on the stepper's solution; what can jump
+//! — N when a slip restarts in a new direction — jumps only at a switch, where the new phase
+//! is checked before it is entered: a restart that would need N < 0 (or D ≤ 0) halts and
+//! names the jump. No state the loop returns has N < 0.
+//!
+//! Sticking is a plastic impulse, not a reset of the velocity: the tangential impulse
+//! P = −K⁻¹u at the contact point, K = 1/M − [r]ₓ I⁻¹ [r]ₓ (space axes), brings the contact
+//! point to rest and changes the energy by −½ uᵀK⁻¹u ≤ 0, so no switch ever adds energy.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::checks::MIN_TILT;
+use super::dynamics::{ContactDynamics, LawKind, Phase, attitude_of};
+use super::error::ContactError;
+use super::run::ContactOutcome;
+use super::state::{STATE_LEN, layout};
+use super::surface::SurfaceKind;
+use super::system::{ContactSystem, Watch};
+use crate::ode::{Action, Hooks, HybridState, Mode, OdeError};
+use crate::rigid::normalise_quaternion;
+
+/// The slip speed taken as zero, as a fraction of the velocity scale V = |v| + |ω||r| +
+/// √(g|r|): the rolling states' tolerance (`ROLLING_TOLERANCE`).
+pub const STICK_FRACTION: f64 = 1e-9;
+
+/// A seeded slip is this many times the slip speed taken as zero, so that the slip witness
+/// starts positive.
+const SEED_OVER_STICK: f64 = 2.0;
+
+/// The witnesses, by index.
+const NAMES: [&str; 5] = [
+    "normal force",
+    "friction cone",
+    "slip speed",
+    "solvability",
+    "support",
+];
+const NORMAL: usize = 0;
+const CONE: usize = 1;
+const SLIP: usize = 2;
+const SOLVABLE: usize = 3;
+const SUPPORT: usize = 4;
+
+type State = [f64; STATE_LEN];
+type ContactAction = Action<Phase, State, ContactOutcome>;
+
+/// The phase as the mode of a run: its CSV column `phase` holds 0 rolling, 1 sliding.
+impl Mode for Phase {
+    const COLUMN: Option<&'static str> = Some("phase");
+
+    fn number(&self) -> f64 {
+        match self {
+            Phase::Rolling => 0.0,
+            Phase::Sliding => 1.0,
+        }
+    }
+}
+
+impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
+    type Mode = Phase;
+    type Halt = ContactOutcome;
+
+    fn mode(&self) -> Phase {
+        self.phase
+    }
+
+    fn set_mode(&mut self, mode: Phase) {
+        self.phase = mode;
+    }
+
+    fn witness_names(&self) -> &[&'static str] {
+        &NAMES
+    }
+
+    fn watches(&self, mode: &Phase, id: usize) -> bool {
+        let w = &self.watch;
+        let coulomb_sliding = *mode == Phase::Sliding && w.mu.is_some();
+        match id {
+            NORMAL => true,
+            CONE => *mode == Phase::Rolling && w.law == LawKind::StickSlip,
+            SLIP | SOLVABLE => coulomb_sliding,
+            SUPPORT => matches!(
+                w.surface,
+                SurfaceKind::DiskRim | SurfaceKind::Torus | SurfaceKind::Paraboloid
+            ),
+            _ => false,
+        }
+    }
+
+    fn witness(&self, mode: &Phase, id: usize, _t: f64, x: &State) -> f64 {
+        match id {
+            NORMAL => self.body.reaction(*mode, x).normal,
+            CONE => cone_margin(self.body, &self.watch, x),
+            SLIP => {
+                let u = slip(self.body, x);
+                u.norm() - stick_speed(self.body, &self.watch, x)
+            }
+            SOLVABLE => denominator(self.body, &self.watch, x),
+            SUPPORT => support_margin(self.body, &self.watch, x),
+            _ => 1.0,
+        }
+    }
+
+    fn project(&self, x: &mut State) -> bool {
+        normalise_quaternion(x, layout::QUATERNION)
+    }
+
+    fn on_witness(
+        &self,
+        id: usize,
+        t: f64,
+        s: &HybridState<Phase, State>,
+        _w: f64,
+    ) -> Result<ContactAction, OdeError> {
+        let (body, w, x) = (self.body, &self.watch, s.x);
+        Ok(match id {
+            NORMAL => Action::Halt(ContactOutcome::LiftOff { t, state: x }),
+            CONE => enter_sliding(body, w, t, seeded(body, w, x), s.mode),
+            SLIP => match w.law {
+                LawKind::StickSlip => stick(body, w, t, x),
+                _ => Action::Halt(ContactOutcome::SlipStopped {
+                    t,
+                    state: x,
+                    slip: slip(body, &x).norm(),
+                    threshold: stick_speed(body, w, &x),
+                }),
+            },
+            SOLVABLE => Action::Halt(ContactOutcome::Painleve {
+                t,
+                state: x,
+                denominator: denominator(body, w, &x),
+                normal: body.reaction(s.mode, &x).normal,
+            }),
+            SUPPORT => Action::Halt(ContactOutcome::Unsupported {
+                t,
+                state: x,
+                surface: w.surface.name(),
+                margin: support_margin(body, w, &x),
+            }),
+            _ => Action::Continue,
+        })
+    }
+}
+
+/// The slip velocity of the contact point (space axes, horizontal).
+fn slip<D: ContactDynamics + ?Sized>(body: &D, x: &State) -> Vector3<f64> {
+    let u = body.contact(x).velocity;
+    Vector3::new(u.x, u.y, 0.0)
+}
+
+/// The velocity scale V = |v| + |ω||r| + √(g|r|) of a state.
+pub(crate) fn velocity_scale<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+    let c = body.contact(x);
+    let v = Vector3::new(x[layout::VELOCITY], x[layout::VELOCITY + 1], 0.0);
+    let omega = omega(x);
+    let r = c.body.norm();
+    v.norm() + omega.norm() * r + (w.gravity * r).sqrt()
+}
+
+/// The slip speed taken as zero at `x`.
+pub(crate) fn stick_speed<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+    STICK_FRACTION * velocity_scale(body, w, x)
+}
+
+fn omega(x: &State) -> Vector3<f64> {
+    Vector3::new(x[layout::OMEGA], x[layout::OMEGA + 1], x[layout::OMEGA + 2])
+}
+
+/// μN − |F_t| of rolling at `x`: the room left in the friction cone.
+fn cone_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+    let r = body.reaction(Phase::Rolling, x);
+    w.mu.unwrap_or(0.0) * r.normal - r.friction.norm()
+}
+
+/// The denominator D = 1 − M (γ × r)·I⁻¹(r × e), e = γ − μ û, of the normal force of
+/// Coulomb sliding (description axes): N = A/D with A free of μ, so D ≤ 0 is Painlevé's
+/// paradox. 1 when the slip has no direction.
+pub(crate) fn denominator<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+    let c = body.contact(x);
+    let u_space = slip(body, x);
+    let speed = u_space.norm();
+    if speed == 0.0 {
+        return 1.0;
+    }
+    let u_hat = attitude_of(x).inverse_transform_vector(&u_space) / speed;
+    let e = c.gamma - w.mu.unwrap_or(0.0) * u_hat;
+    let beta = w.inertia_inv * c.body.cross(&e);
+    1.0 - w.mass * c.gamma.cross(&c.body).dot(&beta)
+}
+
+/// The denominator D = 1 − M (γ × r)·I⁻¹(r × e), e = γ − μ û, of the normal force of
+/// Coulomb sliding at `y` (description axes): N = A/D with A free of μ, so D ≤ 0 is
+/// Painlevé's paradox, which a run watches for. 1 where the slip is zero (no direction) or
+/// the law has no Coulomb friction (μ = 0).
+///
+/// # Errors
+/// As [`ContactDynamics::check_parameters`].
+pub fn normal_denominator<D: ContactDynamics + ?Sized>(
+    body: &D,
+    y: &State,
+) -> Result<f64, ContactError> {
+    let sys = ContactSystem::new(body, Phase::Sliding)?;
+    Ok(denominator(body, &sys.watch, y))
+}
+
+/// How far the support map is from its singular set: sin(tilt) − sin(MIN_TILT) of a disk
+/// rim's or torus's axis, γ₃ of a paraboloid (its bowl facing the table), 1 for the others.
+fn support_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+    let gamma = attitude_of(x).inverse_transform_vector(&Vector3::z());
+    match w.surface {
+        SurfaceKind::DiskRim | SurfaceKind::Torus => gamma.x.hypot(gamma.y) - MIN_TILT.sin(),
+        SurfaceKind::Paraboloid => gamma.z,
+        _ => {
+            let _ = body;
+            1.0
+        }
+    }
+}
+
+/// `x` with a slip of [`SEED_OVER_STICK`] times the stick speed started against the
+/// friction rolling needs there (Coulomb's law needs a direction, and at the switch the slip
+/// is zero).
+fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, mut x: State) -> State {
+    let f = body.reaction(Phase::Rolling, &x).friction;
+    let dir = -f / f.norm().max(f64::MIN_POSITIVE);
+    let seed = SEED_OVER_STICK * stick_speed(body, w, &x);
+    x[layout::VELOCITY] += seed * dir.x;
+    x[layout::VELOCITY + 1] += seed * dir.y;
+    x
+}
+
+/// Goes on sliding from `x` (seeded) at `t`, left from `from` — or halts where the sliding
+/// equations cannot take the state: N would have to jump below zero, or Painlevé's paradox.
+fn enter_sliding<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    t: f64,
+    x: State,
+    from: Phase,
+) -> ContactAction {
+    let d = denominator(body, w, &x);
+    let after = body.reaction(Phase::Sliding, &x).normal;
+    if d <= 0.0 {
+        return Action::Halt(ContactOutcome::Painleve {
+            t,
+            state: x,
+            denominator: d,
+            normal: after,
+        });
+    }
+    if after < 0.0 {
+        return Action::Halt(ContactOutcome::NormalForceJump {
+            t,
+            state: x,
+            phase: from,
+            before: body.reaction(from, &x).normal,
+            after,
+        });
+    }
+    Action::Switch {
+        mode: Phase::Sliding,
+        state: x,
+        fresh: false,
+    }
+}
+
+/// The slip of a stick–slip body has stopped at `x`: a plastic tangential impulse brings
+/// the contact point to rest; the body rolls on if rolling needs no more than μN, and
+/// otherwise slides again against the friction rolling needs.
+fn stick<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, t: f64, x: State) -> ContactAction {
+    let rolled = impulse_to_rest(body, w, x);
+    let r = body.reaction(Phase::Rolling, &rolled);
+    if r.normal >= 0.0 && r.friction.norm() <= w.mu.unwrap_or(0.0) * r.normal {
+        return Action::Switch {
+            mode: Phase::Rolling,
+            state: rolled,
+            fresh: false,
+        };
+    }
+    enter_sliding(body, w, t, seeded(body, w, rolled), Phase::Sliding)
+}
+
+/// `x` after the impulse P = −K⁻¹u at the contact point that brings it to rest:
+/// Δv = P/M, Δω = I⁻¹(r × RᵀP), with K = 1/M − [r]ₓ I⁻¹ [r]ₓ in space axes. The energy
+/// changes by −½ uᵀK⁻¹u ≤ 0.
+pub(crate) fn impulse_to_rest<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    mut x: State,
+) -> State {
+    let q = attitude_of(&x);
+    let c = body.contact(&x);
+    let r_space = q.transform_vector(&c.body);
+    let rot = q.to_rotation_matrix();
+    let inv_space = rot.matrix() * w.inertia_inv * rot.matrix().transpose();
+    let cross = r_space.cross_matrix();
+    let k = Matrix3::identity() / w.mass - cross * inv_space * cross;
+    let u = c.velocity;
+    let Some(k_inv) = k.try_inverse() else {
+        return x;
+    };
+    let p = -(k_inv * u);
+    let dv = p / w.mass;
+    let dw = w.inertia_inv * c.body.cross(&q.inverse_transform_vector(&p));
+    x[layout::VELOCITY] += dv.x;
+    x[layout::VELOCITY + 1] += dv.y;
+    for k in 0..3 {
+        x[layout::OMEGA + k] += dw[k];
+    }
+    x
+}
+
+/// The checks of a run's start that no hook can make: a state pulled onto the table, one
+/// where Coulomb sliding's N has no value, a Coulomb sliding start without a slip.
+///
+/// # Errors
+/// [`ContactError::NotPressed`], [`ContactError::Painleve`], [`ContactError::ZeroSlip`].
+pub(crate) fn check_start<D: ContactDynamics + ?Sized>(
+    sys: &ContactSystem<'_, D>,
+    t: f64,
+    x: &State,
+) -> Result<(), ContactError> {
+    let (body, w, phase) = (sys.body, &sys.watch, sys.phase);
+    if phase == Phase::Sliding
+        && let Some(mu) = w.mu
+    {
+        let slip = slip(body, x).norm();
+        let threshold = stick_speed(body, w, x);
+        if slip <= threshold {
+            return Err(ContactError::ZeroSlip { slip, threshold });
+        }
+        let d = denominator(body, w, x);
+        if d <= 0.0 {
+            return Err(ContactError::Painleve {
+                t,
+                mu,
+                denominator: d,
+                normal: body.reaction(phase, x).normal,
+            });
+        }
+    }
+    let normal = body.reaction(phase, x).normal;
+    if normal < 0.0 {
+        return Err(ContactError::NotPressed { phase, normal });
+    }
+    Ok(())
+}
