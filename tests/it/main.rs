@@ -167,6 +167,7 @@ mod contact {
     mod events;
     mod invariants;
     mod newton_euler;
+    mod properties;
     mod reference;
     mod rolling_disk;
     mod routh;

@@ -18,7 +18,8 @@
 //!
 //! Sticking is a plastic impulse, not a reset of the velocity: the tangential impulse
 //! P = −K⁻¹u at the contact point, K = 1/M − [r]ₓ I⁻¹ [r]ₓ (space axes), brings the contact
-//! point to rest and changes the energy by −½ uᵀK⁻¹u ≤ 0, so no switch ever adds energy.
+//! point to rest and changes the energy by −½ uᵀK⁻¹u ≤ 0; a seeded slip keeps the kinetic
+//! energy (the velocities scaled back by 1 + O(10⁻⁹)), so no switch ever adds energy.
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -232,14 +233,29 @@ fn support_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -
 
 /// `x` with a slip of [`SEED_OVER_STICK`] times the stick speed started against the
 /// friction rolling needs there (Coulomb's law needs a direction, and at the switch the slip
-/// is zero).
-fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, mut x: State) -> State {
+/// is zero), the velocities then scaled by √(T/T') so that the kinetic energy T, and so the
+/// energy, is what it was: seeding never adds energy.
+fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: State) -> State {
     let f = body.reaction(Phase::Rolling, &x).friction;
     let dir = -f / f.norm().max(f64::MIN_POSITIVE);
     let seed = SEED_OVER_STICK * stick_speed(body, w, &x);
-    x[layout::VELOCITY] += seed * dir.x;
-    x[layout::VELOCITY + 1] += seed * dir.y;
-    x
+    let mut y = x;
+    y[layout::VELOCITY] += seed * dir.x;
+    y[layout::VELOCITY + 1] += seed * dir.y;
+    // The potential energy depends on the attitude alone, which the seed leaves.
+    let potential = w.mass * w.gravity * body.contact(&x).height;
+    let before = body.energy(Phase::Rolling, &x) - potential;
+    let after = body.energy(Phase::Sliding, &y) - potential;
+    if before > 0.0 && after > 0.0 {
+        let s = (before / after).sqrt();
+        for k in [layout::VELOCITY, layout::VELOCITY + 1] {
+            y[k] *= s;
+        }
+        for k in 0..3 {
+            y[layout::OMEGA + k] *= s;
+        }
+    }
+    y
 }
 
 /// Goes on sliding from `x` (seeded) at `t`, left from `from` — or halts where the sliding
