@@ -8,8 +8,10 @@
 
 /// Puts the quaternion `x[at..at + 4]` on the unit sphere, scaled by its largest component
 /// first so that the norm of a tiny quaternion does not underflow; returns whether it
-/// changed. A zero or non-finite quaternion (or one that does not fit in `x`) is left as it
-/// is: it names no rotation, and the next step's right-hand side reports it.
+/// changed. One already of unit norm to rounding (|q|² within 4 ε of 1) is left as it is,
+/// so that a projection after every step changes, and restarts, only what drifted. A zero
+/// or non-finite quaternion (or one that does not fit in `x`) is left as it is too: it
+/// names no rotation, and the next step's right-hand side reports it.
 ///
 /// ```
 /// use precess_core::rigid::normalise_quaternion;
@@ -26,12 +28,12 @@ pub fn normalise_quaternion(x: &mut [f64], at: usize) -> bool {
     if scale == 0.0 || !scale.is_finite() {
         return false;
     }
-    let scaled = [q[0] / scale, q[1] / scale, q[2] / scale, q[3] / scale];
-    let norm = scaled.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let unit = scaled.map(|v| v / norm);
-    if unit == [q[0], q[1], q[2], q[3]] {
+    let norm2: f64 = q.iter().map(|v| v * v).sum();
+    if (norm2 - 1.0).abs() <= 4.0 * f64::EPSILON {
         return false;
     }
-    q.copy_from_slice(&unit);
+    let scaled = [q[0] / scale, q[1] / scale, q[2] / scale, q[3] / scale];
+    let norm = scaled.iter().map(|v| v * v).sum::<f64>().sqrt();
+    q.copy_from_slice(&scaled.map(|v| v / norm));
     true
 }

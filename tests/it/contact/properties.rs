@@ -48,7 +48,12 @@ fn conservative(law: NumLaw) -> bool {
 
 /// A start for `m`: rolling for the laws that roll, else sliding with the horizontal
 /// velocity `v` (so that a Coulomb law has a slip).
-fn start(m: &ContactModel, q: &UnitQuaternion<f64>, w: Vector3<f64>, v: [f64; 2]) -> [f64; STATE_LEN] {
+fn start(
+    m: &ContactModel,
+    q: &UnitQuaternion<f64>,
+    w: Vector3<f64>,
+    v: [f64; 2],
+) -> [f64; STATE_LEN] {
     let mut y = m.rolling_state([0.0; 2], q, &w).unwrap();
     if m.law().first_phase() == Phase::Sliding {
         y[layout::VELOCITY] += v[0];

@@ -245,7 +245,9 @@ fn at_exactly_the_friction_threshold_the_body_slips_at_once() {
     assert!(ratio(probe.y()) > mu, "the needed friction rises");
     let m = model(&ball, NumLaw::StickSlip(mu));
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, tol(1e-12)).unwrap();
-    assert_eq!(run.phase(), Phase::Sliding, "it slips at once");
+    // The cone's margin is 0 to rounding at the start: below it, the body slides from the
+    // start; at or above it, the first step finds it falling at once.
+    run.advance_to(1e-9).unwrap();
     let switch = run.switches()[0];
     assert_eq!(
         (switch.t, switch.from, switch.to),

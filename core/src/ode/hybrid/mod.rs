@@ -22,23 +22,32 @@
 //! What is guaranteed: the state the loop returns (after a step, at a switch, at a halt) is
 //! one where every witness of its mode is ≥ 0 — a witness's root is reported at the left end
 //! of its final bracket, the last double at which the mode still held. A mode is entered only
-//! after its witnesses are checked at the entry state: one that is ≤ 0 there fires at once,
-//! so a mode never starts outside its domain (a body set rolling exactly at the friction
-//! limit, with the needed friction rising, slips at once). More than
-//! [`MAX_SWITCHES_AT_ONCE`] switches at one instant is an [`OdeError::Zeno`] error.
+//! after its witnesses are checked at the entry state: one below 0 there fires at once, and
+//! one at exactly 0 fires at the start of the next step if it falls from there, so a mode
+//! never runs outside its domain (a body set rolling exactly at the friction limit, with the
+//! needed friction rising, slips at once; a ball bounced off the floor at height 0 flies on).
+//! More than [`MAX_SWITCHES_AT_ONCE`] switches at one instant is an [`OdeError::Zeno`] error.
 
 mod hooks;
 
 pub use hooks::{Action, Cause, HookAction, Hooks, HybridState, Mode, Switchable, Transition};
 
 use super::error::{OdeError, check_stop};
-use super::events::{Direction, crossing, locate_bracket};
+use super::events::locate_bracket;
 use super::scan::{first_pass_times, scan_step};
 use super::stepper::Stepper;
 use super::system::Stats;
 
 /// The most switches the loop takes at one instant before it calls the run Zeno.
 pub const MAX_SWITCHES_AT_ONCE: usize = 16;
+
+/// Whether a witness falls between two of its values in time order: from ≥ 0 to below 0,
+/// or from above 0 to 0. A witness at exactly 0 where a step starts (a ball bounced off the
+/// floor, a body set exactly at its friction limit) fires there if it goes on below 0, and
+/// not if it rises.
+fn falls(before: f64, after: f64) -> bool {
+    (before >= 0.0 && after < 0.0) || (before > 0.0 && after <= 0.0)
+}
 
 /// The state type of the loop over the stepper `S`.
 type StateOf<S> = HybridState<ModeOf<S>, <S as Stepper>::State>;
@@ -130,6 +139,8 @@ where
     disarmed: Vec<bool>,
     /// The scan's points of the last step, kept so that a step allocates nothing.
     points: Vec<(f64, f64)>,
+    /// Witness roots in a row at the start of their step (no time passing).
+    instant_roots: usize,
 }
 
 /// The step budget: attempts (accepted and rejected steps, over every restart of the wrapped
@@ -181,6 +192,7 @@ where
             witness_evals: 0,
             disarmed,
             points: Vec::new(),
+            instant_roots: 0,
         };
         if me.inner.system().project(&mut me.state.x) {
             me.resync = Some(false);
@@ -278,7 +290,7 @@ where
     }
 
     /// Checks the entry witnesses of the current mode at the current state, and acts on the
-    /// first that is already ≤ 0.
+    /// first that is already below 0.
     fn enter(&mut self, t: f64) -> Result<(), OdeError> {
         match self.entry_witness(t)? {
             None => Ok(()),
@@ -296,7 +308,7 @@ where
     }
 
     /// Carries out a hook's action at `t` (the loop's state is already there), then checks
-    /// the entry witnesses of the mode it leads to, acting on the first already ≤ 0.
+    /// the entry witnesses of the mode it leads to, acting on the first already below 0.
     fn act(
         &mut self,
         first: HookAction<S::System, S::State>,
@@ -338,15 +350,15 @@ where
         })
     }
 
-    /// The first witness of the current mode that is ≤ 0 at the current state, with its
-    /// value.
+    /// The first witness of the current mode that is below 0 at the current state, with its
+    /// value (one at exactly 0 is taken up by the next step: it fires there if it falls).
     fn entry_witness(&mut self, t: f64) -> Result<Option<(usize, f64)>, OdeError> {
         for id in 0..self.disarmed.len() {
             if !self.inner.system().watches(&self.state.mode, id) {
                 continue;
             }
             let w = self.eval(id, t, &self.state.x.clone())?;
-            if w <= 0.0 {
+            if w < 0.0 {
                 return Ok(Some((id, w)));
             }
         }
@@ -369,8 +381,8 @@ where
     }
 
     /// The first root of a watched witness inside the inner stepper's last step
-    /// `[t_a, t_b]` (falling: positive, then ≤ 0), every root inside the step looked for:
-    /// its id and the left end of its final bracket.
+    /// `[t_a, t_b]` (falling: see [`falls`]), every root inside the step looked for: its id
+    /// and the left end of its final bracket.
     fn first_root(&mut self, t_a: f64, t_b: f64) -> Result<Option<(usize, f64)>, OdeError> {
         let watched: Vec<usize> = (0..self.disarmed.len())
             .filter(|&id| !self.disarmed[id] && self.inner.system().watches(&self.state.mode, id))
@@ -403,9 +415,7 @@ where
                 self.eval(id, t, &x)
             };
             scan_step(&mut at, (t_a, g_a), (t_b, g_b), inner, &mut points)?;
-            let bracket = points
-                .windows(2)
-                .find(|w| crossing(Direction::Falling, w[0].1, w[1].1).is_some());
+            let bracket = points.windows(2).find(|w| falls(w[0].1, w[1].1));
             let Some(&[left, right]) = bracket else {
                 continue;
             };
@@ -474,6 +484,15 @@ where
         self.t_start = t_a;
         match self.first_root(t_a, t_b)? {
             Some((id, t)) => {
+                // A witness that starts a step at exactly 0 and falls fires at the step's
+                // start: the loop's step is empty, and a run of them is a Zeno point.
+                self.instant_roots = if t == t_a { self.instant_roots + 1 } else { 0 };
+                if self.instant_roots > MAX_SWITCHES_AT_ONCE {
+                    return Err(OdeError::Zeno {
+                        t,
+                        switches: self.instant_roots,
+                    });
+                }
                 self.t = t;
                 self.state.x = self.inner.state_at(t)?;
                 self.inner.system().project(&mut self.state.x);
