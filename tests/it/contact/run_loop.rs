@@ -41,21 +41,23 @@ fn at_rest(q: UnitQuaternion<f64>, omega: Vector3<f64>) -> [f64; STATE_LEN] {
     y
 }
 
-/// Stick–slip whose slip never stops is Coulomb sliding: the ball spinning at 1000 rad/s
-/// about its axis, laid near horizontal, slides all the time (its slip, about 20 m/s,
-/// never comes near zero in 0.3 s), so the two
-/// laws integrate the same equations with the same steps, to the last bit, at every
-/// tolerance. The old "sticks" event (the slip against its direction at the step's start)
-/// fired whenever the slip's direction turned more than 90° within a step, reset the
-/// velocity onto rolling and seeded a new slip without a record: the energy rose.
+/// Stick–slip whose slip never stops is Coulomb sliding: the ball set spinning at 1000 rad/s
+/// about the vertical, its axis 0.05 rad from it, slides all the time (its slip never comes
+/// near zero in 0.3 s), so the two laws integrate the same equations with the same steps at
+/// every tolerance: the runs agree to rounding (the two models' programs are lowered from
+/// different arenas, so their roundings differ in the last bits). The old "sticks" event (the slip against its
+/// direction at the step's start) fired whenever the slip's direction turned more than 90°
+/// within a step, put the velocity on rolling and seeded a new slip, recording nothing: the
+/// energy rose (8.01499 J to 8.02599 J at tolerance 1e-7, where Coulomb sliding falls to
+/// 8.01276 J).
 #[test]
 fn stick_slip_whose_slip_never_stops_is_coulomb_sliding() {
     let mu = 0.02;
     let ball = eccentric_ball();
     let stick_slip = model(&ball, NumLaw::StickSlip(mu));
     let coulomb = model(&ball, NumLaw::Coulomb(mu));
-    let q = UnitQuaternion::from_euler_angles(core::f64::consts::FRAC_PI_2 + 0.2, 0.0, 0.0);
-    let y0 = at_rest(q, Vector3::new(0.0, 0.0, 1000.0));
+    let q = UnitQuaternion::from_euler_angles(0.05, 0.0, 0.0);
+    let y0 = at_rest(q, q.inverse() * Vector3::new(0.0, 0.0, 1000.0));
     let e0 = coulomb.energy(Phase::Sliding, &y0);
     for tolerance in [1e-5, 1e-6, 1e-7, 1e-10] {
         let run_of = |m: &ContactModel| {
@@ -71,8 +73,16 @@ fn stick_slip_whose_slip_never_stops_is_coulomb_sliding() {
         let (y_s, e_s, switches) = run_of(&stick_slip);
         let (y_c, e_c, _) = run_of(&coulomb);
         assert_eq!(switches, 0, "tol {tolerance}: the slip never stops");
-        assert_eq!(y_s, y_c, "tol {tolerance}");
-        assert_eq!(e_s, e_c, "tol {tolerance}");
+        let scale = y_c.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (a, b) in y_s.iter().zip(&y_c) {
+            assert!(
+                (a - b).abs() <= 1e-10 * scale,
+                "tol {tolerance}: {y_s:?} against {y_c:?}"
+            );
+        }
+        for (a, b) in e_s.iter().zip(&e_c) {
+            assert_relative_eq!(*a, *b, max_relative = 1e-12);
+        }
         // Coulomb friction only takes energy out: never more than the tolerance back.
         let mut last = e0;
         for e in e_s {
