@@ -41,7 +41,7 @@ pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub use events::{Direction, Event, EventHit};
-pub(crate) use events::{crossing, locate_root};
+pub(crate) use events::{StepRoots, crossing, locate_root};
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
 pub use pairs::{
