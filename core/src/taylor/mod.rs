@@ -25,7 +25,7 @@ mod recurrence_dd;
 mod tape;
 
 pub use emit::TaylorTokens;
-pub use events::TaylorEvent;
+pub use events::{EVENT_MISMATCH, TaylorEvent};
 pub use integrator::{Taylor, TaylorConfig, solve, solve_dense};
 pub use interpreted::{TaylorError, TaylorTape};
 pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};

@@ -18,12 +18,19 @@
 //! slope against the state). So a root pair of g whose dip below 0 is deeper than that
 //! error is a root pair of q and is found, however close the roots and however short-lived
 //! the dip against the step; a dip within the error may be missed or found as the
-//! polynomial says, as any integrator of that tolerance sees it. The limits of rounding
+//! polynomial says, as any integrator of that tolerance sees it. The truncation is not
+//! bounded a priori (the step is chosen for the state, not for g, and a g faster than the
+//! state — one that reads the time at a higher frequency — has a larger one): it is
+//! measured at each step's end, where it is largest, against g evaluated there, and a step
+//! where it exceeds [`EVENT_MISMATCH`] tolerances is refused
+//! ([`OdeError::EventNotResolved`](crate::ode::OdeError::EventNotResolved)). The limits of rounding
 //! are stated in [`isolate`]: roots of q closer than 2⁻⁵⁰ h, or where q is within its
 //! rounding of 0 (about 4p·2⁻⁵³·Σ|gₖ|hᵏ), count by the sign change they make.
 
 pub(crate) mod isolate;
 mod run;
+
+pub use run::EVENT_MISMATCH;
 
 use crate::codegen::Program;
 use crate::sym::{Arena, ExprId};

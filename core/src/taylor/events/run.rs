@@ -7,6 +7,14 @@ use super::isolate::{Isolator, Piece};
 use crate::ode::{Event, OdeError, Run, StepRoots};
 use crate::taylor::{Taylor, TaylorSystem};
 
+/// How far g's Taylor polynomial may be from g at a step's end, in tolerances times the
+/// size of the polynomial's terms Σ|gₖ|hᵏ, before the event is refused as not resolved
+/// ([`OdeError::EventNotResolved`]). A g that varies like the state is within about one
+/// tolerance; 10³ leaves room for a g that amplifies the state's error (a difference of
+/// close values) while refusing a g faster than the step (sin 50t on a step of 0.9 is off
+/// by 10¹⁶).
+pub const EVENT_MISMATCH: f64 = 1e3;
+
 /// The state of one expanded event across a run: the event, its scratch, and the last
 /// step's polynomial of g.
 struct Expanded<const N: usize> {
@@ -56,6 +64,21 @@ impl<S: TaylorSystem<N>, const N: usize> StepRoots<Taylor<S, N>> for Expanded<N>
             self.scaled.push(gk * hk);
             hk *= h;
         }
+        // The polynomial must be g: at the step's end, where its truncation is largest, it
+        // is compared with g evaluated there.
+        let end: f64 = self.scaled.iter().sum();
+        let size: f64 = self.scaled.iter().map(|a| a.abs()).sum();
+        let cfg = stepper.config();
+        let limit = EVENT_MISMATCH * cfg.rtol.max(cfg.atol).max(f64::EPSILON) * size;
+        let mismatch = (end - g_b).abs();
+        if mismatch > limit {
+            return Err(OdeError::EventNotResolved {
+                index,
+                t: t_b,
+                mismatch,
+                limit,
+            });
+        }
         self.pieces.clear();
         self.isolator
             .isolate(&self.scaled, (p + 1) as f64, &mut self.pieces);
@@ -103,6 +126,11 @@ impl<'a, S: TaylorSystem<N>, const N: usize> Run<'a, Taylor<S, N>> {
     /// change of sign they make (`docs/trajectories.md`, "Events on Taylor steps"). g is evaluated directly at the steps' ends, where the
     /// run compares signs, so that a step's end and the next step's start agree bit for
     /// bit.
+    ///
+    /// That the polynomial is g is checked at each step's end, where its truncation is
+    /// largest: a g that varies faster than the step resolves is refused with
+    /// [`OdeError::EventNotResolved`] by [`Run::integrate`], rather than its polynomial's
+    /// roots taken for g's.
     ///
     /// Cost per step: g's recurrences to order p (as if g were one more component of the
     /// system), the Bernstein form (p²/2 multiply-adds) and, only where a piece is not
