@@ -250,7 +250,8 @@ impl<'a, S: Stepper> Run<'a, S> {
     /// bad end or sample time, [`OdeError::SampleAfterEnd`], [`OdeError::InvalidStep`] for a
     /// sample interval that is not finite and > 0, [`OdeError::NonFiniteEvent`] at the start.
     /// While running: the stepper's errors, [`OdeError::NonFiniteEvent`],
-    /// [`OdeError::NonFiniteQuantity`].
+    /// [`OdeError::NonFiniteQuantity`], [`OdeError::EventNotResolved`] (an event of
+    /// `Run::taylor_event` whose polynomial on a step is not g).
     pub fn integrate(mut self) -> Result<Outcome<S::State>, OdeError> {
         let t0 = self.stepper.t();
         let t_end = self.t_end;
@@ -400,9 +401,13 @@ impl<'a, S: Stepper> Run<'a, S> {
                 let Some(direction) = crossing(wanted, left.1, right.1) else {
                     continue;
                 };
+                // Located on what isolated the root: the stepper's function for an event it
+                // isolates, g on the stepper's solution otherwise (and for the ends only).
                 let t = match &mut slot.roots {
-                    Some(roots) => locate_root(|t| roots.value(index, t), left, right)?,
-                    None => locate_root(|t| g_at(stepper, slot, index, t), left, right)?,
+                    Some(roots) if !slot.event.is_step_ends_only() => {
+                        locate_root(|t| roots.value(index, t), left, right)?
+                    }
+                    _ => locate_root(|t| g_at(stepper, slot, index, t), left, right)?,
                 };
                 hits.push(EventHit {
                     index,
