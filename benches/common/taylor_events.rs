@@ -22,7 +22,11 @@ const PHASES: [f64; 3] = [5.152946613068597, 1.2810683954004747, 6.2602179779374
 
 /// The sines system, its expanded event and its start.
 fn sines() -> (TaylorTape<6>, TaylorEvent<6>, [f64; 6], f64) {
-    let s = |t: f64| (0..3).map(|i| AMPS[i] * (OMEGAS[i] * t + PHASES[i]).sin()).sum::<f64>();
+    let s = |t: f64| {
+        (0..3)
+            .map(|i| AMPS[i] * (OMEGAS[i] * t + PHASES[i]).sin())
+            .sum::<f64>()
+    };
     let c = s(7.334700208708147) + 0.001 * AMPS.iter().sum::<f64>();
     let mut a = Arena::new();
     let state: [ExprId; 6] = ["x0", "v0", "x1", "v1", "x2", "v2"].map(|n| a.coordinate(n));
@@ -74,7 +78,10 @@ enum Kind {
 }
 
 /// A run of the sines system to 10 at 1e-12: (hits, steps, evaluations of g by the scan).
-fn run_sines(kind: Kind, sys: &(TaylorTape<6>, TaylorEvent<6>, [f64; 6], f64)) -> (usize, u64, u64) {
+fn run_sines(
+    kind: Kind,
+    sys: &(TaylorTape<6>, TaylorEvent<6>, [f64; 6], f64),
+) -> (usize, u64, u64) {
     let (system, event, y0, c) = sys;
     let cfg = TaylorConfig::with_tol(1e-12, 1e-12);
     let mut ode = Taylor::new(system, 0.0, *y0, cfg).expect("valid");

@@ -29,6 +29,10 @@
 //! fails to halve over two iterations, down to adjacent doubles: on the dense output of an
 //! adaptive pair or of the Taylor integrator, or on the partial steps of a fixed-step
 //! method, so the event is as accurate as the method.
+//!
+//! On the Taylor integrator, a g given as an expression of the state is found with a
+//! guarantee instead of the scan's estimate: expanded with each step and its polynomial's
+//! roots isolated (`StepRoots`, `Run::taylor_event`, `taylor::TaylorEvent`).
 
 use super::error::OdeError;
 use super::stepper::Stepper;

@@ -84,7 +84,7 @@ fn the_shallow_pair_in_a_beat_is_isolated_with_every_other_root() {
     let pair = [7.330994629666139, 7.3383906504342455];
     assert!(g(0.5 * (pair[0] + pair[1])) < 0.0 && g(pair[0]) >= 0.0 && g(pair[1]) >= 0.0);
     let hits = isolated(&sines(amps, omegas, phases, c), 1e-13, 10.0);
-    // Every root of g on [0, 10] (the 10⁶-point scan's; none closer than 1e-5 to another),
+    // Every root of g on [0, 10] (the 10⁶-point scan's, which the hits match one for one),
     // in order, falling and rising in turn, within 1e-9: the state's error at 1e-13 over
     // a few hundred steps, over |g′| ≥ 0.3 at these roots.
     let reference = brute_roots(&g, 10.0, 1_000_000);

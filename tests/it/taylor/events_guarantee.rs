@@ -41,7 +41,11 @@ fn a_dip_hidden_between_the_scans_points_is_isolated() {
         let times = a.mul(poly, x2);
         poly = a.add(times, c);
     }
-    let (k, s, two) = (a.parameter("kappa"), a.parameter("slope"), a.parameter("two"));
+    let (k, s, two) = (
+        a.parameter("kappa"),
+        a.parameter("slope"),
+        a.parameter("two"),
+    );
     let bent = a.mul(k, poly);
     let inner = a.add(s, bent);
     let dy = a.mul(two, inner);
@@ -85,7 +89,11 @@ fn a_dip_hidden_between_the_scans_points_is_isolated() {
     // below 1, so they carry up to about 1e-11 of rounding, over slopes |y′| > 2 at the six
     // roots (measured: 3.6e-13 at most).
     let found = run(true);
-    assert_eq!(found.len(), reference.len(), "{found:?} against {reference:?}");
+    assert_eq!(
+        found.len(),
+        reference.len(),
+        "{found:?} against {reference:?}"
+    );
     for (t, r) in found.iter().zip(&reference) {
         assert!((t - r).abs() < 2e-11, "{t} against {r}");
     }
@@ -139,7 +147,11 @@ fn step_ends_only_compares_the_ends_of_an_expanded_event() {
         .integrate()
         .unwrap();
     assert_eq!(out.events.len(), 1, "{:?}", out.events);
-    assert!((out.events[0].t - delta).abs() < 1e-10, "{}", out.events[0].t);
+    assert!(
+        (out.events[0].t - delta).abs() < 1e-10,
+        "{}",
+        out.events[0].t
+    );
 }
 
 /// sin(k t) as an event of the time on the testkit's oscillator.
@@ -189,7 +201,12 @@ fn a_g_faster_than_the_step_is_refused_and_runs_when_the_step_is_bounded() {
     for (k, h) in out.events.iter().enumerate() {
         let exact = (k + 1) as f64 * PI / 50.0;
         // 50 t rounded at t ≤ 20 (half an ulp of 1000, 6e-14) over 50.
-        assert!((h.t - exact).abs() < 1e-14, "root {}: {} against {exact}", k + 1, h.t);
+        assert!(
+            (h.t - exact).abs() < 1e-14,
+            "root {}: {} against {exact}",
+            k + 1,
+            h.t
+        );
     }
 }
 

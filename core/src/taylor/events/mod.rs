@@ -35,10 +35,10 @@ pub use run::EVENT_MISMATCH;
 use crate::codegen::Program;
 use crate::sym::{Arena, ExprId};
 
+use super::TaylorError;
 use super::interpreted::bind_scalars;
 use super::recurrence;
 use super::tape::{Tape, Value};
-use super::TaylorError;
 
 /// An event function g(t, y) as an expression over a system's state and time, expanded with
 /// the Taylor integrator's steps: for [`Run::taylor_event`](crate::ode::Run::taylor_event).

@@ -133,7 +133,7 @@ impl<'a, S: TaylorSystem<N>, const N: usize> Run<'a, Taylor<S, N>> {
     /// roots taken for g's.
     ///
     /// Cost per step: g's recurrences to order p (as if g were one more component of the
-    /// system), the Bernstein form (p²/2 multiply-adds) and, only where a piece is not
+    /// system), the Bernstein form (p²/2 additions) and, only where a piece is not
     /// decided at once, p²/2 additions per halving.
     ///
     /// # Examples

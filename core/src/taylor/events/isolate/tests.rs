@@ -86,9 +86,18 @@ fn roots_at_the_ends_lie_in_pieces_that_end_there() {
     let a = from_roots(1.0, &[0.0, 0.3, 1.0]);
     let p = pieces(&a);
     assert_eq!(p.len(), 3, "{p:?}");
-    assert!(matches!(p[0], Piece::Unresolved(0.0, hi) if hi < 1e-13), "{p:?}");
-    assert!(matches!(p[1], Piece::Isolated(lo, hi) if lo < 0.3 && 0.3 < hi), "{p:?}");
-    assert!(matches!(p[2], Piece::Unresolved(lo, 1.0) if lo > 1.0 - 1e-13), "{p:?}");
+    assert!(
+        matches!(p[0], Piece::Unresolved(0.0, hi) if hi < 1e-13),
+        "{p:?}"
+    );
+    assert!(
+        matches!(p[1], Piece::Isolated(lo, hi) if lo < 0.3 && 0.3 < hi),
+        "{p:?}"
+    );
+    assert!(
+        matches!(p[2], Piece::Unresolved(lo, 1.0) if lo > 1.0 - 1e-13),
+        "{p:?}"
+    );
 }
 
 #[test]
@@ -105,7 +114,10 @@ fn a_root_on_a_halving_point_is_one_narrow_piece() {
     };
     assert!(lo < 0.5 && 0.5 < hi && hi - lo < 1e-13, "{p:?}");
     assert!(eval(&a, lo) > 0.0 && eval(&a, hi) < 0.0);
-    assert!(matches!(p[1], Piece::Isolated(lo, hi) if lo < 0.8 && 0.8 < hi), "{p:?}");
+    assert!(
+        matches!(p[1], Piece::Isolated(lo, hi) if lo < 0.8 && 0.8 < hi),
+        "{p:?}"
+    );
 }
 
 #[test]
@@ -156,7 +168,12 @@ fn a_taylor_polynomial_of_high_degree() {
     a[0] -= 0.3;
     let asin = 0.3f64.asin();
     let pi = std::f64::consts::PI;
-    let roots = [asin / 10.0, (pi - asin) / 10.0, (asin + 2.0 * pi) / 10.0, (3.0 * pi - asin) / 10.0];
+    let roots = [
+        asin / 10.0,
+        (pi - asin) / 10.0,
+        (asin + 2.0 * pi) / 10.0,
+        (3.0 * pi - asin) / 10.0,
+    ];
     let p = pieces(&a);
     assert_eq!(p.len(), 4, "{p:?}");
     for (piece, r) in p.iter().zip(roots) {
