@@ -9,7 +9,8 @@
 //! `cargo bench -p precess-benches --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
 //! few configurations with criterion (`-- jet` for the cost of a jet against one evaluation
-//! of f, `-- step` for what a step costs besides its jet). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
+//! of f, `-- step` for what a step costs besides its jet, `-- events` for what an event
+//! costs, scanned or expanded with the steps). `PRECESS_TAYLOR_TABLE=0` skips the table. `scripts/heyoka_bench.py` times heyoka on
 //! the same problems and tolerances.
 // Reference constants are quoted with all their published digits.
 #![allow(clippy::excessive_precision)]
@@ -27,6 +28,9 @@ use precess::taylor::kernels::cauchy;
 use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
+
+#[path = "common/taylor_events.rs"]
+mod events;
 
 /// DETEST B5 y(20), 30-digit reference (Hull et al. 1972).
 const B5_Y20: [f64; 3] = [
@@ -807,6 +811,7 @@ fn main() {
     }
     g.finish();
     step_group(&mut c);
+    events::events_group(&mut c);
     for p in PROBLEMS {
         let mut g = c.benchmark_group(format!("taylor/{p:?}"));
         for m in [

@@ -136,6 +136,8 @@ mod sym {
 mod taylor {
     mod coefficients;
     mod config;
+    mod events;
+    mod events_guarantee;
     mod exp;
     mod extended;
     mod extended_functions;

@@ -164,6 +164,25 @@ pub enum OdeError {
         /// The switches taken there.
         switches: usize,
     },
+    /// An event expanded with the Taylor steps (`Run::taylor_event`) whose Taylor polynomial
+    /// on a step is not g there: at the step's end it is further from g than
+    /// `taylor::EVENT_MISMATCH` times the tolerance (relative to the polynomial's terms). g
+    /// varies faster than the step resolves (it reads the time at a frequency the system
+    /// does not have, or amplifies the state's variation), so the polynomial's roots would
+    /// not be g's. Bound the step (`TaylorConfig::h_max`) or scan g (`Run::event`).
+    #[error(
+        "event {index}: its Taylor polynomial on the step ending at t = {t} is {mismatch:e} from g there, above {limit:e}: g varies faster than the step resolves (bound the step or scan g)"
+    )]
+    EventNotResolved {
+        /// Index of the event, in the order the events were added.
+        index: usize,
+        /// End of the step.
+        t: f64,
+        /// |q(h) − g(t, y)| at the step's end.
+        mismatch: f64,
+        /// The largest mismatch accepted there.
+        limit: f64,
+    },
     /// A derived quantity of a trajectory came out NaN or ±∞.
     #[error("trajectory quantity {column}: {value} at t = {t} is not finite")]
     NonFiniteQuantity {

@@ -29,8 +29,13 @@
 //! fails to halve over two iterations, down to adjacent doubles: on the dense output of an
 //! adaptive pair or of the Taylor integrator, or on the partial steps of a fixed-step
 //! method, so the event is as accurate as the method.
+//!
+//! On the Taylor integrator, a g given as an expression of the state is found with a
+//! guarantee instead of the scan's estimate: expanded with each step and its polynomial's
+//! roots isolated (`StepRoots`, `Run::taylor_event`, `taylor::TaylorEvent`).
 
 use super::error::OdeError;
+use super::stepper::Stepper;
 
 /// Which sign changes of g count.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -160,19 +165,50 @@ pub struct EventHit<St> {
 /// A function of (t, y), boxed once per run.
 pub(crate) type StateFn<'a, St> = Box<dyn FnMut(f64, &St) -> f64 + 'a>;
 
-/// An event with its function and the value of g at the end of the last step.
-pub(crate) struct EventSlot<'a, St> {
+/// The roots of an event's function in each step, isolated by the stepper's own means
+/// instead of the scan of g's samples ([`super::scan`]): the Taylor integrator expands g
+/// along its step (`taylor::TaylorEvent`). What [`Run`](super::Run) asks of such an event
+/// after each step.
+pub(crate) trait StepRoots<S: Stepper> {
+    /// Appends to `out` (which ends with `(t_a, g_a)`, the step's start) the points of the
+    /// step after t_a, ascending and ending with `(t_b, g_b)`, such that the function
+    /// [`StepRoots::value`] has at most one root between two consecutive ones wherever the
+    /// implementation proves it. `index` names the event in errors.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteEvent`] for a function that is not finite on the step.
+    fn points(
+        &mut self,
+        stepper: &S,
+        index: usize,
+        a: (f64, f64),
+        b: (f64, f64),
+        out: &mut Vec<(f64, f64)>,
+    ) -> Result<(), OdeError>;
+
+    /// The function whose roots [`StepRoots::points`] isolated, at `t` inside the last
+    /// step: the roots are located on it.
+    ///
+    /// # Errors
+    /// [`OdeError::NonFiniteEvent`].
+    fn value(&mut self, index: usize, t: f64) -> Result<f64, OdeError>;
+}
+
+/// An event with its function, how its roots are found in a step (scanned when `roots` is
+/// `None`), and the value of g at the end of the last step.
+pub(crate) struct EventSlot<'a, S: Stepper> {
     pub(crate) event: Event,
-    pub(crate) g: StateFn<'a, St>,
+    pub(crate) g: StateFn<'a, S::State>,
+    pub(crate) roots: Option<Box<dyn StepRoots<S> + 'a>>,
     pub(crate) last: f64,
 }
 
-impl<St> EventSlot<'_, St> {
+impl<S: Stepper> EventSlot<'_, S> {
     /// g(t, y), refused when not finite.
     ///
     /// # Errors
     /// [`OdeError::NonFiniteEvent`].
-    pub(crate) fn eval(&mut self, index: usize, t: f64, y: &St) -> Result<f64, OdeError> {
+    pub(crate) fn eval(&mut self, index: usize, t: f64, y: &S::State) -> Result<f64, OdeError> {
         let value = (self.g)(t, y);
         if value.is_finite() {
             Ok(value)

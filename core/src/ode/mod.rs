@@ -42,6 +42,7 @@ pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
 pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub use events::{Direction, Event, EventHit};
+pub(crate) use events::StepRoots;
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
 pub(crate) use hybrid::delegate_stepper;

@@ -2,7 +2,7 @@
 //! every accepted step, events and progress reports.
 
 use super::error::{OdeError, check_stop};
-use super::events::{Event, EventHit, EventSlot, crossing, locate_root};
+use super::events::{Event, EventHit, EventSlot, StepRoots, crossing, locate_root};
 use super::sampling::{SampleClock, Sampling};
 use super::scan::{first_pass_times, scan_step};
 use super::stepper::Stepper;
@@ -124,7 +124,7 @@ pub struct Run<'a, S: Stepper> {
     t_end: f64,
     sampling: Sampling,
     quantities: Vec<Box<dyn Quantities<S::State> + 'a>>,
-    events: Vec<EventSlot<'a, S::State>>,
+    events: Vec<EventSlot<'a, S>>,
     observer: Option<Observer<'a, S::State>>,
     progress: Option<Reporter<'a>>,
     /// The points of the current step at which the scan evaluated one event's g, kept
@@ -209,6 +209,25 @@ impl<'a, S: Stepper> Run<'a, S> {
         self.events.push(EventSlot {
             event,
             g: Box::new(g),
+            roots: None,
+            last: 0.0,
+        });
+        self
+    }
+
+    /// Adds an event whose roots in each step `roots` isolates, with `g` its value at the
+    /// steps' ends (for steppers that find an event's roots themselves: the Taylor
+    /// integrator's [`Run::taylor_event`]).
+    pub(crate) fn event_with_roots(
+        mut self,
+        event: Event,
+        g: impl FnMut(f64, &S::State) -> f64 + 'a,
+        roots: Box<dyn StepRoots<S> + 'a>,
+    ) -> Self {
+        self.events.push(EventSlot {
+            event,
+            g: Box::new(g),
+            roots: Some(roots),
             last: 0.0,
         });
         self
@@ -234,7 +253,8 @@ impl<'a, S: Stepper> Run<'a, S> {
     /// bad end or sample time, [`OdeError::SampleAfterEnd`], [`OdeError::InvalidStep`] for a
     /// sample interval that is not finite and > 0, [`OdeError::NonFiniteEvent`] at the start.
     /// While running: the stepper's errors, [`OdeError::NonFiniteEvent`],
-    /// [`OdeError::NonFiniteQuantity`].
+    /// [`OdeError::NonFiniteQuantity`], [`OdeError::EventNotResolved`] (an event of
+    /// `Run::taylor_event` whose polynomial on a step is not g).
     pub fn integrate(mut self) -> Result<Outcome<S::State>, OdeError> {
         let t0 = self.stepper.t();
         let t_end = self.t_end;
@@ -343,7 +363,11 @@ impl<'a, S: Stepper> Run<'a, S> {
         let stepper = &mut *self.stepper;
         // The first pass's inner states, shared by every event that scans.
         let times = first_pass_times(t_a, t_b);
-        let states = if self.events.iter().all(|s| s.event.is_step_ends_only()) {
+        let states = if self
+            .events
+            .iter()
+            .all(|s| s.event.is_step_ends_only() || s.roots.is_some())
+        {
             None
         } else {
             Some([
@@ -360,6 +384,12 @@ impl<'a, S: Stepper> Run<'a, S> {
             points.clear();
             points.push((t_a, g_a));
             match &states {
+                // An event whose roots the stepper isolates itself (not scanned).
+                _ if slot.roots.is_some() && !slot.event.is_step_ends_only() => {
+                    if let Some(roots) = slot.roots.as_mut() {
+                        roots.points(stepper, index, (t_a, g_a), (t_b, g_b), points)?;
+                    }
+                }
                 Some(states) if !slot.event.is_step_ends_only() => {
                     let inner = [
                         slot.eval(index, times[0], &states[0])?,
@@ -381,7 +411,14 @@ impl<'a, S: Stepper> Run<'a, S> {
                 let Some(direction) = crossing(wanted, left.1, right.1) else {
                     continue;
                 };
-                let t = locate_root(|t| g_at(stepper, slot, index, t), left, right)?;
+                // Located on what isolated the root: the stepper's function for an event it
+                // isolates, g on the stepper's solution otherwise (and for the ends only).
+                let t = match &mut slot.roots {
+                    Some(roots) if !slot.event.is_step_ends_only() => {
+                        locate_root(|t| roots.value(index, t), left, right)?
+                    }
+                    _ => locate_root(|t| g_at(stepper, slot, index, t), left, right)?,
+                };
                 hits.push(EventHit {
                     index,
                     t,
@@ -435,7 +472,7 @@ impl<'a, S: Stepper> Run<'a, S> {
 /// g of `slot` (event `index`) on the stepper's solution at `t` inside the last step.
 fn g_at<S: Stepper>(
     stepper: &mut S,
-    slot: &mut EventSlot<'_, S::State>,
+    slot: &mut EventSlot<'_, S>,
     index: usize,
     t: f64,
 ) -> Result<f64, OdeError> {

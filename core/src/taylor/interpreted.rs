@@ -130,60 +130,7 @@ impl<const N: usize> TaylorTape<N> {
         let program = Program::lower(arena, &rhs);
         let tape = Tape::from_program(&program, &symbols, time);
         symbols.extend(time);
-        // A parameter of the arena that the program does not read is bound by code that
-        // binds a whole scene: judged for finiteness, then left out of what Bindings sees.
-        let inputs = program.inputs();
-        let read = |name: &str| inputs.iter().any(|&s| arena.symbol(s).name == name);
-        // A name given twice is refused before any is judged, read or not.
-        check_distinct(values)?;
-        let mut used = Vec::with_capacity(values.len());
-        for &(name, value) in values {
-            if read(name) || arena.find_parameter(name).is_none() {
-                used.push((name, value));
-            } else if !value.is_finite() {
-                return Err(BindingError::NonFinite {
-                    name: name.to_owned(),
-                    value,
-                }
-                .into());
-            }
-        }
-        // Bindings judges the names and values; the values are then read here by name.
-        Bindings::new(arena, std::slice::from_ref(&program), &symbols, &used)?;
-        let value_of = |s| {
-            let name = &arena.symbol(s).name;
-            values
-                .iter()
-                .rev()
-                .find(|(n, _)| n == name)
-                .map_or(f64::NAN, |&(_, v)| v)
-        };
-        let mut scalars: Vec<f64> = Vec::with_capacity(tape.scalars.len());
-        for op in &tape.scalars {
-            let x = |i: u32| scalars[i as usize];
-            let v = match *op {
-                ScalarOp::Const(c) => c,
-                ScalarOp::Symbol(s) => value_of(s),
-                ScalarOp::Add(a, b) => x(a) + x(b),
-                ScalarOp::Sub(a, b) => x(a) - x(b),
-                ScalarOp::Mul(a, b) => x(a) * x(b),
-                ScalarOp::Div(a, b) => x(a) / x(b),
-                ScalarOp::Neg(a) => -x(a),
-                ScalarOp::Sqrt(a) => x(a).sqrt(),
-                ScalarOp::Powf(a, r) => x(a).powf(r),
-                ScalarOp::Sin(a) => x(a).sin(),
-                ScalarOp::Cos(a) => x(a).cos(),
-                ScalarOp::Func(f, a) => f.value(x(a)),
-            };
-            if !v.is_finite() {
-                return Err(TaylorError::NonFiniteConstant {
-                    operation: operation_name(op),
-                    value: v,
-                });
-            }
-            scalars.push(v);
-        }
-        let scalars_dd = scalars_in_dd(&tape, &value_of);
+        let (scalars, scalars_dd) = bind_scalars(arena, &program, &tape, &symbols, values)?;
         Ok(TaylorTape {
             tape,
             scalars,
@@ -323,6 +270,76 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         }
         true
     }
+}
+
+/// The values of `tape`'s scalars (lowered from `program`, whose inputs are `symbols` and
+/// parameters), in f64 and in double-double, with the parameters bound by name from
+/// `values`: what a [`TaylorTape`] and a [`TaylorEvent`](super::TaylorEvent) compute once.
+///
+/// # Errors
+/// The binding errors, then [`TaylorError::NonFiniteConstant`], as [`TaylorTape::new`].
+pub(super) fn bind_scalars(
+    arena: &Arena,
+    program: &Program,
+    tape: &Tape,
+    symbols: &[crate::sym::SymbolId],
+    values: &[(&str, f64)],
+) -> Result<(Vec<f64>, Vec<Dd>), TaylorError> {
+    // A parameter of the arena that the program does not read is bound by code that
+    // binds a whole scene: judged for finiteness, then left out of what Bindings sees.
+    let inputs = program.inputs();
+    let read = |name: &str| inputs.iter().any(|&s| arena.symbol(s).name == name);
+    // A name given twice is refused before any is judged, read or not.
+    check_distinct(values)?;
+    let mut used = Vec::with_capacity(values.len());
+    for &(name, value) in values {
+        if read(name) || arena.find_parameter(name).is_none() {
+            used.push((name, value));
+        } else if !value.is_finite() {
+            return Err(BindingError::NonFinite {
+                name: name.to_owned(),
+                value,
+            }
+            .into());
+        }
+    }
+    // Bindings judges the names and values; the values are then read here by name.
+    Bindings::new(arena, std::slice::from_ref(program), symbols, &used)?;
+    let value_of = |s| {
+        let name = &arena.symbol(s).name;
+        values
+            .iter()
+            .rev()
+            .find(|(n, _)| n == name)
+            .map_or(f64::NAN, |&(_, v)| v)
+    };
+    let mut scalars: Vec<f64> = Vec::with_capacity(tape.scalars.len());
+    for op in &tape.scalars {
+        let x = |i: u32| scalars[i as usize];
+        let v = match *op {
+            ScalarOp::Const(c) => c,
+            ScalarOp::Symbol(s) => value_of(s),
+            ScalarOp::Add(a, b) => x(a) + x(b),
+            ScalarOp::Sub(a, b) => x(a) - x(b),
+            ScalarOp::Mul(a, b) => x(a) * x(b),
+            ScalarOp::Div(a, b) => x(a) / x(b),
+            ScalarOp::Neg(a) => -x(a),
+            ScalarOp::Sqrt(a) => x(a).sqrt(),
+            ScalarOp::Powf(a, r) => x(a).powf(r),
+            ScalarOp::Sin(a) => x(a).sin(),
+            ScalarOp::Cos(a) => x(a).cos(),
+            ScalarOp::Func(f, a) => f.value(x(a)),
+        };
+        if !v.is_finite() {
+            return Err(TaylorError::NonFiniteConstant {
+                operation: operation_name(op),
+                value: v,
+            });
+        }
+        scalars.push(v);
+    }
+    let scalars_dd = scalars_in_dd(tape, &value_of);
+    Ok((scalars, scalars_dd))
 }
 
 /// How [`TaylorError::NonFiniteConstant`] names a scalar operation.

@@ -10,10 +10,13 @@
 //! - [`batch`] steps `L` trajectories at once, their recurrences on SIMD lanes.
 //! - [`Taylor`] steps with them: order and step from the tolerance, dense output from the
 //!   step polynomial, compensated sums; [`solve`] and [`solve_dense`] drive it in one call.
+//! - [`TaylorEvent`] is an event function expanded with the steps, whose roots on each step
+//!   [`Run::taylor_event`](crate::ode::Run::taylor_event) isolates with a guarantee.
 
 pub mod batch;
 pub mod compact;
 mod emit;
+mod events;
 mod integrator;
 mod interpreted;
 pub mod kernels;
@@ -22,6 +25,7 @@ mod recurrence_dd;
 mod tape;
 
 pub use emit::TaylorTokens;
+pub use events::{EVENT_MISMATCH, TaylorEvent};
 pub use integrator::{Taylor, TaylorConfig, solve, solve_dense};
 pub use interpreted::{TaylorError, TaylorTape};
 pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};

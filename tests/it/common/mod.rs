@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 
 pub mod body;
+pub mod dips;
 pub mod eulerian;
 pub mod flow;
 pub mod free_bodies;

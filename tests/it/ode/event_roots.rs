@@ -5,6 +5,9 @@
 //! a step's end reported once; and random sums of sines and polynomials with known roots,
 //! against a brute-force scan and the roots themselves.
 
+use crate::common::dips::{
+    brute_roots, local_minimum, root_beside, sum_of_sines, sum_of_sines_slope,
+};
 use precess_core::exact::Dd;
 use precess_core::ode::{
     AdaptiveConfig, Direction, Dop853, Dopri5, Event, FixedStepConfig, FnSystem, Rk4, Run, Stepper,
@@ -235,35 +238,6 @@ fn a_root_exactly_at_a_step_end_is_reported_once() {
     assert_eq!(quadratic[1].1, Direction::Rising);
 }
 
-/// The roots of `g` on [0, t_end] by brute force: sign changes on a grid of `n` points,
-/// each bisected to adjacent doubles.
-fn brute_roots(g: &dyn Fn(f64) -> f64, t_end: f64, n: usize) -> Vec<f64> {
-    let mut out = Vec::new();
-    let mut prev = (0.0, g(0.0));
-    for i in 1..=n {
-        let t = t_end * i as f64 / n as f64;
-        let v = g(t);
-        if prev.1 != 0.0 && (prev.1 < 0.0) != (v < 0.0) {
-            let (mut a, mut b) = (prev.0, t);
-            let fa = prev.1;
-            loop {
-                let m = 0.5 * (a + b);
-                if m <= a || m >= b {
-                    break;
-                }
-                if (g(m) < 0.0) == (fa < 0.0) {
-                    a = m;
-                } else {
-                    b = m;
-                }
-            }
-            out.push(b);
-        }
-        prev = (t, v);
-    }
-    out
-}
-
 /// The event times of `g` (a function of t alone) on [0, t_end] with Taylor at 1e-12 and
 /// DOP853 at 1e-12 on the oscillator.
 fn found_by_both(g: impl Fn(f64) -> f64 + Copy, t_end: f64) -> [Vec<f64>; 2] {
@@ -343,15 +317,6 @@ proptest! {
     }
 }
 
-/// Σ Aᵢ sin(ωᵢ t + φᵢ) for three terms.
-fn sum_of_sines(amps: [f64; 3], omegas: [f64; 3], phases: [f64; 3]) -> impl Fn(f64) -> f64 + Copy {
-    move |t: f64| {
-        (0..3)
-            .map(|i| amps[i] * (omegas[i] * t + phases[i]).sin())
-            .sum::<f64>()
-    }
-}
-
 #[test]
 fn a_shallow_dip_between_two_close_roots_is_found() {
     // The case the sum-of-sines property test met: roots 7.19690… and 7.21857…, 0.0217
@@ -390,45 +355,6 @@ fn a_shallow_dip_between_two_close_roots_is_found() {
     }
 }
 
-/// A local minimum of `s` (with derivative `ds`) near `t0`: downhill in steps of 1e-3 to
-/// a change of sign of s′, then bisection on s′.
-fn local_minimum(ds: impl Fn(f64) -> f64, t0: f64) -> f64 {
-    let h = 1e-3;
-    let mut t = t0;
-    while ds(t) > 0.0 {
-        t -= h;
-    }
-    while ds(t) < 0.0 {
-        t += h;
-    }
-    let (mut lo, mut hi) = (t - h, t);
-    for _ in 0..60 {
-        let m = 0.5 * (lo + hi);
-        if ds(m) < 0.0 { lo = m } else { hi = m }
-    }
-    0.5 * (lo + hi)
-}
-
-/// The root of `g` nearest `from` in the direction `dir` (±1), g(from) < 0: steps of 1e-4
-/// (within 1 of `from`) to a change of sign, then bisection on g to adjacent doubles.
-fn root_beside(g: impl Fn(f64) -> f64, from: f64, dir: f64) -> Option<f64> {
-    let mut t = from;
-    while g(t + dir * 1e-4) < 0.0 {
-        t += dir * 1e-4;
-        if (t - from).abs() > 1.0 {
-            return None;
-        }
-    }
-    let (mut neg, mut pos) = (t, t + dir * 1e-4);
-    loop {
-        let m = 0.5 * (neg + pos);
-        if m == neg || m == pos {
-            return Some(pos);
-        }
-        if g(m) < 0.0 { neg = m } else { pos = m }
-    }
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(512))]
 
@@ -445,9 +371,7 @@ proptest! {
         depth in 1e-3f64..3e-2,
     ) {
         let s = sum_of_sines(amps, omegas, phases);
-        let ds = move |t: f64| {
-            (0..3).map(|i| amps[i] * omegas[i] * (omegas[i] * t + phases[i]).cos()).sum::<f64>()
-        };
+        let ds = sum_of_sines_slope(amps, omegas, phases);
         let t_m = local_minimum(ds, t0);
         let delta = depth * amps.iter().sum::<f64>();
         let s_m = s(t_m);

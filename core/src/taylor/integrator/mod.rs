@@ -243,6 +243,16 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.last.t
     }
 
+    /// The last step's polynomial, for the events expanded along it: its start as
+    /// t + t_lo, its length h, the state y at its start and the rows c₁ … c_p (empty before
+    /// any step and after a restart). The dense output is y + Σ cₖ θᵏ at
+    /// θ = (t′ − t) − t_lo.
+    pub(crate) fn last_jet(&self) -> (f64, f64, f64, &[f64; N], &[[f64; N]]) {
+        let p = self.last.order;
+        let rows = self.coeffs.get(1..=p).unwrap_or(&[]);
+        (self.last.t, self.last.t_lo, self.last.h, &self.last.y, rows)
+    }
+
     /// [`TaylorSystem::check_parameters`] of the integrator's system, for a restart.
     /// The system, to be changed between steps by a hybrid run (which restarts the
     /// integrator at once).
