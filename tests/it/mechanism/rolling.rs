@@ -431,3 +431,42 @@ fn negative_masses_and_radii_are_refused() {
     );
     assert_eq!(model.derivative(0.0, &q, &u).expect("regular"), before);
 }
+
+/// A disk released at rest leaning 1.2 rad falls onto its face (with any spin it would
+/// turn back short of it). Integrated bare, its right-hand side is refused at the flat
+/// state and DOP853 fails with a non-finite state, which names nothing; in the run loop the
+/// lowest wheel's tilt is a witness, and the run halts with `WheelFlat` at a configuration
+/// the contact can still be placed in.
+#[test]
+fn a_wheel_falling_flat_halts_the_run_by_name() {
+    use precess::mechanism::rolling::{FLAT_WITNESS, RollingHalt, rolling_run};
+    use precess::ode::{OdeError, Run, StopReason};
+    use std::f64::consts::FRAC_PI_2;
+    let model = disk_model();
+    let y0 = [0.0, 0.0, 0.0, 1.2, 0.0, 0.0, 0.0, 0.0];
+    let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
+    let mut bare = Dop853::new(model.rolling_system::<8>(), 0.0, y0, cfg).expect("starts");
+    let err = bare.advance_to(5.0).unwrap_err();
+    assert!(matches!(err, OdeError::NonFiniteState { .. }), "{err}");
+    let mut run = rolling_run(&model, 0.0, y0, cfg).expect("starts");
+    let out = Run::new(&mut run, 5.0)
+        .sample_every(0.01)
+        .integrate()
+        .expect("halts");
+    assert_eq!(out.stop, StopReason::Halted);
+    let Some(&RollingHalt::WheelFlat { t, wheel, tilt }) = run.halt() else {
+        panic!("{:?}", run.halt());
+    };
+    assert_eq!(wheel, 0);
+    assert!(
+        tilt >= FLAT_WITNESS && tilt < 1.001 * FLAT_WITNESS,
+        "{tilt}"
+    );
+    assert!(t > 0.0 && t < 5.0 && out.t == t);
+    // Every sample on the way down, and the last, is a placed configuration.
+    for s in out.trajectory.states().iter().chain([&out.state]) {
+        let q: [f64; 5] = s.x[..5].try_into().expect("five coordinates");
+        assert!(model.check_configuration(&q).is_ok());
+        assert!(s.x[3].abs() < FRAC_PI_2);
+    }
+}

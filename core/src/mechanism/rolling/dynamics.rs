@@ -222,7 +222,8 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     }
 
     /// This mechanism as a [`System`] over the state (q, u) of S = n + k entries (a state
-    /// where the projection fails yields NaN, which the steppers report).
+    /// where the projection fails yields NaN, which the steppers report). Wrapped in the run
+    /// loop ([`super::rolling_run`]) a wheel falling flat halts the run by name instead.
     fn rolling_system<const S: usize>(&self) -> RollingSystem<'_, Self, N, M, K, S>
     where
         Self: Sized,
@@ -235,6 +236,15 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
 #[derive(Debug)]
 pub struct RollingSystem<'a, T, const N: usize, const M: usize, const K: usize, const S: usize> {
     model: &'a T,
+}
+
+impl<'a, T, const N: usize, const M: usize, const K: usize, const S: usize>
+    RollingSystem<'a, T, N, M, K, S>
+{
+    /// The mechanism.
+    pub fn model(&self) -> &'a T {
+        self.model
+    }
 }
 
 impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Clone

@@ -19,9 +19,11 @@
 mod derivation;
 mod dynamics;
 mod interpreted;
+mod run;
 mod scene;
 
 pub use derivation::RollingDerivation;
 pub use dynamics::{CONTACT_TOLERANCE, MIN_TILT, RollingDynamics, RollingSystem, split_rolling};
 pub use interpreted::RollingModel;
+pub use run::{FLAT_WITNESS, RollingHalt, RollingRun, rolling_run};
 pub use scene::{RollingScene, RollingWheel, WheelSurface};

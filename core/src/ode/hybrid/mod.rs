@@ -275,6 +275,33 @@ where
         Ok(())
     }
 
+    /// The inner stepper's step from `t_a` towards `t_limit`. A step whose stages meet a
+    /// state where the right-hand side is not finite (a wheel past lying flat, a contact
+    /// past its support map) is taken again towards half the distance, from the loop's
+    /// state, as long as a witness is watched: the witness placed before the singularity
+    /// is then reached by steps that stay short of it. Bounded by the halvings of the
+    /// doubles between `t_a` and `t_limit`.
+    fn step_inner(&mut self, t_a: f64, t_limit: f64) -> Result<(), OdeError> {
+        let watching =
+            (0..self.disarmed.len()).any(|id| self.inner.system().watches(&self.state.mode, id));
+        let mut limit = t_limit;
+        loop {
+            match self.inner.step(limit) {
+                Err(OdeError::NonFiniteState { .. }) if watching => {
+                    let shorter = t_a + 0.5 * (limit - t_a);
+                    if !(shorter > t_a && shorter < limit) {
+                        return self.inner.step(limit);
+                    }
+                    limit = shorter;
+                    // The failed attempt may have left stages of the non-finite state
+                    // behind: start again from the loop's state, the step size kept.
+                    self.inner.restart(t_a, self.state.x.clone())?;
+                }
+                other => return other,
+            }
+        }
+    }
+
     /// Watches again each disarmed witness that is ≤ 0 at the step's end `t` (it has
     /// crossed) or no longer watched: its next fall through zero is an event again.
     fn rearm(&mut self, t: f64) -> Result<(), OdeError> {
@@ -479,7 +506,7 @@ where
             });
         }
         let t_a = self.t;
-        self.inner.step(t_limit)?;
+        self.step_inner(t_a, t_limit)?;
         let t_b = self.inner.t();
         self.t_start = t_a;
         match self.first_root(t_a, t_b)? {
