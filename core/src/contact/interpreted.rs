@@ -9,7 +9,7 @@ use super::dynamics::{ContactDynamics, ContactMomenta, ContactPoint, LawKind, Ph
 use super::error::ContactError;
 use super::scene::{ContactLaw, Friction};
 use super::state::STATE_LEN;
-use super::surface::SurfaceKind;
+use crate::rigid::SurfaceKind;
 #[cfg(doc)]
 use crate::codegen::BindingError;
 use crate::codegen::{Bindings, OpCount, Program};

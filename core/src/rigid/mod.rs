@@ -1,4 +1,5 @@
-//! Rigid-body motion shared by the scenes: Euler-angle sequences with their rotation and
+//! Rigid-body motion shared by the scenes: every rolling surface and its support map, with
+//! the one flatness limit ([`Surface`], [`MIN_TILT`]); Euler-angle sequences with their rotation and
 //! rate matrices and their charts (the singularity rule and the chart switch's pieces,
 //! [`charts`]), attitude kinematics on the unit quaternions (the exponential map), the
 //! states and the models that drive them, the Runge–Kutta–Munthe-Kaas Lie-group stepper, and
@@ -16,6 +17,7 @@ mod rkmk4;
 mod rotor;
 mod splitting;
 mod state;
+mod surface;
 
 pub use angles::{AngleSequence, angles_from_rotation, elementary};
 pub use charts::{
@@ -31,4 +33,5 @@ pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,
     SplittingOrder,
 };
+pub use surface::{MIN_TILT, Rim, Surface, SurfaceError, SurfaceKind};
 pub use state::{Attitude, AttitudeModel, BodyMomentum, RigidBodyModel, RigidState};
