@@ -174,6 +174,13 @@ mod contact {
     mod support;
     mod tippe_top;
 }
+/// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
+mod rolling_once {
+    mod accelerations;
+    mod run;
+    mod scenes;
+    mod theory;
+}
 mod variational;
 mod variational_derive;
 /// Values as measured: units, density, constant arithmetic, names.
