@@ -29,6 +29,9 @@ use crate::rigid as surface;
 mod system;
 pub mod theory;
 
+/// The surfaces and their support maps, shared with a mechanism's wheels: they live in
+/// [`crate::rigid`].
+pub use crate::rigid::{Surface, SurfaceKind};
 pub use checks::{ContactValues, MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
 pub use derivation::{ContactDerivation, ContactEquations};
 pub use dynamics::{
@@ -40,7 +43,4 @@ pub use quantities::ContactQuantities;
 pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
 pub use scene::{ContactLaw, ContactScene, Friction};
 pub use state::{STATE_LEN, layout};
-/// The surfaces and their support maps, shared with a mechanism's wheels: they live in
-/// [`crate::rigid`].
-pub use crate::rigid::{Surface, SurfaceKind};
 pub use system::ContactSystem;

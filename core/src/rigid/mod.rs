@@ -33,5 +33,5 @@ pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,
     SplittingOrder,
 };
-pub use surface::{MIN_TILT, Rim, Surface, SurfaceError, SurfaceKind};
 pub use state::{Attitude, AttitudeModel, BodyMomentum, RigidBodyModel, RigidState};
+pub use surface::{MIN_TILT, Rim, Surface, SurfaceError, SurfaceKind};

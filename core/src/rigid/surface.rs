@@ -45,7 +45,6 @@ pub enum SurfaceError {
     Sym(#[from] SymError),
 }
 
-
 /// A convex contact surface fixed in the body, in description axes. Every surface has its
 /// symmetry (or principal) axes along the description axes; its placement is `center`.
 #[derive(Clone, Copy, Debug, PartialEq)]

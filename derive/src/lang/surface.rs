@@ -109,10 +109,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
         other => other,
     };
     if !place.allows(kind) || !SURFACES.iter().any(|s| s.0 == kind) {
-        let names = SURFACES
-            .iter()
-            .map(|s| s.0)
-            .filter(|s| place.allows(s));
+        let names = SURFACES.iter().map(|s| s.0).filter(|s| place.allows(s));
         let elsewhere = match place {
             Place::Wheel { .. } if SURFACES.iter().any(|s| s.0 == kind) => {
                 format!(" (`{kind}` is a surface of a body on a table, not of a wheel)")

@@ -90,10 +90,26 @@ fn the_disk_on_a_table_and_the_wheel_have_the_same_accelerations() {
         "table vs wheel {:e}, table vs closed form {:e}, wheel vs closed form {:e}, centre {:e}",
         worst[0], worst[1], worst[2], worst[3]
     );
-    assert!(worst[0] < 1e-12, "the two declarations differ by {:e}", worst[0]);
-    assert!(worst[1] < 1e-12, "the table is off the closed form by {:e}", worst[1]);
-    assert!(worst[2] < 1e-12, "the wheel is off the closed form by {:e}", worst[2]);
-    assert!(worst[3] < 1e-12, "the states or the centres' accelerations differ by {:e}", worst[3]);
+    assert!(
+        worst[0] < 1e-12,
+        "the two declarations differ by {:e}",
+        worst[0]
+    );
+    assert!(
+        worst[1] < 1e-12,
+        "the table is off the closed form by {:e}",
+        worst[1]
+    );
+    assert!(
+        worst[2] < 1e-12,
+        "the wheel is off the closed form by {:e}",
+        worst[2]
+    );
+    assert!(
+        worst[3] < 1e-12,
+        "the states or the centres' accelerations differ by {:e}",
+        worst[3]
+    );
 }
 
 /// Where the one limit comes from: the table's ω̇ against the closed form, the disk placed
@@ -104,7 +120,11 @@ fn the_flatness_limit_keeps_the_table_accurate_and_both_scenes_refuse_below_it()
     let mut rng = Rng::new(6);
     let mut at_limit = 0.0_f64;
     for e in 1..=6 {
-        let alpha = if e == 6 { 1.5 * MIN_TILT } else { 10f64.powi(-e) };
+        let alpha = if e == 6 {
+            1.5 * MIN_TILT
+        } else {
+            10f64.powi(-e)
+        };
         let mut worst = [0.0_f64; 2];
         for _ in 0..16 {
             let mut s = standing(&mut rng);

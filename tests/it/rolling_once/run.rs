@@ -57,7 +57,10 @@ fn a_second_of_steady_rolling_is_the_same_run_both_ways_and_the_closed_forms() {
         let q: [f64; 6] = std::array::from_fn(|i| w[i]);
         let u = [w[6], w[7], w[8]];
         let rates = WheelDisk.rates(&q, &u).expect("rates");
-        let (e_table, e_wheel) = (TableDisk.energy(Phase::Rolling, &y), WheelDisk.energy(&q, &rates));
+        let (e_table, e_wheel) = (
+            TableDisk.energy(Phase::Rolling, &y),
+            WheelDisk.energy(&q, &rates),
+        );
         worst[0] = worst[0].max(((e_table - e0) / e0).abs());
         worst[1] = worst[1].max(((e_wheel - e_table) / e0).abs());
         let p_table = TableDisk.contact(&y).space;
@@ -76,9 +79,17 @@ fn a_second_of_steady_rolling_is_the_same_run_both_ways_and_the_closed_forms() {
          contact paths apart {:e}, table path off the circle {:e}, lean {:e}",
         circle.precession, worst[0], worst[1], worst[2], worst[3], worst[4]
     );
-    assert!(worst[0] < 1e-10, "the table's energy drifts by {:e}", worst[0]);
+    assert!(
+        worst[0] < 1e-10,
+        "the table's energy drifts by {:e}",
+        worst[0]
+    );
     assert!(worst[1] < 1e-10, "the energies differ by {:e}", worst[1]);
     assert!(worst[2] < 1e-9, "the contact paths part by {:e}", worst[2]);
-    assert!(worst[3] < 1e-9, "the path leaves the circle by {:e}", worst[3]);
+    assert!(
+        worst[3] < 1e-9,
+        "the path leaves the circle by {:e}",
+        worst[3]
+    );
     assert!(worst[4] < 1e-9, "the lean moves by {:e}", worst[4]);
 }

@@ -73,7 +73,10 @@ pub fn angles(r: &Matrix3<f64>) -> [f64; 3] {
 pub fn angle_rates(q: &[f64; 3], omega: &Vector3<f64>) -> [f64; 3] {
     let [e1, e2, e3] = joint_axes(q[0], q[1]);
     let j = Matrix3::from_columns(&[e1, e2, e3]);
-    let rates = j.lu().solve(omega).expect("the zyx chart is regular away from θ = ±π/2");
+    let rates = j
+        .lu()
+        .solve(omega)
+        .expect("the zyx chart is regular away from θ = ±π/2");
     [rates.x, rates.y, rates.z]
 }
 

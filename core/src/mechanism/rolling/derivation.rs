@@ -24,8 +24,8 @@ use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{basis_axis, unit_axis};
 use crate::mechanism::scene::MechanismScene;
-use crate::sym::mat3::{cross, dot, mat_vec};
 use crate::rigid::{Rim, Surface, SurfaceError};
+use crate::sym::mat3::{cross, dot, mat_vec};
 use crate::sym::{Arena, ExprId};
 
 /// Everything derived from a mechanism whose wheels roll.
