@@ -167,7 +167,7 @@ mod contact {
     mod events;
     mod invariants;
     mod newton_euler;
-    mod reference;
+    pub mod reference;
     mod rolling_disk;
     mod routh;
     mod stick_slip;
@@ -179,6 +179,7 @@ mod rolling_once {
     mod accelerations;
     mod run;
     mod scenes;
+    mod support;
     mod theory;
 }
 mod variational;
