@@ -25,7 +25,9 @@ use crate::sym::{Arena, ExprId, Node, SymError};
 /// the closed form's variables (tests/it/rolling_once), the body on a table's accelerations
 /// stay within 1.2e-12 (relative to g/r + |ω|²) at a tilt of 1e-5, 5.6e-12 at 1e-6 and
 /// 4.8e-11 at 1e-7, growing as 1/tilt: 1e-6 keeps them to about 1e-11, two orders inside the
-/// tight tolerances the runs use.
+/// tight tolerances the runs use. The same disk as a mechanism's wheel matches them where its
+/// chart reaches flat at a lean of ±90°; where its tilt is an Euler angle near 0 the engine's
+/// sin² = 1 − cos² costs it more (1/tilt³, measured in docs/mechanisms.md).
 pub const MIN_TILT: f64 = 1e-6;
 
 /// What the shared support map refuses.

@@ -74,7 +74,11 @@ pub fn surface_list(place: Place) -> String {
             format!("`{name}({})`", keys.join(", "))
         })
         .collect();
-    forms.join(", ")
+    let synonym = match place {
+        Place::Table => "",
+        Place::Wheel { .. } => " (or `disk(..)`, the same rim)",
+    };
+    format!("{}{synonym}", forms.join(", "))
 }
 
 /// A surface as read: the shared surface and, for a wheel's disk rim, its axle.
@@ -174,12 +178,19 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
         }
         given.push((k, key, v));
     }
+    // A bad key is told alone: the required keys it may have misspelt are not missing too.
+    if !ok {
+        return None;
+    }
     // Every required key: a surface without its size has no support point.
     for key in &required {
         if !given.iter().any(|(g, _, _)| g == key) {
             ck.cx.error_spanned_by(
                 value,
-                format!("`{written}` needs `{key} = ...`: {}", expected()),
+                format!(
+                    "`{written}` needs `{key} = ...`: its keys are {}",
+                    allowed.join(", ")
+                ),
             );
             ok = false;
         }

@@ -11,6 +11,9 @@ use precess_testkit::rng::Rng;
 
 use crate::contact::reference::{NumSurface, support};
 
+/// The symbolic surface of a case from its placement, radius and tube.
+type Build = fn([ExprId; 3], ExprId, ExprId) -> Surface;
+
 /// Symbols for a vector, their values pushed on `env` (indexed by symbol).
 fn symbols(a: &mut Arena, env: &mut Vec<f64>, name: &str, v: &Vector3<f64>) -> [ExprId; 3] {
     std::array::from_fn(|k| symbol(a, env, &format!("{name}{k}"), v[k]))
@@ -44,31 +47,42 @@ fn the_support_map_turned_onto_an_axis_is_the_map_turned() {
         if n.dot(&axis) > -0.2 {
             n = (n - axis * (n.dot(&axis) + 0.6)).normalize();
         }
-        let (surface_num, local): (NumSurface, fn(&mut Arena, [ExprId; 3], ExprId, ExprId) -> Surface) =
-            match case % 4 {
-                0 => (NumSurface::Sphere { c: c.into(), rho }, |_, c, r, _| Surface::Sphere {
+        let (surface_num, local): (NumSurface, Build) = match case % 4 {
+            0 => (NumSurface::Sphere { c: c.into(), rho }, |c, r, _| {
+                Surface::Sphere {
                     center: c,
                     radius: r,
-                }),
-                1 => (NumSurface::DiskRim { c: c.into(), rho }, |_, c, r, _| Surface::DiskRim {
+                }
+            }),
+            1 => (NumSurface::DiskRim { c: c.into(), rho }, |c, r, _| {
+                Surface::DiskRim {
                     center: c,
                     radius: r,
-                }),
-                2 => (
-                    NumSurface::Torus { c: c.into(), big: rho, tube },
-                    |_, c, r, t| Surface::Torus {
-                        center: c,
-                        radius: r,
-                        tube: t,
-                    },
-                ),
-                _ => (NumSurface::Paraboloid { v: c.into(), big: rho }, |_, c, r, _| {
-                    Surface::Paraboloid {
-                        vertex: c,
-                        curvature_radius: r,
-                    }
-                }),
-            };
+                }
+            }),
+            2 => (
+                NumSurface::Torus {
+                    c: c.into(),
+                    big: rho,
+                    tube,
+                },
+                |c, r, t| Surface::Torus {
+                    center: c,
+                    radius: r,
+                    tube: t,
+                },
+            ),
+            _ => (
+                NumSurface::Paraboloid {
+                    v: c.into(),
+                    big: rho,
+                },
+                |c, r, _| Surface::Paraboloid {
+                    vertex: c,
+                    curvature_radius: r,
+                },
+            ),
+        };
         let mut a = Arena::new();
         let mut env = Vec::new();
         let cs = symbols(&mut a, &mut env, "c", &c);
@@ -76,7 +90,7 @@ fn the_support_map_turned_onto_an_axis_is_the_map_turned() {
         let axs = symbols(&mut a, &mut env, "a", &axis);
         let rs = symbol(&mut a, &mut env, "rho", rho);
         let ts = symbol(&mut a, &mut env, "tube", tube);
-        let surface = local(&mut a, cs, rs, ts);
+        let surface = local(cs, rs, ts);
         let s = surface.support_along(&mut a, &ns, &axs).expect("supports");
         let got = Vector3::from_fn(|k, _| a.eval(s[k], &env));
         // The hand-written map in the surface's own axes, turned back.
