@@ -145,7 +145,7 @@ impl Surface {
     }
 
     /// The surface's placement (centre or vertex) and its lengths, with their names, in a
-    /// fixed order: what [`super::ContactModel`] evaluates to check the parameters.
+    /// fixed order: what a body on a table evaluates to check its parameters.
     pub fn dimensions(&self) -> ([ExprId; 3], Vec<(&'static str, ExprId)>) {
         match *self {
             Surface::Sphere { center, radius } | Surface::DiskRim { center, radius } => {
