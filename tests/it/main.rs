@@ -170,13 +170,21 @@ mod contact {
     mod invariants;
     mod newton_euler;
     mod properties;
-    mod reference;
+    pub mod reference;
     mod rolling_disk;
     mod routh;
     mod run_loop;
     mod stick_slip;
     mod support;
     mod tippe_top;
+}
+/// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
+mod rolling_once {
+    mod accelerations;
+    mod run;
+    mod scenes;
+    mod support;
+    mod theory;
 }
 mod variational;
 mod variational_derive;

@@ -13,9 +13,9 @@ use crate::body::{Definiteness, check_inertia};
 /// How far |q| may be from 1 in a state handed in.
 pub const QUATERNION_TOLERANCE: f64 = 1e-9;
 
-/// The smallest tilt of a disk rim's or torus's axis from the vertical (rad) at which its
-/// support point is placed: below it the rim direction is rounding.
-pub const MIN_TILT: f64 = 1e-8;
+/// The one flatness limit of every rolling surface, shared with a mechanism's wheels
+/// ([`crate::rigid::MIN_TILT`], where its value is argued).
+pub use crate::rigid::MIN_TILT;
 
 /// The slip a rolling state may have, relative to |ω| |r| + |v|.
 pub const ROLLING_TOLERANCE: f64 = 1e-9;

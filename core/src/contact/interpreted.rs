@@ -9,10 +9,10 @@ use super::dynamics::{ContactDynamics, ContactMomenta, ContactPoint, LawKind, Ph
 use super::error::ContactError;
 use super::scene::{ContactLaw, Friction};
 use super::state::STATE_LEN;
-use super::surface::SurfaceKind;
 #[cfg(doc)]
 use crate::codegen::BindingError;
 use crate::codegen::{Bindings, OpCount, Program};
+use crate::rigid::SurfaceKind;
 use crate::sym::{Arena, ExprId, SymbolId};
 
 /// The programs of one phase.

@@ -24,10 +24,15 @@ mod quantities;
 mod run;
 mod scene;
 mod state;
-mod surface;
+/// The surfaces moved down to `rigid` (shared with a mechanism's wheels); the scene's files
+/// still name them through `super::surface`.
+use crate::rigid as surface;
 mod system;
 pub mod theory;
 
+/// The surfaces and their support maps, shared with a mechanism's wheels: they live in
+/// [`crate::rigid`].
+pub use crate::rigid::{Surface, SurfaceKind};
 pub use checks::{ContactValues, MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
 pub use derivation::{ContactDerivation, ContactEquations};
 pub use dynamics::{
@@ -40,5 +45,4 @@ pub use quantities::ContactQuantities;
 pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
 pub use scene::{ContactLaw, ContactScene, Friction};
 pub use state::{STATE_LEN, layout};
-pub use surface::{Surface, SurfaceKind};
 pub use system::ContactSystem;

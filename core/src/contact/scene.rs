@@ -1,7 +1,7 @@
 //! A body on a table, described: its mass properties, the surface it touches the table with,
 //! the law of the contact and gravity, as expressions (`derivation.rs` derives its equations).
 
-use super::surface::Surface;
+use crate::rigid::Surface;
 use crate::sym::ExprId;
 use crate::sym::mat3::Mat3;
 

@@ -8,7 +8,7 @@ use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::lagrange::LagrangeError;
 use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::ChartError;
+use crate::rigid::{ChartError, SurfaceError};
 use crate::sym::SymError;
 
 /// What can go wrong describing, deriving or evaluating a mechanism.
@@ -234,7 +234,9 @@ pub enum MechanismError {
     /// |d| = √(1 − (up·n)²), is at most `rolling::MIN_TILT`, and its contact point is
     /// undefined.
     #[error(
-        "rolling wheel {wheel} lies flat: the cosine of its lean is {tilt:e}, it must exceed 1e-6"
+        "rolling wheel {wheel} lies flat: the cosine of its lean is {tilt:e}, it must exceed \
+         {minimum:e}",
+        minimum = crate::rigid::MIN_TILT
     )]
     WheelFlat {
         /// The wheel, in declaration order.
@@ -335,6 +337,9 @@ pub enum MechanismError {
     /// A constructor of the symbolic engine failed.
     #[error(transparent)]
     Sym(#[from] SymError),
+    /// A wheel's surface the shared support map cannot turn onto an axle.
+    #[error(transparent)]
+    Surface(#[from] SurfaceError),
 }
 
 impl MechanismError {

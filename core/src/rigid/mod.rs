@@ -1,4 +1,5 @@
-//! Rigid-body motion shared by the scenes: Euler-angle sequences with their rotation and
+//! Rigid-body motion shared by the scenes: every rolling surface and its support map, with
+//! the one flatness limit ([`Surface`], [`MIN_TILT`]); Euler-angle sequences with their rotation and
 //! rate matrices and their charts (the singularity rule and the chart switch's pieces,
 //! [`charts`]), attitude kinematics on the unit quaternions (the exponential map), the
 //! states and the models that drive them, the Runge–Kutta–Munthe-Kaas Lie-group stepper, and
@@ -17,6 +18,7 @@ mod rkmk4;
 mod rotor;
 mod splitting;
 mod state;
+mod surface;
 
 pub use angles::{AngleSequence, angles_from_rotation, elementary};
 pub use charts::{
@@ -34,3 +36,4 @@ pub use splitting::{
     SplittingOrder,
 };
 pub use state::{Attitude, AttitudeModel, BodyMomentum, RigidBodyModel, RigidState};
+pub use surface::{MIN_TILT, Rim, Surface, SurfaceError, SurfaceKind};

@@ -1,5 +1,6 @@
 //! The call forms of `#[contact]`'s values, `name` or `name(key = value, ...)`: the
-//! surface and the law read against the tables in `keys.rs`, each dimension and coefficient
+//! surface (by `lang::surface`, the reader a mechanism's wheel shares) and the law read
+//! against the tables in `keys.rs`, each dimension and coefficient
 //! with the rule it must meet where it is a literal (fields meet the same rules at run time).
 
 use precess_core::contact::{ContactLaw, Friction, Surface};
@@ -7,7 +8,8 @@ use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
 use crate::lang::check::Checker;
-use crate::lang::keys::{self, LAWS, SURFACES};
+use crate::lang::keys::{self, LAWS};
+use crate::lang::surface::{self, Place};
 use crate::lang::units::Dim;
 
 /// One argument of a call form: `key = value`, or a bare word (`frictionless`).
@@ -16,16 +18,10 @@ enum Arg<'a> {
     Flag(&'a Ident),
 }
 
-/// The surfaces as the messages list them: `sphere(radius, center), …`.
+/// The surfaces as the messages list them: `sphere(radius, center, at)`, … (the one reader's
+/// list, [`crate::lang::surface`]).
 pub fn surface_list() -> String {
-    let forms: Vec<String> = SURFACES
-        .iter()
-        .map(|(name, required, optional)| {
-            let keys: Vec<&str> = required.iter().chain(*optional).copied().collect();
-            format!("`{name}({})`", keys.join(", "))
-        })
-        .collect();
-    forms.join(", ")
+    surface::surface_list(Place::Table)
 }
 
 /// The laws as the messages list them.
@@ -153,111 +149,9 @@ fn value_of<'a>(
         .and_then(|(_, v, _)| *v)
 }
 
-/// `surface = name(key = value, ...)`, one of [`SURFACES`].
+/// `surface = name(key = value, ...)`, read by the one reader of rolling surfaces.
 pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
-    let what = format!("a surface: {}", surface_list());
-    let (name, args) = call_form(ck, value, &what)?;
-    let Some(&(kind, required, optional)) = SURFACES.iter().find(|(s, _, _)| name == s) else {
-        let names = SURFACES.iter().map(|(s, _, _)| *s);
-        ck.cx.error_spanned_by(
-            name,
-            format!(
-                "unknown surface `{name}`: expected {}{}",
-                surface_list(),
-                keys::did_you_mean(&name.to_string(), names)
-            ),
-        );
-        return None;
-    };
-    let allowed: Vec<&'static str> = required.iter().chain(optional).copied().collect();
-    let args = keyed(ck, name, &args, &allowed)?;
-    // Every required dimension: a surface without its size has no support point.
-    let mut missing = false;
-    for key in required {
-        if value_of(&args, key).is_none() {
-            ck.cx
-                .error_spanned_by(value, format!("`{kind}` needs `{key} = ...`"));
-            missing = true;
-        }
-    }
-    if missing {
-        return None;
-    }
-    let of = |key: &str| format!("`{key}` of `{kind}`");
-    let placement = |ck: &mut Checker, key: &'static str| match value_of(&args, key) {
-        Some(v) => ck.expecting(Dim::LENGTH, key, |ck| ck.vector(v)),
-        None => Some([ck.arena.zero(); 3]),
-    };
-    // Every size of a surface is a length.
-    let positive = |ck: &mut Checker, value: &Expr, key: &'static str| {
-        ck.expecting(Dim::LENGTH, key, |ck| positive(ck, value, &of(key)))
-    };
-    match kind {
-        "sphere" | "disk_rim" => {
-            let radius = positive(ck, value_of(&args, keys::RADIUS)?, keys::RADIUS);
-            let center = placement(ck, keys::SURFACE_CENTER);
-            let (radius, center) = (radius?, center?);
-            Some(if kind == "sphere" {
-                Surface::Sphere { center, radius }
-            } else {
-                Surface::DiskRim { center, radius }
-            })
-        }
-        "ellipsoid" => {
-            let semi_axes = ck.expecting(Dim::LENGTH, keys::SEMI_AXES, |ck| {
-                positive_vector(ck, value_of(&args, keys::SEMI_AXES)?, &of(keys::SEMI_AXES))
-            });
-            let center = placement(ck, keys::SURFACE_CENTER);
-            Some(Surface::Ellipsoid {
-                center: center?,
-                semi_axes: semi_axes?,
-            })
-        }
-        "torus" => {
-            let radius = positive(ck, value_of(&args, keys::RADIUS)?, keys::RADIUS);
-            let tube_value = value_of(&args, keys::TUBE)?;
-            let tube = positive(ck, tube_value, keys::TUBE);
-            let center = placement(ck, keys::SURFACE_CENTER);
-            let (radius, tube, center) = (radius?, tube?, center?);
-            tube_within(ck, tube_value, radius, tube)?;
-            Some(Surface::Torus {
-                center,
-                radius,
-                tube,
-            })
-        }
-        _ => {
-            let curvature_radius = positive(
-                ck,
-                value_of(&args, keys::CURVATURE_RADIUS)?,
-                keys::CURVATURE_RADIUS,
-            );
-            let vertex = placement(ck, keys::VERTEX);
-            Some(Surface::Paraboloid {
-                vertex: vertex?,
-                curvature_radius: curvature_radius?,
-            })
-        }
-    }
-}
-
-/// A torus's tube no thicker than its radius: with r > R the tube crosses the axis and the
-/// outer half's support map is no longer the convex surface's (the inner half would touch
-/// the table first).
-fn tube_within(ck: &mut Checker, tube_value: &Expr, radius: ExprId, tube: ExprId) -> Option<()> {
-    let excess = ck.arena.sub(tube, radius);
-    if let Some(r) = ck.arena.as_rational(excess)
-        && !r.is_negative()
-        && !r.is_zero()
-    {
-        let (t, big) = (ck.arena.eval(tube, &[]), ck.arena.eval(radius, &[]));
-        ck.cx.error_spanned_by(
-            tube_value,
-            format!("`{}` of `torus` is {t}, larger than its `{}` {big}: the surface would not be convex; the tube must be at most the radius", keys::TUBE, keys::RADIUS),
-        );
-        return None;
-    }
-    Some(())
+    surface::read_surface(ck, value, Place::Table).map(|s| s.surface)
 }
 
 /// `law = name` or `law = name(key = value, ...)`, one of [`LAWS`].
@@ -347,45 +241,6 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
             Some(ContactLaw::StickSlip { mu })
         }
     }
-}
-
-/// A scalar that must be positive where it is a literal: a size, gravity.
-fn positive(ck: &mut Checker, value: &Expr, what: &str) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v)
-        && (r.is_negative() || r.is_zero())
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!("{what} is {}: it must be positive", r.to_f64()),
-        );
-        return None;
-    }
-    Some(v)
-}
-
-/// `[a, b, c]`, each positive where it is a literal, the error on the element.
-fn positive_vector(ck: &mut Checker, value: &Expr, what: &str) -> Option<[ExprId; 3]> {
-    let v = ck.vector(value)?;
-    let mut ok = true;
-    if let Expr::Array(a) = value {
-        for (k, (e, tokens)) in v.iter().zip(&a.elems).enumerate() {
-            if let Some(r) = ck.arena.as_rational(*e)
-                && (r.is_negative() || r.is_zero())
-            {
-                ck.cx.error_spanned_by(
-                    tokens,
-                    format!(
-                        "{what} has {} in place {}: each must be positive",
-                        r.to_f64(),
-                        k + 1
-                    ),
-                );
-                ok = false;
-            }
-        }
-    }
-    ok.then_some(v)
 }
 
 /// A coefficient that must not be negative where it is a literal: negative friction or

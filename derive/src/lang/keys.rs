@@ -316,13 +316,14 @@ pub const UP: &str = "up";
 pub const SPEEDS: &str = "speeds";
 /// The axle of a rolling disk, normal to its rim's plane.
 pub const AXLE: &str = "axle";
-/// The rolling surfaces of `rolls = ..`, `name(required keys; optional keys)`, in the order
-/// the docs list them: a disk rim about its hub `at` (the origin when left out) normal to
-/// its axle, and a ball about its centre `at`.
-pub const ROLLING_SURFACES: &[(&str, &[&str], &[&str])] = &[
-    ("disk", &[RADIUS, AXLE], &[AT]),
-    ("sphere", &[RADIUS], &[AT]),
-];
+/// A disk's rim, the surface a rolling disk touches the floor with (the table's and the
+/// wheel's word).
+pub const DISK_RIM: &str = "disk_rim";
+/// `disk`, how a wheel's rim was first spelt in `rolls = disk(..)`: the same as [`DISK_RIM`].
+pub const DISK: &str = "disk";
+/// The surfaces of [`SURFACES`] a mechanism's wheel may roll on (`rolls = ..`): a disk rim
+/// about its [`AXLE`] (the axle a required key), or a ball.
+pub const WHEEL_SURFACES: &[&str] = &[DISK_RIM, "sphere"];
 /// The `key = value` settings of `#[link(...)]` (besides its name and its groups).
 pub const LINK_KEYS: &[&str] = &[
     PARENT,
@@ -359,13 +360,14 @@ pub const TUBE: &str = "tube";
 /// The radius of curvature at a paraboloid's vertex.
 pub const CURVATURE_RADIUS: &str = "curvature_radius";
 
-/// The contact surfaces, `name(required keys; optional keys)`, in the order the docs list
+/// The rolling surfaces, `name(required keys; optional keys)`, in the order the docs list
 /// them: each has its axes along description axes and an optional placement (the origin when
-/// left out).
+/// left out), which [`AT`] may also give; `lang::surface` reads them for `#[contact]` and
+/// for a wheel's `rolls`.
 pub const SURFACES: &[(&str, &[&str], &[&str])] = &[
     ("sphere", &[RADIUS], &[SURFACE_CENTER]),
     ("ellipsoid", &[SEMI_AXES], &[SURFACE_CENTER]),
-    ("disk_rim", &[RADIUS], &[SURFACE_CENTER]),
+    (DISK_RIM, &[RADIUS], &[SURFACE_CENTER]),
     ("torus", &[RADIUS, TUBE], &[SURFACE_CENTER]),
     ("paraboloid", &[CURVATURE_RADIUS], &[VERTEX]),
 ];

@@ -19,6 +19,8 @@
 //!   place.
 //! - `variational`: the `variational(...)` group of `#[top]` and `#[mechanism]`, checked
 //!   against the scene's state and fields and emitted as `<Name>Variational` in one place.
+//! - `surface`: the one reader of a rolling surface, `#[contact(surface = ..)]`'s and a
+//!   wheel's `rolls = ..`.
 //! - `private`: the one hidden path, `::precess::__private`, generated code names precess
 //!   through.
 
@@ -31,6 +33,7 @@ pub mod parts;
 pub mod private;
 pub mod rotor;
 pub mod scalar;
+pub mod surface;
 pub mod symbols;
 pub mod syntax;
 pub mod taylor;

@@ -1,16 +1,18 @@
-//! Meaning of the rolling keys: a body's `rolls = disk(..)` or `rolls = sphere(..)` and the
+//! Meaning of the rolling keys: a body's `rolls = disk_rim(..)` or `rolls = sphere(..)` (read
+//! by `lang::surface`, the reader `#[contact(surface = ..)]` shares) and the
 //! mechanism's `up = ..` and `speeds = [..]`. What the derivation alone can tell (the number
 //! of speeds the wheels leave free) is mapped to spanned errors by `expand/rolling.rs`.
 
 use precess_core::mechanism::rolling::{RollingScene, RollingWheel, WheelSurface};
+use precess_core::rigid::Surface;
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
 use super::joint::path_ident;
 use crate::lang::check::Checker;
 use crate::lang::keys;
+use crate::lang::surface::{Place, read_surface};
 use crate::lang::syntax::KeyValue;
-use crate::lang::units::Dim;
 
 /// A body's rolling surface as read, with the tokens its errors are spanned on.
 pub struct WheelSpec {
@@ -44,113 +46,26 @@ pub struct RollingSettings<'a> {
 }
 
 impl Checker<'_> {
-    /// `disk(radius = r, axle = y, at = [..])` or `sphere(radius = r, at = [..])`.
+    /// `disk_rim(radius = r, axle = y, at = [..])` (or `disk(..)`) or
+    /// `sphere(radius = r, at = [..])`, read by the one reader of rolling surfaces: the
+    /// surface of a body on a table, about the wheel's axle.
     pub(super) fn rolls(&mut self, e: &Expr) -> Option<WheelSurface> {
-        let surfaces = || keys::ROLLING_SURFACES.iter().map(|s| s.0);
-        let expected = "expected a rolling surface `disk(radius = .., axle = x|y|z|[..], at = [..])` or `sphere(radius = .., at = [..])`";
-        let Expr::Call(call) = e else {
-            self.cx.error_spanned_by(e, expected);
-            return None;
+        let place = Place::Wheel {
+            axle: |ck, e| ck.joint_axis(e),
         };
-        let Some(name) = path_ident(&call.func) else {
-            self.cx.error_spanned_by(e, expected);
-            return None;
-        };
-        let written = name.to_string();
-        let Some(&(kind, required, optional)) =
-            keys::ROLLING_SURFACES.iter().find(|s| s.0 == written)
-        else {
-            self.cx.error_spanned_by(
-                name,
-                format!(
-                    "unknown rolling surface `{written}`: {expected}{}",
-                    keys::did_you_mean(&written, surfaces())
-                ),
-            );
-            return None;
-        };
-        let allowed: Vec<&str> = required.iter().chain(optional).copied().collect();
-        let mut given: Vec<(&Ident, &Expr)> = Vec::new();
-        let mut ok = true;
-        for arg in &call.args {
-            let key = match arg {
-                Expr::Assign(a) => path_ident(&a.left).map(|k| (k, &*a.right)),
-                _ => None,
-            };
-            let Some((key, value)) = key else {
-                self.cx.error_spanned_by(
-                    arg,
-                    format!(
-                        "expected `key = value` in `{kind}(...)`: its keys are {}",
-                        allowed.join(", ")
-                    ),
-                );
-                ok = false;
-                continue;
-            };
-            if !allowed.iter().any(|k| key == k) {
-                self.cx.error_spanned_by(
-                    key,
-                    format!(
-                        "unknown key `{key}` for the rolling `{kind}`: allowed keys are {}{}",
-                        allowed.join(", "),
-                        keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                    ),
-                );
-                ok = false;
-            } else if given.iter().any(|(g, _)| *g == key) {
-                self.cx
-                    .error_spanned_by(key, format!("duplicate key `{key}` in `{kind}`"));
-                ok = false;
-            } else {
-                given.push((key, value));
+        let read = read_surface(self, e, place)?;
+        match (read.surface, read.axle) {
+            (Surface::DiskRim { center, radius }, Some(axle)) => Some(WheelSurface::Disk {
+                center,
+                axle,
+                radius,
+            }),
+            (Surface::Sphere { center, radius }, _) => {
+                Some(WheelSurface::Sphere { center, radius })
             }
+            // The reader allows a wheel nothing else, and a disk rim not without its axle.
+            _ => None,
         }
-        for &k in required {
-            if !given.iter().any(|(g, _)| *g == k) {
-                self.cx.error_spanned_by(
-                    name,
-                    format!("the rolling `{kind}` needs its `{k}`: {expected}"),
-                );
-                ok = false;
-            }
-        }
-        if !ok {
-            return None;
-        }
-        let value = |k: &str| given.iter().find(|(g, _)| *g == k).map(|(_, v)| *v);
-        let radius = value(keys::RADIUS)
-            .and_then(|v| self.expecting(Dim::LENGTH, keys::RADIUS, |ck| ck.rolling_radius(v)));
-        let center = match value(keys::AT) {
-            Some(v) => self.expecting(Dim::LENGTH, keys::AT, |ck| ck.vector(v)),
-            None => Some([self.arena.zero(); 3]),
-        };
-        if kind == "sphere" {
-            return Some(WheelSurface::Sphere {
-                center: center?,
-                radius: radius?,
-            });
-        }
-        let axle = value(keys::AXLE).and_then(|v| self.joint_axis(v));
-        Some(WheelSurface::Disk {
-            center: center?,
-            axle: axle?,
-            radius: radius?,
-        })
-    }
-
-    /// A radius: a literal must be positive (a field is checked at run time).
-    fn rolling_radius(&mut self, e: &Expr) -> Option<ExprId> {
-        let r = self.scalar(e)?;
-        if self.arena.free_symbols(r).is_empty() {
-            let value = self.arena.eval(r, &[]);
-            if value.is_nan() || value <= 0.0 {
-                self.cx
-                    .error_spanned_by(e, format!("a rolling radius must be positive, got {value}"));
-                return None;
-            }
-        }
-        Some(r)
     }
 
     /// `up = x`, `-x`, …, `-z`: the floor's upward normal.
@@ -241,7 +156,7 @@ pub(super) fn rolling(
             ck.cx.error_spanned_by(
                 &kv.key,
                 format!(
-                    "`{}` is a setting of a mechanism whose bodies roll on the floor, and no body declares `{} = disk(..)` or `{} = sphere(..)`",
+                    "`{}` is a setting of a mechanism whose bodies roll on the floor, and no body declares `{} = disk_rim(..)` or `{} = sphere(..)`",
                     kv.key,
                     keys::ROLLS,
                     keys::ROLLS

@@ -30,4 +30,9 @@ struct SurfaceAsItem;
 #[contact(surface = sphere(radius = 0.1, radius = 0.2), law = rolling, gravity = 9.81)]
 struct TwoRadii;
 
+#[derive(RigidBody)]
+#[rigid(disk(mass = 1.0, radius = 0.1))]
+#[contact(surface = disk_rim(radius = 0.1, axle = z), law = rolling, gravity = 9.81)]
+struct AxleOnTheTable;
+
 fn main() {}

@@ -12,18 +12,21 @@
 //!   the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is its
 //!   contact point). Then the vertical component of v_P vanishes with it.
 //!
-//! The disk's contact needs |d| = √(1 − (up·n)²). When 1 − (up·n)² expands to a monomial
-//! square (cos²φ for a wheel whose axle only leans by φ) the root is taken exactly, so that
-//! such identities show; otherwise it stays a square root. The root is the cosine of the
-//! wheel's lean from the vertical and is reported as a tilt that must stay positive.
+//! The contact point is the shared support map's ([`Surface::support_along`], the geometry of
+//! a body on a table): for a disk, hub + r d/|d| with d = −up + (up·n) n, n the axle.
+//! [`Rim`] takes |d| exactly when |d|² expands to a monomial square (cos²φ for a wheel
+//! whose axle only leans by φ), so that such identities show; otherwise it stays a square
+//! root. |d| is the cosine of the wheel's lean from the vertical and is reported as a tilt
+//! that must stay above [`crate::rigid::MIN_TILT`].
 
-use super::scene::{RollingScene, WheelSurface};
+use super::scene::RollingScene;
 use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{basis_axis, unit_axis};
 use crate::mechanism::scene::MechanismScene;
+use crate::rigid::{Rim, Surface, SurfaceError};
 use crate::sym::mat3::{cross, dot, mat_vec};
-use crate::sym::{Arena, ExprId, Node};
+use crate::sym::{Arena, ExprId};
 
 /// Everything derived from a mechanism whose wheels roll.
 #[derive(Clone, Debug, PartialEq)]
@@ -60,21 +63,6 @@ impl RollingDerivation {
     /// The number of constraint rows m.
     pub fn rows(&self) -> usize {
         self.constraints.len()
-    }
-}
-
-/// √e exactly when e is a monomial square c · Π b_i^(2k_i) with c a rational square, the
-/// root taken with each base positive.
-fn monomial_root(arena: &mut Arena, e: ExprId) -> Option<ExprId> {
-    match arena.node(e).clone() {
-        Node::Const(r) => r.sqrt_exact().map(|root| arena.constant(root)),
-        Node::Pow(b, n) if n % 2 == 0 => arena.powi(b, n / 2).ok(),
-        Node::Mul(factors) => {
-            let roots: Option<Vec<ExprId>> =
-                factors.iter().map(|&f| monomial_root(arena, f)).collect();
-            roots.map(|r| arena.product(&r))
-        }
-        _ => None,
     }
 }
 
@@ -115,43 +103,33 @@ impl MechanismScene {
                     count: kin.len(),
                 });
             };
-            let (center, arm, tilt) = match wheel.surface {
-                WheelSurface::Sphere { center, radius } => {
-                    let arm = up.map(|u| {
-                        let t = arena.mul(radius, u);
-                        arena.neg(t)
-                    });
-                    (center, arm, arena.one())
-                }
-                WheelSurface::Disk {
-                    center,
-                    axle,
-                    radius,
-                } => {
+            // The wheel's surface in ground axes, about its hub: the shared support map for
+            // the outward normal −up (rim or ball), its axis the axle turned by the body.
+            let (surface, axle) = wheel.surface.surface();
+            let down = up.map(|u| arena.neg(u));
+            let (center, arm, tilt) = match (surface, axle) {
+                (Surface::DiskRim { center, radius }, Some(axle)) => {
                     let local = unit_axis(arena, &axle)?;
                     let axle = mat_vec(arena, &k.rotation, &local).map(|e| arena.expand(e));
-                    let along = dot(arena, &up, &axle);
-                    let along = arena.expand(along);
-                    let d = [0, 1, 2].map(|i| {
-                        let t = arena.mul(along, axle[i]);
-                        let t = arena.sub(up[i], t);
-                        arena.expand(t)
-                    });
-                    let one = arena.one();
-                    let sq = arena.mul(along, along);
-                    let d2 = arena.sub(one, sq);
-                    let d2 = arena.expand(d2);
-                    let root = match monomial_root(arena, d2) {
-                        Some(r) => r,
-                        None => arena.sqrt(d2)?,
+                    let rim = Surface::DiskRim {
+                        center: [arena.zero(); 3],
+                        radius,
                     };
-                    let scale = arena.div(radius, root)?;
-                    let arm = d.map(|di| {
-                        let t = arena.mul(scale, di);
-                        let t = arena.neg(t);
-                        arena.expand(t)
-                    });
-                    (center, arm, root)
+                    let arm = rim.support_along(arena, &down, &axle)?;
+                    let tilt = Rim::new(arena, &down, &axle)?.tilt;
+                    (center, arm.map(|e| arena.expand(e)), tilt)
+                }
+                (Surface::Sphere { center, radius }, _) => {
+                    let ball = Surface::Sphere {
+                        center: [arena.zero(); 3],
+                        radius,
+                    };
+                    (center, ball.support(arena, &down)?, arena.one())
+                }
+                (other, _) => {
+                    return Err(MechanismError::Surface(SurfaceError::NotAxisymmetric {
+                        surface: other.name(),
+                    }));
                 }
             };
             let lever = mat_vec(arena, &k.rotation, &center);

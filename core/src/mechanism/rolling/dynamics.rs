@@ -15,10 +15,10 @@ use crate::ode::{OdeError, System};
 /// (metres, or the length unit of the description).
 pub const CONTACT_TOLERANCE: f64 = 1e-14;
 
-/// The smallest tilt |d| a disk may have: the contact hub − r d/|d| loses about
-/// ε/|d| of its digits as the disk nears lying flat, so within a microradian of flat
-/// ([`MechanismError::WheelFlat`]) it is refused rather than trusted to 1e-10.
-pub const MIN_TILT: f64 = 1e-6;
+/// The smallest tilt |d| a disk may have ([`MechanismError::WheelFlat`]): the one flatness
+/// limit of every rolling surface, shared with a body on a table
+/// ([`crate::rigid::MIN_TILT`], where its value is argued).
+pub use crate::rigid::MIN_TILT;
 
 /// A mechanism with n coordinates whose wheels give m constraint rows, leaving k free
 /// speeds. Implemented by `#[derive(Mechanism)]` for a struct with `rolls = ..` bodies and by
