@@ -19,8 +19,8 @@ use crate::lang::symbols::Lowering;
 use crate::lang::syntax::KeyValue;
 use crate::lang::units::Dim;
 
-/// A rate, 1/s (`rpm`, `Hz`, `rad/s`).
-const RATE: Dim = Dim { m: 0, l: 0, t: -1 };
+/// An angular rate, rad/s (`rpm`, `rev/s`, `rad/s`).
+const RATE: Dim = Dim::ANGULAR_RATE;
 
 /// The rotor's form as the messages write it: `` `rotor(axis = [x, y, z], inertia = J, rate = Ω)` ``.
 pub fn form() -> String {
