@@ -63,7 +63,10 @@ fn a_hand_built_layout_with_too_many_tangents_is_refused() {
         tangents: 3,
         state: 2,
     };
-    assert_eq!(too_many.initial_state::<8>(&[1.0, 0.0]), Err(refusal.clone()));
+    assert_eq!(
+        too_many.initial_state::<8>(&[1.0, 0.0]),
+        Err(refusal.clone())
+    );
     let y0 = sys.initial_state(&[1.0, 0.0]).unwrap();
     let mut stepper = Dop853::new(&sys, 0.0, y0, AdaptiveConfig::with_tol(1e-9, 1e-9)).unwrap();
     let cfg = BenettinConfig {

@@ -113,7 +113,10 @@ impl Dim {
         const NAMED: &[(Dim, &str)] = &[
             (Dim::NONE, "a pure number"),
             (Dim::ANGLE, "an angle (rad, or `deg`, `rev`)"),
-            (Dim::ANGULAR_RATE, "an angular rate (rad/s, or `rpm`, `rev/s`)"),
+            (
+                Dim::ANGULAR_RATE,
+                "an angular rate (rad/s, or `rpm`, `rev/s`)",
+            ),
             (Dim::MASS, "a mass (kg)"),
             (Dim::LENGTH, "a length (m)"),
             (dim(0, 0, 1), "a time (s)"),
@@ -132,17 +135,22 @@ impl Dim {
         if let Some((_, name)) = NAMED.iter().find(|(d, _)| *d == self) {
             return (*name).to_owned();
         }
-        let parts: Vec<String> = [("kg", self.m), ("m", self.l), ("s", self.t), ("rad", self.a)]
-            .iter()
-            .filter(|(_, n)| *n != 0)
-            .map(|(u, n)| {
-                if *n == 1 {
-                    (*u).to_owned()
-                } else {
-                    format!("{u}^{n}")
-                }
-            })
-            .collect();
+        let parts: Vec<String> = [
+            ("kg", self.m),
+            ("m", self.l),
+            ("s", self.t),
+            ("rad", self.a),
+        ]
+        .iter()
+        .filter(|(_, n)| *n != 0)
+        .map(|(u, n)| {
+            if *n == 1 {
+                (*u).to_owned()
+            } else {
+                format!("{u}^{n}")
+            }
+        })
+        .collect();
         format!("a quantity in {}", parts.join(" "))
     }
 }

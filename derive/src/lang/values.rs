@@ -8,9 +8,9 @@ use quote::ToTokens;
 use syn::{Expr, Ident, Lit, UnOp};
 
 use super::check::Checker;
+use super::ctxt::Ctxt;
 use super::dim::Dim;
 use super::keys;
-use super::ctxt::Ctxt;
 use super::parts::rotation_message;
 
 pub(crate) const VALUES: &str = "values are number literals (with units, `2 cm`), names of the struct's f64 fields, `PI`, `TAU`, or `+ - * /`, parentheses, `sqrt`, `powi` on them";

@@ -36,7 +36,14 @@ impl TaylorSystem<1> for Bump {
     fn max_order(&self) -> usize {
         40
     }
-    fn coefficients_into(&self, _: &mut (), t: f64, y: &[f64; 1], order: usize, c: &mut [[f64; 1]]) {
+    fn coefficients_into(
+        &self,
+        _: &mut (),
+        t: f64,
+        y: &[f64; 1],
+        order: usize,
+        c: &mut [[f64; 1]],
+    ) {
         // g = cos t + a (s²⁰ − s²¹/h) about t: cos's kth coefficient is cos(t + kπ/2)/k!, the
         // bump's none before tₛ.
         let s = t - self.ts;
