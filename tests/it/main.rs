@@ -43,6 +43,7 @@ mod constraints {
     mod bicycle;
     mod bicycle_macro;
     mod bicycle_macro_cross;
+    mod dead_point;
     pub mod disk;
     mod errors;
     mod four_bar;
