@@ -43,6 +43,7 @@ mod constraints {
     mod bicycle;
     mod bicycle_macro;
     mod bicycle_macro_cross;
+    mod dead_point;
     pub mod disk;
     mod errors;
     mod four_bar;
@@ -54,6 +55,8 @@ mod constraints {
 mod chaos_map;
 /// Ensembles: determinism over threads, per-run errors, a sweep against the closed form.
 mod ensemble;
+/// An ensemble's edges: the last indices of usize, a panicking progress callback.
+mod ensemble_edges;
 /// Sharding: the sleeping-top sweep whole and as shards merged from CSV, to the bit.
 mod ensemble_shards;
 /// Batch lanes: L Taylor trajectories stepped at once.
@@ -136,6 +139,7 @@ mod sym {
 mod taylor {
     mod coefficients;
     mod config;
+    mod defect;
     mod events;
     mod events_guarantee;
     mod exp;
@@ -188,6 +192,10 @@ mod rolling_once {
 }
 mod variational;
 mod variational_derive;
+/// Variational equations refusing what would give a made-up answer: a hand-built layout
+/// with too many tangents, an unread or repeated sensitivity, an overflowing flow map; and
+/// Lyapunov exponents of a tangent vector that shrinks towards atol.
+mod variational_refusals;
 /// Values as measured: units, density, constant arithmetic, names.
 mod values {
     mod constants;

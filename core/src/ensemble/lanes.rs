@@ -2,13 +2,12 @@
 //! ([`crate::taylor::batch::BatchTaylor`]), the chunks spread over rayon's threads.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::atomic::AtomicUsize;
 
 use rayon::prelude::*;
 
 use super::error::EnsembleError;
 use super::results::EnsembleResults;
-use super::runner::{Ensemble, panic_message};
+use super::runner::{Ensemble, Tally, panic_message};
 use crate::ode::{OdeError, check_span};
 use crate::taylor::Taylor;
 use crate::taylor::batch::{BatchTaylor, TaylorLanes};
@@ -72,12 +71,13 @@ impl<const L: usize> EnsembleLanes<'_, '_, L> {
         T: Send,
     {
         let runs = self.ensemble.runs();
-        let done = AtomicUsize::new(0);
+        let done = Tally::default();
         let chunks: Vec<Vec<Result<T, EnsembleError<E>>>> = (0..runs.len().div_ceil(L))
             .into_par_iter()
             .map(|c| {
                 let lo = runs.start + c * L;
-                let hi = (lo + L).min(runs.end);
+                // Saturating: a range ending at usize::MAX would wrap `lo + L` to an empty chunk.
+                let hi = lo.saturating_add(L).min(runs.end);
                 let results = chunk(lo..hi, t_end, &build, &output);
                 for _ in lo..hi {
                     self.ensemble.report(&done);

@@ -2,7 +2,7 @@
 
 use std::ops::Range;
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
@@ -74,6 +74,10 @@ impl<'p> Ensemble<'p> {
 
     /// Calls `report` after each run finishes, from the thread that ran it (so in no
     /// particular order; `done` counts up to `total` all the same). For a progress bar.
+    ///
+    /// A panic in `report` is caught where it is called: every run goes on and keeps its
+    /// result, and `report` is not called again in that ensemble call (a progress bar that
+    /// broke once would only panic again).
     pub fn progress(mut self, report: &'p (dyn Fn(EnsembleProgress) + Sync)) -> Ensemble<'p> {
         self.progress = Some(report);
         self
@@ -96,7 +100,7 @@ impl<'p> Ensemble<'p> {
         T: Send,
         E: Send,
     {
-        let done = AtomicUsize::new(0);
+        let done = Tally::default();
         let results = self
             .runs
             .clone()
@@ -120,7 +124,9 @@ impl<'p> Ensemble<'p> {
     /// any number of threads. No runs: `identity()`.
     ///
     /// A panic in `f` is caught and folded as the run's [`EnsembleError::Panicked`]; one in
-    /// `identity`, `fold` or `combine` is the caller's own and is not caught.
+    /// the [`progress`](Ensemble::progress) callback is caught and silences it, the runs
+    /// going on and every result folded; one in `identity`, `fold` or `combine` is the
+    /// caller's own and is not caught (it ends the call and loses the partial results).
     pub fn reduce<T, E, A, F, I, G, C>(&self, f: F, identity: I, fold: G, combine: C) -> A
     where
         F: Fn(usize) -> Result<T, E> + Sync,
@@ -131,7 +137,7 @@ impl<'p> Ensemble<'p> {
     {
         let n = self.runs.len();
         let block = n.div_ceil(MAX_REDUCE_BLOCKS).max(1);
-        let done = AtomicUsize::new(0);
+        let done = Tally::default();
         let start = self.runs.start;
         let partials: Vec<A> = (0..n.div_ceil(block))
             .into_par_iter()
@@ -147,15 +153,33 @@ impl<'p> Ensemble<'p> {
         partials.into_iter().fold(identity(), combine)
     }
 
-    pub(super) fn report(&self, done: &AtomicUsize) {
-        let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
-        if let Some(report) = self.progress {
-            report(EnsembleProgress {
-                done: finished,
-                total: self.runs.len(),
-            });
+    /// Counts a finished run and calls the progress callback, if any, catching its panic.
+    pub(super) fn report(&self, done: &Tally) {
+        let finished = done.runs.fetch_add(1, Ordering::Relaxed) + 1;
+        let Some(report) = self.progress else {
+            return;
+        };
+        if done.silenced.load(Ordering::Relaxed) {
+            return;
+        }
+        let progress = EnsembleProgress {
+            done: finished,
+            total: self.runs.len(),
+        };
+        // `AssertUnwindSafe`: the callback is the user's and only borrowed; after its panic
+        // it is not called again, and the ensemble's own state is the two atomics.
+        if catch_unwind(AssertUnwindSafe(|| report(progress))).is_err() {
+            done.silenced.store(true, Ordering::Relaxed);
         }
     }
+}
+
+/// The runs finished so far in one ensemble call, and whether its progress callback has
+/// panicked (and so is called no more).
+#[derive(Debug, Default)]
+pub(super) struct Tally {
+    runs: AtomicUsize,
+    silenced: AtomicBool,
 }
 
 /// Runs `f(index)`, a panic caught and turned into the run's error.

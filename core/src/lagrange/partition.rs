@@ -113,11 +113,29 @@ impl ConstrainedModel {
         }
     }
 
+    /// det A_D over the product of its rows' norms at `state` (A_D = ∂φ/∂q_D, the block
+    /// Newton solves with), or `None` unless every constraint is holonomic.
+    fn normalised_block_determinant(&self, t: f64, state: &[f64]) -> Option<f64> {
+        let p = self.positions.as_ref()?;
+        let m = self.dependent.len();
+        let mut out = vec![0.0; m + m * m];
+        self.run(p, t, state, &mut out);
+        let block = DMatrix::from_row_slice(m, m, &out[m..]);
+        let scale: f64 = block.row_iter().map(|r| r.norm()).product();
+        Some(block.determinant() / scale)
+    }
+
     /// Advances `stepper` to `t_end`, closing the loop at its start and after every accepted
     /// step ([`ConstrainedModel::close_loop`] with `tolerance`) and restarting the stepper at
     /// the corrected state; returns the Newton iterations spent.
     ///
+    /// A step over which det A_D changes sign has carried the independent coordinates
+    /// through a dead point (a four-bar's crank at a limit position): the run stops there
+    /// with [`LagrangeError::DeadPoint`], the stepper left at the step's start, rather than
+    /// go on with dependent coordinates the free ones no longer determine.
+    ///
     /// # Errors
+    /// [`LagrangeError::DeadPoint`] as above;
     /// [`LagrangeError::StartOffLoop`] when the stepper's state is off the loop by more than
     /// [`START_RESIDUAL`] (close it first, on the branch you mean, with
     /// [`ConstrainedModel::close_loop`]); [`LagrangeError::Ode`] for the stepper's failures;
@@ -145,10 +163,25 @@ impl ConstrainedModel {
         if newton > 0 {
             stepper.restart(t0, y0)?;
         }
+        let mut det = self.normalised_block_determinant(t0, &y0);
         while stepper.t() < t_end {
+            let (t_start, y_start) = (stepper.t(), *stepper.state());
             stepper.step(t_end)?;
             let t = stepper.t();
             let mut y = *stepper.state();
+            let now = self.normalised_block_determinant(t, &y);
+            if let (Some(before), Some(after)) = (det, now)
+                && before * after < 0.0
+            {
+                stepper.restart(t_start, y_start)?;
+                return Err(LagrangeError::DeadPoint {
+                    t_start,
+                    t_end: t,
+                    before,
+                    after,
+                });
+            }
+            det = now;
             newton += self.close_loop(t, &mut y, tolerance)?;
             stepper.restart(t, y)?;
         }

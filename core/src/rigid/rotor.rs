@@ -120,10 +120,18 @@ pub fn total_momentum(
     })))
 }
 
+/// How far above zero the smallest moment of I − Σ J â âᵀ must stand, as a fraction of the
+/// body's largest moment: 64 ε. Below it the matrix is singular to rounding — J = I₃(1 − 10⁻¹⁵)
+/// leaves 10⁻¹⁵ I₃, a few ulps, whose sign and size are the rounding's — and solving with it
+/// gives an ω̇ of 10¹⁵ and a non-finite state a few steps later instead of this refusal.
+pub const DRIVEN_ROUNDING: f64 = 64.0 * f64::EPSILON;
+
 /// The first driven rotor k (an index into `rotors`) for which the body's inertia once the
-/// wheels up to k turn freely, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, is not positive definite, with that
-/// matrix's smallest eigenvalue (NaN if an entry is not finite). `inertia` is about the centre
-/// of mass; each rotor is (its axis, its J) in the same axes, an axis of any non-zero length.
+/// wheels up to k turn freely, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, is not positive definite beyond rounding
+/// (its smallest eigenvalue at most [`DRIVEN_ROUNDING`] times the largest of `inertia`), with
+/// that matrix's smallest eigenvalue (NaN if an entry is not finite). `inertia` is about the
+/// centre of mass; each rotor is (its axis, its J) in the same axes, an axis of any non-zero
+/// length.
 ///
 /// ```
 /// use nalgebra::Matrix3;
@@ -141,6 +149,9 @@ pub fn first_singular_driven(
     rotors: &[([f64; 3], f64)],
 ) -> Option<(usize, f64)> {
     let mut a = *inertia;
+    // The scale rounding is measured against: the body's largest moment (its spectral norm,
+    // for a positive definite I).
+    let scale = inertia.symmetric_eigenvalues().amax();
     for (k, (axis, j)) in rotors.iter().enumerate() {
         let axis = Vector3::from(*axis);
         a -= (*j / axis.norm_squared()) * axis * axis.transpose();
@@ -148,7 +159,7 @@ pub fn first_singular_driven(
             return Some((k, f64::NAN));
         }
         let smallest = a.symmetric_eigenvalues().min();
-        if smallest.is_nan() || smallest <= 0.0 {
+        if smallest.is_nan() || smallest <= DRIVEN_ROUNDING * scale {
             return Some((k, smallest));
         }
     }

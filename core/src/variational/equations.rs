@@ -52,7 +52,10 @@ impl VariationalEquations {
     /// [`VariationalError::EmptyState`], [`VariationalError::RhsLength`],
     /// [`VariationalError::NotAStateSymbol`] for a state entry that is not a coordinate,
     /// rate or input symbol, [`VariationalError::RepeatedStateSymbol`],
-    /// [`VariationalError::TooManyTangents`] past n, [`VariationalError::NotAParameter`].
+    /// [`VariationalError::TooManyTangents`] past n, [`VariationalError::NotAParameter`],
+    /// [`VariationalError::RepeatedParameter`], [`VariationalError::UnreadParameter`] for a
+    /// parameter `rhs` does not read (its sensitivity would be zero for ever, as the derive's
+    /// `variational(...)` refuses it at compile time).
     pub fn new(
         arena: &mut Arena,
         state: &[ExprId],
@@ -82,6 +85,17 @@ impl VariationalEquations {
                 _ => Err(VariationalError::NotAParameter { index }),
             })
             .collect::<Result<Vec<_>, _>>()?;
+        for (second, p) in params.iter().enumerate() {
+            if let Some(first) = params[..second].iter().position(|q| q == p) {
+                return Err(VariationalError::RepeatedParameter { first, second });
+            }
+        }
+        let zero = arena.zero();
+        for (index, &p) in params.iter().enumerate() {
+            if rhs.iter().all(|&f| arena.diff(f, p) == zero) {
+                return Err(VariationalError::UnreadParameter { index });
+            }
+        }
         let layout = Layout {
             n,
             tangents,

@@ -43,6 +43,26 @@ pub enum VariationalError {
         /// Its position in the list of sensitivity parameters.
         index: usize,
     },
+    /// A sensitivity asked for a parameter the equations do not read: ∂f/∂p is identically
+    /// zero, and so would be the sensitivity.
+    #[error(
+        "sensitivity parameter {index} is not read by the equations (∂f/∂p is identically \
+         zero): give only parameters the right-hand side reads"
+    )]
+    UnreadParameter {
+        /// Its position in the list of sensitivity parameters.
+        index: usize,
+    },
+    /// The same parameter twice among the sensitivities.
+    #[error(
+        "sensitivity parameters {first} and {second} are the same symbol: give each parameter once"
+    )]
+    RepeatedParameter {
+        /// The first position.
+        first: usize,
+        /// The second position.
+        second: usize,
+    },
     /// A sensitivity parameter named that no parameter of the scene has.
     #[error("no parameter named `{name}` for a sensitivity")]
     UnknownParameter {
@@ -131,6 +151,20 @@ pub enum VariationalError {
         norm: f64,
         /// When.
         t: f64,
+    },
+    /// A result of the flow map that overflowed f64: Φ's entries are finite but the product
+    /// is not (Φ ≈ 10²⁰⁰ squared in Φ P₀ Φᵀ).
+    #[error(
+        "entry {index} of the flow map's result is {value}: the product of Φ (largest entry \
+         {largest:e}) with the input overflows f64"
+    )]
+    Overflow {
+        /// Its position (row-major for matrices).
+        index: usize,
+        /// The value.
+        value: f64,
+        /// The largest |Φᵢⱼ|.
+        largest: f64,
     },
     /// A covariance matrix of the wrong shape.
     #[error("the covariance is {rows}×{cols}; the flow map needs {n}×{n}")]

@@ -56,7 +56,8 @@ impl FlowMap {
     ///
     /// # Errors
     /// [`VariationalError::CovarianceShape`] unless `p0` is n × n,
-    /// [`VariationalError::NonFinite`] for a NaN or infinite entry (row-major index).
+    /// [`VariationalError::NonFinite`] for a NaN or infinite entry (row-major index),
+    /// [`VariationalError::Overflow`] when the product overflows f64 (a finite Φ of 10²⁰⁰).
     pub fn covariance(&self, p0: &DMatrix<f64>) -> Result<DMatrix<f64>, VariationalError> {
         let n = self.state.len();
         if p0.nrows() != n || p0.ncols() != n {
@@ -70,14 +71,17 @@ impl FlowMap {
         let phi = &self.transition;
         let p = phi * p0 * phi.transpose();
         // Symmetric in exact arithmetic; averaging with the transpose removes the rounding.
-        Ok((&p + p.transpose()) * 0.5)
+        let p = (&p + p.transpose()) * 0.5;
+        self.finite(p.transpose().as_slice())?;
+        Ok(p)
     }
 
     /// x(t) + Φ δx₀: where a run started at x₀ + δx₀ is, to first order.
     ///
     /// # Errors
     /// [`VariationalError::InitialStateLength`] unless `dx0` is n long,
-    /// [`VariationalError::NonFinite`] for a NaN or infinite entry.
+    /// [`VariationalError::NonFinite`] for a NaN or infinite entry,
+    /// [`VariationalError::Overflow`] when x + Φ δx₀ overflows f64.
     pub fn apply(&self, dx0: &[f64]) -> Result<Vec<f64>, VariationalError> {
         let n = self.state.len();
         if dx0.len() != n {
@@ -88,11 +92,26 @@ impl FlowMap {
         }
         check_finite(dx0)?;
         let d = &self.transition * nalgebra::DVector::from_column_slice(dx0);
-        Ok(self
+        let x: Vec<f64> = self
             .state
             .iter()
             .zip(d.iter())
             .map(|(x, d)| x + d)
-            .collect())
+            .collect();
+        self.finite(&x)?;
+        Ok(x)
+    }
+
+    /// Refuses a result that overflowed: the inputs were finite, so an infinite or NaN
+    /// entry is the product's (NaN from ∞ − ∞ in a sum).
+    fn finite(&self, values: &[f64]) -> Result<(), VariationalError> {
+        check_finite(values).map_err(|e| match e {
+            VariationalError::NonFinite { index, value } => VariationalError::Overflow {
+                index,
+                value,
+                largest: self.transition.amax(),
+            },
+            other => other,
+        })
     }
 }

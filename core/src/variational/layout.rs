@@ -60,6 +60,22 @@ impl Layout {
         start..start.saturating_add(self.n)
     }
 
+    /// Refuses a layout built by hand with more tangent vectors than state entries: n + 1
+    /// vectors of ℝⁿ cannot be independent, and the (n + 1)-th column of "the identity"
+    /// does not exist.
+    ///
+    /// # Errors
+    /// [`VariationalError::TooManyTangents`].
+    pub fn validate(&self) -> Result<(), VariationalError> {
+        if self.tangents > self.n {
+            return Err(VariationalError::TooManyTangents {
+                tangents: self.tangents,
+                state: self.n,
+            });
+        }
+        Ok(())
+    }
+
     /// Refuses a const-generic size that is not [`Layout::len`].
     ///
     /// # Errors
@@ -78,10 +94,12 @@ impl Layout {
     /// The augmented state at the start: x₀, Φ = the first m columns of the identity, S = 0.
     ///
     /// # Errors
+    /// [`VariationalError::TooManyTangents`] past n ([`Layout::validate`]),
     /// [`VariationalError::SizeMismatch`] if `N` is not [`Layout::len`],
     /// [`VariationalError::InitialStateLength`] if `x0` is not n long,
     /// [`VariationalError::NonFinite`] for a NaN or infinite entry of `x0`.
     pub fn initial_state<const N: usize>(&self, x0: &[f64]) -> Result<[f64; N], VariationalError> {
+        self.validate()?;
         self.check_size(N)?;
         if x0.len() != self.n {
             return Err(VariationalError::InitialStateLength {

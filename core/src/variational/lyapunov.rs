@@ -11,12 +11,24 @@ use crate::ode::{AdaptiveConfig, Dop853, Stats, Stepper};
 /// together): 10⁹, some days of the cheapest system's right-hand sides.
 pub const MAX_INTERVALS: u64 = 1_000_000_000;
 
+/// The smallest a tangent vector's new length Rⱼⱼ may get between re-orthonormalisations
+/// before it is re-orthonormalised at once, at the end of the step that shrank it: 2⁻¹⁰.
+///
+/// The integrator controls each entry's error against atol + rtol·|y|, so a tangent vector
+/// that shrinks towards atol is no longer followed to any relative accuracy, and its
+/// logarithm — the exponent — is lost: x′ = −1000 x renormalised every unit of time gave
+/// −27.8 for −1000. Renormalising in time keeps every vector near length 1 (its relative
+/// error the integrator's rtol) whatever the interval; where no vector shrinks that far
+/// within an interval, nothing changes.
+pub const SHRINK_FLOOR: f64 = 1.0 / 1024.0;
+
 /// How long to average and how often to re-orthonormalise.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BenettinConfig {
     /// Time between re-orthonormalisations: short enough that the tangent vectors neither
     /// overflow nor collapse onto one direction in floating point (a few e-folding times of
-    /// the largest exponent at most).
+    /// the largest exponent at most). A vector that shrinks below [`SHRINK_FLOOR`] within
+    /// an interval is re-orthonormalised earlier, at the end of that step.
     pub interval: f64,
     /// Time over which the logs are averaged, after the transient.
     pub duration: f64,
@@ -69,7 +81,8 @@ pub struct LyapunovSpectrum {
     pub exponents: Vec<f64>,
     /// The time averaged over.
     pub time: f64,
-    /// Re-orthonormalisations averaged over.
+    /// Renormalisation intervals averaged over (the early re-orthonormalisations within
+    /// them, [`SHRINK_FLOOR`], are not counted).
     pub renormalisations: u64,
     /// The stepper's work, transient included.
     pub stats: Stats,
@@ -124,7 +137,13 @@ fn orthonormalise(
 /// the stepper's current state (its tangent vectors are replaced by a generic orthonormal
 /// basis, its sensitivities are carried along untouched).
 ///
+/// Every vector is re-orthonormalised at the end of each interval, and also at the end of
+/// any step within one after which some Rⱼⱼ is below [`SHRINK_FLOOR`] (a vector shrinking
+/// towards the integrator's atol would lose its exponent); the logs are summed the same way.
+///
 /// # Errors
+/// [`VariationalError::TooManyTangents`] for a layout with more tangent vectors than state
+/// entries ([`Layout::validate`]),
 /// [`VariationalError::SizeMismatch`] if `N` is not the layout's length,
 /// [`VariationalError::NoTangents`], the configuration's errors
 /// ([`BenettinConfig::validate`]), [`VariationalError::NonPositiveDuration`] also when the
@@ -140,6 +159,7 @@ pub fn benettin<S, const N: usize>(
 where
     S: Stepper<State = [f64; N]>,
 {
+    layout.validate()?;
     layout.check_size(N)?;
     if layout.tangents == 0 {
         return Err(VariationalError::NoTangents);
@@ -166,6 +186,9 @@ where
     let at = |stepper: &mut S, t: f64, logs: &mut [f64]| -> Result<(), VariationalError> {
         while stepper.t() < t {
             stepper.step(t)?;
+            if stepper.t() < t {
+                renormalise_if_shrunk(stepper, layout, logs)?;
+            }
         }
         let mut y = *stepper.state();
         orthonormalise(layout, &mut y, logs, t)?;
@@ -188,6 +211,29 @@ where
         renormalisations: averaged_steps,
         stats: stepper.stats(),
     })
+}
+
+/// Re-orthonormalises the stepper's tangent vectors now, adding their logs to `logs`, if
+/// any Rⱼⱼ has fallen below [`SHRINK_FLOOR`] since the last time.
+fn renormalise_if_shrunk<S, const N: usize>(
+    stepper: &mut S,
+    layout: Layout,
+    logs: &mut [f64],
+) -> Result<(), VariationalError>
+where
+    S: Stepper<State = [f64; N]>,
+{
+    let (now, mut y) = (stepper.t(), *stepper.state());
+    let mut step_logs = vec![0.0; layout.tangents];
+    orthonormalise(layout, &mut y, &mut step_logs, now)?;
+    if step_logs.iter().all(|&l| l >= SHRINK_FLOOR.ln()) {
+        return Ok(());
+    }
+    logs.iter_mut()
+        .zip(&step_logs)
+        .for_each(|(log, step)| *log += step);
+    stepper.restart(now, y)?;
+    Ok(())
 }
 
 impl<const N: usize> VariationalSystem<N> {

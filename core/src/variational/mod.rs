@@ -28,5 +28,5 @@ pub use equations::VariationalEquations;
 pub use error::VariationalError;
 pub use flow_map::FlowMap;
 pub use layout::Layout;
-pub use lyapunov::{BenettinConfig, LyapunovSpectrum, MAX_INTERVALS, benettin};
+pub use lyapunov::{BenettinConfig, LyapunovSpectrum, MAX_INTERVALS, SHRINK_FLOOR, benettin};
 pub use system::VariationalSystem;

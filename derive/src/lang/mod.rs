@@ -12,7 +12,7 @@
 //!   `values` and `scalar`, the value language it reads (numbers, fields, arithmetic, vectors, tensors,
 //!   axes, rotations); `parts`, the part language of `#[rigid]` and a mechanism body.
 //! - `units`: units on values (`2 cm`, `7.8 g/cm^3`), attached to what they follow before
-//!   syn reads a value, and the dimensions each key's values are checked against.
+//!   syn reads a value; `dim`, the dimensions each key's values are checked against.
 //! - `expansion`: what every expansion reads; `symbols`, the lowering of the arena's
 //!   expressions to Rust reading the fields; `tokens`, the body language's values as Rust.
 //! - `taylor`: the `taylor = K` key of every attribute, found, checked and expanded in one
@@ -27,6 +27,7 @@
 pub mod ast;
 pub mod check;
 pub mod ctxt;
+pub mod dim;
 pub mod expansion;
 pub mod keys;
 pub mod parts;

@@ -190,7 +190,7 @@ impl Checker<'_> {
             None => Some([self.arena.zero(); 3]),
         };
         let orientation = match value(keys::ROTATE) {
-            Some(e) => self.expecting(Dim::NONE, keys::ROTATE, |ck| {
+            Some(e) => self.expecting(Dim::ANGLE, keys::ROTATE, |ck| {
                 ck.orientation(e, table.name).map(Some)
             }),
             None => Some(None),

@@ -19,8 +19,8 @@ use crate::lang::symbols::Lowering;
 use crate::lang::syntax::KeyValue;
 use crate::lang::units::Dim;
 
-/// A rate, 1/s (`rpm`, `Hz`, `rad/s`).
-const RATE: Dim = Dim { m: 0, l: 0, t: -1 };
+/// An angular rate, rad/s (`rpm`, `rev/s`, `rad/s`).
+const RATE: Dim = Dim::ANGULAR_RATE;
 
 /// The rotor's form as the messages write it: `` `rotor(axis = [x, y, z], inertia = J, rate = Ω)` ``.
 pub fn form() -> String {
@@ -343,8 +343,20 @@ pub fn literal_driven_inertia(
     cx.error_spanned_by(
         &d.inertia_expr,
         format!(
-            "rotor {declared}'s `inertia` is too large for the {body}: with its driven wheels turning freely the {body} keeps I − Σ J â âᵀ about {point}, whose smallest principal moment here is {smallest:.4} kg m^2; it must be positive (a wheel's J below the {body}'s own moment about the wheel's axis)"
+            "rotor {declared}'s `inertia` is too large for the {body}: with its driven wheels turning freely the {body} keeps I − Σ J â âᵀ about {point}, whose smallest principal moment here is {} kg m^2; it must be positive beyond rounding (a wheel's J below the {body}'s own moment about the wheel's axis by more than {:.0e} of its largest moment)",
+            readable(smallest),
+            precess_core::rigid::DRIVEN_ROUNDING
         ),
     );
     None
+}
+
+/// A moment as the messages print it: four decimals where that shows it (`-0.0100`), else
+/// four significant digits in exponent form (`4.441e-16`, where `{:.4}` printed `0.0000`).
+fn readable(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        format!("{x:.4}")
+    } else {
+        format!("{x:.3e}")
+    }
 }

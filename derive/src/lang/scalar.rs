@@ -64,7 +64,7 @@ impl Checker<'_> {
     pub fn scalar(&mut self, e: &Expr) -> Option<ExprId> {
         let (v, d) = self.dimensioned(e)?;
         if let (Some(expect), Some(d)) = (self.expect, d)
-            && d != expect.dim
+            && !expect.dim.admits(d)
         {
             self.cx.error_spanned_by(
                 e,
@@ -166,9 +166,11 @@ impl Checker<'_> {
         match b.op {
             BinOp::Add(_) | BinOp::Sub(_) => {
                 // Two values with units must agree; a plain number takes the other's.
-                if let (Some(a), Some(c)) = (dl, dr)
-                    && a != c
-                {
+                let mut sum = dl.or(dr);
+                if let (Some(a), Some(c)) = (dl, dr) {
+                    sum = a.sum(c);
+                }
+                if let (Some(a), Some(c), None) = (dl, dr, sum) {
                     self.cx.error_spanned_by(
                         e,
                         format!(
@@ -184,7 +186,7 @@ impl Checker<'_> {
                 } else {
                     self.arena.sub(l, r)
                 };
-                Some((v, dl.or(dr)))
+                Some((v, sum))
             }
             BinOp::Mul(_) => {
                 let d = match (dl, dr) {
@@ -239,7 +241,7 @@ impl Checker<'_> {
             // by its head angle λ is [sin λ, 0, cos λ]) or of a constant one.
             ("sin" | "cos", [x]) => {
                 let (x, d) = self.dimensioned(x)?;
-                if let Some(d) = d.filter(|&d| d != Dim::NONE) {
+                if let Some(d) = d.filter(|&d| !Dim::ANGLE.admits(d)) {
                     self.cx.error_spanned_by(
                         args[0],
                         format!(

@@ -12,106 +12,8 @@ use proc_macro2::{Delimiter, Group, Ident, Punct, Spacing, Span, TokenStream, To
 /// The name of the macro a value with a unit is rewritten to.
 pub const UNITS_MACRO: &str = "__units";
 
-/// A physical dimension: the exponents of mass, length and time. Angles are dimensionless,
-/// as in SI (the radian is 1), so `deg` and `rpm` only scale.
-#[derive(Clone, Copy, PartialEq, Eq, Debug, Default)]
-pub struct Dim {
-    /// The exponent of mass.
-    pub m: i8,
-    /// The exponent of length.
-    pub l: i8,
-    /// The exponent of time.
-    pub t: i8,
-}
-
-const fn dim(m: i8, l: i8, t: i8) -> Dim {
-    Dim { m, l, t }
-}
-
-impl Dim {
-    /// A pure number (an angle in radians among them).
-    pub const NONE: Dim = dim(0, 0, 0);
-    /// kg.
-    pub const MASS: Dim = dim(1, 0, 0);
-    /// m.
-    pub const LENGTH: Dim = dim(0, 1, 0);
-    /// kg/m³.
-    pub const DENSITY: Dim = dim(1, -3, 0);
-    /// kg m².
-    pub const INERTIA: Dim = dim(1, 2, 0);
-    /// m/s².
-    pub const ACCELERATION: Dim = dim(0, 1, -2);
-    /// N = kg m/s².
-    pub const FORCE: Dim = dim(1, 1, -2);
-    /// N m = kg m²/s².
-    pub const TORQUE: Dim = dim(1, 2, -2);
-    /// kg/s: a drag force per speed.
-    pub const DRAG: Dim = dim(1, 0, -1);
-    /// N m s = kg m²/s: a damping torque per angular rate.
-    pub const ROTARY_DAMPING: Dim = dim(1, 2, -1);
-    /// N/m = kg/s²: a spring's force per stretch (a rotary spring's N m/rad is a torque).
-    pub const STIFFNESS: Dim = dim(1, 0, -2);
-
-    /// The product's dimension; `None` past the exponents' range (no real unit gets there).
-    pub fn times(self, o: Dim) -> Option<Dim> {
-        Some(dim(
-            self.m.checked_add(o.m)?,
-            self.l.checked_add(o.l)?,
-            self.t.checked_add(o.t)?,
-        ))
-    }
-
-    /// The dimension to the power `n`.
-    pub fn pow(self, n: i64) -> Option<Dim> {
-        let n = i8::try_from(n).ok()?;
-        Some(dim(
-            self.m.checked_mul(n)?,
-            self.l.checked_mul(n)?,
-            self.t.checked_mul(n)?,
-        ))
-    }
-
-    /// The square root's dimension, if every exponent is even.
-    pub fn sqrt(self) -> Option<Dim> {
-        let even = self.m % 2 == 0 && self.l % 2 == 0 && self.t % 2 == 0;
-        even.then(|| dim(self.m / 2, self.l / 2, self.t / 2))
-    }
-
-    /// What the errors call it: its name and its SI unit, `a length (m)`.
-    pub fn describe(self) -> String {
-        const NAMED: &[(Dim, &str)] = &[
-            (Dim::NONE, "a pure number (an angle in rad, or `20 deg`)"),
-            (Dim::MASS, "a mass (kg)"),
-            (Dim::LENGTH, "a length (m)"),
-            (dim(0, 0, 1), "a time (s)"),
-            (dim(0, 0, -1), "a rate (1/s)"),
-            (dim(0, 1, -1), "a speed (m/s)"),
-            (Dim::ACCELERATION, "an acceleration (m/s^2)"),
-            (Dim::DENSITY, "a density (kg/m^3)"),
-            (Dim::INERTIA, "a moment of inertia (kg m^2)"),
-            (Dim::FORCE, "a force (N)"),
-            (Dim::TORQUE, "a torque (N m)"),
-            (Dim::DRAG, "a drag coefficient (kg/s)"),
-            (Dim::ROTARY_DAMPING, "a rotary damping coefficient (N m s)"),
-            (Dim::STIFFNESS, "a stiffness (N/m)"),
-        ];
-        if let Some((_, name)) = NAMED.iter().find(|(d, _)| *d == self) {
-            return (*name).to_owned();
-        }
-        let parts: Vec<String> = [("kg", self.m), ("m", self.l), ("s", self.t)]
-            .iter()
-            .filter(|(_, n)| *n != 0)
-            .map(|(u, n)| {
-                if *n == 1 {
-                    (*u).to_owned()
-                } else {
-                    format!("{u}^{n}")
-                }
-            })
-            .collect();
-        format!("a quantity in {}", parts.join(" "))
-    }
-}
+pub use super::dim::Dim;
+use super::dim::dim;
 
 /// A unit's size in SI: `ratio · π^pi` (π enters only through `deg`, `rev` and `rpm`).
 #[derive(Clone, Copy, PartialEq, Debug)]
@@ -154,11 +56,10 @@ const UNITS: &[Unit] = &[
     unit("ms", 1, 1000, 0, dim(0, 0, 1)),
     unit("min", 60, 1, 0, dim(0, 0, 1)),
     unit("h", 3600, 1, 0, dim(0, 0, 1)),
-    unit("rad", 1, 1, 0, Dim::NONE),
-    unit("deg", 1, 180, 1, Dim::NONE),
-    unit("rev", 2, 1, 1, Dim::NONE),
-    unit("Hz", 1, 1, 0, dim(0, 0, -1)),
-    unit("rpm", 1, 30, 1, dim(0, 0, -1)),
+    unit("rad", 1, 1, 0, Dim::ANGLE),
+    unit("deg", 1, 180, 1, Dim::ANGLE),
+    unit("rev", 2, 1, 1, Dim::ANGLE),
+    unit("rpm", 1, 30, 1, Dim::ANGULAR_RATE),
     unit("N", 1, 1, 0, Dim::FORCE),
 ];
 
@@ -202,6 +103,9 @@ pub fn parse_unit(tokens: &[TokenTree]) -> Result<(Scale, Dim), (TokenStream, St
         let Some(TokenTree::Ident(name)) = tokens.get(i) else {
             return Err((whole, syntax_message()));
         };
+        if name == "Hz" {
+            return Err((TokenTree::Ident(name.clone()).into(), hertz_message()));
+        }
         let Some(u) = find(&name.to_string()) else {
             let known = UNITS.iter().map(|u| u.name);
             return Err((
@@ -252,6 +156,13 @@ pub fn parse_unit(tokens: &[TokenTree]) -> Result<(Scale, Dim), (TokenStream, St
             .ok_or_else(|| overflow(&tokens[i - 1]))?;
     }
     Ok((scale, total))
+}
+
+/// Why `Hz` is no unit: every rate a key takes is an angular one, and 1 Hz is read as one
+/// turn a second (2π rad/s, as `rpm` counts turns) as often as SI's 1/s (so that
+/// `TAU * 50 Hz` is the usual ω = 2πf); either reading would be silently wrong for someone.
+fn hertz_message() -> String {
+    "`Hz` is refused: a rate here is an angular rate, and 1 Hz reads as one turn a second (2π rad/s) or as SI's 1/s (1 rad/s); write `rev/s` for turns a second, `rpm`, or `rad/s`".to_owned()
 }
 
 fn syntax_message() -> String {
@@ -422,7 +333,7 @@ mod tests {
         assert_eq!((s.ratio, d), (ratio(1, 10_000_000), Dim::INERTIA));
         // 1 rpm = 2π/60 rad/s.
         let (s, d) = unit_of("rpm").unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!((s.ratio, s.pi, d), (ratio(1, 30), 1, dim(0, 0, -1)));
+        assert_eq!((s.ratio, s.pi, d), (ratio(1, 30), 1, Dim::ANGULAR_RATE));
         let (s, _) = unit_of("deg^2").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!((s.ratio, s.pi), (ratio(1, 32400), 2));
         let (_, d) = unit_of("s^-1").unwrap_or_else(|e| panic!("{e}"));
@@ -436,28 +347,30 @@ mod tests {
         assert!(e.contains("did you mean"), "{e}");
         let e = unit_of("m^x").err().unwrap_or_default();
         assert!(e.contains("whole power"), "{e}");
+        // `Hz` is one turn a second to some and 1/s to SI: refused, with both readings.
+        let e = unit_of("Hz").err().unwrap_or_default();
+        assert!(e.contains("`Hz` is refused") && e.contains("rev/s"), "{e}");
     }
 
-    /// Each unit's size in SI and its (kg, m, s) exponents, written out again as f64s from
+    /// Each unit's size in SI and its (kg, m, s, rad) exponents, written out again as f64s from
     /// the definitions, independently of the table the parser reads.
-    const SI: &[(&str, f64, [i8; 3])] = &[
-        ("m", 1.0, [0, 1, 0]),
-        ("km", 1e3, [0, 1, 0]),
-        ("cm", 1e-2, [0, 1, 0]),
-        ("mm", 1e-3, [0, 1, 0]),
-        ("kg", 1.0, [1, 0, 0]),
-        ("g", 1e-3, [1, 0, 0]),
-        ("mg", 1e-6, [1, 0, 0]),
-        ("s", 1.0, [0, 0, 1]),
-        ("ms", 1e-3, [0, 0, 1]),
-        ("min", 60.0, [0, 0, 1]),
-        ("h", 3600.0, [0, 0, 1]),
-        ("rad", 1.0, [0, 0, 0]),
-        ("deg", std::f64::consts::PI / 180.0, [0, 0, 0]),
-        ("rev", std::f64::consts::TAU, [0, 0, 0]),
-        ("Hz", 1.0, [0, 0, -1]),
-        ("rpm", std::f64::consts::TAU / 60.0, [0, 0, -1]),
-        ("N", 1.0, [1, 1, -2]),
+    const SI: &[(&str, f64, [i8; 4])] = &[
+        ("m", 1.0, [0, 1, 0, 0]),
+        ("km", 1e3, [0, 1, 0, 0]),
+        ("cm", 1e-2, [0, 1, 0, 0]),
+        ("mm", 1e-3, [0, 1, 0, 0]),
+        ("kg", 1.0, [1, 0, 0, 0]),
+        ("g", 1e-3, [1, 0, 0, 0]),
+        ("mg", 1e-6, [1, 0, 0, 0]),
+        ("s", 1.0, [0, 0, 1, 0]),
+        ("ms", 1e-3, [0, 0, 1, 0]),
+        ("min", 60.0, [0, 0, 1, 0]),
+        ("h", 3600.0, [0, 0, 1, 0]),
+        ("rad", 1.0, [0, 0, 0, 1]),
+        ("deg", std::f64::consts::PI / 180.0, [0, 0, 0, 1]),
+        ("rev", std::f64::consts::TAU, [0, 0, 0, 1]),
+        ("rpm", std::f64::consts::TAU / 60.0, [0, 0, -1, 1]),
+        ("N", 1.0, [1, 1, -2, 0]),
     ];
 
     proptest::proptest! {
@@ -477,7 +390,7 @@ mod tests {
             )
         ) {
             let mut text = String::new();
-            let (mut size, mut dims) = (1.0f64, [0i64; 3]);
+            let (mut size, mut dims) = (1.0f64, [0i64; 4]);
             for (k, &(unit, power, join)) in factors.iter().enumerate() {
                 let power = if power == 0 { 1 } else { power };
                 let (name, si, d) = SI[unit];
@@ -488,7 +401,7 @@ mod tests {
                 }
                 text.push_str(&format!("{name}^{power}"));
                 size *= si.powi((sign * power) as i32);
-                for i in 0..3 {
+                for i in 0..4 {
                     dims[i] += sign * power * i64::from(d[i]);
                 }
             }
@@ -498,7 +411,7 @@ mod tests {
                 ((ours - size) / size).abs() < 1e-13,
                 "{text}: {ours} against {size}"
             );
-            proptest::prop_assert_eq!([i64::from(dim.m), i64::from(dim.l), i64::from(dim.t)], dims, "{}", text);
+            proptest::prop_assert_eq!([i64::from(dim.m), i64::from(dim.l), i64::from(dim.t), i64::from(dim.a)], dims, "{}", text);
         }
     }
 

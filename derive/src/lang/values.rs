@@ -9,6 +9,8 @@ use syn::{Expr, Ident, Lit, UnOp};
 
 use super::check::Checker;
 use super::ctxt::Ctxt;
+use super::dim::Dim;
+use super::keys;
 use super::parts::rotation_message;
 
 pub(crate) const VALUES: &str = "values are number literals (with units, `2 cm`), names of the struct's f64 fields, `PI`, `TAU`, or `+ - * /`, parentheses, `sqrt`, `powi` on them";
@@ -35,6 +37,17 @@ impl Checker<'_> {
         }
     }
 
+    /// Reads a rotation's axis or entries: pure numbers, which no angle unit may be written
+    /// into, though the rotation's angles may be (`y(30 deg)`).
+    fn direction<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        self.expecting_as(
+            Dim::NONE,
+            Some("a pure number (an axis's components or a rotation's entries)"),
+            keys::ROTATE,
+            f,
+        )
+    }
+
     /// `axis_angle([x, y, z], angle)`, `matrix([[..], [..], [..]])`, or elementary turns
     /// named by their axes, `zxz(φ, θ, ψ)`, `y(α)`. A rotation whose values are literals is
     /// checked now, and its error spanned on the axis or the matrix.
@@ -58,7 +71,7 @@ impl Checker<'_> {
         let args: Vec<&Expr> = call.args.iter().collect();
         match (name.as_str(), args.as_slice()) {
             ("axis_angle", [axis, angle]) => {
-                let (k, a) = (self.vector(axis), self.scalar(angle));
+                let (k, a) = (self.direction(|ck| ck.vector(axis)), self.scalar(angle));
                 let (k, a) = (k?, a?);
                 // The axis is checked on its own, so a literal zero axis is refused even
                 // when the angle is a field.
@@ -83,8 +96,11 @@ impl Checker<'_> {
                     self.cx.error_spanned_by(rows, "expected the three rows of the rotation, `[[Rxx, Rxy, Rxz], [Ryx, Ryy, Ryz], [Rzx, Rzy, Rzz]]`");
                     return None;
                 }
-                let r: Vec<Option<[ExprId; 3]>> =
-                    a.elems.iter().map(|row| self.vector(row)).collect();
+                let r: Vec<Option<[ExprId; 3]>> = a
+                    .elems
+                    .iter()
+                    .map(|row| self.direction(|ck| ck.vector(row)))
+                    .collect();
                 let o = Orientation::Matrix([r[0]?, r[1]?, r[2]?]);
                 self.literal_rotation(&o, kind, rows).then_some(o)
             }

@@ -25,13 +25,13 @@ pub(super) enum Coordinate {
 impl Coordinate {
     fn stiffness(self) -> Dim {
         match self {
-            Coordinate::Angle => Dim::TORQUE,
+            Coordinate::Angle => Dim::ROTARY_STIFFNESS,
             Coordinate::Length => Dim::STIFFNESS,
         }
     }
 
-    /// How an error names the stiffness: a rotary one has a torque's dimension (a radian
-    /// has none), but is a torque per radian.
+    /// How an error names the stiffness: a torque per radian (`N m` alone is taken as per
+    /// radian, as SI's radian is 1).
     fn stiffness_name(self) -> Option<&'static str> {
         match self {
             Coordinate::Angle => Some("a rotary stiffness (N m per rad)"),
@@ -55,7 +55,7 @@ impl Coordinate {
 
     fn rest(self) -> Dim {
         match self {
-            Coordinate::Angle => Dim::NONE,
+            Coordinate::Angle => Dim::ANGLE,
             Coordinate::Length => Dim::LENGTH,
         }
     }

@@ -181,3 +181,27 @@ fn the_step_budget_of_a_flight_is_per_call() {
         "{e}"
     );
 }
+
+/// A driven wheel whose J is the body's moment about its axis to 10⁻¹⁵: I − J â âᵀ keeps
+/// 10⁻¹⁵ I₃ there, rounding's size, and is refused as the driven rotor's error (it passed,
+/// and a run failed later with a non-finite state). One whose J leaves a real moment (10⁻⁶
+/// of I₃) passes; the top's check is the same rule.
+#[test]
+fn a_driven_inertia_singular_to_rounding_is_refused() {
+    let i3 = 0.02;
+    let inertia = nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(0.05, 0.05, i3));
+    let wheel = |j: f64| [(0usize, [0.0, 0.0, 1.0], j)];
+    let j = i3 * (1.0 - 1e-15);
+    assert!(matches!(
+        FreeError::check_driven_inertia(&inertia, &wheel(j)),
+        Err(FreeError::DrivenInertia { rotor: 0, smallest }) if smallest.abs() < 1e-16
+    ));
+    assert!(matches!(
+        precess::top::TopError::check_driven_inertia(&inertia, &wheel(j)),
+        Err(precess::top::TopError::DrivenInertia { rotor: 0, .. })
+    ));
+    assert_eq!(
+        FreeError::check_driven_inertia(&inertia, &wheel(i3 * (1.0 - 1e-6))),
+        Ok(())
+    );
+}

@@ -393,7 +393,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         {
             return Ok(None);
         }
-        self.stats.rhs_evals += 1;
+        self.stats.rhs_evals += defect::EVALUATIONS;
         let shorter = defect::shorter_step(
             &self.sys,
             &mut self.ws,
