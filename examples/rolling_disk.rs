@@ -71,6 +71,9 @@ fn lean_rate_ratio(model: &Disk, d: &RollingDisk, w0: f64) -> Result<f64, Box<dy
     Ok((-wdot.dot(&t) + p * (sf - w0)) / eps)
 }
 
+/// What a run of the disk gives: its samples, each with its phase, and why it stopped.
+type Rolled = Outcome<HybridState<Phase, [f64; STATE_LEN]>>;
+
 /// Rolls the disk from `y0` for `t_end` s in the run loop at tolerance `tol`, sampled every
 /// 10 ms with the lean θ and the standard quantities. A run the scene halts (the disk lying
 /// flat, a lift-off) ends there: its outcome is `Halted`.
@@ -79,7 +82,7 @@ fn roll(
     y0: [f64; STATE_LEN],
     t_end: f64,
     tol: f64,
-) -> Result<Outcome<HybridState<Phase, [f64; STATE_LEN]>>, Box<dyn Error>> {
+) -> Result<Rolled, Box<dyn Error>> {
     let mut cfg = AdaptiveConfig::with_tol(tol, tol);
     cfg.max_steps = 10_000_000;
     // Steps no longer than the sampling interval: with the controller's own, longer steps
