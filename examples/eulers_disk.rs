@@ -26,7 +26,9 @@
 //! `#[contact]` has no key for an external couple (its laws' torques are the rolling and spin
 //! resistances, −c_r ω_∥ and −c_s ω_⊥, not a couple that grows as the disk closes on the
 //! table), so the air layer's couple is added by `Settling`, a wrapper system around the
-//! generated `ContactDynamics`, integrated with the adaptive DOP853 directly.
+//! generated `ContactDynamics`, integrated with the adaptive DOP853 through `ode::Run`: every
+//! step recorded with sin α and Ω as quantities, and the run ended by a terminal event where
+//! sin α reaches 0.001, located on the dense output.
 //!
 //! Run with `cargo run --release --example eulers_disk`.
 
@@ -38,7 +40,7 @@ use common::{Axes, Series, Table, plot};
 use precess::contact::theory::{DiskState, EulerDisk, RollingDisk, power_law_exponents};
 use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
-use precess::ode::{Adaptive, AdaptiveConfig, Dop853Pair, System};
+use precess::ode::{Adaptive, AdaptiveConfig, Dop853Pair, Event, Run, StopReason, System};
 use precess::prelude::RigidBody;
 
 /// A thin uniform disk, radius 5 cm and mass 0.3 kg, rolling on its sharp rim.
@@ -130,12 +132,25 @@ fn main() -> Result<(), Box<dyn Error>> {
     cfg.max_steps = 50_000_000;
     let mut ode = Adaptive::<_, Dop853Pair, STATE_LEN>::new(sys, 0.0, y0, cfg)?;
     let stop = 0.001;
-    let mut rows = vec![(0.0, sin_alpha(&y0), precession(&y0))];
-    while sin_alpha(ode.y()) > stop {
-        ode.step(1e3)?;
-        rows.push((ode.t(), sin_alpha(ode.y()), precession(ode.y())));
+    let out = Run::new(&mut ode, 1e3)
+        .sample_steps()
+        .quantity("sin_alpha", |_t, y| sin_alpha(y))
+        .quantity("precession", |_t, y| precession(y))
+        .event(
+            Event::new("sin α = 0.001").falling().terminal(),
+            |_t, y| sin_alpha(y) - stop,
+        )
+        .integrate()?;
+    if out.stop != StopReason::Event(0) {
+        return Err(format!("the disk did not settle to sin α = {stop} by t = {}", out.t).into());
     }
-    let t_end = ode.t();
+    let t_end = out.t;
+    let rows: Vec<(f64, f64, f64)> = {
+        let column = |name| out.trajectory.column(name).ok_or("no column");
+        let (s, o) = (column("sin_alpha")?, column("precession")?);
+        let t = out.trajectory.times();
+        (0..t.len()).map(|k| (t[k], s[k], o[k])).collect()
+    };
 
     // t₀ from the last tenth of the run, where sin³ α is linear in t.
     let cube: Vec<(f64, f64)> = rows
@@ -161,7 +176,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     println!(
         "  {} steps to sin α = {stop} at t = {t_end:.6} s",
-        ode.stats().steps
+        out.stats.steps
     );
     let mut table = Table::default();
     table.row(

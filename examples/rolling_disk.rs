@@ -12,21 +12,24 @@
 //!
 //! The disk is declared on a struct (`#[rigid(disk(..))]` and `#[contact(surface =
 //! disk_rim(..), law = rolling, ..)]`); the linearisation needs nothing beyond the generated
-//! `ContactDynamics`: it evaluates the derived accelerations at a slightly leaning state.
+//! `ContactDynamics`: it evaluates the derived accelerations at a slightly leaning state. The
+//! runs are `ContactRun`s in the one run loop, driven by `ode::Run` (samples every 10 ms, the
+//! lean as a quantity); a disk that falls towards its face stops there with the run's outcome
+//! (`ContactOutcome::Unsupported`, or a lift-off) instead of passing through the table.
 //!
 //! Run with `cargo run --release --example rolling_disk`.
 
 mod common;
-#[path = "common/contact.rs"]
-mod contact;
 
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use contact::sample;
 use precess::contact::theory::{DiskState, RollingDisk};
-use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
+use precess::contact::{
+    ContactDynamics, ContactError, ContactQuantities, ContactRun, Phase, STATE_LEN, attitude_of,
+};
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+use precess::ode::{AdaptiveConfig, HybridState, Outcome, Run};
 use precess::prelude::RigidBody;
 
 /// A thin uniform disk, radius 10 cm and mass 0.5 kg, rolling on its sharp rim.
@@ -37,12 +40,12 @@ struct Disk;
 
 /// The state array of the disk at a theory state, yaw 0, centre at the origin: body axes
 /// (u, t, n), so the disk's axis is body z.
-fn state(model: &Disk, s: &DiskState) -> [f64; STATE_LEN] {
+fn state(model: &Disk, s: &DiskState) -> Result<[f64; STATE_LEN], ContactError> {
     let [t, u, n] = s.axes(0.0);
     let rot = Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[u, t, n]));
     let q = UnitQuaternion::from_rotation_matrix(&rot);
     let w_body = q.inverse() * s.angular_velocity(0.0);
-    model.rolling_state([0.0, 0.0], &q, &w_body)?
+    model.rolling_state([0.0, 0.0], &q, &w_body)
 }
 
 /// The lean θ of a state: the disk's axis n has n_z = −sin θ.
@@ -60,12 +63,38 @@ fn lean_rate_ratio(model: &Disk, d: &RollingDisk, w0: f64) -> Result<f64, Box<dy
         yaw_rate: d.axial * w0 * eps / d.transverse,
         spin: w0,
     };
-    let y = state(model, &s);
+    let y = state(model, &s)?;
     let dy = model.accelerations(Phase::Rolling, 0.0, &y)?;
     let wdot = attitude_of(&y) * Vector3::new(dy[8], dy[9], dy[10]);
     let [t, _, _] = s.axes(0.0);
     let (p, sf) = (s.yaw_rate * eps.cos(), -s.yaw_rate * eps.sin());
     Ok((-wdot.dot(&t) + p * (sf - w0)) / eps)
+}
+
+/// What a run of the disk gives: its samples, each with its phase, and why it stopped.
+type Rolled = Outcome<HybridState<Phase, [f64; STATE_LEN]>>;
+
+/// Rolls the disk from `y0` for `t_end` s in the run loop at tolerance `tol`, sampled every
+/// 10 ms with the lean θ and the standard quantities. A run the scene halts (the disk lying
+/// flat, a lift-off) ends there: its outcome is `Halted`.
+fn roll(
+    model: &Disk,
+    y0: [f64; STATE_LEN],
+    t_end: f64,
+    tol: f64,
+) -> Result<Rolled, Box<dyn Error>> {
+    let mut cfg = AdaptiveConfig::with_tol(tol, tol);
+    cfg.max_steps = 10_000_000;
+    // Steps no longer than the sampling interval: with the controller's own, longer steps
+    // the steady circle holds its lean to 2e-12 rad over 20 s rather than 5e-15, and between
+    // steps the samples would carry the dense output's error besides.
+    cfg.h_max = 0.01;
+    let mut run = ContactRun::new(model, Phase::Rolling, 0.0, y0, cfg)?;
+    Ok(Run::new(&mut run, t_end)
+        .sample_every(0.01)
+        .quantities(ContactQuantities::new(model, Phase::Rolling))
+        .quantity("lean", |_t, s| lean(s))
+        .integrate()?)
 }
 
 /// A curve of (t, θ) points.
@@ -79,13 +108,9 @@ fn max_lean(model: &Disk, w0: f64, time: f64) -> Result<(f64, Curve), Box<dyn Er
         yaw_rate: 0.0,
         spin: w0,
     };
-    let run = sample(model, state(model, &s), 0.01, time, 1e-10)?;
-    let curve: Vec<(f64, f64)> = run
-        .t
-        .iter()
-        .zip(&run.y)
-        .map(|(t, y)| (*t, lean(y)))
-        .collect();
+    let out = roll(model, state(model, &s)?, time, 1e-10)?;
+    let lean = out.trajectory.column("lean").ok_or("no lean")?;
+    let curve: Vec<(f64, f64)> = out.trajectory.times().iter().copied().zip(lean).collect();
     Ok((curve.iter().map(|p| p.1.abs()).fold(0.0, f64::max), curve))
 }
 
@@ -152,7 +177,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         spin: c.spin,
     };
     let t_end = 20.0;
-    let run = sample(&model, state(&model, &s), 0.01, t_end, 1e-12)?;
+    let out = roll(&model, state(&model, &s)?, t_end, 1e-12)?;
+    if out.stop == precess::ode::StopReason::Halted {
+        println!("the steady circle stopped at t = {} s", out.t);
+    }
+    let states = out.trajectory.states();
     // The centre's circle is about (0, ρ) (h = ŷ at yaw 0).
     let centre = Vector3::new(0.0, c.centre_radius, 0.0);
     let azimuth = |y: &[f64; STATE_LEN]| {
@@ -160,9 +189,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         n.y.atan2(n.x)
     };
     let (mut worst_r, mut worst_lean, mut heading) = (0.0_f64, 0.0_f64, 0.0);
-    let mut last_phi = azimuth(&run.y[0]);
+    let mut last_phi = azimuth(&states[0]);
     let (mut path_c, mut path_p) = (Vec::new(), Vec::new());
-    for y in &run.y {
+    for y in states {
         let pos = Vector3::new(y[0], y[1], 0.0);
         worst_r = worst_r.max(((pos - centre).norm() - c.centre_radius).abs());
         worst_lean = worst_lean.max((lean(y) - lean0).abs());
@@ -174,12 +203,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         let cp = model.contact(y).space;
         path_p.push((cp.x, cp.y));
     }
-    let e0 = model.energy(Phase::Rolling, &run.y[0]);
-    let e1 = model.energy(Phase::Rolling, run.y.last().ok_or("empty run")?);
+    let e0 = model.energy(Phase::Rolling, &states[0]);
+    let e1 = model.energy(Phase::Rolling, &out.state);
     let mut t2 = Table::default();
     t2.row(
         "precession rate, mean over 20 s (rad/s)",
-        heading / run.t.last().copied().unwrap_or(t_end),
+        heading / out.t,
         c.precession,
     );
     t2.row("max |ρ(t) − ρ| of the centre's circle (m)", worst_r, 0.0);

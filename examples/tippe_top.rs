@@ -11,82 +11,75 @@
 //! about the vertical n′ = λ / (R I₃ (1 + α)) and its energy λ² / (2 I₃ R² (1 + α)²) +
 //! M g R (1 + α) (`contact::theory::TippeTop`).
 //!
-//! The top is declared on a struct: `#[rigid]` gives its mass and inertia, `#[contact]` its
-//! spherical surface and the table's law, and the derive emits the equations of motion
-//! (`ContactDynamics`) as straight-line code while it expands.
+//! The top is declared on a struct (`common/tippe.rs`, shared with `tippe_sweep`): `#[rigid]`
+//! gives its mass and inertia, `#[contact]` its spherical surface and the table's law, and the
+//! derive emits the equations of motion (`ContactDynamics`) as straight-line code while it
+//! expands. The run is the contact's `ContactRun` in the one run loop, driven by `ode::Run`:
+//! samples every 5 ms with the standard quantities (`ContactQuantities`), and the instant the
+//! axis passes the horizontal as an event located on the integrator's dense output.
 //!
 //! Run with `cargo run --release --example tippe_top`.
 
 mod common;
-#[path = "common/contact.rs"]
-mod contact;
+#[path = "common/tippe.rs"]
+mod tippe;
 
 use std::error::Error;
 
-use common::{Axes, Series, Table, plot};
-use contact::sample;
-use precess::contact::theory::TippeTop;
-use precess::contact::{ContactDynamics, Phase, attitude_of};
-use precess::nalgebra::{UnitQuaternion, Vector3};
-use precess::prelude::RigidBody;
-
-/// The top: mass M = 20 g with its centre of mass at the origin, I₁ = 0.35 M R² and
-/// I₃ = 0.4 M R² (R = 2 cm), a sphere of radius R centred αR = 6 mm above the centre of mass,
-/// gliding with viscous friction c = 0.1 kg/s (5 M per second).
-#[derive(RigidBody)]
-#[rigid(body(
-    mass = 0.02,
-    inertia = diag(0.35 * 0.02 * 0.02 * 0.02, 0.35 * 0.02 * 0.02 * 0.02, 0.4 * 0.02 * 0.02 * 0.02),
-))]
-#[contact(
-    surface = sphere(radius = 0.02, center = [0.0, 0.0, 0.3 * 0.02]),
-    law = sliding(viscous = 5.0 * 0.02),
-    gravity = 9.81,
-)]
-struct Top;
+use common::{Axes, Series, Table, plot, plot_dir};
+use precess::contact::{ContactDynamics, ContactQuantities, ContactRun, Phase, attitude_of};
+use precess::nalgebra::Vector3;
+use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
+use tippe::{ALPHA, RADIUS, Top, axis_up};
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let (m, r, alpha) = (0.02, 0.02, 0.3);
-    // The closed forms take the top's numbers as written here, not as the derive read them.
-    let top = TippeTop {
-        radius: r,
-        alpha,
-        mass: m,
-        i1: 0.35 * m * r * r,
-        i3: 0.4 * m * r * r,
-        gravity: 9.81,
-    };
-    let viscous = 5.0 * m;
-    let model = Top;
+    let (r, alpha) = (RADIUS, ALPHA);
+    let top = tippe::theory();
+    let viscous = 5.0 * tippe::MASS;
+    let model = Top { viscous };
+    let y0 = tippe::start(0.1, 140.0);
 
-    let tilt = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.1);
-    let mut y0 = [0.0; 11];
-    let q = tilt.quaternion();
-    y0[4..8].copy_from_slice(&[q.w, q.i, q.j, q.k]);
-    y0[8..11].copy_from_slice(&[0.0, 0.0, 140.0]);
-
-    let run = sample(&model, y0, 0.005, 20.0, 1e-12)?;
-    let phase = Phase::Sliding;
+    // One run loop: sampled every 5 ms, the standard contact quantities per sample (each
+    // under the sample's own phase), the axis's angle, and the instant the axis passes the
+    // horizontal as an event located on the integrator's own solution.
+    let mut cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
+    cfg.max_steps = 10_000_000;
+    let mut run = ContactRun::new(&model, model.law().first_phase(), 0.0, y0, cfg)?;
+    let out = Run::new(&mut run, 20.0)
+        .sample_every(0.005)
+        .quantities(ContactQuantities::new(&model, Phase::Sliding))
+        .quantity("θ (deg)", |_t, s| {
+            axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
+        })
+        .event(Event::new("axis horizontal").falling(), |_t, s| axis_up(s))
+        .integrate()?;
+    if out.stop == StopReason::Halted {
+        println!("the run stopped at t = {} s: {:?}", out.t, run.run().halt());
+    }
+    let flip = out.events.first().map_or(f64::NAN, |hit| hit.t);
+    let phase = model.law().first_phase();
     let lambda0 = model.jellett(&y0);
     let e0 = model.energy(phase, &y0);
-    let (mut angle, mut energy, mut drift) = (Vec::new(), Vec::new(), Vec::new());
-    let mut worst = 0.0_f64;
-    for (t, y) in run.t.iter().zip(&run.y) {
-        let k = attitude_of(y) * Vector3::z();
-        angle.push((*t, k.z.clamp(-1.0, 1.0).acos().to_degrees()));
-        energy.push((*t, model.energy(phase, y) / e0));
-        let d = (model.jellett(y) - lambda0).abs() / lambda0;
-        worst = worst.max(d);
-        drift.push((*t, d.max(1e-17)));
-    }
-    let last = run.y.last().copied().unwrap_or(y0);
+    let t = out.trajectory.times().to_vec();
+    let column = |name: &str| {
+        out.trajectory
+            .column(name)
+            .ok_or(format!("no column {name}"))
+    };
+    let (energies, jellett) = (column("energy")?, column("jellett")?);
+    let energy: Vec<(f64, f64)> = t.iter().zip(&energies).map(|(t, e)| (*t, e / e0)).collect();
+    let drift: Vec<(f64, f64)> = t
+        .iter()
+        .zip(&jellett)
+        .map(|(t, l)| (*t, ((l - lambda0).abs() / lambda0).max(1e-17)))
+        .collect();
+    let worst = jellett
+        .iter()
+        .map(|l| (l - lambda0).abs() / lambda0)
+        .fold(0.0, f64::max);
+    let last = out.state.x;
     let w_space = attitude_of(&last) * Vector3::new(last[8], last[9], last[10]);
     let height = model.contact(&last).height;
-    let flip = angle
-        .iter()
-        .find(|(_, deg)| *deg > 90.0)
-        .map_or(f64::NAN, |p| p.0);
-
     println!(
         "Tippe top: R = {r} m, α = {alpha}, I₁/I₃ = {:.3}, viscous c = {viscous} kg/s",
         top.i1 / top.i3
@@ -110,7 +103,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             }
         );
     }
-    println!("  the axis passes the horizontal at t = {flip:.3} s");
+    println!("  the axis passes the horizontal at t = {flip:.6} s (an event of the run)");
     let mut table = Table::default();
     table.row("Jellett λ at 20 s (kg m³/s)", model.jellett(&last), lambda0);
     table.row("max |λ/λ₀ − 1| over the run", worst, 0.0);
@@ -136,14 +129,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     table.print("Inverted state against Jellett's integral (theory: contact::theory::TippeTop)");
 
-    let a1 = Axes {
-        title: "Tippe top: the symmetry axis turns over",
-        x: "t (s)",
-        y: "angle of the axis from the vertical (deg)",
-        log_x: false,
-        log_y: false,
-    };
-    let f1 = plot("tippe_top_angle.svg", &a1, &[Series::line("θ", angle)])?;
+    let f1 = precess::plot::trajectory(
+        plot_dir()?.join("tippe_top_angle.svg"),
+        "Tippe top: the symmetry axis turns over",
+        &out.trajectory,
+        &["θ (deg)"],
+    )?;
     let a2 = Axes {
         title: "Tippe top: energy falls, Jellett's λ is kept",
         x: "t (s)",

@@ -160,6 +160,12 @@ pub struct MechanismsDoctests;
 #[cfg(all(doctest, feature = "plot"))]
 pub struct PlotsDoctests;
 
+/// The contact guide's example (a tippe top in the run loop), compiled and run as a doctest
+/// so it cannot go stale.
+#[doc = include_str!("../docs/contact.md")]
+#[cfg(all(doctest, feature = "plot"))]
+pub struct ContactDoctests;
+
 /// The constraint guide's example, compiled and run as a doctest so it cannot go stale.
 #[doc = include_str!("../docs/constraints.md")]
 #[cfg(doctest)]
