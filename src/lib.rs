@@ -41,6 +41,11 @@
 
 pub use precess_core::*;
 
+/// Figures of runs written as SVG: a trajectory's columns against time, phase portraits,
+/// work–precision plots, any series on any axes (the `plot` feature; `docs/plots.md`).
+#[cfg(feature = "plot")]
+pub use precess_plot as plot;
+
 /// An ODE written as equations, with its right-hand side and its Taylor recurrences
 /// generated at compile time (see `docs/taylor.md`).
 ///
@@ -135,38 +140,6 @@ pub mod __private {
     pub use std::vec;
 }
 
-/// The README's examples, compiled and run as doctests so they cannot go stale.
-#[doc = include_str!("../README.md")]
+// The README's and the guides' Rust blocks, compiled and run as doctests (`guides.rs`).
 #[cfg(doctest)]
-pub struct ReadmeDoctests;
-
-/// The lanes guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/lanes.md")]
-#[cfg(doctest)]
-pub struct LanesDoctests;
-
-/// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/free-bodies.md")]
-#[cfg(doctest)]
-pub struct FreeBodiesDoctests;
-
-/// The mechanism guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/mechanisms.md")]
-#[cfg(doctest)]
-pub struct MechanismsDoctests;
-
-/// The plotting guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/plots.md")]
-#[cfg(all(doctest, feature = "plot"))]
-pub struct PlotsDoctests;
-
-/// The constraint guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/constraints.md")]
-#[cfg(doctest)]
-pub struct ConstraintsDoctests;
-
-/// The variational guide's example of the generated type, compiled and run as a doctest so
-/// it cannot go stale.
-#[doc = include_str!("../docs/variational.md")]
-#[cfg(doctest)]
-pub struct VariationalDoctests;
+mod guides;
