@@ -174,6 +174,8 @@ mod contact {
     mod support;
     mod tippe_top;
 }
+/// The guides' Rust blocks are all doctests.
+mod guides;
 mod variational;
 mod variational_derive;
 /// Values as measured: units, density, constant arithmetic, names.
