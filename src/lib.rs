@@ -28,12 +28,14 @@
 //! The same bodies can be built at run time with [`body::BodyBuilder`]; the macro and the
 //! builder share one implementation in `precess-core`, whose modules are re-exported here at
 //! the root: the engine ([`sym`], [`codegen`], [`lagrange`], [`ode`], [`exact`], [`taylor`],
-//! [`linalg`]), the bodies and what the scenes share ([`body`], [`rigid`]: angle sequences,
-//! their charts and the chart switch's pieces, the Lie-group and splitting steppers), the
-//! scenes ([`top`]: `#[top(...)]`, a body about a fixed pivot; [`free`]: `#[free(...)]`, a
-//! body in flight; [`contact`]: `#[contact(...)]`, a body rolling or sliding on a table;
-//! [`mechanism`]: `#[derive(Mechanism)]`, trees of bodies and joints), and the
-//! [`nalgebra`] precess is built on. Every scene has the same shape (a description, its
+//! [`linalg`], and [`ensemble`], many runs at once), the bodies and what the scenes share
+//! ([`body`], [`rigid`]: angle sequences, their charts and the chart switch's pieces, the
+//! Lie-group and splitting steppers), the scenes ([`top`]: `#[top(...)]`, a body about a
+//! fixed pivot; [`free`]: `#[free(...)]`, a body in flight; [`contact`]: `#[contact(...)]`,
+//! a body rolling or sliding on a table; [`mechanism`]: `#[derive(Mechanism)]`, trees of
+//! bodies and joints), [`variational`] over them (variational equations, Lyapunov exponents,
+//! the linearised flow map), and the [`nalgebra`] precess is built on. With the `plot`
+//! feature, `plot` draws a run's figures (the `precess-plot` crate). Every scene has the same shape (a description, its
 //! derivation, an interpreted model, the trait the derive implements, one error; the same
 //! method names for q̈, energy and momenta): `docs/conventions.md` says it.
 #![forbid(unsafe_code)]
