@@ -28,18 +28,25 @@
 //! The same bodies can be built at run time with [`body::BodyBuilder`]; the macro and the
 //! builder share one implementation in `precess-core`, whose modules are re-exported here at
 //! the root: the engine ([`sym`], [`codegen`], [`lagrange`], [`ode`], [`exact`], [`taylor`],
-//! [`linalg`]), the bodies and what the scenes share ([`body`], [`rigid`]: angle sequences,
-//! their charts and the chart switch's pieces, the Lie-group and splitting steppers), the
-//! scenes ([`top`]: `#[top(...)]`, a body about a fixed pivot; [`free`]: `#[free(...)]`, a
-//! body in flight; [`contact`]: `#[contact(...)]`, a body rolling or sliding on a table;
-//! [`mechanism`]: `#[derive(Mechanism)]`, trees of bodies and joints), and the
-//! [`nalgebra`] precess is built on. Every scene has the same shape (a description, its
+//! [`linalg`], and [`ensemble`], many runs at once), the bodies and what the scenes share
+//! ([`body`], [`rigid`]: angle sequences, their charts and the chart switch's pieces, the
+//! Lie-group and splitting steppers), the scenes ([`top`]: `#[top(...)]`, a body about a
+//! fixed pivot; [`free`]: `#[free(...)]`, a body in flight; [`contact`]: `#[contact(...)]`,
+//! a body rolling or sliding on a table; [`mechanism`]: `#[derive(Mechanism)]`, trees of
+//! bodies and joints), [`variational`] over them (variational equations, Lyapunov exponents,
+//! the linearised flow map), and the [`nalgebra`] precess is built on. With the `plot`
+//! feature, `plot` draws a run's figures (the `precess-plot` crate). Every scene has the same shape (a description, its
 //! derivation, an interpreted model, the trait the derive implements, one error; the same
 //! method names for q̈, energy and momenta): `docs/conventions.md` says it.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub use precess_core::*;
+
+/// Figures of runs written as SVG: a trajectory's columns against time, phase portraits,
+/// work–precision plots, any series on any axes (the `plot` feature; `docs/plots.md`).
+#[cfg(feature = "plot")]
+pub use precess_plot as plot;
 
 /// An ODE written as equations, with its right-hand side and its Taylor recurrences
 /// generated at compile time (see `docs/taylor.md`).
@@ -135,44 +142,6 @@ pub mod __private {
     pub use std::vec;
 }
 
-/// The README's examples, compiled and run as doctests so they cannot go stale.
-#[doc = include_str!("../README.md")]
+// The README's and the guides' Rust blocks, compiled and run as doctests (`guides.rs`).
 #[cfg(doctest)]
-pub struct ReadmeDoctests;
-
-/// The lanes guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/lanes.md")]
-#[cfg(doctest)]
-pub struct LanesDoctests;
-
-/// The free-body guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/free-bodies.md")]
-#[cfg(doctest)]
-pub struct FreeBodiesDoctests;
-
-/// The mechanism guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/mechanisms.md")]
-#[cfg(doctest)]
-pub struct MechanismsDoctests;
-
-/// The plotting guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/plots.md")]
-#[cfg(all(doctest, feature = "plot"))]
-pub struct PlotsDoctests;
-
-/// The contact guide's example (a tippe top in the run loop), compiled and run as a doctest
-/// so it cannot go stale.
-#[doc = include_str!("../docs/contact.md")]
-#[cfg(all(doctest, feature = "plot"))]
-pub struct ContactDoctests;
-
-/// The constraint guide's example, compiled and run as a doctest so it cannot go stale.
-#[doc = include_str!("../docs/constraints.md")]
-#[cfg(doctest)]
-pub struct ConstraintsDoctests;
-
-/// The variational guide's example of the generated type, compiled and run as a doctest so
-/// it cannot go stale.
-#[doc = include_str!("../docs/variational.md")]
-#[cfg(doctest)]
-pub struct VariationalDoctests;
+mod guides;

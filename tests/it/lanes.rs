@@ -328,3 +328,26 @@ fn a_derived_tops_lanes_are_its_scalar_runs_bit_for_bit() {
         assert!(drift < 1e-10, "lane {l}: ω₃ drifted by {drift:e}");
     }
 }
+
+#[test]
+fn a_derived_tops_lane_with_a_nan_field_is_refused_before_its_first_step() {
+    // The scene's own check (`check_parameters`, what `Taylor::new` calls) refuses the lane,
+    // naming the field's quantity, where a `taylor_system!` lane only fails at its first step
+    // (above); the other lanes end as their scalar runs do.
+    let mut systems: [FieldTop; 3] = core::array::from_fn(field_top);
+    systems[1].M = f64::NAN;
+    let y0 = [[0.1, 0.4, 0.0, 0.4, 0.0, 8.0]; 3];
+    let cfg = TaylorConfig::with_tol(1e-13, 1e-13);
+    let mut batch = BatchTaylor::new(systems, [0.0; 3], y0, cfg);
+    let ends = batch.advance_to([1.0; 3]);
+    assert!(
+        matches!(&ends[1], Err(OdeError::InvalidSystemParameter { quantity, value, .. })
+            if quantity.contains("mass") && value.is_nan()),
+        "{:?}",
+        ends[1]
+    );
+    for l in [0, 2] {
+        let (y, _) = scalar(field_top(l), 0.0, y0[l], 1.0, cfg).unwrap();
+        assert_eq!(bits(&ends[l].clone().unwrap().y), bits(&y), "lane {l}");
+    }
+}

@@ -190,6 +190,8 @@ mod rolling_once {
     mod support;
     mod theory;
 }
+/// The guides' Rust blocks are all doctests.
+mod guides;
 mod variational;
 mod variational_derive;
 /// Variational equations refusing what would give a made-up answer: a hand-built layout

@@ -82,7 +82,8 @@ impl TopModel {
     /// # Errors
     /// In [`TopError::Binding`]: [`BindingError::UnsetParameter`] naming a parameter the
     /// derivation reads that `parameters` leaves out; [`BindingError::UnknownParameter`] for
-    /// a name it does not read; [`BindingError::NonFinite`] for a NaN or infinite value;
+    /// a name it does not read; [`BindingError::DuplicateParameter`] for a name given twice;
+    /// [`BindingError::NonFinite`] for a NaN or infinite value;
     /// [`BindingError::RunTimeInput`] if the derivation reads a user torque's inputs, which
     /// the interpreter cannot supply.
     pub fn new(

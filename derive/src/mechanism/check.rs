@@ -156,10 +156,18 @@ fn mechanism_settings<'s>(
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}{}",
+                    "unknown key `{key}` in `#[{}]`: expected {}, or the variational equations {}({}){}",
                     keys::MECHANISM,
                     keys::MECHANISM_KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), keys::MECHANISM_KEYS.iter().copied())
+                    crate::lang::variational::VARIATIONAL,
+                    crate::lang::variational::KEYS.join(", "),
+                    keys::did_you_mean(
+                        &key.to_string(),
+                        keys::MECHANISM_KEYS
+                            .iter()
+                            .copied()
+                            .chain([crate::lang::variational::VARIATIONAL])
+                    )
                 ),
             ),
         }

@@ -198,12 +198,20 @@ pub fn check(
             _ => ck.cx.error_spanned_by(
                 key,
                 format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}, or a rotor {}({}){}",
+                    "unknown key `{key}` in `#[{}]`: expected {}, a rotor {}({}), or the variational equations {}({}){}",
                     keys::TOP,
                     TOP_KEYS.join(", "),
                     keys::ROTOR,
                     crate::lang::rotor::allowed_keys(true).join(", "),
-                    keys::did_you_mean(&key.to_string(), TOP_KEYS.iter().copied())
+                    super::variational::VARIATIONAL,
+                    crate::lang::variational::KEYS.join(", "),
+                    keys::did_you_mean(
+                        &key.to_string(),
+                        TOP_KEYS
+                            .iter()
+                            .copied()
+                            .chain([super::variational::VARIATIONAL])
+                    )
                 ),
             ),
         }

@@ -1,9 +1,10 @@
 //! Figures from the library: a trajectory against time, a phase portrait, a work–precision
-//! plot, one call each, written as SVG (behind the `plot` feature; plotters' SVG backend).
+//! plot, one call each, written as SVG (plotters' SVG backend), the crate behind the facade's `plot` feature
+//! (`precess::plot`).
 //!
 //! | call | draws |
 //! | --- | --- |
-//! | [`trajectory`] | chosen columns of a [`Trajectory`](crate::ode::Trajectory) (state or quantities, by name) against t |
+//! | [`trajectory`] | chosen columns of a [`Trajectory`](precess_core::ode::Trajectory) (state or quantities, by name) against t |
 //! | [`time_series`] | plain columns `(name, values)` against a time column |
 //! | [`trajectory_phase_portrait`] | one column of a trajectory against another (q against q̇) |
 //! | [`phase_portrait`] | one plain column against another |
@@ -28,6 +29,8 @@
 //! plot::phase_portrait(dir.join("oscillator-phase.svg"), "Its phase portrait", ("x", &x), ("v", &v))?;
 //! # Ok::<(), precess::plot::PlotError>(())
 //! ```
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 mod axes;
 mod error;

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use super::error::PlotError;
 use super::figure::{Figure, Series, figure};
-use crate::ode::{StateColumns, Trajectory};
+use precess_core::ode::{StateColumns, Trajectory};
 
 /// Draws `y` against `x` (each `(name, values)`) as one line, in sample order, to `path` (see
 /// [`figure`](super::figure) for where), and returns the path written. The axes are labelled

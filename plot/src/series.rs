@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use super::error::PlotError;
 use super::figure::{Figure, Style, figure};
-use crate::ode::{StateColumns, Trajectory};
+use precess_core::ode::{StateColumns, Trajectory};
 
 /// Draws each column `(name, values)` against the times `t`, one line per column, to `path`
 /// (see [`figure`](super::figure) for where), and returns the path written.
