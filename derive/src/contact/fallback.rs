@@ -28,6 +28,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             fn jellett(&self, _: &[f64; 11]) -> f64 { #stub }
             fn friction_coefficient(&self) -> ::core::option::Option<f64> { #stub }
             fn check_parameters(&self) -> ::core::result::Result<(), #p::ContactError> { #stub }
+            fn values(&self) -> #p::ContactValues { #stub }
         }
     }
 }

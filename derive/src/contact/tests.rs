@@ -123,7 +123,10 @@ fn fields_are_read_and_checked_at_run_time() {
     for field in ["\"m\"", "\"r\"", "\"mu\"", "\"g\""] {
         assert!(check.contains(field), "{field}: {check}");
     }
-    assert!(check.contains("ContactValues"), "{check}");
+    // The values the rules are checked on are the trait's `values`, fields and literals
+    // alike.
+    assert!(check.contains("values (self) . check ()"), "{check}");
+    assert!(method(&code, "values").contains("ContactValues"));
     assert!(method(&code, "friction_coefficient").contains("self . mu"));
     // Stick–slip derives both phases.
     let rhs = method(&code, "phase_rhs");
