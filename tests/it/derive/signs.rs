@@ -152,11 +152,35 @@ fn has_split_coefficient(a: &Arena, e: ExprId) -> bool {
     false
 }
 
+/// Whether `e` takes a sine or cosine of an argument beyond 10⁴ in magnitude: there the
+/// last bit of the argument (its rounding, computed one way by the arena and another by the
+/// reader, as (p/q)⁻³ of a long rational, say) moves the value by |u| ε, past the 10⁻⁷ the
+/// read-back is held to (sin(1/0.000144771³) = sin(3.3·10¹¹) read back as −0.2593437 against
+/// −0.2593530).
+fn wild_phase(a: &Arena, e: ExprId, env: &[f64]) -> bool {
+    let mut stack = vec![e];
+    while let Some(e) = stack.pop() {
+        match a.node(e) {
+            Node::Sin(u) | Node::Cos(u) => {
+                if !(a.eval(*u, env).abs() <= 1e4) {
+                    return true;
+                }
+                stack.push(*u);
+            }
+            Node::Mul(f) | Node::Add(f) => stack.extend(f.iter()),
+            Node::Pow(b, _) | Node::Powr(b, _) => stack.push(*b),
+            Node::Sqrt(u) | Node::Func(_, u) => stack.push(*u),
+            Node::Const(_) | Node::Sym(_) => {}
+        }
+    }
+    false
+}
+
 /// Both printers' LaTeX of `e` read back at `p` agree with the arena's value of `e`.
 fn check_read_back(a: &Arena, e: ExprId, p: &[f64; 4]) -> Result<(), TestCaseError> {
     let (env, vars) = environment(a, p);
     let expected = a.eval(e, &env);
-    if !expected.is_finite() || expected.abs() > 1e6 {
+    if !expected.is_finite() || expected.abs() > 1e6 || wild_phase(a, e, &env) {
         return Ok(());
     }
     for (printer, text) in [("latex", latex(a, e)), ("paper_latex", paper_latex(a, e))] {
