@@ -106,7 +106,7 @@ pub struct Switch {
 }
 
 /// The slip seeded when rolling gives way to sliding is twice the slip speed taken as zero,
-/// 10⁻⁹ of the velocity scale ([`super::phases`]); this is kept as the order of magnitude
+/// 10⁻⁹ of the velocity scale ([`STICK_FRACTION`](super::STICK_FRACTION)); this is kept as the order of magnitude
 /// for a body moving at about 1 m/s.
 pub const SEED_SLIP: f64 = 2e-9;
 

@@ -249,6 +249,9 @@ pub(crate) fn locate_root(
     Ok(locate_bracket(f, left, right)?.1.0)
 }
 
+/// A point (t, f(t)) of a bracket.
+pub(crate) type Point = (f64, f64);
+
 /// The final bracket of [`locate_root`]: `((a, f_a), (b, f_b))` with a and b adjacent
 /// doubles (or b a zero of f, a the last point before it), f(a) of the sign of `fa` and f(b)
 /// of the sign of `fb` or 0 (the values as the iteration holds them: the Anderson–Björck
@@ -261,7 +264,7 @@ pub(crate) fn locate_bracket(
     mut f: impl FnMut(f64) -> Result<f64, OdeError>,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),
-) -> Result<((f64, f64), (f64, f64)), OdeError> {
+) -> Result<(Point, Point), OdeError> {
     // The side replaced last (−1 left, +1 right) and the bracket widths of the last two
     // iterations, for the Anderson–Björck scaling and the bisection safeguard.
     let mut last_side = 0;

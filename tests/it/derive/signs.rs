@@ -162,7 +162,8 @@ fn wild_phase(a: &Arena, e: ExprId, env: &[f64]) -> bool {
     while let Some(e) = stack.pop() {
         match a.node(e) {
             Node::Sin(u) | Node::Cos(u) => {
-                if !(a.eval(*u, env).abs() <= 1e4) {
+                let phase = a.eval(*u, env).abs();
+                if phase.is_nan() || phase > 1e4 {
                     return true;
                 }
                 stack.push(*u);

@@ -459,7 +459,7 @@ fn a_wheel_falling_flat_halts_the_run_by_name() {
     };
     assert_eq!(wheel, 0);
     assert!(
-        tilt >= FLAT_WITNESS && tilt < 1.001 * FLAT_WITNESS,
+        (FLAT_WITNESS..1.001 * FLAT_WITNESS).contains(&tilt),
         "{tilt}"
     );
     assert!(t > 0.0 && t < 5.0 && out.t == t);

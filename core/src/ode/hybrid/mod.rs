@@ -57,7 +57,8 @@ type ModeOf<S> = <<S as Switchable>::System as Hooks<<S as Stepper>::State>>::Mo
 type HaltOf<S> = <<S as Switchable>::System as Hooks<<S as Stepper>::State>>::Halt;
 
 /// The one run loop: the stepper `S`, whose system is a scene's [`Hooks`], driven step by
-/// step. See the [module docs](self).
+/// step: witnesses located on its solution, a projection, switches and typed halts (the
+/// loop is described in docs/trajectories.md, "Scenes in the run loop").
 ///
 /// # Examples
 ///
