@@ -110,7 +110,7 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
                 u.norm() - stick_speed(self.body, &self.watch, x)
             }
             SOLVABLE => denominator(self.body, &self.watch, x),
-            SUPPORT => support_margin(self.body, &self.watch, x),
+            SUPPORT => support_margin(&self.watch, x),
             _ => 1.0,
         }
     }
@@ -149,7 +149,7 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
                 t,
                 state: x,
                 surface: w.surface.name(),
-                margin: support_margin(body, w, &x),
+                margin: support_margin(w, &x),
             }),
             _ => Action::Continue,
         })
@@ -219,15 +219,12 @@ pub fn normal_denominator<D: ContactDynamics + ?Sized>(
 
 /// How far the support map is from its singular set: sin(tilt) − sin(MIN_TILT) of a disk
 /// rim's or torus's axis, γ₃ of a paraboloid (its bowl facing the table), 1 for the others.
-fn support_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+fn support_margin(w: &Watch, x: &State) -> f64 {
     let gamma = attitude_of(x).inverse_transform_vector(&Vector3::z());
     match w.surface {
         SurfaceKind::DiskRim | SurfaceKind::Torus => gamma.x.hypot(gamma.y) - MIN_TILT.sin(),
         SurfaceKind::Paraboloid => gamma.z,
-        _ => {
-            let _ = body;
-            1.0
-        }
+        _ => 1.0,
     }
 }
 

@@ -33,8 +33,7 @@ pub(crate) struct Watch {
     /// μ of a Coulomb or stick–slip law.
     pub(crate) mu: Option<f64>,
     pub(crate) mass: f64,
-    /// The inertia about the centre of mass and its inverse, description axes.
-    pub(crate) inertia: Matrix3<f64>,
+    /// The inverse of the inertia about the centre of mass, description axes.
     pub(crate) inertia_inv: Matrix3<f64>,
     pub(crate) gravity: f64,
 }
@@ -59,7 +58,6 @@ impl<'a, D: ContactDynamics + ?Sized> ContactSystem<'a, D> {
             surface: body.surface_kind(),
             mu: body.friction_coefficient(),
             mass: v.mass,
-            inertia,
             inertia_inv,
             gravity: v.gravity,
         };
