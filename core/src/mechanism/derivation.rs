@@ -1,23 +1,19 @@
 //! From a [`MechanismScene`] to `M(q) q̈ = f(q, q̇, t)` and its solution by the cheapest route.
 //!
-//! - Kinetic energy T = Σ_b ½ m_b |v_c|² + ½ ω_bᵀ I_b ω_b (ω_b in body axes, I_b about the
-//!   centre of mass in the body's axes; see [`super::kinematics`]).
-//! - Potential V = −Σ_b m_b g·c_b + Σ ½ k (q − rest)² (gravity and joint springs).
-//! - Non-conservative generalised forces Q_i = −c_i q̇_i + e_i + Σ_b τ_b·∂ω_b/∂q̇_i, with
-//!   τ_b the body torque plus R_bᵀ times the space torque.
-//! - [`EquationsOfMotion::derive`] turns L = T − V and Q into M q̈ = f.
-//!
-//! The solve is one of the [`Route`]s; [`Route::Auto`] lowers each available one and keeps
-//! the cheapest program.
+//! Every route starts from the Lagrangian pieces T, V and Q ([`super::routes::lagrangian`]);
+//! the solve is one of the [`Route`]s, each in its own file under `routes/`, and
+//! [`Route::Auto`] lowers each available one and keeps the cheapest program. The energy,
+//! the power of the loads and the conserved momenta come from the same pieces whatever the
+//! route.
 
 use super::error::MechanismError;
-use super::factored::ldlt_solve;
-use super::kinematics::BodyKinematics;
+use super::routes::factored::ldlt_solve;
+use super::routes::lagrangian::{largest_coupled_block, symbolic};
+use super::routes::recursive;
 use super::scene::MechanismScene;
 use crate::codegen::Program;
-use crate::lagrange::{Coordinates, EquationsOfMotion, LagrangeError};
-use crate::sym::mat3::{dot, mat_vec, transpose};
-use crate::sym::{Arena, ExprId, Rational, SymbolKind};
+use crate::lagrange::Coordinates;
+use crate::sym::{Arena, ExprId, SymbolKind};
 
 /// How q̈ is solved from M q̈ = f.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
@@ -26,7 +22,7 @@ pub enum Route {
     /// fewest weighted operations; past it, the recursive route.
     #[default]
     Auto,
-    /// The block adjugate solve of [`EquationsOfMotion::solve`], for few coordinates.
+    /// The block adjugate solve of [`EquationsOfMotion::solve`](crate::lagrange::EquationsOfMotion::solve), for few coordinates.
     Symbolic,
     /// The symbolic M and f followed by an unexpanded LDLᵀ solve (straight-line code).
     Factored,
@@ -133,143 +129,7 @@ impl MechanismDerivation {
     }
 }
 
-/// The Lagrangian pieces shared by the routes (and the rolling derivation).
-pub(crate) struct Lagrangian {
-    pub(crate) coords: Coordinates,
-    pub(crate) time: ExprId,
-    pub(crate) kinetic: ExprId,
-    pub(crate) potential: ExprId,
-    pub(crate) forces: Vec<ExprId>,
-}
-
-fn half(arena: &mut Arena) -> ExprId {
-    arena.constant(Rational::new(1, 2).unwrap_or(Rational::ONE))
-}
-
-/// −c q̇ + effort per coordinate (no springs: they are in V).
-fn non_conservative_joint_forces(
-    arena: &mut Arena,
-    scene: &MechanismScene,
-    coords: &Coordinates,
-) -> Vec<ExprId> {
-    let mut out = Vec::with_capacity(coords.len());
-    let mut i = 0;
-    for body in &scene.bodies {
-        for load in &body.joint.loads {
-            let mut terms = Vec::new();
-            if let Some(c) = load.damper {
-                let t = arena.mul(c, coords.rates[i]);
-                terms.push(arena.neg(t));
-            }
-            if let Some(e) = load.effort {
-                terms.push(e);
-            }
-            out.push(arena.sum(&terms));
-            i += 1;
-        }
-    }
-    out
-}
-
 impl MechanismScene {
-    pub(crate) fn lagrangian(
-        &self,
-        arena: &mut Arena,
-    ) -> Result<(Lagrangian, Vec<BodyKinematics>), MechanismError> {
-        let order = self.validate(arena)?;
-        let names = self.coordinate_names();
-        let coords = Coordinates::new(arena, &names);
-        let time = arena.time();
-        let kin = self.kinematics(arena, &order, &coords)?;
-        let h = half(arena);
-        // The expanded T of a 3D chain grows far faster than the chain (a 10-link one did
-        // not expand in minutes); past MAX_LAGRANGIAN coordinates only the energy reads T
-        // and V, and their unexpanded, hash-consed forms lower to the same values.
-        let expand = |arena: &mut Arena, e: ExprId| {
-            if coords.len() <= MAX_LAGRANGIAN {
-                arena.expand(e)
-            } else {
-                e
-            }
-        };
-        let mut t_terms = Vec::new();
-        let mut v_terms = Vec::new();
-        for (body, k) in self.bodies.iter().zip(&kin) {
-            let v2 = dot(arena, &k.center_velocity, &k.center_velocity);
-            let i_omega = mat_vec(arena, &body.inertia, &k.omega);
-            let w2 = dot(arena, &k.omega, &i_omega);
-            let translational = arena.product(&[h, body.mass, v2]);
-            let rotational = arena.mul(h, w2);
-            let t = arena.add(translational, rotational);
-            t_terms.push(expand(arena, t));
-            if let Some(g) = self.gravity {
-                let height = dot(arena, &g, &k.center);
-                let v = arena.mul(body.mass, height);
-                let v = arena.neg(v);
-                v_terms.push(expand(arena, v));
-            }
-        }
-        let mut i = 0;
-        for body in &self.bodies {
-            for load in &body.joint.loads {
-                if let Some(spring) = load.spring {
-                    let stretch = arena.sub(coords.q[i], spring.rest);
-                    let v = arena.product(&[h, spring.stiffness, stretch, stretch]);
-                    v_terms.push(expand(arena, v));
-                }
-                i += 1;
-            }
-        }
-        let kinetic = arena.sum(&t_terms);
-        let potential = arena.sum(&v_terms);
-        let mut forces = non_conservative_joint_forces(arena, self, &coords);
-        for (body, k) in self.bodies.iter().zip(&kin) {
-            let mut tau: Option<[ExprId; 3]> = body.body_torque;
-            if let Some(ts) = body.space_torque {
-                let local = mat_vec(arena, &transpose(&k.rotation), &ts);
-                tau = Some(match tau {
-                    Some(tb) => [0, 1, 2].map(|j| arena.add(tb[j], local[j])),
-                    None => local,
-                });
-            }
-            let Some(tau) = tau else { continue };
-            for (f, &rate) in forces.iter_mut().zip(&coords.rates) {
-                let Some(s) = arena.as_symbol(rate) else {
-                    continue;
-                };
-                let partial = k.omega.map(|w| arena.diff(w, s));
-                let q = dot(arena, &tau, &partial);
-                let total = arena.add(*f, q);
-                *f = expand(arena, total);
-            }
-        }
-        Ok((
-            Lagrangian {
-                coords,
-                time,
-                kinetic,
-                potential,
-                forces,
-            },
-            kin,
-        ))
-    }
-
-    /// The Euler–Lagrange equations `M(q) q̈ = f(q, q̇, t)`, every entry expanded.
-    ///
-    /// # Errors
-    /// As [`MechanismScene::validate`]; [`MechanismError::Lagrange`] if the engine fails.
-    pub fn mass_matrix(&self, arena: &mut Arena) -> Result<EquationsOfMotion, MechanismError> {
-        let (lag, _) = self.lagrangian(arena)?;
-        let l = arena.sub(lag.kinetic, lag.potential);
-        Ok(EquationsOfMotion::derive(
-            arena,
-            l,
-            lag.coords,
-            &lag.forces,
-        )?)
-    }
-
     /// Derives the mechanism and solves for q̈ by `route`.
     ///
     /// # Errors
@@ -309,7 +169,7 @@ impl MechanismScene {
         route: Route,
     ) -> Result<MechanismDerivation, MechanismError> {
         let (lag, _) = self.lagrangian(arena)?;
-        let l = arena.sub(lag.kinetic, lag.potential);
+        let l = lag.lagrangian(arena);
         let coords = lag.coords.clone();
         let n = coords.len();
         let (accelerations, pivots, route) = match route {
@@ -318,12 +178,12 @@ impl MechanismScene {
                 (a, p, Route::Recursive)
             }
             Route::Symbolic => {
-                let eom = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
+                let eom = lag.equations(arena)?;
                 let (a, p) = symbolic(arena, &eom)?;
                 (a, p, Route::Symbolic)
             }
             Route::Factored => {
-                let eom = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
+                let eom = lag.equations(arena)?;
                 let (a, p) = ldlt_solve(arena, &eom.mass, &eom.forcing)?;
                 (a, p, Route::Factored)
             }
@@ -332,7 +192,7 @@ impl MechanismScene {
                 (a, p, Route::Recursive)
             }
             Route::Auto => {
-                let eom = EquationsOfMotion::derive(arena, l, coords.clone(), &lag.forces)?;
+                let eom = lag.equations(arena)?;
                 let (fa, fp) = ldlt_solve(arena, &eom.mass, &eom.forcing)?;
                 let mut best = (fa, fp, Route::Factored);
                 if largest_coupled_block(arena, &eom.mass) <= MAX_SYMBOLIC {
@@ -410,8 +270,8 @@ impl MechanismScene {
     ) -> Result<(Vec<ExprId>, Vec<ExprId>), MechanismError> {
         // The recursive algorithm applies gravity and torques itself; the joint loads,
         // springs included, enter as forces along the coordinates.
-        let forces = super::recursive::coordinate_forces(arena, self, coords);
-        let form = super::recursive::recursive_accelerations(arena, self, coords, &forces)?;
+        let forces = recursive::coordinate_forces(arena, self, coords);
+        let form = recursive::recursive_accelerations(arena, self, coords, &forces)?;
         Ok((form.accelerations, form.pivots))
     }
 
@@ -438,49 +298,6 @@ impl MechanismScene {
             rows.push(row);
         }
         rows
-    }
-}
-
-/// The size of the largest connected block of M's non-zero pattern.
-fn largest_coupled_block(arena: &Arena, mass: &[Vec<ExprId>]) -> usize {
-    let n = mass.len();
-    let mut seen = vec![false; n];
-    let mut largest = 0;
-    for start in 0..n {
-        if seen[start] {
-            continue;
-        }
-        seen[start] = true;
-        let mut stack = vec![start];
-        let mut size = 0;
-        while let Some(i) = stack.pop() {
-            size += 1;
-            for j in 0..n {
-                if !seen[j] && mass[i][j] != arena.zero() {
-                    seen[j] = true;
-                    stack.push(j);
-                }
-            }
-        }
-        largest = largest.max(size);
-    }
-    largest
-}
-
-/// The block adjugate solve; pivots are the block determinants.
-fn symbolic(
-    arena: &mut Arena,
-    eom: &EquationsOfMotion,
-) -> Result<(Vec<ExprId>, Vec<ExprId>), MechanismError> {
-    match eom.solve(arena) {
-        Ok(acc) => Ok((acc.accel, acc.determinants)),
-        Err(LagrangeError::SingularMassMatrix { block }) => {
-            Err(MechanismError::SingularMassMatrix {
-                pivot: block.first().copied().unwrap_or(0),
-                value: 0.0,
-            })
-        }
-        Err(e) => Err(e.into()),
     }
 }
 

@@ -23,25 +23,21 @@
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
-mod aba;
 pub mod charts;
 mod derivation;
 mod dynamics;
 mod error;
-mod factored;
 mod interpreted;
-mod kane;
 mod kinematics;
 mod parameter_checks;
 mod quantities;
-pub mod recursive;
 pub mod rolling;
+mod routes;
 mod rules;
 mod scene;
 mod taylor;
 mod validate;
 
-pub use aba::MechanismAba;
 pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
 pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
@@ -49,7 +45,11 @@ pub use error::MechanismError;
 pub use interpreted::{MechanismModel, MechanismSystem};
 pub use kinematics::BodyKinematics;
 pub use quantities::MechanismQuantities;
-pub use recursive::{RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations};
+pub use routes::aba::MechanismAba;
+pub use routes::recursive;
+pub use routes::recursive::{
+    RecursiveForm, coordinate_forces, derive_recursive, recursive_accelerations,
+};
 pub use rules::{PARALLEL_SINE, check_axis, check_universal_axes};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};
 pub use taylor::MechanismTaylorError;

@@ -12,7 +12,7 @@
 //! Structural zeros of M (decoupled coordinates) stay zero through the canonical
 //! constructors, so their terms vanish from the code.
 
-use super::error::MechanismError;
+use crate::mechanism::error::MechanismError;
 use crate::sym::{Arena, ExprId};
 
 /// `q̈` and the pivots D_j of the LDLᵀ solve of `M q̈ = f`.

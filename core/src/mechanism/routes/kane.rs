@@ -17,11 +17,11 @@
 //! coordinates) this takes a fraction of the Lagrangian route's time, which expands the
 //! momenta of the whole tree and differentiates them again.
 
-use super::derivation::Lagrangian;
-use super::error::MechanismError;
-use super::kinematics::BodyKinematics;
-use super::scene::MechanismScene;
+use super::lagrangian::Lagrangian;
 use crate::lagrange::EquationsOfMotion;
+use crate::mechanism::error::MechanismError;
+use crate::mechanism::kinematics::BodyKinematics;
+use crate::mechanism::scene::MechanismScene;
 use crate::sym::mat3::{cross, dot, mat_vec};
 use crate::sym::{Arena, ExprId, SymbolId};
 

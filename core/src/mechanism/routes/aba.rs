@@ -5,7 +5,9 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::recursive::{Motion, flatten};
-use super::{MechanismError, MechanismScene};
+use crate::mechanism::{
+    JointKind, MechanismError, MechanismScene, check_axis, check_universal_axes,
+};
 use crate::sym::{Arena, ExprId};
 
 /// One link with its constants evaluated.
@@ -145,14 +147,14 @@ impl MechanismAba {
                 Ok([v.x, v.y, v.z])
             };
             match &b.joint.kind {
-                super::JointKind::Revolute { axis } | super::JointKind::Prismatic { axis } => {
-                    super::check_axis(joint, "axis", numeric(axis)?)?;
+                JointKind::Revolute { axis } | JointKind::Prismatic { axis } => {
+                    check_axis(joint, "axis", numeric(axis)?)?;
                 }
-                super::JointKind::Universal { axes } => {
+                JointKind::Universal { axes } => {
                     let (outer, inner) = (numeric(&axes[0])?, numeric(&axes[1])?);
-                    super::check_universal_axes(joint, outer, inner)?;
+                    check_universal_axes(joint, outer, inner)?;
                 }
-                super::JointKind::Spherical { .. } | super::JointKind::Free { .. } => {}
+                JointKind::Spherical { .. } | JointKind::Free { .. } => {}
             }
         }
         let (symbolic, _) = flatten(arena, scene)?;
