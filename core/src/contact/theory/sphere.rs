@@ -1,12 +1,5 @@
-//! Closed forms for bodies on a table, to measure the contact scenes against: the tippe top's
-//! inverted state from Jellett's integral, the rolling disk's steady circles, accelerations and
-//! upright stability, the integrals of a rolling sphere (Routh's, Chaplygin's), and the
-//! finite-time collapse of Euler's disk under an air-layer dissipation.
-//!
-//! Frames: space z is up, the table is z = 0, gravity g points along −z. A body's attitude q
-//! turns its description axes into space axes; ω is given in body (description) axes and
-//! turned with q where a formula needs it in space. Every function is plain arithmetic on f64:
-//! outside a formula's stated domain it returns `None` or a NaN, never panics.
+//! Bodies whose contact surface is a sphere: the integrals of a rolling sphere (energy,
+//! Jellett's, Routh's) and the tippe top's inverted state from Jellett's integral.
 
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
@@ -191,10 +184,3 @@ impl TippeTop {
         })
     }
 }
-
-pub use disk::{
-    DiskAccelerations, DiskState, EulerDisk, RollingDisk, SteadyCircle, power_law_exponents,
-};
-
-/// The rolling disk and Euler's disk.
-mod disk;
