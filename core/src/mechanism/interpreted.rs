@@ -5,10 +5,9 @@ use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::MechanismScene;
 use crate::codegen::{Bindings, Program, with_workspace};
-use crate::ode::{OdeError, System};
 use crate::sym::{Arena, ExprId, SymbolId};
 
-use super::parameter_checks::ParameterChecks;
+use super::checks::ParameterChecks;
 
 /// A mechanism's q̈, pivots, energy and momenta, lowered once and interpreted.
 ///
@@ -171,8 +170,8 @@ impl MechanismModel {
     }
 
     /// The checks of [`MechanismModel::new`] and [`MechanismModel::set`]
-    /// (`parameter_checks.rs`).
-    fn check_parameters(&self) -> Result<(), MechanismError> {
+    /// (`checks.rs`).
+    pub(super) fn check_parameters(&self) -> Result<(), MechanismError> {
         self.checks.check(&self.bindings)
     }
 
@@ -348,52 +347,28 @@ impl MechanismModel {
         Ok(self.cyclic.iter().copied().zip(out).collect())
     }
 
-    /// The model as an ODE system over `[q, q̇]` with `N = 2n` entries.
-    ///
-    /// # Errors
-    /// [`MechanismError::StateLength`] if N ≠ 2n.
-    pub fn system<const N: usize>(&self) -> Result<MechanismSystem<'_, N>, MechanismError> {
-        if N != 2 * self.dof() {
-            return Err(MechanismError::StateLength {
-                quantity: "the ODE state",
-                expected: 2 * self.dof(),
-                got: N,
-            });
-        }
-        Ok(MechanismSystem { model: self })
-    }
-}
-
-/// A [`MechanismModel`] as an [`crate::ode::System`] over `[q, q̇]`: unchecked, for the
-/// steppers' inner loop (a singular M gives NaN, which the adaptive drivers reject).
-#[derive(Debug, Clone, Copy)]
-pub struct MechanismSystem<'a, const N: usize> {
-    model: &'a MechanismModel,
-}
-
-impl<const N: usize> System<N> for MechanismSystem<'_, N> {
-    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
-        let m = self.model;
-        let n = m.dof();
-        let (q, qdot) = y.split_at(n);
-        let (rates, accelerations) = dydt.split_at_mut(n);
-        rates.copy_from_slice(qdot);
-        // The outputs (pivots, then q̈) are a run-time number long: they go through the
-        // thread's workspace, so the model stays shareable and the call allocation-free.
+    /// q̈ into `accelerations` (n entries), unchecked: the steppers' inner loop, where a
+    /// singular M gives NaN, which the adaptive drivers reject. The outputs (pivots, then
+    /// q̈) are a run-time number long: they go through the thread's workspace, so the model
+    /// stays shareable and the call allocation-free.
+    pub(super) fn accelerations_into(
+        &self,
+        t: f64,
+        q: &[f64],
+        qdot: &[f64],
+        accelerations: &mut [f64],
+    ) {
         with_workspace(|ws| {
-            let out = m.bindings.eval_to(ws, &m.accel, m.inputs(t, q, qdot));
-            for (a, &v) in accelerations.iter_mut().zip(out.iter().skip(m.pivot_count)) {
+            let out = self
+                .bindings
+                .eval_to(ws, &self.accel, self.inputs(t, q, qdot));
+            for (a, &v) in accelerations
+                .iter_mut()
+                .zip(out.iter().skip(self.pivot_count))
+            {
                 *a = v;
             }
         });
-    }
-
-    /// The model's checks of its values ([`MechanismModel::set`] already refuses a bad one,
-    /// so this holds for a model built through the API; it is the hook all the same).
-    fn check_parameters(&self) -> Result<(), OdeError> {
-        self.model
-            .check_parameters()
-            .map_err(MechanismError::into_ode_error)
     }
 }
 

@@ -24,17 +24,18 @@
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 
 pub mod charts;
+mod checks;
 mod derivation;
 mod dynamics;
 mod error;
 mod interpreted;
 mod kinematics;
-mod parameter_checks;
 mod quantities;
 pub mod rolling;
 mod routes;
 mod rules;
 mod scene;
+mod system;
 mod taylor;
 mod validate;
 
@@ -42,7 +43,7 @@ pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
 pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
-pub use interpreted::{MechanismModel, MechanismSystem};
+pub use interpreted::MechanismModel;
 pub use kinematics::BodyKinematics;
 pub use quantities::MechanismQuantities;
 pub use routes::aba::MechanismAba;
@@ -52,4 +53,5 @@ pub use routes::recursive::{
 };
 pub use rules::{PARALLEL_SINE, check_axis, check_universal_axes};
 pub use scene::{CoordinateLoad, Joint, JointKind, MechanismBody, MechanismScene, Parent, Spring};
+pub use system::MechanismSystem;
 pub use taylor::MechanismTaylorError;

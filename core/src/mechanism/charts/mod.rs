@@ -16,11 +16,11 @@
 //! those loads are defined along one chart's coordinates, and the partner chart would change
 //! the physics.
 
-mod driver;
 mod model_charts;
+mod run;
 
-pub use driver::{ChartedMechanism, InCharts};
 pub use model_charts::MechanismCharts;
+pub use run::{ChartedMechanism, InCharts};
 
 use super::MechanismError;
 use super::scene::{JointKind, MechanismScene};

@@ -8,8 +8,8 @@ use super::dynamics::RollingDynamics;
 use super::scene::{RollingScene, WheelSurface};
 use crate::codegen::{Bindings, Program};
 use crate::lagrange::Partition;
+use crate::mechanism::checks::ParameterChecks;
 use crate::mechanism::error::MechanismError;
-use crate::mechanism::parameter_checks::ParameterChecks;
 use crate::mechanism::scene::MechanismScene;
 use crate::sym::{Arena, ExprId, SymbolId};
 
