@@ -1,12 +1,13 @@
 //! The run-time checks of a body on a table, written once for every implementation of
-//! [`ContactDynamics`]: a state's finiteness, quaternion, placeable contact and rolling
-//! constraint, and the parameter values' rules.
+//! `ContactDynamics` (whose default methods call them with what they read of the body): a
+//! state's finiteness, quaternion, placeable contact and rolling constraint, and the
+//! parameter values' rules.
 
 use nalgebra::Vector3;
 
-use super::dynamics::{ContactDynamics, Phase, attitude_of};
 use super::error::ContactError;
-use super::state::{STATE_LEN, layout};
+use super::scene::{LawKind, Phase};
+use super::state::{STATE_LEN, attitude_of, layout};
 use super::surface::SurfaceKind;
 use crate::body::{Definiteness, check_inertia};
 
@@ -20,20 +21,26 @@ pub use crate::rigid::MIN_TILT;
 /// The slip a rolling state may have, relative to |ω| |r| + |v|.
 pub const ROLLING_TOLERANCE: f64 = 1e-9;
 
-/// As [`ContactDynamics::check_state`].
-pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
-    d: &D,
-    phase: Phase,
-    y: &[f64; STATE_LEN],
-) -> Result<(), ContactError> {
-    let law = d.law();
-    if !law.has(phase) {
-        return Err(ContactError::PhaseNotDerived {
+/// The law derives `phase`'s equations.
+///
+/// # Errors
+/// [`ContactError::PhaseNotDerived`].
+pub(crate) fn check_law(law: LawKind, phase: Phase) -> Result<(), ContactError> {
+    if law.has(phase) {
+        Ok(())
+    } else {
+        Err(ContactError::PhaseNotDerived {
             phase,
             law: law.name(),
-        });
+        })
     }
-    check_finite_parts(y)?;
+}
+
+/// The attitude quaternion is a unit one, within [`QUATERNION_TOLERANCE`].
+///
+/// # Errors
+/// [`ContactError::BadQuaternion`].
+pub(crate) fn check_quaternion(y: &[f64; STATE_LEN]) -> Result<(), ContactError> {
     let at = layout::QUATERNION;
     let quaternion = [y[at], y[at + 1], y[at + 2], y[at + 3]];
     let norm = quaternion.iter().map(|c| c * c).sum::<f64>().sqrt();
@@ -44,26 +51,39 @@ pub(crate) fn check_state<D: ContactDynamics + ?Sized>(
             tolerance: QUATERNION_TOLERANCE,
         });
     }
-    check_placement(d, y)?;
-    if phase == Phase::Rolling {
-        let c = d.contact(y);
-        // The contact velocity from the state is v_state + R(ω × r) horizontally: zero when
-        // the state rolls.
-        let velocity = [y[layout::VELOCITY], y[layout::VELOCITY + 1]];
-        let rolling = [velocity[0] - c.velocity.x, velocity[1] - c.velocity.y];
-        let slip = c.velocity.x.hypot(c.velocity.y);
-        let omega = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
-        let scale = omega.norm() * c.body.norm() + velocity[0].hypot(velocity[1]);
-        let tolerance = (ROLLING_TOLERANCE * scale).max(1e-12);
-        // A NaN slip (a contact the map could not place) is refused too.
-        if slip.is_nan() || slip > tolerance {
-            return Err(ContactError::RollingConstraint {
-                velocity,
-                rolling,
-                slip,
-                tolerance,
-            });
-        }
+    Ok(())
+}
+
+/// A rolling state does not slip: `velocity` is the contact point's velocity from the state
+/// and `arm` the vector r from the centre of mass to the contact, body axes (the contact
+/// point of the body's support map at `y`).
+///
+/// # Errors
+/// [`ContactError::RollingConstraint`], for a NaN slip too (a contact the map could not
+/// place).
+pub(crate) fn check_rolling(
+    y: &[f64; STATE_LEN],
+    velocity: &Vector3<f64>,
+    arm: &Vector3<f64>,
+) -> Result<(), ContactError> {
+    // The contact velocity from the state is v_state + R(ω × r) horizontally: zero when the
+    // state rolls.
+    let state_velocity = [y[layout::VELOCITY], y[layout::VELOCITY + 1]];
+    let rolling = [
+        state_velocity[0] - velocity.x,
+        state_velocity[1] - velocity.y,
+    ];
+    let slip = velocity.x.hypot(velocity.y);
+    let omega = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
+    let scale = omega.norm() * arm.norm() + state_velocity[0].hypot(state_velocity[1]);
+    let tolerance = (ROLLING_TOLERANCE * scale).max(1e-12);
+    if slip.is_nan() || slip > tolerance {
+        return Err(ContactError::RollingConstraint {
+            velocity: state_velocity,
+            rolling,
+            slip,
+            tolerance,
+        });
     }
     Ok(())
 }
@@ -96,12 +116,12 @@ pub(crate) fn check_finite_parts(y: &[f64; STATE_LEN]) -> Result<(), ContactErro
 ///
 /// # Errors
 /// [`ContactError::FlatDisk`], [`ContactError::PastParaboloidRim`].
-pub(crate) fn check_placement<D: ContactDynamics + ?Sized>(
-    d: &D,
+pub(crate) fn check_placement(
+    surface: SurfaceKind,
     y: &[f64; STATE_LEN],
 ) -> Result<(), ContactError> {
     let gamma = attitude_of(y).inverse_transform_vector(&Vector3::z());
-    match d.surface_kind() {
+    match surface {
         kind @ (SurfaceKind::DiskRim | SurfaceKind::Torus) => {
             let tilt = gamma.x.hypot(gamma.y).min(1.0).asin();
             if tilt < MIN_TILT {
@@ -127,6 +147,8 @@ pub(crate) fn check_placement<D: ContactDynamics + ?Sized>(
 /// [`ContactDynamics::check_parameters`] gathers from its parameters (the interpreted model
 /// from its bindings, `#[contact(...)]` from the struct's fields) and hands to
 /// [`ContactValues::check`].
+///
+/// [`ContactDynamics::check_parameters`]: crate::contact::ContactDynamics::check_parameters
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContactValues {
     /// The mass M.
@@ -153,12 +175,14 @@ impl ContactValues {
     ///
     /// # Errors
     /// As [`ContactDynamics::check_parameters`].
+    ///
+    /// [`ContactDynamics::check_parameters`]: crate::contact::ContactDynamics::check_parameters
     pub fn check(&self) -> Result<(), ContactError> {
         check_values(self)
     }
 }
 
-/// As [`ContactDynamics::check_parameters`], on the values.
+/// As `ContactDynamics::check_parameters`, on the values.
 fn check_values(v: &ContactValues) -> Result<(), ContactError> {
     if !(v.mass.is_finite() && v.mass > 0.0) {
         return Err(ContactError::BadParameter {

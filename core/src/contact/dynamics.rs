@@ -3,62 +3,15 @@
 //! contact, the reaction, the energy and momenta as straight-line code, with the checked
 //! helpers and the runs built on them.
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{UnitQuaternion, Vector3};
 
-use super::checks::ContactValues;
+use super::checks::{
+    ContactValues, check_finite_parts, check_law, check_placement, check_quaternion, check_rolling,
+};
 use super::error::ContactError;
+use super::scene::{LawKind, Phase};
 use super::state::{STATE_LEN, layout};
 use super::surface::SurfaceKind;
-
-/// The phase of a contact: which constraint holds at the contact point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Phase {
-    /// The contact point is at rest (rolling without slip).
-    Rolling,
-    /// The contact point slides under the law's friction.
-    Sliding,
-}
-
-/// The contact law without its coefficients: what a run needs to know of it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum LawKind {
-    /// Rolling without slip throughout ([`Phase::Rolling`] only).
-    Rolling,
-    /// Sliding throughout ([`Phase::Sliding`] only).
-    Sliding,
-    /// Coulomb stick–slip: both phases, switched at events.
-    StickSlip,
-}
-
-impl LawKind {
-    /// The law's name in the attribute language.
-    pub fn name(self) -> &'static str {
-        match self {
-            LawKind::Rolling => "rolling",
-            LawKind::Sliding => "sliding",
-            LawKind::StickSlip => "stick_slip",
-        }
-    }
-
-    /// Whether the law derives the equations of `phase`.
-    pub fn has(self, phase: Phase) -> bool {
-        matches!(
-            (self, phase),
-            (LawKind::Rolling, Phase::Rolling)
-                | (LawKind::Sliding, Phase::Sliding)
-                | (LawKind::StickSlip, _)
-        )
-    }
-
-    /// The phase a run starts in when none is asked for: rolling for the rolling and
-    /// stick–slip laws, sliding for the sliding law.
-    pub fn first_phase(self) -> Phase {
-        match self {
-            LawKind::Sliding => Phase::Sliding,
-            _ => Phase::Rolling,
-        }
-    }
-}
 
 /// The force of the table on the body at the contact point, space axes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -165,7 +118,15 @@ pub trait ContactDynamics {
     /// [`ContactError::BadQuaternion`], [`ContactError::FlatDisk`],
     /// [`ContactError::PastParaboloidRim`], [`ContactError::RollingConstraint`].
     fn check_state(&self, phase: Phase, y: &[f64; STATE_LEN]) -> Result<(), ContactError> {
-        super::checks::check_state(self, phase, y)
+        check_law(self.law(), phase)?;
+        check_finite_parts(y)?;
+        check_quaternion(y)?;
+        check_placement(self.surface_kind(), y)?;
+        if phase == Phase::Rolling {
+            let c = self.contact(y);
+            check_rolling(y, &c.velocity, &c.body)?;
+        }
+        Ok(())
     }
 
     /// ẏ under `phase`, checked: the state as [`ContactDynamics::check_state`] and a finite
@@ -210,8 +171,8 @@ pub trait ContactDynamics {
         omega: &Vector3<f64>,
     ) -> Result<[f64; STATE_LEN], ContactError> {
         let y = self.rolling_state_unchecked(position, attitude, omega);
-        super::checks::check_placement(self, &y)?;
-        super::checks::check_finite_parts(&y)?;
+        check_placement(self.surface_kind(), &y)?;
+        check_finite_parts(&y)?;
         Ok(y)
     }
 
@@ -235,10 +196,4 @@ pub trait ContactDynamics {
         y[layout::VELOCITY + 1] = -c.velocity.y;
         y
     }
-}
-
-/// The attitude of a state array, its quaternion normalised.
-pub fn attitude_of(y: &[f64; STATE_LEN]) -> UnitQuaternion<f64> {
-    let at = layout::QUATERNION;
-    UnitQuaternion::new_normalize(Quaternion::new(y[at], y[at + 1], y[at + 2], y[at + 3]))
 }

@@ -4,7 +4,7 @@
 
 use thiserror::Error;
 
-use super::dynamics::Phase;
+use super::scene::Phase;
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::ode::OdeError;

@@ -19,6 +19,7 @@ mod derivation;
 mod dynamics;
 mod error;
 mod interpreted;
+mod outcome;
 mod phases;
 mod quantities;
 mod run;
@@ -35,14 +36,13 @@ pub mod theory;
 pub use crate::rigid::{Surface, SurfaceKind};
 pub use checks::{ContactValues, MIN_TILT, QUATERNION_TOLERANCE, ROLLING_TOLERANCE};
 pub use derivation::{ContactDerivation, ContactEquations};
-pub use dynamics::{
-    ContactDynamics, ContactMomenta, ContactPoint, LawKind, Phase, Reaction, attitude_of,
-};
+pub use dynamics::{ContactDynamics, ContactMomenta, ContactPoint, Reaction};
 pub use error::ContactError;
 pub use interpreted::ContactModel;
+pub use outcome::{ContactOutcome, Switch};
 pub use phases::{STICK_FRACTION, normal_denominator};
 pub use quantities::ContactQuantities;
-pub use run::{ContactOutcome, ContactRun, SEED_SLIP, Switch};
-pub use scene::{ContactLaw, ContactScene, Friction};
-pub use state::{STATE_LEN, layout};
+pub use run::{ContactRun, SEED_SLIP};
+pub use scene::{ContactLaw, ContactScene, Friction, LawKind, Phase};
+pub use state::{STATE_LEN, attitude_of, layout};
 pub use system::ContactSystem;

@@ -24,9 +24,11 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::checks::MIN_TILT;
-use super::dynamics::{ContactDynamics, LawKind, Phase, attitude_of};
+use super::dynamics::ContactDynamics;
 use super::error::ContactError;
-use super::run::ContactOutcome;
+use super::outcome::ContactOutcome;
+use super::scene::{LawKind, Phase};
+use super::state::attitude_of;
 use super::state::{STATE_LEN, layout};
 use super::surface::SurfaceKind;
 use super::system::{ContactSystem, Watch};

@@ -2,7 +2,8 @@
 //! normal force, the slip speed, Jellett's quantity and the angular momentum about the
 //! contact point, per sample of a run over the state of [`super::layout`].
 
-use super::dynamics::{ContactDynamics, Phase};
+use super::dynamics::ContactDynamics;
+use super::scene::Phase;
 use super::state::STATE_LEN;
 use crate::ode::{HybridState, Quantities};
 

@@ -60,3 +60,53 @@ pub struct ContactScene {
     /// Gravity g along −z in space.
     pub gravity: ExprId,
 }
+
+/// The phase of a contact: which constraint holds at the contact point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Phase {
+    /// The contact point is at rest (rolling without slip).
+    Rolling,
+    /// The contact point slides under the law's friction.
+    Sliding,
+}
+
+/// The contact law without its coefficients: what a run needs to know of it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LawKind {
+    /// Rolling without slip throughout ([`Phase::Rolling`] only).
+    Rolling,
+    /// Sliding throughout ([`Phase::Sliding`] only).
+    Sliding,
+    /// Coulomb stick–slip: both phases, switched at events.
+    StickSlip,
+}
+
+impl LawKind {
+    /// The law's name in the attribute language.
+    pub fn name(self) -> &'static str {
+        match self {
+            LawKind::Rolling => "rolling",
+            LawKind::Sliding => "sliding",
+            LawKind::StickSlip => "stick_slip",
+        }
+    }
+
+    /// Whether the law derives the equations of `phase`.
+    pub fn has(self, phase: Phase) -> bool {
+        matches!(
+            (self, phase),
+            (LawKind::Rolling, Phase::Rolling)
+                | (LawKind::Sliding, Phase::Sliding)
+                | (LawKind::StickSlip, _)
+        )
+    }
+
+    /// The phase a run starts in when none is asked for: rolling for the rolling and
+    /// stick–slip laws, sliding for the sliding law.
+    pub fn first_phase(self) -> Phase {
+        match self {
+            LawKind::Sliding => Phase::Sliding,
+            _ => Phase::Rolling,
+        }
+    }
+}

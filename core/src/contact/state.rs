@@ -4,6 +4,8 @@
 //! The height of the centre of mass and its vertical velocity are not states: contact fixes
 //! them as functions of the attitude and ω (a holonomic constraint and its derivative).
 
+use nalgebra::{Quaternion, UnitQuaternion};
+
 /// The length of the state array: horizontal position (2), horizontal velocity (2),
 /// quaternion (4), ω (3).
 pub const STATE_LEN: usize = 11;
@@ -19,4 +21,10 @@ pub mod layout {
     pub const QUATERNION: usize = 4;
     /// The body angular velocity, description axes.
     pub const OMEGA: usize = 8;
+}
+
+/// The attitude of a state array, its quaternion normalised.
+pub fn attitude_of(y: &[f64; STATE_LEN]) -> UnitQuaternion<f64> {
+    let at = layout::QUATERNION;
+    UnitQuaternion::new_normalize(Quaternion::new(y[at], y[at + 1], y[at + 2], y[at + 3]))
 }

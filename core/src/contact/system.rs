@@ -3,8 +3,9 @@
 
 use nalgebra::Matrix3;
 
-use super::dynamics::{ContactDynamics, LawKind, Phase};
+use super::dynamics::ContactDynamics;
 use super::error::ContactError;
+use super::scene::{LawKind, Phase};
 use super::state::STATE_LEN;
 use super::surface::SurfaceKind;
 use crate::ode::{OdeError, System};
