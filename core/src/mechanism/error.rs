@@ -53,14 +53,15 @@ pub enum MechanismError {
     /// A universal joint whose two axes are parallel (or opposite): its two coordinates
     /// would turn about one line and the mass matrix is singular.
     #[error(
-        "joint `{joint}`: the universal joint's axes are parallel (the sine of the angle between them is {sine:e}, below √ε ≈ {:.1e}), so its two coordinates turn about one line: give axes at an angle, such as [x, y]",
-        super::rules::PARALLEL_SINE
+        "joint `{joint}`: the universal joint's axes are parallel (the sine of the angle between them is {sine:e}, below √ε ≈ {minimum:.1e}), so its two coordinates turn about one line: give axes at an angle, such as [x, y]"
     )]
     ParallelAxes {
         /// The joint.
         joint: String,
         /// |a × b| / (|a| |b|) for the values given.
         sine: f64,
+        /// The smallest sine accepted, [`super::PARALLEL_SINE`].
+        minimum: f64,
     },
     /// A parameter given twice to [`super::MechanismModel::new`] or
     /// [`super::MechanismModel::from_derivation`].

@@ -86,6 +86,7 @@ pub fn check_universal_axes(
         return Err(MechanismError::ParallelAxes {
             joint: joint.to_owned(),
             sine,
+            minimum: PARALLEL_SINE,
         });
     }
     Ok(())

@@ -248,7 +248,7 @@ fn parallel_universal_axes_from_parameters_are_refused_by_new_and_set() {
     for (ax, ay) in [(1.0, 0.0), (-3.0, 0.0), (2.0, 1e-9)] {
         let values = [("ax", ax), ("ay", ay), ("m", 2.0), ("l", 1.5)];
         match rod_model(&values) {
-            Err(MechanismError::ParallelAxes { joint, sine }) => {
+            Err(MechanismError::ParallelAxes { joint, sine, .. }) => {
                 assert_eq!(joint, "rod");
                 let expected = ay.abs() / (ax * ax + ay * ay).sqrt();
                 assert!((sine - expected).abs() <= 1e-24, "{sine:e} vs {expected:e}");
@@ -259,7 +259,7 @@ fn parallel_universal_axes_from_parameters_are_refused_by_new_and_set() {
     // [1e12, 1, 0] is 1e-12 rad from x.
     let e = model.set("ax", 1e12).err();
     assert!(
-        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine }) if joint == "rod" && (sine - 1e-12).abs() < 1e-27),
+        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine, .. }) if joint == "rod" && (sine - 1e-12).abs() < 1e-27),
         "{e:?}"
     );
     let text = e.map(|e| e.to_string()).unwrap_or_default();
@@ -316,6 +316,8 @@ fn constant_parallel_axes_are_refused_by_validate_and_the_numeric_algorithm() {
     let expected = MechanismError::ParallelAxes {
         joint: "rod".into(),
         sine: 0.0,
+        // √ε, the sine below which the pair's pivot is under the rounding of its neighbours.
+        minimum: f64::EPSILON.sqrt(),
     };
     assert_eq!(scene.validate(&a).err(), Some(expected.clone()));
     assert_eq!(scene.derive(&mut a, Route::Auto).err(), Some(expected));
@@ -331,7 +333,7 @@ fn constant_parallel_axes_are_refused_by_validate_and_the_numeric_algorithm() {
     }
     let e = precess::mechanism::MechanismAba::new(&mut a, &scene, &env).err();
     assert!(
-        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine }) if joint == "rod" && *sine == 0.0),
+        matches!(&e, Some(MechanismError::ParallelAxes { joint, sine, .. }) if joint == "rod" && *sine == 0.0),
         "{e:?}"
     );
 }
@@ -378,7 +380,7 @@ fn parallel_field_axes_of_a_derived_universal_joint_are_refused() {
         let e = gimbal_refused(Gimbal { bx, by, ..GIMBAL });
         let expected = by.abs() / (bx * bx + by * by).sqrt();
         assert!(
-            matches!(&e, MechanismError::ParallelAxes { joint, sine } if joint == "rod" && (sine - expected).abs() <= 1e-25),
+            matches!(&e, MechanismError::ParallelAxes { joint, sine, .. } if joint == "rod" && (sine - expected).abs() <= 1e-25),
             "bx = {bx}, by = {by}: {e:?}"
         );
     }
