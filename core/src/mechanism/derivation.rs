@@ -209,13 +209,7 @@ impl MechanismScene {
             }
         };
         let energy = arena.add(lag.kinetic, lag.potential);
-        let power_terms: Vec<ExprId> = lag
-            .forces
-            .iter()
-            .zip(&coords.rates)
-            .map(|(&f, &r)| arena.mul(f, r))
-            .collect();
-        let power = arena.sum(&power_terms);
+        let power = lag.power(arena);
         // Expanded only where the kinematics are (see `MechanismScene::kinematics`).
         let power = if n <= MAX_LAGRANGIAN {
             arena.expand(power)

@@ -4,7 +4,7 @@
 use super::derivation::{MechanismDerivation, Route};
 use super::error::MechanismError;
 use super::scene::MechanismScene;
-use crate::codegen::{Bindings, Program, with_workspace};
+use crate::codegen::{BindingError, Bindings, Program, check_distinct, with_workspace};
 use crate::sym::{Arena, ExprId, SymbolId};
 
 use super::checks::ParameterChecks;
@@ -67,18 +67,21 @@ pub struct MechanismModel {
     values: Vec<(String, f64)>,
 }
 
-/// Each name once: a name given twice would bind its last value silently.
+/// Each name once: a name given twice would bind its last value silently. The rule is the
+/// bindings' own; the mechanism reports it in its own variant, as it always has.
 fn distinct(parameters: &[(&str, f64)]) -> Result<(), MechanismError> {
-    for (i, &(name, first)) in parameters.iter().enumerate() {
-        if let Some(&(_, second)) = parameters[i + 1..].iter().find(|(n, _)| *n == name) {
-            return Err(MechanismError::DuplicateParameter {
-                name: name.to_owned(),
-                first,
-                second,
-            });
-        }
-    }
-    Ok(())
+    check_distinct(parameters).map_err(|e| match e {
+        BindingError::DuplicateParameter {
+            name,
+            first,
+            second,
+        } => MechanismError::DuplicateParameter {
+            name,
+            first,
+            second,
+        },
+        other => other.into(),
+    })
 }
 
 fn symbol(arena: &Arena, e: ExprId) -> Result<SymbolId, MechanismError> {

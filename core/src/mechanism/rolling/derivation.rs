@@ -207,13 +207,7 @@ impl MechanismScene {
         // Kane's method: the Lagrangian route's expansion of the whole tree's momenta took
         // seconds on the bicycle (see `kane.rs`).
         let equations = self.kane_from(arena, &lag, &kin);
-        let power_terms: Vec<ExprId> = lag
-            .forces
-            .iter()
-            .zip(&coords.rates)
-            .map(|(&f, &r)| arena.mul(f, r))
-            .collect();
-        let power = arena.sum(&power_terms);
+        let power = lag.power(arena);
         Ok(RollingDerivation {
             equations,
             time: lag.time,

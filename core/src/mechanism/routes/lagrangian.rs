@@ -65,6 +65,17 @@ impl Lagrangian {
         arena.sub(self.kinetic, self.potential)
     }
 
+    /// The power of the non-conservative loads, dE/dt = Σ Q_i q̇_i (unexpanded).
+    pub(crate) fn power(&self, arena: &mut Arena) -> ExprId {
+        let terms: Vec<ExprId> = self
+            .forces
+            .iter()
+            .zip(&self.coords.rates)
+            .map(|(&f, &r)| arena.mul(f, r))
+            .collect();
+        arena.sum(&terms)
+    }
+
     /// The Euler–Lagrange equations of L = T − V under Q.
     pub(crate) fn equations(&self, arena: &mut Arena) -> Result<EquationsOfMotion, MechanismError> {
         let l = self.lagrangian(arena);

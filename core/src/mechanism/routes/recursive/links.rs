@@ -42,64 +42,6 @@ pub(crate) struct Link {
     pub body: Option<usize>,
 }
 
-/// The bodies in an order where every parent comes before its children.
-///
-/// # Errors
-/// [`MechanismError::NoMovingJoint`], [`MechanismError::UnknownParent`],
-/// [`MechanismError::Cycle`] and [`MechanismError::WrongCoordinateCount`].
-pub(crate) fn topological_order(scene: &MechanismScene) -> Result<Vec<usize>, MechanismError> {
-    let n = scene.bodies.len();
-    if scene.dof() == 0 {
-        return Err(MechanismError::NoMovingJoint);
-    }
-    for b in &scene.bodies {
-        let (expected, got) = (b.joint.kind.dof(), b.joint.coordinates.len());
-        if expected != got {
-            return Err(MechanismError::WrongCoordinateCount {
-                joint: b.joint.name.clone(),
-                kind: b.joint.kind.name(),
-                expected,
-                got,
-            });
-        }
-        if let Parent::Body(p) = b.joint.parent
-            && p >= n
-        {
-            return Err(MechanismError::UnknownParent {
-                body: b.name.clone(),
-                parent: p,
-                count: n,
-            });
-        }
-    }
-    let mut order = Vec::with_capacity(n);
-    let mut placed = vec![false; n];
-    while order.len() < n {
-        let before = order.len();
-        for (i, b) in scene.bodies.iter().enumerate() {
-            let ready = match b.joint.parent {
-                Parent::Ground => true,
-                Parent::Body(p) => placed.get(p).copied().unwrap_or(false),
-            };
-            if !placed[i] && ready {
-                placed[i] = true;
-                order.push(i);
-            }
-        }
-        if order.len() == before {
-            let bodies = scene
-                .bodies
-                .iter()
-                .zip(&placed)
-                .filter(|(_, done)| !**done)
-                .map(|(b, _)| b.name.clone())
-                .collect();
-            return Err(MechanismError::Cycle { bodies });
-        }
-    }
-    Ok(order)
-}
-
 /// `v / |v|`, exact where |v|² is the square of a rational.
 fn normalised(
     arena: &mut Arena,
@@ -134,13 +76,13 @@ fn unit(arena: &Arena, k: usize) -> [ExprId; 3] {
 /// The links of `scene`, parents before children, and per body the index of its last link.
 ///
 /// # Errors
-/// As [`topological_order`], and [`MechanismError::ZeroAxis`] for an axis that is
-/// identically zero.
+/// As [`MechanismScene::validate`] (the one rule for a well-formed tree, whatever the
+/// route), and [`MechanismError::ZeroAxis`] for an axis that is identically zero.
 pub(crate) fn flatten(
     arena: &mut Arena,
     scene: &MechanismScene,
 ) -> Result<(Vec<Link>, Vec<usize>), MechanismError> {
-    let order = topological_order(scene)?;
+    let order = scene.validate(arena)?;
     let mut first_coordinate = Vec::with_capacity(scene.bodies.len());
     let mut next = 0;
     for b in &scene.bodies {

@@ -145,10 +145,11 @@ fn velocity_product_force(
 /// are applied here).
 ///
 /// # Errors
-/// A malformed tree ([`MechanismError::NoMovingJoint`], [`MechanismError::UnknownParent`],
-/// [`MechanismError::Cycle`], [`MechanismError::WrongCoordinateCount`],
-/// [`MechanismError::ZeroAxis`]), [`MechanismError::StateLength`] if `coords` or
-/// `joint_forces` do not have one entry per coordinate, and
+/// A malformed tree, as [`MechanismScene::validate`] ([`MechanismError::NoMovingJoint`],
+/// [`MechanismError::UnknownParent`], [`MechanismError::Cycle`],
+/// [`MechanismError::WrongCoordinateCount`], [`MechanismError::ZeroAxis`], …);
+/// [`MechanismError::StateLength`] if `coords` or `joint_forces` do not have one entry per
+/// coordinate, and
 /// [`MechanismError::SingularMassMatrix`] if a pivot is identically zero (a massless leaf).
 ///
 /// # Examples
