@@ -180,6 +180,7 @@ mod contact {
     mod run_loop;
     mod stick_slip;
     mod support;
+    mod system_checks;
     mod tippe_top;
 }
 /// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
