@@ -11,7 +11,6 @@
 //! lowering, evaluation and `diff`, not for `Arena::dt` (which treats abbreviations as
 //! constants).
 
-use super::spatial::{Inertia, Pair, V3};
 use crate::sym::{Arena, ExprId, IdMap, Node, SymbolKind};
 
 /// Binds expressions to symbols, each distinct expression once.
@@ -45,27 +44,8 @@ impl Binder {
         x
     }
 
-    pub(crate) fn bind3(&mut self, arena: &mut Arena, v: &V3) -> V3 {
+    pub(crate) fn bind3(&mut self, arena: &mut Arena, v: &[ExprId; 3]) -> [ExprId; 3] {
         v.map(|e| self.bind(arena, e))
-    }
-
-    pub(crate) fn pair(&mut self, arena: &mut Arena, p: &Pair) -> Pair {
-        Pair {
-            ang: self.bind3(arena, &p.ang),
-            lin: self.bind3(arena, &p.lin),
-        }
-    }
-
-    pub(crate) fn inertia(&mut self, arena: &mut Arena, i: &Inertia) -> Inertia {
-        let mut out = *i;
-        for (o, m) in [(&mut out.a, &i.a), (&mut out.b, &i.b), (&mut out.c, &i.c)] {
-            for (orow, mrow) in o.iter_mut().zip(m) {
-                for (oe, &me) in orow.iter_mut().zip(mrow) {
-                    *oe = self.bind(arena, me);
-                }
-            }
-        }
-        out
     }
 }
 

@@ -228,9 +228,9 @@ pub fn recursive_accelerations(
         let carried =
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_v);
         let v = carried.add(arena, &vj);
-        let v = binder.pair(arena, &v);
+        let v = v.bound(arena, &mut binder);
         let c = spatial::cross_motion(arena, &v, &vj);
-        let c = binder.pair(arena, &c);
+        let c = c.bound(arena, &mut binder);
         if needs_space {
             let parent_r = link.parent.and_then(|p| to_ground[p]);
             let r = match (parent_r, place.rotation.map(|t| t.matrix)) {
@@ -272,11 +272,11 @@ pub fn recursive_accelerations(
     let mut pivots = vec![arena.zero(); dof];
     for i in (0..n).rev() {
         let link = &links[i];
-        let ia = binder.inertia(arena, &art[i]);
-        let pa = binder.pair(arena, &bias_force[i]);
+        let ia = art[i].bound(arena, &mut binder);
+        let pa = bias_force[i].bound(arena, &mut binder);
         let s1 = subspace(arena, link, arena.one());
         let u = ia.apply(arena, &s1);
-        let u = binder.pair(arena, &u);
+        let u = u.bound(arena, &mut binder);
         let d = project(arena, link, &u);
         let d = binder.bind(arena, d);
         pivots[link.coordinate] = d;
@@ -295,16 +295,16 @@ pub fn recursive_accelerations(
                 ang: spatial::scale3(arena, d_inv, &u.ang),
                 lin: spatial::scale3(arena, d_inv, &u.lin),
             };
-            let w = binder.pair(arena, &w);
+            let w = w.bound(arena, &mut binder);
             let reduced = ia.minus_outer(arena, &w, &u);
-            let reduced = binder.inertia(arena, &reduced);
+            let reduced = reduced.bound(arena, &mut binder);
             let ic = reduced.apply(arena, &bias_accel[i]);
             let wu = Pair {
                 ang: spatial::scale3(arena, uu, &w.ang),
                 lin: spatial::scale3(arena, uu, &w.lin),
             };
             let pa_child = pa.add(arena, &ic).add(arena, &wu);
-            let pa_child = binder.pair(arena, &pa_child);
+            let pa_child = pa_child.bound(arena, &mut binder);
             let place = &places[i];
             let i_up = reduced.seen_from_parent(
                 arena,
@@ -346,7 +346,7 @@ pub fn recursive_accelerations(
         let carried =
             spatial::motion_to_child(arena, place.rotation.as_ref(), &place.origin, &parent_a);
         let a_prime = carried.add(arena, &bias_accel[i]);
-        let a_prime = binder.pair(arena, &a_prime);
+        let a_prime = a_prime.bound(arena, &mut binder);
         let x = match spatial::unit_axis(arena, &link.axis) {
             // S = e_k (of the angular or the linear part): U's entry there is D itself, so
             // (u − Uᵀa′)/D = (u − Σ_{other} U a′)/D − a′_k, and the bracket is the new
@@ -377,7 +377,7 @@ pub fn recursive_accelerations(
         qdd[link.coordinate] = x;
         let sx = subspace(arena, link, x);
         let a = a_prime.add(arena, &sx);
-        accel.push(binder.pair(arena, &a));
+        accel.push(a.bound(arena, &mut binder));
     }
     Ok(RecursiveForm {
         accelerations: qdd,

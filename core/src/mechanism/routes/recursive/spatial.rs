@@ -54,6 +54,14 @@ impl Pair {
             lin: add3(a, &self.lin, &o.lin),
         }
     }
+
+    /// Every entry bound to its symbol (see `bind.rs`), so the next link holds it as one atom.
+    pub(crate) fn bound(&self, a: &mut Arena, binder: &mut Binder) -> Pair {
+        Pair {
+            ang: binder.bind3(a, &self.ang),
+            lin: binder.bind3(a, &self.lin),
+        }
+    }
 }
 
 /// A symmetric spatial inertia `[[A, B], [Bᵀ, C]]` acting on motions (ω, v):
@@ -147,6 +155,23 @@ fn rotate(a: &mut Arena, r: &Mat3, m: &Mat3, symmetric: bool) -> Mat3 {
 }
 
 impl Inertia {
+    /// Every entry bound to its symbol (see `bind.rs`), so the next link holds it as one atom.
+    pub(crate) fn bound(&self, a: &mut Arena, binder: &mut Binder) -> Inertia {
+        let mut out = *self;
+        for (o, m) in [
+            (&mut out.a, &self.a),
+            (&mut out.b, &self.b),
+            (&mut out.c, &self.c),
+        ] {
+            for (orow, mrow) in o.iter_mut().zip(m) {
+                for (oe, &me) in orow.iter_mut().zip(mrow) {
+                    *oe = binder.bind(a, me);
+                }
+            }
+        }
+        out
+    }
+
     /// The rigid-body inertia about a frame's origin: mass m, first moment h = m c, rotational
     /// inertia I_O about the origin: `[[I_O, [h]×], [[h]×ᵀ, m 1]]`.
     pub(crate) fn rigid(a: &mut Arena, m: ExprId, h: &V3, inertia_origin: &Mat3) -> Inertia {
@@ -222,7 +247,7 @@ impl Inertia {
                 };
                 // Bound before the shift, so the shift's rational lengths multiply one atom
                 // per entry instead of being distributed over each entry's rotated terms.
-                let turned = binder.inertia(a, &turned);
+                let turned = turned.bound(a, binder);
                 (turned.a, turned.b, turned.c)
             }
             None => (self.a, self.b, self.c),
@@ -264,7 +289,7 @@ pub(crate) fn force_to_parent(
                 ang: mat3::mat_vec(a, &r.matrix, &x.ang),
                 lin: mat3::mat_vec(a, &r.matrix, &x.lin),
             };
-            let turned = binder.pair(a, &turned);
+            let turned = turned.bound(a, binder);
             (turned.ang, turned.lin)
         }
         None => (x.ang, x.lin),
