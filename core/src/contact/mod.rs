@@ -13,6 +13,12 @@
 //!   [`ContactRun`] a run that switches stick↔slip at events and stops at lift-off.
 //! - [`ContactQuantities`] gives a run's trajectory the energy, N, the slip, Jellett's λ and
 //!   the angular momentum about the contact point; [`ContactError`] is the scene's one error.
+//!
+//! The files, with the roles every scene gives them: `scene.rs` (the description, with the
+//! [`Phase`]s and the [`LawKind`]), `derivation.rs`, `interpreted.rs` (the model),
+//! `dynamics.rs` (the trait), `error.rs`; then `system.rs` (the ODE adapter), `phases.rs`
+//! (the run loop's hooks), `run.rs` (the run driver) with `outcome.rs` (what a run reports),
+//! `checks.rs` (the run-time checks) and `theory/` (closed forms to measure runs against).
 
 mod checks;
 mod derivation;

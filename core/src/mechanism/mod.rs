@@ -22,6 +22,16 @@
 //!   Whipple bicycle), [`MechanismScene::derive_rolling`] and [`rolling::RollingDynamics`].
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
+//!
+//! The files, with the roles every scene gives them: `scene.rs`, `validate.rs` and
+//! `rules.rs` (the description and its rules), `derivation.rs` (the route chosen) over
+//! `routes/` (one algorithm per file: `lagrangian.rs`, `factored.rs`, `kane.rs`,
+//! `recursive/`, and the numeric `aba.rs`), `interpreted.rs` (the model), `dynamics.rs` (the
+//! trait), `error.rs`; then `system.rs` (the ODE adapter), `checks.rs` (the run-time checks of
+//! values made of parameters), and the run drivers `charts/run.rs` (spherical joints through
+//! gimbal lock) and `rolling/run.rs`. No `theory/`: the closed forms the mechanism tests hold
+//! runs against live in the tests (pendulums), [`crate::exact`] (the free body) and
+//! [`crate::contact::theory`] (the rolling disk).
 
 pub mod charts;
 mod checks;
