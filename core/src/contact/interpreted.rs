@@ -7,8 +7,7 @@ use super::checks::ContactValues;
 use super::derivation::{ContactDerivation, ContactEquations};
 use super::dynamics::{ContactDynamics, ContactMomenta, ContactPoint, Reaction};
 use super::error::ContactError;
-use super::scene::{ContactLaw, Friction};
-use super::scene::{LawKind, Phase};
+use super::scene::{ContactLaw, Friction, LawKind, Phase};
 use super::state::STATE_LEN;
 #[cfg(doc)]
 use crate::codegen::BindingError;

@@ -7,6 +7,7 @@
 //! route.
 
 use super::error::MechanismError;
+use super::kinematics::MAX_LAGRANGIAN;
 use super::routes::factored::ldlt_solve;
 use super::routes::lagrangian::{largest_coupled_block, symbolic};
 use super::routes::recursive;
@@ -74,13 +75,6 @@ impl Route {
 /// properties, 98 s with all of them parameters) and lowers to 1.5–7× more operations, while
 /// at two the symbolic route is as fast and sometimes a few operations smaller.
 pub const MAX_SYMBOLIC: usize = 2;
-
-/// The most coordinates for which [`Route::Auto`] forms the Euler–Lagrange equations and
-/// compares the Lagrangian routes with the recursive one. Past it the expanded M and f grow
-/// faster than the chain (planar chains: 1,046 weighted operations factored against 454
-/// recursive at five coordinates, and five to eight times the derivation time per link),
-/// so Auto takes the recursive route without deriving them.
-pub const MAX_LAGRANGIAN: usize = 3;
 
 /// Everything derived from a mechanism.
 #[derive(Clone, Debug, PartialEq)]

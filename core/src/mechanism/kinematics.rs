@@ -10,7 +10,7 @@
 //! - ω_b = Jᵀ ω_p + ω_rel             (angular velocity in b's axes; ω_rel = vee(Jᵀ J̇))
 //! - v_c = d c_b / dt                 (the total time derivative, ground axes)
 //!
-//! Past [`super::MAX_LAGRANGIAN`] coordinates the velocities come from the same recursion
+//! Past [`MAX_LAGRANGIAN`] coordinates the velocities come from the same recursion
 //! instead of differentiating c_b: with d/dt (R x) = R (ω × x + ẋ) for ω in the axes R maps
 //! from,
 //!
@@ -37,8 +37,16 @@ use crate::rigid::elementary;
 use crate::sym::mat3::{Mat3, cross, mat_mul, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, SymError};
 
+/// The most coordinates for which [`Route::Auto`](super::Route::Auto) forms the Euler–Lagrange equations and
+/// compares the Lagrangian routes with the recursive one. Past it the expanded M and f grow
+/// faster than the chain (planar chains: 1,046 weighted operations factored against 454
+/// recursive at five coordinates, and five to eight times the derivation time per link),
+/// so Auto takes the recursive route without deriving them. It lives here because the
+/// kinematics are the first thing it sizes: expanded up to it, shared and unexpanded past it.
+pub const MAX_LAGRANGIAN: usize = 3;
+
 /// The motion of one body: every entry expanded to the engine's canonical form for
-/// mechanisms of at most [`super::MAX_LAGRANGIAN`] coordinates (the Lagrangian routes
+/// mechanisms of at most [`MAX_LAGRANGIAN`] coordinates (the Lagrangian routes
 /// differentiate and compare them), hash-consed but unexpanded past it (see
 /// [`MechanismScene::kinematics`]).
 #[derive(Clone, Debug, PartialEq)]
@@ -205,7 +213,7 @@ impl MechanismScene {
     /// topological `order` that [`MechanismScene::validate`] returns, with the body's
     /// coordinates taken from `coords` in [`MechanismScene::coordinate_names`] order.
     ///
-    /// Past [`super::MAX_LAGRANGIAN`] coordinates only the energy reads these (q̈ comes from
+    /// Past [`MAX_LAGRANGIAN`] coordinates only the energy reads these (q̈ comes from
     /// the recursive route), so they are left unexpanded: a body's expanded rotation holds
     /// about twice the terms of its parent's, which made the derive of a 15-link 3D chain
     /// take seconds and a 25-link one never finish, while the hash-consed forms grow with the
@@ -221,7 +229,7 @@ impl MechanismScene {
         coords: &Coordinates,
     ) -> Result<Vec<BodyKinematics>, MechanismError> {
         let offsets = self.coordinate_offsets();
-        let expanded = coords.q.len() <= super::MAX_LAGRANGIAN;
+        let expanded = coords.q.len() <= MAX_LAGRANGIAN;
         let expand3 = |arena: &mut Arena, v: [ExprId; 3]| {
             if expanded {
                 v.map(|e| arena.expand(e))

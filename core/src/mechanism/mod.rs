@@ -50,11 +50,11 @@ mod taylor;
 mod validate;
 
 pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
-pub use derivation::{MAX_LAGRANGIAN, MAX_SYMBOLIC, MechanismDerivation, Route};
+pub use derivation::{MAX_SYMBOLIC, MechanismDerivation, Route};
 pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use interpreted::MechanismModel;
-pub use kinematics::BodyKinematics;
+pub use kinematics::{BodyKinematics, MAX_LAGRANGIAN};
 pub use quantities::MechanismQuantities;
 pub use routes::aba::MechanismAba;
 pub use routes::recursive;

@@ -14,9 +14,8 @@
 //! [`Route::Symbolic`]: crate::mechanism::Route::Symbolic
 
 use crate::lagrange::{Coordinates, EquationsOfMotion, LagrangeError};
-use crate::mechanism::MAX_LAGRANGIAN;
 use crate::mechanism::error::MechanismError;
-use crate::mechanism::kinematics::BodyKinematics;
+use crate::mechanism::kinematics::{BodyKinematics, MAX_LAGRANGIAN};
 use crate::mechanism::scene::MechanismScene;
 use crate::sym::mat3::{dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, Rational};
