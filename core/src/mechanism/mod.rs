@@ -30,8 +30,8 @@
 //! trait), `error.rs`; then `system.rs` (the ODE adapter), `checks.rs` (the run-time checks of
 //! values made of parameters), and the run drivers `charts/run.rs` (spherical joints through
 //! gimbal lock) and `rolling/run.rs`. No `theory/`: the closed forms the mechanism tests hold
-//! runs against live in the tests (pendulums), [`crate::exact`] (the free body) and
-//! [`crate::contact::theory`] (the rolling disk).
+//! runs against live in the tests (pendulums), [`crate::exact`] (the free body) and the
+//! contact scene's theory (the rolling disk), which a scene does not name.
 
 pub mod charts;
 mod checks;
