@@ -44,6 +44,10 @@ pub struct FreeDerivation {
     /// For each driven rotor k, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ in principal axes: the inertia the body
     /// keeps once the first k + 1 wheels turn freely, which must stay positive definite.
     pub driven_inertia: Vec<Mat3>,
+    /// The principal moments about the centre of mass, every wheel counted as if locked: the
+    /// scale the driven rule measures rounding against (the scene's
+    /// [`FreeScene::moments`]).
+    pub moments: [ExprId; 3],
 }
 
 impl FreeDerivation {
@@ -181,6 +185,7 @@ impl FreeScene {
             rotor_rates,
             rotor_rhs,
             driven_inertia,
+            moments: self.moments,
         })
     }
 
