@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 
 use super::error::FreeError;
-use super::exact::FreeExact;
+use super::theory::FreeExact;
 use super::state::{FreeState, STATE_LEN};
 use crate::body::{Principal, RigidBody};
 

@@ -4,7 +4,7 @@
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 use super::error::TopError;
-use super::parameters::TopParameters;
+use super::checks::TopParameters;
 use super::theory::{HeavyTopTheory, derived_theory};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;
