@@ -18,6 +18,7 @@
 //! - [`FreeQuantities`] gives a run's trajectory the energy, power and the sizes of the
 //!   momenta per sample, named as a top's and a mechanism's.
 
+mod checks;
 mod derivation;
 mod dynamics;
 mod error;
@@ -41,7 +42,8 @@ pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};
 pub use run::{Flight, FreeFlight, Projection};
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
-pub use state::{FreeState, STATE_LEN, attitude_of, layout};
+pub use checks::attitude_of;
+pub use state::{FreeState, STATE_LEN, layout};
 pub use system::{FreeLie, FreeSystem};
 pub use theory::FreeExact;
 pub use wrench::{AppliedWrench, WrenchInputs};
