@@ -1,5 +1,12 @@
 //! Typed errors of the free-body scene: bad states, bad parameters, a derivation that cannot
 //! be formed, and the failures of the steppers and exact flows it runs on.
+//!
+//! The rotor refusals ([`FreeError::InvalidRotor`], [`FreeError::DrivenInertia`]) stay this
+//! enum's own variants, so a user's `match` names them as it names every other refusal of the
+//! scene; the rule behind them is written once in [`crate::rigid`]
+//! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
+//! the top. (Wrapping one shared rotor error instead would have made the match two levels
+//! deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 

@@ -34,6 +34,7 @@ mod theory;
 mod wrench;
 
 pub use crate::rigid::{DrivenRotor, Rotor};
+pub use checks::attitude_of;
 pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
@@ -42,7 +43,6 @@ pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};
 pub use run::{Flight, FreeFlight, Projection};
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
-pub use checks::attitude_of;
 pub use state::{FreeState, STATE_LEN, layout};
 pub use system::{FreeLie, FreeSystem};
 pub use theory::FreeExact;

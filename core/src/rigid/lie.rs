@@ -117,7 +117,12 @@ pub struct RigidTangent {
     pub domega: Vector3<f64>,
 }
 
-vector_tangent!(RigidTangent { dx, dv, rot, domega });
+vector_tangent!(RigidTangent {
+    dx,
+    dv,
+    rot,
+    domega
+});
 
 impl LieState for RigidState {
     type Tangent = RigidTangent;

@@ -3,8 +3,8 @@
 
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
-use super::error::TopError;
 use super::checks::{TopParameters, checked_accelerations};
+use super::error::TopError;
 use super::theory::{HeavyTopTheory, derived_theory};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;

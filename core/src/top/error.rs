@@ -1,5 +1,12 @@
 //! The top scene's one error at run time: a state a chart cannot represent, settings out of
 //! range, the chart-switching driver, and the interpreted model's parameters.
+//!
+//! The rotor refusals ([`TopError::InvalidRotor`], [`TopError::DrivenInertia`]) stay this
+//! enum's own variants, so a user's `match` names them as it names every other refusal of the
+//! scene; the rule behind them is written once in [`crate::rigid`]
+//! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
+//! the free body. (Wrapping one shared rotor error instead would have made the match two levels
+//! deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 

@@ -5,8 +5,8 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
-use super::derivation::TopDerivation;
 use super::checks::checked_accelerations;
+use super::derivation::TopDerivation;
 use super::error::TopError;
 #[cfg(doc)]
 use crate::codegen::BindingError;
