@@ -72,6 +72,7 @@ mod exact {
 /// The free-body scene.
 mod free {
     mod balance;
+    mod driven_rules;
     mod errors;
     mod exact;
     mod gyrostat;

@@ -7,7 +7,7 @@
 //! needs are ever lowered.
 
 use super::error::FreeError;
-use super::rotor::principal_momentum;
+use super::rotor::{fold, principal_momentum, reciprocal};
 use super::scene::{ForcePoint, FreeScene};
 use super::state::STATE_LEN;
 use crate::rigid::{quaternion_rate, rotation_of_quaternion};
@@ -44,6 +44,10 @@ pub struct FreeDerivation {
     /// For each driven rotor k, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ in principal axes: the inertia the body
     /// keeps once the first k + 1 wheels turn freely, which must stay positive definite.
     pub driven_inertia: Vec<Mat3>,
+    /// The principal moments about the centre of mass, every wheel counted as if locked: the
+    /// scale the driven rule measures rounding against (the scene's
+    /// [`FreeScene::moments`]).
+    pub moments: [ExprId; 3],
 }
 
 impl FreeDerivation {
@@ -181,6 +185,7 @@ impl FreeScene {
             rotor_rates,
             rotor_rhs,
             driven_inertia,
+            moments: self.moments,
         })
     }
 
@@ -343,34 +348,6 @@ fn sum_vectors(arena: &mut Arena, terms: &[[ExprId; 3]]) -> [ExprId; 3] {
         let parts: Vec<ExprId> = terms.iter().map(|t| t[k]).collect();
         arena.sum(&parts)
     })
-}
-
-/// A constant expression as one constant, so no arithmetic on constants is left for run
-/// time (exact when it folded to a rational, else its value rounded once).
-pub(super) fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
-    if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
-        return e;
-    }
-    let value = arena.eval(e, &[]);
-    arena.float(value).unwrap_or(e)
-}
-
-/// 1/e, folded when constant.
-///
-/// # Errors
-/// [`FreeError::ZeroInertia`] naming `quantity` when e is identically zero.
-pub(super) fn reciprocal(
-    arena: &mut Arena,
-    e: ExprId,
-    quantity: &'static str,
-) -> Result<ExprId, FreeError> {
-    if arena.is_zero(e).unwrap_or(false) {
-        return Err(FreeError::ZeroInertia { quantity });
-    }
-    let r = arena
-        .recip(e)
-        .map_err(|_| FreeError::ZeroInertia { quantity })?;
-    Ok(fold(arena, r))
 }
 
 #[cfg(test)]

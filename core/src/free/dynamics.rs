@@ -4,8 +4,8 @@
 use nalgebra::Vector3;
 
 use super::error::FreeError;
-use super::exact::FreeExact;
 use super::state::{FreeState, STATE_LEN};
+use super::theory::FreeExact;
 use crate::body::{Principal, RigidBody};
 
 /// The total force and torque acting on a free body at one state.

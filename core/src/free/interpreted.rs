@@ -46,7 +46,8 @@ pub struct FreeModel {
     energy: Program,
     power: Program,
     momenta: Program,
-    /// The entries of each I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, nine per driven rotor, row by row.
+    /// The principal moments, then the entries of each I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ, nine per driven
+    /// rotor, row by row.
     driven: Program,
     /// The state symbols: the 13 of the layout, then the driven rotors' rates.
     state: Vec<SymbolId>,
@@ -86,10 +87,9 @@ impl FreeModel {
             .copied()
             .collect();
         let driven: Vec<_> = d
-            .driven_inertia
+            .moments
             .iter()
-            .flatten()
-            .flatten()
+            .chain(d.driven_inertia.iter().flatten().flatten())
             .copied()
             .collect();
         let programs = [
@@ -141,7 +141,9 @@ impl FreeModel {
     }
 
     /// Checks the driven rotors for the current parameters: the body's inertia stays
-    /// positive definite as each wheel's axial moment is taken out.
+    /// positive definite beyond rounding as each wheel's axial moment is taken out, the rule
+    /// of [`crate::rigid::first_singular_driven`] (one criterion,
+    /// [`crate::rigid::singular_driven_step`], measured against the largest principal moment).
     ///
     /// # Errors
     /// [`FreeError::DrivenInertia`] naming the first rotor (its index in
@@ -149,14 +151,11 @@ impl FreeModel {
     pub fn check_driven(&self) -> Result<(), FreeError> {
         let mut out = vec![0.0; self.driven.outputs().len()];
         self.run(&self.driven, &[], &mut out);
-        for (rotor, a) in out.chunks_exact(9).enumerate() {
-            let m = nalgebra::Matrix3::from_row_slice(a);
-            let smallest = if m.iter().all(|v| v.is_finite()) {
-                m.symmetric_eigenvalues().min()
-            } else {
-                f64::NAN
-            };
-            if smallest.is_nan() || smallest <= 0.0 {
+        let (moments, steps) = out.split_at(3.min(out.len()));
+        let scale = moments.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (rotor, a) in steps.chunks_exact(9).enumerate() {
+            let step = nalgebra::Matrix3::from_row_slice(a);
+            if let Some(smallest) = crate::rigid::singular_driven_step(&step, scale) {
                 return Err(FreeError::DrivenInertia { rotor, smallest });
             }
         }

@@ -18,30 +18,32 @@
 //! - [`FreeQuantities`] gives a run's trajectory the energy, power and the sizes of the
 //!   momenta per sample, named as a top's and a mechanism's.
 
+mod checks;
 mod derivation;
 mod dynamics;
 mod error;
-mod exact;
-mod flight;
 mod frame;
 mod interpreted;
 mod quantities;
 mod rotor;
+mod run;
 mod scene;
 mod state;
 mod system;
+mod theory;
 mod wrench;
 
 pub use crate::rigid::{DrivenRotor, Rotor};
+pub use checks::attitude_of;
 pub use derivation::FreeDerivation;
 pub use dynamics::{FreeDynamics, Wrench};
 pub use error::FreeError;
-pub use exact::FreeExact;
-pub use flight::{Flight, FreeFlight, Projection};
 pub use frame::{CmFrame, cm_frame};
 pub use interpreted::FreeModel;
 pub use quantities::{FreeQuantities, STATE_NAMES};
+pub use run::{Flight, FreeFlight, Projection};
 pub use scene::{AppliedForce, ForcePoint, FreeScene};
-pub use state::{FreeState, STATE_LEN, attitude_of, layout};
+pub use state::{FreeState, STATE_LEN, layout};
 pub use system::{FreeLie, FreeSystem};
+pub use theory::FreeExact;
 pub use wrench::{AppliedWrench, WrenchInputs};

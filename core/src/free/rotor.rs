@@ -1,9 +1,10 @@
 //! A free body's rotors ([`Rotor`], shared with tops in `rigid`): their total relative
 //! momentum in principal axes, for the Volterra–Zhukovsky equations I ω̇ = τ − ω × (I ω + h),
 //! and the equations with driven rotors ([`crate::rigid::DrivenRotor`]), whose rates are
-//! state variables.
+//! state variables; with the two expression helpers these and `derivation.rs` use (a
+//! constant folded to one number, a checked reciprocal). `derivation.rs` takes names from
+//! here and this file none from it, so the two form no import circle.
 
-use super::derivation::{fold, reciprocal};
 use super::error::FreeError;
 use super::scene::FreeScene;
 use crate::rigid::{Rotor, total_momentum};
@@ -111,4 +112,32 @@ impl FreeScene {
         }
         Ok((omega_dot, rotor_rhs, steps))
     }
+}
+
+/// A constant expression as one constant, so no arithmetic on constants is left for run
+/// time (exact when it folded to a rational, else its value rounded once).
+pub(super) fn fold(arena: &mut Arena, e: ExprId) -> ExprId {
+    if arena.as_rational(e).is_some() || !arena.free_symbols(e).is_empty() {
+        return e;
+    }
+    let value = arena.eval(e, &[]);
+    arena.float(value).unwrap_or(e)
+}
+
+/// 1/e, folded when constant.
+///
+/// # Errors
+/// [`FreeError::ZeroInertia`] naming `quantity` when e is identically zero.
+pub(super) fn reciprocal(
+    arena: &mut Arena,
+    e: ExprId,
+    quantity: &'static str,
+) -> Result<ExprId, FreeError> {
+    if arena.is_zero(e).unwrap_or(false) {
+        return Err(FreeError::ZeroInertia { quantity });
+    }
+    let r = arena
+        .recip(e)
+        .map_err(|_| FreeError::ZeroInertia { quantity })?;
+    Ok(fold(arena, r))
 }

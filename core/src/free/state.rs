@@ -4,6 +4,7 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
+use super::checks::{attitude_of, finite};
 use super::error::FreeError;
 use crate::body::Principal;
 use crate::rigid::{BodyMomentum, RigidState};
@@ -216,36 +217,5 @@ impl From<RigidState> for FreeState {
             attitude: s.q,
             omega_principal: s.omega,
         }
-    }
-}
-
-/// The attitude of a state array, normalised.
-///
-/// # Errors
-/// [`FreeError::NonFinite`] for a NaN or infinite component, [`FreeError::ZeroQuaternion`]
-/// for a zero quaternion.
-pub fn attitude_of(y: &[f64; STATE_LEN]) -> Result<UnitQuaternion<f64>, FreeError> {
-    let at = layout::QUATERNION;
-    let q = [y[at], y[at + 1], y[at + 2], y[at + 3]];
-    finite("attitude quaternion", &q)?;
-    // Scaled by the largest component first, so the norm of a tiny quaternion does not
-    // underflow to zero.
-    let scale = q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if scale == 0.0 {
-        return Err(FreeError::ZeroQuaternion { quaternion: q });
-    }
-    let [w, i, j, k] = q.map(|v| v / scale);
-    Ok(UnitQuaternion::new_normalize(Quaternion::new(w, i, j, k)))
-}
-
-/// Rejects a part of a state that holds NaN or ±∞.
-fn finite(quantity: &'static str, values: &[f64]) -> Result<(), FreeError> {
-    if values.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(FreeError::NonFinite {
-            quantity,
-            values: values.to_vec(),
-        })
     }
 }

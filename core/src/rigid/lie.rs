@@ -46,6 +46,28 @@ pub trait LieSystem<Y: LieState> {
     fn check(&self) -> Result<(), OdeError>;
 }
 
+/// [`Tangent`] for an algebra element made of `Vector3` fields, one of them `rot` (the so(3)
+/// part): the algebra is ℝ³ᵏ, so zero and a·x + y act field by field. One definition for
+/// every state's tangent.
+macro_rules! vector_tangent {
+    ($tangent:ident { $($field:ident),+ }) => {
+        impl Tangent for $tangent {
+            fn zero() -> Self {
+                Self { $($field: Vector3::zeros()),+ }
+            }
+            fn axpy(&mut self, a: f64, x: &Self) {
+                $(self.$field += a * x.$field;)+
+            }
+            fn rot(&self) -> Vector3<f64> {
+                self.rot
+            }
+            fn set_rot(&mut self, r: Vector3<f64>) {
+                self.rot = r;
+            }
+        }
+    };
+}
+
 /// Algebra of [`Attitude`]: (body rotation, ω̇).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AttitudeTangent {
@@ -55,24 +77,7 @@ pub struct AttitudeTangent {
     pub domega: Vector3<f64>,
 }
 
-impl Tangent for AttitudeTangent {
-    fn zero() -> Self {
-        Self {
-            rot: Vector3::zeros(),
-            domega: Vector3::zeros(),
-        }
-    }
-    fn axpy(&mut self, a: f64, x: &Self) {
-        self.rot += a * x.rot;
-        self.domega += a * x.domega;
-    }
-    fn rot(&self) -> Vector3<f64> {
-        self.rot
-    }
-    fn set_rot(&mut self, r: Vector3<f64>) {
-        self.rot = r;
-    }
-}
+vector_tangent!(AttitudeTangent { rot, domega });
 
 impl LieState for Attitude {
     type Tangent = AttitudeTangent;
@@ -112,28 +117,12 @@ pub struct RigidTangent {
     pub domega: Vector3<f64>,
 }
 
-impl Tangent for RigidTangent {
-    fn zero() -> Self {
-        Self {
-            dx: Vector3::zeros(),
-            dv: Vector3::zeros(),
-            rot: Vector3::zeros(),
-            domega: Vector3::zeros(),
-        }
-    }
-    fn axpy(&mut self, a: f64, x: &Self) {
-        self.dx += a * x.dx;
-        self.dv += a * x.dv;
-        self.rot += a * x.rot;
-        self.domega += a * x.domega;
-    }
-    fn rot(&self) -> Vector3<f64> {
-        self.rot
-    }
-    fn set_rot(&mut self, r: Vector3<f64>) {
-        self.rot = r;
-    }
-}
+vector_tangent!(RigidTangent {
+    dx,
+    dv,
+    rot,
+    domega
+});
 
 impl LieState for RigidState {
     type Tangent = RigidTangent;

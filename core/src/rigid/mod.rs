@@ -30,7 +30,10 @@ pub use lie::{AttitudeTangent, LieState, LieSystem, RigidTangent, Tangent};
 pub use projection::normalise_quaternion;
 pub use quaternion_expr::{quaternion_rate, rotation_of_quaternion};
 pub use rkmk4::Rkmk4;
-pub use rotor::{DRIVEN_ROUNDING, DrivenRotor, Rotor, first_singular_driven, total_momentum};
+pub use rotor::{
+    DRIVEN_ROUNDING, DrivenRotor, Rotor, check_driven_inertia, first_singular_driven,
+    rotor_quantity, singular_driven_step, total_momentum,
+};
 pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,
     SplittingOrder,

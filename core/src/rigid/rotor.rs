@@ -155,13 +155,69 @@ pub fn first_singular_driven(
     for (k, (axis, j)) in rotors.iter().enumerate() {
         let axis = Vector3::from(*axis);
         a -= (*j / axis.norm_squared()) * axis * axis.transpose();
-        if !a.iter().all(|v| v.is_finite()) {
-            return Some((k, f64::NAN));
-        }
-        let smallest = a.symmetric_eigenvalues().min();
-        if smallest.is_nan() || smallest <= DRIVEN_ROUNDING * scale {
+        if let Some(smallest) = singular_driven_step(&a, scale) {
             return Some((k, smallest));
         }
     }
     None
+}
+
+/// The smallest eigenvalue of one step I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ of [`first_singular_driven`] if
+/// that step is not positive definite beyond rounding (the eigenvalue at most
+/// [`DRIVEN_ROUNDING`] times `scale`, the body's largest moment; NaN if an entry is not
+/// finite), `None` if it is: the one criterion, for steps computed here or by a scene's
+/// interpreted model.
+pub fn singular_driven_step(step: &Matrix3<f64>, scale: f64) -> Option<f64> {
+    if !step.iter().all(|v| v.is_finite()) {
+        return Some(f64::NAN);
+    }
+    let smallest = step.symmetric_eigenvalues().min();
+    (smallest.is_nan() || smallest <= DRIVEN_ROUNDING * scale).then_some(smallest)
+}
+
+/// The driven rotors' rule as both scenes state it: `inertia` (the whole body's, every wheel
+/// locked, about the centre of mass for a free body or the pivot for a top) stays positive
+/// definite beyond rounding as each wheel's axial moment is taken out,
+/// I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ ([`first_singular_driven`]). Each rotor is (its index among every
+/// rotor declared, its axis, its J); `refuse` builds the scene's error from the index of the
+/// first rotor at which the rule fails and that matrix's smallest eigenvalue, so
+/// `TopError::DrivenInertia` and `FreeError::DrivenInertia` come from this one rule.
+///
+/// ```
+/// use nalgebra::Matrix3;
+/// use precess_core::rigid::check_driven_inertia;
+///
+/// let i = Matrix3::from_diagonal(&[2.0, 2.0, 1.0].into());
+/// let refuse = |rotor: usize, smallest: f64| (rotor, smallest);
+/// assert_eq!(check_driven_inertia(&i, &[(4, [0.0, 0.0, 3.0], 0.5)], refuse), Ok(()));
+/// // The body's own moment about the wheel's axis, less 10⁻¹⁵ of it: singular to rounding.
+/// let (rotor, _) = check_driven_inertia(&i, &[(4, [0.0, 0.0, 1.0], 1.0 - 1e-15)], refuse).unwrap_err();
+/// assert_eq!(rotor, 4);
+/// ```
+///
+/// # Errors
+/// `refuse(rotor, smallest)` for the first rotor at which the rule fails (`smallest` NaN if an
+/// entry is not finite).
+pub fn check_driven_inertia<E>(
+    inertia: &Matrix3<f64>,
+    rotors: &[(usize, [f64; 3], f64)],
+    refuse: impl FnOnce(usize, f64) -> E,
+) -> Result<(), E> {
+    let wheels: Vec<([f64; 3], f64)> = rotors.iter().map(|&(_, a, j)| (a, j)).collect();
+    match first_singular_driven(inertia, &wheels) {
+        Some((k, smallest)) => Err(refuse(rotors.get(k).map_or(k, |r| r.0), smallest)),
+        None => Ok(()),
+    }
+}
+
+/// What an integrator's refusal of a rotor's numbers names (the quantity and its value, for
+/// [`crate::ode::OdeError::InvalidSystemParameter`]): a rotor with a finite positive axial
+/// moment `inertia` was refused for its axis (`rotor axis`, |axis|), any other for its inertia
+/// (`rotor inertia`, J).
+pub fn rotor_quantity(inertia: f64, axis_norm: f64) -> (String, f64) {
+    if inertia.is_finite() && inertia > 0.0 {
+        ("rotor axis".to_owned(), axis_norm)
+    } else {
+        ("rotor inertia".to_owned(), inertia)
+    }
 }

@@ -3,13 +3,13 @@
 
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
+use super::checks::{TopParameters, checked_accelerations};
 use super::error::TopError;
-use super::parameters::TopParameters;
 use super::theory::{HeavyTopTheory, derived_theory};
 use crate::body::RigidBody;
 use crate::codegen::Typeset;
 use crate::rigid::AngleSequence;
-use crate::rigid::{check_chart, rates_from_omega};
+use crate::rigid::rates_from_omega;
 
 /// A top about a fixed pivot, its equations derived at compile time by `#[top(...)]`.
 ///
@@ -373,18 +373,12 @@ pub trait TopDynamics<const N: usize = 6>: RigidBody {
         state: &[f64; N],
     ) -> Result<[f64; 3], TopError> {
         self.check_all()?;
-        check_state(state)?;
-        let q: [f64; 3] = std::array::from_fn(|k| state.get(k).copied().unwrap_or(f64::NAN));
-        check_chart(seq, &self.rate_matrix_in(seq, &q), &q)?;
-        let a = self.accelerations_unchecked_in(seq, t, state);
-        if a.iter().all(|v| v.is_finite()) {
-            Ok(a)
-        } else {
-            Err(TopError::NonFiniteResult {
-                quantity: "q̈",
-                values: a.to_vec(),
-            })
-        }
+        checked_accelerations(
+            seq,
+            state,
+            |q| self.rate_matrix_in(seq, q),
+            || self.accelerations_unchecked_in(seq, t, state),
+        )
     }
 
     /// The energy T + V in [`TopDynamics::SEQUENCE`]; NaN for a driven top (use
@@ -429,27 +423,4 @@ fn state_of<const N: usize>(q: &[f64; 3], q_dot: &[f64; 3]) -> Option<[f64; N]> 
         let s = angle_state(q, q_dot);
         std::array::from_fn(|k| s.get(k).copied().unwrap_or(f64::NAN))
     })
-}
-
-/// Checks that the angles, rates and (for a driven top) wheel rates of an angle-form state
-/// are finite.
-///
-/// # Errors
-/// [`TopError::NonFinite`] naming the angles q, the rates q̇ or the rotor rates Ω.
-pub(crate) fn check_state(state: &[f64]) -> Result<(), TopError> {
-    let (angles, rest) = state.split_at(state.len().min(3));
-    let (rates, rotors) = rest.split_at(rest.len().min(3));
-    for (quantity, part) in [
-        ("angles q", angles),
-        ("rates q̇", rates),
-        ("rotor rates Ω", rotors),
-    ] {
-        if !part.iter().all(|v| v.is_finite()) {
-            return Err(TopError::NonFinite {
-                quantity,
-                values: part.to_vec(),
-            });
-        }
-    }
-    Ok(())
 }

@@ -1,12 +1,19 @@
 //! The top scene's one error at run time: a state a chart cannot represent, settings out of
 //! range, the chart-switching driver, and the interpreted model's parameters.
+//!
+//! The rotor refusals ([`TopError::InvalidRotor`], [`TopError::DrivenInertia`]) stay this
+//! enum's own variants, so a user's `match` names them as it names every other refusal of the
+//! scene; the rule behind them is written once in [`crate::rigid`]
+//! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
+//! the free body. (Wrapping one shared rotor error instead would have made the match two levels
+//! deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::ChartError;
+use crate::rigid::{ChartError, rotor_quantity};
 
 use super::theory::TheoryError;
 
@@ -153,27 +160,6 @@ pub enum TopError {
 }
 
 impl TopError {
-    /// The driven rotors' rule: the top's inertia about the pivot stays positive definite as
-    /// each wheel's axial moment is taken out, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ; each rotor is (its index
-    /// among every rotor declared, its axis, its J). The derive's `check_parameters` calls it
-    /// for field values.
-    ///
-    /// # Errors
-    /// [`TopError::DrivenInertia`] naming the first rotor at which it fails.
-    pub fn check_driven_inertia(
-        inertia: &nalgebra::Matrix3<f64>,
-        rotors: &[(usize, [f64; 3], f64)],
-    ) -> Result<(), TopError> {
-        let wheels: Vec<([f64; 3], f64)> = rotors.iter().map(|&(_, a, j)| (a, j)).collect();
-        match crate::rigid::first_singular_driven(inertia, &wheels) {
-            Some((k, smallest)) => Err(TopError::DrivenInertia {
-                rotor: rotors.get(k).map_or(k, |r| r.0),
-                smallest,
-            }),
-            None => Ok(()),
-        }
-    }
-
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the setting or the body's quantity with
@@ -198,13 +184,7 @@ impl TopError {
             TopError::NegativeDamping { value } => ("damping".to_owned(), *value),
             TopError::InvalidRotor {
                 inertia, axis_norm, ..
-            } => {
-                if inertia.is_finite() && *inertia > 0.0 {
-                    ("rotor axis".to_owned(), *axis_norm)
-                } else {
-                    ("rotor inertia".to_owned(), *inertia)
-                }
-            }
+            } => rotor_quantity(*inertia, *axis_norm),
             TopError::DrivenInertia { smallest, .. } => ("rotor inertia".to_owned(), *smallest),
             _ => ("parameters".to_owned(), f64::NAN),
         };

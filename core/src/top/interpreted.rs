@@ -5,15 +5,14 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::angle_chart::AngleChart;
+use super::checks::checked_accelerations;
 use super::derivation::TopDerivation;
-use super::dynamics::check_state;
 use super::error::TopError;
 #[cfg(doc)]
 use crate::codegen::BindingError;
 use crate::codegen::{Bindings, Program};
 use crate::ode::System;
 use crate::rigid::AngleSequence;
-use crate::rigid::check_chart;
 use crate::sym::{Arena, SymbolId};
 
 /// A top's angle-form equations, lowered once and interpreted.
@@ -157,18 +156,12 @@ impl TopModel {
     /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate
     /// through it with [`super::ChartedTop`]; [`TopError::NonFiniteResult`] if q̈ overflows.
     pub fn accelerations(&self, state: &[f64; 6]) -> Result<[f64; 3], TopError> {
-        check_state(state)?;
-        let q = [state[0], state[1], state[2]];
-        check_chart(self.sequence, &self.rate_matrix_at(state), &q)?;
-        let a: [f64; 3] = self.run(&self.accel, 0.0, state);
-        if a.iter().all(|v| v.is_finite()) {
-            Ok(a)
-        } else {
-            Err(TopError::NonFiniteResult {
-                quantity: "q̈",
-                values: a.to_vec(),
-            })
-        }
+        checked_accelerations(
+            self.sequence,
+            state,
+            |_| self.rate_matrix_at(state),
+            || self.run(&self.accel, 0.0, state),
+        )
     }
 
     /// The energy T + V.

@@ -4,7 +4,8 @@
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
 
-use super::dynamics::{TopDynamics, angle_state, check_state};
+use super::checks::check_state;
+use super::dynamics::{TopDynamics, angle_state};
 use super::error::TopError;
 use crate::linalg::{LinalgError, LinearSystem, jacobian};
 use crate::rigid::check_chart;

@@ -23,7 +23,7 @@
 //!   momenta per sample.
 
 mod angle_chart;
-mod charted_top;
+mod checks;
 mod derivation;
 mod driven;
 mod dynamics;
@@ -32,15 +32,15 @@ mod eulerian;
 mod fast_top;
 mod interpreted;
 mod linear;
-mod parameters;
 mod quantities;
+mod run;
 mod scene;
+mod system;
 mod theory;
-mod top_chart;
 mod typeset;
 
 pub use angle_chart::AngleChart;
-pub use charted_top::{ChartedTop, Charts};
+pub use checks::TopParameters;
 pub use derivation::TopDerivation;
 pub use driven::DrivenDerivation;
 pub use dynamics::{TopDynamics, angle_state};
@@ -52,11 +52,11 @@ pub use linear::{
     LinearisationError, MOMENTUM_MAP_TOLERANCE, ReducedLinearisation, angle_linearisation,
     reduced_linearisation,
 };
-pub use parameters::TopParameters;
 pub use quantities::TopQuantities;
+pub use run::{ChartedTop, Charts};
 pub use scene::TopScene;
+pub use system::TopChart;
 pub use theory::{
     HeavyTopMotion, HeavyTopTheory, STEADY_TOLERANCE, SYMMETRY_TOLERANCE, SleepingTop,
     SteadyPrecession, TheoryError, TorqueFreeSymmetric,
 };
-pub use top_chart::TopChart;

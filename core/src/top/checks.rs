@@ -1,11 +1,14 @@
-//! The scalar and vector settings of a top's scene and the one rule function that judges
-//! them: the derive calls it on literal values while it expands (a compile error) and the
-//! generated [`super::TopDynamics::check_parameters`] on field values at run time (a
-//! [`TopError`]), so a value is accepted or refused alike whichever way it was written.
+//! A top's checks, in one place: the scalar and vector settings of its scene and the one rule
+//! function that judges them (the derive calls it on literal values while it expands, a
+//! compile error, and the generated [`super::TopDynamics::check_parameters`] on field values
+//! at run time, a [`TopError`], so a value is accepted or refused alike whichever way it was
+//! written); the driven rotors' rule; and the checks of a state and of the q̈ it gives, which
+//! the derived and the interpreted tops share.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::error::TopError;
+use crate::rigid::{AngleSequence, check_chart};
 
 /// The values of a top's declared torque settings (`None`: not declared), as
 /// `#[top(...)]` takes them from literals or fields.
@@ -82,6 +85,74 @@ fn finite(parameter: &'static str, value: f64) -> Result<(), TopError> {
         Ok(())
     } else {
         Err(TopError::NonFiniteParameter { parameter, value })
+    }
+}
+
+impl TopError {
+    /// The driven rotors' rule: the top's inertia about the pivot stays positive definite as
+    /// each wheel's axial moment is taken out, I − Σⱼ≤ₖ Jⱼ âⱼ âⱼᵀ; each rotor is (its index
+    /// among every rotor declared, its axis, its J). The derive's `check_parameters` calls it
+    /// for field values.
+    ///
+    /// # Errors
+    /// [`TopError::DrivenInertia`] naming the first rotor at which it fails.
+    pub fn check_driven_inertia(
+        inertia: &nalgebra::Matrix3<f64>,
+        rotors: &[(usize, [f64; 3], f64)],
+    ) -> Result<(), TopError> {
+        crate::rigid::check_driven_inertia(inertia, rotors, |rotor, smallest| {
+            TopError::DrivenInertia { rotor, smallest }
+        })
+    }
+}
+
+/// Checks that the angles, rates and (for a driven top) wheel rates of an angle-form state
+/// are finite.
+///
+/// # Errors
+/// [`TopError::NonFinite`] naming the angles q, the rates q̇ or the rotor rates Ω.
+pub(crate) fn check_state(state: &[f64]) -> Result<(), TopError> {
+    let (angles, rest) = state.split_at(state.len().min(3));
+    let (rates, rotors) = rest.split_at(rest.len().min(3));
+    for (quantity, part) in [
+        ("angles q", angles),
+        ("rates q̇", rates),
+        ("rotor rates Ω", rotors),
+    ] {
+        if !part.iter().all(|v| v.is_finite()) {
+            return Err(TopError::NonFinite {
+                quantity,
+                values: part.to_vec(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// q̈ as every checked top gives it, derived or interpreted: the state finite
+/// ([`check_state`]), the angles away from the chart's gimbal lock (`rate_matrix(q)` is
+/// B(q), judged by [`check_chart`]), then `accel()` finite.
+///
+/// # Errors
+/// [`TopError::NonFinite`], [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]),
+/// [`TopError::NonFiniteResult`] for a q̈ that holds NaN or ±∞.
+pub(crate) fn checked_accelerations(
+    seq: AngleSequence,
+    state: &[f64],
+    rate_matrix: impl FnOnce(&[f64; 3]) -> Matrix3<f64>,
+    accel: impl FnOnce() -> [f64; 3],
+) -> Result<[f64; 3], TopError> {
+    check_state(state)?;
+    let q: [f64; 3] = std::array::from_fn(|k| state.get(k).copied().unwrap_or(f64::NAN));
+    check_chart(seq, &rate_matrix(&q), &q)?;
+    let a = accel();
+    if a.iter().all(|v| v.is_finite()) {
+        Ok(a)
+    } else {
+        Err(TopError::NonFiniteResult {
+            quantity: "q̈",
+            values: a.to_vec(),
+        })
     }
 }
 
