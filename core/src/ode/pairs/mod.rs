@@ -1,15 +1,20 @@
 //! Embedded Runge–Kutta pairs: one trial step, its error norm and its dense output.
 //!
 //! Every method has one file in the same layout: its published tableau as private constants,
-//! then its [`EmbeddedPair`] implementation (`dopri5.rs`, `dop853.rs`, `vern9.rs`). The
-//! helpers every pair uses (stage evaluation, weighted sums, the error norm) live here.
+//! then its [`Tableau`] (`dopri5.rs`, `dop853.rs`, `vern9.rs`). One skeleton
+//! (`skeleton.rs`) makes every [`Tabulated`] pair an [`EmbeddedPair`]: the stages, the
+//! propagated solution, the error estimate and the dense output are the same steps over
+//! different data.
 
 mod dop853;
 mod dopri5;
+mod skeleton;
+mod tableau;
 mod vern9;
 
 pub use dop853::Dop853Pair;
 pub use dopri5::Dopri5Pair;
+pub use tableau::{DenseOutput, ErrorEstimate, Tableau, Tabulated};
 pub use vern9::Vern9Pair;
 
 use super::system::System;
@@ -45,6 +50,8 @@ pub struct ControllerGains {
 /// An explicit embedded Runge–Kutta pair with FSAL and a continuous extension.
 ///
 /// Implementations hold no data: the driver [`Adaptive`](super::Adaptive) owns the stages.
+/// Every [`Tabulated`] pair implements it through the one skeleton; a pair whose steps
+/// its [`Tableau`] cannot describe implements it by hand.
 pub trait EmbeddedPair {
     /// Human-readable name, e.g. `"DOP853"`.
     const NAME: &'static str;
@@ -96,75 +103,3 @@ pub trait EmbeddedPair {
     /// Evaluates the dense output at θ = (t − t₀)/h ∈ [0, 1].
     fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]);
 }
-
-/// `out = y + h Σ a_j k_j` over the row `a`.
-#[inline(always)]
-fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, out: &mut [f64; N]) {
-    out.copy_from_slice(&weighted(a, k));
-    for (o, yi) in out.iter_mut().zip(y) {
-        *o = yi + h * *o;
-    }
-}
-
-/// Σ_j w_j k_j, stage by stage (contiguous in N) and skipping the tableaux' many zeros.
-#[inline(always)]
-fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
-    let mut acc = [0.0; N];
-    for (wj, kj) in w.iter().zip(k) {
-        if *wj != 0.0 {
-            for (a, v) in acc.iter_mut().zip(kj) {
-                *a += wj * v;
-            }
-        }
-    }
-    acc
-}
-
-/// Evaluates stage `s` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose stage
-/// times are capped at `t_hi`.
-#[inline(always)]
-fn stage<S: System<N>, const N: usize>(
-    sys: &S,
-    (t, h, t_hi): (f64, f64, f64),
-    y: &[f64; N],
-    (a, c): (&[&[f64]], &[f64]),
-    s: usize,
-    k: &mut Stages<N>,
-) {
-    let mut ys = [0.0; N];
-    stage_state(y, h, a[s], k, &mut ys);
-    sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
-}
-
-/// The tolerance scale of one component, `atol + rtol·max(|y|, |y_new|)`.
-#[inline]
-fn error_scale(y: f64, y_new: f64, (rtol, atol): (f64, f64)) -> f64 {
-    atol + rtol * y.abs().max(y_new.abs())
-}
-
-/// The scaled local error norm of Hairer's codes, `√(mean((h eᵢ / skᵢ)²))` with skᵢ from
-/// [`error_scale`], for an error estimate `e` (per unit step).
-#[inline]
-fn rms_error<const N: usize>(
-    h: f64,
-    e: &[f64; N],
-    y: &[f64; N],
-    y_new: &[f64; N],
-    tol: (f64, f64),
-) -> f64 {
-    let mut acc = 0.0;
-    for i in 0..N {
-        let r = h * e[i] / error_scale(y[i], y_new[i], tol);
-        acc += r * r;
-    }
-    (acc / N as f64).sqrt()
-}
-
-/// Stages listed one by one with literal indices: once inlined, each row of the constant
-/// tableau is known, so its zeros and loop bounds fold away at compile time.
-macro_rules! stages {
-    ($sys:expr, $step:expr, $y:expr, $tab:expr, $k:expr; $($s:literal)+) => {
-        $( $crate::ode::pairs::stage($sys, $step, $y, $tab, $s, $k); )+
-    };
-}
-use stages;
