@@ -52,7 +52,7 @@ pub use hybrid::{
 };
 pub use pairs::{
     ControllerGains, DenseCoeffs, DenseOutput, Dop853Pair, Dopri5Pair, EmbeddedPair, ErrorEstimate,
-    Stages, Tableau, Tabulated, Vern9Pair,
+    Stages, Tableau, Vern9Pair,
 };
 pub(crate) use parameters::{binding_quantity, body_quantity, refused};
 pub use rk4::Rk4;

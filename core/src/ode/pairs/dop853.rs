@@ -7,8 +7,8 @@
 //! the source; the order conditions are checked numerically in the tests.
 #![allow(clippy::excessive_precision)]
 
-use super::ControllerGains;
-use super::tableau::{DenseOutput, ErrorEstimate, Tableau, Tabulated};
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes `c` of DOP853: 12 stages, the FSAL stage and three dense-output stages.
 const DOP853_C: [f64; 16] = [
@@ -183,21 +183,12 @@ const DOP853_A: [&[f64]; 16] = [
     ],
 ];
 
-/// Weights of DOP853's 3rd-order estimate, subtracted from `b`: over the 12 stages, non-zero
-/// on stages 1, 9 and 12 alone.
-const DOP853_BHH: [f64; 12] = [
-    0.244094488188976377952755905512,
-    0.0,
-    0.0,
-    0.0,
-    0.0,
-    0.0,
-    0.0,
-    0.0,
-    0.733846688281611857341361741547,
-    0.0,
-    0.0,
-    0.220588235294117647058823529412e-1,
+/// Weights of DOP853's 3rd-order estimate that are subtracted from `b`: the non-zero ones,
+/// on stages 1, 9 and 12, as (stage index, weight).
+const DOP853_BHH: [(usize, f64); 3] = [
+    (0, 0.244094488188976377952755905512),
+    (8, 0.733846688281611857341361741547),
+    (11, 0.220588235294117647058823529412e-1),
 ];
 
 /// Weights of DOP853's 5th-order error estimate over the 12 stages.
@@ -297,7 +288,7 @@ const DOP853_D: [[f64; 16]; 4] = [
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Dop853Pair;
 
-impl Tabulated for Dop853Pair {
+impl EmbeddedPair for Dop853Pair {
     const TABLEAU: Tableau = Tableau {
         name: "DOP853",
         order: 8,

@@ -4,8 +4,8 @@
 //! Rows of `A` hold the non-zero prefix of the strictly lower triangle; missing entries are
 //! zero. The order conditions are checked numerically in the tests (convergence order).
 
-use super::ControllerGains;
-use super::tableau::{DenseOutput, ErrorEstimate, Tableau, Tabulated};
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes `c` of Dormand–Prince 5(4).
 const DOPRI5_C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
@@ -65,7 +65,7 @@ const DOPRI5_D: [f64; 7] = [
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Dopri5Pair;
 
-impl Tabulated for Dopri5Pair {
+impl EmbeddedPair for Dopri5Pair {
     const TABLEAU: Tableau = Tableau {
         name: "DOPRI5",
         order: 5,

@@ -1,7 +1,6 @@
-//! The one stepping skeleton of the embedded pairs: any [`Tabulated`] pair is an
-//! [`EmbeddedPair`] through it. A trial step makes the stages, the propagated solution and
-//! the error estimate; an accepted step its stage at the new point; dense output its extra
-//! stages and coefficients.
+//! The steps of the one stepping skeleton, [`EmbeddedPair`](super::EmbeddedPair)'s provided
+//! methods: the stages, the weighted sums, the error estimates and the dense coefficients,
+//! each over a pair's constant [`Tableau`](super::Tableau) data.
 //!
 //! Everything a pair is made of is a constant, so once the skeleton is inlined each row of A,
 //! each stage's range test and each `match` on the estimate or the dense form is known at
@@ -10,99 +9,19 @@
 
 use std::ops::Range;
 
-use super::tableau::{DenseOutput, ErrorEstimate, Tabulated};
-use super::{ControllerGains, DenseCoeffs, EmbeddedPair, Stages};
+use super::tableau::ErrorEstimate;
+use super::{DenseCoeffs, Stages};
 use crate::ode::system::System;
-
-impl<T: Tabulated> EmbeddedPair for T {
-    const NAME: &'static str = T::TABLEAU.name;
-    const ORDER: u32 = T::TABLEAU.order;
-    const ERR_EXPONENT: f64 = T::TABLEAU.err_exponent;
-    const FSAL: usize = T::TABLEAU.fsal;
-    const GAINS: ControllerGains = T::TABLEAU.gains;
-
-    fn try_step<S: System<N>, const N: usize>(
-        sys: &S,
-        (t, h, t_hi): (f64, f64, f64),
-        y: &[f64; N],
-        k: &mut Stages<N>,
-        y_new: &mut [f64; N],
-        tol: (f64, f64),
-    ) -> (f64, u64) {
-        let (a, c) = (T::TABLEAU.a, T::TABLEAU.c);
-        stages(sys, (t, h, t_hi), y, (a, c), 1..T::TABLEAU.trial, k);
-        // The increment Σ bⱼ kⱼ, made once: the solution and the estimate both read it.
-        let increment = weighted(T::TABLEAU.b, k);
-        for ((yn, yi), s) in y_new.iter_mut().zip(y).zip(&increment) {
-            *yn = yi + h * s;
-        }
-        let mut evals = T::TABLEAU.trial as u64 - 1;
-        if T::TABLEAU.fsal_in_trial {
-            sys.rhs((t + h).min(t_hi), y_new, &mut k[T::TABLEAU.fsal]);
-            evals += 1;
-        }
-        let err = error_norm(T::TABLEAU.error, h, &increment, (y, y_new), k, tol);
-        (err, evals)
-    }
-
-    fn finish<S: System<N>, const N: usize>(
-        sys: &S,
-        t_new: f64,
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-    ) -> u64 {
-        if T::TABLEAU.fsal_in_trial {
-            return 0;
-        }
-        sys.rhs(t_new, y_new, &mut k[T::TABLEAU.fsal]);
-        1
-    }
-
-    fn dense_prepare<S: System<N>, const N: usize>(
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &[f64; N],
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-        d: &mut DenseCoeffs<N>,
-    ) -> u64 {
-        let (a, c, fsal) = (T::TABLEAU.a, T::TABLEAU.c, T::TABLEAU.fsal);
-        // The dense stages belong to the accepted step, which is over: no stop time caps them.
-        stages(sys, (t, h, f64::INFINITY), y, (a, c), fsal + 1..a.len(), k);
-        match T::TABLEAU.dense {
-            DenseOutput::Hermite(rows) => hermite(h, (y, y_new), k, fsal, rows, d),
-            DenseOutput::Polynomial(p) => polynomial(h, y, k, p, d),
-        }
-        (a.len() - fsal - 1) as u64
-    }
-
-    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
-        // Horner's scheme from the last coefficient down; Hermite's form alternates θ and
-        // 1 − θ as its factors (odd coefficients take 1 − θ).
-        let (len, alternating) = match T::TABLEAU.dense {
-            DenseOutput::Hermite(rows) => (4 + rows.len(), true),
-            DenseOutput::Polynomial(_) => (9, false),
-        };
-        let th1 = 1.0 - theta;
-        for (i, o) in out.iter_mut().enumerate() {
-            let mut acc = d[len - 1][i];
-            for j in (0..len - 1).rev() {
-                let f = if alternating && j % 2 == 1 {
-                    th1
-                } else {
-                    theta
-                };
-                acc = d[j][i] + f * acc;
-            }
-            *o = acc;
-        }
-    }
-}
 
 /// `out = y + h Σ a_j k_j` over the row `a`.
 #[inline(always)]
-fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, out: &mut [f64; N]) {
+pub(super) fn stage_state<const N: usize>(
+    y: &[f64; N],
+    h: f64,
+    a: &[f64],
+    k: &Stages<N>,
+    out: &mut [f64; N],
+) {
     out.copy_from_slice(&weighted(a, k));
     for (o, yi) in out.iter_mut().zip(y) {
         *o = yi + h * *o;
@@ -111,7 +30,7 @@ fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, o
 
 /// Σ_j w_j k_j, stage by stage (contiguous in N) and skipping the tableaux' many zeros.
 #[inline(always)]
-fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
+pub(super) fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
     let mut acc = [0.0; N];
     for (wj, kj) in w.iter().zip(k) {
         if *wj != 0.0 {
@@ -143,7 +62,7 @@ fn stage<S: System<N>, const N: usize>(
 /// loop): once inlined, the range is a constant, so the tests fold and each row of the
 /// constant tableau is known, with its zeros and loop bounds folded away at compile time.
 #[inline(always)]
-fn stages<S: System<N>, const N: usize>(
+pub(super) fn stages<S: System<N>, const N: usize>(
     sys: &S,
     step: (f64, f64, f64),
     y: &[f64; N],
@@ -186,7 +105,7 @@ fn rms_error<const N: usize>(
 /// The error norm of a trial step by the pair's [`ErrorEstimate`], `increment` its
 /// propagated Σⱼ bⱼ kⱼ.
 #[inline(always)]
-fn error_norm<const N: usize>(
+pub(super) fn error_norm<const N: usize>(
     estimate: ErrorEstimate,
     h: f64,
     increment: &[f64; N],
@@ -205,13 +124,9 @@ fn error_norm<const N: usize>(
             let e5v = weighted(e5, k);
             let (mut e3sum, mut e5sum) = (0.0, 0.0);
             for i in 0..N {
-                // b̂₃ has three non-zero weights: summed in place, component by component,
-                // over those alone and from −0 (which adds nothing, not even a sign).
-                let low = b3
-                    .iter()
-                    .zip(k)
-                    .filter(|(w, _)| **w != 0.0)
-                    .fold(-0.0, |acc, (w, kj)| acc + w * kj[i]);
+                // b̂₃'s few non-zero weights, summed in place from −0 (which adds nothing,
+                // not even a sign).
+                let low = b3.iter().fold(-0.0, |acc, &(j, w)| acc + w * k[j][i]);
                 let (e5, e3) = (e5v[i], increment[i] - low);
                 let sk = error_scale(ys.0[i], ys.1[i], tol);
                 e3sum += (e3 / sk) * (e3 / sk);
@@ -229,7 +144,7 @@ fn error_norm<const N: usize>(
 /// Hairer's dense coefficients: the cubic Hermite part from y, y_new, f₀ and f₁ = `k[fsal]`,
 /// then h Σⱼ Dᵣⱼ kⱼ for each published row Dᵣ.
 #[inline(always)]
-fn hermite<const N: usize>(
+pub(super) fn hermite<const N: usize>(
     h: f64,
     (y, y_new): (&[f64; N], &[f64; N]),
     k: &Stages<N>,
@@ -256,7 +171,7 @@ fn hermite<const N: usize>(
 
 /// The coefficients of a polynomial interpolant: d₀ = y, dₚ = h Σⱼ Pⱼ,ₚ₋₁ kⱼ.
 #[inline(always)]
-fn polynomial<const N: usize>(
+pub(super) fn polynomial<const N: usize>(
     h: f64,
     y: &[f64; N],
     k: &Stages<N>,

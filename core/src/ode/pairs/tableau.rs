@@ -1,6 +1,7 @@
 //! A pair as data: its published tableau, and which of the published error estimates and
-//! dense outputs it takes. The three pairs differ in nothing else, so one skeleton
-//! ([`super::skeleton`]) steps all of them, and a pair's file is its coefficients alone.
+//! dense outputs it takes. The three pairs differ in nothing else, so one skeleton (the
+//! provided methods of [`EmbeddedPair`](super::EmbeddedPair)) steps all of them, and a pair's
+//! file is its coefficients alone.
 
 use super::ControllerGains;
 
@@ -20,8 +21,9 @@ pub enum ErrorEstimate {
     Combined {
         /// The 5th-order estimate's weights E5.
         e5: &'static [f64],
-        /// The 3rd-order solution's weights b̂₃, subtracted from b.
-        b3: &'static [f64],
+        /// The 3rd-order solution's non-zero weights b̂₃ as (stage, weight), subtracted
+        /// from b.
+        b3: &'static [(usize, f64)],
     },
 }
 
@@ -69,18 +71,4 @@ pub struct Tableau {
     pub error: ErrorEstimate,
     /// The dense output.
     pub dense: DenseOutput,
-}
-
-/// A pair given by its published [`Tableau`]; every such type is an
-/// [`EmbeddedPair`](super::EmbeddedPair), stepped by the one skeleton.
-///
-/// ```
-/// use precess_core::ode::{Dopri5Pair, EmbeddedPair, Tabulated};
-/// // The skeleton takes the pair's name and order from its tableau.
-/// assert_eq!(Dopri5Pair::NAME, Dopri5Pair::TABLEAU.name);
-/// assert_eq!(Dopri5Pair::ORDER, 5);
-/// ```
-pub trait Tabulated {
-    /// The pair's data.
-    const TABLEAU: Tableau;
 }

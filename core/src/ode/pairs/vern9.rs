@@ -8,8 +8,8 @@
 //! four more evaluations per step, made only when dense output is asked for.
 #![allow(clippy::excessive_precision)]
 
-use super::ControllerGains;
-use super::tableau::{DenseOutput, ErrorEstimate, Tableau, Tabulated};
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes c of Verner 9(8): 16 stepping stages, f at the new point, and four stages of
 /// the 8th-order interpolant.
@@ -467,7 +467,7 @@ const VERN9_P: [[f64; 8]; 21] = [
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Vern9Pair;
 
-impl Tabulated for Vern9Pair {
+impl EmbeddedPair for Vern9Pair {
     const TABLEAU: Tableau = Tableau {
         name: "Vern9",
         order: 9,
