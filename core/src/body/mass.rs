@@ -25,6 +25,37 @@ pub struct MassProperties<V> {
     pub inertia_cm: Tensor<V>,
 }
 
+impl<V: Copy> MassProperties<V> {
+    /// Checks that every quantity has a finite value, `value` giving each entry's `f64`.
+    ///
+    /// # Errors
+    /// [`BodyError::Overflow`] for the first entry that is not finite, naming its quantity
+    /// (total mass, centre of mass, either inertia tensor) and carrying its value.
+    pub(crate) fn check_finite(&self, mut value: impl FnMut(V) -> f64) -> Result<(), BodyError> {
+        let quantities: [(&'static str, Vec<V>); 4] = [
+            ("total mass", vec![self.mass]),
+            ("centre of mass", self.center.to_vec()),
+            (
+                "inertia tensor about the centre of mass",
+                self.inertia_cm.iter().flatten().copied().collect(),
+            ),
+            (
+                "inertia tensor about the reference point",
+                self.inertia.iter().flatten().copied().collect(),
+            ),
+        ];
+        for (quantity, entries) in quantities {
+            for entry in entries {
+                let value = value(entry);
+                if !value.is_finite() {
+                    return Err(BodyError::Overflow { quantity, value });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 /// `m (|d|² E − d dᵀ)`: the inertia of a point mass `m` at `d`.
 pub fn point_tensor<A: Algebra>(al: &mut A, m: A::Value, d: [A::Value; 3]) -> Tensor<A::Value> {
     let sq = [al.square(d[0]), al.square(d[1]), al.square(d[2])];
@@ -44,29 +75,17 @@ pub fn point_tensor<A: Algebra>(al: &mut A, m: A::Value, d: [A::Value; 3]) -> Te
     t
 }
 
-fn tensor_add<A: Algebra>(
+/// `a ∘ b` entry by entry, `op` the algebra's `plus` or `minus`.
+fn tensor_zip<A: Algebra>(
     al: &mut A,
     a: &Tensor<A::Value>,
     b: &Tensor<A::Value>,
+    op: fn(&mut A, A::Value, A::Value) -> A::Value,
 ) -> Tensor<A::Value> {
     let mut out = *a;
     for i in 0..3 {
         for j in 0..3 {
-            out[i][j] = al.plus(a[i][j], b[i][j]);
-        }
-    }
-    out
-}
-
-fn tensor_sub<A: Algebra>(
-    al: &mut A,
-    a: &Tensor<A::Value>,
-    b: &Tensor<A::Value>,
-) -> Tensor<A::Value> {
-    let mut out = *a;
-    for i in 0..3 {
-        for j in 0..3 {
-            out[i][j] = al.minus(a[i][j], b[i][j]);
+            out[i][j] = op(al, a[i][j], b[i][j]);
         }
     }
     out
@@ -152,7 +171,7 @@ pub fn mass_properties<A: Algebra>(
                         // I_G = I_P − m (|g|² E − g gᵀ), g = G − P.
                         let g = vsub(al, part.at, pivot);
                         let shift = point_tensor(al, mass, g);
-                        (part.at, tensor_sub(al, &inertia, &shift))
+                        (part.at, tensor_zip(al, &inertia, &shift, A::minus))
                     }
                 }
             }
@@ -180,8 +199,8 @@ pub fn mass_properties<A: Algebra>(
         for r in &reduced {
             let dv = vsub(al, r.center, o);
             let shift = point_tensor(al, r.mass, dv);
-            let part = tensor_add(al, &r.inertia, &shift);
-            acc = tensor_add(al, &acc, &part);
+            let part = tensor_zip(al, &r.inertia, &shift, A::plus);
+            acc = tensor_zip(al, &acc, &part, A::plus);
         }
         acc
     };

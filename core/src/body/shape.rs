@@ -399,10 +399,7 @@ pub fn closed_form<A: Algebra>(
         } => {
             let mr2 = sq_times(al, mass, radius);
             let ml2 = sq_times(al, mass, length);
-            let a = al.scaled(1, 2, mr2);
-            let t1 = al.scaled(1, 4, mr2);
-            let t2 = al.scaled(1, 12, ml2);
-            (along(axis, al.plus(t1, t2), a), None)
+            (revolution(al, axis, mr2, ml2, CYLINDER), None)
         }
         Shape::Tube {
             mass,
@@ -415,10 +412,7 @@ pub fn closed_form<A: Algebra>(
             let b2 = sq_times(al, mass, outer);
             let ml2 = sq_times(al, mass, length);
             let s = al.plus(a2, b2);
-            let a = al.scaled(1, 2, s);
-            let t1 = al.scaled(1, 4, s);
-            let t2 = al.scaled(1, 12, ml2);
-            (along(axis, al.plus(t1, t2), a), None)
+            (revolution(al, axis, s, ml2, CYLINDER), None)
         }
         Shape::Disk { mass, radius, axis } => {
             let mr2 = sq_times(al, mass, radius);
@@ -442,14 +436,37 @@ pub fn closed_form<A: Algebra>(
         } => {
             let mr2 = sq_times(al, mass, radius);
             let mh2 = sq_times(al, mass, height);
-            let a = al.scaled(3, 10, mr2);
-            let t1 = al.scaled(3, 20, mr2);
-            let t2 = al.scaled(3, 80, mh2);
+            let diagonal = revolution(al, axis, mr2, mh2, CONE);
             let offset = al.scaled(if reversed { -1 } else { 1 }, 4, height);
-            (along(axis, al.plus(t1, t2), a), Some((axis, offset)))
+            (diagonal, Some((axis, offset)))
         }
         Shape::Explicit { .. } => return None,
     })
+}
+
+/// The fractions (α, β, γ) of a solid of revolution: I_axis = α S and
+/// I_transverse = β S + γ m L², with S its radial measure and L its length along the axis.
+type Fractions = [(i64, i64); 3];
+
+/// A solid cylinder (S = m r²) or a thick tube (S = m (a² + b²)): ½, ¼, 1/12.
+const CYLINDER: Fractions = [(1, 2), (1, 4), (1, 12)];
+
+/// A solid cone about its centre of mass (S = m r², L the height): 3/10, 3/20, 3/80.
+const CONE: Fractions = [(3, 10), (3, 20), (3, 80)];
+
+/// The diagonal of a solid of revolution along `axis` from its radial measure `s` and
+/// `ml2 = m L²` (see [`Fractions`]).
+fn revolution<A: Algebra>(
+    al: &mut A,
+    axis: Axis,
+    s: A::Value,
+    ml2: A::Value,
+    [(a_num, a_den), (t_num, t_den), (l_num, l_den)]: Fractions,
+) -> [A::Value; 3] {
+    let a = al.scaled(a_num, a_den, s);
+    let t1 = al.scaled(t_num, t_den, s);
+    let t2 = al.scaled(l_num, l_den, ml2);
+    along(axis, al.plus(t1, t2), a)
 }
 
 /// `m · x²`.

@@ -81,7 +81,8 @@ impl SymbolicBody {
             .chain([&props.mass])
             .all(|&e| arena.free_symbols(e).is_empty());
         let props = if constant {
-            finite_constants(arena, &props)?;
+            // Every mass property of a body of literals must be a finite `f64` once rounded.
+            props.check_finite(|e| arena.eval(e, &[]))?;
             constants_folded(arena, props)?
         } else {
             props
@@ -268,31 +269,6 @@ fn fold(arena: &mut Arena, e: ExprId, quantity: &'static str) -> Result<ExprId, 
     arena
         .float(value)
         .map_err(|_| BodyError::Overflow { quantity, value })
-}
-
-/// Every mass property of a body of literals must be a finite `f64` once rounded.
-fn finite_constants(arena: &Arena, props: &MassProperties<ExprId>) -> Result<(), BodyError> {
-    let quantities: [(&'static str, Vec<ExprId>); 4] = [
-        ("total mass", vec![props.mass]),
-        ("centre of mass", props.center.to_vec()),
-        (
-            "inertia tensor about the centre of mass",
-            props.inertia_cm.iter().flatten().copied().collect(),
-        ),
-        (
-            "inertia tensor about the reference point",
-            props.inertia.iter().flatten().copied().collect(),
-        ),
-    ];
-    for (quantity, exprs) in quantities {
-        for e in exprs {
-            let value = arena.eval(e, &[]);
-            if !value.is_finite() {
-                return Err(BodyError::Overflow { quantity, value });
-            }
-        }
-    }
-    Ok(())
 }
 
 /// The error for the zero moment about description axis `i`: with its values for a body of

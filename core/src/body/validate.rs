@@ -35,7 +35,9 @@ impl Description<f64> {
             finite_pivot(p)?;
         }
         let props = mass_properties(&mut Numeric, self)?;
-        finite_properties(&props)?;
+        // Finite values must give finite mass properties: anything else is an overflow of f64
+        // (say so, rather than let ∞ reach the moment checks and pass for a zero moment).
+        props.check_finite(|v| v)?;
         let principal = principal_frame(&matrix(&props.inertia));
         normal_moments(self, &principal)?;
         no_zero_moment(&principal)?;
@@ -263,29 +265,6 @@ pub fn check_inertia(
     }
     if moments[0] + moments[1] < moments[2] - tol {
         return Err(BodyError::TriangleInequality { part, moments });
-    }
-    Ok(())
-}
-
-/// Finite values must give finite mass properties: anything else is an overflow of f64
-/// (say so, rather than let ∞ reach the moment checks and pass for a zero moment).
-fn finite_properties(props: &MassProperties<f64>) -> Result<(), BodyError> {
-    let quantities: [(&'static str, Vec<f64>); 4] = [
-        ("total mass", vec![props.mass]),
-        ("centre of mass", props.center.to_vec()),
-        (
-            "inertia tensor about the centre of mass",
-            props.inertia_cm.iter().flatten().copied().collect(),
-        ),
-        (
-            "inertia tensor about the reference point",
-            props.inertia.iter().flatten().copied().collect(),
-        ),
-    ];
-    for (quantity, values) in quantities {
-        if let Some(&value) = values.iter().find(|v| !v.is_finite()) {
-            return Err(BodyError::Overflow { quantity, value });
-        }
     }
     Ok(())
 }

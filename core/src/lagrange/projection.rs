@@ -57,10 +57,7 @@ impl<const M: usize, const K: usize> Partition<M, K> {
         rate_terms: &SVector<f64, M>,
     ) -> Result<SVector<f64, M>, LagrangeError> {
         let (a_d, _) = self.blocks(a);
-        solve(a_d, -rate_terms).map_err(|determinant| LagrangeError::SingularAtState {
-            determinant,
-            scale: a_d.norm(),
-        })
+        solve(a_d, -rate_terms, Inverted::DependentBlock)
     }
 
     /// Every rate from the free speeds: solves A_D q̇_D = −A_I u.
@@ -86,10 +83,7 @@ impl<const M: usize, const K: usize> Partition<M, K> {
         u: &[f64; K],
     ) -> Result<Projected<N, K>, LagrangeError> {
         let (a_d, a_i) = self.blocks(a);
-        let c = solve(a_d, -a_i).map_err(|determinant| LagrangeError::SingularAtState {
-            determinant,
-            scale: a_d.norm(),
-        })?;
+        let c = solve(a_d, -a_i, Inverted::DependentBlock)?;
         let mut s = SMatrix::<f64, N, K>::zeros();
         for (j, &i) in self.independent.iter().enumerate() {
             s[(i, j)] = 1.0;
@@ -147,10 +141,7 @@ impl<const M: usize, const K: usize> Partition<M, K> {
         let s = &projected.projection;
         let k = s.transpose() * mass * s;
         let rhs = s.transpose() * (forcing - mass * drift);
-        let ud = solve(k, rhs).map_err(|determinant| LagrangeError::SingularReducedMass {
-            determinant,
-            scale: k.norm(),
-        })?;
+        let ud = solve(k, rhs, Inverted::ReducedMass)?;
         let mut out = [0.0; K];
         out.copy_from_slice(ud.as_slice());
         Ok(out)
@@ -172,11 +163,7 @@ impl<const M: usize, const K: usize> Partition<M, K> {
         let (a_d, _) = self.blocks(a);
         let residual = mass * accelerations - forcing;
         let r_d = SVector::<f64, M>::from_fn(|r, _| residual[self.dependent[r]]);
-        let lambda =
-            solve(a_d.transpose(), r_d).map_err(|determinant| LagrangeError::SingularAtState {
-                determinant,
-                scale: a_d.norm(),
-            })?;
+        let lambda = solve(a_d.transpose(), r_d, Inverted::DependentBlock)?;
         let mut out = [0.0; M];
         out.copy_from_slice(lambda.as_slice());
         Ok(out)
@@ -202,13 +189,41 @@ impl<const M: usize, const K: usize> Partition<M, K> {
     }
 }
 
+/// The matrix a projection solves with, which names the error when it is singular.
+#[derive(Clone, Copy)]
+enum Inverted {
+    /// A_D (or its transpose): [`LagrangeError::SingularAtState`].
+    DependentBlock,
+    /// K = Sᵀ M S: [`LagrangeError::SingularReducedMass`].
+    ReducedMass,
+}
+
+/// Solves `a x = b` (see [`eliminate`]); where `a` is singular, the error of the matrix it
+/// is, with the determinant and the Frobenius norm of `a` to judge it against.
+///
+/// # Errors
+/// [`LagrangeError::SingularAtState`] or [`LagrangeError::SingularReducedMass`], by `inverted`.
+fn solve<const R: usize, const C: usize>(
+    a: SMatrix<f64, R, R>,
+    b: SMatrix<f64, R, C>,
+    inverted: Inverted,
+) -> Result<SMatrix<f64, R, C>, LagrangeError> {
+    eliminate(a, b).map_err(|determinant| {
+        let scale = a.norm();
+        match inverted {
+            Inverted::DependentBlock => LagrangeError::SingularAtState { determinant, scale },
+            Inverted::ReducedMass => LagrangeError::SingularReducedMass { determinant, scale },
+        }
+    })
+}
+
 /// Solves `a x = b` by Gaussian elimination with partial pivoting, for any fixed size (the
 /// const-generic sizes rule out nalgebra's LU, whose bounds need typenum dimensions).
 ///
 /// # Errors
 /// The determinant of `a` (as far as the elimination got) when a pivot is zero or the
 /// solution is not finite.
-fn solve<const R: usize, const C: usize>(
+fn eliminate<const R: usize, const C: usize>(
     mut a: SMatrix<f64, R, R>,
     mut b: SMatrix<f64, R, C>,
 ) -> Result<SMatrix<f64, R, C>, f64> {

@@ -51,7 +51,8 @@ pub use hybrid::{
     Transition,
 };
 pub use pairs::{
-    ControllerGains, DenseCoeffs, Dop853Pair, Dopri5Pair, EmbeddedPair, Stages, Vern9Pair,
+    ControllerGains, DenseCoeffs, DenseOutput, Dop853Pair, Dopri5Pair, EmbeddedPair, ErrorEstimate,
+    Stages, Tableau, Vern9Pair,
 };
 pub(crate) use parameters::{binding_quantity, body_quantity, refused};
 pub use rk4::Rk4;

@@ -35,6 +35,7 @@ pub mod mat3;
 mod memo;
 mod node;
 mod rational;
+pub(crate) mod series;
 mod substitute;
 mod walk;
 mod zero;

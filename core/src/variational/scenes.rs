@@ -26,11 +26,21 @@ fn parameters(arena: &Arena, names: &[&str]) -> Result<Vec<ExprId>, VariationalE
         .collect()
 }
 
-/// State (q, q̇) and right-hand side (q̇, q̈) of a second-order system.
-fn second_order(q: &[ExprId], rates: &[ExprId], accel: &[ExprId]) -> (Vec<ExprId>, Vec<ExprId>) {
-    let state = q.iter().chain(rates).copied().collect();
-    let rhs = rates.iter().chain(accel).copied().collect();
-    (state, rhs)
+/// The variational equations of a second-order system q̈ = a(q, q̇), given as
+/// `(q, q̇, q̈)`: state (q, q̇), right-hand side (q̇, q̈).
+///
+/// # Errors
+/// [`VariationalError::UnknownParameter`], then as [`VariationalEquations::new`].
+fn second_order(
+    arena: &mut Arena,
+    (q, rates, accel): (&[ExprId], &[ExprId], &[ExprId]),
+    tangents: usize,
+    sensitivities: &[&str],
+) -> Result<VariationalEquations, VariationalError> {
+    let p = parameters(arena, sensitivities)?;
+    let state: Vec<ExprId> = q.iter().chain(rates).copied().collect();
+    let rhs: Vec<ExprId> = rates.iter().chain(accel).copied().collect();
+    VariationalEquations::new(arena, &state, &rhs, tangents, &p)
 }
 
 impl VariationalEquations {
@@ -46,10 +56,9 @@ impl VariationalEquations {
         tangents: usize,
         sensitivities: &[&str],
     ) -> Result<VariationalEquations, VariationalError> {
-        let p = parameters(arena, sensitivities)?;
         let c = top.coords();
-        let (state, rhs) = second_order(&c.q, &c.rates, &top.accelerations.accel);
-        VariationalEquations::new(arena, &state, &rhs, tangents, &p)
+        let system = (&c.q[..], &c.rates[..], &top.accelerations.accel[..]);
+        second_order(arena, system, tangents, sensitivities)
     }
 
     /// A mechanism: state `(q, q̇)` in [`crate::mechanism::MechanismScene::coordinate_names`]
@@ -66,10 +75,9 @@ impl VariationalEquations {
         tangents: usize,
         sensitivities: &[&str],
     ) -> Result<VariationalEquations, VariationalError> {
-        let p = parameters(arena, sensitivities)?;
         let c = &mechanism.coordinates;
-        let (state, rhs) = second_order(&c.q, &c.rates, &mechanism.accelerations);
-        VariationalEquations::new(arena, &state, &rhs, tangents, &p)
+        let system = (&c.q[..], &c.rates[..], &mechanism.accelerations[..]);
+        second_order(arena, system, tangents, sensitivities)
     }
 
     /// A top in Eulerian form, free of charts: state `(ω₁, ω₂, ω₃, R₁₁, R₁₂, …, R₃₃)` (body

@@ -7,10 +7,8 @@
 //! the source; the order conditions are checked numerically in the tests.
 #![allow(clippy::excessive_precision)]
 
-use super::{
-    ControllerGains, DenseCoeffs, EmbeddedPair, Stages, error_scale, stage_state, stages, weighted,
-};
-use crate::ode::system::System;
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes `c` of DOP853: 12 stages, the FSAL stage and three dense-output stages.
 const DOP853_C: [f64; 16] = [
@@ -185,11 +183,12 @@ const DOP853_A: [&[f64]; 16] = [
     ],
 ];
 
-/// Weights of DOP853's 3rd-order estimate that are subtracted from `b` (stages 1, 9, 12).
-const DOP853_BHH: [f64; 3] = [
-    0.244094488188976377952755905512,
-    0.733846688281611857341361741547,
-    0.220588235294117647058823529412e-1,
+/// Weights of DOP853's 3rd-order estimate that are subtracted from `b`: the non-zero ones,
+/// on stages 1, 9 and 12, as (stage index, weight).
+const DOP853_BHH: [(usize, f64); 3] = [
+    (0, 0.244094488188976377952755905512),
+    (8, 0.733846688281611857341361741547),
+    (11, 0.220588235294117647058823529412e-1),
 ];
 
 /// Weights of DOP853's 5th-order error estimate over the 12 stages.
@@ -290,91 +289,27 @@ const DOP853_D: [[f64; 16]; 4] = [
 pub struct Dop853Pair;
 
 impl EmbeddedPair for Dop853Pair {
-    const NAME: &'static str = "DOP853";
-    const ORDER: u32 = 8;
-    const ERR_EXPONENT: f64 = 0.125;
-    const GAINS: ControllerGains = ControllerGains {
-        beta: 0.0,
-        beta_weight: 0.2,
-        fac_min: 0.333,
-        fac_max: 6.0,
+    const TABLEAU: Tableau = Tableau {
+        name: "DOP853",
+        order: 8,
+        err_exponent: 0.125,
+        gains: ControllerGains {
+            beta: 0.0,
+            beta_weight: 0.2,
+            fac_min: 0.333,
+            fac_max: 6.0,
+        },
+        c: &DOP853_C,
+        a: &DOP853_A,
+        b: DOP853_A[12],
+        // Stages 1…11; f at the new point (stage 12) once the step is accepted.
+        trial: 12,
+        fsal: 12,
+        fsal_in_trial: false,
+        error: ErrorEstimate::Combined {
+            e5: &DOP853_E5,
+            b3: &DOP853_BHH,
+        },
+        dense: DenseOutput::Hermite(&[&DOP853_D[0], &DOP853_D[1], &DOP853_D[2], &DOP853_D[3]]),
     };
-    const FSAL: usize = 12;
-
-    fn try_step<S: System<N>, const N: usize>(
-        sys: &S,
-        (t, h, t_hi): (f64, f64, f64),
-        y: &[f64; N],
-        k: &mut Stages<N>,
-        y_new: &mut [f64; N],
-        (rtol, atol): (f64, f64),
-    ) -> (f64, u64) {
-        stages!(sys, (t, h, t_hi), y, (&DOP853_A, &DOP853_C), k; 1 2 3 4 5 6 7 8 9 10 11);
-        stage_state(y, h, DOP853_A[12], k, y_new);
-        // Hairer's estimate: err5² / √(err5² + 0.01 err3²) keeps the 8th-order step sizes
-        // from being driven by a pessimistic 5th-order estimate.
-        let (mut e3sum, mut e5sum) = (0.0, 0.0);
-        let e5v = weighted(&DOP853_E5, k);
-        let bk = weighted(DOP853_A[12], k);
-        for i in 0..N {
-            let e5 = e5v[i];
-            let e3 = bk[i]
-                - (DOP853_BHH[0] * k[0][i] + DOP853_BHH[1] * k[8][i] + DOP853_BHH[2] * k[11][i]);
-            let sk = error_scale(y[i], y_new[i], (rtol, atol));
-            e3sum += (e3 / sk) * (e3 / sk);
-            e5sum += (e5 / sk) * (e5 / sk);
-        }
-        let mut deno = e5sum + 0.01 * e3sum;
-        if deno <= 0.0 {
-            deno = 1.0;
-        }
-        (h.abs() * e5sum * (1.0 / (N as f64 * deno)).sqrt(), 11)
-    }
-
-    fn finish<S: System<N>, const N: usize>(
-        sys: &S,
-        t_new: f64,
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-    ) -> u64 {
-        sys.rhs(t_new, y_new, &mut k[12]);
-        1
-    }
-
-    fn dense_prepare<S: System<N>, const N: usize>(
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &[f64; N],
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-        d: &mut DenseCoeffs<N>,
-    ) -> u64 {
-        stages!(sys, (t, h, f64::INFINITY), y, (&DOP853_A, &DOP853_C), k; 13 14 15);
-        for i in 0..N {
-            let dy = y_new[i] - y[i];
-            let bspl = h * k[0][i] - dy;
-            d[0][i] = y[i];
-            d[1][i] = dy;
-            d[2][i] = bspl;
-            d[3][i] = dy - h * k[12][i] - bspl;
-            for (r, row) in DOP853_D.iter().enumerate() {
-                let mut s = 0.0;
-                for (j, dj) in row.iter().enumerate() {
-                    s += dj * k[j][i];
-                }
-                d[4 + r][i] = h * s;
-            }
-        }
-        3
-    }
-
-    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
-        let s = theta;
-        let s1 = 1.0 - s;
-        for (i, o) in out.iter_mut().enumerate() {
-            let conpar = d[4][i] + s * (d[5][i] + s1 * (d[6][i] + s * d[7][i]));
-            *o = d[0][i] + s * (d[1][i] + s1 * (d[2][i] + s * (d[3][i] + s1 * conpar)));
-        }
-    }
 }

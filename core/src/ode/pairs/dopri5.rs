@@ -4,10 +4,8 @@
 //! Rows of `A` hold the non-zero prefix of the strictly lower triangle; missing entries are
 //! zero. The order conditions are checked numerically in the tests (convergence order).
 
-use super::{
-    ControllerGains, DenseCoeffs, EmbeddedPair, Stages, rms_error, stage_state, stages, weighted,
-};
-use crate::ode::system::System;
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes `c` of Dormand–Prince 5(4).
 const DOPRI5_C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
@@ -68,70 +66,24 @@ const DOPRI5_D: [f64; 7] = [
 pub struct Dopri5Pair;
 
 impl EmbeddedPair for Dopri5Pair {
-    const NAME: &'static str = "DOPRI5";
-    const ORDER: u32 = 5;
-    const ERR_EXPONENT: f64 = 0.2;
-    const GAINS: ControllerGains = ControllerGains {
-        beta: 0.04,
-        beta_weight: 0.75,
-        fac_min: 0.2,
-        fac_max: 10.0,
+    const TABLEAU: Tableau = Tableau {
+        name: "DOPRI5",
+        order: 5,
+        err_exponent: 0.2,
+        gains: ControllerGains {
+            beta: 0.04,
+            beta_weight: 0.75,
+            fac_min: 0.2,
+            fac_max: 10.0,
+        },
+        c: &DOPRI5_C,
+        a: &DOPRI5_A,
+        b: DOPRI5_A[6],
+        // Stages 1…5, then f at the new point (stage 6), which the error estimate reads.
+        trial: 6,
+        fsal: 6,
+        fsal_in_trial: true,
+        error: ErrorEstimate::Weights(&DOPRI5_E),
+        dense: DenseOutput::Hermite(&[&DOPRI5_D]),
     };
-    const FSAL: usize = 6;
-
-    fn try_step<S: System<N>, const N: usize>(
-        sys: &S,
-        (t, h, t_hi): (f64, f64, f64),
-        y: &[f64; N],
-        k: &mut Stages<N>,
-        y_new: &mut [f64; N],
-        (rtol, atol): (f64, f64),
-    ) -> (f64, u64) {
-        stages!(sys, (t, h, t_hi), y, (&DOPRI5_A, &DOPRI5_C), k; 1 2 3 4 5);
-        stage_state(y, h, DOPRI5_A[6], k, y_new);
-        sys.rhs((t + h).min(t_hi), y_new, &mut k[6]);
-        let e = weighted(&DOPRI5_E, k);
-        (rms_error(h, &e, y, y_new, (rtol, atol)), 6)
-    }
-
-    fn finish<S: System<N>, const N: usize>(
-        _sys: &S,
-        _t_new: f64,
-        _y_new: &[f64; N],
-        _k: &mut Stages<N>,
-    ) -> u64 {
-        0
-    }
-
-    fn dense_prepare<S: System<N>, const N: usize>(
-        _sys: &S,
-        _t: f64,
-        h: f64,
-        y: &[f64; N],
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-        d: &mut DenseCoeffs<N>,
-    ) -> u64 {
-        for i in 0..N {
-            let dy = y_new[i] - y[i];
-            let bspl = h * k[0][i] - dy;
-            d[0][i] = y[i];
-            d[1][i] = dy;
-            d[2][i] = bspl;
-            d[3][i] = dy - h * k[6][i] - bspl;
-            let mut s = 0.0;
-            for (j, dj) in DOPRI5_D.iter().enumerate() {
-                s += dj * k[j][i];
-            }
-            d[4][i] = h * s;
-        }
-        0
-    }
-
-    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
-        let th1 = 1.0 - theta;
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = d[0][i] + theta * (d[1][i] + th1 * (d[2][i] + theta * (d[3][i] + th1 * d[4][i])));
-        }
-    }
 }

@@ -1,18 +1,24 @@
 //! Embedded Runge–Kutta pairs: one trial step, its error norm and its dense output.
 //!
 //! Every method has one file in the same layout: its published tableau as private constants,
-//! then its [`EmbeddedPair`] implementation (`dopri5.rs`, `dop853.rs`, `vern9.rs`). The
-//! helpers every pair uses (stage evaluation, weighted sums, the error norm) live here.
+//! then its [`Tableau`] (`dopri5.rs`, `dop853.rs`, `vern9.rs`). [`EmbeddedPair`]'s provided
+//! methods are the one skeleton that steps them all (its steps in `skeleton.rs`): the
+//! stages, the propagated solution, the error estimate and the dense output are the same
+//! steps over different data.
 
 mod dop853;
 mod dopri5;
+mod skeleton;
+mod tableau;
 mod vern9;
 
 pub use dop853::Dop853Pair;
 pub use dopri5::Dopri5Pair;
+pub use tableau::{DenseOutput, ErrorEstimate, Tableau};
 pub use vern9::Vern9Pair;
 
 use super::system::System;
+use skeleton::{error_norm, hermite, polynomial, stages, weighted};
 
 /// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages,
 /// Verner 9(8) 16, f at the new point and 4 interpolation stages).
@@ -44,20 +50,31 @@ pub struct ControllerGains {
 
 /// An explicit embedded Runge–Kutta pair with FSAL and a continuous extension.
 ///
-/// Implementations hold no data: the driver [`Adaptive`](super::Adaptive) owns the stages.
+/// A pair is its published [`Tableau`]: the provided methods are the one stepping skeleton
+/// every pair shares (the stages, the propagated solution, the error estimate, the dense
+/// output), and the constants below are read from the tableau. Implementations hold no data:
+/// the driver [`Adaptive`](super::Adaptive) owns the stages.
+///
+/// ```
+/// use precess_core::ode::{Dopri5Pair, EmbeddedPair};
+/// assert_eq!(Dopri5Pair::NAME, Dopri5Pair::TABLEAU.name);
+/// assert_eq!((Dopri5Pair::ORDER, Dopri5Pair::FSAL), (5, 6));
+/// ```
 pub trait EmbeddedPair {
+    /// The pair's published data.
+    const TABLEAU: Tableau;
     /// Human-readable name, e.g. `"DOP853"`.
-    const NAME: &'static str;
+    const NAME: &'static str = Self::TABLEAU.name;
     /// Order of the propagated solution.
-    const ORDER: u32;
+    const ORDER: u32 = Self::TABLEAU.order;
     /// Exponent of the error in the step-size controller, 1/(q + 1) for an estimate of order q
     /// (Hairer's choice: 1/5 for DOPRI5, 1/8 for DOP853).
-    const ERR_EXPONENT: f64;
+    const ERR_EXPONENT: f64 = Self::TABLEAU.err_exponent;
     /// Index of the stage that holds `f(t + h, y_new)` after an accepted step.
-    const FSAL: usize;
+    const FSAL: usize = Self::TABLEAU.fsal;
     /// The step-size controller's defaults for this pair, used where
     /// [`AdaptiveConfig`](super::AdaptiveConfig) leaves them `None`.
-    const GAINS: ControllerGains;
+    const GAINS: ControllerGains = Self::TABLEAU.gains;
 
     /// Computes stages 2… from `k[0] = f(t, y)`, writes the solution to `y_new` and returns
     /// the scaled RMS error norm (≤ 1 means accept) and the number of `f` evaluations.
@@ -66,12 +83,27 @@ pub trait EmbeddedPair {
     /// `step` is (t, h, t_hi), `tol` is (rtol, atol).
     fn try_step<S: System<N>, const N: usize>(
         sys: &S,
-        step: (f64, f64, f64),
+        (t, h, t_hi): (f64, f64, f64),
         y: &[f64; N],
         k: &mut Stages<N>,
         y_new: &mut [f64; N],
         tol: (f64, f64),
-    ) -> (f64, u64);
+    ) -> (f64, u64) {
+        let (a, c) = (Self::TABLEAU.a, Self::TABLEAU.c);
+        stages(sys, (t, h, t_hi), y, (a, c), 1..Self::TABLEAU.trial, k);
+        // The increment Σ bⱼ kⱼ, made once: the solution and the estimate both read it.
+        let increment = weighted(Self::TABLEAU.b, k);
+        for ((yn, yi), s) in y_new.iter_mut().zip(y).zip(&increment) {
+            *yn = yi + h * s;
+        }
+        let mut evals = Self::TABLEAU.trial as u64 - 1;
+        if Self::TABLEAU.fsal_in_trial {
+            sys.rhs((t + h).min(t_hi), y_new, &mut k[Self::TABLEAU.fsal]);
+            evals += 1;
+        }
+        let err = error_norm(Self::TABLEAU.error, h, &increment, (y, y_new), k, tol);
+        (err, evals)
+    }
 
     /// Makes `k[FSAL] = f(min(t + h, t_hi), y_new)` available after acceptance; returns
     /// evaluations.
@@ -80,7 +112,13 @@ pub trait EmbeddedPair {
         t_new: f64,
         y_new: &[f64; N],
         k: &mut Stages<N>,
-    ) -> u64;
+    ) -> u64 {
+        if Self::TABLEAU.fsal_in_trial {
+            return 0;
+        }
+        sys.rhs(t_new, y_new, &mut k[Self::TABLEAU.fsal]);
+        1
+    }
 
     /// Builds the dense-output coefficients of the accepted step `y → y_new`; returns evaluations.
     fn dense_prepare<S: System<N>, const N: usize>(
@@ -91,80 +129,37 @@ pub trait EmbeddedPair {
         y_new: &[f64; N],
         k: &mut Stages<N>,
         d: &mut DenseCoeffs<N>,
-    ) -> u64;
+    ) -> u64 {
+        let (a, c, fsal) = (Self::TABLEAU.a, Self::TABLEAU.c, Self::TABLEAU.fsal);
+        // The dense stages belong to the accepted step, which is over: no stop time caps them.
+        stages(sys, (t, h, f64::INFINITY), y, (a, c), fsal + 1..a.len(), k);
+        match Self::TABLEAU.dense {
+            DenseOutput::Hermite(rows) => hermite(h, (y, y_new), k, fsal, rows, d),
+            DenseOutput::Polynomial(p) => polynomial(h, y, k, p, d),
+        }
+        (a.len() - fsal - 1) as u64
+    }
 
     /// Evaluates the dense output at θ = (t − t₀)/h ∈ [0, 1].
-    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]);
-}
-
-/// `out = y + h Σ a_j k_j` over the row `a`.
-#[inline(always)]
-fn stage_state<const N: usize>(y: &[f64; N], h: f64, a: &[f64], k: &Stages<N>, out: &mut [f64; N]) {
-    out.copy_from_slice(&weighted(a, k));
-    for (o, yi) in out.iter_mut().zip(y) {
-        *o = yi + h * *o;
-    }
-}
-
-/// Σ_j w_j k_j, stage by stage (contiguous in N) and skipping the tableaux' many zeros.
-#[inline(always)]
-fn weighted<const N: usize>(w: &[f64], k: &Stages<N>) -> [f64; N] {
-    let mut acc = [0.0; N];
-    for (wj, kj) in w.iter().zip(k) {
-        if *wj != 0.0 {
-            for (a, v) in acc.iter_mut().zip(kj) {
-                *a += wj * v;
+    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
+        // Horner's scheme from the last coefficient down; Hermite's form alternates θ and
+        // 1 − θ as its factors (odd coefficients take 1 − θ).
+        let (len, alternating) = match Self::TABLEAU.dense {
+            DenseOutput::Hermite(rows) => (4 + rows.len(), true),
+            DenseOutput::Polynomial(_) => (9, false),
+        };
+        let th1 = 1.0 - theta;
+        for (i, o) in out.iter_mut().enumerate() {
+            let mut acc = d[len - 1][i];
+            for j in (0..len - 1).rev() {
+                let f = if alternating && j % 2 == 1 {
+                    th1
+                } else {
+                    theta
+                };
+                acc = d[j][i] + f * acc;
             }
+            *o = acc;
         }
     }
-    acc
 }
-
-/// Evaluates stage `s` of the tableau `(a, c)` into `k`, for a step `(t, h)` whose stage
-/// times are capped at `t_hi`.
-#[inline(always)]
-fn stage<S: System<N>, const N: usize>(
-    sys: &S,
-    (t, h, t_hi): (f64, f64, f64),
-    y: &[f64; N],
-    (a, c): (&[&[f64]], &[f64]),
-    s: usize,
-    k: &mut Stages<N>,
-) {
-    let mut ys = [0.0; N];
-    stage_state(y, h, a[s], k, &mut ys);
-    sys.rhs((t + c[s] * h).min(t_hi), &ys, &mut k[s]);
-}
-
-/// The tolerance scale of one component, `atol + rtol·max(|y|, |y_new|)`.
-#[inline]
-fn error_scale(y: f64, y_new: f64, (rtol, atol): (f64, f64)) -> f64 {
-    atol + rtol * y.abs().max(y_new.abs())
-}
-
-/// The scaled local error norm of Hairer's codes, `√(mean((h eᵢ / skᵢ)²))` with skᵢ from
-/// [`error_scale`], for an error estimate `e` (per unit step).
-#[inline]
-fn rms_error<const N: usize>(
-    h: f64,
-    e: &[f64; N],
-    y: &[f64; N],
-    y_new: &[f64; N],
-    tol: (f64, f64),
-) -> f64 {
-    let mut acc = 0.0;
-    for i in 0..N {
-        let r = h * e[i] / error_scale(y[i], y_new[i], tol);
-        acc += r * r;
-    }
-    (acc / N as f64).sqrt()
-}
-
-/// Stages listed one by one with literal indices: once inlined, each row of the constant
-/// tableau is known, so its zeros and loop bounds fold away at compile time.
-macro_rules! stages {
-    ($sys:expr, $step:expr, $y:expr, $tab:expr, $k:expr; $($s:literal)+) => {
-        $( $crate::ode::pairs::stage($sys, $step, $y, $tab, $s, $k); )+
-    };
-}
-use stages;

@@ -8,8 +8,8 @@
 //! four more evaluations per step, made only when dense output is asked for.
 #![allow(clippy::excessive_precision)]
 
-use super::{ControllerGains, DenseCoeffs, EmbeddedPair, Stages, rms_error, stages, weighted};
-use crate::ode::system::System;
+use super::tableau::{DenseOutput, ErrorEstimate, Tableau};
+use super::{ControllerGains, EmbeddedPair};
 
 /// Nodes c of Verner 9(8): 16 stepping stages, f at the new point, and four stages of
 /// the 8th-order interpolant.
@@ -468,74 +468,24 @@ const VERN9_P: [[f64; 8]; 21] = [
 pub struct Vern9Pair;
 
 impl EmbeddedPair for Vern9Pair {
-    const NAME: &'static str = "Vern9";
-    const ORDER: u32 = 9;
-    const ERR_EXPONENT: f64 = 1.0 / 9.0;
-    const GAINS: ControllerGains = ControllerGains {
-        beta: 0.04,
-        beta_weight: 0.75,
-        fac_min: 0.2,
-        fac_max: 10.0,
+    const TABLEAU: Tableau = Tableau {
+        name: "Vern9",
+        order: 9,
+        err_exponent: 1.0 / 9.0,
+        gains: ControllerGains {
+            beta: 0.04,
+            beta_weight: 0.75,
+            fac_min: 0.2,
+            fac_max: 10.0,
+        },
+        c: &VERN9_C,
+        a: &VERN9_A,
+        b: &VERN9_B,
+        // Stages 1…15; f at the new point (stage 16) once the step is accepted.
+        trial: 16,
+        fsal: 16,
+        fsal_in_trial: false,
+        error: ErrorEstimate::Difference(&VERN8_B),
+        dense: DenseOutput::Polynomial(&VERN9_P),
     };
-    const FSAL: usize = 16;
-
-    fn try_step<S: System<N>, const N: usize>(
-        sys: &S,
-        (t, h, t_hi): (f64, f64, f64),
-        y: &[f64; N],
-        k: &mut Stages<N>,
-        y_new: &mut [f64; N],
-        (rtol, atol): (f64, f64),
-    ) -> (f64, u64) {
-        stages!(sys, (t, h, t_hi), y, (&VERN9_A, &VERN9_C), k;
-            1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
-        let (s9, s8) = (weighted(&VERN9_B, k), weighted(&VERN8_B, k));
-        for i in 0..N {
-            y_new[i] = y[i] + h * s9[i];
-        }
-        let e: [f64; N] = std::array::from_fn(|i| s9[i] - s8[i]);
-        (rms_error(h, &e, y, y_new, (rtol, atol)), 15)
-    }
-
-    fn finish<S: System<N>, const N: usize>(
-        sys: &S,
-        t_new: f64,
-        y_new: &[f64; N],
-        k: &mut Stages<N>,
-    ) -> u64 {
-        sys.rhs(t_new, y_new, &mut k[16]);
-        1
-    }
-
-    fn dense_prepare<S: System<N>, const N: usize>(
-        sys: &S,
-        t: f64,
-        h: f64,
-        y: &[f64; N],
-        _y_new: &[f64; N],
-        k: &mut Stages<N>,
-        d: &mut DenseCoeffs<N>,
-    ) -> u64 {
-        // k[16] = f(t + h, y_new) from `finish`; four more stages for the interpolant.
-        stages!(sys, (t, h, f64::INFINITY), y, (&VERN9_A, &VERN9_C), k; 17 18 19 20);
-        d[0] = *y;
-        for p in 0..8 {
-            let w: [f64; 21] = core::array::from_fn(|i| VERN9_P[i][p]);
-            let c = weighted(&w, k);
-            for (di, ci) in d[p + 1].iter_mut().zip(c) {
-                *di = h * ci;
-            }
-        }
-        4
-    }
-
-    fn dense_eval<const N: usize>(d: &DenseCoeffs<N>, theta: f64, out: &mut [f64; N]) {
-        for (i, o) in out.iter_mut().enumerate() {
-            let mut acc = d[8][i];
-            for p in (1..8).rev() {
-                acc = d[p][i] + theta * acc;
-            }
-            *o = d[0][i] + theta * acc;
-        }
-    }
 }

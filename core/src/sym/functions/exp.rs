@@ -12,8 +12,8 @@ use quote::quote;
 
 use super::{DdTable, F64Table, Func, Primitive, SeriesCode, SeriesNames};
 use crate::exact::Dd;
+use crate::sym::series::dot_reversed;
 use crate::sym::{Arena, ExprId, SymError};
-use crate::taylor::kernels::dot_reversed;
 
 /// The exponential.
 pub(super) struct Exp;

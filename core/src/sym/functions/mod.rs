@@ -87,7 +87,7 @@ pub(crate) struct SeriesNames {
     pub arg_k: TokenStream,
     /// The `let` for the part of the sum that reads lower orders only.
     pub interior: Ident,
-    /// The path of [`crate::taylor::kernels::dot_reversed`].
+    /// The path of [`crate::sym::series::dot_reversed`] in the generated code.
     pub dot: TokenStream,
 }
 
