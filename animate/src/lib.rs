@@ -59,7 +59,7 @@ mod scenes;
 pub use animation::{Animation, PIVOT, Pose, TABLE};
 pub use error::AnimateError;
 pub use gltf::{Keyframes, Z_UP_TO_Y_UP};
-pub use page::{Camera, PageTable, page, write_page};
+pub use page::{BACKGROUND, Camera, PageTable, page, write_page};
 pub use parts::{Group, PALETTE, Rgb, body_size, complement, part_groups};
 pub use scenes::{Options, TRACE, TableState, contact, surface_groups, top};
 

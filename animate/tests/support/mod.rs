@@ -3,6 +3,8 @@
 
 #![allow(dead_code)] // each test file uses the part it needs
 
+pub mod browser;
+
 use gltf_json::Root;
 use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN};
 use precess::nalgebra::{UnitQuaternion, Vector3};
