@@ -94,7 +94,7 @@ pub fn parse(bytes: &[u8]) -> Result<Glb<'_>, AnimateError> {
         let body = bytes
             .get(at + 8..at + 8 + len)
             .ok_or(bad("a chunk runs past the end", at))?;
-        if len % 4 != 0 {
+        if !len.is_multiple_of(4) {
             return Err(bad("a chunk's length is not a multiple of 4", at));
         }
         chunks.push((kind, body));

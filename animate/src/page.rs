@@ -103,7 +103,8 @@ fn js(v: f64) -> String {
 
 /// The page: `animation` playing in a WebGL canvas (640 × 480) with play/pause, a time
 /// slider and an orbiting camera (`camera`, or [`Camera::fit`] when `None`), and `table`
-/// beside it (each row with its relative difference |measured − theory| / |theory|).
+/// beside it (each row with its relative difference |measured − theory| / |theory|, or the
+/// absolute one against a theory of zero).
 ///
 /// # Errors
 /// As [`Animation::to_glb`]; [`AnimateError::BadCamera`] for a camera with a non-finite
@@ -131,10 +132,16 @@ pub fn page(
     }
     let mut rows = String::new();
     for (name, measured, theory) in &table.rows {
-        let rel = (measured - theory).abs() / theory.abs();
+        // Against a theory of zero the difference is absolute, and said so.
+        let diff = (measured - theory).abs();
+        let rel = if *theory == 0.0 {
+            format!("{diff:.1e} (absolute)")
+        } else {
+            format!("{:.1e}", diff / theory.abs())
+        };
         let _ = writeln!(
             rows,
-            "<tr><td>{}</td><td>{measured:.6e}</td><td>{theory:.6e}</td><td>{rel:.1e}</td></tr>",
+            "<tr><td>{}</td><td>{measured:.6e}</td><td>{theory:.6e}</td><td>{rel}</td></tr>",
             escape(name)
         );
     }
@@ -145,7 +152,8 @@ pub fn page(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{title}</title>
 <style>
-body {{ font: 14px sans-serif; margin: 12px; display: flex; gap: 16px; flex-wrap: wrap; }}
+body {{ font: 13px sans-serif; margin: 12px; display: flex; gap: 16px; align-items: flex-start; }}
+#side {{ max-width: 520px; }}
 canvas {{ border: 1px solid #999; touch-action: none; cursor: grab; }}
 table {{ border-collapse: collapse; }} td, th {{ padding: 2px 8px; border-bottom: 1px solid #ddd; text-align: right; }}
 td:first-child, th:first-child {{ text-align: left; }} #probe {{ font-size: 10px; }}
@@ -154,7 +162,7 @@ td:first-child, th:first-child {{ text-align: left; }} #probe {{ font-size: 10px
 <div><canvas id="view" width="640" height="480"></canvas>
 <div><button id="play">play</button> <input id="slider" type="range" min="0" step="any" style="width: 420px">
 <div id="time"></div><div>drag to turn the camera, scroll to zoom</div></div></div>
-<div><h3>{title}</h3>
+<div id="side"><h3>{title}</h3>
 <table><caption>{caption}</caption>
 <tr><th>quantity</th><th>measured</th><th>theory</th><th>relative difference</th></tr>
 {rows}</table>

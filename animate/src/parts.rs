@@ -246,7 +246,8 @@ fn inertia_ellipsoid(
         frame.column_mut(2).neg_mut();
     }
     let trace = m.sum();
-    if !(trace > 0.0) {
+    // A NaN trace was refused above (the tensor is finite); a sum of moments ≤ 0 draws nothing.
+    if trace <= 0.0 {
         return Err("its inertia has no positive moment");
     }
     // A moment at the triangle inequality's edge gives a flat ellipsoid: drawn 1 % thick.
