@@ -15,7 +15,7 @@ use crate::parts::{Group, Rgb};
 /// for a body whose centre of mass c (description axes) is at X in space, position = X − R c.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pose {
-    /// Where the description frame's origin is, space axes [m].
+    /// Where the description frame's origin is, space axes (m).
     pub position: Vector3<f64>,
     /// The rotation from description to space axes.
     pub attitude: UnitQuaternion<f64>,
@@ -195,7 +195,7 @@ impl Animation {
         Ok(self.tracks.len() - 1)
     }
 
-    /// Adds the table: a square of half-width `half` [m] in the plane z = 0 about `centre`
+    /// Adds the table: a square of half-width `half` (m) in the plane z = 0 about `centre`
     /// (x, y), seen from above, 1 mm thick below the plane.
     pub fn add_table(&mut self, centre: [f64; 2], half: f64) {
         let slab = geometry::cuboid([2.0 * half, 2.0 * half, 1e-3])
@@ -211,7 +211,7 @@ impl Animation {
         });
     }
 
-    /// Adds the pivot: a dark sphere of `radius` [m] at `at` (space axes).
+    /// Adds the pivot: a dark sphere of `radius` (m) at `at` (space axes).
     pub fn add_pivot(&mut self, at: [f64; 3], radius: f64) {
         let halves = Halves::split(geometry::ellipsoid([radius; 3]), Split::Z);
         let ball = [halves.first, halves.second]

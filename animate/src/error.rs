@@ -72,7 +72,7 @@ pub enum AnimateError {
     BadCamera {
         /// The distance given.
         distance: f64,
-        /// The field of view given [degrees].
+        /// The field of view given (degrees).
         fovy: f64,
     },
     /// A trace has a non-finite point, or fewer than two points.

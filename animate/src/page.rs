@@ -23,15 +23,15 @@ pub const BACKGROUND: [f32; 3] = [0.93, 0.95, 0.98];
 /// (`?yaw=…&pitch=…&dist=…&tx=…&ty=…&tz=…`) overrides the values written into it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Camera {
-    /// The point looked at, space axes (z up) [m].
+    /// The point looked at, in metres, space axes (z up).
     pub target: [f64; 3],
-    /// The distance from it [m].
+    /// The distance from it (m).
     pub distance: f64,
-    /// The turn about the vertical [degrees].
+    /// The turn about the vertical (degrees).
     pub yaw: f64,
-    /// The elevation above the horizontal [degrees].
+    /// The elevation above the horizontal (degrees).
     pub pitch: f64,
-    /// The vertical field of view [degrees].
+    /// The vertical field of view (degrees).
     pub fovy: f64,
 }
 
@@ -212,4 +212,56 @@ pub fn write_page(
         path: path.to_path_buf(),
         source,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Animation, Pose, part_groups};
+    use precess_core::body::{Part, Shape};
+    use precess_core::nalgebra::UnitQuaternion;
+
+    fn ball() -> Animation {
+        let parts = [Part::new(
+            Shape::Sphere {
+                mass: 1.0,
+                radius: 0.1,
+            },
+            [0.0; 3],
+        )];
+        let groups = part_groups(&parts, None, 0.1).unwrap();
+        let pose = Pose {
+            position: Vector3::new(0.0, 0.0, 0.1),
+            attitude: UnitQuaternion::identity(),
+        };
+        let mut a = Animation::new();
+        a.add_body("ball", groups, [(0.0, pose), (1.0, pose)])
+            .unwrap();
+        a
+    }
+
+    #[test]
+    fn the_page_fetches_nothing_and_escapes_its_text() {
+        let table = PageTable {
+            caption: "<b>".into(),
+            rows: vec![("a & b".into(), 1.0, 0.0), ("c".into(), 1.5, 1.0)],
+        };
+        let html = page(&ball(), "x < y", &table, None).unwrap();
+        // No address of any kind (':' is not a base64 character), no external script or style.
+        for absent in ["://", " src=", " href=", "<link", "@import"] {
+            assert!(!html.contains(absent), "the page holds {absent:?}");
+        }
+        assert!(
+            html.contains("x &lt; y") && html.contains("&lt;b&gt;") && html.contains("a &amp; b")
+        );
+        assert!(html.contains("1.0e0 (absolute)") && html.contains("<td>5.0e-1</td>"));
+    }
+
+    #[test]
+    fn a_bad_camera_is_refused() {
+        let mut camera = Camera::fit(&ball());
+        camera.fovy = 180.0;
+        let err = page(&ball(), "", &PageTable::default(), Some(camera)).unwrap_err();
+        assert!(matches!(err, AnimateError::BadCamera { fovy, .. } if fovy == 180.0));
+    }
 }

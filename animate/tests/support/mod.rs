@@ -29,8 +29,9 @@ pub struct Tippe {
     pub viscous: f64,
 }
 
-/// The sphere's radius R and the offset αR of its centre above the centre of mass [m].
+/// The sphere's radius R [m].
 pub const RADIUS: f64 = 0.02;
+/// The offset αR of the sphere's centre above the centre of mass [m].
 pub const OFFSET: f64 = 0.3 * 0.02;
 
 /// The tippe top started 0.1 rad off upright at 140 rad/s, run to `t_end`, sampled every
