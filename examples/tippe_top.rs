@@ -18,15 +18,19 @@
 //! samples every 5 ms with the standard quantities (`ContactQuantities`), and the instant the
 //! axis passes the horizontal as an event located on the integrator's dense output.
 //!
-//! Run with `cargo run --release --example tippe_top`.
+//! It writes its figures and its animation (`tippe_top.glb`, and `tippe_top.html`, a page
+//! that plays it beside the table: `precess::animate`, docs/animation.md) to
+//! `target/precess-plots/`. Run with `cargo run --release --example tippe_top`.
 
 mod common;
 #[path = "common/tippe.rs"]
 mod tippe;
 
 use std::error::Error;
+use std::time::Instant;
 
 use common::{Axes, Series, Table, plot, plot_dir};
+use precess::animate;
 use precess::contact::{ContactDynamics, ContactQuantities, ContactRun, Phase, attitude_of};
 use precess::nalgebra::Vector3;
 use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
@@ -104,29 +108,34 @@ fn main() -> Result<(), Box<dyn Error>> {
         );
     }
     println!("  the axis passes the horizontal at t = {flip:.6} s (an event of the run)");
+    let rows = vec![
+        ("Jellett λ at 20 s (kg m³/s)", model.jellett(&last), lambda0),
+        ("max |λ/λ₀ − 1| over the run", worst, 0.0),
+        (
+            "final spin about the vertical (rad/s)",
+            w_space.z,
+            top.inverted_spin(lambda0),
+        ),
+        (
+            "final energy (J)",
+            model.energy(phase, &last),
+            top.inverted_energy(lambda0),
+        ),
+        (
+            "final height of the centre of mass (m)",
+            height,
+            r * (1.0 + alpha),
+        ),
+        (
+            "energy lost, fraction",
+            1.0 - model.energy(phase, &last) / e0,
+            1.0 - top.inverted_energy(lambda0) / e0,
+        ),
+    ];
     let mut table = Table::default();
-    table.row("Jellett λ at 20 s (kg m³/s)", model.jellett(&last), lambda0);
-    table.row("max |λ/λ₀ − 1| over the run", worst, 0.0);
-    table.row(
-        "final spin about the vertical (rad/s)",
-        w_space.z,
-        top.inverted_spin(lambda0),
-    );
-    table.row(
-        "final energy (J)",
-        model.energy(phase, &last),
-        top.inverted_energy(lambda0),
-    );
-    table.row(
-        "final height of the centre of mass (m)",
-        height,
-        r * (1.0 + alpha),
-    );
-    table.row(
-        "energy lost, fraction",
-        1.0 - model.energy(phase, &last) / e0,
-        1.0 - top.inverted_energy(lambda0) / e0,
-    );
+    for (quantity, measured, theory) in &rows {
+        table.row(*quantity, *measured, *theory);
+    }
     table.print("Inverted state against Jellett's integral (theory: contact::theory::TippeTop)");
 
     let f1 = precess::plot::trajectory(
@@ -151,5 +160,30 @@ fn main() -> Result<(), Box<dyn Error>> {
         ],
     )?;
     println!("\nfigures: {}, {}", f1.display(), f2.display());
+
+    // The run as an animation beside the figures: a .glb that any glTF viewer plays, and one
+    // page holding it, its viewer and the table above (open it in a browser).
+    let started = Instant::now();
+    let animation = animate::contact(&model, &out.trajectory, animate::Options::default())?;
+    let dir = plot_dir()?;
+    let (glb, page) = (dir.join("tippe_top.glb"), dir.join("tippe_top.html"));
+    animation.write_glb(&glb)?;
+    let caption = "Inverted state against Jellett's integral".to_string();
+    let rows = rows
+        .iter()
+        .map(|(q, m, t)| (q.to_string(), *m, *t))
+        .collect();
+    let table = animate::PageTable { caption, rows };
+    animate::write_page(&page, &animation, "Tippe top", &table, None)?;
+    let size = |p: &std::path::Path| std::fs::metadata(p).map_or(0, |m| m.len() / 1024);
+    println!(
+        "animation: {} ({} KiB), {} ({} KiB), {} keyframes, written in {:.0} ms",
+        glb.display(),
+        size(&glb),
+        page.display(),
+        size(&page),
+        out.trajectory.len(),
+        1e3 * started.elapsed().as_secs_f64()
+    );
     Ok(())
 }

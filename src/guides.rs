@@ -9,6 +9,11 @@
 #[doc = include_str!("../README.md")]
 pub struct Readme;
 
+/// docs/animation.md (the `animate` feature, which the tests' build turns on).
+#[doc = include_str!("../docs/animation.md")]
+#[cfg(feature = "animate")]
+pub struct Animation;
+
 /// docs/attributes.md.
 #[doc = include_str!("../docs/attributes.md")]
 pub struct Attributes;

@@ -48,6 +48,12 @@ pub use precess_core::*;
 #[cfg(feature = "plot")]
 pub use precess_plot as plot;
 
+/// A run as a 3D animation: a binary glTF (`.glb`) of the declared shapes keyframed from a
+/// trajectory, and a self-contained HTML page that plays it (the `animate` feature;
+/// `docs/animation.md`).
+#[cfg(feature = "animate")]
+pub use precess_animate as animate;
+
 /// An ODE written as equations, with its right-hand side and its Taylor recurrences
 /// generated at compile time (see `docs/taylor.md`).
 ///

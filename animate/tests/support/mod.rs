@@ -1,0 +1,100 @@
+//! What the animation tests share: the tippe top's run, a heavy top's precession, and a
+//! reader of a `.glb`'s accessors.
+
+#![allow(dead_code)] // each test file uses the part it needs
+
+pub mod browser;
+
+use gltf_json::Root;
+use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN};
+use precess::nalgebra::{UnitQuaternion, Vector3};
+use precess::ode::HybridState;
+use precess::ode::{AdaptiveConfig, Run, Trajectory};
+use precess::prelude::*;
+
+/// The tippe top of the `tippe_top` example: R = 2 cm, α = 0.3, M = 20 g, I₁ = 0.35 M R²,
+/// I₃ = 0.4 M R², viscous friction c.
+#[derive(RigidBody)]
+#[rigid(body(
+    mass = 0.02,
+    inertia = diag(0.35 * 0.02 * 0.02 * 0.02, 0.35 * 0.02 * 0.02 * 0.02, 0.4 * 0.02 * 0.02 * 0.02),
+))]
+#[contact(
+    surface = sphere(radius = 0.02, center = [0.0, 0.0, 0.3 * 0.02]),
+    law = sliding(viscous = viscous),
+    gravity = 9.81,
+)]
+pub struct Tippe {
+    /// The viscous friction coefficient c [kg/s].
+    pub viscous: f64,
+}
+
+/// The sphere's radius R [m].
+pub const RADIUS: f64 = 0.02;
+/// The offset αR of the sphere's centre above the centre of mass [m].
+pub const OFFSET: f64 = 0.3 * 0.02;
+
+/// The tippe top started 0.1 rad off upright at 140 rad/s, run to `t_end`, sampled every
+/// `every` s (the example's run: it has turned over by 8 s).
+pub fn tippe_run(
+    t_end: f64,
+    every: f64,
+) -> (Tippe, Trajectory<HybridState<Phase, [f64; STATE_LEN]>>) {
+    let model = Tippe { viscous: 0.1 };
+    let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.1);
+    let q = q.quaternion();
+    let mut y0 = [0.0; STATE_LEN];
+    y0[4..8].copy_from_slice(&[q.w, q.i, q.j, q.k]);
+    y0[10] = 140.0;
+    let mut cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
+    cfg.max_steps = 10_000_000;
+    let phase = model.law().first_phase();
+    let mut run = ContactRun::new(&model, phase, 0.0, y0, cfg).expect("a valid start");
+    let out = Run::new(&mut run, t_end)
+        .sample_every(every)
+        .integrate()
+        .expect("the run");
+    (model, out.trajectory)
+}
+
+/// A disk on a stem about a pivot, as the heavy top example.
+#[derive(RigidBody)]
+#[rigid(
+    disk(mass = 0.2, radius = 0.04, at = [0.0, 0.0, 0.05]),
+    cylinder(mass = 0.01, radius = 0.003, length = 0.08, at = [0.0, 0.0, 0.04]),
+    pivot = [0.0, 0.0, 0.0],
+)]
+#[top(gravity = 9.81)]
+pub struct Spinner;
+
+/// Euler angles (φ, θ, ψ) of a steady precession sampled every 10 ms over 2 s: φ = 3 t,
+/// θ = 0.4 + 0.1 sin 5t, ψ = 60 t (written down, not integrated: the test is of the
+/// animation, whose attitudes the angles fix).
+pub fn precession() -> Trajectory<[f64; 3]> {
+    let mut run = Trajectory::new(vec![]);
+    for k in 0..=200 {
+        let t = 0.01 * k as f64;
+        run.push(t, [3.0 * t, 0.4 + 0.1 * (5.0 * t).sin(), 60.0 * t], &[])
+            .expect("increasing times");
+    }
+    run
+}
+
+/// The f32 values of accessor `i`, checked against its buffer view and the buffer.
+pub fn floats(root: &Root, bin: &[u8], i: usize) -> Vec<f32> {
+    let a = &root.accessors[i];
+    let width = a.type_.unwrap().multiplicity();
+    let view = &root.buffer_views[a.buffer_view.unwrap().value()];
+    let start =
+        view.byte_offset.map_or(0, |o| o.0 as usize) + a.byte_offset.map_or(0, |o| o.0 as usize);
+    let len = a.count.0 as usize * width * 4;
+    assert!(
+        a.byte_offset.map_or(0, |o| o.0 as usize) + len <= view.byte_length.0 as usize,
+        "accessor {i} runs past its view"
+    );
+    assert_eq!(start % 4, 0, "accessor {i} is not aligned");
+    bin[start..start + len]
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect()
+}
