@@ -33,6 +33,17 @@ pub fn form() -> String {
     )
 }
 
+/// A rotor group as a message for an unknown key of the attribute lists it
+/// (`keys::unknown_key`'s `others`): its name, and its form with every key it takes.
+pub fn listed(driven: bool) -> (&'static [&'static str], String) {
+    let form = format!(
+        "a rotor `{}({})`",
+        keys::ROTOR,
+        allowed_keys(driven).join(", ")
+    );
+    (&[keys::ROTOR], form)
+}
+
 /// The keys a rotor takes where `driven` rotors are allowed (`#[free]`) or not (`#[top]`:
 /// no `torque`).
 pub fn allowed_keys(driven: bool) -> &'static [&'static str] {
@@ -77,15 +88,9 @@ pub fn check(
     let mut ok = true;
     for KeyValue { key, value } in kvs {
         let Some(at) = ROTOR_KEYS.iter().position(|&k| key == k) else {
-            ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` for `{}` in {within}: allowed keys are {}{}",
-                    keys::ROTOR,
-                    allowed_keys(driven).join(", "),
-                    keys::did_you_mean(&key.to_string(), allowed_keys(driven).iter().copied())
-                ),
-            );
+            let place = format!("for `{}` in {within}", keys::ROTOR);
+            let message = keys::unknown_key(key, &place, allowed_keys(driven), &[]);
+            ck.cx.error_spanned_by(key, message);
             ok = false;
             continue;
         };
@@ -172,7 +177,12 @@ pub fn check(
         return None;
     };
     let axis = ck.expecting(Dim::NONE, keys::AXIS, |ck| rotor_axis(ck, axis));
-    let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
+    // A wheel without inertia carries no momentum; a negative one is unphysical.
+    let what = format!("the rotor's `{}`", keys::INERTIA);
+    let why = Some("the wheel's moment of inertia about its axis, kg m^2");
+    let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| {
+        ck.positive(inertia, &what, why)
+    });
     if let Some(torque) = torque {
         let path = motor(ck, torque);
         return Some(Checked::Driven(Box::new(Driven {
@@ -234,26 +244,6 @@ fn rotor_axis(ck: &mut Checker, value: &Expr) -> Option<[ExprId; 3]> {
         return None;
     }
     Some(axis)
-}
-
-/// The axial moment, positive when a literal: a wheel without inertia carries no momentum,
-/// a negative one is unphysical.
-fn positive(ck: &mut Checker, value: &Expr) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v)
-        && (r.is_negative() || r.is_zero())
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!(
-                "the rotor's `{}` is {}: it must be positive (the wheel's moment of inertia about its axis, kg m^2)",
-                keys::INERTIA,
-                r.to_f64()
-            ),
-        );
-        return None;
-    }
-    Some(v)
 }
 
 /// Statements for `check_parameters`: each rotor's inertia positive and axis non-zero for the

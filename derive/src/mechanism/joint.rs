@@ -87,14 +87,9 @@ impl Checker<'_> {
                 continue;
             };
             if !allowed.iter().any(|k| key == k) {
-                self.cx.error_spanned_by(
-                    key,
-                    format!(
-                        "unknown key `{key}` for `{kind_name}`: allowed keys are {}{}",
-                        allowed.join(", "),
-                        keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                    ),
-                );
+                let place = format!("for `{kind_name}`");
+                let message = keys::unknown_key(key, &place, &allowed, &[]);
+                self.cx.error_spanned_by(key, message);
                 ok = false;
                 continue;
             }

@@ -195,25 +195,15 @@ pub fn check(
             _ if key == keys::ROTOR => ck
                 .cx
                 .error_spanned_by(key, crate::lang::rotor::written_as_setting()),
-            _ => ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}, a rotor {}({}), or the variational equations {}({}){}",
-                    keys::TOP,
-                    TOP_KEYS.join(", "),
-                    keys::ROTOR,
-                    crate::lang::rotor::allowed_keys(true).join(", "),
-                    super::variational::VARIATIONAL,
-                    crate::lang::variational::KEYS.join(", "),
-                    keys::did_you_mean(
-                        &key.to_string(),
-                        TOP_KEYS
-                            .iter()
-                            .copied()
-                            .chain([super::variational::VARIATIONAL])
-                    )
-                ),
-            ),
+            _ => {
+                let groups = [
+                    crate::lang::rotor::listed(true),
+                    crate::lang::variational::listed(),
+                ];
+                let place = format!("in {in_top}");
+                let message = keys::unknown_key(key, &place, TOP_KEYS, &groups);
+                ck.cx.error_spanned_by(key, message);
+            }
         }
     }
     // A motor is a user function too: its torque has no Taylor coefficients.
