@@ -12,7 +12,7 @@ use precess_core::contact::{
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::{Ident, LitStr};
+use syn::Ident;
 
 use super::check::ContactSettings;
 use crate::lang::ctxt::Ctxt;
@@ -287,22 +287,11 @@ fn check_parameters(
     let length_names = lengths.iter().map(|&(n, _)| n);
     let coefficient_names = coefficients.iter().map(|&(n, _)| n);
     let surface = surface_kind(scene.surface.kind());
-    // A field that is NaN or ±∞ would pass some rules unnoticed (an inertia entry cancelled
-    // in a sum): each is refused by name first.
-    let fields = parameters.fields().map(|f| {
-        let name = LitStr::new(&f.to_string(), f.span());
-        quote! {
-            if !self.#f.is_finite() {
-                return ::core::result::Result::Err(#p::ContactError::BadParameter {
-                    name: #name,
-                    value: self.#f,
-                    rule: "finite",
-                });
-            }
-        }
+    let fields = parameters.finite_checks(|name, value| {
+        quote!(#p::ContactError::BadParameter { name: #name, value: #value, rule: "finite" })
     });
     let check = quote!({
-        #(#fields)*
+        #fields
         #p::RigidBody::validate(self)?;
         #p::ContactDynamics::values(self).check()
     });

@@ -7,35 +7,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::DeriveInput;
 
-use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::syntax::Item;
-
-/// `rotor_k` for each `rotor(...)` group of the `#[free]` attributes that has a `torque` key,
-/// k counting every rotor group: the driven rotors' slot names, read from the syntax alone so
-/// they stand even when the values have errors (the errors are the real expansion's to tell).
-fn driven_names(input: &DeriveInput) -> Vec<String> {
-    let attrs: Vec<&syn::Attribute> = input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::FREE))
-        .collect();
-    let cx = Ctxt::new();
-    let parsed = super::attr::parse(&cx, &attrs);
-    let _ = cx.check();
-    parsed
-        .items
-        .iter()
-        .filter_map(|item| match item {
-            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
-            _ => None,
-        })
-        .enumerate()
-        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
-        .map(|(k, _)| format!("rotor_{k}"))
-        .collect()
-}
 
 /// A stub `impl FreeDynamics` for `input`, and its slot consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -43,7 +16,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
-    let driven = driven_names(input);
+    let driven = crate::lang::rotor::driven_names(input, keys::FREE, super::attr::parse);
     let slots = super::expand::slot_consts(ident, &driven);
     let n = precess_core::free::STATE_LEN + driven.len();
     // The trait's default N without driven rotors, as a user writes it.

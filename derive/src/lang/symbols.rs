@@ -10,7 +10,7 @@ use precess_core::codegen::{Emitted, Op, Program};
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
+use syn::{Ident, LitStr};
 
 use crate::lang::ctxt::Ctxt;
 
@@ -147,6 +147,28 @@ impl FieldParameters {
     /// The fields read, in the order first used.
     pub fn fields(&self) -> impl Iterator<Item = &Ident> + '_ {
         self.fields.iter().map(|(_, f)| f)
+    }
+
+    /// Statements refusing each field read that is NaN or ±∞, by name, before any rule reads
+    /// it (a NaN would pass some rules unnoticed: an inertia entry cancelled in a sum):
+    /// `error(name, value)` is the scene's error, an expression, for the field `name` (a
+    /// string literal) of value `value`.
+    pub fn finite_checks(
+        &self,
+        error: impl Fn(&LitStr, &TokenStream) -> TokenStream,
+    ) -> TokenStream {
+        self.fields()
+            .map(|f| {
+                let name = LitStr::new(&f.to_string(), f.span());
+                let value = quote!(self.#f);
+                let error = error(&name, &value);
+                quote! {
+                    if !#value.is_finite() {
+                        return ::core::result::Result::Err(#error);
+                    }
+                }
+            })
+            .collect()
     }
 
     /// The map reading each field as `self.field`.

@@ -326,7 +326,7 @@ fn taylor_system(
     let (state, rhs) = derivation.first_order_system();
     let symbols = parameters.tokens();
     let (p, n) = (Private, state.len() / 2);
-    crate::lang::taylor::expand_checked(
+    crate::lang::taylor::expand(
         cx,
         ident,
         arena,
@@ -335,7 +335,7 @@ fn taylor_system(
         &rhs,
         TokenStream::new(),
         order,
-        quote!(#p::MechanismDynamics::<#n>::check_parameters(self)
-            .map_err(#p::MechanismError::into_ode_error)),
+        Some(quote!(#p::MechanismDynamics::<#n>::check_parameters(self)
+            .map_err(#p::MechanismError::into_ode_error))),
     )
 }

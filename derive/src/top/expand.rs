@@ -18,6 +18,12 @@ use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::rigid::check::CheckedBody;
 
+/// Where a top's driven-rotor rule reads its inertia: about the pivot.
+const ABOUT: crate::lang::rotor::InertiaAbout<'static> = crate::lang::rotor::InertiaAbout {
+    body: "top",
+    point: "the pivot",
+};
+
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
 /// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
 fn scene(arena: &mut Arena, checked: &CheckedBody, settings: &TopSettings) -> TopScene {
@@ -45,19 +51,19 @@ pub(super) fn sequence_tokens(s: AngleSequence) -> TokenStream {
     }
 }
 
-/// The arms of the chart-dispatched methods, one per angle sequence.
+/// The arms of the chart-dispatched methods, one per angle sequence: a top's with or without
+/// motors (`driven.rs` adds its `rhs_in` beside them).
 #[derive(Default)]
-struct ChartArms {
-    accel: Vec<TokenStream>,
-    rotation: Vec<TokenStream>,
-    rate_matrix: Vec<TokenStream>,
-    energy: Vec<TokenStream>,
+pub(super) struct ChartArms {
+    pub(super) accel: Vec<TokenStream>,
+    pub(super) rotation: Vec<TokenStream>,
+    pub(super) rate_matrix: Vec<TokenStream>,
+    pub(super) energy: Vec<TokenStream>,
 }
 
 impl ChartArms {
     /// Adds the arms of the chart `top` was derived in.
     fn push(&mut self, low: &Lowering, arena: &mut Arena, top: &TopDerivation, user: &UserCall) {
-        let p = Private;
         let c = top.coords().clone();
         let seq_t = sequence_tokens(top.sequence);
         let state: Vec<(ExprId, TokenStream)> = (0..3)
@@ -66,23 +72,23 @@ impl ChartArms {
                 [(c.q[k], quote!(state[#k])), (c.rates[k], quote!(state[#j]))]
             })
             .collect();
-        // The user torque is called with R and ω computed by the chart's own methods.
-        let call = user.call(
-            quote! {
-                let __q = [state[0], state[1], state[2]];
-                let __r = #p::TopDynamics::rotation_in(self, #seq_t, &__q);
-                let __w = #p::TopDynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
-            },
-            quote!(&__w),
-        );
+        let call = user.call_in_chart(&seq_t, &quote!(#Private::TopDynamics));
         let Emitted { lets, outputs } = low.lower_reading(arena, &top.accelerations.accel, &state);
         self.accel
             .push(quote!(#seq_t => { #call #lets [#(#outputs),*] }));
         let energy = top.energy(arena);
         let Emitted { lets, outputs } = low.lower_reading(arena, &[energy], &state);
         self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
-        // R and B read the angles from `q` rather than `state`.
-        let angles: Vec<(ExprId, TokenStream)> = (0..3).map(|k| (c.q[k], quote!(q[#k]))).collect();
+        self.push_frames(low, arena, top);
+    }
+
+    /// Adds the arms of R and B of the chart `top` was derived in, which read the angles
+    /// from `q` rather than `state`.
+    pub(super) fn push_frames(&mut self, low: &Lowering, arena: &mut Arena, top: &TopDerivation) {
+        let p = Private;
+        let seq_t = sequence_tokens(top.sequence);
+        let angles: Vec<(ExprId, TokenStream)> =
+            (0..3).map(|k| (top.coords().q[k], quote!(q[#k]))).collect();
         let Emitted { lets, outputs } =
             low.lower_reading(arena, top.rotation.as_flattened(), &angles);
         self.rotation
@@ -91,6 +97,38 @@ impl ChartArms {
             low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
         self.rate_matrix
             .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+    }
+
+    /// The chart-dispatched methods over a state of `n` slots.
+    pub(super) fn methods(&self, n: usize) -> TokenStream {
+        let p = Private;
+        let ChartArms {
+            accel,
+            rotation,
+            rate_matrix,
+            energy,
+        } = self;
+        quote! {
+            #[inline]
+            fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n]) -> [f64; 3] {
+                match seq { #(#accel)* }
+            }
+
+            #[inline]
+            fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+                match seq { #(#rotation)* }
+            }
+
+            #[inline]
+            fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
+                match seq { #(#rate_matrix)* }
+            }
+
+            #[inline]
+            fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; #n]) -> f64 {
+                match seq { #(#energy)* }
+            }
+        }
     }
 }
 
@@ -115,6 +153,21 @@ impl UserCall {
             let __torque: fn(&Self, f64, &#p::Matrix3<f64>, &#p::Vector3<f64>) -> #p::Vector3<f64> = #path;
         };
         quote!(#setup #bind let __u = __torque(self, t, &__r, #omega);)
+    }
+
+    /// [`UserCall::call`] in the arm of the chart `seq_t`: R and ω computed by the chart's
+    /// own methods of `dynamics` (the trait as the impl names it: `TopDynamics<N>` for a top
+    /// with motors).
+    pub(super) fn call_in_chart(&self, seq_t: &TokenStream, dynamics: &TokenStream) -> TokenStream {
+        let p = Private;
+        self.call(
+            quote! {
+                let __q = [state[0], state[1], state[2]];
+                let __r = #dynamics::rotation_in(self, #seq_t, &__q);
+                let __w = #dynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
+            },
+            quote!(&__w),
+        )
     }
 }
 
@@ -143,7 +196,8 @@ pub fn expand(
     let driven = (!settings.driven.is_empty())
         .then(|| super::driven::DrivenInputs::new(arena, settings, &mut symbols));
     if driven.is_some() {
-        super::driven::literal_inertia(cx, arena, checked, settings)?;
+        let inertia = &checked.body.props.inertia;
+        crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, ABOUT)?;
     }
     let taylor_symbols = symbols.clone();
     let low = Lowering::new(cx, ident, symbols);
@@ -190,7 +244,7 @@ pub fn expand(
         });
         // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
         let taylor = settings.taylor.map(|order| {
-            crate::lang::taylor::expand_checked(
+            crate::lang::taylor::expand(
                 cx,
                 ident,
                 arena,
@@ -199,7 +253,9 @@ pub fn expand(
                 &rhs,
                 TokenStream::new(),
                 order,
-                quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+                Some(
+                    quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+                ),
             )
         });
         quote! {
@@ -280,38 +336,15 @@ fn undriven(
 ) -> Result<(TokenStream, (Vec<ExprId>, Vec<ExprId>)), LagrangeError> {
     let p = Private;
     let Methods {
-        arms:
-            ChartArms {
-                accel,
-                rotation,
-                rate_matrix,
-                energy,
-            },
+        arms,
         jacobian,
         momenta,
         eulerian,
         lagrangian,
     } = methods(low, arena, scene, user)?;
+    let chart = arms.methods(6);
     let body = quote! {
-        #[inline]
-        fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
-            match seq { #(#accel)* }
-        }
-
-        #[inline]
-        fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rotation)* }
-        }
-
-        #[inline]
-        fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rate_matrix)* }
-        }
-
-        #[inline]
-        fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; 6]) -> f64 {
-            match seq { #(#energy)* }
-        }
+        #chart
 
         fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] #jacobian
 
@@ -353,16 +386,14 @@ fn rotor_methods(
             }
         }
     });
-    let error = quote!(#p::TopError);
-    let mut shapes: Vec<(usize, [ExprId; 3], ExprId)> = settings
-        .rotor_index
-        .iter()
-        .zip(&scene.rotors)
-        .map(|(&k, r)| (k, r.axis, r.inertia))
-        .collect();
-    shapes.extend(settings.driven.iter().map(|(k, d)| (*k, d.axis, d.inertia)));
-    let shapes = crate::lang::rotor::check_tokens_indexed(low, arena, &shapes, &error);
-    let driven_inertia = super::driven::inertia_check(low, arena, settings);
+    let shapes = crate::lang::rotor::check_tokens(
+        low,
+        arena,
+        (&settings.rotor_index, &scene.rotors),
+        &settings.driven,
+        &quote!(#p::TopError),
+        &quote!(#p::RigidBody::inertia(self)),
+    );
     let rates: Vec<ExprId> = scene.rotors.iter().map(|r| r.rate).collect();
     let Emitted {
         lets: rate_lets,
@@ -391,7 +422,6 @@ fn rotor_methods(
                 }
             )*
             #shapes
-            #driven_inertia
             self.top_parameters().check()
         }
     })

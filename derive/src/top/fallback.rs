@@ -7,34 +7,8 @@ use proc_macro2::{TokenStream, TokenTree};
 use quote::{format_ident, quote};
 use syn::{DeriveInput, Meta};
 
-use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::syntax::Item;
-
-/// `rotor_k` for each `rotor(...)` group of the `#[top]` attributes that has a `torque` key,
-/// k counting every rotor group, read from the syntax alone (as `#[free]`'s stub does).
-fn driven_names(input: &DeriveInput) -> Vec<String> {
-    let attrs: Vec<&syn::Attribute> = input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::TOP))
-        .collect();
-    let cx = Ctxt::new();
-    let parsed = super::attr::parse(&cx, &attrs);
-    let _ = cx.check();
-    parsed
-        .items
-        .iter()
-        .filter_map(|item| match item {
-            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
-            _ => None,
-        })
-        .enumerate()
-        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
-        .map(|(k, _)| format!("rotor_{k}"))
-        .collect()
-}
 
 /// A stub `impl TopDynamics` for `input`, and its angle consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
@@ -54,7 +28,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
                 pub const #upper: usize = #k;
             }
         });
-    let driven = driven_names(input);
+    let driven = crate::lang::rotor::driven_names(input, keys::TOP, super::attr::parse);
     // Unsuffixed, as the stub always wrote its 6.
     let n = proc_macro2::Literal::usize_unsuffixed(6 + driven.len());
     let rotors = driven.iter().enumerate().map(|(k, name)| {
