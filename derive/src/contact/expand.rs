@@ -16,9 +16,9 @@ use syn::Ident;
 
 use super::check::ContactSettings;
 use crate::lang::ctxt::Ctxt;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering};
+use crate::lang::symbols::{FieldParameters, Lowering, StateMethod};
 use crate::rigid::check::CheckedBody;
 
 /// `impl ContactDynamics for …`, or `None` after recording why the equations could not be
@@ -28,23 +28,19 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &ContactSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let scene = settings.scene(checked);
+    let what = "the equations of the body on the table";
     let derivation = scene
         .derive(arena)
-        .map_err(|e| {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the equations of the body on the table: {e}"),
-            );
-        })
+        .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
     let low = Lowering::new(cx, ident, parameters.tokens());
-    let method = Method {
+    let method = StateMethod {
         low: &low,
         state: &derivation.state,
+        prelude: None,
     };
     let vector = |o: &[TokenStream]| quote!(#p::Vector3::new(#(#o),*));
     let ContactDerivation {
@@ -183,26 +179,6 @@ pub fn expand(
             fn values(&self) -> #p::ContactValues #values
         }
     })
-}
-
-/// Lowers one method's outputs over the state array `y`.
-struct Method<'a> {
-    low: &'a Lowering<'a>,
-    state: &'a [ExprId; STATE_LEN],
-}
-
-impl Method<'_> {
-    /// `{ lets; build(outputs) }`.
-    fn body(
-        &self,
-        arena: &mut Arena,
-        outputs: &[ExprId],
-        build: impl FnOnce(&[TokenStream]) -> TokenStream,
-    ) -> TokenStream {
-        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
-        let out = build(&outputs);
-        quote!({ #lets #out })
-    }
 }
 
 /// The `LawKind` of `law`.

@@ -12,10 +12,10 @@ use quote::{ToTokens, format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
 use super::check::FreeSettings;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering, SymbolTokens};
+use crate::lang::symbols::{FieldParameters, Lowering, StateMethod, SymbolTokens};
 use crate::rigid::check::CheckedBody;
 
 /// The values generated code computes before a method's straight-line block, each emitted
@@ -221,14 +221,10 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &FreeSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let failed = |e: &dyn std::fmt::Display| {
-        cx.error_spanned_by(
-            ident,
-            format!("cannot derive the free body's equations of motion: {e}"),
-        );
+        cannot_derive(cx, ident, "the free body's equations of motion", e)
     };
     let frame = cm_frame(arena, &checked.body.props.inertia_cm)
         .map_err(|e| failed(&e))
@@ -255,10 +251,11 @@ pub fn expand(
         )
     });
     let low = Lowering::new(cx, ident, symbols);
-    let method = Method {
+    let prelude = |arena: &Arena, outputs: &[ExprId]| preludes.for_outputs(arena, outputs);
+    let method = StateMethod {
         low: &low,
-        preludes: &preludes,
         state: &full_state,
+        prelude: Some(&prelude),
     };
     let rhs = derivation.full_rhs();
     let FreeDerivation {
@@ -335,28 +332,6 @@ pub fn expand(
             fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> #check
         }
     })
-}
-
-/// Lowers one method's outputs over the state array `y`.
-struct Method<'a> {
-    low: &'a Lowering<'a>,
-    preludes: &'a Preludes,
-    state: &'a [ExprId],
-}
-
-impl Method<'_> {
-    /// `{ preludes; lets; build(outputs) }`.
-    fn body(
-        &self,
-        arena: &mut Arena,
-        outputs: &[ExprId],
-        build: impl FnOnce(&[TokenStream]) -> TokenStream,
-    ) -> TokenStream {
-        let pre = self.preludes.for_outputs(arena, outputs);
-        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
-        let out = build(&outputs);
-        quote!({ #pre #lets #out })
-    }
 }
 
 /// The body of `principal_cm`: the moments of a diagonal tensor, a constant frame, or the

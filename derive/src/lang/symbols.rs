@@ -125,6 +125,32 @@ impl<'a> Lowering<'a> {
     }
 }
 
+/// Lowers one method's outputs over a scene's ODE state array `y` (a free body's, a
+/// contact's), after the statements `prelude` binds for them.
+pub struct StateMethod<'a> {
+    /// How the fields and the rest are read.
+    pub low: &'a Lowering<'a>,
+    /// The state's symbols, entry k read from `y[k]`.
+    pub state: &'a [ExprId],
+    /// The statements the outputs need first (a free body's user calls), if any.
+    pub prelude: Option<&'a dyn Fn(&Arena, &[ExprId]) -> TokenStream>,
+}
+
+impl StateMethod<'_> {
+    /// `{ prelude; lets; build(outputs) }`.
+    pub fn body(
+        &self,
+        arena: &Arena,
+        outputs: &[ExprId],
+        build: impl FnOnce(&[TokenStream]) -> TokenStream,
+    ) -> TokenStream {
+        let pre = self.prelude.map(|f| f(arena, outputs)).unwrap_or_default();
+        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
+        let out = build(&outputs);
+        quote!({ #pre #lets #out })
+    }
+}
+
 /// The struct fields read as the arena's parameters, in the order first used.
 #[derive(Default)]
 pub struct FieldParameters {

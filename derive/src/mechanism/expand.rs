@@ -15,7 +15,7 @@ use syn::{Ident, LitStr};
 
 use super::check::{CheckedMechanism, UserEffort};
 use crate::lang::ctxt::Ctxt;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
 use crate::lang::variational::VariationalKey;
@@ -38,17 +38,13 @@ pub fn expand(
     if let Some(rolling) = &checked.rolling {
         return rolling::expand(ex, checked, rolling);
     }
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let route = checked.route;
     let derivation = match checked.scene.derive(arena, route) {
         Ok(d) => d,
         Err(e) => {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the mechanism's equations of motion: {e}"),
-            );
+            cannot_derive(cx, ident, "the mechanism's equations of motion", &e);
             return None;
         }
     };

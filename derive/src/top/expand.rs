@@ -13,7 +13,7 @@ use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
 use super::check::TopSettings;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::rigid::check::CheckedBody;
@@ -177,8 +177,7 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &TopSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let mut scene = scene(arena, checked, settings);
     let user = UserCall(settings.torque.clone());
@@ -201,12 +200,8 @@ pub fn expand(
     }
     let taylor_symbols = symbols.clone();
     let low = Lowering::new(cx, ident, symbols);
-    let failed = |e: &dyn std::fmt::Display| {
-        cx.error_spanned_by(
-            ident,
-            format!("cannot derive the top's equations of motion: {e}"),
-        );
-    };
+    let failed =
+        |e: &dyn std::fmt::Display| cannot_derive(cx, ident, "the top's equations of motion", e);
     // In the order a top without motors always derived them, so it emits what it did.
     let (body, equations, lagrangian) = match &driven {
         None => {
@@ -233,7 +228,7 @@ pub fn expand(
     let rotors = match rotor_methods(&low, arena, &scene, settings) {
         Ok(rotors) => rotors,
         Err(e) => {
-            cx.error_spanned_by(ident, format!("cannot derive the top's rotors: {e}"));
+            cannot_derive(cx, ident, "the top's rotors", &e);
             return None;
         }
     };

@@ -12,7 +12,7 @@ use quote::{format_ident, quote};
 use syn::LitStr;
 
 use super::Method;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::mechanism::check::CheckedMechanism;
@@ -26,8 +26,7 @@ pub(super) fn expand(
     checked: &CheckedMechanism,
     rolling: &CheckedRolling,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let derivation: RollingDerivation = match checked.scene.derive_rolling(arena, &rolling.scene) {
         Ok(d) => d,
@@ -52,10 +51,7 @@ pub(super) fn expand(
             return None;
         }
         Err(e) => {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the rolling mechanism's equations of motion: {e}"),
-            );
+            cannot_derive(cx, ident, "the rolling mechanism's equations of motion", &e);
             return None;
         }
     };
