@@ -103,9 +103,7 @@ fn keyed<'a>(
             Arg::Key(key, value) => (*key, Some(*value)),
             Arg::Flag(key) => (*key, None),
         };
-        let Some(&k) = allowed.iter().find(|&&k| key == k) else {
-            let message = keys::unknown_key(key, &format!("for `{name}`"), allowed, &[]);
-            ck.cx.error_spanned_by(key, message);
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{name}`"), allowed) else {
             ok = false;
             continue;
         };

@@ -207,15 +207,14 @@ fn force_part(ck: &mut Checker, name: &Ident, kvs: &[KeyValue]) -> Option<(bool,
     let mut at: Option<&Expr> = None;
     let mut ok = true;
     for KeyValue { key, value } in kvs {
-        let slot = if key == keys::FORCE {
-            &mut force
-        } else if key == keys::FORCE_AT {
-            &mut at
-        } else {
-            let message = keys::unknown_key(key, &format!("for `{kind}`"), FORCE_KEYS, &[]);
-            ck.cx.error_spanned_by(key, message);
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{kind}`"), FORCE_KEYS) else {
             ok = false;
             continue;
+        };
+        let slot = if k == keys::FORCE {
+            &mut force
+        } else {
+            &mut at
         };
         // Each key once: two forces in one part are ambiguous.
         if slot.is_some() {

@@ -19,12 +19,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
     let driven = crate::lang::rotor::driven_names(input, keys::FREE, super::attr::parse);
     let slots = super::expand::slot_consts(ident, &driven);
     let n = precess_core::free::STATE_LEN + driven.len();
-    // The trait's default N without driven rotors, as a user writes it.
-    let dynamics = if driven.is_empty() {
-        quote!(#p::FreeDynamics)
-    } else {
-        quote!(#p::FreeDynamics<#n>)
-    };
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::FreeDynamics), n, !driven.is_empty());
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {

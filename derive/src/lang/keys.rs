@@ -6,7 +6,7 @@
 
 mod unknown;
 
-pub use unknown::{closest, did_you_mean, did_you_mean_part, unknown_key};
+pub use unknown::{closest, did_you_mean, did_you_mean_part, known_key, unknown_key};
 
 /// `#[rigid(...)]`: the body's parts and pivot.
 pub const RIGID: &str = "rigid";

@@ -7,6 +7,8 @@
 
 use precess_core::rigid::Rotor;
 use precess_core::sym::ExprId;
+use proc_macro2::TokenStream;
+use quote::{ToTokens, quote};
 use syn::{Attribute, DeriveInput, Expr, Ident};
 
 use crate::lang::check::Checker;
@@ -244,6 +246,13 @@ fn rotor_axis(ck: &mut Checker, value: &Expr) -> Option<[ExprId; 3]> {
         return None;
     }
     Some(axis)
+}
+
+/// A scene's trait as a user writes it (`path`, a `TopDynamics` or `FreeDynamics` whose
+/// state length N defaults to the scene's without motors): `path` alone unless a rotor is
+/// `driven`, else `path<n>`.
+pub fn scene_trait(path: TokenStream, n: impl ToTokens, driven: bool) -> TokenStream {
+    if driven { quote!(#path<#n>) } else { path }
 }
 
 /// `rotor_k` for each `rotor(...)` group of the `#[attribute]` attributes (read with `parse`,

@@ -149,9 +149,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
             ok = false;
             continue;
         };
-        let Some(&k) = allowed.iter().find(|&&k| key == k) else {
-            let message = keys::unknown_key(key, &format!("for `{written}`"), &allowed, &[]);
-            ck.cx.error_spanned_by(key, message);
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{written}`"), &allowed) else {
             ok = false;
             continue;
         };

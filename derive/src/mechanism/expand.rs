@@ -153,14 +153,7 @@ pub fn expand(
         .coordinates
         .iter()
         .map(|c| LitStr::new(&c.to_string(), c.span()));
-    let consts = checked.coordinates.iter().enumerate().map(|(k, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        let doc = format!("The index of the coordinate `{c}` in q and q̇ (and of q̈).");
-        quote! {
-            #[doc = #doc]
-            pub const #upper: usize = #k;
-        }
-    });
+    let consts = coordinate_consts(checked, "q and q̇ (and of q̈)");
     let check_parameters = super::parameters::method(&low, arena, checked);
     let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
     let route_name = derivation.route.name();
@@ -266,6 +259,20 @@ fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
         }
     }
     read
+}
+
+/// A const per coordinate, named after it in capitals, its index in `arrays` (the arrays the
+/// trait's methods take, `q and q̇`).
+pub(super) fn coordinate_consts(checked: &CheckedMechanism, arrays: &str) -> Vec<TokenStream> {
+    let consts = checked.coordinates.iter().enumerate().map(|(k, c)| {
+        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
+        let doc = format!("The index of the coordinate `{c}` in {arrays}.");
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #k;
+        }
+    });
+    consts.collect()
 }
 
 /// Lowers one method's outputs over `t`, `q` and `qdot`.

@@ -86,10 +86,8 @@ impl Checker<'_> {
                 ok = false;
                 continue;
             };
-            if !allowed.iter().any(|k| key == k) {
-                let place = format!("for `{kind_name}`");
-                let message = keys::unknown_key(key, &place, &allowed, &[]);
-                self.cx.error_spanned_by(key, message);
+            let place = format!("for `{kind_name}`");
+            if keys::known_key(self.cx, key, &place, allowed).is_none() {
                 ok = false;
                 continue;
             }

@@ -13,7 +13,7 @@ use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
 use super::check::TopSettings;
-use super::expand::{ChartArms, UserCall, sequence_tokens};
+use super::expand::{ChartArms, UserCall, momenta_tokens, sequence_tokens};
 use crate::lang::private::Private;
 use crate::lang::symbols::{Lowering, SymbolTokens};
 
@@ -115,22 +115,7 @@ pub(super) fn methods(
         AngleSequence::Zyx => zyx,
     };
     let reads = state_reads(&declared, inputs);
-    let conserved: Vec<ExprId> = declared
-        .conserved_momenta
-        .iter()
-        .flatten()
-        .copied()
-        .collect();
-    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
-    let mut it = outputs.into_iter();
-    let slots = declared.conserved_momenta.iter().map(|m| match m {
-        Some(_) => {
-            let v = it.next();
-            quote!(::core::option::Option::Some(#v))
-        }
-        None => quote!(::core::option::Option::None),
-    });
-    let momenta_in = quote!({ #lets [#(#slots),*] });
+    let momenta_in = momenta_tokens(low, arena, &declared.conserved_momenta, &reads);
     // Every rotor's momentum at the state: the constant ones' and J Ω â of each driven one.
     let all: Vec<Rotor> = scene
         .rotors

@@ -260,12 +260,7 @@ pub fn expand(
         }
     });
     let n = 6 + settings.driven.len();
-    // `TopDynamics` as a user writes it: without N unless the top has motors.
-    let dynamics = if driven.is_some() {
-        quote!(#p::TopDynamics<#n>)
-    } else {
-        quote!(#p::TopDynamics)
-    };
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::TopDynamics), n, driven.is_some());
     let slots = scene
         .sequence
         .names()
@@ -552,17 +547,29 @@ fn declared_chart(
     let Emitted { lets, outputs } = low.lower_reading(arena, jac.as_flattened(), &reads);
     let rows = outputs.chunks(6).map(|row| quote!([#(#row),*]));
     let jacobian = quote!({ #call #lets [#(#rows),*] });
-    let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
-    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
+    let momenta = momenta_tokens(low, arena, &top.conserved_momenta, &reads);
+    (jacobian, momenta)
+}
+
+/// The body of a `conserved_momenta` method: the momenta that are conserved, read through
+/// `reads`, `None` for the others.
+pub(super) fn momenta_tokens(
+    low: &Lowering,
+    arena: &Arena,
+    momenta: &[Option<ExprId>],
+    reads: &[(ExprId, TokenStream)],
+) -> TokenStream {
+    let conserved: Vec<ExprId> = momenta.iter().flatten().copied().collect();
+    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, reads);
     let mut it = outputs.into_iter();
-    let slots = top.conserved_momenta.iter().map(|m| match m {
+    let slots = momenta.iter().map(|m| match m {
         Some(_) => {
             let v = it.next();
             quote!(::core::option::Option::Some(#v))
         }
         None => quote!(::core::option::Option::None),
     });
-    (jacobian, quote!({ #lets [#(#slots),*] }))
+    quote!({ #lets [#(#slots),*] })
 }
 
 /// The input symbols `R{i}{j}` and `w{k}` of the Eulerian form, which `equations` typesets

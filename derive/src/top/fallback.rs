@@ -39,12 +39,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
             pub const #upper: usize = #slot;
         }
     });
-    // The trait's default N without motors, as a user writes it.
-    let dynamics = if driven.is_empty() {
-        quote!(#p::TopDynamics)
-    } else {
-        quote!(#p::TopDynamics<#n>)
-    };
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::TopDynamics), &n, !driven.is_empty());
     quote! {
         #[automatically_derived]
         impl #impl_generics #ident #ty_generics #where_clause {

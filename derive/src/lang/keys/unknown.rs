@@ -4,7 +4,10 @@
 
 use std::fmt::Display;
 
+use syn::Ident;
+
 use super::PARTS;
+use crate::lang::ctxt::Ctxt;
 
 /// The message for `written`, a key `place` does not take (`place` says where it was
 /// written: ``for `sphere` ``, ``in `#[top]` ``): the keys `place` takes, then the `others`
@@ -32,6 +35,21 @@ pub fn unknown_key(
         keys.join(", "),
         did_you_mean(&written, known)
     )
+}
+
+/// The key of `allowed` that `key` is, or `None` after recording on `key` that `place`
+/// does not take it ([`unknown_key`]): the lookup of every group whose keys are one list.
+pub fn known_key(
+    cx: &Ctxt,
+    key: &Ident,
+    place: &str,
+    allowed: &[&'static str],
+) -> Option<&'static str> {
+    let found = allowed.iter().find(|&&k| key == k).copied();
+    if found.is_none() {
+        cx.error_spanned_by(key, unknown_key(key, place, allowed, &[]));
+    }
+    found
 }
 
 /// `; did you mean `…`?` when exactly one of `known` is close to `written` (see

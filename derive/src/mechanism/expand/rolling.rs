@@ -8,7 +8,7 @@ use precess_core::mechanism::MechanismError;
 use precess_core::mechanism::rolling::RollingDerivation;
 use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::LitStr;
 
 use super::Method;
@@ -136,14 +136,7 @@ pub(super) fn expand(
         .collect();
     let independent = &derivation.independent;
     let dependent = &derivation.dependent;
-    let consts = checked.coordinates.iter().enumerate().map(|(i, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        let doc = format!("The index of the coordinate `{c}` in q and q̇.");
-        quote! {
-            #[doc = #doc]
-            pub const #upper: usize = #i;
-        }
-    });
+    let consts = super::coordinate_consts(checked, "q and q̇");
     let state = n + k;
     let state_doc = format!(
         "The length of the rolling state (q, u): {n} coordinates, then the {k} free speeds; \
