@@ -23,6 +23,7 @@
 //!   against the scene's state and fields and emitted as `<Name>Variational` in one place.
 //! - `surface`: the one reader of a rolling surface, `#[contact(surface = ..)]`'s and a
 //!   wheel's `rolls = ..`.
+//! - `stub`: what the stubs emitted beside the errors are made of, for every attribute.
 //! - `private`: the one hidden path, `::precess::__private`, generated code names precess
 //!   through.
 
@@ -37,6 +38,7 @@ pub mod private;
 pub mod rotor;
 pub mod scalar;
 pub mod sign;
+pub mod stub;
 pub mod surface;
 pub mod symbols;
 pub mod syntax;

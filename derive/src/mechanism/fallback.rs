@@ -7,7 +7,7 @@
 //! could be read, for every N (the uses then fix it).
 
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::parse::Parse;
 use syn::punctuated::Punctuated;
 use syn::{DeriveInput, Expr, Ident, Token};
@@ -16,6 +16,7 @@ use super::attr::LinkItem;
 use super::joint::path_ident;
 use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::stub::hidden_const;
 use crate::lang::syntax::KeyValue;
 
 /// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
@@ -41,13 +42,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
         named.push(upper);
         new
     });
-    let consts = unique.map(|(k, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        quote! {
-            #[doc(hidden)]
-            pub const #upper: usize = #k;
-        }
-    });
+    let consts = unique.map(|(k, c)| hidden_const(&c.to_string(), c.span(), k));
     let stub = quote!(::core::unimplemented!(
         "the #[derive(Mechanism)] description has errors"
     ));
