@@ -125,6 +125,9 @@ impl<'a> Lowering<'a> {
     }
 }
 
+/// The statements some outputs need bound first, given the outputs.
+pub type Prelude<'a> = dyn Fn(&Arena, &[ExprId]) -> TokenStream + 'a;
+
 /// Lowers one method's outputs over a scene's ODE state array `y` (a free body's, a
 /// contact's), after the statements `prelude` binds for them.
 pub struct StateMethod<'a> {
@@ -133,7 +136,7 @@ pub struct StateMethod<'a> {
     /// The state's symbols, entry k read from `y[k]`.
     pub state: &'a [ExprId],
     /// The statements the outputs need first (a free body's user calls), if any.
-    pub prelude: Option<&'a dyn Fn(&Arena, &[ExprId]) -> TokenStream>,
+    pub prelude: Option<&'a Prelude<'a>>,
 }
 
 impl StateMethod<'_> {
