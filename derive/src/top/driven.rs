@@ -12,8 +12,9 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
+use super::charts::{ChartArms, momenta_tokens};
 use super::check::TopSettings;
-use super::expand::{ChartArms, UserCall, momenta_tokens, sequence_tokens};
+use super::expand::{UserCall, sequence_tokens};
 use crate::lang::private::Private;
 use crate::lang::symbols::{Lowering, SymbolTokens};
 
