@@ -14,7 +14,7 @@ use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::units::Dim;
 use crate::rigid::check::CheckedBody;
 
-use super::forms::{at_least_zero, law_list, read_law, read_surface, surface_list};
+use super::forms::{law_list, read_law, read_surface, surface_list};
 
 /// The checked `#[contact(...)]` settings.
 pub struct ContactSettings {
@@ -107,22 +107,11 @@ pub fn check(
             Some(keys::LAW) => law = read_law(ck, value),
             Some(keys::GRAVITY) => {
                 gravity = ck.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| {
-                    at_least_zero(
-                        ck,
-                        value,
-                        "`gravity`",
-                        "it is g along −z; one pulling up would lift the body off the table",
-                    )
+                    let why = "it is g along −z; one pulling up would lift the body off the table";
+                    ck.non_negative(value, "`gravity`", Some(why))
                 });
             }
-            _ => ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` in {in_contact}: expected {}{}",
-                    CONTACT_KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), CONTACT_KEYS.iter().copied())
-                ),
-            ),
+            _ => ck.cx.error_spanned_by(key, unknown(key)),
         }
     }
     // A missing setting is reported only when every attribute parsed: otherwise it may be
@@ -179,13 +168,18 @@ fn group_message(name: &Ident) -> String {
             keys::LAW
         )
     } else {
-        format!(
-            "unknown key `{name}` in `#[{}]`: expected {}{}",
-            keys::CONTACT,
-            CONTACT_KEYS.join(", "),
-            keys::did_you_mean(&name.to_string(), CONTACT_KEYS.iter().copied())
-        )
+        unknown(name)
     }
+}
+
+/// The message for a key `#[contact]` does not take.
+fn unknown(key: &Ident) -> String {
+    keys::unknown_key(
+        key,
+        &format!("in `#[{}]`", keys::CONTACT),
+        CONTACT_KEYS,
+        &[],
+    )
 }
 
 /// The centre of mass inside the surface, by the run-time rule of

@@ -12,13 +12,13 @@ use precess_core::contact::{
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::{Ident, LitStr};
+use syn::Ident;
 
 use super::check::ContactSettings;
 use crate::lang::ctxt::Ctxt;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering};
+use crate::lang::symbols::{FieldParameters, Lowering, StateMethod};
 use crate::rigid::check::CheckedBody;
 
 /// `impl ContactDynamics for …`, or `None` after recording why the equations could not be
@@ -28,23 +28,19 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &ContactSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let scene = settings.scene(checked);
+    let what = "the equations of the body on the table";
     let derivation = scene
         .derive(arena)
-        .map_err(|e| {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the equations of the body on the table: {e}"),
-            );
-        })
+        .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
     let low = Lowering::new(cx, ident, parameters.tokens());
-    let method = Method {
+    let method = StateMethod {
         low: &low,
         state: &derivation.state,
+        prelude: None,
     };
     let vector = |o: &[TokenStream]| quote!(#p::Vector3::new(#(#o),*));
     let ContactDerivation {
@@ -185,26 +181,6 @@ pub fn expand(
     })
 }
 
-/// Lowers one method's outputs over the state array `y`.
-struct Method<'a> {
-    low: &'a Lowering<'a>,
-    state: &'a [ExprId; STATE_LEN],
-}
-
-impl Method<'_> {
-    /// `{ lets; build(outputs) }`.
-    fn body(
-        &self,
-        arena: &mut Arena,
-        outputs: &[ExprId],
-        build: impl FnOnce(&[TokenStream]) -> TokenStream,
-    ) -> TokenStream {
-        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
-        let out = build(&outputs);
-        quote!({ #lets #out })
-    }
-}
-
 /// The `LawKind` of `law`.
 fn law_kind(law: &ContactLaw) -> TokenStream {
     let p = Private;
@@ -287,22 +263,11 @@ fn check_parameters(
     let length_names = lengths.iter().map(|&(n, _)| n);
     let coefficient_names = coefficients.iter().map(|&(n, _)| n);
     let surface = surface_kind(scene.surface.kind());
-    // A field that is NaN or ±∞ would pass some rules unnoticed (an inertia entry cancelled
-    // in a sum): each is refused by name first.
-    let fields = parameters.fields().map(|f| {
-        let name = LitStr::new(&f.to_string(), f.span());
-        quote! {
-            if !self.#f.is_finite() {
-                return ::core::result::Result::Err(#p::ContactError::BadParameter {
-                    name: #name,
-                    value: self.#f,
-                    rule: "finite",
-                });
-            }
-        }
+    let fields = parameters.finite_checks(|name, value| {
+        quote!(#p::ContactError::BadParameter { name: #name, value: #value, rule: "finite" })
     });
     let check = quote!({
-        #(#fields)*
+        #fields
         #p::RigidBody::validate(self)?;
         #p::ContactDynamics::values(self).check()
     });

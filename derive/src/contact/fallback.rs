@@ -5,30 +5,29 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::DeriveInput;
 
+use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::stub::Stub;
 
 /// A stub `impl ContactDynamics` for `input`.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let stub = quote!(::core::unimplemented!(
-        "the #[contact] description has errors"
-    ));
-    quote! {
-        #[automatically_derived]
-        impl #impl_generics #p::ContactDynamics for #ident #ty_generics #where_clause {
-            fn law(&self) -> #p::LawKind { #stub }
-            fn surface_kind(&self) -> #p::SurfaceKind { #stub }
-            fn phase_rhs(&self, _: #p::Phase, _: f64, _: &[f64; 11], _: &mut [f64; 11]) { #stub }
-            fn reaction(&self, _: #p::Phase, _: &[f64; 11]) -> #p::Reaction { #stub }
-            fn energy(&self, _: #p::Phase, _: &[f64; 11]) -> f64 { #stub }
-            fn momenta(&self, _: #p::Phase, _: &[f64; 11]) -> #p::ContactMomenta { #stub }
-            fn contact(&self, _: &[f64; 11]) -> #p::ContactPoint { #stub }
-            fn jellett(&self, _: &[f64; 11]) -> f64 { #stub }
-            fn friction_coefficient(&self) -> ::core::option::Option<f64> { #stub }
-            fn check_parameters(&self) -> ::core::result::Result<(), #p::ContactError> { #stub }
-            fn values(&self) -> #p::ContactValues { #stub }
-        }
-    }
+    let stub = Stub::new(input, keys::CONTACT);
+    let body = &stub.body;
+    stub.trait_impl(
+        &quote!(#p::ContactDynamics),
+        quote! {
+            fn law(&self) -> #p::LawKind { #body }
+            fn surface_kind(&self) -> #p::SurfaceKind { #body }
+            fn phase_rhs(&self, _: #p::Phase, _: f64, _: &[f64; 11], _: &mut [f64; 11]) { #body }
+            fn reaction(&self, _: #p::Phase, _: &[f64; 11]) -> #p::Reaction { #body }
+            fn energy(&self, _: #p::Phase, _: &[f64; 11]) -> f64 { #body }
+            fn momenta(&self, _: #p::Phase, _: &[f64; 11]) -> #p::ContactMomenta { #body }
+            fn contact(&self, _: &[f64; 11]) -> #p::ContactPoint { #body }
+            fn jellett(&self, _: &[f64; 11]) -> f64 { #body }
+            fn friction_coefficient(&self) -> ::core::option::Option<f64> { #body }
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::ContactError> { #body }
+            fn values(&self) -> #p::ContactValues { #body }
+        },
+    )
 }

@@ -103,15 +103,7 @@ fn keyed<'a>(
             Arg::Key(key, value) => (*key, Some(*value)),
             Arg::Flag(key) => (*key, None),
         };
-        let Some(&k) = allowed.iter().find(|&&k| key == k) else {
-            ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` for `{name}`: allowed keys are {}{}",
-                    allowed.join(", "),
-                    keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                ),
-            );
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{name}`"), allowed) else {
             ok = false;
             continue;
         };
@@ -185,7 +177,7 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
         match value_of(&args, key) {
             Some(v) => ck
                 .expecting_as(dim, what, key, |ck| {
-                    non_negative(ck, v, &format!("`{key}` of `{kind}`"))
+                    ck.non_negative(v, &format!("`{key}` of `{kind}`"), FEEDS_ENERGY)
                 })
                 .map(Some),
             None => Some(None),
@@ -243,26 +235,5 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
     }
 }
 
-/// A coefficient that must not be negative where it is a literal: negative friction or
-/// resistance feeds energy in.
-fn non_negative(ck: &mut Checker, value: &Expr, what: &str) -> Option<ExprId> {
-    at_least_zero(ck, value, what, "a negative one feeds energy in")
-}
-
-/// A scalar that must not be negative where it is a literal, `why` said in the error.
-pub fn at_least_zero(ck: &mut Checker, value: &Expr, what: &str, why: &str) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v)
-        && r.is_negative()
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!(
-                "{what} is {}: it must be zero or positive ({why})",
-                r.to_f64()
-            ),
-        );
-        return None;
-    }
-    Some(v)
-}
+/// Why friction or resistance must not be negative.
+const FEEDS_ENERGY: Option<&str> = Some("a negative one feeds energy in");

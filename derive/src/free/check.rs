@@ -144,12 +144,12 @@ fn setting<'a>(
         }
         Some(keys::DRAG) => {
             settings.drag = ck.expecting(Dim::DRAG, keys::DRAG, |ck| {
-                non_negative(ck, value, keys::DRAG)
+                ck.non_negative(value, &format!("`{}`", keys::DRAG), FEEDS_ENERGY)
             })
         }
         Some(keys::DAMPING) => {
             settings.damping = ck.expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| {
-                non_negative(ck, value, keys::DAMPING)
+                ck.non_negative(value, &format!("`{}`", keys::DAMPING), FEEDS_ENERGY)
             })
         }
         Some(keys::BODY_TORQUE) => {
@@ -181,19 +181,13 @@ fn setting<'a>(
 fn unknown(key: &Ident) -> String {
     let forces: Vec<String> = FREE_FORCES
         .iter()
-        .map(|f| format!("{f}({}, {})", keys::FORCE, keys::FORCE_AT))
+        .map(|f| format!("`{f}({}, {})`", keys::FORCE, keys::FORCE_AT))
         .collect();
-    let written = key.to_string();
-    let known = FREE_KEYS.iter().chain(FREE_FORCES).copied();
-    format!(
-        "unknown key `{key}` in `#[{}]`: expected {}, a force {}, or a rotor {}({}){}",
-        keys::FREE,
-        FREE_KEYS.join(", "),
-        forces.join(" or "),
-        keys::ROTOR,
-        keys::ROTOR_KEYS.join(", "),
-        keys::did_you_mean(&written, known.chain([keys::ROTOR]))
-    )
+    let groups = [
+        (FREE_FORCES, format!("a force {}", forces.join(" or "))),
+        crate::lang::rotor::listed(true),
+    ];
+    keys::unknown_key(key, &format!("in `#[{}]`", keys::FREE), FREE_KEYS, &groups)
 }
 
 /// `body_force(force = [..], at = [..])` or `space_force(...)`: `(is space-fixed, force)`.
@@ -213,21 +207,14 @@ fn force_part(ck: &mut Checker, name: &Ident, kvs: &[KeyValue]) -> Option<(bool,
     let mut at: Option<&Expr> = None;
     let mut ok = true;
     for KeyValue { key, value } in kvs {
-        let slot = if key == keys::FORCE {
-            &mut force
-        } else if key == keys::FORCE_AT {
-            &mut at
-        } else {
-            ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` for `{kind}`: allowed keys are {}{}",
-                    FORCE_KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), FORCE_KEYS.iter().copied())
-                ),
-            );
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{kind}`"), FORCE_KEYS) else {
             ok = false;
             continue;
+        };
+        let slot = if k == keys::FORCE {
+            &mut force
+        } else {
+            &mut at
         };
         // Each key once: two forces in one part are ambiguous.
         if slot.is_some() {
@@ -290,43 +277,16 @@ fn gravity(ck: &mut Checker, value: &Expr) -> Option<[ExprId; 3]> {
     if matches!(value, Expr::Array(_)) {
         return ck.vector(value);
     }
-    let g = ck.scalar(value)?;
     // A magnitude along −z: a negative one would be gravity pointing up, written twice
     // over; give the vector for any direction.
-    if let Some(r) = ck.arena.as_rational(g)
-        && (r.is_negative() || r.is_zero())
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!(
-                "`{}` is {}: a magnitude must be positive (it acts along −z); give `[gx, gy, gz]` for any other direction",
-                keys::GRAVITY,
-                r.to_f64()
-            ),
-        );
-        return None;
-    }
+    let why = "a magnitude, acting along −z; give `[gx, gy, gz]` for any other direction";
+    let g = ck.positive(value, &format!("`{}`", keys::GRAVITY), Some(why))?;
     let z = ck.arena.zero();
     Some([z, z, ck.arena.neg(g)])
 }
 
-/// A coefficient that must not be negative: a negative drag or damping feeds energy in.
-fn non_negative(ck: &mut Checker, value: &Expr, what: &str) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v)
-        && r.is_negative()
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!(
-                "`{what}` is {}: it must be zero or positive (a negative one feeds energy in)",
-                r.to_f64()
-            ),
-        );
-        return None;
-    }
-    Some(v)
-}
+/// Why a drag or damping must not be negative.
+const FEEDS_ENERGY: Option<&str> = Some("a negative one feeds energy in");
 
 /// The path of a user function.
 fn user_fn(ck: &mut Checker, value: &Expr, what: &str) -> Option<syn::Path> {

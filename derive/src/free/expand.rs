@@ -9,14 +9,13 @@ use precess_core::sym::mat3::Mat3;
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::{ToTokens, format_ident, quote, quote_spanned};
-use syn::LitStr;
 use syn::spanned::Spanned;
 
 use super::check::FreeSettings;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::symbols::{FieldParameters, Lowering, SymbolTokens};
+use crate::lang::symbols::{FieldParameters, Lowering, StateMethod, SymbolTokens};
 use crate::rigid::check::CheckedBody;
 
 /// The values generated code computes before a method's straight-line block, each emitted
@@ -209,6 +208,12 @@ fn scene(
     (scene, preludes)
 }
 
+/// Where a free body's driven-rotor rule reads its inertia: about its centre of mass.
+const ABOUT: crate::lang::rotor::InertiaAbout<'static> = crate::lang::rotor::InertiaAbout {
+    body: "body",
+    point: "its centre of mass",
+};
+
 /// `impl FreeDynamics for …`, or `None` after recording why the equations could not be
 /// derived.
 pub fn expand(
@@ -216,27 +221,24 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &FreeSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let failed = |e: &dyn std::fmt::Display| {
-        cx.error_spanned_by(
-            ident,
-            format!("cannot derive the free body's equations of motion: {e}"),
-        );
+        cannot_derive(cx, ident, "the free body's equations of motion", e)
     };
     let frame = cm_frame(arena, &checked.body.props.inertia_cm)
         .map_err(|e| failed(&e))
         .ok()?;
     let mut symbols = parameters.tokens();
     let (scene, preludes) = scene(arena, checked, settings, &frame, &mut symbols);
-    literal_driven_inertia(cx, arena, checked, settings)?;
+    let inertia = &checked.body.props.inertia_cm;
+    crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, ABOUT)?;
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
     let full_state = derivation.full_state();
     let n = full_state.len();
     let taylor = settings.taylor.map(|order| {
         let prelude = preludes.for_outputs(arena, &derivation.rhs);
-        crate::lang::taylor::expand_checked(
+        crate::lang::taylor::expand(
             cx,
             ident,
             arena,
@@ -245,14 +247,15 @@ pub fn expand(
             &derivation.rhs,
             prelude,
             order,
-            quote!(#p::FreeDynamics::check_parameters(self).map_err(#p::FreeError::into_ode_error)),
+            Some(quote!(#p::FreeDynamics::check_parameters(self).map_err(#p::FreeError::into_ode_error))),
         )
     });
     let low = Lowering::new(cx, ident, symbols);
-    let method = Method {
+    let prelude = |arena: &Arena, outputs: &[ExprId]| preludes.for_outputs(arena, outputs);
+    let method = StateMethod {
         low: &low,
-        preludes: &preludes,
         state: &full_state,
+        prelude: Some(&prelude),
     };
     let rhs = derivation.full_rhs();
     let FreeDerivation {
@@ -331,28 +334,6 @@ pub fn expand(
     })
 }
 
-/// Lowers one method's outputs over the state array `y`.
-struct Method<'a> {
-    low: &'a Lowering<'a>,
-    preludes: &'a Preludes,
-    state: &'a [ExprId],
-}
-
-impl Method<'_> {
-    /// `{ preludes; lets; build(outputs) }`.
-    fn body(
-        &self,
-        arena: &mut Arena,
-        outputs: &[ExprId],
-        build: impl FnOnce(&[TokenStream]) -> TokenStream,
-    ) -> TokenStream {
-        let pre = self.preludes.for_outputs(arena, outputs);
-        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
-        let out = build(&outputs);
-        quote!({ #pre #lets #out })
-    }
-}
-
 /// The body of `principal_cm`: the moments of a diagonal tensor, a constant frame, or the
 /// decomposition at run time.
 fn principal(low: &Lowering, arena: &mut Arena, frame: &CmFrame) -> TokenStream {
@@ -407,48 +388,21 @@ fn check_parameters(
             }
         }
     });
-    let fields = parameters.fields().map(|f| {
-        let name = LitStr::new(&f.to_string(), f.span());
-        quote! {
-            if !self.#f.is_finite() {
-                return ::core::result::Result::Err(#p::FreeError::NonFiniteParameter {
-                    name: ::std::string::ToString::to_string(#name),
-                    value: self.#f,
-                });
-            }
-        }
+    let fields = parameters.finite_checks(|name, value| {
+        let name = quote!(::std::string::ToString::to_string(#name));
+        quote!(#p::FreeError::NonFiniteParameter { name: #name, value: #value })
     });
-    let mut shapes: Vec<(usize, [ExprId; 3], ExprId)> = settings
-        .rotor_index
-        .iter()
-        .zip(&settings.rotors)
-        .map(|(&k, r)| (k, r.axis, r.inertia))
-        .collect();
-    shapes.extend(settings.driven.iter().map(|(k, d)| (*k, d.axis, d.inertia)));
-    let mut rotors =
-        crate::lang::rotor::check_tokens_indexed(low, arena, &shapes, &quote!(#p::FreeError));
-    if !settings.driven.is_empty() {
-        // The body must keep a positive definite inertia once the driven wheels turn freely.
-        let values: Vec<ExprId> = settings
-            .driven
-            .iter()
-            .flat_map(|(_, d)| d.axis.into_iter().chain([d.inertia]))
-            .collect();
-        let Emitted { lets, outputs } = low.lower(arena, &values);
-        let wheels = outputs.chunks(4).zip(&settings.driven).map(|(o, (k, _))| {
-            let (a, j) = (&o[..3], &o[3]);
-            quote!((#k, [#(#a),*], #j))
-        });
-        rotors.extend(quote!({
-            #lets
-            #p::FreeError::check_driven_inertia(
-                &#p::RigidBody::inertia_cm(self),
-                &[#(#wheels),*],
-            )?;
-        }));
-    }
+    // The body must keep a positive definite inertia once the driven wheels turn freely.
+    let rotors = crate::lang::rotor::check_tokens(
+        low,
+        arena,
+        (&settings.rotor_index, &settings.rotors),
+        &settings.driven,
+        &quote!(#p::FreeError),
+        &quote!(#p::RigidBody::inertia_cm(self)),
+    );
     quote!({
-        #(#fields)*
+        #fields
         #lets
         #(#signs)*
         #rotors
@@ -483,20 +437,4 @@ pub(super) fn slot_consts(ident: &syn::Ident, driven: &[String]) -> Vec<TokenStr
             }
         })
         .collect()
-}
-
-/// With literal values, the rule a driven rotor adds (`lang::rotor`'s): the body's inertia
-/// about its centre of mass stays positive definite as each wheel's axial moment is taken out.
-fn literal_driven_inertia(
-    cx: &crate::lang::ctxt::Ctxt,
-    arena: &Arena,
-    checked: &CheckedBody,
-    settings: &FreeSettings,
-) -> Option<()> {
-    let about = crate::lang::rotor::InertiaAbout {
-        body: "body",
-        point: "its centre of mass",
-    };
-    let inertia = &checked.body.props.inertia_cm;
-    crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, about)
 }

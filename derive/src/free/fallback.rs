@@ -7,71 +7,35 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::DeriveInput;
 
-use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::syntax::Item;
-
-/// `rotor_k` for each `rotor(...)` group of the `#[free]` attributes that has a `torque` key,
-/// k counting every rotor group: the driven rotors' slot names, read from the syntax alone so
-/// they stand even when the values have errors (the errors are the real expansion's to tell).
-fn driven_names(input: &DeriveInput) -> Vec<String> {
-    let attrs: Vec<&syn::Attribute> = input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::FREE))
-        .collect();
-    let cx = Ctxt::new();
-    let parsed = super::attr::parse(&cx, &attrs);
-    let _ = cx.check();
-    parsed
-        .items
-        .iter()
-        .filter_map(|item| match item {
-            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
-            _ => None,
-        })
-        .enumerate()
-        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
-        .map(|(k, _)| format!("rotor_{k}"))
-        .collect()
-}
+use crate::lang::stub::Stub;
 
 /// A stub `impl FreeDynamics` for `input`, and its slot consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let stub = quote!(::core::unimplemented!("the #[free] description has errors"));
-    let driven = driven_names(input);
-    let slots = super::expand::slot_consts(ident, &driven);
+    let stub = Stub::new(input, keys::FREE);
+    let body = &stub.body;
+    let driven = crate::lang::rotor::driven_names(input, keys::FREE, super::attr::parse);
+    let slots = super::expand::slot_consts(&input.ident, &driven);
     let n = precess_core::free::STATE_LEN + driven.len();
-    // The trait's default N without driven rotors, as a user writes it.
-    let dynamics = if driven.is_empty() {
-        quote!(#p::FreeDynamics)
-    } else {
-        quote!(#p::FreeDynamics<#n>)
-    };
-    quote! {
-        #[automatically_derived]
-        impl #impl_generics #ident #ty_generics #where_clause {
-            #(#slots)*
-        }
-
-
-        #[automatically_derived]
-        impl #impl_generics #dynamics for #ident #ty_generics #where_clause {
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::FreeDynamics), n, !driven.is_empty());
+    let consts = stub.inherent(quote!(#(#slots)*));
+    let dynamics = stub.trait_impl(
+        &dynamics,
+        quote! {
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = ::core::option::Option::None;
             const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven),*];
-            fn principal_cm(&self) -> #p::Principal { #stub }
-            fn gravity(&self) -> #p::Vector3<f64> { #stub }
-            fn free_rhs(&self, _: f64, _: &[f64; #n], _: &mut [f64; #n]) { #stub }
-            fn wrench(&self, _: f64, _: &[f64; #n]) -> #p::Wrench { #stub }
-            fn energy(&self, _: &[f64; #n]) -> f64 { #stub }
-            fn power(&self, _: f64, _: &[f64; #n]) -> f64 { #stub }
-            fn linear_momentum(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #stub }
-            fn angular_momentum_origin(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #stub }
-            fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> { #stub }
-        }
-    }
+            fn principal_cm(&self) -> #p::Principal { #body }
+            fn gravity(&self) -> #p::Vector3<f64> { #body }
+            fn free_rhs(&self, _: f64, _: &[f64; #n], _: &mut [f64; #n]) { #body }
+            fn wrench(&self, _: f64, _: &[f64; #n]) -> #p::Wrench { #body }
+            fn energy(&self, _: &[f64; #n]) -> f64 { #body }
+            fn power(&self, _: f64, _: &[f64; #n]) -> f64 { #body }
+            fn linear_momentum(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #body }
+            fn angular_momentum_origin(&self, _: &[f64; #n]) -> #p::Vector3<f64> { #body }
+            fn check_parameters(&self) -> ::core::result::Result<(), #p::FreeError> { #body }
+        },
+    );
+    quote!(#consts #dynamics)
 }

@@ -1,7 +1,12 @@
 //! The words of the attribute language, each written once: the attribute names, the parts
 //! with their keys, the keys of `#[top]`, `#[free]`, `#[body]` and `#[mechanism]`, and the
 //! "did you mean" suggestions over them. The checkers match against these constants and
-//! every error message lists them from here, so a new part or key is one edit.
+//! every error message lists them from here, so a new part or key is one edit. The messages
+//! for a word it does not know (and their "did you mean") are in `unknown.rs`.
+
+mod unknown;
+
+pub use unknown::{closest, did_you_mean, did_you_mean_part, known_key, unknown_key};
 
 /// `#[rigid(...)]`: the body's parts and pivot.
 pub const RIGID: &str = "rigid";
@@ -105,6 +110,20 @@ impl PartKeys {
             written
         };
         self.allowed().find(|&k| k == written)
+    }
+
+    /// The message for `written`, a key this part does not take: its keys, then a solid's
+    /// [`DENSITY`] (in place of its mass) and the explicit body's [`CENTER`] (its `at`).
+    pub fn unknown_key(&self, written: &str) -> String {
+        let keys: Vec<&str> = self.required.iter().chain(self.optional).copied().collect();
+        let mut others: Vec<(&[&str], String)> = Vec::new();
+        if self.solid {
+            others.push((&[DENSITY], format!("`{DENSITY}` in place of `{MASS}`")));
+        }
+        if self.kind == PartKind::Explicit {
+            others.push((&[CENTER], format!("`{CENTER}` for `{AT}`")));
+        }
+        unknown_key(written, &format!("for `{}`", self.name), &keys, &others)
     }
 }
 
@@ -398,105 +417,6 @@ pub const LAWS: &[(&str, &[&str])] = &[
     (STICK_SLIP, &[MU]),
 ];
 
-/// `; did you mean `…`?` when exactly one of `known` is close to `written` (see
-/// [`closest`]), else nothing: the suffix every "unknown part" and "unknown key" message
-/// ends with, for any table of this file (parts, part keys, `#[rigid]` and `#[top]` keys).
-pub fn did_you_mean<'k>(written: &str, known: impl IntoIterator<Item = &'k str>) -> String {
-    closest(written, known)
-        .map(|k| format!("; did you mean `{k}`?"))
-        .unwrap_or_default()
-}
-
-/// The one word of `known` nearest to `written`, if it is near enough to be a slip: at most
-/// one edit per three letters written (at least one), and no other word as near. A tie
-/// would be a guess, so it gives nothing.
-pub fn closest<'k>(written: &str, known: impl IntoIterator<Item = &'k str>) -> Option<&'k str> {
-    let limit = (written.chars().count() / 3).max(1);
-    let mut best: Option<(usize, &'k str)> = None;
-    let mut tied = false;
-    for k in known {
-        let d = edit_distance(written, k);
-        match best {
-            Some((b, w)) if d == b && w != k => tied = true,
-            Some((b, _)) if d >= b => {}
-            _ => {
-                best = Some((d, k));
-                tied = false;
-            }
-        }
-    }
-    match best {
-        Some((d, k)) if d <= limit && !tied => Some(k),
-        _ => None,
-    }
-}
-
-/// The number of single-letter insertions, deletions, substitutions and swaps of two
-/// neighbours that turn `a` into `b` (optimal string alignment; letters compared ignoring
-/// case, so `Mass` is one step from nothing but a capital).
-fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().flat_map(char::to_lowercase).collect();
-    let b: Vec<char> = b.chars().flat_map(char::to_lowercase).collect();
-    // rows[i][j]: the distance between the first i letters of a and the first j of b.
-    let mut rows = vec![vec![0usize; b.len() + 1]; a.len() + 1];
-    for (i, row) in rows.iter_mut().enumerate() {
-        if let Some(first) = row.first_mut() {
-            *first = i;
-        }
-    }
-    if let Some(first) = rows.first_mut() {
-        for (j, cell) in first.iter_mut().enumerate() {
-            *cell = j;
-        }
-    }
-    for i in 1..=a.len() {
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            let mut d = (rows[i - 1][j] + 1)
-                .min(rows[i][j - 1] + 1)
-                .min(rows[i - 1][j - 1] + cost);
-            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
-                d = d.min(rows[i - 2][j - 2] + 1);
-            }
-            rows[i][j] = d;
-        }
-    }
-    rows[a.len()][b.len()]
-}
-
-/// Every part name and alias.
-pub fn part_names() -> impl Iterator<Item = &'static str> {
-    PARTS
-        .iter()
-        .flat_map(|p| std::iter::once(p.name).chain(p.alias))
-}
-
-/// Words people write for a part that are not its name, each with the part meant. Spelling
-/// alone would mislead here (`cube` is one letter from `tube`).
-const PART_SYNONYMS: &[(&str, &str)] = &[
-    ("cube", "cuboid"),
-    ("block", "cuboid"),
-    ("brick", "cuboid"),
-    ("ball", "sphere"),
-    ("point", "particle"),
-    ("disc", "disk"),
-    ("hoop", "ring"),
-    ("pipe", "tube"),
-    ("stick", "rod"),
-    ("bar", "rod"),
-    ("spheroid", "ellipsoid"),
-];
-
-/// `; did you mean `…`?` for an unknown part: the part a known synonym stands for, else as
-/// [`did_you_mean`] over the part names and aliases.
-pub fn did_you_mean_part(written: &str) -> String {
-    let lower = written.to_lowercase();
-    match PART_SYNONYMS.iter().find(|(word, _)| *word == lower) {
-        Some((_, part)) => format!("; did you mean `{part}`?"),
-        None => did_you_mean(written, part_names()),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use precess_core::body::{Axis, Shape};
@@ -573,43 +493,5 @@ mod tests {
         assert_eq!(find_part("box").map(|p| p.kind), Some(PartKind::Cuboid));
         let body = find_part("body").map(|p| p.key(CENTER));
         assert_eq!(body, Some(Some(AT)));
-    }
-
-    #[test]
-    fn edit_distance_counts_each_kind_of_slip_once() {
-        assert_eq!(edit_distance("gravity", "gravity"), 0);
-        assert_eq!(edit_distance("gravty", "gravity"), 1); // deletion
-        assert_eq!(edit_distance("graavity", "gravity"), 1); // insertion
-        assert_eq!(edit_distance("gravitu", "gravity"), 1); // substitution
-        assert_eq!(edit_distance("garvity", "gravity"), 1); // swap of neighbours
-        assert_eq!(edit_distance("Radius", "radius"), 0);
-        assert_eq!(edit_distance("", "at"), 2);
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-    }
-
-    #[test]
-    fn a_suggestion_only_for_one_close_word() {
-        assert_eq!(closest("gravty", TOP_KEYS.iter().copied()), Some(GRAVITY));
-        assert_eq!(closest("dampnig", TOP_KEYS.iter().copied()), Some(DAMPING));
-        assert_eq!(closest("spher", part_names()), Some("sphere"));
-        assert_eq!(closest("bx", part_names()), Some("box"));
-        assert_eq!(closest("pivto", RIGID_KEYS.iter().copied()), Some(PIVOT));
-        // Far from every key: no guess.
-        assert_eq!(closest("friction", TOP_KEYS.iter().copied()), None);
-        assert_eq!(closest("torus", part_names()), None);
-        // Two keys equally near: no guess either.
-        assert_eq!(closest("ab", ["ac", "ad"]), None);
-        assert_eq!(
-            did_you_mean("radus", ["mass", "radius", "at"]),
-            "; did you mean `radius`?"
-        );
-        assert_eq!(did_you_mean("colour", ["mass", "radius", "at"]), "");
-        // A synonym is what was meant, not the nearest spelling.
-        assert_eq!(did_you_mean_part("cube"), "; did you mean `cuboid`?");
-        assert_eq!(did_you_mean_part("Ball"), "; did you mean `sphere`?");
-        assert_eq!(did_you_mean_part("spehre"), "; did you mean `sphere`?");
-        for (_, part) in PART_SYNONYMS {
-            assert!(find_part(part).is_some(), "{part} is no part");
-        }
     }
 }

@@ -11,6 +11,8 @@
 //! - `check`: the checker all values go through (one arena, one list of fields read);
 //!   `values` and `scalar`, the value language it reads (numbers, fields, arithmetic, vectors, tensors,
 //!   axes, rotations); `parts`, the part language of `#[rigid]` and a mechanism body.
+//! - `sign`: the sign rules on constant values (`Checker::positive`, `non_negative`), one
+//!   message for every attribute.
 //! - `units`: units on values (`2 cm`, `7.8 g/cm^3`), attached to what they follow before
 //!   syn reads a value; `dim`, the dimensions each key's values are checked against.
 //! - `expansion`: what every expansion reads; `symbols`, the lowering of the arena's
@@ -21,6 +23,7 @@
 //!   against the scene's state and fields and emitted as `<Name>Variational` in one place.
 //! - `surface`: the one reader of a rolling surface, `#[contact(surface = ..)]`'s and a
 //!   wheel's `rolls = ..`.
+//! - `stub`: what the stubs emitted beside the errors are made of, for every attribute.
 //! - `private`: the one hidden path, `::precess::__private`, generated code names precess
 //!   through.
 
@@ -34,6 +37,8 @@ pub mod parts;
 pub mod private;
 pub mod rotor;
 pub mod scalar;
+pub mod sign;
+pub mod stub;
 pub mod surface;
 pub mod symbols;
 pub mod syntax;

@@ -83,31 +83,12 @@ impl Checker<'_> {
                 continue;
             }
             let Some(key) = table.key(&written) else {
-                let allowed: Vec<&str> = table.allowed().collect();
-                // A solid's density is listed with the mass it stands for.
-                let listed: Vec<&str> = allowed
-                    .iter()
-                    .filter(|&&k| k != keys::DENSITY)
-                    .map(|&k| match k {
-                        keys::MASS if table.solid => "mass (or density)",
-                        k => k,
-                    })
-                    .collect();
                 // The explicit body's alias is a key one may have meant too.
                 let alias = (table.kind == keys::PartKind::Explicit).then_some(keys::CENTER);
-                let known = allowed.iter().copied().chain(alias);
-                let near = keys::closest(&written, known.clone());
+                let near = keys::closest(&written, table.allowed().chain(alias));
                 suggested.extend(near.and_then(|k| table.key(k)));
-                self.cx.error_spanned_by(
-                    &kv.key,
-                    format!(
-                        "unknown key `{}` for `{}`: allowed keys are {}{}",
-                        kv.key,
-                        table.name,
-                        listed.join(", "),
-                        keys::did_you_mean(&written, known)
-                    ),
-                );
+                self.cx
+                    .error_spanned_by(&kv.key, table.unknown_key(&written));
                 ok = false;
                 continue;
             };
@@ -369,15 +350,9 @@ impl Checker<'_> {
     /// The mass ρ V of a solid; a density written as a number must be positive (one of
     /// fields is checked with the mass it gives, at run time).
     fn density_mass(&mut self, tokens: &Expr, rho: ExprId, volume: ExprId) -> Option<ExprId> {
-        if self.arena.free_symbols(rho).is_empty() {
-            let value = self.arena.eval(rho, &[]);
-            if value.is_nan() || value <= 0.0 {
-                self.cx
-                    .error_spanned_by(tokens, format!("`density` must be positive, got {value}"));
-                return None;
-            }
-        }
-        Some(self.arena.mul(rho, volume))
+        let what = format!("`{}`", keys::DENSITY);
+        self.positive_constant(tokens, rho, &what)
+            .then(|| self.arena.mul(rho, volume))
     }
 }
 

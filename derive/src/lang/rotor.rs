@@ -5,19 +5,21 @@
 //! adds: a positive inertia and a non-zero axis, checked now for literals and by
 //! `check_parameters` at run time for fields.
 
-use precess_core::codegen::Emitted;
 use precess_core::rigid::Rotor;
-use precess_core::sym::{Arena, ExprId};
+use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
-use quote::quote;
-use syn::{Expr, Ident};
+use quote::{ToTokens, quote};
+use syn::{Attribute, DeriveInput, Expr, Ident};
 
 use crate::lang::check::Checker;
 use crate::lang::ctxt::Ctxt;
 use crate::lang::keys::{self, ROTOR_KEYS};
-use crate::lang::symbols::Lowering;
-use crate::lang::syntax::KeyValue;
+use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::units::Dim;
+
+mod checks;
+
+pub use checks::{InertiaAbout, check_tokens, literal_driven_inertia};
 
 /// An angular rate, rad/s (`rpm`, `rev/s`, `rad/s`).
 const RATE: Dim = Dim::ANGULAR_RATE;
@@ -31,6 +33,17 @@ pub fn form() -> String {
         keys::INERTIA,
         keys::RATE
     )
+}
+
+/// A rotor group as a message for an unknown key of the attribute lists it
+/// (`keys::unknown_key`'s `others`): its name, and its form with every key it takes.
+pub fn listed(driven: bool) -> (&'static [&'static str], String) {
+    let form = format!(
+        "a rotor `{}({})`",
+        keys::ROTOR,
+        allowed_keys(driven).join(", ")
+    );
+    (&[keys::ROTOR], form)
 }
 
 /// The keys a rotor takes where `driven` rotors are allowed (`#[free]`) or not (`#[top]`:
@@ -77,15 +90,9 @@ pub fn check(
     let mut ok = true;
     for KeyValue { key, value } in kvs {
         let Some(at) = ROTOR_KEYS.iter().position(|&k| key == k) else {
-            ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` for `{}` in {within}: allowed keys are {}{}",
-                    keys::ROTOR,
-                    allowed_keys(driven).join(", "),
-                    keys::did_you_mean(&key.to_string(), allowed_keys(driven).iter().copied())
-                ),
-            );
+            let place = format!("for `{}` in {within}", keys::ROTOR);
+            let message = keys::unknown_key(key, &place, allowed_keys(driven), &[]);
+            ck.cx.error_spanned_by(key, message);
             ok = false;
             continue;
         };
@@ -172,7 +179,12 @@ pub fn check(
         return None;
     };
     let axis = ck.expecting(Dim::NONE, keys::AXIS, |ck| rotor_axis(ck, axis));
-    let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| positive(ck, inertia));
+    // A wheel without inertia carries no momentum; a negative one is unphysical.
+    let what = format!("the rotor's `{}`", keys::INERTIA);
+    let why = Some("the wheel's moment of inertia about its axis, kg m^2");
+    let inertia_value = ck.expecting(Dim::INERTIA, keys::INERTIA, |ck| {
+        ck.positive(inertia, &what, why)
+    });
     if let Some(torque) = torque {
         let path = motor(ck, torque);
         return Some(Checked::Driven(Box::new(Driven {
@@ -236,127 +248,39 @@ fn rotor_axis(ck: &mut Checker, value: &Expr) -> Option<[ExprId; 3]> {
     Some(axis)
 }
 
-/// The axial moment, positive when a literal: a wheel without inertia carries no momentum,
-/// a negative one is unphysical.
-fn positive(ck: &mut Checker, value: &Expr) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if let Some(r) = ck.arena.as_rational(v)
-        && (r.is_negative() || r.is_zero())
-    {
-        ck.cx.error_spanned_by(
-            value,
-            format!(
-                "the rotor's `{}` is {}: it must be positive (the wheel's moment of inertia about its axis, kg m^2)",
-                keys::INERTIA,
-                r.to_f64()
-            ),
-        );
-        return None;
-    }
-    Some(v)
+/// A scene's trait as a user writes it (`path`, a `TopDynamics` or `FreeDynamics` whose
+/// state length N defaults to the scene's without motors): `path` alone unless a rotor is
+/// `driven`, else `path<n>`.
+pub fn scene_trait(path: TokenStream, n: impl ToTokens, driven: bool) -> TokenStream {
+    if driven { quote!(#path<#n>) } else { path }
 }
 
-/// Statements for `check_parameters`: each rotor's inertia positive and axis non-zero for the
-/// current field values (all finite already), else `<error>::InvalidRotor`, with `error` the
-/// attribute's error enum (`FreeError`, `TopError`: both carry the variant); the rotors given
-/// as (index among every rotor declared, axis, inertia).
-pub fn check_tokens_indexed(
-    low: &Lowering,
-    arena: &precess_core::sym::Arena,
-    rotors: &[(usize, [ExprId; 3], ExprId)],
-    error: &TokenStream,
-) -> TokenStream {
-    let values: Vec<ExprId> = rotors
+/// `rotor_k` for each `rotor(...)` group of the `#[attribute]` attributes (read with `parse`,
+/// the attribute's own parser) that has a `torque` key, k counting every rotor group: the
+/// driven rotors' slot names, read from the syntax alone so the stubs emitted beside the
+/// errors name them even when the values have errors (those are the expansion's to tell).
+pub fn driven_names(
+    input: &DeriveInput,
+    attribute: &str,
+    parse: fn(&Ctxt, &[&Attribute]) -> Parsed<Item>,
+) -> Vec<String> {
+    let attrs: Vec<&Attribute> = input
+        .attrs
         .iter()
-        .flat_map(|&(_, axis, inertia)| std::iter::once(inertia).chain(axis))
+        .filter(|a| a.path().is_ident(attribute))
         .collect();
-    if values.is_empty() {
-        return TokenStream::new();
-    }
-    let Emitted { lets, outputs } = low.lower(arena, &values);
-    let checks = outputs.chunks(4).zip(rotors).map(|(o, &(k, _, _))| {
-        let (j, a) = (&o[0], &o[1..]);
-        quote! {
-            let __j: f64 = #j;
-            let __a: f64 = (#((#a) * (#a))+*).sqrt();
-            if !(__j.is_finite() && __j > 0.0 && __a.is_finite() && __a > 0.0) {
-                return ::core::result::Result::Err(#error::InvalidRotor {
-                    rotor: #k,
-                    inertia: __j,
-                    axis_norm: __a,
-                });
-            }
-        }
-    });
-    quote!({ #lets #(#checks)* })
-}
-
-/// Where the driven-rotor rule of [`literal_driven_inertia`] is read: the scene's word for
-/// the body (`"top"`, `"body"`) and the point its inertia is about (`"the pivot"`, `"its
-/// centre of mass"`), for the message.
-pub struct InertiaAbout<'a> {
-    /// The scene's word for the body.
-    pub body: &'a str,
-    /// The point the inertia is about.
-    pub point: &'a str,
-}
-
-/// With literal values, the rule driven rotors add in every scene that has them: the body's
-/// `inertia` (about `about.point`) stays positive definite as each wheel's axial moment is
-/// taken out, I − Σ J â âᵀ. An error spanned on the first rotor's `inertia` that breaks it;
-/// `None` after recording it. A value that reads a field is left to the generated run-time
-/// check.
-pub fn literal_driven_inertia(
-    cx: &Ctxt,
-    arena: &Arena,
-    inertia: &[[ExprId; 3]; 3],
-    driven: &[(usize, Driven)],
-    about: InertiaAbout<'_>,
-) -> Option<()> {
-    let constant = |e: ExprId| arena.free_symbols(e).is_empty().then(|| arena.eval(e, &[]));
-    let literal = || {
-        let mut m = precess_core::nalgebra::Matrix3::zeros();
-        for i in 0..3 {
-            for j in 0..3 {
-                m[(i, j)] = constant(inertia[i][j])?;
-            }
-        }
-        let mut wheels = Vec::new();
-        for (_, d) in driven {
-            let axis = [
-                constant(d.axis[0])?,
-                constant(d.axis[1])?,
-                constant(d.axis[2])?,
-            ];
-            wheels.push((axis, constant(d.inertia)?));
-        }
-        Some((m, wheels))
-    };
-    let Some((m, wheels)) = literal() else {
-        return Some(());
-    };
-    let Some((k, smallest)) = precess_core::rigid::first_singular_driven(&m, &wheels) else {
-        return Some(());
-    };
-    let (declared, d) = &driven[k];
-    let InertiaAbout { body, point } = about;
-    cx.error_spanned_by(
-        &d.inertia_expr,
-        format!(
-            "rotor {declared}'s `inertia` is too large for the {body}: with its driven wheels turning freely the {body} keeps I − Σ J â âᵀ about {point}, whose smallest principal moment here is {} kg m^2; it must be positive beyond rounding (a wheel's J below the {body}'s own moment about the wheel's axis by more than {:.0e} of its largest moment)",
-            readable(smallest),
-            precess_core::rigid::DRIVEN_ROUNDING
-        ),
-    );
-    None
-}
-
-/// A moment as the messages print it: four decimals where that shows it (`-0.0100`), else
-/// four significant digits in exponent form (`4.441e-16`, where `{:.4}` printed `0.0000`).
-fn readable(x: f64) -> String {
-    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
-        format!("{x:.4}")
-    } else {
-        format!("{x:.3e}")
-    }
+    let cx = Ctxt::new();
+    let parsed = parse(&cx, &attrs);
+    let _ = cx.check();
+    parsed
+        .items
+        .iter()
+        .filter_map(|item| match item {
+            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
+            _ => None,
+        })
+        .enumerate()
+        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
+        .map(|(k, _)| format!("rotor_{k}"))
+        .collect()
 }

@@ -149,15 +149,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
             ok = false;
             continue;
         };
-        let Some(&k) = allowed.iter().find(|&&k| key == k) else {
-            ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` for `{written}`: allowed keys are {}{}",
-                    allowed.join(", "),
-                    keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                ),
-            );
+        let Some(k) = keys::known_key(ck.cx, key, &format!("for `{written}`"), &allowed) else {
             ok = false;
             continue;
         };
@@ -210,7 +202,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
     let of = |key: &str| format!("`{key}` of `{written}`");
     let length = |ck: &mut Checker, key: &'static str| -> Option<ExprId> {
         let v = value_of(key)?;
-        ck.expecting(Dim::LENGTH, key, |ck| positive(ck, v, &of(key)))
+        ck.expecting(Dim::LENGTH, key, |ck| ck.positive(v, &of(key), None))
     };
     let surface = match kind {
         "sphere" | keys::DISK_RIM => {
@@ -230,7 +222,7 @@ pub fn read_surface(ck: &mut Checker, value: &Expr, place: Place) -> Option<Read
         "ellipsoid" => {
             let v = value_of(keys::SEMI_AXES)?;
             let semi_axes = ck.expecting(Dim::LENGTH, keys::SEMI_AXES, |ck| {
-                positive_vector(ck, v, &of(keys::SEMI_AXES))
+                ck.positive_vector(v, &of(keys::SEMI_AXES))
             })?;
             Surface::Ellipsoid {
                 center: place_at,
@@ -266,44 +258,6 @@ fn path_ident(e: &Expr) -> Option<&Ident> {
         Expr::Path(p) if p.qself.is_none() => p.path.get_ident(),
         _ => None,
     }
-}
-
-/// A size that must be positive where it is a constant (a field is checked at run time).
-fn positive(ck: &mut Checker, value: &Expr, what: &str) -> Option<ExprId> {
-    let v = ck.scalar(value)?;
-    if ck.arena.free_symbols(v).is_empty() {
-        let x = ck.arena.eval(v, &[]);
-        if x.is_nan() || x <= 0.0 {
-            ck.cx
-                .error_spanned_by(value, format!("{what} is {x}: it must be positive"));
-            return None;
-        }
-    }
-    Some(v)
-}
-
-/// `[a, b, c]`, each positive where it is a literal, the error on the element.
-fn positive_vector(ck: &mut Checker, value: &Expr, what: &str) -> Option<[ExprId; 3]> {
-    let v = ck.vector(value)?;
-    let mut ok = true;
-    if let Expr::Array(a) = value {
-        for (k, (e, tokens)) in v.iter().zip(&a.elems).enumerate() {
-            if let Some(r) = ck.arena.as_rational(*e)
-                && (r.is_negative() || r.is_zero())
-            {
-                ck.cx.error_spanned_by(
-                    tokens,
-                    format!(
-                        "{what} has {} in place {}: each must be positive",
-                        r.to_f64(),
-                        k + 1
-                    ),
-                );
-                ok = false;
-            }
-        }
-    }
-    ok.then_some(v)
 }
 
 /// A torus's tube no thicker than its radius: with r > R the tube crosses the axis and the

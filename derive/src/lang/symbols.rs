@@ -10,7 +10,7 @@ use precess_core::codegen::{Emitted, Op, Program};
 use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::quote;
-use syn::Ident;
+use syn::{Ident, LitStr};
 
 use crate::lang::ctxt::Ctxt;
 
@@ -125,6 +125,35 @@ impl<'a> Lowering<'a> {
     }
 }
 
+/// The statements some outputs need bound first, given the outputs.
+pub type Prelude<'a> = dyn Fn(&Arena, &[ExprId]) -> TokenStream + 'a;
+
+/// Lowers one method's outputs over a scene's ODE state array `y` (a free body's, a
+/// contact's), after the statements `prelude` binds for them.
+pub struct StateMethod<'a> {
+    /// How the fields and the rest are read.
+    pub low: &'a Lowering<'a>,
+    /// The state's symbols, entry k read from `y[k]`.
+    pub state: &'a [ExprId],
+    /// The statements the outputs need first (a free body's user calls), if any.
+    pub prelude: Option<&'a Prelude<'a>>,
+}
+
+impl StateMethod<'_> {
+    /// `{ prelude; lets; build(outputs) }`.
+    pub fn body(
+        &self,
+        arena: &Arena,
+        outputs: &[ExprId],
+        build: impl FnOnce(&[TokenStream]) -> TokenStream,
+    ) -> TokenStream {
+        let pre = self.prelude.map(|f| f(arena, outputs)).unwrap_or_default();
+        let Emitted { lets, outputs } = self.low.lower_state(arena, outputs, self.state);
+        let out = build(&outputs);
+        quote!({ #pre #lets #out })
+    }
+}
+
 /// The struct fields read as the arena's parameters, in the order first used.
 #[derive(Default)]
 pub struct FieldParameters {
@@ -147,6 +176,28 @@ impl FieldParameters {
     /// The fields read, in the order first used.
     pub fn fields(&self) -> impl Iterator<Item = &Ident> + '_ {
         self.fields.iter().map(|(_, f)| f)
+    }
+
+    /// Statements refusing each field read that is NaN or ±∞, by name, before any rule reads
+    /// it (a NaN would pass some rules unnoticed: an inertia entry cancelled in a sum):
+    /// `error(name, value)` is the scene's error, an expression, for the field `name` (a
+    /// string literal) of value `value`.
+    pub fn finite_checks(
+        &self,
+        error: impl Fn(&LitStr, &TokenStream) -> TokenStream,
+    ) -> TokenStream {
+        self.fields()
+            .map(|f| {
+                let name = LitStr::new(&f.to_string(), f.span());
+                let value = quote!(self.#f);
+                let error = error(&name, &value);
+                quote! {
+                    if !#value.is_finite() {
+                        return ::core::result::Result::Err(#error);
+                    }
+                }
+            })
+            .collect()
     }
 
     /// The map reading each field as `self.field`.

@@ -99,9 +99,12 @@ fn check(cx: &Ctxt, value: &Expr, user_fns: &[(&str, bool)]) -> Option<usize> {
 /// when `rhs` reads it), the other symbols read through `symbols` after `prelude`
 /// (statements binding what those read, which may use `self`). Its `Workspace` is the
 /// emitted rows (`Vec<[f64; K + 1]>`), its `coefficients_into` the emitted recurrences and
-/// its `coefficients_extended_into` their double-double low orders (`Tape::extended_tokens`). A symbol the
-/// map does not know is an internal error spanned on `ident`, as in `symbols.rs`. The one
-/// entry point of every scene's `taylor = K`.
+/// its `coefficients_extended_into` their double-double low orders (`Tape::extended_tokens`).
+/// `check_parameters` is the body of `TaylorSystem::check_parameters`, an expression of type
+/// `Result<(), OdeError>` reading `self` (a scene's own checks of its field values, which
+/// the Taylor integrator calls once when it is built or restarted), `Ok(())` if `None`. A
+/// symbol the map does not know is an internal error spanned on `ident`, as in `symbols.rs`.
+/// The one entry point of every scene's `taylor = K`.
 #[allow(clippy::too_many_arguments)]
 pub fn expand(
     cx: &Ctxt,
@@ -112,26 +115,10 @@ pub fn expand(
     rhs: &[ExprId],
     prelude: TokenStream,
     order: usize,
+    check_parameters: Option<TokenStream>,
 ) -> TokenStream {
-    let ok = quote!(::core::result::Result::Ok(()));
-    expand_checked(cx, ident, arena, symbols, state, rhs, prelude, order, ok)
-}
-
-/// [`expand`] with the body of `TaylorSystem::check_parameters`: an expression of type
-/// `Result<(), OdeError>` reading `self` (a scene's own checks of its field values, which
-/// the Taylor integrator calls once when it is built or restarted).
-#[allow(clippy::too_many_arguments)]
-pub fn expand_checked(
-    cx: &Ctxt,
-    ident: &Ident,
-    arena: &Arena,
-    symbols: &SymbolTokens,
-    state: &[ExprId],
-    rhs: &[ExprId],
-    prelude: TokenStream,
-    order: usize,
-    check_parameters: TokenStream,
-) -> TokenStream {
+    let check_parameters =
+        check_parameters.unwrap_or_else(|| quote!(::core::result::Result::Ok(())));
     let p = Private;
     let n = state.len();
     let state_exprs = state;

@@ -299,3 +299,94 @@ fn a_repeated_setting_names_its_attribute() {
         "{mechanism}"
     );
 }
+
+/// An attribute's items expanded on a struct that declares it, as text.
+type Expand = dyn Fn(TokenStream) -> String;
+
+/// The keys and the groups (each backticked `name(` after the keys) that the unknown-key
+/// message in `code` lists.
+fn listed(code: &str) -> (Vec<String>, Vec<String>) {
+    let start = code
+        .find("allowed keys are ")
+        .map_or(code.len(), |i| i + 17);
+    let message = &code[start..];
+    let message = &message[..message.find('"').unwrap_or(message.len())];
+    let message = message.split("; did you mean").next().unwrap_or(message);
+    let (keys, others) = message.split_once(", or ").unwrap_or((message, ""));
+    let keys = keys.split(", ").map(str::to_owned).collect();
+    let groups = others
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .filter_map(|form| form.split_once('(').map(|(name, _)| name.to_owned()))
+        .collect();
+    (keys, groups)
+}
+
+/// The unknown-key message of each attribute lists only what the attribute takes: every key
+/// it names, and every group, written in that attribute, is no unknown key or group (its
+/// value may be wrong: that is another error).
+#[test]
+fn every_key_and_group_an_unknown_key_message_lists_is_taken() {
+    let top = |items: TokenStream| {
+        rigid_body(quote! {
+            #[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.1]), pivot = [0.0, 0.0, 0.0])]
+            #[top(#items)]
+            struct Top;
+        })
+    };
+    let free = |items: TokenStream| {
+        rigid_body(quote! {
+            #[rigid(sphere(mass = 1.0, radius = 0.1))]
+            #[free(#items)]
+            struct Body;
+        })
+    };
+    let contact = |items: TokenStream| {
+        rigid_body(quote! {
+            #[rigid(sphere(mass = 1.0, radius = 0.1))]
+            #[contact(#items)]
+            struct Ball;
+        })
+    };
+    let pendulum = |items: TokenStream| {
+        mechanism(quote! {
+            #[mechanism(#items)]
+            #[body(arm, parent = ground, joint = revolute(axis = x), q = theta,
+                   parts(rod(mass = 1.0, length = 1.0, axis = z, at = [0.0, 0.0, -0.5])))]
+            struct Pendulum;
+        })
+    };
+    let attributes: [(&str, &Expand, usize); 4] = [
+        ("top", &top, 2),
+        ("free", &free, 3),
+        ("contact", &contact, 0),
+        ("mechanism", &pendulum, 1),
+    ];
+    for (attribute, expand, group_count) in attributes {
+        let code = expand(quote!(colour = 1.0));
+        assert!(code.contains("unknown key `colour`"), "{attribute}: {code}");
+        let (keys, groups) = listed(&code);
+        assert!(keys.len() >= 3, "{attribute}: {keys:?}");
+        assert_eq!(groups.len(), group_count, "{attribute}: {groups:?}");
+        for key in &keys {
+            let k = quote::format_ident!("{key}");
+            let code = expand(quote!(#k = 1.0));
+            assert!(
+                !code.contains(&format!("unknown key `{key}`")),
+                "{attribute}, {key}: {code}"
+            );
+        }
+        for group in &groups {
+            let g = quote::format_ident!("{group}");
+            let code = expand(quote!(#g()));
+            let unknown = [
+                format!("unknown key `{group}`"),
+                format!("unknown group `{group}("),
+            ];
+            for u in unknown {
+                assert!(!code.contains(&u), "{attribute}, {group}: {code}");
+            }
+        }
+    }
+}

@@ -37,6 +37,15 @@ pub fn form() -> String {
     format!("`{VARIATIONAL}({TANGENTS} = m, {SENSITIVITIES} = [field, …])`")
 }
 
+/// The group as a message for an unknown key of the attribute lists it
+/// (`keys::unknown_key`'s `others`): its name, and its form.
+pub fn listed() -> (&'static [&'static str], String) {
+    (
+        &[VARIATIONAL],
+        format!("the variational equations {}", form()),
+    )
+}
+
 /// What the checks need of the scene the group belongs to.
 pub struct Scene<'a> {
     /// The scene's possessive in messages, `the top's`.
@@ -94,14 +103,8 @@ pub fn check(
         } else if key == SENSITIVITIES {
             sensitivities = sensitivity_fields(ck, value, scene.whose);
         } else {
-            cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` in `{VARIATIONAL}(...)`: expected {}{}",
-                    KEYS.join(", "),
-                    keys::did_you_mean(&key.to_string(), KEYS.iter().copied())
-                ),
-            );
+            let place = format!("in `{VARIATIONAL}(...)`");
+            cx.error_spanned_by(key, keys::unknown_key(key, &place, KEYS, &[]));
         }
     }
     let tangents = tangents.unwrap_or(scene.n);

@@ -153,23 +153,12 @@ fn mechanism_settings<'s>(
             Some(keys::ROUTE) => route = ck.route(value),
             // Read once the bodies are known.
             Some(keys::UP | keys::SPEEDS) => {}
-            _ => ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}, or the variational equations {}({}){}",
-                    keys::MECHANISM,
-                    keys::MECHANISM_KEYS.join(", "),
-                    crate::lang::variational::VARIATIONAL,
-                    crate::lang::variational::KEYS.join(", "),
-                    keys::did_you_mean(
-                        &key.to_string(),
-                        keys::MECHANISM_KEYS
-                            .iter()
-                            .copied()
-                            .chain([crate::lang::variational::VARIATIONAL])
-                    )
-                ),
-            ),
+            _ => {
+                let groups = [crate::lang::variational::listed()];
+                let place = format!("in {in_mechanism}");
+                let message = keys::unknown_key(key, &place, keys::MECHANISM_KEYS, &groups);
+                ck.cx.error_spanned_by(key, message);
+            }
         }
     }
     (gravity, route, rolling)
@@ -237,12 +226,9 @@ impl Checker<'_> {
                 LinkItem::Item(Item::Group { name, .. }) => self.cx.error_spanned_by(
                     name,
                     format!(
-                        "unknown group `{name}(...)` in `#[{}]`: expected `{}(...)` or `{}({} = .., {} = ..)`{}",
+                        "unknown group `{name}(...)` in `#[{}]`: expected {}{}",
                         keys::LINK,
-                        keys::PARTS_GROUP,
-                        keys::SPRING,
-                        keys::STIFFNESS,
-                        keys::REST,
+                        link_groups(),
                         keys::did_you_mean(&name.to_string(), known())
                     ),
                 ),
@@ -259,18 +245,12 @@ impl Checker<'_> {
                         keys::BODY_TORQUE => &mut k.body_torque,
                         keys::SPACE_TORQUE => &mut k.space_torque,
                         _ => {
-                            self.cx.error_spanned_by(
-                                &kv.key,
-                                format!(
-                                    "unknown key `{}` in `#[{}]`: expected {}, or the groups {}(...), {}(...){}",
-                                    kv.key,
-                                    keys::LINK,
-                                    keys::LINK_KEYS.join(", "),
-                                    keys::PARTS_GROUP,
-                                    keys::SPRING,
-                                    keys::did_you_mean(&kv.key.to_string(), known())
-                                ),
-                            );
+                            let place = format!("in `#[{}]`", keys::LINK);
+                            let groups =
+                                [(keys::LINK_GROUPS, format!("the groups {}", link_groups()))];
+                            let message =
+                                keys::unknown_key(&kv.key, &place, keys::LINK_KEYS, &groups);
+                            self.cx.error_spanned_by(&kv.key, message);
                             continue;
                         }
                     };
@@ -538,4 +518,15 @@ fn massless_as_unit(numeric: &Description<f64>) -> Description<f64> {
             v
         }
     })
+}
+
+/// The groups of `#[body(...)]` in their forms, as its messages list them.
+fn link_groups() -> String {
+    format!(
+        "`{}(...)` or `{}({} = .., {} = ..)`",
+        keys::PARTS_GROUP,
+        keys::SPRING,
+        keys::STIFFNESS,
+        keys::REST
+    )
 }

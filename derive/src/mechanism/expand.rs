@@ -15,7 +15,7 @@ use syn::{Ident, LitStr};
 
 use super::check::{CheckedMechanism, UserEffort};
 use crate::lang::ctxt::Ctxt;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::{FieldParameters, Lowering};
 use crate::lang::variational::VariationalKey;
@@ -38,17 +38,13 @@ pub fn expand(
     if let Some(rolling) = &checked.rolling {
         return rolling::expand(ex, checked, rolling);
     }
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let route = checked.route;
     let derivation = match checked.scene.derive(arena, route) {
         Ok(d) => d,
         Err(e) => {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the mechanism's equations of motion: {e}"),
-            );
+            cannot_derive(cx, ident, "the mechanism's equations of motion", &e);
             return None;
         }
     };
@@ -157,14 +153,7 @@ pub fn expand(
         .coordinates
         .iter()
         .map(|c| LitStr::new(&c.to_string(), c.span()));
-    let consts = checked.coordinates.iter().enumerate().map(|(k, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        let doc = format!("The index of the coordinate `{c}` in q and q̇ (and of q̈).");
-        quote! {
-            #[doc = #doc]
-            pub const #upper: usize = #k;
-        }
-    });
+    let consts = coordinate_consts(checked, "q and q̇ (and of q̈)");
     let check_parameters = super::parameters::method(&low, arena, checked);
     let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
     let route_name = derivation.route.name();
@@ -272,6 +261,20 @@ fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
     read
 }
 
+/// A const per coordinate, named after it in capitals, its index in `arrays` (the arrays the
+/// trait's methods take, `q and q̇`).
+pub(super) fn coordinate_consts(checked: &CheckedMechanism, arrays: &str) -> Vec<TokenStream> {
+    let consts = checked.coordinates.iter().enumerate().map(|(k, c)| {
+        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
+        let doc = format!("The index of the coordinate `{c}` in {arrays}.");
+        quote! {
+            #[doc = #doc]
+            pub const #upper: usize = #k;
+        }
+    });
+    consts.collect()
+}
+
 /// Lowers one method's outputs over `t`, `q` and `qdot`.
 pub(super) struct Method<'a> {
     pub(super) low: &'a Lowering<'a>,
@@ -326,7 +329,7 @@ fn taylor_system(
     let (state, rhs) = derivation.first_order_system();
     let symbols = parameters.tokens();
     let (p, n) = (Private, state.len() / 2);
-    crate::lang::taylor::expand_checked(
+    crate::lang::taylor::expand(
         cx,
         ident,
         arena,
@@ -335,7 +338,7 @@ fn taylor_system(
         &rhs,
         TokenStream::new(),
         order,
-        quote!(#p::MechanismDynamics::<#n>::check_parameters(self)
-            .map_err(#p::MechanismError::into_ode_error)),
+        Some(quote!(#p::MechanismDynamics::<#n>::check_parameters(self)
+            .map_err(#p::MechanismError::into_ode_error))),
     )
 }

@@ -7,7 +7,8 @@
 //! could be read, for every N (the uses then fix it).
 
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
+use syn::parse::Parse;
 use syn::punctuated::Punctuated;
 use syn::{DeriveInput, Expr, Ident, Token};
 
@@ -15,6 +16,7 @@ use super::attr::LinkItem;
 use super::joint::path_ident;
 use crate::lang::keys;
 use crate::lang::private::Private;
+use crate::lang::stub::hidden_const;
 use crate::lang::syntax::KeyValue;
 
 /// The stubs for `input`; nothing for a generic type (its one error is that it is generic).
@@ -40,13 +42,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
         named.push(upper);
         new
     });
-    let consts = unique.map(|(k, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        quote! {
-            #[doc(hidden)]
-            pub const #upper: usize = #k;
-        }
-    });
+    let consts = unique.map(|(k, c)| hidden_const(&c.to_string(), c.span(), k));
     let stub = quote!(::core::unimplemented!(
         "the #[derive(Mechanism)] description has errors"
     ));
@@ -105,15 +101,7 @@ pub fn stub(input: &DeriveInput) -> TokenStream {
 /// whatever else is wrong with the attributes.
 fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
     let mut names: Vec<Ident> = Vec::new();
-    let lists = input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::LINK))
-        .filter_map(|a| {
-            a.parse_args_with(Punctuated::<LinkItem, Token![,]>::parse_terminated)
-                .ok()
-        });
-    for list in lists {
+    for list in lists::<LinkItem>(input, keys::LINK) {
         for item in list {
             let Some(kv) = item.setting() else {
                 continue;
@@ -134,7 +122,7 @@ fn written_coordinates(input: &DeriveInput) -> Vec<Ident> {
 /// True if a `#[body(...)]` declares `rolls = ..`: the mechanism's impl is then
 /// `RollingDynamics`, not `MechanismDynamics`.
 fn rolls(input: &DeriveInput) -> bool {
-    link_lists(input).any(|list| {
+    lists::<LinkItem>(input, keys::LINK).any(|list| {
         list.iter()
             .any(|item| item.setting().is_some_and(|kv| kv.key == keys::ROLLS))
     })
@@ -142,14 +130,7 @@ fn rolls(input: &DeriveInput) -> bool {
 
 /// The number of names in `speeds = [..]` of `#[mechanism(...)]`, if written.
 fn written_speeds(input: &DeriveInput) -> Option<usize> {
-    input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::MECHANISM))
-        .filter_map(|a| {
-            a.parse_args_with(Punctuated::<KeyValue, Token![,]>::parse_terminated)
-                .ok()
-        })
+    lists::<KeyValue>(input, keys::MECHANISM)
         .flatten()
         .find(|kv| kv.key == keys::SPEEDS)
         .and_then(|kv| match kv.value {
@@ -208,14 +189,18 @@ fn rolling_stub(
     }
 }
 
-/// The item lists of the `#[body(...)]` attributes that parse.
-fn link_lists(input: &DeriveInput) -> impl Iterator<Item = Vec<LinkItem>> + '_ {
+/// The item lists of the `#[attribute(...)]` attributes that parse as lists of `T`, read
+/// apart from the checks so the stubs stand whatever else is wrong.
+fn lists<'a, T: Parse>(
+    input: &'a DeriveInput,
+    attribute: &'a str,
+) -> impl Iterator<Item = Vec<T>> + 'a {
     input
         .attrs
         .iter()
-        .filter(|a| a.path().is_ident(keys::LINK))
+        .filter(move |a| a.path().is_ident(attribute))
         .filter_map(|a| {
-            a.parse_args_with(Punctuated::<LinkItem, Token![,]>::parse_terminated)
+            a.parse_args_with(Punctuated::<T, Token![,]>::parse_terminated)
                 .ok()
         })
         .map(|list| list.into_iter().collect())

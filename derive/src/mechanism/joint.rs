@@ -86,15 +86,8 @@ impl Checker<'_> {
                 ok = false;
                 continue;
             };
-            if !allowed.iter().any(|k| key == k) {
-                self.cx.error_spanned_by(
-                    key,
-                    format!(
-                        "unknown key `{key}` for `{kind_name}`: allowed keys are {}{}",
-                        allowed.join(", "),
-                        keys::did_you_mean(&key.to_string(), allowed.iter().copied())
-                    ),
-                );
+            let place = format!("for `{kind_name}`");
+            if keys::known_key(self.cx, key, &place, allowed).is_none() {
                 ok = false;
                 continue;
             }

@@ -79,7 +79,8 @@ impl Checker<'_> {
                 Some(values) => {
                     for ((load, v), c) in loads.iter_mut().zip(values).zip(coordinates) {
                         load.damper = self.expecting(c.damper(), keys::DAMPER, |ck| {
-                            ck.non_negative(v, keys::DAMPER)
+                            let why = Some("a negative one feeds energy in");
+                            ck.non_negative(v, &format!("`{}`", keys::DAMPER), why)
                         });
                         ok &= load.damper.is_some();
                     }
@@ -107,18 +108,10 @@ impl Checker<'_> {
                     keys::STIFFNESS => &mut stiffness,
                     keys::REST => &mut rest,
                     _ => {
+                        let place = format!("for `{}`", keys::SPRING);
                         let known = [keys::STIFFNESS, keys::REST];
-                        self.cx.error_spanned_by(
-                            &kv.key,
-                            format!(
-                                "unknown key `{}` for `{}`: allowed keys are {}, {}{}",
-                                kv.key,
-                                keys::SPRING,
-                                keys::STIFFNESS,
-                                keys::REST,
-                                keys::did_you_mean(&kv.key.to_string(), known)
-                            ),
-                        );
+                        let message = keys::unknown_key(&kv.key, &place, &known, &[]);
+                        self.cx.error_spanned_by(&kv.key, message);
                         ok = false;
                         continue;
                     }
@@ -159,7 +152,9 @@ impl Checker<'_> {
                                     c.stiffness(),
                                     c.stiffness_name(),
                                     keys::STIFFNESS,
-                                    |ck| ck.non_negative(kv, keys::STIFFNESS),
+                                    |ck| {
+                                        ck.non_negative(kv, &format!("`{}`", keys::STIFFNESS), None)
+                                    },
                                 );
                                 let rest = match (&rests, rest) {
                                     (Some(r), _) => r.get(i).and_then(|&r| {
@@ -203,21 +198,6 @@ impl Checker<'_> {
                 );
                 None
             }
-        }
-    }
-
-    /// A coefficient that is a literal must not be negative (a field's sign is the user's).
-    pub(super) fn non_negative(&mut self, e: &Expr, key: &str) -> Option<ExprId> {
-        let v = self.scalar(e)?;
-        match self.arena.as_rational(v) {
-            Some(r) if r.to_f64() < 0.0 => {
-                self.cx.error_spanned_by(
-                    e,
-                    format!("`{key}` must not be negative, got {}", r.to_f64()),
-                );
-                None
-            }
-            _ => Some(v),
         }
     }
 

@@ -10,8 +10,9 @@ use precess_core::codegen::Emitted;
 use precess_core::mechanism::rolling::WheelSurface;
 use precess_core::mechanism::{JointKind, MechanismScene};
 use precess_core::sym::{Arena, ExprId};
-use proc_macro2::TokenStream;
+use proc_macro2::{Span, TokenStream};
 use quote::quote;
+use syn::Ident;
 
 use super::check::CheckedMechanism;
 use crate::lang::private::Private;
@@ -97,6 +98,30 @@ struct Checks {
     tests: Vec<Test>,
 }
 
+/// A rule a value that reads a field is held to at run time.
+#[derive(Clone, Copy)]
+enum Rule {
+    /// Neither NaN nor ±∞.
+    Finite,
+    /// Zero or more.
+    NonNegative,
+    /// More than zero.
+    Positive,
+}
+
+impl Rule {
+    /// The test on `__v` that breaks the rule, and the `MechanismError` variant it returns.
+    fn refusal(self) -> (TokenStream, Ident) {
+        let (test, variant) = match self {
+            Rule::Finite => (quote!(!__v.is_finite()), "NonFiniteParameter"),
+            Rule::NonNegative => (quote!(__v < 0.0), "NegativeParameter"),
+            // Not `__v <= 0.0`: NaN is no positive value either.
+            Rule::Positive => (quote!(!(__v > 0.0)), "NonPositiveParameter"),
+        };
+        (test, Ident::new(variant, Span::call_site()))
+    }
+}
+
 /// Whether `e` reads a field (a literal was checked while expanding).
 fn reads_field(arena: &Arena, e: ExprId) -> bool {
     !arena.free_symbols(e).is_empty()
@@ -109,73 +134,50 @@ impl Checks {
         self.values.len() - 1
     }
 
+    /// A value that must be finite.
     fn finite(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
-        if reads_field(arena, e) {
-            let i = self.value(e);
-            self.finite_at(i, owner.to_owned(), quantity);
-        }
+        self.held(arena, owner, quantity, e, &[Rule::Finite]);
     }
 
-    /// The test that output `i` is finite.
-    fn finite_at(&mut self, i: usize, owner: String, quantity: String) {
-        self.tests.push(Box::new(move |o| {
-            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
-            quote! {{
-                let __v: f64 = #v;
-                if !__v.is_finite() {
-                    return ::core::result::Result::Err(#p::MechanismError::NonFiniteParameter {
-                        owner: ::std::string::String::from(#owner),
-                        quantity: ::std::string::String::from(#quantity),
-                        value: __v,
-                    });
-                }
-            }}
-        }));
-    }
-
+    /// A value that must be finite and not negative (a spring's stiffness, a damper).
     fn non_negative(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
-        if !reads_field(arena, e) {
-            return;
-        }
-        self.finite(arena, owner, quantity.clone(), e);
-        let i = self.values.len() - 1;
-        let owner = owner.to_owned();
-        self.tests.push(Box::new(move |o| {
-            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
-            quote! {{
-                let __v: f64 = #v;
-                if __v < 0.0 {
-                    return ::core::result::Result::Err(#p::MechanismError::NegativeParameter {
-                        owner: ::std::string::String::from(#owner),
-                        quantity: ::std::string::String::from(#quantity),
-                        value: __v,
-                    });
-                }
-            }}
-        }));
+        self.held(
+            arena,
+            owner,
+            quantity,
+            e,
+            &[Rule::Finite, Rule::NonNegative],
+        );
     }
 
     /// A value that must be positive (a rolling radius, an axle's squared length).
     fn positive(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId) {
+        self.held(arena, owner, quantity, e, &[Rule::Finite, Rule::Positive]);
+    }
+
+    /// The tests that `e`, when it reads a field, keeps each of `rules`, in order.
+    fn held(&mut self, arena: &Arena, owner: &str, quantity: String, e: ExprId, rules: &[Rule]) {
         if !reads_field(arena, e) {
             return;
         }
-        self.finite(arena, owner, quantity.clone(), e);
-        let i = self.values.len() - 1;
-        let owner = owner.to_owned();
-        self.tests.push(Box::new(move |o| {
-            let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
-            quote! {{
-                let __v: f64 = #v;
-                if !(__v > 0.0) {
-                    return ::core::result::Result::Err(#p::MechanismError::NonPositiveParameter {
-                        owner: ::std::string::String::from(#owner),
-                        quantity: ::std::string::String::from(#quantity),
-                        value: __v,
-                    });
-                }
-            }}
-        }));
+        let i = self.value(e);
+        for &rule in rules {
+            let (owner, quantity) = (owner.to_owned(), quantity.clone());
+            self.tests.push(Box::new(move |o| {
+                let (p, v) = (Private, o.get(i).cloned().unwrap_or_default());
+                let (refused, variant) = rule.refusal();
+                quote! {{
+                    let __v: f64 = #v;
+                    if #refused {
+                        return ::core::result::Result::Err(#p::MechanismError::#variant {
+                            owner: ::std::string::String::from(#owner),
+                            quantity: ::std::string::String::from(#quantity),
+                            value: __v,
+                        });
+                    }
+                }}
+            }));
+        }
     }
 
     /// A rolling body's surface: its hub or centre finite, its radius positive, a disk's

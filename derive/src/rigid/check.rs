@@ -115,16 +115,14 @@ pub fn check(ck: &mut Checker, items: &Parsed<Item>) -> Option<CheckedBody> {
             Item::Setting(setting) if setting.key == keys::TAYLOR => {}
             Item::Setting(setting) => {
                 let key = &setting.key;
-                ck.cx.error_spanned_by(
-                    key,
-                    format!(
-                        "unknown key `{key}`: at the top level only `{} = [x, y, z]`, `{} = K` and parts ({}) are allowed{}",
-                        keys::PIVOT,
-                        keys::TAYLOR,
-                        part_list(),
-                        keys::did_you_mean(&key.to_string(), keys::RIGID_KEYS.iter().copied())
-                    ),
-                );
+                let place = format!("in `#[{}]`", keys::RIGID);
+                let parts: Vec<&str> = keys::PARTS.iter().map(|p| p.name).collect();
+                let groups = [(
+                    &parts[..],
+                    format!("a part `name(key = value, ...)`: {}", part_list()),
+                )];
+                let message = keys::unknown_key(key, &place, keys::RIGID_KEYS, &groups);
+                ck.cx.error_spanned_by(key, message);
             }
         }
     }

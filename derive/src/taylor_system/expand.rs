@@ -92,6 +92,7 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         &rhs,
         TokenStream::new(),
         checked.order,
+        None,
     );
     let names = checked
         .state

@@ -130,90 +130,26 @@ pub fn check(
     let cx = ck.cx;
     for KeyValue { key, value } in distinct(cx, top_settings, &in_top) {
         match TOP_KEYS.iter().find(|&&k| key == k).copied() {
-            Some(keys::GRAVITY) => {
-                settings.gravity = ck
-                    .expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| ck.scalar(value))
-                    .filter(|&g| {
-                        let literal = constant(ck, g);
-                        literal_rule(
-                            ck,
-                            value,
-                            TopParameters {
-                                gravity: literal,
-                                ..TopParameters::default()
-                            },
-                        )
-                    });
-            }
-            Some(keys::DAMPING) => {
-                settings.damping = ck
-                    .expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| ck.scalar(value))
-                    .filter(|&k| {
-                        let literal = constant(ck, k);
-                        literal_rule(
-                            ck,
-                            value,
-                            TopParameters {
-                                damping: literal,
-                                ..TopParameters::default()
-                            },
-                        )
-                    });
-            }
-            Some(keys::BODY_TORQUE) => {
-                settings.body_torque = ck
-                    .expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(value))
-                    .filter(|v| {
-                        let literal = constant_vector(ck, v);
-                        literal_rule(
-                            ck,
-                            value,
-                            TopParameters {
-                                body_torque: literal,
-                                ..TopParameters::default()
-                            },
-                        )
-                    });
-            }
-            Some(keys::SPACE_TORQUE) => {
-                settings.space_torque = ck
-                    .expecting(Dim::TORQUE, keys::SPACE_TORQUE, |ck| ck.vector(value))
-                    .filter(|v| {
-                        let literal = constant_vector(ck, v);
-                        literal_rule(
-                            ck,
-                            value,
-                            TopParameters {
-                                space_torque: literal,
-                                ..TopParameters::default()
-                            },
-                        )
-                    });
+            Some(k @ keys::GRAVITY) => settings.gravity = scalar(ck, k, Dim::ACCELERATION, value),
+            Some(k @ keys::DAMPING) => settings.damping = scalar(ck, k, Dim::ROTARY_DAMPING, value),
+            Some(k @ keys::BODY_TORQUE) => settings.body_torque = vector(ck, k, Dim::TORQUE, value),
+            Some(k @ keys::SPACE_TORQUE) => {
+                settings.space_torque = vector(ck, k, Dim::TORQUE, value)
             }
             Some(keys::TORQUE) => settings.torque = user_fn(ck, value),
             Some(keys::ANGLES) => settings.angles = angles(ck, value),
             _ if key == keys::ROTOR => ck
                 .cx
                 .error_spanned_by(key, crate::lang::rotor::written_as_setting()),
-            _ => ck.cx.error_spanned_by(
-                key,
-                format!(
-                    "unknown key `{key}` in `#[{}]`: expected {}, a rotor {}({}), or the variational equations {}({}){}",
-                    keys::TOP,
-                    TOP_KEYS.join(", "),
-                    keys::ROTOR,
-                    crate::lang::rotor::allowed_keys(true).join(", "),
-                    super::variational::VARIATIONAL,
-                    crate::lang::variational::KEYS.join(", "),
-                    keys::did_you_mean(
-                        &key.to_string(),
-                        TOP_KEYS
-                            .iter()
-                            .copied()
-                            .chain([super::variational::VARIATIONAL])
-                    )
-                ),
-            ),
+            _ => {
+                let groups = [
+                    crate::lang::rotor::listed(true),
+                    crate::lang::variational::listed(),
+                ];
+                let place = format!("in {in_top}");
+                let message = keys::unknown_key(key, &place, TOP_KEYS, &groups);
+                ck.cx.error_spanned_by(key, message);
+            }
         }
     }
     // A motor is a user function too: its torque has no Taylor coefficients.
@@ -258,22 +194,40 @@ pub fn check(
     ok.then_some(Some(settings))
 }
 
-/// The value of `e` if it is a constant (a literal, or arithmetic on literals).
-fn constant(ck: &Checker, e: ExprId) -> Option<f64> {
-    ck.arena.as_rational(e).map(|r| r.to_f64())
+/// The scalar setting `key` (`gravity`, `damping`), held to the rule of the generated
+/// `TopDynamics::check_parameters` when it is a constant ([`literal_rule`]).
+fn scalar(ck: &mut Checker, key: &'static str, dim: Dim, value: &Expr) -> Option<ExprId> {
+    let v = ck.expecting(dim, key, |ck| ck.scalar(value))?;
+    literal_rule(ck, key, value, &[v]).then_some(v)
 }
 
-/// The vector `v` if all its components are constants. A vector mixing fields and literals
-/// is judged whole at run time (its literal components are finite: literals always are).
-fn constant_vector(ck: &Checker, v: &[ExprId; 3]) -> Option<Vector3<f64>> {
-    let [x, y, z] = v.map(|c| constant(ck, c));
-    Some(Vector3::new(x?, y?, z?))
+/// The vector setting `key` (`body_torque`, `space_torque`), as [`scalar`].
+fn vector(ck: &mut Checker, key: &'static str, dim: Dim, value: &Expr) -> Option<[ExprId; 3]> {
+    let v = ck.expecting(dim, key, |ck| ck.vector(value))?;
+    literal_rule(ck, key, value, &v).then_some(v)
 }
 
-/// Judges the literal settings in `literal` by the rule the generated
-/// `TopDynamics::check_parameters` applies to field values at run time, so both are held
-/// to one rule; records its error on `value`. False after an error.
-fn literal_rule(ck: &Checker, value: &Expr, literal: TopParameters) -> bool {
+/// Judges the setting `key`, of value `v`, by the rule the generated
+/// `TopDynamics::check_parameters` applies to field values at run time, so both are held to
+/// one rule, when all of `v` is constant (a vector mixing fields and literals is judged
+/// whole at run time; its literal components are finite: literals always are); records its
+/// error on `value`. False after an error.
+fn literal_rule(ck: &Checker, key: &str, value: &Expr, v: &[ExprId]) -> bool {
+    let constant: Option<Vec<f64>> = v
+        .iter()
+        .map(|&e| ck.arena.as_rational(e).map(|r| r.to_f64()))
+        .collect();
+    let Some(c) = constant else {
+        return true;
+    };
+    let mut literal = TopParameters::default();
+    match (key, c.as_slice()) {
+        (keys::GRAVITY, &[g]) => literal.gravity = Some(g),
+        (keys::DAMPING, &[k]) => literal.damping = Some(k),
+        (keys::BODY_TORQUE, &[x, y, z]) => literal.body_torque = Some(Vector3::new(x, y, z)),
+        (keys::SPACE_TORQUE, &[x, y, z]) => literal.space_torque = Some(Vector3::new(x, y, z)),
+        _ => {}
+    }
     match literal.check() {
         Ok(()) => true,
         Err(e) => {

@@ -12,12 +12,11 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
+use super::charts::{ChartArms, momenta_tokens};
 use super::check::TopSettings;
 use super::expand::{UserCall, sequence_tokens};
-use crate::lang::ctxt::Ctxt;
 use crate::lang::private::Private;
 use crate::lang::symbols::{Lowering, SymbolTokens};
-use crate::rigid::check::CheckedBody;
 
 /// The driven rotors as the derivation takes them: their motor torques input symbols read
 /// from the locals `__motor{k}` the motor calls bind, their rates Ω input symbols read from
@@ -73,14 +72,11 @@ impl DrivenInputs {
     }
 }
 
-/// The state-taking methods of a driven top, by chart.
+/// The state-taking methods of a driven top, by chart: a top's, and `rhs_in`.
 #[derive(Default)]
 struct Arms {
-    accel: Vec<TokenStream>,
+    chart: ChartArms,
     rhs: Vec<TokenStream>,
-    energy: Vec<TokenStream>,
-    rotation: Vec<TokenStream>,
-    rate_matrix: Vec<TokenStream>,
 }
 
 /// The methods of `impl TopDynamics<N>` that a driven top generates in place of the
@@ -120,22 +116,7 @@ pub(super) fn methods(
         AngleSequence::Zyx => zyx,
     };
     let reads = state_reads(&declared, inputs);
-    let conserved: Vec<ExprId> = declared
-        .conserved_momenta
-        .iter()
-        .flatten()
-        .copied()
-        .collect();
-    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
-    let mut it = outputs.into_iter();
-    let slots = declared.conserved_momenta.iter().map(|m| match m {
-        Some(_) => {
-            let v = it.next();
-            quote!(::core::option::Option::Some(#v))
-        }
-        None => quote!(::core::option::Option::None),
-    });
-    let momenta_in = quote!({ #lets [#(#slots),*] });
+    let momenta_in = momenta_tokens(low, arena, &declared.conserved_momenta, &reads);
     // Every rotor's momentum at the state: the constant ones' and J Ω â of each driven one.
     let all: Vec<Rotor> = scene
         .rotors
@@ -154,37 +135,14 @@ pub(super) fn methods(
         .unwrap_or([arena.zero(); 3]);
     let Emitted { lets, outputs } = low.lower_reading(arena, &h, &reads);
     let momentum_in = quote!({ #lets #p::Vector3::new(#(#outputs),*) });
-    let Arms {
-        accel,
-        rhs,
-        energy,
-        rotation,
-        rate_matrix,
-    } = arms;
+    let chart = arms.chart.methods(n);
+    let rhs = &arms.rhs;
     let tokens = quote! {
-        #[inline]
-        fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n]) -> [f64; 3] {
-            match seq { #(#accel)* }
-        }
+        #chart
 
         #[inline]
         fn rhs_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; #n], __rate: &mut [f64; #n]) {
             match seq { #(#rhs)* }
-        }
-
-        #[inline]
-        fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rotation)* }
-        }
-
-        #[inline]
-        fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rate_matrix)* }
-        }
-
-        #[inline]
-        fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; #n]) -> f64 {
-            match seq { #(#energy)* }
         }
 
         fn rotor_momentum_in(&self, state: &[f64; #n]) -> #p::Vector3<f64> #momentum_in
@@ -243,17 +201,11 @@ impl Arms {
         let top = &d.effective;
         let seq_t = sequence_tokens(top.sequence);
         let reads = state_reads(d, inputs);
-        let user_call = user.call(
-            quote! {
-                let __q = [state[0], state[1], state[2]];
-                let __r = <Self as #p::TopDynamics<#n>>::rotation_in(self, #seq_t, &__q);
-                let __w = <Self as #p::TopDynamics<#n>>::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
-            },
-            quote!(&__w),
-        );
+        let user_call = user.call_in_chart(&seq_t, &quote!(<Self as #p::TopDynamics<#n>>));
         let motors = inputs.calls();
         let Emitted { lets, outputs } = low.lower_reading(arena, &d.accel, &reads);
-        self.accel
+        self.chart
+            .accel
             .push(quote!(#seq_t => { #user_call #motors #lets [#(#outputs),*] }));
         let rhs: Vec<ExprId> = d.accel.iter().chain(&d.rotor_accel).copied().collect();
         let Emitted { lets, outputs } = low.lower_reading(arena, &rhs, &reads);
@@ -264,58 +216,9 @@ impl Arms {
             *__rate = [state[3], state[4], state[5], #(#outputs),*];
         }));
         let Emitted { lets, outputs } = low.lower_reading(arena, &[d.energy], &reads);
-        self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
-        let angles: Vec<(ExprId, TokenStream)> =
-            (0..3).map(|k| (top.coords().q[k], quote!(q[#k]))).collect();
-        let Emitted { lets, outputs } =
-            low.lower_reading(arena, top.rotation.as_flattened(), &angles);
-        self.rotation
-            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
-        let Emitted { lets, outputs } =
-            low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
-        self.rate_matrix
-            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
+        self.chart
+            .energy
+            .push(quote!(#seq_t => { #lets #(#outputs)* }));
+        self.chart.push_frames(low, arena, top);
     }
-}
-
-/// With literal values, the rule a driven rotor adds (`lang::rotor`'s): the top's inertia
-/// about the pivot stays positive definite as each wheel's axial moment is taken out.
-pub fn literal_inertia(
-    cx: &Ctxt,
-    arena: &Arena,
-    checked: &CheckedBody,
-    settings: &TopSettings,
-) -> Option<()> {
-    let about = crate::lang::rotor::InertiaAbout {
-        body: "top",
-        point: "the pivot",
-    };
-    let inertia = &checked.body.props.inertia;
-    crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, about)
-}
-
-/// Statements for `check_parameters`: the top's inertia about the pivot stays positive
-/// definite with the driven wheels turning freely, for the current field values.
-pub fn inertia_check(low: &Lowering, arena: &Arena, settings: &TopSettings) -> TokenStream {
-    let p = Private;
-    if settings.driven.is_empty() {
-        return TokenStream::new();
-    }
-    let values: Vec<ExprId> = settings
-        .driven
-        .iter()
-        .flat_map(|(_, d)| d.axis.into_iter().chain([d.inertia]))
-        .collect();
-    let Emitted { lets, outputs } = low.lower(arena, &values);
-    let wheels = outputs.chunks(4).zip(&settings.driven).map(|(o, (k, _))| {
-        let (a, j) = (&o[..3], &o[3]);
-        quote!((#k, [#(#a),*], #j))
-    });
-    quote!({
-        #lets
-        #p::TopError::check_driven_inertia(
-            &#p::RigidBody::inertia(self),
-            &[#(#wheels),*],
-        )?;
-    })
 }

@@ -12,11 +12,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote, quote_spanned};
 use syn::spanned::Spanned;
 
+use super::charts::{ChartArms, momenta_tokens};
 use super::check::TopSettings;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::rigid::check::CheckedBody;
+
+/// Where a top's driven-rotor rule reads its inertia: about the pivot.
+const ABOUT: crate::lang::rotor::InertiaAbout<'static> = crate::lang::rotor::InertiaAbout {
+    body: "top",
+    point: "the pivot",
+};
 
 /// The scene of the checked body and settings: inertia about the pivot, the centre of
 /// mass relative to it, and the declared torques (the user torque is added by [`expand`]).
@@ -45,55 +52,6 @@ pub(super) fn sequence_tokens(s: AngleSequence) -> TokenStream {
     }
 }
 
-/// The arms of the chart-dispatched methods, one per angle sequence.
-#[derive(Default)]
-struct ChartArms {
-    accel: Vec<TokenStream>,
-    rotation: Vec<TokenStream>,
-    rate_matrix: Vec<TokenStream>,
-    energy: Vec<TokenStream>,
-}
-
-impl ChartArms {
-    /// Adds the arms of the chart `top` was derived in.
-    fn push(&mut self, low: &Lowering, arena: &mut Arena, top: &TopDerivation, user: &UserCall) {
-        let p = Private;
-        let c = top.coords().clone();
-        let seq_t = sequence_tokens(top.sequence);
-        let state: Vec<(ExprId, TokenStream)> = (0..3)
-            .flat_map(|k| {
-                let j = k + 3;
-                [(c.q[k], quote!(state[#k])), (c.rates[k], quote!(state[#j]))]
-            })
-            .collect();
-        // The user torque is called with R and ω computed by the chart's own methods.
-        let call = user.call(
-            quote! {
-                let __q = [state[0], state[1], state[2]];
-                let __r = #p::TopDynamics::rotation_in(self, #seq_t, &__q);
-                let __w = #p::TopDynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
-            },
-            quote!(&__w),
-        );
-        let Emitted { lets, outputs } = low.lower_reading(arena, &top.accelerations.accel, &state);
-        self.accel
-            .push(quote!(#seq_t => { #call #lets [#(#outputs),*] }));
-        let energy = top.energy(arena);
-        let Emitted { lets, outputs } = low.lower_reading(arena, &[energy], &state);
-        self.energy.push(quote!(#seq_t => { #lets #(#outputs)* }));
-        // R and B read the angles from `q` rather than `state`.
-        let angles: Vec<(ExprId, TokenStream)> = (0..3).map(|k| (c.q[k], quote!(q[#k]))).collect();
-        let Emitted { lets, outputs } =
-            low.lower_reading(arena, top.rotation.as_flattened(), &angles);
-        self.rotation
-            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
-        let Emitted { lets, outputs } =
-            low.lower_reading(arena, top.rate_matrix.as_flattened(), &angles);
-        self.rate_matrix
-            .push(quote!(#seq_t => { #lets #p::Matrix3::new(#(#outputs),*) }));
-    }
-}
-
 /// The declared user torque function, if any: how each method calls it into `__u`.
 pub(super) struct UserCall(Option<syn::Path>);
 
@@ -116,6 +74,21 @@ impl UserCall {
         };
         quote!(#setup #bind let __u = __torque(self, t, &__r, #omega);)
     }
+
+    /// [`UserCall::call`] in the arm of the chart `seq_t`: R and ω computed by the chart's
+    /// own methods of `dynamics` (the trait as the impl names it: `TopDynamics<N>` for a top
+    /// with motors).
+    pub(super) fn call_in_chart(&self, seq_t: &TokenStream, dynamics: &TokenStream) -> TokenStream {
+        let p = Private;
+        self.call(
+            quote! {
+                let __q = [state[0], state[1], state[2]];
+                let __r = #dynamics::rotation_in(self, #seq_t, &__q);
+                let __w = #dynamics::rate_matrix_in(self, #seq_t, &__q) * #p::Vector3::new(state[3], state[4], state[5]);
+            },
+            quote!(&__w),
+        )
+    }
 }
 
 /// `impl TopDynamics for …`, or `None` after recording why the equations could not be derived.
@@ -124,8 +97,7 @@ pub fn expand(
     checked: &CheckedBody,
     settings: &TopSettings,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let mut scene = scene(arena, checked, settings);
     let user = UserCall(settings.torque.clone());
@@ -143,16 +115,13 @@ pub fn expand(
     let driven = (!settings.driven.is_empty())
         .then(|| super::driven::DrivenInputs::new(arena, settings, &mut symbols));
     if driven.is_some() {
-        super::driven::literal_inertia(cx, arena, checked, settings)?;
+        let inertia = &checked.body.props.inertia;
+        crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, ABOUT)?;
     }
     let taylor_symbols = symbols.clone();
     let low = Lowering::new(cx, ident, symbols);
-    let failed = |e: &dyn std::fmt::Display| {
-        cx.error_spanned_by(
-            ident,
-            format!("cannot derive the top's equations of motion: {e}"),
-        );
-    };
+    let failed =
+        |e: &dyn std::fmt::Display| cannot_derive(cx, ident, "the top's equations of motion", e);
     // In the order a top without motors always derived them, so it emits what it did.
     let (body, equations, lagrangian) = match &driven {
         None => {
@@ -179,7 +148,7 @@ pub fn expand(
     let rotors = match rotor_methods(&low, arena, &scene, settings) {
         Ok(rotors) => rotors,
         Err(e) => {
-            cx.error_spanned_by(ident, format!("cannot derive the top's rotors: {e}"));
+            cannot_derive(cx, ident, "the top's rotors", &e);
             return None;
         }
     };
@@ -190,7 +159,7 @@ pub fn expand(
         });
         // The Lagrangian state [q, q̇] of the declared chart: y' = (q̇, q̈).
         let taylor = settings.taylor.map(|order| {
-            crate::lang::taylor::expand_checked(
+            crate::lang::taylor::expand(
                 cx,
                 ident,
                 arena,
@@ -199,7 +168,9 @@ pub fn expand(
                 &rhs,
                 TokenStream::new(),
                 order,
-                quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+                Some(
+                    quote!(#p::TopDynamics::check_all(self).map_err(#p::TopError::into_ode_error)),
+                ),
             )
         });
         quote! {
@@ -209,12 +180,7 @@ pub fn expand(
         }
     });
     let n = 6 + settings.driven.len();
-    // `TopDynamics` as a user writes it: without N unless the top has motors.
-    let dynamics = if driven.is_some() {
-        quote!(#p::TopDynamics<#n>)
-    } else {
-        quote!(#p::TopDynamics)
-    };
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::TopDynamics), n, driven.is_some());
     let slots = scene
         .sequence
         .names()
@@ -280,38 +246,15 @@ fn undriven(
 ) -> Result<(TokenStream, (Vec<ExprId>, Vec<ExprId>)), LagrangeError> {
     let p = Private;
     let Methods {
-        arms:
-            ChartArms {
-                accel,
-                rotation,
-                rate_matrix,
-                energy,
-            },
+        arms,
         jacobian,
         momenta,
         eulerian,
         lagrangian,
     } = methods(low, arena, scene, user)?;
+    let chart = arms.methods(6);
     let body = quote! {
-        #[inline]
-        fn accelerations_unchecked_in(&self, seq: #p::AngleSequence, t: f64, state: &[f64; 6]) -> [f64; 3] {
-            match seq { #(#accel)* }
-        }
-
-        #[inline]
-        fn rotation_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rotation)* }
-        }
-
-        #[inline]
-        fn rate_matrix_in(&self, seq: #p::AngleSequence, q: &[f64; 3]) -> #p::Matrix3<f64> {
-            match seq { #(#rate_matrix)* }
-        }
-
-        #[inline]
-        fn energy_in(&self, seq: #p::AngleSequence, state: &[f64; 6]) -> f64 {
-            match seq { #(#energy)* }
-        }
+        #chart
 
         fn angle_jacobian(&self, t: f64, q: &[f64; 3], q_dot: &[f64; 3]) -> [[f64; 6]; 3] #jacobian
 
@@ -353,16 +296,14 @@ fn rotor_methods(
             }
         }
     });
-    let error = quote!(#p::TopError);
-    let mut shapes: Vec<(usize, [ExprId; 3], ExprId)> = settings
-        .rotor_index
-        .iter()
-        .zip(&scene.rotors)
-        .map(|(&k, r)| (k, r.axis, r.inertia))
-        .collect();
-    shapes.extend(settings.driven.iter().map(|(k, d)| (*k, d.axis, d.inertia)));
-    let shapes = crate::lang::rotor::check_tokens_indexed(low, arena, &shapes, &error);
-    let driven_inertia = super::driven::inertia_check(low, arena, settings);
+    let shapes = crate::lang::rotor::check_tokens(
+        low,
+        arena,
+        (&settings.rotor_index, &scene.rotors),
+        &settings.driven,
+        &quote!(#p::TopError),
+        &quote!(#p::RigidBody::inertia(self)),
+    );
     let rates: Vec<ExprId> = scene.rotors.iter().map(|r| r.rate).collect();
     let Emitted {
         lets: rate_lets,
@@ -391,7 +332,6 @@ fn rotor_methods(
                 }
             )*
             #shapes
-            #driven_inertia
             self.top_parameters().check()
         }
     })
@@ -527,17 +467,8 @@ fn declared_chart(
     let Emitted { lets, outputs } = low.lower_reading(arena, jac.as_flattened(), &reads);
     let rows = outputs.chunks(6).map(|row| quote!([#(#row),*]));
     let jacobian = quote!({ #call #lets [#(#rows),*] });
-    let conserved: Vec<ExprId> = top.conserved_momenta.iter().flatten().copied().collect();
-    let Emitted { lets, outputs } = low.lower_reading(arena, &conserved, &reads);
-    let mut it = outputs.into_iter();
-    let slots = top.conserved_momenta.iter().map(|m| match m {
-        Some(_) => {
-            let v = it.next();
-            quote!(::core::option::Option::Some(#v))
-        }
-        None => quote!(::core::option::Option::None),
-    });
-    (jacobian, quote!({ #lets [#(#slots),*] }))
+    let momenta = momenta_tokens(low, arena, &top.conserved_momenta, &reads);
+    (jacobian, momenta)
 }
 
 /// The input symbols `R{i}{j}` and `w{k}` of the Eulerian form, which `equations` typesets

@@ -4,94 +4,49 @@
 //! and for a top with motors `TopDynamics<N>` and the rotor slots (`Top::ROTOR_k`).
 
 use proc_macro2::{TokenStream, TokenTree};
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::{DeriveInput, Meta};
 
-use crate::lang::ctxt::Ctxt;
 use crate::lang::keys;
 use crate::lang::private::Private;
-use crate::lang::syntax::Item;
-
-/// `rotor_k` for each `rotor(...)` group of the `#[top]` attributes that has a `torque` key,
-/// k counting every rotor group, read from the syntax alone (as `#[free]`'s stub does).
-fn driven_names(input: &DeriveInput) -> Vec<String> {
-    let attrs: Vec<&syn::Attribute> = input
-        .attrs
-        .iter()
-        .filter(|a| a.path().is_ident(keys::TOP))
-        .collect();
-    let cx = Ctxt::new();
-    let parsed = super::attr::parse(&cx, &attrs);
-    let _ = cx.check();
-    parsed
-        .items
-        .iter()
-        .filter_map(|item| match item {
-            Item::Group { name, keys } if name == keys::ROTOR => Some(keys),
-            _ => None,
-        })
-        .enumerate()
-        .filter(|(_, keys)| keys.iter().any(|kv| kv.key == keys::TORQUE))
-        .map(|(k, _)| format!("rotor_{k}"))
-        .collect()
-}
+use crate::lang::stub::{Stub, hidden_const};
 
 /// A stub `impl TopDynamics` for `input`, and its angle consts.
 pub fn stub(input: &DeriveInput) -> TokenStream {
     let p = Private;
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let stub = quote!(::core::unimplemented!("the #[top] description has errors"));
+    let stub = Stub::new(input, keys::TOP);
+    let body = &stub.body;
+    let span = input.ident.span();
+    // Both sets of angle names count from zero when both are emitted.
     let angles = written_angles(input)
         .into_iter()
         .enumerate()
-        .map(|(k, name)| {
-            let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
-            // Both sets count from zero when both are emitted.
-            let k = k % 3;
-            quote! {
-                #[doc(hidden)]
-                pub const #upper: usize = #k;
-            }
-        });
-    let driven = driven_names(input);
+        .map(|(k, name)| hidden_const(name, span, k % 3));
+    let driven = crate::lang::rotor::driven_names(input, keys::TOP, super::attr::parse);
     // Unsuffixed, as the stub always wrote its 6.
     let n = proc_macro2::Literal::usize_unsuffixed(6 + driven.len());
-    let rotors = driven.iter().enumerate().map(|(k, name)| {
-        let upper = format_ident!("{}", name.to_uppercase(), span = ident.span());
-        let slot = 6 + k;
+    let rotors = driven
+        .iter()
+        .enumerate()
+        .map(|(k, name)| hidden_const(name, span, 6 + k));
+    let dynamics = crate::lang::rotor::scene_trait(quote!(#p::TopDynamics), &n, !driven.is_empty());
+    let consts = stub.inherent(quote!(#(#angles)* #(#rotors)*));
+    let dynamics = stub.trait_impl(
+        &dynamics,
         quote! {
-            #[doc(hidden)]
-            pub const #upper: usize = #slot;
-        }
-    });
-    // The trait's default N without motors, as a user writes it.
-    let dynamics = if driven.is_empty() {
-        quote!(#p::TopDynamics)
-    } else {
-        quote!(#p::TopDynamics<#n>)
-    };
-    quote! {
-        #[automatically_derived]
-        impl #impl_generics #ident #ty_generics #where_clause {
-            #(#angles)*
-            #(#rotors)*
-        }
-
-        #[automatically_derived]
-        impl #impl_generics #dynamics for #ident #ty_generics #where_clause {
             const SEQUENCE: #p::AngleSequence = #p::AngleSequence::Zxz;
-            fn top_parameters(&self) -> #p::TopParameters { #stub }
-            fn accelerations_unchecked_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; #n]) -> [f64; 3] { #stub }
-            fn rotation_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
-            fn rate_matrix_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #stub }
-            fn energy_in(&self, _: #p::AngleSequence, _: &[f64; #n]) -> f64 { #stub }
-            fn angle_jacobian(&self, _: f64, _: &[f64; 3], _: &[f64; 3]) -> [[f64; 6]; 3] { #stub }
-            fn conserved_momenta(&self, _: &[f64; 3], _: &[f64; 3]) -> [::core::option::Option<f64>; 3] { #stub }
-            fn eulerian_rhs(&self, _: f64, _: &#p::UnitQuaternion<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #stub }
-            fn equations(&self) -> &'static #p::Typeset { #stub }
-        }
-    }
+            fn top_parameters(&self) -> #p::TopParameters { #body }
+            fn accelerations_unchecked_in(&self, _: #p::AngleSequence, _: f64, _: &[f64; #n]) -> [f64; 3] { #body }
+            fn rotation_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #body }
+            fn rate_matrix_in(&self, _: #p::AngleSequence, _: &[f64; 3]) -> #p::Matrix3<f64> { #body }
+            fn energy_in(&self, _: #p::AngleSequence, _: &[f64; #n]) -> f64 { #body }
+            fn angle_jacobian(&self, _: f64, _: &[f64; 3], _: &[f64; 3]) -> [[f64; 6]; 3] { #body }
+            fn conserved_momenta(&self, _: &[f64; 3], _: &[f64; 3]) -> [::core::option::Option<f64>; 3] { #body }
+            fn eulerian_rhs(&self, _: f64, _: &#p::UnitQuaternion<f64>, _: &#p::Vector3<f64>) -> #p::Vector3<f64> { #body }
+            fn equations(&self) -> &'static #p::Typeset { #body }
+        },
+    );
+    quote!(#consts #dynamics)
 }
 
 /// The angle names of the sequence `angles = ..` writes in `#[top(...)]`: φ, θ, ψ when none

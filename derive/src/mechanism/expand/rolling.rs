@@ -8,11 +8,11 @@ use precess_core::mechanism::MechanismError;
 use precess_core::mechanism::rolling::RollingDerivation;
 use precess_core::sym::ExprId;
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::LitStr;
 
 use super::Method;
-use crate::lang::expansion::Expansion;
+use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
 use crate::lang::symbols::Lowering;
 use crate::mechanism::check::CheckedMechanism;
@@ -26,8 +26,7 @@ pub(super) fn expand(
     checked: &CheckedMechanism,
     rolling: &CheckedRolling,
 ) -> Option<TokenStream> {
-    let (cx, ident, parameters) = (ex.cx, ex.ident, ex.parameters);
-    let arena = &mut *ex.arena;
+    let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
     let derivation: RollingDerivation = match checked.scene.derive_rolling(arena, &rolling.scene) {
         Ok(d) => d,
@@ -52,10 +51,7 @@ pub(super) fn expand(
             return None;
         }
         Err(e) => {
-            cx.error_spanned_by(
-                ident,
-                format!("cannot derive the rolling mechanism's equations of motion: {e}"),
-            );
+            cannot_derive(cx, ident, "the rolling mechanism's equations of motion", &e);
             return None;
         }
     };
@@ -140,14 +136,7 @@ pub(super) fn expand(
         .collect();
     let independent = &derivation.independent;
     let dependent = &derivation.dependent;
-    let consts = checked.coordinates.iter().enumerate().map(|(i, c)| {
-        let upper = format_ident!("{}", c.to_string().to_uppercase(), span = c.span());
-        let doc = format!("The index of the coordinate `{c}` in q and q̇.");
-        quote! {
-            #[doc = #doc]
-            pub const #upper: usize = #i;
-        }
-    });
+    let consts = super::coordinate_consts(checked, "q and q̇");
     let state = n + k;
     let state_doc = format!(
         "The length of the rolling state (q, u): {n} coordinates, then the {k} free speeds; \

@@ -77,6 +77,7 @@ pub fn expand(ex: &mut Expansion, checked: &CheckedBody, order: usize) -> TokenS
         &rhs,
         prelude.clone(),
         order,
+        None,
     );
     quote! {
         #[automatically_derived]
