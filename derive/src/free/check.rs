@@ -1,7 +1,7 @@
 //! Meaning of the `#[free(...)]` items: keys against the table in `keys.rs`, values with the
 //! value rules of `lang::values` in the same arena, one function per rule with its reason.
 
-use precess_core::free::{AppliedForce, ForcePoint, Rotor};
+use precess_core::free::{AppliedForce, ForcePoint, FreeScene};
 use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
@@ -13,22 +13,12 @@ use crate::lang::taylor::TaylorKey;
 use crate::lang::units::Dim;
 
 /// The checked `#[free(...)]` settings: what acts on the body.
-#[derive(Default)]
 pub struct FreeSettings {
-    /// Uniform gravity, space axes.
-    pub gravity: Option<[ExprId; 3]>,
-    /// Forces fixed in the body at body points.
-    pub body_forces: Vec<AppliedForce>,
-    /// Forces fixed in space at body points.
-    pub space_forces: Vec<AppliedForce>,
-    /// A constant torque fixed in the body (description axes).
-    pub body_torque: Option<[ExprId; 3]>,
-    /// A constant torque fixed in space.
-    pub space_torque: Option<[ExprId; 3]>,
-    /// Linear drag −c v.
-    pub drag: Option<ExprId>,
-    /// Linear damping of the rotation −c ω.
-    pub damping: Option<ExprId>,
+    /// The declared loads and constant-rate rotors as the scene's own fields (gravity,
+    /// forces and torques fixed in the body or in space, drag, damping, `rotors`), so that
+    /// expansion completes this scene with the body's mass properties rather than copying
+    /// a mirror of it field by field. Its mass, centre and frame are placeholders here.
+    pub loads: FreeScene,
     /// The path of a user force function (space axes).
     pub force: Option<syn::Path>,
     /// The path of a user torque function (description axes).
@@ -38,13 +28,26 @@ pub struct FreeSettings {
     pub wrenches: Vec<syn::Path>,
     /// The maximum order of the generated Taylor recurrences, if asked for.
     pub taylor: Option<usize>,
-    /// Internal rotors at constant relative rates (the body is a gyrostat), with their
-    /// index among all the rotors declared.
-    pub rotors: Vec<Rotor>,
-    /// The declared index of each of `rotors`.
+    /// The declared index of each of `loads.rotors` among all the rotors declared.
     pub rotor_index: Vec<usize>,
     /// Internal rotors turned by motors, with their index among all the rotors declared.
     pub driven: Vec<(usize, Driven)>,
+}
+
+impl FreeSettings {
+    /// No loads, no rotors, no user functions: a torque-free body.
+    fn empty(ck: &mut Checker) -> FreeSettings {
+        let zero = ck.arena.zero();
+        FreeSettings {
+            loads: FreeScene::new(ck.arena, zero, [zero; 3]),
+            force: None,
+            torque: None,
+            wrenches: Vec::new(),
+            taylor: None,
+            rotor_index: Vec::new(),
+            driven: Vec::new(),
+        }
+    }
 }
 
 /// Checks the `#[free]` items, if the struct has any attribute. `None` after an error
@@ -70,7 +73,7 @@ pub fn check(
             ),
         );
     }
-    let mut settings = FreeSettings::default();
+    let mut settings = FreeSettings::empty(ck);
     let mut seen: Vec<&Ident> = Vec::new();
     let in_free = format!("`#[{}]`", keys::FREE);
     let free_settings = items.items.iter().filter_map(|item| match item {
@@ -89,7 +92,7 @@ pub fn check(
                 declared_rotors += 1;
                 match crate::lang::rotor::check(ck, name, keys, &in_free, true) {
                     Some(Checked::Constant(rotor)) => {
-                        settings.rotors.push(rotor);
+                        settings.loads.rotors.push(rotor);
                         settings.rotor_index.push(index);
                     }
                     Some(Checked::Driven(driven)) => settings.driven.push((index, *driven)),
@@ -99,9 +102,9 @@ pub fn check(
             Item::Group { name, keys } => {
                 if let Some((space, force)) = force_part(ck, name, keys) {
                     if space {
-                        settings.space_forces.push(force);
+                        settings.loads.space_forces.push(force);
                     } else {
-                        settings.body_forces.push(force);
+                        settings.loads.body_forces.push(force);
                     }
                 }
             }
@@ -139,25 +142,25 @@ fn setting<'a>(
     seen.push(key);
     match FREE_KEYS.iter().find(|&&k| key == k).copied() {
         Some(keys::GRAVITY) => {
-            settings.gravity =
+            settings.loads.gravity =
                 ck.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| gravity(ck, value))
         }
         Some(keys::DRAG) => {
-            settings.drag = ck.expecting(Dim::DRAG, keys::DRAG, |ck| {
+            settings.loads.drag = ck.expecting(Dim::DRAG, keys::DRAG, |ck| {
                 ck.non_negative(value, &format!("`{}`", keys::DRAG), FEEDS_ENERGY)
             })
         }
         Some(keys::DAMPING) => {
-            settings.damping = ck.expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| {
+            settings.loads.damping = ck.expecting(Dim::ROTARY_DAMPING, keys::DAMPING, |ck| {
                 ck.non_negative(value, &format!("`{}`", keys::DAMPING), FEEDS_ENERGY)
             })
         }
         Some(keys::BODY_TORQUE) => {
-            settings.body_torque =
+            settings.loads.body_torque =
                 ck.expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(value))
         }
         Some(keys::SPACE_TORQUE) => {
-            settings.space_torque =
+            settings.loads.space_torque =
                 ck.expecting(Dim::TORQUE, keys::SPACE_TORQUE, |ck| ck.vector(value))
         }
         Some(keys::FORCE) => settings.force = user_fn(ck, value, keys::FORCE),

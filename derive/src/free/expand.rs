@@ -115,8 +115,12 @@ fn scene(
     symbols: &mut SymbolTokens,
 ) -> (FreeScene, Preludes) {
     let props = &checked.body.props;
-    let mut scene = FreeScene::new(arena, props.mass, [props.mass; 3]);
-    scene.center = props.center;
+    let mut scene = FreeScene {
+        mass: props.mass,
+        center: props.center,
+        moments: [props.mass; 3],
+        ..settings.loads.clone()
+    };
     let mut preludes = Preludes {
         principal: Vec::new(),
         force: None,
@@ -156,14 +160,6 @@ fn scene(
             scene.principal_rotation = rotation;
         }
     }
-    scene.gravity = settings.gravity;
-    scene.body_forces = settings.body_forces.clone();
-    scene.space_forces = settings.space_forces.clone();
-    scene.body_torque = settings.body_torque;
-    scene.space_torque = settings.space_torque;
-    scene.drag = settings.drag;
-    scene.damping = settings.damping;
-    scene.rotors = settings.rotors.clone();
     for (k, (_, d)) in settings.driven.iter().enumerate() {
         // The motor's torque enters the derivation as an input symbol its function supplies.
         let u = arena.input(&format!("u_rotor_{k}"));
@@ -279,7 +275,7 @@ pub fn expand(
     let linear = method.body(arena, linear_momentum, vector);
     let angular = method.body(arena, angular_momentum, vector);
     let principal = principal(&low, arena, &frame);
-    let gravity = match settings.gravity {
+    let gravity = match settings.loads.gravity {
         Some(g) => method.body(arena, &g, vector),
         None => quote!({ #p::Vector3::zeros() }),
     };
@@ -369,8 +365,8 @@ fn check_parameters(
 ) -> TokenStream {
     let p = Private;
     let coefficients: Vec<(&str, ExprId)> = [
-        (keys::DRAG, settings.drag),
-        (keys::DAMPING, settings.damping),
+        (keys::DRAG, settings.loads.drag),
+        (keys::DAMPING, settings.loads.damping),
     ]
     .into_iter()
     .filter_map(|(name, c)| c.map(|c| (name, c)))
@@ -396,7 +392,7 @@ fn check_parameters(
     let rotors = crate::lang::rotor::check_tokens(
         low,
         arena,
-        (&settings.rotor_index, &settings.rotors),
+        (&settings.rotor_index, &settings.loads.rotors),
         &settings.driven,
         &quote!(#p::FreeError),
         &quote!(#p::RigidBody::inertia_cm(self)),
