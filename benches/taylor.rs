@@ -24,8 +24,9 @@ use precess::ode::{
     AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
 };
 use precess::prelude::*;
+use precess::sym::{Arena, ExprId};
 use precess::taylor::kernels::cauchy;
-use precess::taylor::{StepScale, Taylor, TaylorConfig, TaylorSystem};
+use precess::taylor::{StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
@@ -439,6 +440,8 @@ impl TaylorSystem<6> for EulerPoisson {
 /// initial state, exact nutation period and the span of 10 periods.
 struct HeavyTop {
     sys: EulerPoisson,
+    /// θ̇'s sign as an expression, for the expanded event.
+    event: TaylorEvent<6>,
     y0: [f64; 6],
     period: f64,
 }
@@ -459,6 +462,7 @@ impl HeavyTop {
         let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
         Self {
             sys: EulerPoisson { i1, i3, mgl },
+            event: theta_rate_event(),
             y0,
             period,
         }
@@ -477,6 +481,39 @@ fn heavy_top_period<S: Stepper<State = [f64; 6]>>(
     t_end: f64,
 ) -> Result<(f64, u64, u64), OdeError> {
     heavy_top_period_with(stepper, t_end, theta_rate)
+}
+
+/// θ̇ up to a positive factor as an expression over the Euler–Poisson state (ω, γ), for the
+/// event expanded in each step's jet, as heyoka's `nt_event` is.
+fn theta_rate_event() -> TaylorEvent<6> {
+    let mut a = Arena::new();
+    let y: [ExprId; 6] = ["w1", "w2", "w3", "g1", "g2", "g3"].map(|n| a.coordinate(n));
+    let (p, q) = (a.mul(y[4], y[0]), a.mul(y[3], y[1]));
+    let g = a.sub(p, q);
+    TaylorEvent::new(&a, y, None, g, &[]).unwrap()
+}
+
+/// [`heavy_top_period`] with the event expanded in the jet (`Run::taylor_event`).
+fn heavy_top_period_expanded(
+    stepper: &mut Taylor<EulerPoisson, 6>,
+    t_end: f64,
+    event: &TaylorEvent<6>,
+) -> Result<(f64, u64, u64), OdeError> {
+    let out = Run::new(stepper, t_end)
+        .sample_none()
+        .taylor_event(Event::new("maximum").falling(), event)
+        .integrate()?;
+    let maxima: Vec<f64> = out
+        .events
+        .iter()
+        .filter(|h| h.direction == Direction::Falling)
+        .map(|h| h.t)
+        .collect();
+    let period = match maxima.as_slice() {
+        [first, .., last] => (last - first) / (maxima.len() - 1) as f64,
+        _ => f64::NAN,
+    };
+    Ok((period, out.stats.steps, out.stats.rhs_evals))
 }
 
 /// As [`heavy_top_period`], with θ̇ (up to a positive factor) read by `rate`.
@@ -507,6 +544,9 @@ enum Problem {
     B5,
     /// The heavy top of [`Problem::HeavyTop`] without its event: what the event scan costs.
     HeavyTopBare,
+    /// The heavy top of [`Problem::HeavyTop`] with its event expanded in the jet
+    /// (`Run::taylor_event`, as heyoka's `nt_event`) instead of scanned on the dense output.
+    HeavyTopExpanded,
     Free357,
     Free359,
     HeavyTop,
@@ -617,6 +657,15 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
         }
         Problem::Free357 => free([3.0, 5.0, 7.0], &refs.free357),
         Problem::Free359 => free([3.0, 5.0, 9.0], &refs.free359),
+        Problem::HeavyTopExpanded => {
+            let Some(cfg) = taylor_config(m).filter(|_| !extended) else {
+                return (f64::NAN, 0, 0);
+            };
+            let mut ode = Taylor::new(top.sys, 0.0, top.y0, cfg).unwrap();
+            let (period, s, e) =
+                heavy_top_period_expanded(&mut ode, 10.0 * top.period, &top.event).unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
         Problem::HeavyTopBare => {
             // No reference without the maxima: the error column is left empty.
             if matches!(m, Method::TaylorExtended(_)) {
@@ -743,12 +792,13 @@ fn methods() -> Vec<Method> {
     v
 }
 
-const PROBLEMS: [Problem; 6] = [
+const PROBLEMS: [Problem; 7] = [
     Problem::B5,
     Problem::Free357,
     Problem::Free359,
     Problem::HeavyTop,
     Problem::HeavyTopBare,
+    Problem::HeavyTopExpanded,
     Problem::TopAngles,
 ];
 
@@ -762,7 +812,7 @@ fn table(top: &HeavyTop, refs: &References) {
         refs.free357, refs.free359
     );
     println!(
-        "{:<12} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
+        "{:<16} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
         "problem", "method", "error", "steps", "evals", "median µs", "min µs"
     );
     // PRECESS_TAYLOR_PROBLEMS=HeavyTop,TopAngles limits the table to those problems.
@@ -777,7 +827,10 @@ fn table(top: &HeavyTop, refs: &References) {
             if matches!(m, Method::TaylorExtended(_))
                 && matches!(
                     p,
-                    Problem::HeavyTop | Problem::HeavyTopBare | Problem::TopAngles
+                    Problem::HeavyTop
+                        | Problem::HeavyTopBare
+                        | Problem::HeavyTopExpanded
+                        | Problem::TopAngles
                 )
             {
                 continue;
@@ -792,7 +845,7 @@ fn table(top: &HeavyTop, refs: &References) {
             if std::env::var("PRECESS_TAYLOR_UNTIMED").as_deref() == Ok("1") {
                 let (err, steps, evals) = run(p, m, top, refs);
                 println!(
-                    "{:<12} {:<18} {:>10.2e} {:>8} {:>9}",
+                    "{:<16} {:<18} {:>10.2e} {:>8} {:>9}",
                     format!("{p:?}"),
                     m.label(),
                     err,
@@ -806,7 +859,7 @@ fn table(top: &HeavyTop, refs: &References) {
                 black_box(run(black_box(p), black_box(m), top, refs));
             });
             println!(
-                "{:<12} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2} {:>9.2}",
+                "{:<16} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2} {:>9.2}",
                 format!("{p:?}"),
                 m.label(),
                 err,

@@ -13,8 +13,9 @@ With `--precess FILE` (the table `benches/taylor.rs` prints), each heyoka rung i
 the fastest precess Taylor rung of the same problem whose error is no larger (any of the
 table's Taylor methods: checked, unchecked, max-norm scale), and the ratio heyoka time /
 precess time is printed, from the minima of both (on a loaded machine the minimum is the
-closer to the unloaded time). The heavy top is matched twice: against precess's run of the
-same Euler–Poisson equations ("HeavyTop") and of its generated Euler-angle form
+closer to the unloaded time). The heavy top is matched three times: against precess's run of
+the same Euler–Poisson equations with the event scanned on the dense output ("HeavyTop") and
+expanded in the jet as heyoka's is ("HeavyTopExpanded"), and of its generated Euler-angle form
 ("TopAngles").
 
 Each figure is the median over many repeats of one `propagate_until` from the initial state
@@ -212,7 +213,7 @@ def main():
         count = len(maxima)
         line(
             "HeavyTop", tol, err, ta, steps, median_us(call), f"   ({count} maxima)",
-            against=("HeavyTop", "TopAngles"),
+            against=("HeavyTop", "HeavyTopExpanded", "TopAngles"),
         )
 
 

@@ -60,8 +60,10 @@ pub struct TaylorConfig {
     /// because the rows past p are large (x' = P(t) y with P = 0.03 t¹⁰ − 1.9 t¹³ from t = 0
     /// went 0.98 in one step of order 6 with an error of 0.69 at 1e-4). A failed check takes
     /// the step again, shorter, from the same jet ([`Stats::rejections`](crate::ode::Stats::rejections)).
-    /// It costs one evaluation of f a step (a jet to order 1) and a Horner sum, and changes
-    /// no bit of a step that passes. `false` is Jorba and Zou's rule alone, as heyoka runs
+    /// The check reads the jet at the step's end, which is the next step's and is computed
+    /// once (its rows f and f′/2 against the polynomial's y_p′(h) and y_p″(h)/2, the second
+    /// catching a defect that vanishes at the end by chance), so it costs two Horner chains
+    /// beside the step's sum and changes no bit of a step that passes. `false` is Jorba and Zou's rule alone, as heyoka runs
     /// it: for timing the rule, or a system whose jet is not computed from the state it is
     /// given. A fixed step is never checked.
     pub defect_check: bool,

@@ -30,8 +30,10 @@
 //! Simpson's ⅔ h ‖δ(h/2)‖, at the price of one more evaluation of f; the second row is free.
 //!
 //! What the check costs: the jet at the step's end is the next step's, computed once and
-//! kept (`Taylor::step`), so the check adds the Horner chains of y_p′(h) and y_p″(h)/2 and
-//! their terms' sizes beside the step's own sum, in the same pass, and N comparisons. Only a
+//! kept (`Taylor::step`), so the check adds the Horner chains of y_p′(h) and y_p″(h)/2
+//! beside the step's own sum, in the same pass, and N comparisons; the sums of the terms'
+//! sizes, which bound the rounding, are summed only for a step whose estimate without them
+//! fails (at the tightest tolerances, or a step to be refused). Only a
 //! rejected step pays a jet more (the next jet of the shorter step). Where no next jet is
 //! kept (the lanes, whose jets are packed, and the extended mode), the two rows are a jet of
 //! order 2 at the end.
@@ -55,96 +57,116 @@ const CUT: (f64, f64) = (0.1, 0.5);
 pub(super) const ORDER: usize = 2;
 
 /// The step polynomial re-expanded at its end: y_p′(h) = Σₖ₌₁ᵖ k c_k hᵏ⁻¹ and
-/// y_p″(h)/2 = Σₖ₌₂ᵖ C(k, 2) c_k hᵏ⁻² for every component, and the same sums of the terms'
-/// sizes, which bound their rounding (an oscillating solution's terms can be far larger than
-/// their sum). It belongs to the step of order `p` and size `h` it was summed for.
+/// y_p″(h)/2 = Σₖ₌₂ᵖ C(k, 2) c_k hᵏ⁻² for every component. It belongs to the step of order
+/// `p` and size `h` it was summed for.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Slope<const N: usize> {
     p: usize,
     h: f64,
     value: [f64; N],
-    sizes: [f64; N],
     second: [f64; N],
-    second_sizes: [f64; N],
+}
+
+/// C(k, 2) = k(k − 1)/2, the weight of c_k hᵏ⁻² in y_p″(h)/2.
+fn binomial(k: f64) -> f64 {
+    0.5 * k * (k - 1.0)
 }
 
 /// The step's increment Σₖ₌₁ᵖ c_k hᵏ and its [`Slope`] in one pass over the rows (p ≥ 1),
-/// by Horner with the order outside: the increment's operations are those of the step's own
-/// sum (`horner_increment`), so its bits are; the slope's chains run beside it, where a
-/// second pass would wait on each chain again.
+/// by Horner with the order outside and the derivatives by repeated synthetic division (each
+/// chain one multiply-add a term: e ← e·h + d, d ← d·h + s, s ← s·h + c_k). The increment's
+/// operations are those of the step's own sum (`horner_increment`), so its bits are; the
+/// slope's chains run beside it, where a second pass would wait on each chain again.
 pub(super) fn increment_and_slope<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], Slope<N>) {
     let p = c.len().saturating_sub(1);
     let zero = [0.0; N];
-    let Some(top) = c.get(p).filter(|_| p >= 1) else {
+    let Some((top, lower)) = c.split_last().filter(|_| p >= 1) else {
         let slope = Slope {
             p,
             h,
             value: zero,
-            sizes: zero,
             second: zero,
-            second_sizes: zero,
         };
         return (zero, slope);
     };
-    let pf = p as f64;
-    let binomial = |k: f64| 0.5 * k * (k - 1.0);
-    let mut s = *top;
-    let mut value = top.map(|v| pf * v);
-    let mut sizes = top.map(|v| pf * v.abs());
-    let mut second = top.map(|v| binomial(pf) * v);
-    let mut second_sizes = second.map(f64::abs);
-    for k in (1..p).rev() {
-        let kf = k as f64;
-        let bk = binomial(kf);
-        for i in 0..N {
-            let cki = c[k][i];
-            s[i] = s[i] * h + cki;
-            value[i] = value[i] * h + kf * cki;
-            sizes[i] = sizes[i] * h + kf * cki.abs();
-            // Order 1 has no term in y_p″: the chain stops at order 2.
-            if k >= 2 {
-                second[i] = second[i] * h + bk * cki;
-                second_sizes[i] = second_sizes[i] * h + bk * cki.abs();
-            }
+    let (mut s, mut d, mut e) = (*top, zero, zero);
+    for ck in lower.iter().skip(1).rev() {
+        for (((si, di), ei), cki) in s.iter_mut().zip(&mut d).zip(&mut e).zip(ck) {
+            *ei = *ei * h + *di;
+            *di = *di * h + *si;
+            *si = *si * h + cki;
         }
+    }
+    // The last division (by the order 0) for the derivatives; the increment is s·h.
+    for ((si, di), ei) in s.iter().zip(&mut d).zip(&mut e) {
+        *ei = *ei * h + *di;
+        *di = *di * h + si;
     }
     let slope = Slope {
         p,
         h,
-        value,
-        sizes,
-        second,
-        second_sizes,
+        value: d,
+        second: e,
     };
     (s.map(|si| si * h), slope)
+}
+
+/// The sums of the sizes of the terms of y_p′(h) and of y_p″(h)/2, Σₖ k |c_k| hᵏ⁻¹ and
+/// Σₖ C(k, 2) |c_k| hᵏ⁻², which bound their rounding (an oscillating solution's terms can be
+/// far larger than their sum). Only a step whose estimate without them is above ε needs
+/// them: a second pass over its rows, not a cost of every step.
+fn sizes<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], [f64; N]) {
+    let (mut first, mut second) = ([0.0; N], [0.0; N]);
+    for (k, row) in c.iter().enumerate().skip(1).rev() {
+        let (kf, bk) = (k as f64, binomial(k as f64));
+        for i in 0..N {
+            first[i] = first[i] * h + kf * row[i].abs();
+            if k >= 2 {
+                second[i] = second[i] * h + bk * row[i].abs();
+            }
+        }
+    }
+    (first, second)
 }
 
 /// The estimated error of the step whose polynomial has the slope `slope`, in units of the
 /// step's tolerance, from the rows d₁ (`rows[0]`) and, if given, d₂ (`rows[1]`) of the jet
 /// at its end: the larger of ‖δ₁‖_w·h/(p + 1) and ‖δ₂‖_w·h²/C(p + 1, 2), the weights `w`
-/// those of the step rule, each defect less its own rounding. NaN when a row or the
-/// polynomial is not finite (the caller treats it as a failed check, and the new state's own
-/// check names it).
-fn error<const N: usize>(slope: &Slope<N>, rows: &[[f64; N]], w: &[f64; N]) -> f64 {
+/// those of the step rule, each defect less its own rounding when `sizes` (the terms' sizes
+/// of the two sums) are given. NaN when a row or the polynomial is not finite (the caller
+/// treats it as a failed check, and the new state's own check names it).
+fn error<const N: usize>(
+    slope: &Slope<N>,
+    rows: &[[f64; N]],
+    w: &[f64; N],
+    sizes: Option<&([f64; N], [f64; N])>,
+) -> f64 {
     let (h, p1) = (slope.h, slope.p as f64 + 1.0);
     let first = rows
         .first()
-        .map_or(0.0, |d1| excess(d1, &slope.value, &slope.sizes, w));
+        .map_or(0.0, |d1| excess(d1, &slope.value, sizes.map(|s| &s.0), w));
     let second = rows
         .get(1)
-        .map_or(0.0, |d2| excess(d2, &slope.second, &slope.second_sizes, w));
+        .map_or(0.0, |d2| excess(d2, &slope.second, sizes.map(|s| &s.1), w));
     if first.is_nan() || second.is_nan() {
         return f64::NAN;
     }
     (first * h / p1).max(second * h * h / (0.5 * p1 * slope.p as f64))
 }
 
-/// ‖d − y‖_w less the rounding of the two: `d` a row of the jet at the step's end, `y` the
-/// polynomial's and `sizes` the sum of its terms' sizes. NaN if any component is.
-fn excess<const N: usize>(d: &[f64; N], y: &[f64; N], sizes: &[f64; N], w: &[f64; N]) -> f64 {
+/// ‖d − y‖_w, less the rounding of the two when `sizes` (the sum of the polynomial's terms'
+/// sizes) is given: `d` a row of the jet at the step's end, `y` the polynomial's. NaN if any
+/// component is.
+fn excess<const N: usize>(
+    d: &[f64; N],
+    y: &[f64; N],
+    sizes: Option<&[f64; N]>,
+    w: &[f64; N],
+) -> f64 {
     let mut worst = 0.0f64;
     for i in 0..N {
-        let e = ((d[i] - y[i]).abs() - ROUNDING * (d[i].abs() + sizes[i])) * w[i];
+        let rounding = sizes.map_or(0.0, |s| ROUNDING * (d[i].abs() + s[i]));
+        let e = ((d[i] - y[i]).abs() - rounding) * w[i];
         if e.is_nan() {
             return f64::NAN;
         }
@@ -166,17 +188,22 @@ pub(super) fn end_rows<S: TaylorSystem<N>, const N: usize>(
     rows
 }
 
-/// `None` when the step whose polynomial has the slope `slope` passes the defect check at
-/// tolerance `eps` with weights `w`, given the rows d₁, d₂ (or d₁ alone) of the jet at its
-/// end in `rows`; otherwise the shorter step to take again from the same jet.
+/// `None` when the step of the jet `c` whose polynomial has the slope `slope` passes the
+/// defect check at tolerance `eps` with weights `w`, given the rows d₁, d₂ (or d₁ alone) of
+/// the jet at its end in `rows`; otherwise the shorter step to take again from the same jet.
+/// The rounding of the sums is allowed for only when the estimate without it fails.
 pub(super) fn shorter_step<const N: usize>(
+    c: &[[f64; N]],
     slope: &Slope<N>,
     rows: &[[f64; N]],
     w: &[f64; N],
     eps: f64,
 ) -> Option<f64> {
     let h = slope.h;
-    let err = error(slope, rows, w);
+    if error(slope, rows, w, None) <= eps {
+        return None;
+    }
+    let err = error(slope, rows, w, Some(&sizes(c, h)));
     if err <= eps {
         return None;
     }
@@ -228,9 +255,10 @@ mod tests {
     fn the_slope_is_the_polynomial_s_and_the_increment_the_step_s() {
         // c = (1, 2, −3, 4): y′(h) = 2 − 6h + 12h², its terms' sizes 2 + 6h + 12h²;
         // y″(h)/2 = −3 + 12h, sizes 3 + 12h; the increment 2h − 3h² + 4h³.
-        let (inc, slope) = increment_and_slope(&[[1.0], [2.0], [-3.0], [4.0]], 0.5);
-        assert_eq!((inc, slope.value, slope.sizes), ([0.75], [2.0], [8.0]));
-        assert_eq!((slope.second, slope.second_sizes), ([3.0], [9.0]));
+        let c = [[1.0], [2.0], [-3.0], [4.0]];
+        let (inc, slope) = increment_and_slope(&c, 0.5);
+        assert_eq!((inc, slope.value, slope.second), ([0.75], [2.0], [3.0]));
+        assert_eq!(sizes(&c, 0.5), ([8.0], [9.0]));
     }
 
     /// The check of the step of size `h` from y = 1 with the jet `c`, against the jet of
@@ -238,7 +266,7 @@ mod tests {
     fn check(c: &[[f64; 1]], h: f64) -> Option<f64> {
         let (inc, slope) = increment_and_slope(c, h);
         let rows = end_rows(&Decay, &mut (), h, &[c[0][0] + inc[0]]);
-        shorter_step(&slope, &rows[1..], &[1.0], 1e-10)
+        shorter_step(c, &slope, &rows[1..], &[1.0], 1e-10)
     }
 
     #[test]
@@ -263,8 +291,10 @@ mod tests {
         let y = [1.0 + inc[0]];
         let truth = (y[0] - (-1.0f64).exp()).abs();
         let rows = end_rows(&Decay, &mut (), 1.0, &y);
-        let second = excess(&rows[2], &slope.second, &slope.second_sizes, &[1.0]) / 21.0;
-        for (name, est) in [("d1", error(&slope, &rows[1..2], &[1.0])), ("d2", second)] {
+        let sz = sizes(&c, 1.0);
+        let second = excess(&rows[2], &slope.second, Some(&sz.1), &[1.0]) / 21.0;
+        let first = error(&slope, &rows[1..2], &[1.0], Some(&sz));
+        for (name, est) in [("d1", first), ("d2", second)] {
             assert!(
                 est > 0.5 * truth && est < 2.0 * truth,
                 "{name}: {est:e} against {truth:e}"

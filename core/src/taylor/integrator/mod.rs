@@ -434,11 +434,13 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             self.stats.rhs_evals += q as u64;
             self.ahead_order = q;
             let d = self.ahead.get(1..=q.min(defect::ORDER)).unwrap_or(&[]);
-            defect::shorter_step(slope, d, &rule.weights, rule.eps)
+            let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
+            defect::shorter_step(c, slope, d, &rule.weights, rule.eps)
         } else {
             let rows = defect::end_rows(&self.sys, &mut self.ws, t_new, y_new);
             self.stats.rhs_evals += defect::ORDER as u64;
-            defect::shorter_step(slope, &rows[1..], &rule.weights, rule.eps)
+            let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
+            defect::shorter_step(c, slope, &rows[1..], &rule.weights, rule.eps)
         };
         if let Some(h) = shorter {
             self.ahead_order = 0;
