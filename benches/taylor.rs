@@ -24,8 +24,9 @@ use precess::ode::{
     AdaptiveConfig, Direction, Dop853, Event, OdeError, Run, Stepper, System, Vern9,
 };
 use precess::prelude::*;
+use precess::sym::{Arena, ExprId};
 use precess::taylor::kernels::cauchy;
-use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use precess::taylor::{StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
@@ -439,6 +440,8 @@ impl TaylorSystem<6> for EulerPoisson {
 /// initial state, exact nutation period and the span of 10 periods.
 struct HeavyTop {
     sys: EulerPoisson,
+    /// θ̇'s sign as an expression, for the expanded event.
+    event: TaylorEvent<6>,
     y0: [f64; 6],
     period: f64,
 }
@@ -459,6 +462,7 @@ impl HeavyTop {
         let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
         Self {
             sys: EulerPoisson { i1, i3, mgl },
+            event: theta_rate_event(),
             y0,
             period,
         }
@@ -477,6 +481,39 @@ fn heavy_top_period<S: Stepper<State = [f64; 6]>>(
     t_end: f64,
 ) -> Result<(f64, u64, u64), OdeError> {
     heavy_top_period_with(stepper, t_end, theta_rate)
+}
+
+/// θ̇ up to a positive factor as an expression over the Euler–Poisson state (ω, γ), for the
+/// event expanded in each step's jet, as heyoka's `nt_event` is.
+fn theta_rate_event() -> TaylorEvent<6> {
+    let mut a = Arena::new();
+    let y: [ExprId; 6] = ["w1", "w2", "w3", "g1", "g2", "g3"].map(|n| a.coordinate(n));
+    let (p, q) = (a.mul(y[4], y[0]), a.mul(y[3], y[1]));
+    let g = a.sub(p, q);
+    TaylorEvent::new(&a, y, None, g, &[]).unwrap()
+}
+
+/// [`heavy_top_period`] with the event expanded in the jet (`Run::taylor_event`).
+fn heavy_top_period_expanded(
+    stepper: &mut Taylor<EulerPoisson, 6>,
+    t_end: f64,
+    event: &TaylorEvent<6>,
+) -> Result<(f64, u64, u64), OdeError> {
+    let out = Run::new(stepper, t_end)
+        .sample_none()
+        .taylor_event(Event::new("maximum").falling(), event)
+        .integrate()?;
+    let maxima: Vec<f64> = out
+        .events
+        .iter()
+        .filter(|h| h.direction == Direction::Falling)
+        .map(|h| h.t)
+        .collect();
+    let period = match maxima.as_slice() {
+        [first, .., last] => (last - first) / (maxima.len() - 1) as f64,
+        _ => f64::NAN,
+    };
+    Ok((period, out.stats.steps, out.stats.rhs_evals))
 }
 
 /// As [`heavy_top_period`], with θ̇ (up to a positive factor) read by `rate`.
@@ -505,6 +542,11 @@ fn heavy_top_period_with<S: Stepper<State = [f64; 6]>>(
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Problem {
     B5,
+    /// The heavy top of [`Problem::HeavyTop`] without its event: what the event scan costs.
+    HeavyTopBare,
+    /// The heavy top of [`Problem::HeavyTop`] with its event expanded in the jet
+    /// (`Run::taylor_event`, as heyoka's `nt_event`) instead of scanned on the dense output.
+    HeavyTopExpanded,
     Free357,
     Free359,
     HeavyTop,
@@ -514,6 +556,10 @@ enum Problem {
 #[derive(Clone, Copy, Debug)]
 enum Method {
     Taylor(f64),
+    /// Taylor without the defect check (Jorba and Zou's rule alone, as heyoka runs it).
+    TaylorUnchecked(f64),
+    /// Taylor with every component measured against ‖y‖∞ (heyoka's scale).
+    TaylorMaxNorm(f64),
     /// Taylor in the extended mode (B5 and the free bodies only).
     TaylorExtended(f64),
     Dop853(f64),
@@ -524,10 +570,28 @@ impl Method {
     fn label(&self) -> String {
         match self {
             Method::Taylor(t) => format!("Taylor tol {t:.0e}"),
+            Method::TaylorUnchecked(t) => format!("Taylor nochk {t:.0e}"),
+            Method::TaylorMaxNorm(t) => format!("Taylor maxnorm {t:.0e}"),
             Method::TaylorExtended(t) => format!("Taylor ext tol {t:.0e}"),
             Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
             Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
         }
+    }
+}
+
+/// The Taylor configuration of a Taylor method (`None` for the pairs and the extended mode).
+fn taylor_config(m: Method) -> Option<TaylorConfig> {
+    match m {
+        Method::Taylor(tol) => Some(TaylorConfig::with_tol(tol, tol)),
+        Method::TaylorUnchecked(tol) => Some(TaylorConfig {
+            defect_check: false,
+            ..TaylorConfig::with_tol(tol, tol)
+        }),
+        Method::TaylorMaxNorm(tol) => Some(TaylorConfig {
+            scale: StepScale::MaxNorm,
+            ..TaylorConfig::with_tol(tol, tol)
+        }),
+        _ => None,
     }
 }
 
@@ -548,11 +612,13 @@ fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
         let st = s.stats();
         (*s.state(), st.steps, st.rhs_evals)
     }
+    if let Some(cfg) = taylor_config(m) {
+        return done(Taylor::new(sys, 0.0, y0, cfg).unwrap(), t_end);
+    }
     match m {
-        Method::Taylor(tol) => done(
-            Taylor::new(sys, 0.0, y0, TaylorConfig::with_tol(tol, tol)).unwrap(),
-            t_end,
-        ),
+        Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
+            unreachable!("a Taylor configuration")
+        }
         Method::TaylorExtended(tol) => {
             let cfg = TaylorConfig::with_tol(tol, tol).extended_orders(EXTENDED_ORDERS);
             done(Taylor::new(sys, 0.0, y0, cfg).unwrap(), t_end)
@@ -591,16 +657,34 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
         }
         Problem::Free357 => free([3.0, 5.0, 7.0], &refs.free357),
         Problem::Free359 => free([3.0, 5.0, 9.0], &refs.free359),
+        Problem::HeavyTopExpanded => {
+            let Some(cfg) = taylor_config(m).filter(|_| !extended) else {
+                return (f64::NAN, 0, 0);
+            };
+            let mut ode = Taylor::new(top.sys, 0.0, top.y0, cfg).unwrap();
+            let (period, s, e) =
+                heavy_top_period_expanded(&mut ode, 10.0 * top.period, &top.event).unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+        Problem::HeavyTopBare => {
+            // No reference without the maxima: the error column is left empty.
+            if matches!(m, Method::TaylorExtended(_)) {
+                return (f64::NAN, 0, 0);
+            }
+            let (_, s, e) = integrate(top.sys, top.y0, 10.0 * top.period, m);
+            (f64::NAN, s, e)
+        }
         Problem::HeavyTop => {
             let t_end = 10.0 * top.period;
             let (period, s, e) = match m {
                 // The heavy tops' jets have no double-double orders (the table skips them).
                 Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
-                Method::Taylor(tol) => heavy_top_period(
-                    &mut Taylor::new(top.sys, 0.0, top.y0, TaylorConfig::with_tol(tol, tol))
-                        .unwrap(),
-                    t_end,
-                ),
+                Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
+                    heavy_top_period(
+                        &mut Taylor::new(top.sys, 0.0, top.y0, taylor_config(m).unwrap()).unwrap(),
+                        t_end,
+                    )
+                }
                 Method::Dop853(tol) => heavy_top_period(
                     &mut Dop853::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
                         .unwrap(),
@@ -622,12 +706,13 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             let chart = TopChart::declared(&SpinningTop);
             let (period, s, e) = match m {
                 Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
-                Method::Taylor(tol) => heavy_top_period_with(
-                    &mut Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
-                        .unwrap(),
-                    t_end,
-                    |y| y[4],
-                ),
+                Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
+                    heavy_top_period_with(
+                        &mut Taylor::new(SpinningTop, 0.0, y0, taylor_config(m).unwrap()).unwrap(),
+                        t_end,
+                        |y| y[4],
+                    )
+                }
                 Method::Dop853(tol) => heavy_top_period_with(
                     &mut Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
                     t_end,
@@ -698,6 +783,8 @@ fn methods() -> Vec<Method> {
     let tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14];
     let mut v: Vec<Method> = tols.iter().map(|&t| Method::Taylor(t)).collect();
     v.extend([1e-15, 1e-16].map(Method::Taylor));
+    v.extend(tols.map(Method::TaylorUnchecked));
+    v.extend(tols.map(Method::TaylorMaxNorm));
     v.extend([1e-15, 1e-16, 1e-17, 1e-18].map(Method::TaylorExtended));
     v.extend(tols.map(Method::Dop853));
     v.extend(tols.map(Method::Vern9));
@@ -705,11 +792,13 @@ fn methods() -> Vec<Method> {
     v
 }
 
-const PROBLEMS: [Problem; 5] = [
+const PROBLEMS: [Problem; 7] = [
     Problem::B5,
     Problem::Free357,
     Problem::Free359,
     Problem::HeavyTop,
+    Problem::HeavyTopBare,
+    Problem::HeavyTopExpanded,
     Problem::TopAngles,
 ];
 
@@ -723,7 +812,7 @@ fn table(top: &HeavyTop, refs: &References) {
         refs.free357, refs.free359
     );
     println!(
-        "{:<10} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
+        "{:<16} {:<18} {:>10} {:>8} {:>9} {:>11} {:>9}",
         "problem", "method", "error", "steps", "evals", "median µs", "min µs"
     );
     // PRECESS_TAYLOR_PROBLEMS=HeavyTop,TopAngles limits the table to those problems.
@@ -736,8 +825,33 @@ fn table(top: &HeavyTop, refs: &References) {
         }
         for m in methods() {
             if matches!(m, Method::TaylorExtended(_))
-                && matches!(p, Problem::HeavyTop | Problem::TopAngles)
+                && matches!(
+                    p,
+                    Problem::HeavyTop
+                        | Problem::HeavyTopBare
+                        | Problem::HeavyTopExpanded
+                        | Problem::TopAngles
+                )
             {
+                continue;
+            }
+            // PRECESS_TAYLOR_METHODS=nochk,maxnorm keeps the methods whose label holds one.
+            if let Ok(list) = std::env::var("PRECESS_TAYLOR_METHODS")
+                && !list.split(',').any(|part| m.label().contains(part))
+            {
+                continue;
+            }
+            // PRECESS_TAYLOR_UNTIMED=1 runs each row once (for callgrind's counts).
+            if std::env::var("PRECESS_TAYLOR_UNTIMED").as_deref() == Ok("1") {
+                let (err, steps, evals) = run(p, m, top, refs);
+                println!(
+                    "{:<16} {:<18} {:>10.2e} {:>8} {:>9}",
+                    format!("{p:?}"),
+                    m.label(),
+                    err,
+                    steps,
+                    evals
+                );
                 continue;
             }
             let (err, steps, evals) = run(p, m, top, refs);
@@ -745,7 +859,7 @@ fn table(top: &HeavyTop, refs: &References) {
                 black_box(run(black_box(p), black_box(m), top, refs));
             });
             println!(
-                "{:<10} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2} {:>9.2}",
+                "{:<16} {:<18} {:>10.2e} {:>8} {:>9} {:>11.2} {:>9.2}",
                 format!("{p:?}"),
                 m.label(),
                 err,

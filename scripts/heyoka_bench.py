@@ -5,6 +5,18 @@ over 10 nutation periods with its nutation maxima as events.
 
     pip install heyoka
     python3 scripts/heyoka_bench.py
+    # at matched error against precess's table, run just before in the same sitting:
+    cargo bench -p precess-benches --bench taylor -- nothing > precess_taylor.txt
+    python3 scripts/heyoka_bench.py --precess precess_taylor.txt
+
+With `--precess FILE` (the table `benches/taylor.rs` prints), each heyoka rung is set beside
+the fastest precess Taylor rung of the same problem whose error is no larger (any of the
+table's Taylor methods: checked, unchecked, max-norm scale), and the ratio heyoka time /
+precess time is printed, from the minima of both (on a loaded machine the minimum is the
+closer to the unloaded time). The heavy top is matched three times: against precess's run of
+the same Euler–Poisson equations with the event scanned on the dense output ("HeavyTop") and
+expanded in the jet as heyoka's is ("HeavyTopExpanded"), and of its generated Euler-angle form
+("TopAngles").
 
 Each figure is the median over many repeats of one `propagate_until` from the initial state
 (the integrator is built, and its code compiled by LLVM, once per problem and tolerance,
@@ -19,7 +31,9 @@ the heavy top's moments, M g l and exact nutation period from its body descripti
 """
 
 import math
+import re
 import statistics
+import sys
 import time
 
 import heyoka as hy
@@ -116,38 +130,90 @@ def timed_run(ta, y0, t_end, before=None):
     return call
 
 
+ROW = re.compile(
+    r"^(\S+)\s+(Taylor(?: \S+)? (?:tol )?\S+)\s+(\S+)\s+(\d+)\s+(\d+)\s+([0-9.]+)\s+([0-9.]+)$"
+)
+
+
+def precess_rows(path):
+    """The Taylor rows of precess's table: {problem: [(method, error, steps, min µs)]}."""
+    rows = {}
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            m = ROW.match(line.strip())
+            if not m or "ext" in m.group(2):
+                continue
+            err = float(m.group(3))
+            if math.isnan(err):
+                continue
+            rows.setdefault(m.group(1), []).append(
+                (m.group(2), err, int(m.group(4)), float(m.group(7)))
+            )
+    return rows
+
+
+def matched(precess, problem, hy_err, hy_min):
+    """The fastest precess rung of `problem` whose error is no larger than heyoka's."""
+    fits = [r for r in precess.get(problem, []) if r[1] <= hy_err]
+    if not fits:
+        return "no precess rung that accurate"
+    best = min(fits, key=lambda r: r[3])
+    return f"{best[0]} {best[1]:.2e} {best[2]} steps {best[3]:.2f} µs: ratio {hy_min / best[3]:.2f}"
+
+
 def main():
+    precess = {}
+    if "--precess" in sys.argv:
+        precess = precess_rows(sys.argv[sys.argv.index("--precess") + 1])
     print(f"heyoka {hy.__version__}")
     x = hy.make_vars("x")
     empty = hy.taylor_adaptive([(x, 0.0 * x)], [0.0], tol=1e-10)
     empty_call = timed_run(empty, [0.0], 0.0)
     med, low = median_us(empty_call)
     print(f"python call overhead (propagate_until to the current time): median {med:.2f} µs, min {low:.2f} µs")
-    print(f"{'problem':<10} {'tol':>7} {'error':>10} {'order':>6} {'median µs':>10} {'min µs':>8}")
+    print(
+        f"{'problem':<10} {'tol':>7} {'error':>10} {'order':>6} {'steps':>6} {'median µs':>10} {'min µs':>8}"
+        + ("   precess at matched error" if precess else "")
+    )
+
+    def line(name, tol, err, ta, steps, times, extra="", against=()):
+        out = f"{name:<10} {tol:>7.0e} {err:>10.2e} {ta.order:>6} {steps:>6} {fmt(times)}{extra}"
+        for problem in against if precess else ():
+            out += f"\n{'':<10} {'':>7} precess {problem}: {matched(precess, problem, err, times[1])}"
+        print(out)
+
     for tol in TOLS:
         ta = b5(tol)
         call = timed_run(ta, [0.0, 1.0, 1.0], 20.0)
-        call()
+        ta.time = 0.0
+        ta.state[:] = [0.0, 1.0, 1.0]
+        steps = ta.propagate_until(20.0)[3]
         err = max_err(ta.state, B5_Y20)
-        print(f"{'B5':<10} {tol:>7.0e} {err:>10.2e} {ta.order:>6} {fmt(median_us(call))}")
+        line("B5", tol, err, ta, steps, median_us(call), against=("B5",))
     for inertia, name in [((3.0, 5.0, 7.0), "Free357"), ((3.0, 5.0, 9.0), "Free359")]:
         for tol in TOLS:
             ta = free(inertia, tol)
             call = timed_run(ta, [0.0, 2.0, 0.01], 200.0)
-            call()
+            ta.time = 0.0
+            ta.state[:] = [0.0, 2.0, 0.01]
+            steps = ta.propagate_until(200.0)[3]
             err = max_err(ta.state, FREE_M200[inertia])
-            print(f"{name:<10} {tol:>7.0e} {err:>10.2e} {ta.order:>6} {fmt(median_us(call))}")
+            line(name, tol, err, ta, steps, median_us(call), against=(name,))
     y0 = [0.0, 0.0, 150.0, 0.0, math.sin(math.radians(20.0)), math.cos(math.radians(20.0))]
     for tol in TOLS:
         maxima = []
         ta = heavy_top(tol, maxima)
         call = timed_run(ta, y0, 10.0 * TOP_PERIOD, before=maxima.clear)
-        call()
+        ta.time = 0.0
+        ta.state[:] = y0
+        maxima.clear()
+        steps = ta.propagate_until(10.0 * TOP_PERIOD)[3]
         period = (maxima[-1] - maxima[0]) / (len(maxima) - 1)
         err = abs(period - TOP_PERIOD) / TOP_PERIOD
-        print(
-            f"{'HeavyTop':<10} {tol:>7.0e} {err:>10.2e} {ta.order:>6} {fmt(median_us(call))}"
-            f"   ({len(maxima)} maxima)"
+        count = len(maxima)
+        line(
+            "HeavyTop", tol, err, ta, steps, median_us(call), f"   ({count} maxima)",
+            against=("HeavyTop", "HeavyTopExpanded", "TopAngles"),
         )
 
 

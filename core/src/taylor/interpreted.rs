@@ -8,7 +8,7 @@ use super::tape::{ScalarOp, Tape, Value};
 use super::{MAX_TAYLOR_ORDER, TaylorSystem};
 use crate::codegen::{BindingError, Bindings, Program, check_distinct};
 use crate::exact::Dd;
-use crate::sym::{Arena, ExprId};
+use crate::sym::{Arena, ExprId, SymbolId};
 
 /// Why a [`TaylorTape`] could not be built.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -112,25 +112,14 @@ impl<const N: usize> TaylorTape<N> {
         values: &[(&str, f64)],
         max_order: usize,
     ) -> Result<Self, TaylorError> {
-        let mut symbols = Vec::with_capacity(N + 1);
-        for (index, &e) in state.iter().enumerate() {
-            symbols.push(
-                arena
-                    .as_symbol(e)
-                    .ok_or(TaylorError::StateNotASymbol { index })?,
-            );
-        }
+        let symbols = state_symbols(arena, &state)?;
         if !(1..=MAX_TAYLOR_ORDER).contains(&max_order) {
             return Err(TaylorError::Order {
                 order: max_order,
                 max: MAX_TAYLOR_ORDER,
             });
         }
-        let time = time.and_then(|t| arena.as_symbol(t));
-        let program = Program::lower(arena, &rhs);
-        let tape = Tape::from_program(&program, &symbols, time);
-        symbols.extend(time);
-        let (scalars, scalars_dd) = bind_scalars(arena, &program, &tape, &symbols, values)?;
+        let (tape, scalars, scalars_dd) = bound_tape(arena, symbols, time, &rhs, values)?;
         Ok(TaylorTape {
             tape,
             scalars,
@@ -172,23 +161,8 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
         };
         let order = order.min(self.max_order).min(top);
         let st = self.max_order + 1;
-        let len = self.tape.series_count() * st;
         // Longer is fine: the extended mode keeps its double-double table after this one.
-        if ws.len() < len {
-            ws.resize(len, 0.0);
-        }
-        let c = ws.as_mut_slice();
-        for (i, &yi) in y.iter().enumerate() {
-            c[i * st] = yi;
-        }
-        // The time series is t + τ. Its row is the only one read beyond what this call
-        // writes, so it is written whole: the workspace may have served another tape.
-        if let Some(ti) = self.tape.time() {
-            let row = &mut c[ti as usize * st..(ti as usize + 1) * st];
-            row.fill(0.0);
-            row[0] = t;
-            row[1] = 1.0;
-        }
+        let c = self.tape.seeded(ws, st, t, y);
         coeffs[0] = *y;
         // The steps at order k give f's coefficient k, which only order k + 1 reads: the
         // last order needs none.
@@ -272,17 +246,58 @@ impl<const N: usize> TaylorSystem<N> for TaylorTape<N> {
     }
 }
 
-/// The values of `tape`'s scalars (lowered from `program`, whose inputs are `symbols` and
-/// parameters), in f64 and in double-double, with the parameters bound by name from
-/// `values`: what a [`TaylorTape`] and a [`TaylorEvent`](super::TaylorEvent) compute once.
+/// The symbols of the state entries, in order.
+///
+/// # Errors
+/// [`TaylorError::StateNotASymbol`] for the first entry that is not a bare symbol.
+pub(super) fn state_symbols<const N: usize>(
+    arena: &Arena,
+    state: &[ExprId; N],
+) -> Result<Vec<SymbolId>, TaylorError> {
+    let mut symbols = Vec::with_capacity(N + 1);
+    for (index, &e) in state.iter().enumerate() {
+        symbols.push(
+            arena
+                .as_symbol(e)
+                .ok_or(TaylorError::StateNotASymbol { index })?,
+        );
+    }
+    Ok(symbols)
+}
+
+/// The tape of `outputs` over the state `symbols` (and `time`'s symbol, if it is one), with
+/// its scalars bound from `values` in f64 and in double-double: what a [`TaylorTape`] (the
+/// right-hand side) and a [`TaylorEvent`](super::TaylorEvent) (the event function) build
+/// once, the same way.
 ///
 /// # Errors
 /// The binding errors, then [`TaylorError::NonFiniteConstant`], as [`TaylorTape::new`].
-pub(super) fn bind_scalars(
+pub(super) fn bound_tape(
+    arena: &Arena,
+    mut symbols: Vec<SymbolId>,
+    time: Option<ExprId>,
+    outputs: &[ExprId],
+    values: &[(&str, f64)],
+) -> Result<(Tape, Vec<f64>, Vec<Dd>), TaylorError> {
+    let time = time.and_then(|t| arena.as_symbol(t));
+    let program = Program::lower(arena, outputs);
+    let tape = Tape::from_program(&program, &symbols, time);
+    symbols.extend(time);
+    let (scalars, scalars_dd) = bind_scalars(arena, &program, &tape, &symbols, values)?;
+    Ok((tape, scalars, scalars_dd))
+}
+
+/// The values of `tape`'s scalars (lowered from `program`, whose inputs are `symbols` and
+/// parameters), in f64 and in double-double, with the parameters bound by name from
+/// `values`.
+///
+/// # Errors
+/// The binding errors, then [`TaylorError::NonFiniteConstant`], as [`TaylorTape::new`].
+fn bind_scalars(
     arena: &Arena,
     program: &Program,
     tape: &Tape,
-    symbols: &[crate::sym::SymbolId],
+    symbols: &[SymbolId],
     values: &[(&str, f64)],
 ) -> Result<(Vec<f64>, Vec<Dd>), TaylorError> {
     // A parameter of the arena that the program does not read is bound by code that

@@ -212,6 +212,37 @@ impl Tape {
         &self.steps
     }
 
+    /// The interpreter's table of every series, `st` coefficients each (`st ≥ 1`), in `ws`
+    /// (grown, never shrunk: a longer one keeps what follows), with the state `y` at order 0
+    /// and the time series t + τ written whole. The time's row is the only one read beyond
+    /// what a pass writes, so it is written whole: the workspace may have served another
+    /// tape.
+    pub(crate) fn seeded<'a>(
+        &self,
+        ws: &'a mut Vec<f64>,
+        st: usize,
+        t: f64,
+        y: &[f64],
+    ) -> &'a mut [f64] {
+        let len = self.series_count() * st;
+        if ws.len() < len {
+            ws.resize(len, 0.0);
+        }
+        let c = ws.as_mut_slice();
+        for (i, &yi) in y.iter().enumerate() {
+            c[i * st] = yi;
+        }
+        if let Some(ti) = self.time {
+            let row = &mut c[ti as usize * st..(ti as usize + 1) * st];
+            row.fill(0.0);
+            row[0] = t;
+            if let Some(one) = row.get_mut(1) {
+                *one = 1.0;
+            }
+        }
+        c
+    }
+
     /// The number of series (state, time, and one per step; three for a sine–cosine pair:
     /// sine, cosine and the argument's derivative; one and its companions for a primitive).
     pub fn series_count(&self) -> usize {

@@ -6,6 +6,8 @@
 //! its factor (1 − s/h) is zero, so the defect f − y_p′ there is that of cos t alone. The
 //! exact solution from x(0) = 0 is x(tₛ + h) = sin(tₛ + h) + a h²¹/462.
 
+use std::cell::Cell;
+
 use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
 
 /// x′ = cos t + a s²⁰ (1 − s/h), s = max(t − tₛ, 0); `a = 0` is cos t alone.
@@ -66,10 +68,11 @@ impl TaylorSystem<1> for Bump {
 }
 
 /// A step of cos t alone at 1e-10 past t = 3 (the steps grown to their natural size), the
-/// bump put on it: the run's error at its end was 2.2 with no step rejected; now the
-/// middle's defect rejects it and the run ends within the tolerance.
+/// bump put on it: the run's error at its end was 2.2 with no step rejected; the defect's
+/// slope at the end (the next jet's second row against the polynomial's) rejects it and the
+/// run ends within the tolerance.
 #[test]
-fn a_defect_vanishing_at_the_step_s_end_is_caught_in_its_middle() {
+fn a_defect_vanishing_at_the_step_s_end_is_caught_by_its_slope() {
     let cfg = TaylorConfig::with_tol(1e-10, 1e-10);
     let cos = Bump {
         a: 0.0,
@@ -96,4 +99,88 @@ fn a_defect_vanishing_at_the_step_s_end_is_caught_in_its_middle() {
     assert!(h > 0.5, "the step {h}");
     assert!(bumped.stats().rejections > 0);
     assert!(error < 1e-8, "error {error:e}");
+}
+
+/// x′ = y, y′ = −x (c_k from the rotation's recurrence), counting the jets asked of it and
+/// the orders they were asked to.
+#[derive(Debug, Default)]
+struct Counted {
+    jets: Cell<u64>,
+    orders: Cell<u64>,
+    small_jets: Cell<u64>,
+}
+
+impl TaylorSystem<2> for Counted {
+    type Workspace = ();
+    fn max_order(&self) -> usize {
+        40
+    }
+    fn coefficients_into(
+        &self,
+        _: &mut (),
+        _t: f64,
+        y: &[f64; 2],
+        order: usize,
+        c: &mut [[f64; 2]],
+    ) {
+        self.jets.set(self.jets.get() + 1);
+        self.orders.set(self.orders.get() + order as u64);
+        if order <= 2 {
+            self.small_jets.set(self.small_jets.get() + 1);
+        }
+        c[0] = *y;
+        for k in 1..=order {
+            let k1 = k as f64;
+            c[k] = [c[k - 1][1] / k1, -c[k - 1][0] / k1];
+        }
+    }
+}
+
+/// The check reads the jet at each step's end, which is the next step's: a checked run asks
+/// for one jet a step and one at its end, never a separate evaluation of f (a jet to order 1
+/// or 2), and its steps, error and bits are those of the unchecked run. It asked for two
+/// evaluations of f a step beside the jet before (the end and the middle).
+#[test]
+fn the_check_costs_no_evaluation_beyond_the_next_step_s_jet() {
+    for tol in [1e-6, 1e-10, 1e-14] {
+        let run = |check: bool| {
+            let cfg = TaylorConfig {
+                defect_check: check,
+                ..TaylorConfig::with_tol(tol, tol)
+            };
+            let mut ode = Taylor::new(Counted::default(), 0.0, [0.0, 1.0], cfg).unwrap();
+            ode.advance_to(50.0).unwrap();
+            let stats = ode.stats();
+            let sys = ode.system();
+            let counts = (sys.jets.get(), sys.orders.get(), sys.small_jets.get());
+            (*ode.y(), stats, counts)
+        };
+        let (y, stats, (jets, orders, small)) = run(true);
+        let (y_plain, plain, (plain_jets, _, _)) = run(false);
+        assert_eq!(
+            small, 0,
+            "tol {tol:e}: {small} evaluations of f besides the jets"
+        );
+        assert_eq!(stats.rejections, 0, "tol {tol:e}");
+        assert_eq!(
+            jets,
+            stats.steps + 1,
+            "tol {tol:e}: a jet a step and one at the end"
+        );
+        assert_eq!(plain_jets, plain.steps, "tol {tol:e}");
+        assert_eq!(
+            stats.rhs_evals, orders,
+            "tol {tol:e}: every order asked is counted"
+        );
+        assert_eq!(stats.steps, plain.steps, "tol {tol:e}");
+        assert_eq!(
+            y.map(f64::to_bits),
+            y_plain.map(f64::to_bits),
+            "tol {tol:e}"
+        );
+        // Against the closed form (sin 50, cos 50): the tolerance met.
+        let exact = [50f64.sin(), 50f64.cos()];
+        let error = (y[0] - exact[0]).abs().max((y[1] - exact[1]).abs());
+        assert!(error < 100.0 * tol, "tol {tol:e}: error {error:e}");
+    }
 }

@@ -32,11 +32,10 @@ mod run;
 
 pub use run::EVENT_MISMATCH;
 
-use crate::codegen::Program;
 use crate::sym::{Arena, ExprId};
 
 use super::TaylorError;
-use super::interpreted::bind_scalars;
+use super::interpreted::{bound_tape, state_symbols};
 use super::recurrence;
 use super::tape::{Tape, Value};
 
@@ -94,19 +93,8 @@ impl<const N: usize> TaylorEvent<N> {
         g: ExprId,
         values: &[(&str, f64)],
     ) -> Result<Self, TaylorError> {
-        let mut symbols = Vec::with_capacity(N + 1);
-        for (index, &e) in state.iter().enumerate() {
-            symbols.push(
-                arena
-                    .as_symbol(e)
-                    .ok_or(TaylorError::StateNotASymbol { index })?,
-            );
-        }
-        let time = time.and_then(|t| arena.as_symbol(t));
-        let program = Program::lower(arena, &[g]);
-        let tape = Tape::from_program(&program, &symbols, time);
-        symbols.extend(time);
-        let (scalars, _) = bind_scalars(arena, &program, &tape, &symbols, values)?;
+        let symbols = state_symbols(arena, &state)?;
+        let (tape, scalars, _) = bound_tape(arena, symbols, time, &[g], values)?;
         Ok(Self { tape, scalars })
     }
 
@@ -143,23 +131,10 @@ impl<const N: usize> TaylorEvent<N> {
     ) {
         let p = out.len().saturating_sub(1).min(rows.len());
         let st = p + 1;
-        let len = self.tape.series_count() * st;
-        if ws.len() < len {
-            ws.resize(len, 0.0);
-        }
-        let c = ws.as_mut_slice();
-        for (i, &yi) in y.iter().enumerate() {
-            c[i * st] = yi;
+        let c = self.tape.seeded(ws, st, t, y);
+        for i in 0..N {
             for (k, row) in rows[..p].iter().enumerate() {
                 c[i * st + k + 1] = row[i];
-            }
-        }
-        if let Some(ti) = self.tape.time() {
-            let row = &mut c[ti as usize * st..(ti as usize + 1) * st];
-            row.fill(0.0);
-            row[0] = t;
-            if p >= 1 {
-                row[1] = 1.0;
             }
         }
         // Every operand is known to order p (the state from the jet, the time exactly), so

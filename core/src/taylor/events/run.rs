@@ -80,8 +80,17 @@ impl<S: TaylorSystem<N>, const N: usize> StepRoots<Taylor<S, N>> for Expanded<N>
             });
         }
         self.pieces.clear();
-        self.isolator
-            .isolate(&self.scaled, (p + 1) as f64, &mut self.pieces);
+        // No root on the step when a₀ outweighs the other terms with room for the rounding
+        // the isolation allows: each Bernstein coefficient is a₀ plus the others weighted by
+        // C(j, k)/C(p, k) ≤ 1, so all have a₀'s sign beyond their error bounds and the
+        // isolation would return no piece. p additions instead of its p²/2: most steps of a
+        // run are far from a root.
+        let rest: f64 = self.scaled.iter().skip(1).map(|a| a.abs()).sum();
+        let margin = 20.0 * (p + 2) as f64 * f64::EPSILON * size;
+        if self.scaled[0].abs() - rest <= margin {
+            self.isolator
+                .isolate(&self.scaled, (p + 1) as f64, &mut self.pieces);
+        }
         // Each piece's ends, as times of the step: outside the pieces q has no root, inside
         // an isolated one exactly one. A piece's end at the step's start or end is the
         // point the run already has there.

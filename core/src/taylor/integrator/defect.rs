@@ -7,34 +7,45 @@
 //! orders 7 … 14 of size 1: at 1e-4 (order 6) the rows gave a radius near 10 and the run
 //! ended with an error of 0.69.
 //!
-//! After the sum, the step polynomial y_p(θ) = Σₖ c_k θᵏ is compared with the equation at
-//! the step's end: the defect δ = f(t + h, y_p(h)) − y_p′(h). For a truncation error
-//! e(θ) ≈ c_{p+1} θ^(p+1), δ ≈ e′(h) = (p + 1) e(h)/h, so the step's error is estimated as
-//! ‖δ‖·h/(p + 1), each component at its own scale (the weights of the step rule). The step
-//! is kept when that is at most ε: an ordinary step, sized for an error near e⁻²ᵖ⁻² ≈ e⁻⁴ε,
-//! passes with a margin of about 50 and keeps its bits; a step that missed the growth of the
-//! solution has a defect of the size of f and is taken again, shorter, from the same jet.
+//! After the sum, the step polynomial y_p(θ) = Σₖ c_k θᵏ is compared with the solution
+//! through its end, whose jet d₀, d₁, d₂, … at t + h the next step needs anyway: its first
+//! rows are d₁ = f(t + h, y_p(h)) and d₂ = f′/2 there. The polynomial re-expanded at its end
+//! has the rows y_p′(h) and y_p″(h)/2, so the differences
+//! - δ₁ = d₁ − y_p′(h), the defect of the polynomial against the equation, and
+//! - δ₂ = d₂ − y_p″(h)/2, the same one order up,
 //!
-//! The defect is also taken at the step's middle, where it costs one more evaluation of f
-//! and three more Horner chains in the same pass. The error of the step is, to first order
-//! over a short step, the integral of the defect, e(h) ≈ ∫₀ʰ δ, and Simpson's rule
-//! h/6·(δ(0) + 4 δ(h/2) + δ(h)) gives the middle its own estimate ⅔ h ‖δ(h/2)‖ (δ(0) = 0:
-//! the jet is exact at the start). A defect that vanishes at the end by chance no longer
-//! passes: x′ = cos t + a t²⁰(1 − t/h) over the first step h has δ(h) = 0 to rounding and
-//! an error of 2.2 at 1e-10, and its middle has δ = a (h/2)²⁰/2. For the truncation error
-//! of an ordinary step, δ(θ) ∝ θᵖ, the middle's estimate is ⅔/2ᵖ of ‖δ(h)‖h against the
-//! end's 1/(p + 1), smaller for every p ≥ 1, so no step the end's estimate kept is refused
-//! by it and every such run keeps its bits.
+//! are those of the truncation error e(θ) ≈ c_{p+1} θ^(p+1): δ₁ ≈ (p + 1) e(h)/h and
+//! δ₂ ≈ C(p + 1, 2) e(h)/h². The step's error is estimated from each, ‖δ₁‖·h/(p + 1) and
+//! ‖δ₂‖·h²/C(p + 1, 2), each component at its own scale (the weights of the step rule), less
+//! the rounding of the two terms, and the larger is the estimate. The step is kept when it is
+//! at most ε: an ordinary step, sized for an error near e⁻²ᵖ⁻² ≈ e⁻⁴ε, passes with a margin of
+//! about 50 and keeps its bits; a step that missed the growth of the solution has a defect of
+//! the size of f and is taken again, shorter, from the same jet.
 //!
-//! The check costs two evaluations of f (the system's jet to order 1) and the Horner sums,
-//! a few per cent of a step. It is an estimate at two points, not a bound: a defect that
-//! vanishes at both by chance passes.
+//! Why the second row: a defect can vanish at the step's end by chance. x′ = cos t +
+//! a s²⁰(1 − s/h) over the first step h from tₛ (s = t − tₛ) is invisible to the jet at tₛ
+//! (no row below order 21) and has δ₁ = 0 at tₛ + h, so the step passed with an error of 2.2
+//! at 1e-10. Its slope there is not zero: δ₂ = −a h¹⁹/2, an estimate 2.5 times the true
+//! error at order 13. An earlier version took the defect at the step's middle for this,
+//! Simpson's ⅔ h ‖δ(h/2)‖, at the price of one more evaluation of f; the second row is free.
+//!
+//! What the check costs: the jet at the step's end is the next step's, computed once and
+//! kept (`Taylor::step`), so the check adds the Horner chains of y_p′(h) and y_p″(h)/2
+//! beside the step's own sum, in the same pass, and N comparisons; the sums of the terms'
+//! sizes, which bound the rounding, are summed only for a step whose estimate without them
+//! fails (at the tightest tolerances, or a step to be refused). Only a
+//! rejected step pays a jet more (the next jet of the shorter step). Where no next jet is
+//! kept (the lanes, whose jets are packed, and the extended mode), the two rows are a jet of
+//! order 2 at the end.
+//!
+//! It is an estimate from the value and the slope of the defect at one point, not a bound: a
+//! defect that vanishes there to first order by chance passes.
 
 use crate::taylor::TaylorSystem;
 
-/// How much rounding the defect may carry, in units of the rounding of f and y_p′: their
-/// difference cancels when the step is good, and a few ulps of each, times the p terms of
-/// the derivative, must not read as an error at the tightest tolerances.
+/// How much rounding the defect may carry, in units of the rounding of the rows and the
+/// polynomial's: their difference cancels when the step is good, and a few ulps of each,
+/// times the p terms of the sums, must not read as an error at the tightest tolerances.
 const ROUNDING: f64 = 64.0 * f64::EPSILON;
 
 /// The shortest a rejected step is cut to, and the longest, as fractions of it: the error
@@ -42,123 +53,120 @@ const ROUNDING: f64 = 64.0 * f64::EPSILON;
 /// a wild estimate neither stalls the run nor barely changes the step.
 const CUT: (f64, f64) = (0.1, 0.5);
 
-/// The evaluations of f one check costs: at the step's end and at its middle.
-pub(super) const EVALUATIONS: u64 = 2;
+/// The order of the jet a check needs at the step's end when no next jet is kept.
+pub(super) const ORDER: usize = 2;
 
-/// Simpson's weight of the middle's defect in ∫₀ʰ δ ≈ h/6·(δ(0) + 4 δ(h/2) + δ(h)).
-const MIDDLE: f64 = 2.0 / 3.0;
-
-/// y_p′(h) = Σₖ₌₁ᵖ k c_k hᵏ⁻¹ for every component, and the same sum of the terms' sizes
-/// Σₖ k |c_k| hᵏ⁻¹, which bounds its rounding (an oscillating solution's terms can be far
-/// larger than their sum); and at the middle, y_p(h/2) with y_p′(h/2) and its sizes.
-/// It belongs to the step of order `p` and size `h` it was summed for.
+/// The step polynomial re-expanded at its end: y_p′(h) = Σₖ₌₁ᵖ k c_k hᵏ⁻¹ and
+/// y_p″(h)/2 = Σₖ₌₂ᵖ C(k, 2) c_k hᵏ⁻² for every component. It belongs to the step of order
+/// `p` and size `h` it was summed for.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Slope<const N: usize> {
     p: usize,
     h: f64,
     value: [f64; N],
-    sizes: [f64; N],
-    middle: [f64; N],
-    middle_value: [f64; N],
-    middle_sizes: [f64; N],
+    second: [f64; N],
+}
+
+/// C(k, 2) = k(k − 1)/2, the weight of c_k hᵏ⁻² in y_p″(h)/2.
+fn binomial(k: f64) -> f64 {
+    0.5 * k * (k - 1.0)
 }
 
 /// The step's increment Σₖ₌₁ᵖ c_k hᵏ and its [`Slope`] in one pass over the rows (p ≥ 1),
-/// by Horner with the order outside: the increment's operations are those of the step's own
-/// sum (`horner_increment`), so its bits are; the slope's two chains run beside it, where
-/// a second pass would wait on each chain again.
+/// by Horner with the order outside and the derivatives by repeated synthetic division (each
+/// chain one multiply-add a term: e ← e·h + d, d ← d·h + s, s ← s·h + c_k). The increment's
+/// operations are those of the step's own sum (`horner_increment`), so its bits are; the
+/// slope's chains run beside it, where a second pass would wait on each chain again.
 pub(super) fn increment_and_slope<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], Slope<N>) {
     let p = c.len().saturating_sub(1);
-    let Some(top) = c.get(p).filter(|_| p >= 1) else {
-        let zero = [0.0; N];
+    let zero = [0.0; N];
+    let Some((top, lower)) = c.split_last().filter(|_| p >= 1) else {
         let slope = Slope {
             p,
             h,
             value: zero,
-            sizes: zero,
-            middle: c.first().copied().unwrap_or(zero),
-            middle_value: zero,
-            middle_sizes: zero,
+            second: zero,
         };
         return (zero, slope);
     };
-    let (pf, m) = (p as f64, 0.5 * h);
-    let mut s = *top;
-    let mut value = top.map(|v| pf * v);
-    let mut sizes = top.map(|v| pf * v.abs());
-    let (mut ms, mut mvalue, mut msizes) = (s, value, sizes);
-    for k in (1..p).rev() {
-        let kf = k as f64;
-        for i in 0..N {
-            let cki = c[k][i];
-            s[i] = s[i] * h + cki;
-            value[i] = value[i] * h + kf * cki;
-            sizes[i] = sizes[i] * h + kf * cki.abs();
-            ms[i] = ms[i] * m + cki;
-            mvalue[i] = mvalue[i] * m + kf * cki;
-            msizes[i] = msizes[i] * m + kf * cki.abs();
+    let (mut s, mut d, mut e) = (*top, zero, zero);
+    for ck in lower.iter().skip(1).rev() {
+        for (((si, di), ei), cki) in s.iter_mut().zip(&mut d).zip(&mut e).zip(ck) {
+            *ei = *ei * h + *di;
+            *di = *di * h + *si;
+            *si = *si * h + cki;
         }
     }
-    let middle = std::array::from_fn(|i| c[0][i] + ms[i] * m);
+    // The last division (by the order 0) for the derivatives; the increment is s·h.
+    for ((si, di), ei) in s.iter().zip(&mut d).zip(&mut e) {
+        *ei = *ei * h + *di;
+        *di = *di * h + si;
+    }
     let slope = Slope {
         p,
         h,
-        value,
-        sizes,
-        middle,
-        middle_value: mvalue,
-        middle_sizes: msizes,
+        value: d,
+        second: e,
     };
     (s.map(|si| si * h), slope)
 }
 
-/// The estimated error of the step from `t` to `y_new` whose polynomial has the slope
-/// `slope`, in units of the step's tolerance: the larger of the end's ‖δ(h)‖_w·h/(p + 1) and
-/// the middle's ⅔ h ‖δ(h/2)‖_w, the weights `w` those of the step rule, each defect less its
-/// own rounding. NaN when f or y_p′ is not finite (the caller treats it as a failed check,
-/// and the new state's own check names it).
-fn error<S: TaylorSystem<N>, const N: usize>(
-    sys: &S,
-    ws: &mut S::Workspace,
-    t: f64,
-    y_new: &[f64; N],
-    slope: &Slope<N>,
-    w: &[f64; N],
-) -> f64 {
-    let h = slope.h;
-    let end = excess(sys, ws, t + h, y_new, &slope.value, &slope.sizes, w);
-    let middle = excess(
-        sys,
-        ws,
-        t + 0.5 * h,
-        &slope.middle,
-        &slope.middle_value,
-        &slope.middle_sizes,
-        w,
-    );
-    if end.is_nan() || middle.is_nan() {
-        return f64::NAN;
+/// The sums of the sizes of the terms of y_p′(h) and of y_p″(h)/2, Σₖ k |c_k| hᵏ⁻¹ and
+/// Σₖ C(k, 2) |c_k| hᵏ⁻², which bound their rounding (an oscillating solution's terms can be
+/// far larger than their sum). Only a step whose estimate without them is above ε needs
+/// them: a second pass over its rows, not a cost of every step.
+fn sizes<const N: usize>(c: &[[f64; N]], h: f64) -> ([f64; N], [f64; N]) {
+    let (mut first, mut second) = ([0.0; N], [0.0; N]);
+    for (k, row) in c.iter().enumerate().skip(1).rev() {
+        let (kf, bk) = (k as f64, binomial(k as f64));
+        for i in 0..N {
+            first[i] = first[i] * h + kf * row[i].abs();
+            if k >= 2 {
+                second[i] = second[i] * h + bk * row[i].abs();
+            }
+        }
     }
-    (end * h / (slope.p as f64 + 1.0)).max(middle * h * MIDDLE)
+    (first, second)
 }
 
-/// ‖f(t, y) − y_p′‖_w less the rounding of the two, at one point of the step: `d` is y_p′
-/// there and `sizes` the sum of its terms' sizes. NaN if any component is.
-fn excess<S: TaylorSystem<N>, const N: usize>(
-    sys: &S,
-    ws: &mut S::Workspace,
-    t: f64,
-    y: &[f64; N],
+/// The estimated error of the step whose polynomial has the slope `slope`, in units of the
+/// step's tolerance, from the rows d₁ (`rows[0]`) and, if given, d₂ (`rows[1]`) of the jet
+/// at its end: the larger of ‖δ₁‖_w·h/(p + 1) and ‖δ₂‖_w·h²/C(p + 1, 2), the weights `w`
+/// those of the step rule, each defect less its own rounding when `sizes` (the terms' sizes
+/// of the two sums) are given. NaN when a row or the polynomial is not finite (the caller
+/// treats it as a failed check, and the new state's own check names it).
+fn error<const N: usize>(
+    slope: &Slope<N>,
+    rows: &[[f64; N]],
+    w: &[f64; N],
+    sizes: Option<&([f64; N], [f64; N])>,
+) -> f64 {
+    let (h, p1) = (slope.h, slope.p as f64 + 1.0);
+    let first = rows
+        .first()
+        .map_or(0.0, |d1| excess(d1, &slope.value, sizes.map(|s| &s.0), w));
+    let second = rows
+        .get(1)
+        .map_or(0.0, |d2| excess(d2, &slope.second, sizes.map(|s| &s.1), w));
+    if first.is_nan() || second.is_nan() {
+        return f64::NAN;
+    }
+    (first * h / p1).max(second * h * h / (0.5 * p1 * slope.p as f64))
+}
+
+/// ‖d − y‖_w, less the rounding of the two when `sizes` (the sum of the polynomial's terms'
+/// sizes) is given: `d` a row of the jet at the step's end, `y` the polynomial's. NaN if any
+/// component is.
+fn excess<const N: usize>(
     d: &[f64; N],
-    sizes: &[f64; N],
+    y: &[f64; N],
+    sizes: Option<&[f64; N]>,
     w: &[f64; N],
 ) -> f64 {
-    let mut rows = [[0.0; N]; 2];
-    sys.coefficients_into(ws, t, y, 1, &mut rows);
     let mut worst = 0.0f64;
     for i in 0..N {
-        let f = rows[1][i];
-        let e = ((f - d[i]).abs() - ROUNDING * (f.abs() + sizes[i])) * w[i];
+        let rounding = sizes.map_or(0.0, |s| ROUNDING * (d[i].abs() + s[i]));
+        let e = ((d[i] - y[i]).abs() - rounding) * w[i];
         if e.is_nan() {
             return f64::NAN;
         }
@@ -167,20 +175,35 @@ fn excess<S: TaylorSystem<N>, const N: usize>(
     worst
 }
 
-/// `None` when the step from `t` to `y_new`, its polynomial's slope at its end `slope`,
-/// passes the defect check at tolerance `eps` with weights `w`; otherwise the shorter step
-/// to take again from the same jet.
-pub(super) fn shorter_step<S: TaylorSystem<N>, const N: usize>(
+/// The rows d₁, d₂ of the jet at `(t, y)` when no next jet is kept: a jet of order
+/// [`ORDER`] (its row 0 is `y`).
+pub(super) fn end_rows<S: TaylorSystem<N>, const N: usize>(
     sys: &S,
     ws: &mut S::Workspace,
     t: f64,
-    y_new: &[f64; N],
+    y: &[f64; N],
+) -> [[f64; N]; ORDER + 1] {
+    let mut rows = [[0.0; N]; ORDER + 1];
+    sys.coefficients_into(ws, t, y, ORDER, &mut rows);
+    rows
+}
+
+/// `None` when the step of the jet `c` whose polynomial has the slope `slope` passes the
+/// defect check at tolerance `eps` with weights `w`, given the rows d₁, d₂ (or d₁ alone) of
+/// the jet at its end in `rows`; otherwise the shorter step to take again from the same jet.
+/// The rounding of the sums is allowed for only when the estimate without it fails.
+pub(super) fn shorter_step<const N: usize>(
+    c: &[[f64; N]],
     slope: &Slope<N>,
+    rows: &[[f64; N]],
     w: &[f64; N],
     eps: f64,
 ) -> Option<f64> {
     let h = slope.h;
-    let err = error(sys, ws, t, y_new, slope, w);
+    if error(slope, rows, w, None) <= eps {
+        return None;
+    }
+    let err = error(slope, rows, w, Some(&sizes(c, h)));
     if err <= eps {
         return None;
     }
@@ -230,15 +253,20 @@ mod tests {
 
     #[test]
     fn the_slope_is_the_polynomial_s_and_the_increment_the_step_s() {
-        // c = (1, 2, −3): y′(h) = 2 − 6h, its terms' sizes 2 + 6h; the increment 2h − 3h².
-        let (inc, slope) = increment_and_slope(&[[1.0], [2.0], [-3.0]], 0.5);
-        assert_eq!((inc, slope.value, slope.sizes), ([0.25], [-1.0], [5.0]));
+        // c = (1, 2, −3, 4): y′(h) = 2 − 6h + 12h², its terms' sizes 2 + 6h + 12h²;
+        // y″(h)/2 = −3 + 12h, sizes 3 + 12h; the increment 2h − 3h² + 4h³.
+        let c = [[1.0], [2.0], [-3.0], [4.0]];
+        let (inc, slope) = increment_and_slope(&c, 0.5);
+        assert_eq!((inc, slope.value, slope.second), ([0.75], [2.0], [3.0]));
+        assert_eq!(sizes(&c, 0.5), ([8.0], [9.0]));
     }
 
+    /// The check of the step of size `h` from y = 1 with the jet `c`, against the jet of
+    /// Decay at its end.
     fn check(c: &[[f64; 1]], h: f64) -> Option<f64> {
         let (inc, slope) = increment_and_slope(c, h);
-        let y = [c[0][0] + inc[0]];
-        shorter_step(&Decay, &mut (), 0.0, &y, &slope, &[1.0], 1e-10)
+        let rows = end_rows(&Decay, &mut (), h, &[c[0][0] + inc[0]]);
+        shorter_step(c, &slope, &rows[1..], &[1.0], 1e-10)
     }
 
     #[test]
@@ -255,17 +283,22 @@ mod tests {
     }
 
     #[test]
-    fn the_estimate_is_within_a_small_factor_of_the_true_error() {
+    fn both_estimates_are_within_a_small_factor_of_the_true_error() {
         // At order 6 and h = 1 the truncation error of e^(−1) is ≈ 1/7! − 1/8! … = 1.76e-4;
-        // the estimate ‖δ‖·h/(p + 1) should be within a factor 2 of it.
+        // the estimates from d₁ and from d₂ should each be within a factor 2 of it.
         let c = jet(6);
         let (inc, slope) = increment_and_slope(&c, 1.0);
         let y = [1.0 + inc[0]];
         let truth = (y[0] - (-1.0f64).exp()).abs();
-        let est = error(&Decay, &mut (), 0.0, &y, &slope, &[1.0]);
-        assert!(
-            est > 0.5 * truth && est < 2.0 * truth,
-            "{est:e} against {truth:e}"
-        );
+        let rows = end_rows(&Decay, &mut (), 1.0, &y);
+        let sz = sizes(&c, 1.0);
+        let second = excess(&rows[2], &slope.second, Some(&sz.1), &[1.0]) / 21.0;
+        let first = error(&slope, &rows[1..2], &[1.0], Some(&sz));
+        for (name, est) in [("d1", first), ("d2", second)] {
+            assert!(
+                est > 0.5 * truth && est < 2.0 * truth,
+                "{name}: {est:e} against {truth:e}"
+            );
+        }
     }
 }

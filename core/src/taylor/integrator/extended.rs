@@ -83,7 +83,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             // The defect check of the plain mode, on the f64 rows: it looks for what the
             // rows past p would have added, far above the double-double rounding.
             let (_, slope) = super::defect::increment_and_slope(&self.coeffs[..=p], h);
-            match self.checked(&y_new, &slope, &rule)? {
+            let t_new = self.advanced(h, clamped, t_limit).0;
+            match self.checked(t_new, &y_new, &slope, &rule, false)? {
                 Some(shorter) => (h, clamped) = (shorter, false),
                 None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
             }

@@ -7,10 +7,12 @@
 //!   against its own scale sᵢ (|yᵢ| in the relative mode, with atol/rtol as a floor, and 1 in
 //!   the absolute one; see [`TaylorConfig`] and the `radius` module). The estimate comes
 //!   before the step, from the coefficients the step needs anyway.
-//! - After the sum, the defect of the step polynomial at the step's end, f(y_p(h)) − y_p′(h),
-//!   is checked (the `defect` module): a step whose rows of order ≤ p missed what the rows
+//! - After the sum, the step polynomial is compared with the jet at the step's end, which is
+//!   the next step's jet, computed once (the `defect` module): its rows d₁ = f(y_p(h)) and
+//!   d₂ against y_p′(h) and y_p″(h)/2. A step whose rows of order ≤ p missed what the rows
 //!   past p hold is taken again, shorter, from the same jet, and counted in
-//!   [`Stats::rejections`]. An ordinary step passes and keeps its bits.
+//!   [`Stats::rejections`]. An ordinary step passes and keeps its bits, and the check costs
+//!   two Horner chains beside the step's own.
 //! - The estimate never trusts a vanishing coefficient: rows that are zero are skipped, rows
 //!   that are tiny are bounded by the rows below them, a jet that vanishes to its order is
 //!   computed again to the highest order allowed, and a step grows at most tenfold over the
@@ -28,7 +30,7 @@ mod drivers;
 mod extended;
 mod radius;
 
-pub use config::TaylorConfig;
+pub use config::{StepScale, TaylorConfig};
 pub use drivers::{solve, solve_dense};
 
 use super::TaylorSystem;
@@ -42,9 +44,10 @@ use crate::ode::{OdeError, Stats, check_finite, check_stop};
 /// [`Run`](crate::ode::Run) gives it samples, trajectories and events.
 ///
 /// [`Stats::rhs_evals`] counts each computation of the coefficients to order p (a *jet*) as
-/// p right-hand-side evaluations, so that work counts compare with the Runge–Kutta pairs',
-/// and each defect check ([`TaylorConfig::defect_check`]) as one; [`Taylor::jets`] counts
-/// the jets themselves. The recurrence of a product costs k + 1
+/// p right-hand-side evaluations, so that work counts compare with the Runge–Kutta pairs'
+/// (the jet at a step's end that the defect check reads, [`TaylorConfig::defect_check`], is
+/// the next step's, counted once; where it is not kept, the lanes and the extended mode, the
+/// check's jet of order 2 counts as 2); [`Taylor::jets`] counts the jets themselves. The recurrence of a product costs k + 1
 /// multiply-adds at order k, so a jet costs about p²/2 products per product of f while its
 /// linear parts cost p; the measured ratio (jet time over one evaluation of f, both
 /// hand-written, on B5) is in `docs/taylor-integrator.md`, with the command that measures it.
@@ -84,6 +87,10 @@ pub struct Taylor<S: TaylorSystem<N>, const N: usize> {
     y_comp: [f64; N],
     /// c_k of the last step, k = 0, …, `last_order`.
     coeffs: Vec<[f64; N]>,
+    /// The jet at the current state to order `ahead_order` (0: none), computed by the defect
+    /// check of the step that ended here: the next step's jet, swapped into `coeffs`.
+    ahead: Vec<[f64; N]>,
+    ahead_order: usize,
     /// The system's scratch, kept across steps so that a jet neither allocates nor zeroes.
     ws: S::Workspace,
     /// The double-double coefficients of the extended mode, orders 0 … L (empty when off).
@@ -184,6 +191,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             y: y0,
             y_comp: [0.0; N],
             coeffs: vec![[0.0; N]; top_order + 1],
+            ahead: vec![[0.0; N]; top_order + 1],
+            ahead_order: 0,
             ws,
             low,
             last: LastStep {
@@ -257,6 +266,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// The system, to be changed between steps by a hybrid run (which restarts the
     /// integrator at once).
     pub(crate) fn system_mut(&mut self) -> &mut S {
+        self.ahead_order = 0;
         &mut self.sys
     }
 
@@ -270,6 +280,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     pub(crate) fn reset_state(&mut self, t: f64, y: [f64; N]) {
         (self.t, self.t_lo, self.y, self.y_comp) = (t, 0.0, y, [0.0; N]);
         (self.prev_natural, self.run_steps, self.run_target) = (f64::INFINITY, 0, f64::NAN);
+        self.ahead_order = 0;
         self.last = LastStep {
             t,
             t_lo: 0.0,
@@ -297,8 +308,16 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let Some(rule) = self.step_rule(t_limit)? else {
             return Ok(());
         };
-        self.jet(rule.order)?;
-        self.finish_step(rule, t_limit)
+        if self.ahead_order >= rule.order {
+            // The jet the last step's check computed here: its rows 0 … p are those of a
+            // jet of order p, bit for bit (an order reads only the orders below it).
+            std::mem::swap(&mut self.coeffs, &mut self.ahead);
+            self.ahead_order = 0;
+        } else {
+            self.ahead_order = 0;
+            self.jet(rule.order)?;
+        }
+        self.finish_step(rule, t_limit, true)
     }
 
     /// The order the next step towards `t_limit` needs of its jet (`None`: `t_limit` is the
@@ -336,12 +355,18 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         fill(rows_to_order(&mut self.coeffs, rule.order)?);
         self.jets += 1;
         self.stats.rhs_evals += rule.order as u64;
-        self.finish_step(rule, t_limit)
+        self.finish_step(rule, t_limit, false)
     }
 
     /// The step after its jet of order `rule.order`: the jet again at the top order if it
-    /// vanishes, the step size, the sum and the commit.
-    fn finish_step(&mut self, mut rule: StepRule<N>, t_limit: f64) -> Result<(), OdeError> {
+    /// vanishes, the step size, the sum, the defect check (against the next step's jet,
+    /// kept when `keep_ahead`, or a jet of order 2 at the step's end) and the commit.
+    fn finish_step(
+        &mut self,
+        mut rule: StepRule<N>,
+        t_limit: f64,
+        keep_ahead: bool,
+    ) -> Result<(), OdeError> {
         if self.cfg.fixed_step.is_none()
             && rule.order < self.top_order
             && radius::vanishes(&self.coeffs[..=rule.order])
@@ -365,25 +390,30 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         loop {
             let (increment, slope) = defect::increment_and_slope(&self.coeffs[..=p], h);
             let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
-            match self.checked(&y_new, &slope, &rule)? {
+            let t_new = self.advanced(h, clamped, t_limit).0;
+            match self.checked(t_new, &y_new, &slope, &rule, keep_ahead)? {
                 Some(shorter) => (h, clamped) = (shorter, false),
                 None => return self.commit_step(h, p, clamped, t_limit, y_new, comp_new),
             }
         }
     }
 
-    /// The defect check of a step summed to `y_new`, its polynomial's slope at its end
-    /// `slope` (the `defect` module), in both modes: `None` to keep the step, or the shorter step to take again
-    /// from the same jet (counted as a rejection). Off with [`TaylorConfig::defect_check`];
-    /// a fixed step is the caller's choice and is not checked.
+    /// The defect check of a step summed to `y_new` at `t_new`, its polynomial re-expanded
+    /// at its end `slope` (the `defect` module), in both modes: `None` to keep the step, or
+    /// the shorter step to take again from the same jet (counted as a rejection). With
+    /// `keep_ahead` the jet at the end is the next step's, to its order, kept in `ahead`;
+    /// otherwise a jet of order 2. Off with [`TaylorConfig::defect_check`]; a fixed step is
+    /// the caller's choice and is not checked.
     ///
     /// # Errors
     /// [`OdeError::StepSizeUnderflow`] when the shorter step no longer changes t.
     fn checked(
         &mut self,
+        t_new: f64,
         y_new: &[f64; N],
         slope: &defect::Slope<N>,
         rule: &StepRule<N>,
+        keep_ahead: bool,
     ) -> Result<Option<f64>, OdeError> {
         // A non-finite new state (a NaN or ∞ in the jet) is the commit's to refuse, as
         // `NonFiniteState`: no shorter step from the same jet can mend it.
@@ -393,17 +423,27 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         {
             return Ok(None);
         }
-        self.stats.rhs_evals += defect::EVALUATIONS;
-        let shorter = defect::shorter_step(
-            &self.sys,
-            &mut self.ws,
-            self.t,
-            y_new,
-            slope,
-            &rule.weights,
-            rule.eps,
-        );
+        let shorter = if keep_ahead {
+            // The order the next step's rule gives at y_new (`step_rule`'s mode test).
+            let relative = self.cfg.rtol * max_abs(y_new) > self.cfg.atol;
+            let q = self.rules[usize::from(!relative)].0;
+            let rows = rows_to_order(&mut self.ahead, q)?;
+            self.sys
+                .coefficients_into(&mut self.ws, t_new, y_new, q, rows);
+            self.jets += 1;
+            self.stats.rhs_evals += q as u64;
+            self.ahead_order = q;
+            let d = self.ahead.get(1..=q.min(defect::ORDER)).unwrap_or(&[]);
+            let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
+            defect::shorter_step(c, slope, d, &rule.weights, rule.eps)
+        } else {
+            let rows = defect::end_rows(&self.sys, &mut self.ws, t_new, y_new);
+            self.stats.rhs_evals += defect::ORDER as u64;
+            let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
+            defect::shorter_step(c, slope, &rows[1..], &rule.weights, rule.eps)
+        };
         if let Some(h) = shorter {
+            self.ahead_order = 0;
             self.stats.rejections += 1;
             if self.t + h == self.t {
                 return Err(OdeError::StepSizeUnderflow { t: self.t, h });
@@ -450,7 +490,11 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             // The floor keeps a component crossing zero at the absolute tolerance (and a
             // weight finite when atol/rtol underflows).
             let floor = (self.cfg.atol / self.cfg.rtol).max(f64::MIN_POSITIVE);
-            (self.cfg.rtol, self.y.map(|v| 1.0 / v.abs().max(floor)))
+            let weights = match self.cfg.scale {
+                StepScale::Componentwise => self.y.map(|v| 1.0 / v.abs().max(floor)),
+                StepScale::MaxNorm => [1.0 / norm.max(floor); N],
+            };
+            (self.cfg.rtol, weights)
         } else {
             (self.cfg.atol, [1.0; N])
         };
@@ -514,17 +558,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             h,
             order,
         };
-        if clamped {
-            (self.t, self.t_lo) = (t_limit, 0.0);
-        } else {
-            // Two-sum of t + h, its rounding kept in t_lo.
-            let s = self.t + h;
-            let b = s - self.t;
-            let err = (self.t - (s - b)) + (h - b);
-            let lo = self.t_lo + err;
-            let hi = s + lo;
-            (self.t, self.t_lo) = (hi, lo - (hi - s));
-        }
+        (self.t, self.t_lo) = self.advanced(h, clamped, t_limit);
         self.y = y_new;
         self.y_comp = comp_new;
         self.stats.steps += 1;
@@ -536,6 +570,20 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         self.run_steps += 1;
         Ok(())
+    }
+
+    /// The time after a step of `h` as t + t_lo: `t_limit` when the step was clamped to land
+    /// on it, else the two-sum of t + h with its rounding kept in t_lo.
+    fn advanced(&self, h: f64, clamped: bool, t_limit: f64) -> (f64, f64) {
+        if clamped {
+            return (t_limit, 0.0);
+        }
+        let s = self.t + h;
+        let b = s - self.t;
+        let err = (self.t - (s - b)) + (h - b);
+        let lo = self.t_lo + err;
+        let hi = s + lo;
+        (hi, lo - (hi - s))
     }
 
     /// Steps until `t == t_stop` exactly; no step crosses `t_stop`. The steps towards one
