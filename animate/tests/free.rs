@@ -63,15 +63,18 @@ fn a_free_body_s_keyframes_are_its_run_s_quaternions_and_positions() {
         // centre of mass in slots 0..3.
         let q = UnitQuaternion::new_normalize(Quaternion::new(y[6], y[7], y[8], y[9]));
         let x = Vector3::new(y[0], y[1], y[2]);
-        let r = UnitQuaternion::new_normalize(
-            Quaternion::new(r[3], r[0], r[1], r[2]).cast::<f64>(),
-        );
+        let r =
+            UnitQuaternion::new_normalize(Quaternion::new(r[3], r[0], r[1], r[2]).cast::<f64>());
         // Each principal axis eᵢ lies along P eᵢ in description axes: the keyframe carries it
         // to where q does.
         for i in 0..3 {
             let e = Vector3::ith(i, 1.0);
             let drawn = r * (principal.rotation * e);
-            assert!((drawn - q * e).norm() < 1e-6, "axis {i}: {drawn} vs {}", q * e);
+            assert!(
+                (drawn - q * e).norm() < 1e-6,
+                "axis {i}: {drawn} vs {}",
+                q * e
+            );
         }
         // The keyframe's map x ↦ p + R x puts the description's centre of mass at X.
         let centre = Vector3::new(p[0], p[1], p[2]).cast::<f64>() + r * c;
@@ -96,4 +99,30 @@ fn a_zero_quaternion_is_a_typed_error() {
         matches!(err, animate::AnimateError::NonFinite { index: 1, .. }),
         "{err}"
     );
+}
+
+#[test]
+fn the_page_s_camera_frames_the_whole_flight() {
+    let run = throw();
+    let animation = animate::free(&Lopsided, &run, Options::default()).unwrap();
+    let camera = animate::Camera::fit(&animation);
+    // The sphere the camera frames: 90 % of the height at its distance.
+    let framed = camera.distance * 0.9 * (camera.fovy.to_radians() / 2.0).sin();
+    let target = Vector3::from(camera.target);
+    // The body's reach from its description origin: the ball's far side, √(0.05² + 0.1² +
+    // 0.15²) + 0.03, past the box's corner √(0.05² + 0.1² + 0.15²).
+    let reach = (0.05f64.powi(2) + 0.1f64.powi(2) + 0.15f64.powi(2)).sqrt() + 0.03;
+    let keys = animation.keyframes(0).unwrap();
+    let mut widest = 0.0f64;
+    for p in &keys.translations {
+        let p = Vector3::new(p[0], p[1], p[2]).cast::<f64>();
+        let needed = (p - target).norm() + reach;
+        // The ball is drawn inscribed in the sphere (16 bands): its mesh may fall short of
+        // the far point by up to the chord's sag, 0.03 (1 − cos π/16).
+        let sag = 0.03 * (1.0 - (std::f64::consts::PI / 16.0).cos());
+        assert!(needed <= framed + sag, "{needed} m past {framed} m");
+        widest = widest.max(needed);
+    }
+    // And no looser than it needs to be: the farthest keyframe touches the framed sphere.
+    assert!(widest > 0.99 * framed, "{widest} m of {framed} m");
 }
