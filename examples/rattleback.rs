@@ -181,9 +181,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     println!("\nfigures: {}, {}", f1.display(), f2.display());
 
-    // The run as an animation beside the figures, every 20 ms (0.1 rad of spin at most).
+    // The run as an animation beside the figures, every 20 ms (0.1 rad of spin at most),
+    // without the contact point's path (its rocking to and fro would hide the body).
     let run = animation::thinned(&out.trajectory, 0.0, 0.02)?;
-    let movie = precess::animate::contact(&model, &run, Default::default())?;
+    let options = precess::animate::Options {
+        traces: false,
+        ..Default::default()
+    };
+    let movie = precess::animate::contact(&model, &run, options)?;
     let caption = "Invariants of rolling without dissipation";
     animation::write_animation(
         &plot_dir()?,

@@ -37,20 +37,43 @@ pub struct Camera {
 
 impl Camera {
     /// A camera 20° above the horizontal, 30° round, framing the whole run: every body's
-    /// bounding sphere (about its node's origin) at every keyframe, and the traces, inside a
+    /// bounding sphere (about the middle of its box) at every keyframe, and the traces, inside a
     /// sphere that fills 90 % of the height. (Framing the first keyframe alone lost a
     /// tumbling body's far end, or a top's disk as it precessed, out of the picture.)
     pub fn fit(animation: &Animation) -> Camera {
         // (centre, radius) of each sphere that must be seen.
         let mut spheres: Vec<(Vector3<f64>, f64)> = Vec::new();
         for track in &animation.tracks {
-            let reach = track
-                .groups
-                .iter()
-                .flat_map(|g| g.triangles.iter().flatten())
-                .map(|p| Vector3::from(*p).norm())
+            // The sphere about the middle of the body's box in its own axes, carried by
+            // each pose (about the node's origin instead, a top's sphere would be centred on
+            // its pivot, half of it empty).
+            let vertices = || {
+                track
+                    .groups
+                    .iter()
+                    .flat_map(|g| g.triangles.iter().flatten())
+            };
+            let (lo, hi) = vertices().fold(
+                (
+                    Vector3::repeat(f64::INFINITY),
+                    Vector3::repeat(f64::NEG_INFINITY),
+                ),
+                |(lo, hi), p| (lo.inf(&Vector3::from(*p)), hi.sup(&Vector3::from(*p))),
+            );
+            let middle = if lo.x.is_finite() {
+                (lo + hi) / 2.0
+            } else {
+                Vector3::zeros()
+            };
+            let reach = vertices()
+                .map(|p| (Vector3::from(*p) - middle).norm())
                 .fold(0.0, f64::max);
-            spheres.extend(track.poses.iter().map(|pose| (pose.position, reach)));
+            spheres.extend(
+                track
+                    .poses
+                    .iter()
+                    .map(|pose| (pose.position + pose.attitude * middle, reach)),
+            );
         }
         for trace in &animation.traces {
             spheres.extend(trace.points.iter().map(|p| (Vector3::from(*p), 0.0)));
