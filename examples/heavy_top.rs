@@ -18,16 +18,20 @@
 //! appears for any run that takes longer than a second (the long run at the end does, and
 //! so do the short ones in a debug build).
 
+mod common;
+
 use std::time::{Duration, Instant};
+
+use common::{Table, plot_dir};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use precess::nalgebra::Quaternion;
 use precess::ode::{AdaptiveConfig, Control, Direction, Dop853, Event, FixedStepConfig};
 use precess::ode::{FixedStepper, Progress, Run, Stepper};
-use precess::plot;
 use precess::prelude::*;
 use precess::rigid::{BodyMomentum, ExactFreeFlow, Gravity, PotentialSplitting};
 use precess::top::{HeavyTopTheory, TopQuantities};
+use precess::{animate, plot};
 
 /// A disk (brass, 40 mm radius) 50 mm up a stem (steel, 80 mm), turning on the stem's tip.
 #[derive(RigidBody)]
@@ -289,6 +293,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    let mut table = Table::default();
+    let amplitude = exact.theta_max() - exact.theta_min();
+    table.row(
+        "nutation amplitude (rad)",
+        angles.theta_max - theta0,
+        amplitude,
+    );
+    table.row("nutation period (s)", angles.period, period);
+    let precession = exact.mean_precession_rate()?;
+    table.row(
+        "mean precession rate (rad/s)",
+        angles.mean_precession,
+        precession,
+    );
     println!(
         "\nAngle form against theory: amplitude {:.1e}, period {:.1e}, precession {:.1e} (relative)",
         rel(
@@ -323,5 +341,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "theta_dot",
     )?;
     println!("wrote {}", path.display());
+
+    // The same three periods as an animation, ten times slower than life.
+    let zxz = |y: &[f64; 6]| {
+        UnitQuaternion::from_matrix(&top.rotation_in(AngleSequence::Zxz, &[y[0], y[1], y[2]]))
+    };
+    let options = animate::Options {
+        time_scale: 10.0,
+        ..Default::default()
+    };
+    let movie = animate::top(&top, &out.trajectory, zxz, options)?;
+    let caption = "DOP853 on the generated angle form against the exact nutation";
+    common::animation::write_animation(
+        &plot_dir()?,
+        "heavy_top",
+        "Heavy top",
+        &movie,
+        &table,
+        caption,
+    )?;
     Ok(())
 }

@@ -23,7 +23,7 @@ mod common;
 
 use std::error::Error;
 
-use common::{Axes, Series, Table, plot};
+use common::{Axes, Series, Table, animation, plot, plot_dir};
 use precess::contact::{
     ContactDynamics, ContactQuantities, ContactRun, Phase, STATE_LEN, attitude_of,
 };
@@ -180,5 +180,23 @@ fn main() -> Result<(), Box<dyn Error>> {
         &[Series::line("roll", thin(&rock))],
     )?;
     println!("\nfigures: {}, {}", f1.display(), f2.display());
+
+    // The run as an animation beside the figures, every 20 ms (0.1 rad of spin at most),
+    // without the contact point's path (its rocking to and fro would hide the body).
+    let run = animation::thinned(&out.trajectory, 0.0, 0.02)?;
+    let options = precess::animate::Options {
+        traces: false,
+        ..Default::default()
+    };
+    let movie = precess::animate::contact(&model, &run, options)?;
+    let caption = "Invariants of rolling without dissipation";
+    animation::write_animation(
+        &plot_dir()?,
+        "rattleback",
+        "Rattleback",
+        &movie,
+        &table,
+        caption,
+    )?;
     Ok(())
 }

@@ -3,7 +3,7 @@
 //! and a self-contained HTML page that plays it (the facade's `animate` feature, used as
 //! `precess::animate`; `docs/animation.md`).
 //!
-//! - [`top`] and [`contact`] turn a scene's run into an [`Animation`] in one call;
+//! - [`top`], [`contact`] and [`free`] turn a scene's run into an [`Animation`] in one call;
 //!   [`Animation`] with [`part_groups`] builds any other by hand from [`Pose`]s.
 //! - [`Animation::to_glb`] writes the `.glb` that Blender, three.js and any glTF viewer play:
 //!   each part a mesh in its colour (its two halves in the colour and its complement, so a
@@ -49,6 +49,7 @@
 mod animation;
 mod base64;
 mod error;
+mod free;
 mod geometry;
 pub mod glb;
 mod gltf;
@@ -58,6 +59,7 @@ mod scenes;
 
 pub use animation::{Animation, PIVOT, Pose, TABLE};
 pub use error::AnimateError;
+pub use free::{FreeSample, free};
 pub use gltf::{Keyframes, Z_UP_TO_Y_UP};
 pub use page::{BACKGROUND, Camera, PageTable, page, write_page};
 pub use parts::{Group, PALETTE, Rgb, body_size, complement, part_groups};

@@ -36,32 +36,64 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// A camera 20° above the horizontal, 30° round, framing the bodies and traces at the
-    /// first keyframe (their bounding sphere fills 90 % of the height).
+    /// A camera 20° above the horizontal, 30° round, framing the whole run: every body's
+    /// bounding sphere (about the middle of its box) at every keyframe, and the traces, inside a
+    /// sphere that fills 90 % of the height. (Framing the first keyframe alone lost a
+    /// tumbling body's far end, or a top's disk as it precessed, out of the picture.)
     pub fn fit(animation: &Animation) -> Camera {
-        let mut points: Vec<Vector3<f64>> = Vec::new();
+        // (centre, radius) of each sphere that must be seen.
+        let mut spheres: Vec<(Vector3<f64>, f64)> = Vec::new();
         for track in &animation.tracks {
-            let pose = track.poses[0];
-            for g in &track.groups {
-                for p in g.triangles.iter().flatten() {
-                    points.push(pose.position + pose.attitude * Vector3::from(*p));
-                }
-            }
+            // The sphere about the middle of the body's box in its own axes, carried by
+            // each pose (about the node's origin instead, a top's sphere would be centred on
+            // its pivot, half of it empty).
+            let vertices = || {
+                track
+                    .groups
+                    .iter()
+                    .flat_map(|g| g.triangles.iter().flatten())
+            };
+            let (lo, hi) = vertices().fold(
+                (
+                    Vector3::repeat(f64::INFINITY),
+                    Vector3::repeat(f64::NEG_INFINITY),
+                ),
+                |(lo, hi), p| (lo.inf(&Vector3::from(*p)), hi.sup(&Vector3::from(*p))),
+            );
+            let middle = if lo.x.is_finite() {
+                (lo + hi) / 2.0
+            } else {
+                Vector3::zeros()
+            };
+            let reach = vertices()
+                .map(|p| (Vector3::from(*p) - middle).norm())
+                .fold(0.0, f64::max);
+            spheres.extend(
+                track
+                    .poses
+                    .iter()
+                    .map(|pose| (pose.position + pose.attitude * middle, reach)),
+            );
         }
         for trace in &animation.traces {
-            points.extend(trace.points.iter().map(|p| Vector3::from(*p)));
+            spheres.extend(trace.points.iter().map(|p| (Vector3::from(*p), 0.0)));
         }
-        let (lo, hi) = points.iter().fold(
+        let (lo, hi) = spheres.iter().fold(
             (
                 Vector3::repeat(f64::INFINITY),
                 Vector3::repeat(f64::NEG_INFINITY),
             ),
-            |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+            |(lo, hi), (c, r)| (lo.inf(&c.add_scalar(-r)), hi.sup(&c.add_scalar(*r))),
         );
-        let (centre, radius) = if points.is_empty() {
+        let (centre, radius) = if spheres.is_empty() {
             (Vector3::zeros(), 1.0)
         } else {
-            ((lo + hi) / 2.0, ((hi - lo).norm() / 2.0).max(1e-3))
+            let centre = (lo + hi) / 2.0;
+            let radius = spheres
+                .iter()
+                .map(|(c, r)| (c - centre).norm() + r)
+                .fold(1e-3, f64::max);
+            (centre, radius)
         };
         let fovy: f64 = 40.0;
         Camera {

@@ -1,5 +1,6 @@
 //! The `.glb` files through the Khronos glTF validator (npm's `gltf-validator`, run by node):
-//! a top with every kind of part, and the tippe top on its table. No errors and no warnings.
+//! a top with every kind of part, the tippe top on its table, and a free body flying. No errors
+//! and no warnings.
 //! Skips, saying why, without node or the package.
 
 mod support;
@@ -9,7 +10,35 @@ use std::process::Command;
 
 use precess::animate::{self, Animation, Options, Pose, part_groups};
 use precess::body::{About, Axis, Orientation, Part, Shape};
+use precess::free::FreeState;
 use precess::nalgebra::{UnitQuaternion, Vector3};
+use precess::ode::Trajectory;
+use precess::prelude::*;
+
+/// A brick with a ball on it, free in space.
+#[derive(RigidBody)]
+#[rigid(
+    cuboid(mass = 1.0, size = [0.1, 0.2, 0.3]),
+    sphere(mass = 0.5, radius = 0.03, at = [0.05, 0.1, 0.15]),
+)]
+#[free(gravity = 9.81)]
+struct Brick;
+
+/// The brick falling and turning (written down, not integrated: the file is what is tested).
+fn falling_brick() -> Animation {
+    let mut run = Trajectory::new(vec![]);
+    for k in 0..=100 {
+        let t = 0.01 * k as f64;
+        let state = FreeState {
+            position: Vector3::new(t, 0.0, -4.905 * t * t),
+            velocity: Vector3::new(1.0, 0.0, -9.81 * t),
+            attitude: UnitQuaternion::from_euler_angles(3.0 * t, t, 0.5 * t),
+            omega_principal: Vector3::zeros(),
+        };
+        run.push(t, state, &[]).unwrap();
+    }
+    animate::free(&Brick, &run, Options::default()).unwrap()
+}
 
 /// The validator's package folder: `PRECESS_GLTF_VALIDATOR` if set, else
 /// `target/npm/node_modules/gltf-validator` in the workspace (where `.ci/run` installs it).
@@ -174,7 +203,12 @@ fn the_khronos_validator_finds_no_error_and_no_warning() {
     };
     let (model, run) = support::tippe_run(2.0, 0.005);
     let tippe = animate::contact(&model, &run, Options::default()).unwrap();
-    for (name, animation) in [("every_part", every_part()), ("tippe_top", tippe)] {
+    let animations = [
+        ("every_part", every_part()),
+        ("tippe_top", tippe),
+        ("free_body", falling_brick()),
+    ];
+    for (name, animation) in animations {
         let (errors, warnings, report) = validate(&dir, name, &animation.to_glb().unwrap());
         println!("{name}: {report}");
         assert_eq!((errors, warnings), (0, 0), "{name}: {report}");

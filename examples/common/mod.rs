@@ -1,10 +1,12 @@
-//! What the gallery examples share: the table of measured against theory, and the shorthand
-//! for figures drawn by `precess::plot`.
+//! What the gallery examples share: the table of measured against theory, the shorthand
+//! for figures drawn by `precess::plot`, and their animations (`animation`).
 //!
 //! Each example is one physical scene; it prints its table and writes its figures to
 //! `target/precess-plots/`, or to the directory given as the first command-line argument.
 
 #![allow(dead_code)] // each example uses the part it needs
+
+pub mod animation;
 
 use std::error::Error;
 use std::path::PathBuf;
