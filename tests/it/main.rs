@@ -1,9 +1,10 @@
-//! The integration tests of the engine, bodies, the derive and the top: one of two test
-//! crates over the same tree (the other, `scenes_main.rs`, holds the free body, mechanisms,
-//! constraints and contact). A module per area, each file a module of its own, both crates
-//! sharing the helpers in `common` (generators, the Newton–Euler reference, shared scenes,
-//! the LaTeX reader). Two crates, not one, because rustc's front end (the derives'
-//! expansion, type checking) runs on one thread: the two crates compile side by side.
+//! The integration tests of the engine, the bodies and the derive: one of two test crates
+//! over this tree (the other, `scenes_main.rs`, holds the scenes: the top, the free body,
+//! mechanisms, constraints, contact). A module per area, each file a module of its own, both
+//! crates sharing the helpers in `common` (generators, the Newton–Euler reference, shared
+//! scenes, the LaTeX reader). Two crates, not one, because rustc's front end (the derives'
+//! expansion, type checking) runs on one thread: the two compile side by side, and each area
+//! sits in the crate that keeps their build times close.
 
 // Each of the two crates uses part of the shared helpers (the mechanism references are the
 // other crate's, the body sums this one's).
@@ -104,20 +105,6 @@ mod taylor {
     mod scenes;
     mod step_rule;
     mod time;
-}
-/// The top scene.
-mod top {
-    mod check_all;
-    mod checks;
-    mod cross_check;
-    mod gimbal;
-    mod gyrostat;
-    mod gyrostat_driven;
-    mod linear;
-    mod motion;
-    mod theory;
-    mod torque_free;
-    mod validate;
 }
 /// The guides' Rust blocks are all doctests.
 mod guides;

@@ -1,7 +1,7 @@
-//! The integration tests of the scenes over the engine: the free body, mechanisms,
-//! constraints and bodies on a table, and what every scene offers alike. The second test
-//! crate over this tree (`main.rs` is the first and says why there are two); it shares
-//! `common` with it.
+//! The integration tests of the scenes over the engine: the top, the free body, mechanisms,
+//! constraints, bodies on a table, and what every scene offers alike. The second test crate
+//! over this tree (`main.rs` is the first and says why there are two); it shares `common`
+//! with it.
 
 // Each of the two crates uses part of the shared helpers.
 #[allow(dead_code)]
@@ -60,6 +60,20 @@ mod mechanism {
 }
 /// The models and generated types shared between threads are `Send + Sync`.
 mod send_sync;
+/// The top scene.
+mod top {
+    mod check_all;
+    mod checks;
+    mod cross_check;
+    mod gimbal;
+    mod gyrostat;
+    mod gyrostat_driven;
+    mod linear;
+    mod motion;
+    mod theory;
+    mod torque_free;
+    mod validate;
+}
 /// The contact scene: a body on a table.
 mod contact {
     mod errors;
