@@ -1,16 +1,16 @@
-//! The integration tests, one crate so that the whole graph links once: a module per area,
-//! each file a module of its own, all sharing the helpers in `common` (generators, the
-//! Newton–Euler reference, shared scenes, the LaTeX reader).
+//! The integration tests of the engine, the bodies and the derive: one of two test crates
+//! over this tree (the other, `scenes_main.rs`, holds the scenes: the top, the free body,
+//! mechanisms, constraints, contact). A module per area, each file a module of its own, both
+//! crates sharing the helpers in `common` (generators, the Newton–Euler reference, shared
+//! scenes, the LaTeX reader). Two crates, not one, because rustc's front end (the derives'
+//! expansion, type checking) runs on one thread: the two compile side by side, and each area
+//! sits in the crate that keeps their build times close.
 
+// Each of the two crates uses part of the shared helpers (the mechanism references are the
+// other crate's, the body sums this one's).
+#[allow(dead_code)]
 mod common;
 
-/// Closed forms for bodies on a table against an independent Newton–Euler formulation.
-mod contact_theory {
-    mod disk;
-    mod newton_euler;
-    mod scene;
-    mod sphere;
-}
 /// Mass properties, shapes and their validation.
 mod body {
     mod euler;
@@ -38,18 +38,6 @@ mod derive {
     mod taylor;
     mod top;
 }
-/// Constraints: nonholonomic rolling and closed loops.
-mod constraints {
-    mod bicycle;
-    mod bicycle_macro;
-    mod bicycle_macro_cross;
-    mod dead_point;
-    pub mod disk;
-    mod errors;
-    mod four_bar;
-    mod rheonomic;
-    mod rolling_macro;
-}
 /// The physics of the `chaos_map` example: Lyapunov exponents of integrable and chaotic
 /// tops, against ln T / T, a closed form and two nearby trajectories.
 mod chaos_map;
@@ -69,50 +57,15 @@ mod exact {
     mod free_body;
     mod tiny_inertia;
 }
-/// The free-body scene.
-mod free {
-    mod balance;
-    mod driven_rules;
-    mod errors;
-    mod exact;
-    mod gyrostat;
-    mod gyrostat_driven;
-    mod gyrostat_example;
-    mod reference;
-    mod steppers;
-    mod thrust;
-    mod top;
-    mod wrench;
-}
 /// The symmetric eigensolver.
 mod linalg {
     mod eigen;
-}
-/// The mechanism scene.
-mod mechanism {
-    mod charts;
-    mod checks;
-    mod engine;
-    mod errors;
-    mod examples;
-    mod free_joint;
-    mod jacobian;
-    mod kane;
-    mod parameters;
-    mod pendulum;
-    mod recursive;
-    mod rolling;
-    mod timing;
-    mod top;
-    mod variational_derive;
 }
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
 /// linearised flow map Φ P₀ Φᵀ.
 mod monte_carlo_top;
 /// The figures of `precess::plot`: what the SVG holds, the axes' ranges, each error.
 mod plot;
-/// The models and generated types shared between threads are `Send + Sync`.
-mod send_sync;
 /// The integrators, events and sampling.
 mod ode {
     mod attitude;
@@ -153,45 +106,6 @@ mod taylor {
     mod step_rule;
     mod time;
 }
-/// The top scene.
-mod top {
-    mod check_all;
-    mod checks;
-    mod cross_check;
-    mod gimbal;
-    mod gyrostat;
-    mod gyrostat_driven;
-    mod linear;
-    mod motion;
-    mod theory;
-    mod torque_free;
-    mod validate;
-}
-mod work_precision;
-/// The contact scene: a body on a table.
-mod contact {
-    mod errors;
-    mod events;
-    mod invariants;
-    mod newton_euler;
-    mod properties;
-    pub mod reference;
-    mod rolling_disk;
-    mod routh;
-    mod run_loop;
-    mod stick_slip;
-    mod support;
-    mod system_checks;
-    mod tippe_top;
-}
-/// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
-mod rolling_once {
-    mod accelerations;
-    mod run;
-    mod scenes;
-    mod support;
-    mod theory;
-}
 /// The guides' Rust blocks are all doctests.
 mod guides;
 mod variational;
@@ -200,6 +114,7 @@ mod variational_derive;
 /// with too many tangents, an unread or repeated sensitivity, an overflowing flow map; and
 /// Lyapunov exponents of a tangent vector that shrinks towards atol.
 mod variational_refusals;
+mod work_precision;
 /// Values as measured: units, density, constant arithmetic, names.
 mod values {
     mod constants;
@@ -207,13 +122,4 @@ mod values {
     mod mechanism_units;
     mod names;
     mod units;
-}
-
-/// What every scene offers alike: parameters checked by every integrator before its first
-/// step, the closed-form theory from a derived top, the quantities of a run.
-mod scenes {
-    mod accessors;
-    mod checks;
-    mod quantities;
-    mod theory;
 }
