@@ -78,6 +78,7 @@ mod free {
     mod gyrostat;
     mod gyrostat_driven;
     mod gyrostat_example;
+    mod motor_nan;
     mod reference;
     mod steppers;
     mod thrust;
@@ -163,6 +164,7 @@ mod top {
     mod gyrostat_driven;
     mod linear;
     mod motion;
+    mod motor_nan;
     mod theory;
     mod torque_free;
     mod validate;

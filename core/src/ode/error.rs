@@ -31,7 +31,7 @@ pub enum OdeError {
     /// that step is kept).
     #[error("{input} returned {value} at t = {t}: it must return a finite number")]
     NonFiniteInput {
-        /// The input, as its scene names it (`motor `spin_up` of rotor_0`, …).
+        /// The input, as its scene names it (``the motor `spin_up` of rotor_0``, …).
         input: String,
         /// Time of the evaluation (a stage's time, inside the failed step).
         t: f64,
