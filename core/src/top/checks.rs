@@ -7,8 +7,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::error::TopError;
 use super::dynamics::TopDynamics;
+use super::error::TopError;
 use crate::rigid::{AngleSequence, check_chart, first_non_finite_motor};
 
 /// The values of a top's declared torque settings (`None`: not declared), as

@@ -84,7 +84,10 @@ impl Preludes {
     /// `MOTORS` and `motor_torques` of `impl FreeDynamics<N>`: each motor function bound as
     /// a typed pointer spanned on its path, so a wrong signature is reported there.
     fn motor_methods(&self, n: usize) -> TokenStream {
-        let names = self.motors.iter().map(|(path, _)| quote!(#path).to_string().replace(' ', ""));
+        let names = self
+            .motors
+            .iter()
+            .map(|(path, _)| quote!(#path).to_string().replace(' ', ""));
         let calls = self.motors.iter().enumerate().map(|(k, (path, _))| {
             let f = format_ident!("__motor_fn{k}");
             let bind = quote_spanned! {path.span()=>

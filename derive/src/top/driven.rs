@@ -77,7 +77,10 @@ impl DrivenInputs {
     /// signature is one error there.
     fn motor_methods(&self) -> TokenStream {
         let n = self.state_len();
-        let names = self.motors.iter().map(|path| quote!(#path).to_string().replace(' ', ""));
+        let names = self
+            .motors
+            .iter()
+            .map(|path| quote!(#path).to_string().replace(' ', ""));
         let calls = self.motors.iter().enumerate().map(|(k, path)| {
             let bind = quote_spanned! {path.span()=>
                 let __motor: fn(&Self, f64, &[f64]) -> f64 = #path;

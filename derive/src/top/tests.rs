@@ -155,13 +155,20 @@ fn a_driven_top_emits_straight_line_code_over_its_whole_state() {
     println!("rhs_in: {rhs}\n");
     // The motors are called through `motor_torques` once per chart; the rest is arithmetic:
     // no loop, no branch.
-    assert_eq!(rhs.matches("motor_torques (self , t , state").count(), 2, "{rhs}");
+    assert_eq!(
+        rhs.matches("motor_torques (self , t , state").count(),
+        2,
+        "{rhs}"
+    );
     // `motor_torques` binds the motor to its documented signature, and `MOTORS` names it.
     assert!(
         code.contains("fn (& Self , f64 , & [f64]) -> f64 = motor ;"),
         "{code}"
     );
-    assert!(code.contains("MOTORS : & 'static [& 'static str] = & [\"motor\"]"), "{code}");
+    assert!(
+        code.contains("MOTORS : & 'static [& 'static str] = & [\"motor\"]"),
+        "{code}"
+    );
     for word in [" for ", " while ", " loop ", " if "] {
         assert!(!rhs.contains(word), "{word} in {rhs}");
     }

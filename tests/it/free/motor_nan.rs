@@ -74,10 +74,20 @@ fn assert_motor(e: &OdeError, motor: &str, rotor: &str, value: Option<f64>) {
 fn dop853_and_rk4_name_a_nan_motor() {
     let sys = FreeSystem(&Craft);
     let mut ode = Dop853::new(sys, 0.0, start::<15>(), AdaptiveConfig::default()).unwrap();
-    assert_motor(&ode.advance_to(1.0).unwrap_err(), "nan_after", "rotor_1", None);
+    assert_motor(
+        &ode.advance_to(1.0).unwrap_err(),
+        "nan_after",
+        "rotor_1",
+        None,
+    );
     assert!(ode.y().iter().all(|v| v.is_finite()));
     let mut rk = Rk4::new(sys, 0.0, start::<15>(), FixedStepConfig::with_step(0.01)).unwrap();
-    assert_motor(&rk.advance_to(1.0).unwrap_err(), "nan_after", "rotor_1", None);
+    assert_motor(
+        &rk.advance_to(1.0).unwrap_err(),
+        "nan_after",
+        "rotor_1",
+        None,
+    );
     assert!(rk.t() < FAIL, "t = {}", rk.t());
 }
 
@@ -86,9 +96,19 @@ fn dop853_and_rk4_name_an_infinite_motor() {
     let sys = FreeSystem(&Probe);
     let mut ode = Dop853::new(sys, 0.0, start::<14>(), AdaptiveConfig::default()).unwrap();
     let inf = Some(f64::NEG_INFINITY);
-    assert_motor(&ode.advance_to(1.0).unwrap_err(), "Probe::motor", "rotor_0", inf);
+    assert_motor(
+        &ode.advance_to(1.0).unwrap_err(),
+        "Probe::motor",
+        "rotor_0",
+        inf,
+    );
     let mut rk = Rk4::new(sys, 0.0, start::<14>(), FixedStepConfig::with_step(0.01)).unwrap();
-    assert_motor(&rk.advance_to(1.0).unwrap_err(), "Probe::motor", "rotor_0", inf);
+    assert_motor(
+        &rk.advance_to(1.0).unwrap_err(),
+        "Probe::motor",
+        "rotor_0",
+        inf,
+    );
 }
 
 #[test]

@@ -84,22 +84,39 @@ fn rk4_names_a_nan_motor() {
     let mut rk = Rk4::new(&chart, 0.0, START, FixedStepConfig::with_step(0.01)).unwrap();
     let e = rk.advance_to(1.0).unwrap_err();
     assert_motor(&e, "nan_after", "rotor_0", false);
-    assert!(rk.t() < FAIL && rk.y().iter().all(|v| v.is_finite()), "t = {}", rk.t());
+    assert!(
+        rk.t() < FAIL && rk.y().iter().all(|v| v.is_finite()),
+        "t = {}",
+        rk.t()
+    );
 }
 
 #[test]
 fn dop853_and_rk4_name_an_infinite_motor_by_its_rotor_among_all() {
     let chart = TopChart::declared(&InfTop);
     let mut ode = Dop853::new(&chart, 0.0, START, AdaptiveConfig::default()).unwrap();
-    assert_motor(&ode.advance_to(1.0).unwrap_err(), "InfTop::motor", "rotor_1", true);
+    assert_motor(
+        &ode.advance_to(1.0).unwrap_err(),
+        "InfTop::motor",
+        "rotor_1",
+        true,
+    );
     let mut rk = Rk4::new(&chart, 0.0, START, FixedStepConfig::with_step(0.01)).unwrap();
-    assert_motor(&rk.advance_to(1.0).unwrap_err(), "InfTop::motor", "rotor_1", true);
+    assert_motor(
+        &rk.advance_to(1.0).unwrap_err(),
+        "InfTop::motor",
+        "rotor_1",
+        true,
+    );
 }
 
 #[test]
 fn the_chart_switching_run_names_the_motor() {
     let [zyx, zxz] = TopChart::both(&NanTop);
-    let (r0, w0) = (nalgebra::Matrix3::identity(), nalgebra::Vector3::new(0.3, 0.2, 0.0));
+    let (r0, w0) = (
+        nalgebra::Matrix3::identity(),
+        nalgebra::Vector3::new(0.3, 0.2, 0.0),
+    );
     let mut top =
         ChartedTop::with_rotor_rates([zyx, zxz], 0.0, &r0, &w0, &[0.0], ChartConfig::default())
             .unwrap();
@@ -123,7 +140,11 @@ fn checked_accelerations_name_the_motor() {
         "{e:?}"
     );
     let e = InfTop
-        .accelerations_in(AngleSequence::Zxz, 0.9, &[0.0, 1.0, 0.0, 0.3, 0.2, 0.0, 0.0])
+        .accelerations_in(
+            AngleSequence::Zxz,
+            0.9,
+            &[0.0, 1.0, 0.0, 0.3, 0.2, 0.0, 0.0],
+        )
         .unwrap_err();
     assert_eq!(
         e,
