@@ -35,6 +35,7 @@ mod free {
     mod gyrostat;
     mod gyrostat_driven;
     mod gyrostat_example;
+    mod motor_nan;
     mod reference;
     mod steppers;
     mod thrust;
@@ -71,6 +72,7 @@ mod top {
     mod gyrostat_driven;
     mod linear;
     mod motion;
+    mod motor_nan;
     mod theory;
     mod torque_free;
     mod validate;

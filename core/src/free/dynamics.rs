@@ -7,6 +7,7 @@ use super::error::FreeError;
 use super::state::{FreeState, STATE_LEN};
 use super::theory::FreeExact;
 use crate::body::{Principal, RigidBody};
+use crate::rigid::first_non_finite_motor;
 
 /// The total force and torque acting on a free body at one state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -64,6 +65,37 @@ pub trait FreeDynamics<const N: usize = STATE_LEN>: RigidBody {
     /// `rotor_k` for the rotor declared k-th (counting from 0), holding its relative rate Ωₖ
     /// (rad/s). The derive gives each slot a const in capitals (`Self::ROTOR_0`).
     const DRIVEN_ROTORS: &'static [&'static str] = &[];
+
+    /// The paths of the driven rotors' motor functions as `rotor(torque = path)` writes
+    /// them, in the order of [`FreeDynamics::DRIVEN_ROTORS`]. Empty without motors.
+    const MOTORS: &'static [&'static str] = &[];
+
+    /// Writes motor k's torque uₖ = `motor(self, t, y)` into `out[k]`, in the order of
+    /// [`FreeDynamics::MOTORS`] (motors past `out`'s length are not called). Generated for a
+    /// body with driven rotors; unchecked, as [`FreeDynamics::free_rhs`], which reads it.
+    fn motor_torques(&self, t: f64, y: &[f64; N], out: &mut [f64]) {
+        let _ = (t, y, out);
+    }
+
+    /// Calls every motor at `(t, y)` and checks its torque: what a run reports when f is not
+    /// finite ([`super::FreeSystem`]'s
+    /// [`System::explain_non_finite`](crate::ode::System::explain_non_finite)).
+    ///
+    /// # Errors
+    /// [`FreeError::NonFiniteMotor`] naming the first motor that returned NaN or ±∞.
+    fn check_motors(&self, t: f64, y: &[f64; N]) -> Result<(), FreeError> {
+        let mut u = vec![0.0; Self::MOTORS.len()];
+        self.motor_torques(t, y, &mut u);
+        match first_non_finite_motor(Self::DRIVEN_ROTORS, Self::MOTORS, &u) {
+            Some((rotor, motor, value)) => Err(FreeError::NonFiniteMotor {
+                rotor,
+                motor,
+                t,
+                value,
+            }),
+            None => Ok(()),
+        }
+    }
 
     /// The slot of the state component called `name` in the array of [`super::layout`], if
     /// there is one, by the names of [`FreeQuantities::state_names`](super::FreeQuantities::state_names)

@@ -14,7 +14,7 @@ use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::exact::ExactError;
 use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::rotor_quantity;
+use crate::rigid::{motor_input_error, rotor_quantity};
 
 /// Why a free body could not be derived, set up, integrated or answered.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -137,6 +137,22 @@ pub enum FreeError {
     /// The body's description breaks a rule for the current parameter values.
     #[error(transparent)]
     Body(#[from] BodyError),
+    /// A driven rotor's motor function returned NaN or ±∞: checked by a run's stepper when
+    /// f is not finite ([`FreeDynamics::check_motors`](super::FreeDynamics::check_motors)).
+    #[error(
+        "the motor `{motor}` of {rotor} returned {value} at t = {t}: a motor's torque must be finite"
+    )]
+    NonFiniteMotor {
+        /// The driven rotor, by its name in
+        /// [`FreeDynamics::DRIVEN_ROTORS`](super::FreeDynamics::DRIVEN_ROTORS) (`rotor_k`).
+        rotor: &'static str,
+        /// The motor function, as `rotor(torque = path)` writes its path.
+        motor: &'static str,
+        /// The time it was called at.
+        t: f64,
+        /// The value it returned.
+        value: f64,
+    },
     /// A stepper failed, or a stop time is not finite or lies in the past.
     #[error(transparent)]
     Ode(#[from] OdeError),
@@ -149,7 +165,8 @@ impl FreeError {
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the parameter or the body's quantity with
-    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is); a
+    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is, and
+    /// [`FreeError::NonFiniteMotor`] becomes [`OdeError::NonFiniteInput`] naming the motor); a
     /// [`FreeError::NonFiniteWrench`] is named `wrench: <part>` with its first component
     /// that is not finite.
     ///
@@ -165,6 +182,12 @@ impl FreeError {
     pub fn into_ode_error(self) -> OdeError {
         let named = match &self {
             FreeError::Ode(e) => return e.clone(),
+            FreeError::NonFiniteMotor {
+                rotor,
+                motor,
+                t,
+                value,
+            } => return motor_input_error(rotor, motor, *t, *value),
             FreeError::Body(b) => body_quantity(b),
             FreeError::Binding(b) => binding_quantity(b),
             FreeError::NonFiniteParameter { name, value } => (name.clone(), *value),

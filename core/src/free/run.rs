@@ -76,6 +76,10 @@ impl<S: System<STATE_LEN>> System<STATE_LEN> for Flight<S> {
     fn check_parameters(&self) -> Result<(), OdeError> {
         self.sys.check_parameters()
     }
+
+    fn explain_non_finite(&self, t: f64, y: &[f64; STATE_LEN]) -> Option<OdeError> {
+        self.sys.explain_non_finite(t, y)
+    }
 }
 
 impl<S> Hooks<[f64; STATE_LEN]> for Flight<S> {

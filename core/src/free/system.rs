@@ -54,6 +54,15 @@ impl<const N: usize, T: FreeDynamics<N>> System<N> for FreeSystem<'_, T> {
             .check_parameters()
             .map_err(super::error::FreeError::into_ode_error)
     }
+
+    /// A driven rotor's motor that is not finite at `(t, y)` ([`FreeDynamics::check_motors`]):
+    /// [`OdeError::NonFiniteInput`] naming it.
+    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
+        self.0
+            .check_motors(t, y)
+            .err()
+            .map(super::error::FreeError::into_ode_error)
+    }
 }
 
 /// A derived free body as the rigid-body model of the Lie-group stepper

@@ -7,7 +7,7 @@ use super::config::AdaptiveConfig;
 use super::controller::PiController;
 use super::error::{OdeError, check_finite, check_span, check_stop};
 use super::pairs::{DenseCoeffs, EmbeddedPair, Stages};
-use super::system::{Stats, System, all_finite};
+use super::system::{Stats, System, all_finite, non_finite};
 
 /// An adaptive integrator using the embedded pair `P` on a system `S` of dimension `N`.
 ///
@@ -80,7 +80,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             pair: PhantomData,
         };
         if !all_finite(&me.k[0]) {
-            return Err(OdeError::NonFiniteState { t: t0 });
+            return Err(non_finite(&me.sys, t0, (t0, &y0)));
         }
         me.h = match cfg.h0 {
             Some(h) => h.min(cfg.h_max),
@@ -220,7 +220,7 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         self.sys.rhs(t0, &y0, &mut f0);
         self.stats.rhs_evals += 1;
         if !all_finite(&f0) {
-            return Err(OdeError::NonFiniteState { t: t0 });
+            return Err(non_finite(&self.sys, t0, (t0, &y0)));
         }
         // The next step takes f(t, y) from the FSAL stage once a step has been taken.
         self.k[0] = f0;
@@ -292,7 +292,8 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
             );
             self.stats.rhs_evals += evals;
             if err.is_nan() || !all_finite(&y_new) {
-                return Err(OdeError::NonFiniteState { t: self.t });
+                let step = (self.t, h, t_hi);
+                return Err(P::explain_trial(&self.sys, step, &self.y, &self.k, &y_new));
             }
             if err <= 1.0 {
                 let mut h_new = self.control.accepted(h, err);

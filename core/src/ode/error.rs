@@ -25,6 +25,19 @@ pub enum OdeError {
         /// carry no clock, the time since the start of the call).
         t: f64,
     },
+    /// An input the system reads from a user function (a driven rotor's motor, say) returned
+    /// NaN or ±∞ during a step: the cause of a non-finite f, named by the system's
+    /// [`System::explain_non_finite`](super::System::explain_non_finite) (the state before
+    /// that step is kept).
+    #[error("{input} returned {value} at t = {t}: it must return a finite number")]
+    NonFiniteInput {
+        /// The input, as its scene names it (``the motor `spin_up` of rotor_0``, …).
+        input: String,
+        /// Time of the evaluation (a stage's time, inside the failed step).
+        t: f64,
+        /// The value returned.
+        value: f64,
+    },
     /// The initial state holds NaN or ±∞ (component `index`).
     #[error("non-finite initial state: component {index} is {value}")]
     NonFiniteInitialState {

@@ -4,7 +4,7 @@ use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
 use super::fixed::{StepGrid, check_inside, two_sum};
 use super::stepper::Stepper;
-use super::system::{Stats, System, all_finite};
+use super::system::{Stats, System, all_finite, non_finite};
 
 /// Steps between two checks of RK4's state (the first bad step is then found by replaying
 /// the block).
@@ -109,6 +109,27 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         dy
     }
 
+    /// The error of the step of size `h` from `(t, y)` whose result was not finite: its
+    /// stages taken again, the system's explanation ([`System::explain_non_finite`]) at the
+    /// first whose f is not finite, else [`OdeError::NonFiniteState`] at `t`. Off the
+    /// stepping path: called once, when the step has failed.
+    fn explain_step(&self, t: f64, y: &[f64; N], h: f64, t_hi: f64) -> OdeError {
+        // (c, a) of each stage: it is evaluated at t + c h and y + a h k_prev.
+        let tableau = [(0.0, 0.0), (0.5, 0.5), (0.5, 0.5), (1.0, 1.0)];
+        let mut k = [0.0; N];
+        for (c, a) in tableau {
+            let ts = (t + c * h).min(t_hi);
+            let ys: [f64; N] = std::array::from_fn(|i| y[i] + a * h * k[i]);
+            let mut f = [0.0; N];
+            self.sys.rhs(ts, &ys, &mut f);
+            if !all_finite(&f) {
+                return non_finite(&self.sys, t, (ts, &ys));
+            }
+            k = f;
+        }
+        OdeError::NonFiniteState { t }
+    }
+
     /// One step from `(t, y)` with the low-order bits `lo` of y, returned as the new
     /// `(y, lo)` rather than stored so that a non-finite result can leave the state as it
     /// was. Compensated, y + lo + Δ is summed by TwoSum and its rounding error kept in the new
@@ -175,7 +196,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
                         self.stats.steps += i - 1;
                         self.stats.rhs_evals += 4 * (len + i);
                         self.forget_last_step();
-                        return Err(OdeError::NonFiniteState { t });
+                        return Err(self.explain_step(t, &y, h, t_hi));
                     }
                     (y, lo) = (y_new, lo_new);
                     t = t0 + i as f64 * h;
@@ -227,7 +248,7 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         let (y_new, lo_new) = self.step_from(self.t, &self.y, &self.y_lo, h, t_hi);
         self.stats.rhs_evals += 4;
         if !all_finite(&y_new) {
-            return Err(OdeError::NonFiniteState { t: self.t });
+            return Err(self.explain_step(self.t, &self.y, h, t_hi));
         }
         StepGrid::advance(&mut self.grid);
         (self.t_prev, self.y_prev, self.y_prev_lo, self.t_hi) = (self.t, self.y, self.y_lo, t_hi);
@@ -259,7 +280,8 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         if all_finite(&y) {
             Ok(y)
         } else {
-            Err(OdeError::NonFiniteState { t: self.t_prev })
+            let h = t - self.t_prev;
+            Err(self.explain_step(self.t_prev, &self.y_prev, h, self.t_hi))
         }
     }
 

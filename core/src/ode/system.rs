@@ -35,6 +35,41 @@ pub trait System<const N: usize> {
     fn check_parameters(&self) -> Result<(), OdeError> {
         Ok(())
     }
+
+    /// Names the cause of a right-hand side that came out NaN or ±∞ at `(t, y)`: the
+    /// steppers call it where f was not finite (at the stage that failed, or the step's
+    /// start where they do not keep the stage), and report its error in place of the generic
+    /// [`OdeError::NonFiniteState`]. Never called on the steppers' inner loops, so it may
+    /// evaluate what it likes again.
+    ///
+    /// The default names nothing (`None`). The derived scenes with driven rotors evaluate
+    /// their motors at `(t, y)`.
+    ///
+    /// ```
+    /// use precess_core::ode::{AdaptiveConfig, Dopri5, OdeError, System};
+    /// /// y' = u(t) with an input u that fails after t = 1.
+    /// struct Fed;
+    /// fn u(t: f64) -> f64 { if t > 1.0 { f64::NAN } else { 1.0 } }
+    /// impl System<1> for Fed {
+    ///     fn rhs(&self, t: f64, _y: &[f64; 1], d: &mut [f64; 1]) { d[0] = u(t); }
+    ///     fn explain_non_finite(&self, t: f64, _y: &[f64; 1]) -> Option<OdeError> {
+    ///         let value = u(t);
+    ///         (!value.is_finite()).then(|| OdeError::NonFiniteInput { input: "u".into(), t, value })
+    ///     }
+    /// }
+    /// let mut ode = Dopri5::new(Fed, 0.0, [0.0], AdaptiveConfig::default())?;
+    /// let e = ode.advance_to(2.0).unwrap_err();
+    /// assert!(matches!(e, OdeError::NonFiniteInput { t, .. } if t > 1.0));
+    /// # Ok::<(), OdeError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// None: the error it returns is the explanation, [`OdeError::NonFiniteInput`] or the
+    /// scene's own.
+    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
+        let _ = (t, y);
+        None
+    }
 }
 
 /// Adapts a closure `|t, y, dydt|` into a [`System`].
@@ -65,6 +100,10 @@ impl<S: System<N> + ?Sized, const N: usize> System<N> for &S {
 
     fn check_parameters(&self) -> Result<(), OdeError> {
         (**self).check_parameters()
+    }
+
+    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
+        (**self).explain_non_finite(t, y)
     }
 }
 
@@ -103,6 +142,21 @@ impl core::ops::Add for Stats {
         self += other;
         self
     }
+}
+
+/// The error of a right-hand side found not finite at `(t, y)` in the step from `t_step`:
+/// the system's explanation ([`System::explain_non_finite`]) when the state there is finite
+/// (a non-finite state is the blow-up itself, not an input's fault), else
+/// [`OdeError::NonFiniteState`] naming the step's start.
+pub(crate) fn non_finite<S: System<N> + ?Sized, const N: usize>(
+    sys: &S,
+    t_step: f64,
+    (t, y): (f64, &[f64; N]),
+) -> OdeError {
+    all_finite(y)
+        .then(|| sys.explain_non_finite(t, y))
+        .flatten()
+        .unwrap_or(OdeError::NonFiniteState { t: t_step })
 }
 
 /// `true` when every component is finite.

@@ -31,8 +31,8 @@ pub use projection::normalise_quaternion;
 pub use quaternion_expr::{quaternion_rate, rotation_of_quaternion};
 pub use rkmk4::Rkmk4;
 pub use rotor::{
-    DRIVEN_ROUNDING, DrivenRotor, Rotor, check_driven_inertia, first_singular_driven,
-    rotor_quantity, singular_driven_step, total_momentum,
+    DRIVEN_ROUNDING, DrivenRotor, Rotor, check_driven_inertia, first_non_finite_motor,
+    first_singular_driven, motor_input_error, rotor_quantity, singular_driven_step, total_momentum,
 };
 pub use splitting::{
     ExactFreeFlow, FreeBodySplitting, FreeFlow, Gravity, Potential, PotentialSplitting,

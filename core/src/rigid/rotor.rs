@@ -33,6 +33,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::ode::OdeError;
 use crate::sym::mat3::dot;
 use crate::sym::{Arena, ExprId, SymError};
 
@@ -219,5 +220,43 @@ pub fn rotor_quantity(inertia: f64, axis_norm: f64) -> (String, f64) {
         ("rotor axis".to_owned(), axis_norm)
     } else {
         ("rotor inertia".to_owned(), inertia)
+    }
+}
+
+/// The first driven rotor whose motor torque `torques[k]` is NaN or ±∞, as its name in
+/// `rotors` (`rotor_j`), its motor function's in `motors` and the value (a name missing from
+/// a list reads `?`).
+///
+/// ```
+/// use precess_core::rigid::first_non_finite_motor;
+/// let bad = first_non_finite_motor(&["rotor_0", "rotor_2"], &["hold", "spin_up"], &[1.0, f64::INFINITY]);
+/// assert_eq!(bad, Some(("rotor_2", "spin_up", f64::INFINITY)));
+/// ```
+pub fn first_non_finite_motor(
+    rotors: &[&'static str],
+    motors: &[&'static str],
+    torques: &[f64],
+) -> Option<(&'static str, &'static str, f64)> {
+    let k = torques.iter().position(|u| !u.is_finite())?;
+    let name = |names: &[&'static str]| names.get(k).copied().unwrap_or("?");
+    Some((name(rotors), name(motors), torques[k]))
+}
+
+/// A motor's NaN or infinite torque as the integrators report it:
+/// [`OdeError::NonFiniteInput`] naming the motor function and its rotor (the free body's and
+/// the top's `NonFiniteMotor` both map to it).
+///
+/// ```
+/// use precess_core::ode::OdeError;
+/// use precess_core::rigid::motor_input_error;
+/// let e = motor_input_error("rotor_1", "spin_up", 0.75, f64::NAN);
+/// assert!(e.to_string().starts_with("the motor `spin_up` of rotor_1 returned NaN at t = 0.75"));
+/// assert!(matches!(e, OdeError::NonFiniteInput { t, .. } if t == 0.75));
+/// ```
+pub fn motor_input_error(rotor: &str, motor: &str, t: f64, value: f64) -> OdeError {
+    OdeError::NonFiniteInput {
+        input: format!("the motor `{motor}` of {rotor}"),
+        t,
+        value,
     }
 }

@@ -7,8 +7,9 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::dynamics::TopDynamics;
 use super::error::TopError;
-use crate::rigid::{AngleSequence, check_chart};
+use crate::rigid::{AngleSequence, check_chart, first_non_finite_motor};
 
 /// The values of a top's declared torque settings (`None`: not declared), as
 /// `#[top(...)]` takes them from literals or fields.
@@ -153,6 +154,28 @@ pub(crate) fn checked_accelerations(
             quantity: "q̈",
             values: a.to_vec(),
         })
+    }
+}
+
+/// Calls every motor of `top` at `(t, state)`.
+///
+/// # Errors
+/// [`TopError::NonFiniteMotor`] naming the first motor that returned NaN or ±∞.
+pub(crate) fn checked_motors<T: TopDynamics<N> + ?Sized, const N: usize>(
+    top: &T,
+    t: f64,
+    state: &[f64; N],
+) -> Result<(), TopError> {
+    let mut u = vec![0.0; T::MOTORS.len()];
+    top.motor_torques(t, state, &mut u);
+    match first_non_finite_motor(T::DRIVEN_ROTORS, T::MOTORS, &u) {
+        Some((rotor, motor, value)) => Err(TopError::NonFiniteMotor {
+            rotor,
+            motor,
+            t,
+            value,
+        }),
+        None => Ok(()),
     }
 }
 

@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
-use super::checks::{TopParameters, checked_accelerations};
+use super::checks::{TopParameters, checked_accelerations, checked_motors};
 use super::error::TopError;
 use super::theory::{HeavyTopTheory, derived_theory};
 use crate::body::RigidBody;
@@ -90,6 +90,18 @@ pub trait TopDynamics<const N: usize = 6>: RigidBody {
     /// 6, 7, …: `"rotor_j"`, j the rotor's place among every rotor declared. Empty (and
     /// `N = 6`) without motors.
     const DRIVEN_ROTORS: &'static [&'static str] = &[];
+
+    /// The paths of the driven rotors' motor functions as `rotor(torque = path)` writes
+    /// them, in the order of [`TopDynamics::DRIVEN_ROTORS`]. Empty without motors.
+    const MOTORS: &'static [&'static str] = &[];
+
+    /// Writes motor k's torque uₖ = `motor(self, t, state)` into `out[k]`, in the order of
+    /// [`TopDynamics::MOTORS`] (motors past `out`'s length are not called). Generated for a
+    /// driven top; unchecked (the checked [`TopDynamics::accelerations_in`] and the runs
+    /// check the values).
+    fn motor_torques(&self, t: f64, state: &[f64; N], out: &mut [f64]) {
+        let _ = (t, state, out);
+    }
 
     /// The constant-rate rotors' total relative angular momentum h = Σ J Ω â in body
     /// (description) axes, for the current field values; zero without rotors. The top's
@@ -365,7 +377,8 @@ pub trait TopDynamics<const N: usize = 6>: RigidBody {
     /// [`TopError::NonFinite`] for non-finite angles or rates; [`TopError::Chart`] ([`crate::rigid::ChartError::SingularChart`]) at
     /// the chart's gimbal lock (`|det B(q)|` below [`crate::rigid::SINGULAR_DET`]): integrate through
     /// it with [`super::ChartedTop`] or [`super::EulerianTop`]; [`TopError::NonFiniteResult`]
-    /// if q̈ is not finite all the same (a NaN field or torque, or an overflow).
+    /// if q̈ is not finite all the same (a NaN field or torque, or an overflow), and before it
+    /// [`TopError::NonFiniteMotor`] naming a driven rotor's motor that returned NaN or ±∞.
     fn accelerations_in(
         &self,
         seq: AngleSequence,
@@ -373,12 +386,18 @@ pub trait TopDynamics<const N: usize = 6>: RigidBody {
         state: &[f64; N],
     ) -> Result<[f64; 3], TopError> {
         self.check_all()?;
-        checked_accelerations(
+        // The motors are checked where q̈ is computed: at a finite state in a regular chart.
+        let mut motors = Ok(());
+        let accel = checked_accelerations(
             seq,
             state,
             |q| self.rate_matrix_in(seq, q),
-            || self.accelerations_unchecked_in(seq, t, state),
-        )
+            || {
+                motors = checked_motors(self, t, state);
+                self.accelerations_unchecked_in(seq, t, state)
+            },
+        );
+        motors.and(accel)
     }
 
     /// The energy T + V in [`TopDynamics::SEQUENCE`]; NaN for a driven top (use

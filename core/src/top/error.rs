@@ -13,7 +13,7 @@ use thiserror::Error;
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::{ChartError, rotor_quantity};
+use crate::rigid::{ChartError, motor_input_error, rotor_quantity};
 
 use super::theory::TheoryError;
 
@@ -95,6 +95,22 @@ pub enum TopError {
         /// The smallest eigenvalue of I − Σ J â âᵀ up to that rotor (NaN if not finite).
         smallest: f64,
     },
+    /// A driven rotor's motor function returned NaN or ±∞: checked by the methods that call
+    /// the motors ([`super::TopDynamics::accelerations_in`], and a run's stepper when f is
+    /// not finite).
+    #[error(
+        "the motor `{motor}` of {rotor} returned {value} at t = {t}: a motor's torque must be finite"
+    )]
+    NonFiniteMotor {
+        /// The driven rotor, by its name in [`super::TopDynamics::DRIVEN_ROTORS`] (`rotor_j`).
+        rotor: &'static str,
+        /// The motor function, as `rotor(torque = path)` writes its path.
+        motor: &'static str,
+        /// The time it was called at.
+        t: f64,
+        /// The value it returned.
+        value: f64,
+    },
     /// [`super::ChartedTop::with_rotor_rates`] was given a number of driven rotors' rates
     /// other than the top's, or one that is not finite.
     #[error(
@@ -163,7 +179,8 @@ impl TopError {
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters):
     /// [`OdeError::InvalidSystemParameter`] naming the setting or the body's quantity with
-    /// its value and this error's message ([`TopError::Ode`] is passed on as it is).
+    /// its value and this error's message ([`TopError::Ode`] is passed on as it is, and
+    /// [`TopError::NonFiniteMotor`] becomes [`OdeError::NonFiniteInput`] naming the motor).
     ///
     /// ```
     /// use precess::ode::OdeError;
@@ -177,6 +194,12 @@ impl TopError {
     pub fn into_ode_error(self) -> OdeError {
         let named = match &self {
             TopError::Ode(e) => return e.clone(),
+            TopError::NonFiniteMotor {
+                rotor,
+                motor,
+                t,
+                value,
+            } => return motor_input_error(rotor, motor, *t, *value),
             TopError::Body(b) => body_quantity(b),
             TopError::Binding(b) => binding_quantity(b),
             TopError::NonFiniteParameter { parameter, value } => ((*parameter).to_owned(), *value),

@@ -84,6 +84,10 @@ impl<C: AngleChart<N>, const N: usize> System<N> for Charts<C> {
     fn check_parameters(&self) -> Result<(), OdeError> {
         self.active().check_all().map_err(TopError::into_ode_error)
     }
+
+    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
+        self.active().explain_non_finite(t, y)
+    }
 }
 
 impl<C: AngleChart<N>, const N: usize> Hooks<[f64; N]> for Charts<C> {

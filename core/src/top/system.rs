@@ -3,6 +3,7 @@
 use nalgebra::Matrix3;
 
 use super::angle_chart::AngleChart;
+use super::checks::checked_motors;
 use super::dynamics::TopDynamics;
 use super::error::TopError;
 use crate::ode::{OdeError, System};
@@ -86,6 +87,14 @@ impl<T: TopDynamics<N>, const N: usize> System<N> for TopChart<'_, T> {
     /// The top's [`TopDynamics::check_all`]: body and settings, before any step.
     fn check_parameters(&self) -> Result<(), OdeError> {
         self.top.check_all().map_err(TopError::into_ode_error)
+    }
+
+    /// A driven rotor's motor that is not finite at `(t, y)`:
+    /// [`OdeError::NonFiniteInput`] naming it ([`TopError::NonFiniteMotor`]).
+    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
+        checked_motors(self.top, t, y)
+            .err()
+            .map(TopError::into_ode_error)
     }
 }
 

@@ -64,18 +64,49 @@ impl Preludes {
             out.extend(quote!(let __state = #p::FreeState::from_array_unchecked(y);));
             out.extend(calls);
         }
-        // Each motor function bound as a typed pointer spanned on its path, so a wrong
-        // signature is reported there; called once per evaluation that reads its torque.
-        for (k, (path, symbol)) in self.motors.iter().enumerate() {
-            if reads(std::slice::from_ref(symbol)) {
-                let (f, u) = (format_ident!("__motor_fn{k}"), format_ident!("__motor{k}"));
-                out.extend(quote_spanned! {path.span()=>
-                    let #f: fn(&Self, f64, &[f64]) -> f64 = #path;
-                });
-                out.extend(quote!(let #u: f64 = #f(self, t, &y[..]);));
-            }
+        // The motors through one call of the generated `motor_torques`, once per evaluation
+        // that reads a torque.
+        let symbols: Vec<ExprId> = self.motors.iter().map(|(_, u)| *u).collect();
+        if reads(&symbols) {
+            let count = symbols.len();
+            let locals = (0..count).map(|k| format_ident!("__motor{k}"));
+            let slots = 0..count;
+            out.extend(quote! {
+                let mut __motors = [0.0f64; #count];
+                #p::FreeDynamics::motor_torques(self, t, y, &mut __motors);
+                #(let #locals: f64 = __motors[#slots];)*
+            });
         }
         out
+    }
+
+    /// `MOTORS` and `motor_torques` of `impl FreeDynamics<N>`: each motor function bound as
+    /// a typed pointer spanned on its path, so a wrong signature is reported there.
+    fn motor_methods(&self, n: usize) -> TokenStream {
+        let names = self
+            .motors
+            .iter()
+            .map(|(path, _)| quote!(#path).to_string().replace(' ', ""));
+        let calls = self.motors.iter().enumerate().map(|(k, (path, _))| {
+            let f = format_ident!("__motor_fn{k}");
+            let bind = quote_spanned! {path.span()=>
+                let #f: fn(&Self, f64, &[f64]) -> f64 = #path;
+            };
+            quote! {
+                #bind
+                if let ::core::option::Option::Some(__o) = __out.get_mut(#k) {
+                    *__o = #f(self, t, &y[..]);
+                }
+            }
+        });
+        quote! {
+            const MOTORS: &'static [&'static str] = &[#(#names),*];
+
+            #[inline]
+            fn motor_torques(&self, t: f64, y: &[f64; #n], __out: &mut [f64]) {
+                #(#calls)*
+            }
+        }
     }
 
     /// The wrench functions called and their sum resolved into its four parts, if `reads`
@@ -290,6 +321,7 @@ pub fn expand(
         .map(|(k, _)| format!("rotor_{k}"))
         .collect();
     let slots = slot_consts(ident, &driven_names);
+    let motor_methods = preludes.motor_methods(n);
     Some(quote! {
         #taylor
 
@@ -304,6 +336,8 @@ pub fn expand(
             const BEYOND_GRAVITY: ::core::option::Option<&'static str> = #beyond;
 
             const DRIVEN_ROTORS: &'static [&'static str] = &[#(#driven_names),*];
+
+            #motor_methods
 
             #[inline]
             fn principal_cm(&self) -> #p::Principal { #principal }

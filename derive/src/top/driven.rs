@@ -57,18 +57,48 @@ impl DrivenInputs {
         6 + self.rotors.len()
     }
 
-    /// The statements binding each motor's torque `__motor{k}` from the state: the
-    /// function first bound to the documented fn pointer type, spanned on its path, so a
-    /// function of another signature is one error there.
+    /// The statements binding each motor's torque `__motor{k}` from the state, all through
+    /// one call of the generated `motor_torques`.
     fn calls(&self) -> TokenStream {
+        let p = Private;
+        let (n, count) = (self.state_len(), self.motors.len());
+        let locals = (0..count).map(|k| format_ident!("__motor{k}"));
+        let slots = 0..count;
+        quote! {
+            let mut __motors = [0.0f64; #count];
+            <Self as #p::TopDynamics<#n>>::motor_torques(self, t, state, &mut __motors);
+            #(let #locals: f64 = __motors[#slots];)*
+        }
+    }
+
+    /// `MOTORS` and `motor_torques` of `impl TopDynamics<N>`: each motor function first bound
+    /// to the documented fn pointer type, spanned on its path, so a function of another
+    /// signature is one error there.
+    fn motor_methods(&self) -> TokenStream {
+        let n = self.state_len();
+        let names = self
+            .motors
+            .iter()
+            .map(|path| quote!(#path).to_string().replace(' ', ""));
         let calls = self.motors.iter().enumerate().map(|(k, path)| {
-            let local = format_ident!("__motor{k}");
             let bind = quote_spanned! {path.span()=>
                 let __motor: fn(&Self, f64, &[f64]) -> f64 = #path;
             };
-            quote!(#bind let #local: f64 = __motor(self, t, state);)
+            quote! {
+                #bind
+                if let ::core::option::Option::Some(__o) = __out.get_mut(#k) {
+                    *__o = __motor(self, t, state);
+                }
+            }
         });
-        quote!(#(#calls)*)
+        quote! {
+            const MOTORS: &'static [&'static str] = &[#(#names),*];
+
+            #[inline]
+            fn motor_torques(&self, t: f64, state: &[f64; #n], __out: &mut [f64]) {
+                #(#calls)*
+            }
+        }
     }
 }
 
@@ -137,7 +167,10 @@ pub(super) fn methods(
     let momentum_in = quote!({ #lets #p::Vector3::new(#(#outputs),*) });
     let chart = arms.chart.methods(n);
     let rhs = &arms.rhs;
+    let motor_methods = inputs.motor_methods();
     let tokens = quote! {
+        #motor_methods
+
         #chart
 
         #[inline]

@@ -153,16 +153,21 @@ fn a_driven_top_emits_straight_line_code_over_its_whole_state() {
         .map_or(code.len(), |e| start + e);
     let rhs = &code[start..end];
     println!("rhs_in: {rhs}\n");
-    // The motor is bound to its documented signature and called once per chart; the rest is
-    // arithmetic: no loop, no branch.
-    assert!(
-        rhs.contains("fn (& Self , f64 , & [f64]) -> f64 = motor ;"),
-        "{rhs}"
-    );
+    // The motors are called through `motor_torques` once per chart; the rest is arithmetic:
+    // no loop, no branch.
     assert_eq!(
-        rhs.matches("__motor (self , t , state)").count(),
+        rhs.matches("motor_torques (self , t , state").count(),
         2,
         "{rhs}"
+    );
+    // `motor_torques` binds the motor to its documented signature, and `MOTORS` names it.
+    assert!(
+        code.contains("fn (& Self , f64 , & [f64]) -> f64 = motor ;"),
+        "{code}"
+    );
+    assert!(
+        code.contains("MOTORS : & 'static [& 'static str] = & [\"motor\"]"),
+        "{code}"
     );
     for word in [" for ", " while ", " loop ", " if "] {
         assert!(!rhs.contains(word), "{word} in {rhs}");

@@ -17,8 +17,9 @@ pub use dopri5::Dopri5Pair;
 pub use tableau::{DenseOutput, ErrorEstimate, Tableau};
 pub use vern9::Vern9Pair;
 
-use super::system::System;
-use skeleton::{error_norm, hermite, polynomial, stages, weighted};
+use super::error::OdeError;
+use super::system::{System, non_finite};
+use skeleton::{error_norm, failed_stage, hermite, polynomial, stages, weighted};
 
 /// Stage storage shared by all pairs (DOP853 needs 16 with its dense-output stages,
 /// Verner 9(8) 16, f at the new point and 4 interpolation stages).
@@ -103,6 +104,29 @@ pub trait EmbeddedPair {
         }
         let err = error_norm(Self::TABLEAU.error, h, &increment, (y, y_new), k, tol);
         (err, evals)
+    }
+
+    /// The error of a trial step ([`EmbeddedPair::try_step`] with the same arguments) whose
+    /// result is not finite: the system's explanation
+    /// ([`System::explain_non_finite`]) at the first stage whose f is not finite, else
+    /// [`OdeError::NonFiniteState`] at the step's start `t`. Off the stepping path: called
+    /// once, when the step has failed.
+    fn explain_trial<S: System<N>, const N: usize>(
+        sys: &S,
+        (t, h, t_hi): (f64, f64, f64),
+        y: &[f64; N],
+        k: &Stages<N>,
+        y_new: &[f64; N],
+    ) -> OdeError {
+        let tableau = (Self::TABLEAU.a, Self::TABLEAU.c);
+        if let Some((ts, ys)) = failed_stage((t, h, t_hi), y, tableau, Self::TABLEAU.trial, k) {
+            return non_finite(sys, t, (ts, &ys));
+        }
+        let fsal = &k[Self::TABLEAU.fsal];
+        if Self::TABLEAU.fsal_in_trial && fsal.iter().any(|v| !v.is_finite()) {
+            return non_finite(sys, t, ((t + h).min(t_hi), y_new));
+        }
+        OdeError::NonFiniteState { t }
     }
 
     /// Makes `k[FSAL] = f(min(t + h, t_hi), y_new)` available after acceptance; returns

@@ -79,6 +79,27 @@ pub(super) fn stages<S: System<N>, const N: usize>(
     each!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20);
 }
 
+/// The first stage of the trial stages `0..end` whose f is not finite, as its time and the
+/// state it was evaluated at (rebuilt from the finite stages before it), or `None`.
+pub(super) fn failed_stage<const N: usize>(
+    (t, h, t_hi): (f64, f64, f64),
+    y: &[f64; N],
+    (a, c): (&[&[f64]], &[f64]),
+    end: usize,
+    k: &Stages<N>,
+) -> Option<(f64, [f64; N])> {
+    (0..end).find_map(|s| {
+        if k[s].iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let mut ys = *y;
+        if s > 0 {
+            stage_state(y, h, a[s], k, &mut ys);
+        }
+        Some(((t + c[s] * h).min(t_hi), ys))
+    })
+}
+
 /// The tolerance scale of one component, `atol + rtol·max(|y|, |y_new|)`.
 #[inline]
 fn error_scale(y: f64, y_new: f64, (rtol, atol): (f64, f64)) -> f64 {
