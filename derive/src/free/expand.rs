@@ -80,33 +80,9 @@ impl Preludes {
         out
     }
 
-    /// `MOTORS` and `motor_torques` of `impl FreeDynamics<N>`: each motor function bound as
-    /// a typed pointer spanned on its path, so a wrong signature is reported there.
+    /// `MOTORS` and `motor_torques` of `impl FreeDynamics<N>`.
     fn motor_methods(&self, n: usize) -> TokenStream {
-        let names = self
-            .motors
-            .iter()
-            .map(|(path, _)| quote!(#path).to_string().replace(' ', ""));
-        let calls = self.motors.iter().enumerate().map(|(k, (path, _))| {
-            let f = format_ident!("__motor_fn{k}");
-            let bind = quote_spanned! {path.span()=>
-                let #f: fn(&Self, f64, &[f64]) -> f64 = #path;
-            };
-            quote! {
-                #bind
-                if let ::core::option::Option::Some(__o) = __out.get_mut(#k) {
-                    *__o = #f(self, t, &y[..]);
-                }
-            }
-        });
-        quote! {
-            const MOTORS: &'static [&'static str] = &[#(#names),*];
-
-            #[inline]
-            fn motor_torques(&self, t: f64, y: &[f64; #n], __out: &mut [f64]) {
-                #(#calls)*
-            }
-        }
+        crate::lang::rotor::motor_methods(self.motors.iter().map(|(path, _)| path), n)
     }
 
     /// The wrench functions called and their sum resolved into its four parts, if `reads`

@@ -18,6 +18,9 @@ use crate::lang::syntax::{Item, KeyValue, Parsed};
 use crate::lang::units::Dim;
 
 mod checks;
+mod motors;
+
+pub use motors::motor_methods;
 
 pub use checks::{InertiaAbout, check_tokens, literal_driven_inertia};
 

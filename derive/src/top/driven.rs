@@ -9,8 +9,7 @@ use precess_core::rigid::{AngleSequence, DrivenRotor, Rotor, total_momentum};
 use precess_core::sym::{Arena, ExprId};
 use precess_core::top::{DrivenDerivation, TopScene};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote, quote_spanned};
-use syn::spanned::Spanned;
+use quote::{format_ident, quote};
 
 use super::charts::{ChartArms, momenta_tokens};
 use super::check::TopSettings;
@@ -71,34 +70,9 @@ impl DrivenInputs {
         }
     }
 
-    /// `MOTORS` and `motor_torques` of `impl TopDynamics<N>`: each motor function first bound
-    /// to the documented fn pointer type, spanned on its path, so a function of another
-    /// signature is one error there.
+    /// `MOTORS` and `motor_torques` of `impl TopDynamics<N>`.
     fn motor_methods(&self) -> TokenStream {
-        let n = self.state_len();
-        let names = self
-            .motors
-            .iter()
-            .map(|path| quote!(#path).to_string().replace(' ', ""));
-        let calls = self.motors.iter().enumerate().map(|(k, path)| {
-            let bind = quote_spanned! {path.span()=>
-                let __motor: fn(&Self, f64, &[f64]) -> f64 = #path;
-            };
-            quote! {
-                #bind
-                if let ::core::option::Option::Some(__o) = __out.get_mut(#k) {
-                    *__o = __motor(self, t, state);
-                }
-            }
-        });
-        quote! {
-            const MOTORS: &'static [&'static str] = &[#(#names),*];
-
-            #[inline]
-            fn motor_torques(&self, t: f64, state: &[f64; #n], __out: &mut [f64]) {
-                #(#calls)*
-            }
-        }
+        crate::lang::rotor::motor_methods(self.motors.iter(), self.state_len())
     }
 }
 
