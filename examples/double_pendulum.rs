@@ -26,8 +26,8 @@ mod common;
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use precess::mechanism::MechanismDynamics;
 use precess::animate;
+use precess::mechanism::MechanismDynamics;
 use precess::ode::{AdaptiveConfig, Dop853, Trajectory};
 
 const G: f64 = 9.81;

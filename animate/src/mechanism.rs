@@ -110,12 +110,18 @@ pub fn mechanism<M: MechanismPoses<N>, const N: usize, St: MechanismSample<N>>(
                 triangles: bars,
             });
         }
-        let name = poses.first().and_then(|p| p.get(k)).map_or("link", |p| p.name);
+        let name = poses
+            .first()
+            .and_then(|p| p.get(k))
+            .map_or("link", |p| p.name);
         let samples = times.iter().zip(&poses).map(|(t, p)| (*t, node_at(p, k)));
         animation.add_body(name, groups, samples)?;
     }
     for k in 0..links {
-        let name = poses.first().and_then(|p| p.get(k)).map_or("link", |p| p.name);
+        let name = poses
+            .first()
+            .and_then(|p| p.get(k))
+            .map_or("link", |p| p.name);
         let groups = vec![Group {
             colour: PIVOT,
             triangles: ball.clone(),
@@ -167,8 +173,9 @@ fn bar(to: Vector3<f64>, radius: f64) -> Vec<Tri> {
     if !(length > 1e-9 * radius) {
         return Vec::new();
     }
-    let turn = UnitQuaternion::rotation_between(&Vector3::z(), &to)
-        .unwrap_or_else(|| UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI));
+    let turn = UnitQuaternion::rotation_between(&Vector3::z(), &to).unwrap_or_else(|| {
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
+    });
     geometry::tube(0.0, radius, 0.0, length)
         .into_iter()
         .map(|t| t.map(|p| (turn * Vector3::from(p)).into()))

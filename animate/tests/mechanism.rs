@@ -79,7 +79,11 @@ fn a_3d_chain_s_poses_equal_the_product_of_its_joint_rotations() {
     let mut rng = Lcg(11);
     let skew = Unit::new_normalize(Vector3::new(1.0, 1.0, 0.0));
     for _ in 0..50 {
-        let q = [rng.next(-4.0, 4.0), rng.next(-4.0, 4.0), rng.next(-4.0, 4.0)];
+        let q = [
+            rng.next(-4.0, 4.0),
+            rng.next(-4.0, 4.0),
+            rng.next(-4.0, 4.0),
+        ];
         let r0 = Rotation3::from_axis_angle(&Vector3::z_axis(), q[0]);
         let r1 = r0 * Rotation3::from_axis_angle(&skew, q[1]);
         let r2 = r1 * Rotation3::from_axis_angle(&Vector3::y_axis(), q[2]);
@@ -102,7 +106,10 @@ fn a_3d_chain_s_poses_equal_the_product_of_its_joint_rotations() {
         assert_relative_eq!(orthogonal, Matrix3::identity(), epsilon = 1e-14);
     }
     let parts = Chain.link_parts();
-    assert_eq!(parts.iter().map(|d| d.parts.len()).collect::<Vec<_>>(), [1, 1, 1]);
+    assert_eq!(
+        parts.iter().map(|d| d.parts.len()).collect::<Vec<_>>(),
+        [1, 1, 1]
+    );
     assert_eq!(parts[2].parts[0].at, [0.0, 0.0, -0.1]);
 }
 
@@ -157,5 +164,8 @@ fn a_non_finite_coordinate_is_a_typed_error() {
         r
     };
     let err = animate::mechanism::<_, 2, _>(&p, &short, Options::default()).unwrap_err();
-    assert!(matches!(err, animate::AnimateError::NonFinite { index: 0, .. }), "{err}");
+    assert!(
+        matches!(err, animate::AnimateError::NonFinite { index: 0, .. }),
+        "{err}"
+    );
 }

@@ -55,7 +55,8 @@ fn swinging() -> Animation {
     let mut run = Trajectory::new(vec![]);
     for k in 0..=100 {
         let t = 0.02 * k as f64;
-        run.push(t, [(3.0 * t).sin(), 2.0 * t, 0.0, 0.0], &[]).unwrap();
+        run.push(t, [(3.0 * t).sin(), 2.0 * t, 0.0, 0.0], &[])
+            .unwrap();
     }
     animate::mechanism(&Swing, &run, Options::default()).unwrap()
 }

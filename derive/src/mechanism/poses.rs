@@ -43,7 +43,12 @@ pub(super) fn expand(
         outputs.extend(kin.rotation.iter().flatten());
         outputs.extend(kin.origin);
         outputs.extend(kin.center);
-        outputs.extend(joint_point(arena, &body.joint.parent, &body.joint.at, &kinematics));
+        outputs.extend(joint_point(
+            arena,
+            &body.joint.parent,
+            &body.joint.at,
+            &kinematics,
+        ));
     }
     let names: Vec<LitStr> = scene
         .bodies
@@ -58,7 +63,7 @@ pub(super) fn expand(
             let (origin, rest) = rest.split_at(3);
             let (center, joint) = rest.split_at(3);
             quote! {
-                ::precess::mechanism::LinkPose {
+                #p::LinkPose {
                     name: #name,
                     rotation: #p::Matrix3::new(#(#r),*),
                     origin: #p::Vector3::new(#(#origin),*),
@@ -76,8 +81,8 @@ pub(super) fn expand(
     quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
-        impl ::precess::mechanism::MechanismPoses<#n> for #ident {
-            fn link_poses(&self, q: &[f64; #n]) -> #p::vec::Vec<::precess::mechanism::LinkPose> {
+        impl #p::MechanismPoses<#n> for #ident {
+            fn link_poses(&self, q: &[f64; #n]) -> #p::vec::Vec<#p::LinkPose> {
                 let t = 0.0_f64;
                 let qdot = q;
                 #poses
