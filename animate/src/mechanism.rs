@@ -170,7 +170,8 @@ fn node_at(poses: &[LinkPose], k: usize) -> Pose {
 /// A thin cylinder of `radius` from the origin to `to`, none when `to` is the origin.
 fn bar(to: Vector3<f64>, radius: f64) -> Vec<Tri> {
     let length = to.norm();
-    if !(length > 1e-9 * radius) {
+    // Also none for a NaN length (`part_groups` has refused a non-finite part already).
+    if length.is_nan() || length <= 1e-9 * radius {
         return Vec::new();
     }
     let turn = UnitQuaternion::rotation_between(&Vector3::z(), &to).unwrap_or_else(|| {
