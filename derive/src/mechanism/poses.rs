@@ -83,6 +83,7 @@ pub(super) fn expand(
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::MechanismPoses<#n> for #ident {
             fn link_poses(&self, q: &[f64; #n]) -> #p::vec::Vec<#p::LinkPose> {
+                // `Method::body` reads q, q̇ and t by these names; poses depend on q alone.
                 let t = 0.0_f64;
                 let qdot = q;
                 #poses
