@@ -101,6 +101,7 @@ pub mod prelude {
     pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
+        MechanismPoses,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::rigid::{AngleSequence, ChartConfig, ChartError};
@@ -129,8 +130,8 @@ pub mod __private {
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
-        ChartSet, ChartedDynamics, MechanismDynamics, MechanismError, check_axis,
-        check_universal_axes,
+        ChartSet, ChartedDynamics, LinkPose, MechanismDynamics, MechanismError, MechanismPoses,
+        check_axis, check_universal_axes,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::nalgebra::{SMatrix, SVector};

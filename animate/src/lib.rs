@@ -3,7 +3,7 @@
 //! and a self-contained HTML page that plays it (the facade's `animate` feature, used as
 //! `precess::animate`; `docs/animation.md`).
 //!
-//! - [`top`], [`contact`] and [`free`] turn a scene's run into an [`Animation`] in one call;
+//! - [`top`], [`contact`], [`free`] and [`mechanism`] turn a scene's run into an [`Animation`] in one call;
 //!   [`Animation`] with [`part_groups`] builds any other by hand from [`Pose`]s.
 //! - [`Animation::to_glb`] writes the `.glb` that Blender, three.js and any glTF viewer play:
 //!   each part a mesh in its colour (its two halves in the colour and its complement, so a
@@ -53,6 +53,7 @@ mod free;
 mod geometry;
 pub mod glb;
 mod gltf;
+mod mechanism;
 mod page;
 mod parts;
 mod scenes;
@@ -61,6 +62,7 @@ pub use animation::{Animation, PIVOT, Pose, TABLE};
 pub use error::AnimateError;
 pub use free::{FreeSample, free};
 pub use gltf::{Keyframes, Z_UP_TO_Y_UP};
+pub use mechanism::{BAR, MechanismSample, link_node, mechanism};
 pub use page::{BACKGROUND, Camera, PageTable, page, write_page};
 pub use parts::{Group, PALETTE, Rgb, body_size, complement, part_groups};
 pub use scenes::{Options, TRACE, TableState, contact, surface_groups, top};

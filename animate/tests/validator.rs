@@ -1,6 +1,6 @@
 //! The `.glb` files through the Khronos glTF validator (npm's `gltf-validator`, run by node):
-//! a top with every kind of part, the tippe top on its table, and a free body flying. No errors
-//! and no warnings.
+//! a top with every kind of part, the tippe top on its table, a free body flying, and a
+//! double pendulum swinging. No errors and no warnings.
 //! Skips, saying why, without node or the package.
 
 mod support;
@@ -38,6 +38,27 @@ fn falling_brick() -> Animation {
         run.push(t, state, &[]).unwrap();
     }
     animate::free(&Brick, &run, Options::default()).unwrap()
+}
+
+/// A double pendulum whose lower link is a rod with a ball (bars, joints, parts, a trace).
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1,
+       parts(particle(mass = 1.0, at = [0.0, 0.0, -0.5])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.5]), q = theta2,
+       parts(rod(mass = 0.2, length = 0.4, axis = z, at = [0.0, 0.0, -0.2]),
+             sphere(mass = 0.5, radius = 0.05, at = [0.0, 0.0, -0.4])))]
+struct Swing;
+
+/// The double pendulum swinging (written down, not integrated).
+fn swinging() -> Animation {
+    let mut run = Trajectory::new(vec![]);
+    for k in 0..=100 {
+        let t = 0.02 * k as f64;
+        run.push(t, [(3.0 * t).sin(), 2.0 * t, 0.0, 0.0], &[])
+            .unwrap();
+    }
+    animate::mechanism(&Swing, &run, Options::default()).unwrap()
 }
 
 /// The validator's package folder: `PRECESS_GLTF_VALIDATOR` if set, else
@@ -207,6 +228,7 @@ fn the_khronos_validator_finds_no_error_and_no_warning() {
         ("every_part", every_part()),
         ("tippe_top", tippe),
         ("free_body", falling_brick()),
+        ("double_pendulum", swinging()),
     ];
     for (name, animation) in animations {
         let (errors, warnings, report) = validate(&dir, name, &animation.to_glb().unwrap());

@@ -54,6 +54,7 @@ mod mechanism {
     mod kane;
     mod parameters;
     mod pendulum;
+    mod poses;
     mod recursive;
     mod rolling;
     mod timing;

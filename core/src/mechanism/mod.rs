@@ -16,6 +16,8 @@
 //!   generic O(n) reference the benchmarks compare against.
 //! - [`charts`]: spherical joints through gimbal lock, [`ChartedMechanism`] switching each
 //!   joint between its declared sequence and the partner (ZXZ ↔ ZYX).
+//! - [`MechanismPoses`] (derived) gives each link's [`LinkPose`] at q and its declared parts,
+//!   what `precess::animate::mechanism` draws.
 //! - [`MechanismQuantities`] gives a run's trajectory the energy, its kinetic and potential
 //!   parts, the power and every generalised momentum per sample, named as a top's.
 //! - [`rolling`]: bodies whose wheels roll without slip on a floor (nonholonomic rows, the
@@ -40,6 +42,7 @@ mod dynamics;
 mod error;
 mod interpreted;
 mod kinematics;
+mod poses;
 mod quantities;
 pub mod rolling;
 mod routes;
@@ -55,6 +58,7 @@ pub use dynamics::{MechanismDynamics, split_state};
 pub use error::MechanismError;
 pub use interpreted::MechanismModel;
 pub use kinematics::{BodyKinematics, MAX_LAGRANGIAN};
+pub use poses::{LinkPose, MechanismPoses};
 pub use quantities::MechanismQuantities;
 pub use routes::aba::MechanismAba;
 pub use routes::recursive;

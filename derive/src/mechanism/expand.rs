@@ -156,6 +156,7 @@ pub fn expand(
     let consts = coordinate_consts(checked, "q and q̇ (and of q̈)");
     let check_parameters = super::parameters::method(&low, arena, checked);
     let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
+    let poses = super::poses::expand(cx, ident, arena, &method, checked, &derivation);
     let route_name = derivation.route.name();
     let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
         .map(|k| {
@@ -236,6 +237,8 @@ pub fn expand(
                     .map_err(#p::MechanismError::into_ode_error)
             }
         }
+
+        #poses
 
         #charts
     })

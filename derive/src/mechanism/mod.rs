@@ -16,6 +16,7 @@ mod jacobian;
 mod joint;
 mod loads;
 mod parameters;
+mod poses;
 mod rolling;
 mod tree;
 mod variational;

@@ -153,7 +153,7 @@ pub fn expand(ex: &mut Expansion, checked: &CheckedBody) -> Option<TokenStream> 
 }
 
 /// The description as a run-time value, each value an expression of the fields.
-fn description(
+pub(crate) fn description(
     low: &Lowering,
     arena: &mut Arena,
     description: &Description<ExprId>,

@@ -229,3 +229,31 @@ pub fn accelerations(m: &NumMechanism, q: &[f64], qd: &[f64]) -> Vec<f64> {
     let x = mass.lu().solve(&rhs).expect("regular mass matrix");
     x.iter().copied().collect()
 }
+
+/// Each body's frame at q, in body order: (R_b, o_b), its axes to ground axes and its
+/// origin, by the same one-coordinate links as [`inverse_dynamics`] (a joint's intermediate
+/// links carry no body), each link's rotation the product of its parent's and the
+/// elementary or axis-angle turn of its own coordinate.
+pub fn body_frames(m: &NumMechanism, q: &[f64]) -> Vec<(Matrix3<f64>, Vector3<f64>)> {
+    let links = links(m);
+    let mut frames: Vec<(Matrix3<f64>, Vector3<f64>)> = Vec::with_capacity(links.len());
+    let mut bodies = vec![(Matrix3::identity(), Vector3::zeros()); m.bodies.len()];
+    for l in &links {
+        let (r_p, o_p) = l
+            .parent
+            .map_or((Matrix3::identity(), Vector3::zeros()), |p| frames[p]);
+        let qi = q[l.coordinate];
+        let frame = match l.motion {
+            Motion::Turn => (
+                r_p * Rotation3::from_axis_angle(&l.axis, qi).into_inner(),
+                o_p + r_p * l.at,
+            ),
+            Motion::Slide => (r_p, o_p + r_p * (l.at + l.axis.into_inner() * qi)),
+        };
+        if let Some(b) = l.body {
+            bodies[b] = frame;
+        }
+        frames.push(frame);
+    }
+    bodies
+}
