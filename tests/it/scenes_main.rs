@@ -97,6 +97,7 @@ mod contact {
 /// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
 mod rolling_once {
     mod accelerations;
+    mod poses;
     mod run;
     mod scenes;
     mod support;

@@ -156,7 +156,7 @@ pub fn expand(
     let consts = coordinate_consts(checked, "q and q̇ (and of q̈)");
     let check_parameters = super::parameters::method(&low, arena, checked);
     let jacobian = super::jacobian::method(&method, arena, checked, &derivation);
-    let poses = super::poses::expand(cx, ident, arena, &method, checked, &derivation);
+    let poses = super::poses::expand(cx, ident, arena, &method, checked, &derivation.coordinates);
     let route_name = derivation.route.name();
     let (q_of_y, qdot_of_y): (Vec<TokenStream>, Vec<TokenStream>) = (0..n)
         .map(|k| {

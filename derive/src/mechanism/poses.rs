@@ -2,7 +2,8 @@
 //! derivation's own kinematics lowered to straight-line code, and each link's declared parts
 //! as a run-time description (what `precess::animate::mechanism` draws).
 
-use precess_core::mechanism::{BodyKinematics, MechanismDerivation, Parent};
+use precess_core::lagrange::Coordinates;
+use precess_core::mechanism::{BodyKinematics, Parent};
 use precess_core::sym::mat3::mat_vec;
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -25,12 +26,12 @@ pub(super) fn expand(
     arena: &mut Arena,
     method: &Method,
     checked: &CheckedMechanism,
-    derivation: &MechanismDerivation,
+    coordinates: &Coordinates,
 ) -> TokenStream {
     let scene = &checked.scene;
     let kinematics = scene
         .validate(arena)
-        .and_then(|order| scene.kinematics(arena, &order, &derivation.coordinates));
+        .and_then(|order| scene.kinematics(arena, &order, coordinates));
     let kinematics = match kinematics {
         Ok(k) => k,
         Err(e) => {
@@ -56,7 +57,7 @@ pub(super) fn expand(
         .map(|b| LitStr::new(&b.name, ident.span()))
         .collect();
     let p = Private;
-    let n = derivation.coordinates.q.len();
+    let n = coordinates.q.len();
     let poses = method.body(arena, &outputs, |o| {
         let links = o.chunks(PER_LINK).zip(&names).map(|(v, name)| {
             let (r, rest) = v.split_at(9);

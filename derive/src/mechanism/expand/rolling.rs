@@ -143,6 +143,9 @@ pub(super) fn expand(
          `model.rolling_system::<{{{ident}::STATE}}>()` is the ODE system over it."
     );
     let check_parameters = super::super::parameters::method(&low, arena, checked);
+    // The links' poses at q, as the tree mechanisms give them (`precess::animate::mechanism`
+    // draws a rolling mechanism from them): q is the first n slots of the rolling state.
+    let poses = super::super::poses::expand(cx, ident, arena, &method, checked, coords);
     Some(quote! {
         #[automatically_derived]
         impl #ident {
@@ -201,6 +204,7 @@ pub(super) fn expand(
 
             #check_parameters
         }
+        #poses
     })
 }
 
