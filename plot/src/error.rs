@@ -127,7 +127,9 @@ pub enum PlotError {
         available: String,
     },
     /// A map's grid has no rows, or its first row has no cells.
-    #[error("the map's grid is empty ({rows} rows, {columns} cells in the first): a map needs at least one cell")]
+    #[error(
+        "the map's grid is empty ({rows} rows, {columns} cells in the first): a map needs at least one cell"
+    )]
     EmptyGrid {
         /// The number of rows.
         rows: usize,

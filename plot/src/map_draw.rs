@@ -93,7 +93,10 @@ fn draw_cells(
     colours: (f64, f64),
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (xs, ys) = (map.x.cell_edges(grid.nx), map.y.cell_edges(grid.ny));
-    let ((x0, x1), (y0, y1)) = (shown(map.x.edges, map.x.scale), shown(map.y.edges, map.y.scale));
+    let ((x0, x1), (y0, y1)) = (
+        shown(map.x.edges, map.x.scale),
+        shown(map.y.edges, map.y.scale),
+    );
     let mut builder = ChartBuilder::on(area);
     builder
         .caption(map.title.as_str(), ("sans-serif", 22))
@@ -104,7 +107,10 @@ fn draw_cells(
     let cell = |k: usize| {
         let (ix, iy) = (k % grid.nx, k / grid.nx);
         let colour = ramp(fraction(grid.values[k], colours, scale));
-        Rectangle::new([(xs[ix], ys[iy]), (xs[ix + 1], ys[iy + 1])], colour.filled())
+        Rectangle::new(
+            [(xs[ix], ys[iy]), (xs[ix + 1], ys[iy + 1])],
+            colour.filled(),
+        )
     };
     // Each combination of linear and logarithmic axes is its own coordinate type.
     macro_rules! draw {
@@ -151,7 +157,10 @@ fn draw_bar(
         Scale::Log => lo * (hi / lo).powf(f),
     };
     let step = |k: usize| {
-        let (a, b) = (k as f64 / BAR_STEPS as f64, (k + 1) as f64 / BAR_STEPS as f64);
+        let (a, b) = (
+            k as f64 / BAR_STEPS as f64,
+            (k + 1) as f64 / BAR_STEPS as f64,
+        );
         Rectangle::new([(0.0, at(a)), (1.0, at(b))], ramp((a + b) / 2.0).filled())
     };
     macro_rules! draw {

@@ -92,9 +92,11 @@ pub fn with_unit(label: &str, unit: &str) -> String {
 /// (with their unit when they share one).
 pub(crate) fn columns_label(names: &[&str]) -> String {
     let units: Vec<Option<&str>> = names.iter().map(|n| unit_of(n)).collect();
-    let shared = units.first().copied().flatten().filter(|u| {
-        units.iter().all(|v| *v == Some(*u))
-    });
+    let shared = units
+        .first()
+        .copied()
+        .flatten()
+        .filter(|u| units.iter().all(|v| *v == Some(*u)));
     match shared {
         Some(unit) if names.len() <= 3 => with_unit(&names.join(", "), unit),
         Some(unit) => with_unit("value", unit),
@@ -117,7 +119,10 @@ mod tests {
         assert_eq!(columns_label(&["theta", "phi"]), "theta, phi (rad)");
         assert_eq!(columns_label(&["x", "energy"]), "x (m), energy (J)");
         assert_eq!(columns_label(&["y0", "energy"]), "y0, energy (J)");
-        assert_eq!(columns_label(&["L_x", "L_y", "L_z", "L"]), "value (kg·m²/s)");
+        assert_eq!(
+            columns_label(&["L_x", "L_y", "L_z", "L"]),
+            "value (kg·m²/s)"
+        );
         assert_eq!(columns_label(&["a", "b", "c", "d"]), "value");
         assert_eq!(unit_of("x_dot"), Some("m/s"));
         assert_eq!(unit_of("p_x"), Some("kg·m/s"));

@@ -183,7 +183,10 @@ fn a_phase_portrait_draws_q_against_q_dot() {
     )
     .expect("drawn");
     let svg = read(&path);
-    assert!(texts_of(&svg, &["Phase portrait", "v against x", "x (m)", "v"]));
+    assert!(texts_of(
+        &svg,
+        &["Phase portrait", "v against x", "x (m)", "v"]
+    ));
     let long: Vec<usize> = polylines(&svg).into_iter().filter(|&k| k > 2).collect();
     assert_eq!(long, [trajectory.len()]);
     // The circle x² + v² = 1: both axes run from −1.1 to 1.1, the x ticks inside.

@@ -5,8 +5,9 @@
 //! enum's own variants, so a user's `match` names them as it names every other refusal of the
 //! scene; the rule behind them is written once in [`crate::rigid`]
 //! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
-//! the top, as is the conversion to the integrators' error ([`FreeError::into_ode_error`]). (Wrapping one shared rotor error instead would have made the match two levels
-//! deep, and the derive's generated checks build these variants by name.)
+//! the top, as are their messages and the conversion to the integrators' error
+//! ([`FreeError::into_ode_error`]). (Wrapping one shared rotor error instead would have made the
+//! match two levels deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 

@@ -49,7 +49,9 @@ fn cells(svg: &str) -> Vec<Rect> {
 
 /// A map with x on a log axis over four decades, y linear, the value i + j.
 fn four_decades(nx: usize, ny: usize, value: impl Fn(usize, usize) -> f64) -> Vec<Vec<f64>> {
-    (0..ny).map(|j| (0..nx).map(|i| value(i, j)).collect()).collect()
+    (0..ny)
+        .map(|j| (0..nx).map(|i| value(i, j)).collect())
+        .collect()
 }
 
 fn damping_map() -> Map {
@@ -98,7 +100,13 @@ fn a_map_has_one_cell_per_value_a_colour_bar_and_its_units() {
 
 #[test]
 fn nan_cells_are_grey_and_counted() {
-    let rows = four_decades(5, 4, |i, j| if (i + j) % 3 == 0 { f64::NAN } else { 1.0 + i as f64 });
+    let rows = four_decades(5, 4, |i, j| {
+        if (i + j) % 3 == 0 {
+            f64::NAN
+        } else {
+            1.0 + i as f64
+        }
+    });
     let nan = rows.iter().flatten().filter(|v| v.is_nan()).count();
     assert_eq!(nan, 7);
     let path = plot::map(dir("map").join("nan.svg"), &damping_map(), &rows).expect("drawn");
@@ -110,7 +118,9 @@ fn nan_cells_are_grey_and_counted() {
 
 #[test]
 fn a_log_colour_bar_is_ticked_at_decades() {
-    let rows = four_decades(6, 6, |i, j| 10f64.powi(i as i32 - 2) * (1.0 + j as f64 / 10.0));
+    let rows = four_decades(6, 6, |i, j| {
+        10f64.powi(i as i32 - 2) * (1.0 + j as f64 / 10.0)
+    });
     let map = Map {
         colour: ColourBar::new("rate", "1/s").log(),
         ..damping_map()
@@ -119,7 +129,10 @@ fn a_log_colour_bar_is_ticked_at_decades() {
     let texts = texts(&svg);
     // The cells span 10⁻² … 1.5·10³: the bar's decades 0.01 … 1000 each get a tick.
     for decade in ["0.01", "0.1", "1", "10", "100", "1000"] {
-        assert!(texts.iter().filter(|t| *t == decade).count() >= 1, "{decade} in {texts:?}");
+        assert!(
+            texts.iter().filter(|t| *t == decade).count() >= 1,
+            "{decade} in {texts:?}"
+        );
     }
     assert!(texts.iter().any(|t| t == "rate (1/s)"));
 }
@@ -131,18 +144,36 @@ fn a_map_refuses_ragged_empty_and_undrawable_grids() {
     let empty: [Vec<f64>; 0] = [];
     assert!(matches!(
         plot::map(path, &map, &empty),
-        Err(PlotError::EmptyGrid { rows: 0, columns: 0 })
+        Err(PlotError::EmptyGrid {
+            rows: 0,
+            columns: 0
+        })
     ));
     assert!(matches!(
         plot::map(path, &map, &[Vec::<f64>::new()]),
-        Err(PlotError::EmptyGrid { rows: 1, columns: 0 })
+        Err(PlotError::EmptyGrid {
+            rows: 1,
+            columns: 0
+        })
     ));
     assert!(matches!(
-        plot::map(path, &map, &[vec![1.0, 2.0, 3.0], vec![1.0, 2.0, 3.0], vec![4.0]]),
-        Err(PlotError::RaggedGrid { row: 2, expected: 3, got: 1 })
+        plot::map(
+            path,
+            &map,
+            &[vec![1.0, 2.0, 3.0], vec![1.0, 2.0, 3.0], vec![4.0]]
+        ),
+        Err(PlotError::RaggedGrid {
+            row: 2,
+            expected: 3,
+            got: 1
+        })
     ));
     match plot::map(path, &map, &[[1.0, f64::INFINITY]]) {
-        Err(PlotError::CellOutOfRange { row: 0, column: 1, value }) => {
+        Err(PlotError::CellOutOfRange {
+            row: 0,
+            column: 1,
+            value,
+        }) => {
             assert_eq!(value, f64::INFINITY)
         }
         other => panic!("{other:?}"),
@@ -171,23 +202,43 @@ fn a_map_refuses_ranges_it_cannot_draw() {
     let bar = ColourBar::new("v", "");
     let cases = [
         (
-            with(MapAxis::log("c", "kg/s", (0.0, 10.0)), good_y.clone(), bar.clone()),
+            with(
+                MapAxis::log("c", "kg/s", (0.0, 10.0)),
+                good_y.clone(),
+                bar.clone(),
+            ),
             ("x", 0.0, 10.0, RangeFault::NotPositiveOnLog),
         ),
         (
-            with(MapAxis::linear("c", "", (1.0, f64::NAN)), good_y.clone(), bar.clone()),
+            with(
+                MapAxis::linear("c", "", (1.0, f64::NAN)),
+                good_y.clone(),
+                bar.clone(),
+            ),
             ("x", 1.0, f64::NAN, RangeFault::NotFinite),
         ),
         (
-            with(good_y.clone(), MapAxis::linear("y", "", (2.0, 2.0)), bar.clone()),
+            with(
+                good_y.clone(),
+                MapAxis::linear("y", "", (2.0, 2.0)),
+                bar.clone(),
+            ),
             ("y", 2.0, 2.0, RangeFault::NotIncreasing),
         ),
         (
-            with(good_y.clone(), good_y.clone(), bar.clone().range(0.0, f64::INFINITY)),
+            with(
+                good_y.clone(),
+                good_y.clone(),
+                bar.clone().range(0.0, f64::INFINITY),
+            ),
             ("colour bar", 0.0, f64::INFINITY, RangeFault::NotFinite),
         ),
         (
-            with(good_y.clone(), good_y.clone(), bar.clone().log().range(-1.0, 1.0)),
+            with(
+                good_y.clone(),
+                good_y.clone(),
+                bar.clone().log().range(-1.0, 1.0),
+            ),
             ("colour bar", -1.0, 1.0, RangeFault::NotPositiveOnLog),
         ),
     ];
@@ -200,7 +251,10 @@ fn a_map_refuses_ranges_it_cannot_draw() {
                 fault: g,
             }) => {
                 assert_eq!((a, g), (axis, fault));
-                assert!(f.total_cmp(&from).is_eq() && t.total_cmp(&to).is_eq(), "{f} {t}");
+                assert!(
+                    f.total_cmp(&from).is_eq() && t.total_cmp(&to).is_eq(),
+                    "{f} {t}"
+                );
             }
             other => panic!("{axis}: {other:?}"),
         }
@@ -212,8 +266,7 @@ fn trajectory_axes_carry_the_units_of_their_columns() {
     let trajectory = oscillator();
     let d = dir("units");
     let svg = read(
-        &plot::trajectory(d.join("x.svg"), "ẍ = −x", &trajectory, &["x", "energy"])
-            .expect("drawn"),
+        &plot::trajectory(d.join("x.svg"), "ẍ = −x", &trajectory, &["x", "energy"]).expect("drawn"),
     );
     let texts = texts(&svg);
     for label in ["t (s)", "x (m), energy (J)"] {
