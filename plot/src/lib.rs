@@ -1,6 +1,6 @@
 //! Figures from the library: a trajectory against time, a phase portrait, a work–precision
-//! plot, a heat map over two parameters, one call each, written as SVG (plotters' SVG backend), the crate behind the facade's `plot` feature
-//! (`precess::plot`).
+//! plot, a heat map over two parameters, one call each, written as SVG (plotters' SVG
+//! backend); the crate behind the facade's `plot` feature (`precess::plot`).
 //!
 //! | call | draws |
 //! | --- | --- |
