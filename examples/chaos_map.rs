@@ -28,8 +28,6 @@
 #[path = "common/chaos.rs"]
 mod chaos;
 mod common;
-#[path = "common/maps.rs"]
-mod maps;
 #[path = "common/shards.rs"]
 mod shards;
 
@@ -39,8 +37,8 @@ use std::time::Instant;
 
 use chaos::{ASYMMETRIC, KOVALEVSKAYA, LAGRANGE, Map, TORQUE_FREE};
 use common::Table;
-use maps::{Grid, HeatLabels, heat_map};
 use precess::ensemble::{Ensemble, EnsembleProgress, rayon};
+use precess::plot::{self, ColourBar, MapAxis};
 use shards::{parse_shard, shard};
 
 /// The default map: 48 tilts × 36 spins, each run averaged over 100 time units (above
@@ -291,24 +289,19 @@ fn draw(map: &Map, lambda: &[f64], regular: f64, dir: &Path) -> Result<(), Box<d
         map.runs(),
         map.duration
     );
-    let path = heat_map(
-        dir,
-        "chaos_map.svg",
-        &HeatLabels {
-            title: &title,
-            x: "initial tilt θ0 of the figure axis [rad]",
-            y: "initial spin ω3 about the figure axis [rad/s]",
-            value: "λ₁ [1/s]",
+    let figure = plot::Map {
+        title,
+        x: MapAxis::linear("initial tilt θ0 of the figure axis", "rad", map.theta),
+        y: MapAxis::linear("initial spin ω3 about the figure axis", "rad/s", map.spin),
+        // From 0, so that the colour reads λ₁ itself (unless no run has a positive one).
+        colour: match ColourBar::new("λ₁", "1/s") {
+            bar if top > 0.0 => bar.range(0.0, top),
+            bar => bar,
         },
-        &Grid {
-            nx: map.nx,
-            ny: map.ny,
-            x_range: map.theta,
-            y_range: map.spin,
-            values: lambda,
-        },
-        (0.0, top),
-    )?;
+    };
+    // Row j of the runs is spin j, lowest first, as the map's rows run.
+    let rows: Vec<&[f64]> = lambda.chunks(map.nx).collect();
+    let path = plot::map(dir.join("chaos_map.svg"), &figure, &rows)?;
     println!("  figure: {}", path.display());
     Ok(())
 }

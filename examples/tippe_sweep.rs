@@ -30,8 +30,6 @@
 //! is the integration's error.
 
 mod common;
-#[path = "common/maps.rs"]
-mod maps;
 #[path = "common/tippe.rs"]
 mod tippe;
 
@@ -40,12 +38,12 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use common::Table;
-use maps::{Grid, HeatLabels, heat_map};
 use precess::contact::{
     ContactDynamics, ContactError, ContactOutcome, ContactRun, Phase, STATE_LEN,
 };
 use precess::ensemble::{Ensemble, EnsembleProgress, rayon};
 use precess::ode::{AdaptiveConfig, HybridState, OdeError, Stats, Stepper};
+use precess::plot::{self, ColourBar, Map, MapAxis};
 use tippe::{Top, axis_up};
 
 /// The friction coefficients c [kg/s], evenly spaced (the tippe_top example's 0.1 inside).
@@ -358,24 +356,21 @@ fn main() -> Result<(), Box<dyn Error>> {
         .copied()
         .filter(|t| t.is_finite())
         .fold(0.0, f64::max);
-    let path = heat_map(
-        &args.dir,
-        "tippe_sweep.svg",
-        &HeatLabels {
-            title: "Tippe top: time to turn over (grey: not within 25 s)",
-            x: "initial spin n (rad/s)",
-            y: "viscous friction c (kg/s)",
-            value: "inversion time (s)",
+    // From 0, so that the colour reads the time itself (unless no top turned over).
+    let colour = ColourBar::new("inversion time", "s");
+    let figure = Map {
+        title: "Tippe top: time to turn over (grey: not within 25 s)".into(),
+        x: MapAxis::linear("initial spin n", "rad/s", SPIN),
+        y: MapAxis::linear("viscous friction c", "kg/s", FRICTION),
+        colour: if hi > 0.0 {
+            colour.range(0.0, hi)
+        } else {
+            colour
         },
-        &Grid {
-            nx: sweep.nn,
-            ny: sweep.nc,
-            x_range: SPIN,
-            y_range: FRICTION,
-            values: &map,
-        },
-        (0.0, hi),
-    )?;
+    };
+    // Row j of the runs is friction j, lowest first, as the map's rows run.
+    let rows: Vec<&[f64]> = map.chunks(sweep.nn).collect();
+    let path = plot::map(args.dir.join("tippe_sweep.svg"), &figure, &rows)?;
     println!("\nfigure: {}", path.display());
     Ok(())
 }

@@ -1,5 +1,5 @@
 //! What can stop a figure from being drawn: the data (empty, ragged, non-finite, not positive
-//! on a logarithmic axis), a column name, or the file.
+//! on a logarithmic axis), a map's grid or ranges, a column name, or the file.
 
 use std::fmt;
 use std::path::PathBuf;
@@ -20,6 +20,34 @@ impl fmt::Display for Coordinate {
         f.write_str(match self {
             Coordinate::X => "x",
             Coordinate::Y => "y",
+        })
+    }
+}
+
+/// What is wrong with an axis's range (a map's parameter axis or its colour bar).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RangeFault {
+    /// An end is NaN or infinite.
+    NotFinite,
+    /// The range does not increase (`from ≥ to`).
+    NotIncreasing,
+    /// An end is zero or negative, and the axis is logarithmic.
+    NotPositiveOnLog,
+    /// An end is beyond ±10³⁰⁰, or outside 10⁻¹⁰⁰..=10¹⁰⁰ on a logarithmic axis.
+    OutOfRange,
+}
+
+impl fmt::Display for RangeFault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            RangeFault::NotFinite => "an end is not finite",
+            RangeFault::NotIncreasing => "it does not increase (give from < to)",
+            RangeFault::NotPositiveOnLog => {
+                "an end is not positive, and the axis is logarithmic (only values > 0 can be drawn there)"
+            }
+            RangeFault::OutOfRange => {
+                "an end is out of range (|v| ≤ 1e300, and 1e-100 ≤ v ≤ 1e100 on a logarithmic axis)"
+            }
         })
     }
 }
@@ -97,6 +125,65 @@ pub enum PlotError {
         name: String,
         /// The trajectory's state columns and quantities, comma-separated.
         available: String,
+    },
+    /// A map's grid has no rows, or its first row has no cells.
+    #[error(
+        "the map's grid is empty ({rows} rows, {columns} cells in the first): a map needs at least one cell"
+    )]
+    EmptyGrid {
+        /// The number of rows.
+        rows: usize,
+        /// The number of cells in the first row (0 when there is no row).
+        columns: usize,
+    },
+    /// A row of a map's grid is not as long as the first.
+    #[error("row {row} of the map's grid has {got} cells where row 0 has {expected}")]
+    RaggedGrid {
+        /// The row's index (0 is the lowest y).
+        row: usize,
+        /// The first row's length.
+        expected: usize,
+        /// This row's length.
+        got: usize,
+    },
+    /// A cell of a map is infinite, beyond ±10³⁰⁰, or outside 10⁻¹⁰⁰..=10¹⁰⁰ on a logarithmic
+    /// colour bar (NaN is drawn: a cell without a value).
+    #[error(
+        "cell (column {column}, row {row}) of the map is {value:e}: a cell is NaN (no value) \
+         or finite with |v| ≤ 1e300 (1e-100 ≤ v ≤ 1e100 on a logarithmic colour bar)"
+    )]
+    CellOutOfRange {
+        /// The cell's row (0 is the lowest y).
+        row: usize,
+        /// The cell's column (0 is the lowest x).
+        column: usize,
+        /// The value.
+        value: f64,
+    },
+    /// A cell of a map is zero or negative, and the colour bar is logarithmic.
+    #[error(
+        "cell (column {column}, row {row}) of the map is {value}, and the colour bar is \
+         logarithmic (only values > 0, or NaN for no value, can be drawn there)"
+    )]
+    CellNotPositiveOnLog {
+        /// The cell's row (0 is the lowest y).
+        row: usize,
+        /// The cell's column (0 is the lowest x).
+        column: usize,
+        /// The value.
+        value: f64,
+    },
+    /// An axis's range cannot be drawn: a map's `x` or `y` axis, or its `colour bar`.
+    #[error("the {axis} axis runs from {from} to {to}: {fault}")]
+    InvalidRange {
+        /// `x`, `y` or `colour bar`.
+        axis: &'static str,
+        /// The range's start.
+        from: f64,
+        /// The range's end.
+        to: f64,
+        /// What is wrong with it.
+        fault: RangeFault,
     },
     /// The file or its directory could not be written.
     #[error("cannot write {}: {source}", path.display())]

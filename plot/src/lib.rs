@@ -1,6 +1,6 @@
 //! Figures from the library: a trajectory against time, a phase portrait, a work–precision
-//! plot, one call each, written as SVG (plotters' SVG backend), the crate behind the facade's `plot` feature
-//! (`precess::plot`).
+//! plot, a heat map over two parameters, one call each, written as SVG (plotters' SVG
+//! backend); the crate behind the facade's `plot` feature (`precess::plot`).
 //!
 //! | call | draws |
 //! | --- | --- |
@@ -10,6 +10,11 @@
 //! | [`phase_portrait`] | one plain column against another |
 //! | [`work_precision`] | error against time or evaluations, log–log, one line per method |
 //! | [`figure`] | any [`Series`] (lines, markers, dashed) on a [`Figure`]'s axes |
+//! | [`map`] | a value over a grid of two parameters (linear or log₁₀ axes) with its colour bar |
+//!
+//! Axes carry units: a trajectory's columns are labelled with the unit their name has by the
+//! scenes' conventions ([`unit_of`]: `theta (rad)`, `energy (J)`, `t (s)`), a map's axes and
+//! colour bar with the unit they are given ([`with_unit`]).
 //!
 //! Every call checks its data first and returns a [`PlotError`] naming the series, the index
 //! and the value that cannot be drawn; the axes span the data with the margin of
@@ -35,17 +40,23 @@
 mod axes;
 mod error;
 mod figure;
+mod map;
+mod map_draw;
 mod phase;
 mod series;
+mod units;
 mod work_precision;
 
 use std::path::{Path, PathBuf};
 
 pub use axes::{Scale, axis_range, tick_label};
-pub use error::{Coordinate, PlotError};
+pub use error::{Coordinate, PlotError, RangeFault};
 pub use figure::{Figure, SIZE, Series, Style, figure};
+pub use map::{ColourBar, Map, MapAxis, map};
+pub use map_draw::MAP_SIZE;
 pub use phase::{phase_portrait, trajectory_phase_portrait};
 pub use series::{time_series, trajectory};
+pub use units::{unit_of, with_unit};
 pub use work_precision::{Work, work_precision};
 
 /// Where a figure given as a bare file name is written (relative to the working directory,

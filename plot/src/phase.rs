@@ -4,11 +4,13 @@ use std::path::{Path, PathBuf};
 
 use super::error::PlotError;
 use super::figure::{Figure, Series, figure};
+use super::units::columns_label;
 use precess_core::ode::{StateColumns, Trajectory};
 
 /// Draws `y` against `x` (each `(name, values)`) as one line, in sample order, to `path` (see
 /// [`figure`](super::figure) for where), and returns the path written. The axes are labelled
-/// with the names; the legend reads `y against x`.
+/// with the names and their units as [`unit_of`](super::unit_of) knows them (`theta (rad)`);
+/// the legend reads `y against x`.
 ///
 /// # Errors
 /// [`PlotError::EmptySeries`] for an empty `x`, [`PlotError::LengthMismatch`] for a `y` not
@@ -46,7 +48,7 @@ pub fn phase_portrait(
     let points = x.iter().copied().zip(y.iter().copied()).collect();
     figure(
         path,
-        &Figure::new(title).axes(x_name, y_name),
+        &Figure::new(title).axes(columns_label(&[x_name]), columns_label(&[y_name])),
         &[Series::line(format!("{y_name} against {x_name}"), points)],
     )
 }

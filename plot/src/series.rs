@@ -9,8 +9,11 @@ use precess_core::ode::{StateColumns, Trajectory};
 /// Draws each column `(name, values)` against the times `t`, one line per column, to `path`
 /// (see [`figure`](super::figure) for where), and returns the path written.
 ///
-/// The x axis is labelled `t`, the y axis with the columns' names (up to three; else
-/// `value`); the legend names each column.
+/// The x axis is labelled `t (s)` (precess's times are in seconds), the y axis with the
+/// columns' names and their units as [`unit_of`](super::unit_of) knows them (`theta, phi
+/// (rad)`, `x (m), energy (J)`; up to three names, else `value`); the legend names each
+/// column. A name the table does not know keeps its own spelling, so a column named
+/// `q1 (m)` carries its unit in.
 ///
 /// # Errors
 /// [`PlotError::NoSeries`] for no columns, [`PlotError::EmptySeries`] for an empty `t`,
@@ -48,13 +51,10 @@ pub fn time_series(
         super::figure::check("t", super::Coordinate::X, index, v, super::Scale::Linear)?;
     }
     let series = super::paired(t, columns, Style::Line)?;
-    // The names themselves while they fit on the axis.
-    let y_label = if columns.len() <= 3 {
-        columns.iter().map(|c| c.0).collect::<Vec<_>>().join(", ")
-    } else {
-        "value".to_string()
-    };
-    figure(path, &Figure::new(title).axes("t", y_label), &series)
+    let names: Vec<&str> = columns.iter().map(|c| c.0).collect();
+    let x_label = super::with_unit("t", super::unit_of("t").unwrap_or(""));
+    let axes = Figure::new(title).axes(x_label, super::units::columns_label(&names));
+    figure(path, &axes, &series)
 }
 
 /// Draws the columns `names` of `trajectory` against its times: state columns (named as the

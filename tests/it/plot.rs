@@ -2,6 +2,9 @@
 //! one polyline per line series with one point per sample, markers per point, tick labels
 //! inside the axis range; and each error with the numbers it carries.
 
+/// `plot::map` and the units of axis labels.
+mod map;
+
 use std::path::{Path, PathBuf};
 
 use precess::ode::{AdaptiveConfig, Dop853, FnSystem, Run, Trajectory};
@@ -91,7 +94,7 @@ fn a_time_series_has_its_title_legend_and_one_point_per_sample() {
     assert_eq!(path, dir("series").join("sub/dir/ab.svg"));
     let svg = read(&path);
     let texts = texts(&svg);
-    for expected in ["Two columns", "alpha", "beta", "t", "alpha, beta"] {
+    for expected in ["Two columns", "alpha", "beta", "t (s)", "alpha, beta"] {
         assert!(
             texts.iter().any(|s| s == expected),
             "{expected} in {texts:?}"
@@ -180,7 +183,10 @@ fn a_phase_portrait_draws_q_against_q_dot() {
     )
     .expect("drawn");
     let svg = read(&path);
-    assert!(texts_of(&svg, &["Phase portrait", "v against x", "x", "v"]));
+    assert!(texts_of(
+        &svg,
+        &["Phase portrait", "v against x", "x (m)", "v"]
+    ));
     let long: Vec<usize> = polylines(&svg).into_iter().filter(|&k| k > 2).collect();
     assert_eq!(long, [trajectory.len()]);
     // The circle x² + v² = 1: both axes run from −1.1 to 1.1, the x ticks inside.

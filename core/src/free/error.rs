@@ -5,16 +5,17 @@
 //! enum's own variants, so a user's `match` names them as it names every other refusal of the
 //! scene; the rule behind them is written once in [`crate::rigid`]
 //! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
-//! the top. (Wrapping one shared rotor error instead would have made the match two levels
-//! deep, and the derive's generated checks build these variants by name.)
+//! the top, as are their messages and the conversion to the integrators' error
+//! ([`FreeError::into_ode_error`]). (Wrapping one shared rotor error instead would have made the
+//! match two levels deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 
 use crate::body::BodyError;
 use crate::codegen::BindingError;
 use crate::exact::ExactError;
-use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::{motor_input_error, rotor_quantity};
+use crate::ode::OdeError;
+use crate::rigid::refusal::{Refusal, invalid_rotor, non_finite_motor, scene_ode_error};
 
 /// Why a free body could not be derived, set up, integrated or answered.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -80,15 +81,13 @@ pub enum FreeError {
     },
     /// A rotor's axial moment is not finite and positive, or its axis not finite and
     /// non-zero, for the current field values: the rule literals meet at compile time.
-    #[error(
-        "rotor {rotor}: its inertia must be finite and > 0 and its axis finite and non-zero: inertia = {inertia}, |axis| = {axis_norm}"
-    )]
+    #[error("{}", invalid_rotor(*.rotor, *.inertia, *.axis_norm))]
     InvalidRotor {
-        /// The rotor's index, in the order declared.
+        /// The rotor's index, counted as [`FreeError::ZeroRotorAxis`] counts it.
         rotor: usize,
-        /// Its axial moment of inertia.
+        /// Its axial moment of inertia J (kg·m²).
         inertia: f64,
-        /// The length of its axis.
+        /// The length |â| of its axis as given.
         axis_norm: f64,
     },
     /// With driven rotors, the body's inertia once its driven wheels turn freely,
@@ -139,9 +138,7 @@ pub enum FreeError {
     Body(#[from] BodyError),
     /// A driven rotor's motor function returned NaN or ±∞: checked by a run's stepper when
     /// f is not finite ([`FreeDynamics::check_motors`](super::FreeDynamics::check_motors)).
-    #[error(
-        "the motor `{motor}` of {rotor} returned {value} at t = {t}: a motor's torque must be finite"
-    )]
+    #[error("{}", non_finite_motor(.rotor, .motor, *.t, *.value))]
     NonFiniteMotor {
         /// The driven rotor, by its name in
         /// [`FreeDynamics::DRIVEN_ROTORS`](super::FreeDynamics::DRIVEN_ROTORS) (`rotor_k`).
@@ -163,56 +160,64 @@ pub enum FreeError {
 
 impl FreeError {
     /// This refusal as the integrators report it, from
-    /// [`System::check_parameters`](crate::ode::System::check_parameters):
-    /// [`OdeError::InvalidSystemParameter`] naming the parameter or the body's quantity with
-    /// its value and this error's message ([`FreeError::Ode`] is passed on as it is, and
-    /// [`FreeError::NonFiniteMotor`] becomes [`OdeError::NonFiniteInput`] naming the motor); a
-    /// [`FreeError::NonFiniteWrench`] is named `wrench: <part>` with its first component
-    /// that is not finite.
+    /// [`System::check_parameters`](crate::ode::System::check_parameters), as every rigid
+    /// scene reports its own ([`crate::rigid`] holds the shared conversion): a bad parameter, coefficient or inertia is [`OdeError::InvalidSystemParameter`] naming it
+    /// with its value and this error's message ([`FreeError::Ode`] is passed on,
+    /// [`FreeError::NonFiniteMotor`] names the motor in [`OdeError::NonFiniteInput`]); a
+    /// [`FreeError::NonFiniteWrench`] is named `wrench: <part>` with its first component that
+    /// is not finite.
     ///
     /// ```
     /// use precess::free::FreeError;
     /// use precess::ode::OdeError;
-    /// let e = FreeError::NegativeCoefficient { name: "drag", value: -0.1 }.into_ode_error();
+    /// let wrench = FreeError::NonFiniteWrench { part: "torque", values: [0.0, f64::NAN, 1.0] };
+    /// let drag = FreeError::NegativeCoefficient { name: "drag", value: -0.1 };
+    /// match drag.into_ode_error() {
+    ///     OdeError::InvalidSystemParameter { quantity, value, .. } => {
+    ///         assert_eq!((quantity.as_str(), value), ("drag", -0.1))
+    ///     }
+    ///     other => panic!("{other:?}"),
+    /// }
     /// assert!(matches!(
-    ///     e,
-    ///     OdeError::InvalidSystemParameter { ref quantity, value, .. } if quantity == "drag" && value == -0.1
+    ///     wrench.into_ode_error(),
+    ///     OdeError::InvalidSystemParameter { quantity, value, .. } if quantity == "wrench: torque" && value.is_nan()
     /// ));
     /// ```
     pub fn into_ode_error(self) -> OdeError {
-        let named = match &self {
-            FreeError::Ode(e) => return e.clone(),
+        // The variants in the order the enum declares them.
+        let refusal = match &self {
+            FreeError::NonFiniteParameter { name, value } => Refusal::named(name, *value),
+            // The wrench's part and its first component that is not finite: what a user
+            // looks for in their force function.
+            FreeError::NonFiniteWrench { part, values } => {
+                let bad = values.iter().copied().find(|c| !c.is_finite());
+                Refusal::Named(format!("wrench: {part}"), bad.unwrap_or(f64::NAN))
+            }
+            FreeError::InvalidInertia { mass, moments } => {
+                if mass.is_finite() && *mass > 0.0 {
+                    let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
+                    Refusal::named("principal moment", smallest)
+                } else {
+                    Refusal::named("mass", *mass)
+                }
+            }
+            FreeError::InvalidRotor {
+                inertia, axis_norm, ..
+            } => Refusal::Rotor(*inertia, *axis_norm),
+            FreeError::DrivenInertia { smallest, .. } => Refusal::DrivenInertia(*smallest),
+            FreeError::NegativeCoefficient { name, value } => Refusal::named(name, *value),
+            FreeError::Binding(b) => Refusal::Binding(b),
+            FreeError::Body(b) => Refusal::Body(b),
             FreeError::NonFiniteMotor {
                 rotor,
                 motor,
                 t,
                 value,
-            } => return motor_input_error(rotor, motor, *t, *value),
-            FreeError::Body(b) => body_quantity(b),
-            FreeError::Binding(b) => binding_quantity(b),
-            FreeError::NonFiniteParameter { name, value } => (name.clone(), *value),
-            FreeError::NegativeCoefficient { name, value } => ((*name).to_owned(), *value),
-            FreeError::InvalidInertia { mass, moments } => {
-                if mass.is_finite() && *mass > 0.0 {
-                    let smallest = moments.iter().copied().fold(f64::INFINITY, f64::min);
-                    ("principal moment".to_owned(), smallest)
-                } else {
-                    ("mass".to_owned(), *mass)
-                }
-            }
-            FreeError::InvalidRotor {
-                inertia, axis_norm, ..
-            } => rotor_quantity(*inertia, *axis_norm),
-            // The wrench's part and its first component that is not finite: what a user
-            // looks for in their force function.
-            FreeError::NonFiniteWrench { part, values } => {
-                let bad = values.iter().copied().find(|c| !c.is_finite());
-                (format!("wrench: {part}"), bad.unwrap_or(f64::NAN))
-            }
-            FreeError::DrivenInertia { smallest, .. } => ("rotor inertia".to_owned(), *smallest),
-            _ => ("parameters".to_owned(), f64::NAN),
+            } => Refusal::Motor(rotor, motor, *t, *value),
+            FreeError::Ode(e) => Refusal::Ode(e),
+            _ => Refusal::named("parameters", f64::NAN),
         };
-        refused(named, &self)
+        scene_ode_error(refusal, &self)
     }
 }
 

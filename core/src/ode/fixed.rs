@@ -62,6 +62,53 @@ impl StepGrid {
     }
 }
 
+/// The [`Stepper`] accessors of a fixed-step stepper whose clock is its fields `t`, `y`,
+/// `t_prev` and `stats` ([`FixedStepper`] and [`Rk4`](super::Rk4)), written once; invoked
+/// inside the `impl Stepper` as `fixed_step_clock!(State)`.
+macro_rules! fixed_step_clock {
+    ($state:ty) => {
+        fn t(&self) -> f64 {
+            self.t
+        }
+
+        fn state(&self) -> &$state {
+            &self.y
+        }
+
+        fn stats(&self) -> $crate::ode::Stats {
+            self.stats
+        }
+
+        fn step_start(&self) -> f64 {
+            self.t_prev
+        }
+    };
+}
+pub(crate) use fixed_step_clock;
+
+/// [`Switchable::switch`](super::Switchable::switch) of a fixed-step stepper: the time and
+/// `check` refuse a bad `(t, state)` before the system changes, so that a refused switch
+/// leaves the stepper and its system as they were; then `change` is applied to `system`
+/// and the stepper restarts at `(t, state)`, which checks the changed system. A fixed step
+/// has no size to choose, so a fresh start is the same as a continued one.
+///
+/// # Errors
+/// [`OdeError::NonFiniteTime`], `check`'s refusal, then [`Stepper::restart`]'s.
+pub(crate) fn switch_fixed<T: Stepper, Sy>(
+    stepper: &mut T,
+    (t, state): (f64, T::State),
+    check: impl FnOnce(&T, &T::State) -> Result<(), OdeError>,
+    system: impl FnOnce(&mut T) -> &mut Sy,
+    change: &mut dyn FnMut(&mut Sy),
+) -> Result<(), OdeError> {
+    if !t.is_finite() {
+        return Err(OdeError::NonFiniteTime { t });
+    }
+    check(stepper, &state)?;
+    change(system(stepper));
+    stepper.restart(t, state)
+}
+
 /// One step of a fixed-step method on its own state, for [`FixedStepper`].
 ///
 /// The rigid-body splittings implement it (`FreeBodySplitting`, `PotentialSplitting` on
@@ -182,21 +229,12 @@ impl<M: FixedStepMethod> FixedStepper<M> {
     }
 }
 
+/// Its stats count the steps taken; the splittings evaluate no right-hand side, so
+/// `rhs_evals` stays 0.
 impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
     type State = M::State;
 
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn state(&self) -> &M::State {
-        &self.y
-    }
-
-    /// Steps taken; the splittings evaluate no right-hand side, so `rhs_evals` stays 0.
-    fn stats(&self) -> Stats {
-        self.stats
-    }
+    fixed_step_clock!(M::State);
 
     fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
         let Some((h, t_new)) = StepGrid::next(&mut self.grid, &self.cfg, self.t, t_limit)? else {
@@ -210,10 +248,6 @@ impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
         self.t = t_new;
         self.stats.steps += 1;
         Ok(())
-    }
-
-    fn step_start(&self) -> f64 {
-        self.t_prev
     }
 
     fn state_at(&mut self, t: f64) -> Result<M::State, OdeError> {
@@ -250,7 +284,7 @@ impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
         &self.method
     }
 
-    /// A fixed-step method has no step size to choose: `fresh` changes nothing.
+    /// As [`switch_fixed`]: the state checked by the method, then the method changed.
     fn switch(
         &mut self,
         t: f64,
@@ -258,9 +292,8 @@ impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
         _fresh: bool,
         change: &mut dyn FnMut(&mut M),
     ) -> Result<(), OdeError> {
-        self.method.check_state(&state)?;
-        change(&mut self.method);
-        self.restart(t, state)
+        let check = |s: &Self, y: &M::State| s.method.check_state(y);
+        switch_fixed(self, (t, state), check, |s| &mut s.method, change)
     }
 }
 
@@ -285,5 +318,42 @@ pub(crate) fn check_inside(t: f64, t_prev: f64, t_now: f64) -> Result<(), OdeErr
         Ok(())
     } else {
         Err(OdeError::OutsideLastStep { t, t_prev, t_now })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::Switchable;
+    use super::*;
+
+    /// y' = −k y, advanced exactly.
+    struct Decay {
+        k: f64,
+    }
+
+    impl FixedStepMethod for Decay {
+        type State = f64;
+        fn advance(&self, _t: f64, y: &mut f64, h: f64) -> Result<(), OdeError> {
+            *y *= (-self.k * h).exp();
+            Ok(())
+        }
+    }
+
+    /// A switch refused for its time leaves the method as it was: the time is checked
+    /// before the change is applied, not after (which changed the method and then refused).
+    #[test]
+    fn a_switch_refused_for_its_time_changes_nothing() {
+        let cfg = FixedStepConfig::with_step(0.25);
+        let mut s = FixedStepper::new(Decay { k: 1.0 }, 0.0, 1.0, cfg).expect("a valid start");
+        let e = s.switch(f64::NAN, 1.0, false, &mut |m: &mut Decay| m.k = 2.0);
+        assert!(
+            matches!(e, Err(OdeError::NonFiniteTime { t }) if t.is_nan()),
+            "{e:?}"
+        );
+        assert_eq!(s.system().k, 1.0);
+        // A good switch changes it and restarts there.
+        s.switch(0.5, 2.0, false, &mut |m: &mut Decay| m.k = 2.0)
+            .expect("a finite switch");
+        assert_eq!((s.system().k, s.t(), *s.state()), (2.0, 0.5, 2.0));
     }
 }

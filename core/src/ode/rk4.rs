@@ -2,7 +2,7 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::fixed::{StepGrid, check_inside, two_sum};
+use super::fixed::{StepGrid, check_inside, fixed_step_clock, switch_fixed, two_sum};
 use super::stepper::Stepper;
 use super::system::{Stats, System, all_finite, non_finite};
 
@@ -228,17 +228,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
 impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
     type State = [f64; N];
 
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn state(&self) -> &[f64; N] {
-        &self.y
-    }
-
-    fn stats(&self) -> Stats {
-        self.stats
-    }
+    fixed_step_clock!([f64; N]);
 
     fn step(&mut self, t_limit: f64) -> Result<(), OdeError> {
         let Some((h, t_new)) = StepGrid::next(&mut self.grid, &self.cfg, self.t, t_limit)? else {
@@ -255,10 +245,6 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
         (self.t, self.y, self.y_lo) = (t_new, y_new, lo_new);
         self.stats.steps += 1;
         Ok(())
-    }
-
-    fn step_start(&self) -> f64 {
-        self.t_prev
     }
 
     fn state_at(&mut self, t: f64) -> Result<[f64; N], OdeError> {
@@ -302,7 +288,7 @@ impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
         &self.sys
     }
 
-    /// A fixed-step method has no step size to choose: `fresh` changes nothing.
+    /// As [`switch_fixed`]: the state checked to be finite, then the system changed.
     fn switch(
         &mut self,
         t: f64,
@@ -310,9 +296,7 @@ impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
         _fresh: bool,
         change: &mut dyn FnMut(&mut S),
     ) -> Result<(), OdeError> {
-        check_span(t, t)?;
-        check_finite(&state)?;
-        change(&mut self.sys);
-        Stepper::restart(self, t, state)
+        let check = |_: &Self, y: &[f64; N]| check_finite(y);
+        switch_fixed(self, (t, state), check, |s| &mut s.sys, change)
     }
 }

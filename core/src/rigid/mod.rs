@@ -14,6 +14,7 @@ mod kinematics;
 mod lie;
 mod projection;
 mod quaternion_expr;
+pub(crate) mod refusal;
 mod rkmk4;
 mod rotor;
 mod splitting;

@@ -5,15 +5,17 @@
 //! enum's own variants, so a user's `match` names them as it names every other refusal of the
 //! scene; the rule behind them is written once in [`crate::rigid`]
 //! ([`crate::rigid::check_driven_inertia`], [`crate::rigid::rotor_quantity`]) and shared with
-//! the free body. (Wrapping one shared rotor error instead would have made the match two levels
-//! deep, and the derive's generated checks build these variants by name.)
+//! the free body, as are their messages and the conversion to the integrators' error
+//! ([`TopError::into_ode_error`]). (Wrapping one shared rotor error instead would have made the
+//! match two levels deep, and the derive's generated checks build these variants by name.)
 
 use thiserror::Error;
 
 use crate::body::BodyError;
 use crate::codegen::BindingError;
-use crate::ode::{OdeError, binding_quantity, body_quantity, refused};
-use crate::rigid::{ChartError, motor_input_error, rotor_quantity};
+use crate::ode::OdeError;
+use crate::rigid::ChartError;
+use crate::rigid::refusal::{Refusal, invalid_rotor, non_finite_motor, scene_ode_error};
 
 use super::theory::TheoryError;
 
@@ -71,9 +73,7 @@ pub enum TopError {
     },
     /// A rotor's axial moment is not finite and positive, or its axis not finite and
     /// non-zero, for the current field values: the rule literals meet at compile time.
-    #[error(
-        "rotor {rotor}: its inertia must be finite and > 0 and its axis finite and non-zero: inertia = {inertia}, |axis| = {axis_norm}"
-    )]
+    #[error("{}", invalid_rotor(*.rotor, *.inertia, *.axis_norm))]
     InvalidRotor {
         /// The rotor's index, in the order declared.
         rotor: usize,
@@ -98,9 +98,7 @@ pub enum TopError {
     /// A driven rotor's motor function returned NaN or ±∞: checked by the methods that call
     /// the motors ([`super::TopDynamics::accelerations_in`], and a run's stepper when f is
     /// not finite).
-    #[error(
-        "the motor `{motor}` of {rotor} returned {value} at t = {t}: a motor's torque must be finite"
-    )]
+    #[error("{}", non_finite_motor(.rotor, .motor, *.t, *.value))]
     NonFiniteMotor {
         /// The driven rotor, by its name in [`super::TopDynamics::DRIVEN_ROTORS`] (`rotor_j`).
         rotor: &'static str,
@@ -177,40 +175,43 @@ pub enum TopError {
 
 impl TopError {
     /// This refusal as the integrators report it, from
-    /// [`System::check_parameters`](crate::ode::System::check_parameters):
-    /// [`OdeError::InvalidSystemParameter`] naming the setting or the body's quantity with
-    /// its value and this error's message ([`TopError::Ode`] is passed on as it is, and
-    /// [`TopError::NonFiniteMotor`] becomes [`OdeError::NonFiniteInput`] naming the motor).
+    /// [`System::check_parameters`](crate::ode::System::check_parameters): a bad setting
+    /// (`gravity`, `damping`, a parameter) is [`OdeError::InvalidSystemParameter`] naming it
+    /// with its value and this error's message; [`TopError::Ode`] is passed on as it is,
+    /// [`TopError::NonFiniteMotor`] becomes [`OdeError::NonFiniteInput`] naming the motor, and
+    /// the body's, a binding's and a rotor's refusals are named as the free body names them.
     ///
     /// ```
     /// use precess::ode::OdeError;
     /// use precess::top::TopError;
     /// let e = TopError::NegativeGravity { value: -9.81 }.into_ode_error();
-    /// assert!(matches!(
-    ///     e,
-    ///     OdeError::InvalidSystemParameter { ref quantity, value, .. } if quantity == "gravity" && value == -9.81
-    /// ));
+    /// let OdeError::InvalidSystemParameter { quantity, value, message } = e else {
+    ///     panic!("{e:?}");
+    /// };
+    /// assert_eq!((quantity.as_str(), value), ("gravity", -9.81));
+    /// assert_eq!(message, TopError::NegativeGravity { value: -9.81 }.to_string());
     /// ```
     pub fn into_ode_error(self) -> OdeError {
-        let named = match &self {
-            TopError::Ode(e) => return e.clone(),
+        // The variants in the order the enum declares them.
+        let refusal = match &self {
+            TopError::NonFiniteParameter { parameter, value } => Refusal::named(parameter, *value),
+            TopError::NegativeGravity { value } => Refusal::named("gravity", *value),
+            TopError::NegativeDamping { value } => Refusal::named("damping", *value),
+            TopError::InvalidRotor {
+                inertia, axis_norm, ..
+            } => Refusal::Rotor(*inertia, *axis_norm),
+            TopError::DrivenInertia { smallest, .. } => Refusal::DrivenInertia(*smallest),
             TopError::NonFiniteMotor {
                 rotor,
                 motor,
                 t,
                 value,
-            } => return motor_input_error(rotor, motor, *t, *value),
-            TopError::Body(b) => body_quantity(b),
-            TopError::Binding(b) => binding_quantity(b),
-            TopError::NonFiniteParameter { parameter, value } => ((*parameter).to_owned(), *value),
-            TopError::NegativeGravity { value } => ("gravity".to_owned(), *value),
-            TopError::NegativeDamping { value } => ("damping".to_owned(), *value),
-            TopError::InvalidRotor {
-                inertia, axis_norm, ..
-            } => rotor_quantity(*inertia, *axis_norm),
-            TopError::DrivenInertia { smallest, .. } => ("rotor inertia".to_owned(), *smallest),
-            _ => ("parameters".to_owned(), f64::NAN),
+            } => Refusal::Motor(rotor, motor, *t, *value),
+            TopError::Body(b) => Refusal::Body(b),
+            TopError::Binding(b) => Refusal::Binding(b),
+            TopError::Ode(e) => Refusal::Ode(e),
+            _ => Refusal::named("parameters", f64::NAN),
         };
-        refused(named, &self)
+        scene_ode_error(refusal, &self)
     }
 }
