@@ -86,15 +86,17 @@ macro_rules! fixed_step_clock {
 }
 pub(crate) use fixed_step_clock;
 
-/// [`Switchable::switch`](super::Switchable::switch) of a fixed-step stepper: the time and
+/// [`Switchable::switch`](super::Switchable::switch) of a stepper whose fresh start and
+/// continued start are the same (the fixed-step methods, RK4, the Taylor integrator): the time and
 /// `check` refuse a bad `(t, state)` before the system changes, so that a refused switch
 /// leaves the stepper and its system as they were; then `change` is applied to `system`
 /// and the stepper restarts at `(t, state)`, which checks the changed system. A fixed step
-/// has no size to choose, so a fresh start is the same as a continued one.
+/// has no size to choose, and the Taylor integrator chooses each from its jet, so for them a
+/// fresh start is the same as a continued one.
 ///
 /// # Errors
 /// [`OdeError::NonFiniteTime`], `check`'s refusal, then [`Stepper::restart`]'s.
-pub(crate) fn switch_fixed<T: Stepper, Sy>(
+pub(crate) fn switch_by_restart<T: Stepper, Sy>(
     stepper: &mut T,
     (t, state): (f64, T::State),
     check: impl FnOnce(&T, &T::State) -> Result<(), OdeError>,
@@ -284,7 +286,7 @@ impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
         &self.method
     }
 
-    /// As [`switch_fixed`]: the state checked by the method, then the method changed.
+    /// As [`switch_by_restart`]: the state checked by the method, then the method changed.
     fn switch(
         &mut self,
         t: f64,
@@ -293,7 +295,7 @@ impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
         change: &mut dyn FnMut(&mut M),
     ) -> Result<(), OdeError> {
         let check = |s: &Self, y: &M::State| s.method.check_state(y);
-        switch_fixed(self, (t, state), check, |s| &mut s.method, change)
+        switch_by_restart(self, (t, state), check, |s| &mut s.method, change)
     }
 }
 

@@ -36,6 +36,7 @@ mod trajectory;
 
 pub use adaptive::Adaptive;
 pub(crate) use config::check_tolerances;
+pub(crate) use fixed::switch_by_restart;
 pub use config::{AdaptiveConfig, FixedStepConfig};
 pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};

@@ -2,7 +2,7 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::fixed::{StepGrid, check_inside, fixed_step_clock, switch_fixed, two_sum};
+use super::fixed::{StepGrid, check_inside, fixed_step_clock, switch_by_restart, two_sum};
 use super::stepper::Stepper;
 use super::system::{Stats, System, all_finite, non_finite};
 
@@ -288,7 +288,7 @@ impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
         &self.sys
     }
 
-    /// As [`switch_fixed`]: the state checked to be finite, then the system changed.
+    /// As [`switch_by_restart`]: the state checked to be finite, then the system changed.
     fn switch(
         &mut self,
         t: f64,
@@ -297,6 +297,6 @@ impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
         change: &mut dyn FnMut(&mut S),
     ) -> Result<(), OdeError> {
         let check = |_: &Self, y: &[f64; N]| check_finite(y);
-        switch_fixed(self, (t, state), check, |s| &mut s.sys, change)
+        switch_by_restart(self, (t, state), check, |s| &mut s.sys, change)
     }
 }

@@ -3,6 +3,7 @@
 
 use super::{Taylor, TaylorConfig};
 use crate::ode::drivers::{check_sampling, check_sorted, sample, through_stops};
+use crate::ode::switch_by_restart;
 use crate::ode::{OdeError, Solution, Stats, check_span, inherent_stepper};
 use crate::taylor::TaylorSystem;
 
@@ -24,12 +25,8 @@ impl<S: TaylorSystem<N>, const N: usize> crate::ode::Switchable for Taylor<S, N>
         _fresh: bool,
         change: &mut dyn FnMut(&mut S),
     ) -> Result<(), OdeError> {
-        if !t.is_finite() {
-            return Err(OdeError::NonFiniteTime { t });
-        }
-        crate::ode::check_finite(&state)?;
-        change(self.system_mut());
-        crate::ode::Stepper::restart(self, t, state)
+        let check = |_: &Self, y: &[f64; N]| crate::ode::check_finite(y);
+        switch_by_restart(self, (t, state), check, |s| s.system_mut(), change)
     }
 }
 
