@@ -59,6 +59,7 @@ mod exact {
 }
 /// The symmetric eigensolver.
 mod linalg {
+    mod crossing;
     mod eigen;
 }
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the

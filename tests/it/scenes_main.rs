@@ -108,6 +108,7 @@ mod rolling_once {
 mod scenes {
     mod accessors;
     mod checks;
+    mod models_bicycle;
     mod quantities;
     mod theory;
 }

@@ -1,6 +1,6 @@
 //! Dense linear algebra beyond nalgebra's: eigenvalues of a general real matrix by a method
 //! that always returns, Jacobians by central differences, and the linear system about a state
-//! with its stability verdict.
+//! with its stability verdict, and where that verdict changes along a parameter.
 //!
 //! nalgebra's `complex_eigenvalues` did not return on a 6×6 top Jacobian (a defective zero
 //! eigenvalue from the cyclic coordinates); [`eigenvalues`] balances (isolating such zeros
@@ -8,11 +8,16 @@
 //! an iteration cap, so it terminates on every input.
 
 mod balance;
+mod crossing;
 mod eigen;
 mod error;
 mod jacobian;
 mod stability;
 
+pub use crossing::{
+    CROSSING_TOLERANCE, Crossing, CrossingError, find_crossing, spectral_abscissa,
+    stability_crossing,
+};
 pub use eigen::eigenvalues;
 pub use error::LinalgError;
 pub use jacobian::{JACOBIAN_STEP, jacobian};
