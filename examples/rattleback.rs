@@ -32,7 +32,6 @@ use precess::models::Rattleback;
 use precess::nalgebra::Vector3;
 use precess::ode::{AdaptiveConfig, Direction, Event, Run, StopReason};
 
-
 /// The sampling interval [s]: fine enough for the largest drifts over the run to be those of
 /// the integration, not of where it was looked at.
 const SAMPLE: f64 = 2.5e-4;

@@ -30,10 +30,10 @@ use std::time::Instant;
 use common::{Axes, Series, Table, plot, plot_dir};
 use precess::animate;
 use precess::contact::{ContactDynamics, ContactQuantities, ContactRun, Phase, attitude_of};
-use precess::nalgebra::Vector3;
-use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
 use precess::models::TippeTop as Top;
 use precess::models::tippe_top::{ALPHA, MASS, RADIUS};
+use precess::nalgebra::Vector3;
+use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let (r, alpha) = (RADIUS, ALPHA);
@@ -54,7 +54,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         .quantity("θ (deg)", |_t, s| {
             Top::axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
         })
-        .event(Event::new("axis horizontal").falling(), |_t, s| Top::axis_up(s))
+        .event(Event::new("axis horizontal").falling(), |_t, s| {
+            Top::axis_up(s)
+        })
         .integrate()?;
     if out.stop == StopReason::Halted {
         println!("the run stopped at t = {} s: {:?}", out.t, run.run().halt());

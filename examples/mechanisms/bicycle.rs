@@ -4,4 +4,6 @@
 //! tests/it/constraints (each includes this file with `#[path]`) run the very mechanism a
 //! user depends on.
 
+// The test crate that includes every example mechanism does not use this one.
+#[allow(unused_imports)]
 pub use precess::models::Bicycle;

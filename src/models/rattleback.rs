@@ -45,7 +45,11 @@ impl Rattleback {
     ///
     /// # Errors
     /// As [`ContactDynamics::rolling_state`] (a non-finite value).
-    pub fn release(&self, tilt: f64, spin: f64) -> Result<[f64; crate::contact::STATE_LEN], ContactError> {
+    pub fn release(
+        &self,
+        tilt: f64,
+        spin: f64,
+    ) -> Result<[f64; crate::contact::STATE_LEN], ContactError> {
         let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), tilt)
             * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), tilt);
         self.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, spin))

@@ -61,6 +61,7 @@ mod exact {
 mod linalg {
     mod crossing;
     mod eigen;
+    mod state_space;
 }
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
 /// linearised flow map Φ P₀ Φᵀ.

@@ -109,6 +109,7 @@ mod scenes {
     mod accessors;
     mod checks;
     mod models_bicycle;
+    mod models_state_space;
     mod quantities;
     mod theory;
 }

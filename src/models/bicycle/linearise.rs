@@ -163,7 +163,9 @@ impl Bicycle {
         self.close_contacts(&mut q)?;
         let partition = self.partition();
         let (a, _) = self.constraint_rows(&q, &[0.0; 8]);
-        let projected = partition.rates(&a, &[0.0; 3]).map_err(MechanismError::from)?;
+        let projected = partition
+            .rates(&a, &[0.0; 3])
+            .map_err(MechanismError::from)?;
         let (mass, _) = self.mass_forcing(0.0, &q, &[0.0; 8]);
         let s = projected.projection;
         let reduced: Matrix3<f64> = s.transpose() * mass * s;

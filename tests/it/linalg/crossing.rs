@@ -42,15 +42,26 @@ fn hopf_point_of_a_cubic_is_the_routh_hurwitz_boundary() {
 fn real_eigenvalue_crossing_at_a_known_parameter() {
     // diag(p² − 2, −1) with a coupling that leaves the eigenvalues alone: crosses at √2.
     let a = |p: f64| {
-        Ok::<_, Infallible>(DMatrix::from_row_slice(2, 2, &[p * p - 2.0, 5.0, 0.0, -1.0]))
+        Ok::<_, Infallible>(DMatrix::from_row_slice(
+            2,
+            2,
+            &[p * p - 2.0, 5.0, 0.0, -1.0],
+        ))
     };
     let found = stability_crossing(a, 0.0, 3.0, 1e-15).expect("crossing");
-    assert!((found.parameter - 2.0_f64.sqrt()).abs() < 4e-16 * 3.0, "{found:?}");
+    assert!(
+        (found.parameter - 2.0_f64.sqrt()).abs() < 4e-16 * 3.0,
+        "{found:?}"
+    );
 }
 
 #[test]
 fn spectral_abscissa_is_the_largest_real_part() {
-    let eig = [Complex::new(-1.0, 2.0), Complex::new(0.5, 0.0), Complex::new(-3.0, 0.0)];
+    let eig = [
+        Complex::new(-1.0, 2.0),
+        Complex::new(0.5, 0.0),
+        Complex::new(-3.0, 0.0),
+    ];
     assert_eq!(spectral_abscissa(&eig), 0.5);
     assert_eq!(spectral_abscissa(&[]), f64::NEG_INFINITY);
 }
@@ -75,7 +86,12 @@ fn no_sign_change_names_both_ends() {
 #[test]
 fn bad_brackets_tolerances_and_values_are_typed_errors() {
     let g = |p: f64| Ok::<_, CrossingError>(p - 1.0);
-    for (lo, hi) in [(2.0, 1.0), (1.0, 1.0), (f64::NAN, 1.0), (0.0, f64::INFINITY)] {
+    for (lo, hi) in [
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (f64::NAN, 1.0),
+        (0.0, f64::INFINITY),
+    ] {
         assert!(
             matches!(
                 find_crossing(g, lo, hi, 1e-12),
@@ -91,7 +107,13 @@ fn bad_brackets_tolerances_and_values_are_typed_errors() {
         ));
     }
     // NaN inside the bracket: reported with where it happened.
-    let nan_inside = |p: f64| Ok::<_, CrossingError>(if p > 0.5 && p < 1.5 { f64::NAN } else { p - 1.0 });
+    let nan_inside = |p: f64| {
+        Ok::<_, CrossingError>(if p > 0.5 && p < 1.5 {
+            f64::NAN
+        } else {
+            p - 1.0
+        })
+    };
     match find_crossing(nan_inside, 0.0, 2.0, 1e-12) {
         Err(CrossingError::NonFinite { parameter, value }) => {
             assert!(parameter > 0.5 && parameter < 1.5 && value.is_nan());
@@ -109,7 +131,10 @@ fn bad_brackets_tolerances_and_values_are_typed_errors() {
     ));
     // The model's own error, passed on.
     let failing = |p: f64| -> Result<DMatrix<f64>, LinalgError> {
-        Err(LinalgError::InvalidParameter { name: "p", value: p })
+        Err(LinalgError::InvalidParameter {
+            name: "p",
+            value: p,
+        })
     };
     assert!(matches!(
         stability_crossing(failing, 0.0, 1.0, 1e-12),

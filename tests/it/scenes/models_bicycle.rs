@@ -69,7 +69,9 @@ fn canonical_matrices_of_the_benchmark_match_the_paper() {
 fn weave_and_capsize_speeds_of_the_benchmark_match_table_2() {
     let lin = Bicycle::benchmark().canonical().expect("linearises");
     let weave = lin.stability_crossing(4.0, 5.0).expect("weave in [4, 5]");
-    let capsize = lin.stability_crossing(5.5, 7.0).expect("capsize in [5.5, 7]");
+    let capsize = lin
+        .stability_crossing(5.5, 7.0)
+        .expect("capsize in [5.5, 7]");
     let ew = ((weave.parameter - WEAVE_SPEED) / WEAVE_SPEED).abs();
     let ec = ((capsize.parameter - CAPSIZE_SPEED) / CAPSIZE_SPEED).abs();
     println!(
@@ -82,7 +84,10 @@ fn weave_and_capsize_speeds_of_the_benchmark_match_table_2() {
     let [m, c1, k0, k2] = published();
     let paper = Canonical::new(m, c1, k0, k2, 9.81).expect("valid");
     let w = paper.stability_crossing(4.0, 5.0).expect("weave").parameter;
-    let c = paper.stability_crossing(5.5, 7.0).expect("capsize").parameter;
+    let c = paper
+        .stability_crossing(5.5, 7.0)
+        .expect("capsize")
+        .parameter;
     assert!(((w - WEAVE_SPEED) / WEAVE_SPEED).abs() < 1e-12, "{w}");
     assert!(((c - CAPSIZE_SPEED) / CAPSIZE_SPEED).abs() < 1e-12, "{c}");
     // Stable between them, unstable on either side.
@@ -194,8 +199,8 @@ fn appendix_a(b: &Bicycle) -> [Matrix2<f64>; 4] {
         + b.m_b * b.z_b * b.z_b
         + b.m_h * b.z_h * b.z_h
         + b.m_f * b.r_f * b.r_f;
-    let i_txz = b.i_bxz + b.i_hxz - b.m_b * b.x_b * b.z_b - b.m_h * b.x_h * b.z_h
-        + b.m_f * b.w * b.r_f;
+    let i_txz =
+        b.i_bxz + b.i_hxz - b.m_b * b.x_b * b.z_b - b.m_h * b.x_h * b.z_h + b.m_f * b.w * b.r_f;
     // The wheels' I_zz equal their I_xx.
     let i_tzz = b.i_rxx
         + b.i_bzz
@@ -207,12 +212,9 @@ fn appendix_a(b: &Bicycle) -> [Matrix2<f64>; 4] {
     let m_a = b.m_h + b.m_f;
     let x_a = (b.x_h * b.m_h + b.w * b.m_f) / m_a;
     let z_a = (b.z_h * b.m_h - b.r_f * b.m_f) / m_a;
-    let i_axx = b.i_hxx
-        + b.i_fxx
-        + b.m_h * (b.z_h - z_a).powi(2)
-        + b.m_f * (b.r_f + z_a).powi(2);
-    let i_axz = b.i_hxz - b.m_h * (b.x_h - x_a) * (b.z_h - z_a)
-        + b.m_f * (b.w - x_a) * (b.r_f + z_a);
+    let i_axx = b.i_hxx + b.i_fxx + b.m_h * (b.z_h - z_a).powi(2) + b.m_f * (b.r_f + z_a).powi(2);
+    let i_axz =
+        b.i_hxz - b.m_h * (b.x_h - x_a) * (b.z_h - z_a) + b.m_f * (b.w - x_a) * (b.r_f + z_a);
     let i_azz = b.i_hzz + b.i_fxx + b.m_h * (b.x_h - x_a).powi(2) + b.m_f * (b.w - x_a).powi(2);
     let u_a = (x_a - b.w - b.c) * cl - z_a * sl;
     let i_all = m_a * u_a * u_a + i_axx * sl * sl + 2.0 * i_axz * sl * cl + i_azz * cl * cl;
@@ -223,7 +225,12 @@ fn appendix_a(b: &Bicycle) -> [Matrix2<f64>; 4] {
     let s_t = s_r + s_f;
     let s_a = m_a * u_a + mu * m_t * x_t;
     let m_pd = i_alx + mu * i_txz;
-    let m = Matrix2::new(i_txx, m_pd, m_pd, i_all + 2.0 * mu * i_alz + mu * mu * i_tzz);
+    let m = Matrix2::new(
+        i_txx,
+        m_pd,
+        m_pd,
+        i_all + 2.0 * mu * i_alz + mu * mu * i_tzz,
+    );
     let k0 = Matrix2::new(m_t * z_t, -s_a, -s_a, -s_a * sl);
     let k2 = Matrix2::new(
         0.0,
@@ -245,7 +252,12 @@ fn appendix_a_closed_forms_reproduce_the_published_benchmark() {
     // The test's own closed forms, checked first where the paper prints their values.
     let [m, c1, k0, k2] = appendix_a(&Bicycle::benchmark());
     let [pm, pc1, pk0, pk2] = published();
-    for (name, got, want) in [("M", m, pm), ("C1", c1, pc1), ("K0", k0, pk0), ("K2", k2, pk2)] {
+    for (name, got, want) in [
+        ("M", m, pm),
+        ("C1", c1, pc1),
+        ("K0", k0, pk0),
+        ("K2", k2, pk2),
+    ] {
         let e = worst(&got, &want);
         assert!(e < 1e-13, "appendix A's {name} off the paper by {e:e}");
     }
