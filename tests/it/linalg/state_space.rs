@@ -100,66 +100,43 @@ fn a_tilted_top_at_rest_is_not_an_operating_point() {
 
 #[test]
 fn non_finite_and_misshapen_inputs_are_typed_errors() {
-    let bad = StateSpace::from_fn(
-        euler_poisson,
-        &[0.0, 0.0, 1.0, 0.0, 0.0, f64::NAN],
-        &[0.0; 3],
-        1e-9,
+    // A NaN state, an infinite input, a zero tolerance.
+    let spinning = [0.0, 0.0, 1.0, 0.0, 0.0, 1.0];
+    let nan_state = [0.0, 0.0, 1.0, 0.0, 0.0, f64::NAN];
+    for (x0, u0, tol) in [
+        (&nan_state, [0.0; 3], 1e-9),
+        (&spinning, [f64::INFINITY, 0.0, 0.0], 1e-9),
+        (&spinning, [0.0; 3], 0.0),
+    ] {
+        let refused = StateSpace::from_fn(euler_poisson, x0, &u0, tol);
+        let typed = match &refused {
+            Err(StateSpaceError::Linalg(LinalgError::NonFinite { .. })) => tol > 0.0,
+            Err(StateSpaceError::Linalg(LinalgError::InvalidParameter { .. })) => tol == 0.0,
+            _ => false,
+        };
+        assert!(typed, "{refused:?}");
+    }
+    // One coordinate: a Jacobian block of the wrong size, then a singular mass.
+    let (one, two, zero) = (
+        DMatrix::from_element(1, 1, 1.0),
+        DMatrix::zeros(2, 2),
+        DMatrix::zeros(1, 1),
     );
-    assert!(matches!(
-        bad,
-        Err(StateSpaceError::Linalg(LinalgError::NonFinite { .. }))
-    ));
-    let bad = StateSpace::from_fn(
-        euler_poisson,
-        &[0.0, 0.0, 1.0, 0.0, 0.0, 1.0],
-        &[f64::INFINITY, 0.0, 0.0],
-        1e-9,
-    );
-    assert!(matches!(
-        bad,
-        Err(StateSpaceError::Linalg(LinalgError::NonFinite { .. }))
-    ));
-    let bad = StateSpace::from_fn(
-        euler_poisson,
-        &[0.0, 0.0, 1.0, 0.0, 0.0, 1.0],
-        &[0.0; 3],
-        0.0,
-    );
-    assert!(matches!(
-        bad,
-        Err(StateSpaceError::Linalg(
-            LinalgError::InvalidParameter { .. }
-        ))
-    ));
-    let one = DMatrix::from_element(1, 1, 1.0);
-    let two = DMatrix::zeros(2, 2);
-    let wrong = SecondOrder {
-        accelerations: &[0.0],
-        by_q: &two,
-        by_qdot: &one,
-        mass: &one,
-        inputs: &one,
-    };
-    assert!(matches!(
-        StateSpace::second_order(&wrong),
-        Err(StateSpaceError::Shape {
-            quantity: "∂q̈/∂q",
-            rows: 2,
-            ..
-        })
-    ));
-    let singular = SecondOrder {
-        accelerations: &[0.0],
-        by_q: &one,
-        by_qdot: &one,
-        mass: &DMatrix::zeros(1, 1),
-        inputs: &one,
-    };
-    assert!(matches!(
-        StateSpace::second_order(&singular),
-        Err(StateSpaceError::Linalg(
-            LinalgError::InvalidParameter { .. }
-        ))
-    ));
+    for (by_q, mass) in [(&two, &one), (&one, &zero)] {
+        let refused = StateSpace::second_order(&SecondOrder {
+            accelerations: &[0.0],
+            by_q,
+            by_qdot: &one,
+            mass,
+            inputs: &one,
+        });
+        let expected = match refused {
+            Err(StateSpaceError::Shape { quantity, rows, .. }) => quantity == "∂q̈/∂q" && rows == 2,
+            Err(StateSpaceError::Linalg(LinalgError::InvalidParameter { name, .. })) => {
+                name == "mass matrix determinant"
+            }
+            _ => false,
+        };
+        assert!(expected, "{refused:?}");
+    }
 }

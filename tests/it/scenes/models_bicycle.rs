@@ -11,16 +11,24 @@ use precess::nalgebra::Matrix2;
 /// Largest entrywise error, relative where the reference entry is nonzero and absolute
 /// where it is 0.
 fn worst(got: &Matrix2<f64>, want: &Matrix2<f64>) -> f64 {
-    got.iter()
-        .zip(want.iter())
-        .map(|(g, w)| {
-            if *w == 0.0 {
-                g.abs()
-            } else {
-                ((g - w) / w).abs()
-            }
-        })
-        .fold(0.0, f64::max)
+    got.zip_map(want, |g, w| {
+        ((g - w) / if w == 0.0 { 1.0 } else { w }).abs()
+    })
+    .max()
+}
+
+/// The four matrices' worst errors against `reference` (M, C₁, K₀, K₂), printed, each
+/// below `limit`.
+fn assert_close(lin: &Canonical, reference: &[Matrix2<f64>; 4], limit: f64, against: &str) {
+    let got = [&lin.m, &lin.c1, &lin.k0, &lin.k2];
+    let errors: Vec<(&str, f64)> = ["M", "C1", "K0", "K2"]
+        .into_iter()
+        .zip(got.iter().zip(reference).map(|(g, w)| worst(g, w)))
+        .collect();
+    println!("against {against}: {errors:?}");
+    for (name, e) in errors {
+        assert!(e < limit, "{name} off {against} by {e:e}");
+    }
 }
 
 /// Meijaard et al. (2007), eq. 5.3–5.6, as printed.
@@ -50,18 +58,8 @@ const CAPSIZE_SPEED: f64 = 6.02426201538837;
 #[test]
 fn canonical_matrices_of_the_benchmark_match_the_paper() {
     let lin = Bicycle::benchmark().canonical().expect("linearises");
-    let [m, c1, k0, k2] = published();
-    let errors = [
-        ("M", worst(&lin.m, &m)),
-        ("C1", worst(&lin.c1, &c1)),
-        ("K0", worst(&lin.k0, &k0)),
-        ("K2", worst(&lin.k2, &k2)),
-    ];
-    println!("{errors:?}");
     // The paper prints 15 significant digits.
-    for (name, e) in errors {
-        assert!(e < 1e-13, "{name} off the paper by {e:e}");
-    }
+    assert_close(&lin, &published(), 1e-13, "the paper");
     assert_eq!(lin.g, 9.81);
 }
 
@@ -105,18 +103,11 @@ fn weave_and_capsize_speeds_of_the_benchmark_match_table_2() {
 fn a_range_without_a_crossing_is_a_typed_error() {
     let lin = Bicycle::benchmark().canonical().expect("linearises");
     // Stable throughout [4.5, 5.5] m/s.
-    match lin.stability_crossing(4.5, 5.5) {
-        Err(CrossingError::NoCrossing {
-            lo,
-            hi,
-            at_lo,
-            at_hi,
-        }) => {
-            assert_eq!((lo, hi), (4.5, 5.5));
-            assert!(at_lo < 0.0 && at_hi < 0.0, "{at_lo} {at_hi}");
-        }
-        other => panic!("{other:?}"),
-    }
+    let refused = lin.stability_crossing(4.5, 5.5);
+    let Err(CrossingError::NoCrossing { at_lo, at_hi, .. }) = refused else {
+        panic!("{refused:?}");
+    };
+    assert!(at_lo < 0.0 && at_hi < 0.0, "{at_lo} {at_hi}");
     assert!(matches!(
         lin.stability_crossing(5.0, f64::NAN),
         Err(CrossingError::InvalidBracket { .. })
@@ -191,24 +182,24 @@ fn appendix_a(b: &Bicycle) -> [Matrix2<f64>; 4] {
     let m_t = b.m_r + b.m_b + b.m_h + b.m_f;
     let x_t = (b.x_b * b.m_b + b.x_h * b.m_h + b.w * b.m_f) / m_t;
     let z_t = (-b.r_r * b.m_r + b.z_b * b.m_b + b.z_h * b.m_h - b.r_f * b.m_f) / m_t;
-    let i_txx = b.i_rxx
-        + b.i_bxx
-        + b.i_hxx
-        + b.i_fxx
-        + b.m_r * b.r_r * b.r_r
-        + b.m_b * b.z_b * b.z_b
-        + b.m_h * b.z_h * b.z_h
-        + b.m_f * b.r_f * b.r_f;
+    // The totals about the rear contact; the wheels' I_zz equal their I_xx.
+    let i_txx = [b.i_rxx, b.i_bxx, b.i_hxx, b.i_fxx].iter().sum::<f64>()
+        + [
+            (b.m_r, b.r_r),
+            (b.m_b, b.z_b),
+            (b.m_h, b.z_h),
+            (b.m_f, b.r_f),
+        ]
+        .iter()
+        .map(|(m, z)| m * z * z)
+        .sum::<f64>();
     let i_txz =
         b.i_bxz + b.i_hxz - b.m_b * b.x_b * b.z_b - b.m_h * b.x_h * b.z_h + b.m_f * b.w * b.r_f;
-    // The wheels' I_zz equal their I_xx.
-    let i_tzz = b.i_rxx
-        + b.i_bzz
-        + b.i_hzz
-        + b.i_fxx
-        + b.m_b * b.x_b * b.x_b
-        + b.m_h * b.x_h * b.x_h
-        + b.m_f * b.w * b.w;
+    let i_tzz = [b.i_rxx, b.i_bzz, b.i_hzz, b.i_fxx].iter().sum::<f64>()
+        + [(b.m_b, b.x_b), (b.m_h, b.x_h), (b.m_f, b.w)]
+            .iter()
+            .map(|(m, x)| m * x * x)
+            .sum::<f64>();
     let m_a = b.m_h + b.m_f;
     let x_a = (b.x_h * b.m_h + b.w * b.m_f) / m_a;
     let z_a = (b.z_h * b.m_h - b.r_f * b.m_f) / m_a;
@@ -267,17 +258,9 @@ fn appendix_a_closed_forms_reproduce_the_published_benchmark() {
 fn canonical_matrices_match_appendix_a_at_other_parameters() {
     let bike = other_bicycle();
     let lin = bike.canonical().expect("linearises");
-    let [m, c1, k0, k2] = appendix_a(&bike);
-    let errors = [
-        ("M", worst(&lin.m, &m)),
-        ("C1", worst(&lin.c1, &c1)),
-        ("K0", worst(&lin.k0, &k0)),
-        ("K2", worst(&lin.k2, &k2)),
-    ];
-    println!("{errors:?}");
-    for (name, e) in errors {
-        assert!(e < 1e-11, "{name} off appendix A by {e:e}");
-    }
+    let closed = appendix_a(&bike);
+    assert_close(&lin, &closed, 1e-11, "appendix A");
+    let [_, _, k0, k2] = closed;
     // And the capsize speed against det(g K₀ + v² K₂) = 0, linear in v² since K₂'s first
     // column is zero: v_c² = −det K₀ g² / (g (K₀₀ K₂₁₁ − K₀₁₀ K₂₀₁)).
     let g = bike.g;
