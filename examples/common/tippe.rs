@@ -5,7 +5,6 @@
 #![allow(dead_code)] // each example uses the part it needs
 
 pub use precess::models::TippeTop as Top;
-pub use precess::models::tippe_top::{ALPHA, GRAVITY, MASS, RADIUS};
 
 /// The closed forms of the same top ([`precess::models::TippeTop::theory`]).
 pub fn theory() -> precess::contact::theory::TippeTop {
