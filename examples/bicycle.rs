@@ -1,7 +1,8 @@
 //! The benchmark bicycle of Meijaard, Papadopoulos, Ruina & Schwab (Proc. R. Soc. A 463,
 //! 2007): the Carvallo–Whipple model derived nonlinear by `#[derive(Mechanism)]` at compile
-//! time (examples/mechanisms/bicycle.rs: four bodies on three massless carriers, two
-//! knife-edge wheels declared `rolls = disk(..)`), linearised about the upright straight run,
+//! time (the library's ready model `precess::models::Bicycle`: four bodies on three massless
+//! carriers, two knife-edge wheels declared `rolls = disk(..)`), linearised about the upright
+//! straight run by `Bicycle::canonical`,
 //! its eigenvalues against the forward speed, and the weave and capsize speeds that bound its
 //! self-stable range.
 //!
@@ -23,107 +24,11 @@ use std::time::Instant;
 
 use common::{Axes, Series, Table, plot};
 use precess::mechanism::rolling::split_rolling;
-use precess::nalgebra::{Matrix2, Matrix3, Matrix4};
+use precess::models::Bicycle;
+use precess::nalgebra::Matrix2;
 use precess::ode::{AdaptiveConfig, Dop853};
 use precess::prelude::*;
 use precess_testkit::bicycle::{CAPSIZE_SPEED, Linear, TABLE_2, WEAVE_SPEED};
-
-#[path = "mechanisms/bicycle.rs"]
-mod mechanism;
-use mechanism::Bicycle;
-
-/// [φ̈, δ̈] at roll φ, steer δ and their rates x, the rear wheel turning at −v / r_R, the
-/// pitch put back on the floor first.
-fn lateral(bike: &Bicycle, x: [f64; 4], v: f64) -> Result<[f64; 2], MechanismError> {
-    let mut q = [0.0; 8];
-    q[Bicycle::PHI] = x[0];
-    q[Bicycle::DELTA] = x[1];
-    bike.close_contacts(&mut q)?;
-    let (_, ud) = bike.derivative(0.0, &q, &[x[2], x[3], -v / bike.r_r])?;
-    Ok([ud[0], ud[1]])
-}
-
-/// ∂[φ̈, δ̈]/∂x_j at the upright run at speed v: for an angle, central differences
-/// Richardson-extrapolated twice (steps 10⁻², ½·10⁻², ¼·10⁻²: error O(h⁶)); for a rate, one
-/// central difference of step 1, exact since the accelerations are quadratic in the speeds.
-fn column(bike: &Bicycle, j: usize, v: f64) -> Result<[f64; 2], MechanismError> {
-    let central = |h: f64| -> Result<[f64; 2], MechanismError> {
-        let (mut xp, mut xm) = ([0.0; 4], [0.0; 4]);
-        xp[j] = h;
-        xm[j] = -h;
-        let (p, m) = (lateral(bike, xp, v)?, lateral(bike, xm, v)?);
-        Ok([(p[0] - m[0]) / (2.0 * h), (p[1] - m[1]) / (2.0 * h)])
-    };
-    if j >= 2 {
-        return central(1.0);
-    }
-    let h = 1e-2;
-    let d = [central(h)?, central(h / 2.0)?, central(h / 4.0)?];
-    Ok([0, 1].map(|i| {
-        let r1 = (4.0 * d[1][i] - d[0][i]) / 3.0;
-        let r2 = (4.0 * d[2][i] - d[1][i]) / 3.0;
-        (16.0 * r2 - r1) / 15.0
-    }))
-}
-
-/// The lower half [∂u̇/∂(φ, δ), ∂u̇/∂(φ̇, δ̇)] of the lateral state matrix at speed v.
-fn lower(bike: &Bicycle, v: f64) -> Result<(Matrix2<f64>, Matrix2<f64>), MechanismError> {
-    let c: Vec<[f64; 2]> = (0..4)
-        .map(|j| column(bike, j, v))
-        .collect::<Result<_, _>>()?;
-    Ok((
-        Matrix2::new(c[0][0], c[1][0], c[0][1], c[1][1]),
-        Matrix2::new(c[2][0], c[3][0], c[2][1], c[3][1]),
-    ))
-}
-
-/// The paper's M q̈ + v C₁ q̇ + (g K₀ + v² K₂) q = 0 from the derived bicycle: M is the
-/// lateral block of the reduced mass matrix Sᵀ M S at the upright run; u̇ = M⁻¹ r, so
-/// ∂u̇/∂q = −M⁻¹ (g K₀ + v² K₂) and ∂u̇/∂q̇ = −v M⁻¹ C₁, exactly quadratic and linear in v:
-/// the speeds 0 and 1 fix them.
-fn linearise(bike: &Bicycle) -> Result<Linear, Box<dyn Error>> {
-    let mut q = [0.0; 8];
-    bike.close_contacts(&mut q)?;
-    let partition = bike.partition();
-    let (a, _) = bike.constraint_rows(&q, &[0.0; 8]);
-    let projected = partition.rates(&a, &[0.0; 3])?;
-    let (mass, _) = bike.mass_forcing(0.0, &q, &[0.0; 8]);
-    let s = projected.projection;
-    let reduced: Matrix3<f64> = s.transpose() * mass * s;
-    let m = Matrix2::new(
-        reduced[(0, 0)],
-        reduced[(0, 1)],
-        reduced[(1, 0)],
-        reduced[(1, 1)],
-    );
-    let (p0, _) = lower(bike, 0.0)?;
-    let (p1, d1) = lower(bike, 1.0)?;
-    Ok(Linear {
-        m,
-        k0: -(m * p0) / bike.g,
-        k2: -(m * (p1 - p0)),
-        c1: -(m * d1),
-        g: bike.g,
-    })
-}
-
-/// The eigenvalues at speed v from a fresh Jacobian (no use of the structure in v).
-fn direct_eigenvalues(
-    bike: &Bicycle,
-    v: f64,
-) -> Result<Vec<precess::nalgebra::Complex<f64>>, Box<dyn Error>> {
-    let (p, d) = lower(bike, v)?;
-    let mut a = Matrix4::zeros();
-    a[(0, 2)] = 1.0;
-    a[(1, 3)] = 1.0;
-    for i in 0..2 {
-        for j in 0..2 {
-            a[(2 + i, j)] = p[(i, j)];
-            a[(2 + i, 2 + j)] = d[(i, j)];
-        }
-    }
-    Ok(precess::linalg::eigenvalues(&a)?)
-}
 
 fn matrix_rows(table: &mut Table, name: &str, got: &Matrix2<f64>, paper: &Matrix2<f64>) {
     for i in 0..2 {
@@ -137,10 +42,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     // Derived when this example was compiled: M, f, A, Ȧq̇ as straight-line code.
     let bike = Bicycle::benchmark();
     let started = Instant::now();
-    let lin = linearise(&bike)?;
+    let lin = bike.canonical()?;
     println!(
-        "derived by #[derive(Mechanism)] at compile time; linearised in {:.1} ms \
-         (Richardson-extrapolated central differences, Newton on the pitch)",
+        "derived by #[derive(Mechanism)] at compile time; linearised by Bicycle::canonical in \
+         {:.1} ms (exact in the rates, Richardson-extrapolated central differences in the \
+         angles, Newton on the pitch)",
         1e3 * started.elapsed().as_secs_f64()
     );
     let paper = Linear::published();
@@ -152,12 +58,10 @@ fn main() -> Result<(), Box<dyn Error>> {
     matrix_rows(&mut table, "K2", &lin.k2, &paper.k2);
     table.print("The linearised matrices against the paper (eq. 5.3–5.6; zeros: absolute error)");
 
-    let weave = lin
-        .weave_speed(4.0, 5.0)
-        .ok_or("no weave speed in [4, 5] m/s")?;
-    let capsize = lin
-        .capsize_speed(5.5, 7.0)
-        .ok_or("no capsize speed in [5.5, 7] m/s")?;
+    // Where max Re λ crosses zero: the weave pair in [4, 5] m/s, the capsize mode in
+    // [5.5, 7] m/s (Brent's method on the spectral abscissa).
+    let weave = lin.stability_crossing(4.0, 5.0)?.parameter;
+    let capsize = lin.stability_crossing(5.5, 7.0)?.parameter;
     let mut speeds = Table::default();
     speeds.row("weave speed v_w [m/s]", weave, WEAVE_SPEED);
     speeds.row("capsize speed v_c [m/s]", capsize, CAPSIZE_SPEED);
@@ -171,7 +75,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut worst = 0.0_f64;
     for (k, &(cap, re, im, caster)) in TABLE_2.iter().enumerate() {
         let v = (k + 1) as f64;
-        let eig = direct_eigenvalues(&bike, v)?;
+        // A fresh Jacobian of the nonlinear model at this speed, not the canonical form.
+        let (p, d) = bike.lateral_jacobian(v)?;
+        let mut a = precess::nalgebra::Matrix4::zeros();
+        a[(0, 2)] = 1.0;
+        a[(1, 3)] = 1.0;
+        a.fixed_view_mut::<2, 2>(2, 0).copy_from(&p);
+        a.fixed_view_mut::<2, 2>(2, 2).copy_from(&d);
+        let eig = precess::linalg::eigenvalues(&a)?;
         let real: Vec<f64> = eig.iter().filter(|z| z.im == 0.0).map(|z| z.re).collect();
         let pair = eig.iter().find(|z| z.im > 0.0);
         let (got_cap, got_caster) = match real.as_slice() {
@@ -199,12 +110,11 @@ fn main() -> Result<(), Box<dyn Error>> {
 
     // Real and imaginary parts against the speed, 0 … 10 m/s.
     let (mut re_points, mut im_points) = (Vec::new(), Vec::new());
-    for k in 0..=200 {
-        let v = k as f64 * 0.05;
-        for z in lin.eigenvalues(v)? {
-            re_points.push((v, z.re));
+    for modes in lin.eigenvalues_against_speed((0..=200).map(|k| k as f64 * 0.05))? {
+        for z in modes.eigenvalues {
+            re_points.push((modes.speed, z.re));
             if z.im > 0.0 {
-                im_points.push((v, z.im));
+                im_points.push((modes.speed, z.im));
             }
         }
     }

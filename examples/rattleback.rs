@@ -12,8 +12,9 @@
 //! the integrator's dense output and located to adjacent doubles, so the brief pairs of zeros
 //! while the body rattles are found whatever the sampling), and the energy's drift.
 //!
-//! The body is declared on a struct: `#[rigid(body(..))]` with the full inertia tensor (the
-//! product D kept) and `#[contact(surface = ellipsoid(..), law = rolling, ..)]`. It runs as a
+//! The body is the library's ready model `precess::models::Rattleback`, declared on a struct
+//! as a user would: `#[rigid(body(..))]` with the full inertia tensor (the product D kept)
+//! and `#[contact(surface = ellipsoid(..), law = rolling, ..)]`. It runs as a
 //! `ContactRun` in the one run loop, driven by `ode::Run` (samples, `ContactQuantities`, the
 //! event).
 //!
@@ -27,24 +28,9 @@ use common::{Axes, Series, Table, animation, plot, plot_dir};
 use precess::contact::{
     ContactDynamics, ContactQuantities, ContactRun, Phase, STATE_LEN, attitude_of,
 };
-use precess::nalgebra::{UnitQuaternion, Vector3};
+use precess::models::Rattleback;
+use precess::nalgebra::Vector3;
 use precess::ode::{AdaptiveConfig, Direction, Event, Run, StopReason};
-use precess::prelude::RigidBody;
-
-/// Kane & Levinson's rattleback: M = 1 kg with its centre of mass at the origin, the inertia
-/// about it with the product D = −2e-5 kg·m² in the (x, y) entries, and an ellipsoid of
-/// semi-axes a, b, c whose centre is h = 0.01 m above the centre of mass.
-#[derive(RigidBody)]
-#[rigid(body(
-    mass = 1.0,
-    inertia = [[2e-4, -2e-5, 0.0], [-2e-5, 1.6e-3, 0.0], [0.0, 0.0, 1.7e-3]],
-))]
-#[contact(
-    surface = ellipsoid(semi_axes = [0.2, 0.03, 0.02], center = [0.0, 0.0, 0.01]),
-    law = rolling,
-    gravity = 9.81,
-)]
-struct Rattleback;
 
 /// The sampling interval [s]: fine enough for the largest drifts over the run to be those of
 /// the integration, not of where it was looked at.
@@ -66,10 +52,7 @@ fn heading_rate(y: &[f64; STATE_LEN]) -> f64 {
 fn main() -> Result<(), Box<dyn Error>> {
     let model = Rattleback;
 
-    let tilt = 0.5_f64.to_radians();
-    let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), tilt)
-        * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), tilt);
-    let y0 = model.rolling_state([0.0, 0.0], &q, &Vector3::new(0.0, 0.0, -5.0))?;
+    let y0 = model.release(0.5_f64.to_radians(), -5.0)?;
     let t_end = 60.0;
     let mut cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
     cfg.max_steps = 10_000_000;

@@ -11,10 +11,10 @@
 //! about the vertical n′ = λ / (R I₃ (1 + α)) and its energy λ² / (2 I₃ R² (1 + α)²) +
 //! M g R (1 + α) (`contact::theory::TippeTop`).
 //!
-//! The top is declared on a struct (`common/tippe.rs`, shared with `tippe_sweep`): `#[rigid]`
-//! gives its mass and inertia, `#[contact]` its spherical surface and the table's law, and the
-//! derive emits the equations of motion (`ContactDynamics`) as straight-line code while it
-//! expands. The run is the contact's `ContactRun` in the one run loop, driven by `ode::Run`:
+//! The top is the library's ready model `precess::models::TippeTop` (shared with
+//! `tippe_sweep`), declared on a struct as a user would: `#[rigid]` gives its mass and
+//! inertia, `#[contact]` its spherical surface and the table's law, and the derive emits the
+//! equations of motion (`ContactDynamics`) as straight-line code while it expands. The run is the contact's `ContactRun` in the one run loop, driven by `ode::Run`:
 //! samples every 5 ms with the standard quantities (`ContactQuantities`), and the instant the
 //! axis passes the horizontal as an event located on the integrator's dense output.
 //!
@@ -23,8 +23,6 @@
 //! `target/precess-plots/`. Run with `cargo run --release --example tippe_top`.
 
 mod common;
-#[path = "common/tippe.rs"]
-mod tippe;
 
 use std::error::Error;
 use std::time::Instant;
@@ -32,16 +30,17 @@ use std::time::Instant;
 use common::{Axes, Series, Table, plot, plot_dir};
 use precess::animate;
 use precess::contact::{ContactDynamics, ContactQuantities, ContactRun, Phase, attitude_of};
+use precess::models::TippeTop as Top;
+use precess::models::tippe_top::{ALPHA, MASS, RADIUS};
 use precess::nalgebra::Vector3;
 use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
-use tippe::{ALPHA, RADIUS, Top, axis_up};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let (r, alpha) = (RADIUS, ALPHA);
-    let top = tippe::theory();
-    let viscous = 5.0 * tippe::MASS;
+    let top = Top::theory();
+    let viscous = 5.0 * MASS;
     let model = Top { viscous };
-    let y0 = tippe::start(0.1, 140.0);
+    let y0 = Top::start(0.1, 140.0);
 
     // One run loop: sampled every 5 ms, the standard contact quantities per sample (each
     // under the sample's own phase), the axis's angle, and the instant the axis passes the
@@ -53,9 +52,11 @@ fn main() -> Result<(), Box<dyn Error>> {
         .sample_every(0.005)
         .quantities(ContactQuantities::new(&model, Phase::Sliding))
         .quantity("θ (deg)", |_t, s| {
-            axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
+            Top::axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
         })
-        .event(Event::new("axis horizontal").falling(), |_t, s| axis_up(s))
+        .event(Event::new("axis horizontal").falling(), |_t, s| {
+            Top::axis_up(s)
+        })
         .integrate()?;
     if out.stop == StopReason::Halted {
         println!("the run stopped at t = {} s: {:?}", out.t, run.run().halt());

@@ -22,6 +22,10 @@ pub struct Attributes;
 #[doc = include_str!("../docs/bicycle.md")]
 pub struct Bicycle;
 
+/// docs/linearisation.md.
+#[doc = include_str!("../docs/linearisation.md")]
+pub struct Linearisation;
+
 /// docs/bodies.md.
 #[doc = include_str!("../docs/bodies.md")]
 pub struct Bodies;

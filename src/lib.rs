@@ -41,7 +41,13 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+// The derives name what they generate through `::precess::…`; inside this crate that path
+// is the crate itself, for the ready scenes of `models`.
+extern crate self as precess;
+
 pub use precess_core::*;
+
+pub mod models;
 
 /// Figures of runs written as SVG: a trajectory's columns against time, phase portraits,
 /// work–precision plots, any series on any axes (the `plot` feature; `docs/plots.md`).

@@ -59,7 +59,9 @@ mod exact {
 }
 /// The symmetric eigensolver.
 mod linalg {
+    mod crossing;
     mod eigen;
+    mod state_space;
 }
 /// The physics of the `monte_carlo_top` example: a Gaussian cloud's moments against the
 /// linearised flow map Φ P₀ Φᵀ.

@@ -108,6 +108,8 @@ mod rolling_once {
 mod scenes {
     mod accessors;
     mod checks;
+    mod models_bicycle;
+    mod models_state_space;
     mod quantities;
     mod theory;
 }

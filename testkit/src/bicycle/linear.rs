@@ -4,7 +4,8 @@
 //! speeds.
 
 use precess::lagrange::LagrangeError;
-use precess::linalg::{LinalgError, eigenvalues};
+use precess::linalg::{CrossingError, LinalgError, find_crossing};
+use precess::models::bicycle::Canonical;
 use precess::nalgebra::{Complex, Matrix2, Matrix4};
 
 use super::Whipple;
@@ -136,83 +137,56 @@ impl Linear {
         }
     }
 
-    /// The state matrix of (φ, δ, φ̇, δ̇) at speed v, or `None` if M is singular.
-    pub fn state_matrix(&self, v: f64) -> Option<Matrix4<f64>> {
-        let m_inv = self.m.try_inverse()?;
-        let stiff = -(m_inv * (self.k0 * self.g + self.k2 * (v * v)));
-        let damp = -(m_inv * self.c1 * v);
-        let mut a = Matrix4::zeros();
-        a[(0, 2)] = 1.0;
-        a[(1, 3)] = 1.0;
-        for i in 0..2 {
-            for j in 0..2 {
-                a[(2 + i, j)] = stiff[(i, j)];
-                a[(2 + i, 2 + j)] = damp[(i, j)];
-            }
-        }
-        Some(a)
-    }
-
-    /// The four eigenvalues at speed v, by decreasing real part (NaN if M is singular).
+    /// The library's form of the same matrices (`precess::models::bicycle::Canonical`),
+    /// whose state matrix, eigenvalues and root finder these methods use.
     ///
     /// # Errors
-    /// [`LinalgError`] from the eigenvalue routine (a non-finite entry, no convergence).
-    pub fn eigenvalues(&self, v: f64) -> Result<Vec<Complex<f64>>, LinalgError> {
-        let a = self
-            .state_matrix(v)
-            .unwrap_or(Matrix4::from_element(f64::NAN));
-        eigenvalues(&a)
+    /// [`LinalgError`] for a non-finite entry or a singular M.
+    pub fn canonical(&self) -> Result<Canonical, LinalgError> {
+        Canonical::new(self.m, self.c1, self.k0, self.k2, self.g)
     }
 
-    /// The weave speed: where the real part of the oscillatory pair crosses zero, by
-    /// bisection on [lo, hi] to rounding; `None` without a sign change (or where the
-    /// eigenvalues fail).
+    /// The state matrix of (φ, δ, φ̇, δ̇) at speed v, or `None` if M is singular.
+    pub fn state_matrix(&self, v: f64) -> Option<Matrix4<f64>> {
+        self.canonical().ok()?.state_matrix(v).ok()
+    }
+
+    /// The four eigenvalues at speed v, by decreasing real part.
+    ///
+    /// # Errors
+    /// [`LinalgError`] for a singular M or from the eigenvalue routine.
+    pub fn eigenvalues(&self, v: f64) -> Result<Vec<Complex<f64>>, LinalgError> {
+        self.canonical()?.eigenvalues(v)
+    }
+
+    /// The weave speed: where the real part of the oscillatory pair crosses zero in
+    /// [lo, hi] (`linalg::find_crossing`, to rounding); `None` without a sign change (or
+    /// where the eigenvalues fail).
     pub fn weave_speed(&self, lo: f64, hi: f64) -> Option<f64> {
-        self.bisect(lo, hi, |eig| {
-            eig.iter()
-                .filter(|z| z.im.abs() > 1e-9)
-                .map(|z| z.re)
-                .fold(f64::NAN, f64::max)
-        })
+        self.mode_crossing(lo, hi, |z| z.im.abs() > 1e-9)
     }
 
     /// The capsize speed: where the largest real eigenvalue (the capsize mode) crosses
-    /// zero, by bisection on [lo, hi]; `None` without a sign change.
+    /// zero in [lo, hi]; `None` without a sign change.
     pub fn capsize_speed(&self, lo: f64, hi: f64) -> Option<f64> {
-        self.bisect(lo, hi, |eig| {
-            eig.iter()
-                .filter(|z| z.im.abs() <= 1e-9)
-                .map(|z| z.re)
-                .fold(f64::NAN, f64::max)
-        })
+        self.mode_crossing(lo, hi, |z| z.im.abs() <= 1e-9)
     }
 
-    fn bisect(
-        &self,
-        mut lo: f64,
-        mut hi: f64,
-        mode: impl Fn(&[Complex<f64>]) -> f64,
-    ) -> Option<f64> {
-        let at = |v: f64| self.eigenvalues(v).ok().map(|e| mode(&e));
-        let (mut f_lo, f_hi) = (at(lo)?, at(hi)?);
-        let product = f_lo * f_hi;
-        if product.is_nan() || product >= 0.0 {
-            return None;
-        }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            let f = at(mid)?;
-            if (f < 0.0) == (f_lo < 0.0) {
-                lo = mid;
-                f_lo = f;
-            } else {
-                hi = mid;
-            }
-        }
-        Some(0.5 * (lo + hi))
+    /// Where the largest real part among the eigenvalues `mode` selects crosses zero.
+    fn mode_crossing(&self, lo: f64, hi: f64, mode: impl Fn(&Complex<f64>) -> bool) -> Option<f64> {
+        let lin = self.canonical().ok()?;
+        let at = |v: f64| -> Result<f64, CrossingError> {
+            let eig = lin.eigenvalues(v).map_err(|source| CrossingError::Linalg {
+                parameter: v,
+                source,
+            })?;
+            Ok(eig
+                .iter()
+                .filter(|z| mode(z))
+                .map(|z| z.re)
+                .fold(f64::NAN, f64::max))
+        };
+        find_crossing(at, lo, hi, 1e-15).ok().map(|c| c.parameter)
     }
 }
 

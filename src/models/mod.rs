@@ -1,0 +1,23 @@
+//! Ready scenes a user can depend on, each declared with the derives as a user would, with
+//! its parameters from the literature (heyoka keeps such systems in its `model/` folder):
+//!
+//! - [`Bicycle`]: the benchmark bicycle of Meijaard, Papadopoulos, Ruina & Schwab (2007),
+//!   a rolling mechanism, with its linearisation in their canonical form M, C₁, K₀, K₂
+//!   ([`bicycle::Canonical`]), the eigenvalues against speed and the weave and capsize
+//!   speeds;
+//! - [`TippeTop`]: an eccentric sphere gliding with viscous friction, which turns over;
+//! - [`Rattleback`]: the rolling ellipsoid of Kane & Levinson (1982), which reverses its
+//!   spin;
+//! - [`HeavyTop`]: a disk on a stem about a fixed pivot (a symmetric heavy top).
+//!
+//! The examples `bicycle`, `tippe_top`, `rattleback` and `heavy_top` run them.
+
+pub mod bicycle;
+pub mod heavy_top;
+pub mod rattleback;
+pub mod tippe_top;
+
+pub use bicycle::Bicycle;
+pub use heavy_top::HeavyTop;
+pub use rattleback::Rattleback;
+pub use tippe_top::TippeTop;
