@@ -21,6 +21,7 @@ use crate::lang::symbols::{FieldParameters, Lowering};
 use crate::lang::variational::VariationalKey;
 
 mod charts;
+mod loops;
 mod rolling;
 
 /// Past this many operations q̈ and its pivots are emitted once, in a function the checked
@@ -37,6 +38,17 @@ pub fn expand(
 ) -> Option<TokenStream> {
     if let Some(rolling) = &checked.rolling {
         return rolling::expand(ex, checked, rolling);
+    }
+    if let Some((_, closes)) = checked.loops.first() {
+        // Taylor coefficients and variational equations are of an unconstrained q̈.
+        if taylor.is_some() || variational.is_some() {
+            ex.cx.error_spanned_by(
+                &closes.key,
+                "`closes` cannot be used with `taylor` or `variational(...)` on `#[mechanism]`: their equations are the tree's, without the loop",
+            );
+            return None;
+        }
+        return loops::expand(ex, checked);
     }
     let (cx, ident, parameters, arena) = ex.split();
     let p = Private;

@@ -133,6 +133,42 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
         Ok(best_partition(&self.closure(q).1)?)
     }
 
+    /// Every rate at q from the rates `u` of the coordinates `free` (A q̇ = 0 solved for the
+    /// others): how to set a run up with, say, the crank's rate given.
+    ///
+    /// # Errors
+    /// [`MechanismError::NonFinite`] for a coordinate or rate;
+    /// [`LagrangeError::DependentChoice`] (naming the dependent coordinates left) when
+    /// `free` repeats a coordinate or names one past n; [`LagrangeError::SingularAtState`] where the other coordinates' block is singular
+    /// (`free` at a dead point).
+    fn rates_from(&self, q: &[f64; N], free: [usize; K], u: [f64; K]) -> Result<[f64; N], MechanismError> {
+        if q.iter().chain(&u).any(|v| !v.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "coordinates or free rates",
+                values: q.iter().chain(&u).copied().collect(),
+            });
+        }
+        let mut dependent = [0; M];
+        let mut rest = (0..N).filter(|i| !free.contains(i));
+        for slot in &mut dependent {
+            *slot = rest.next().unwrap_or(N);
+        }
+        let distinct = (0..K).all(|j| free[j] < N && !free[..j].contains(&free[j]));
+        if !distinct || dependent.contains(&N) {
+            return Err(LagrangeError::DependentChoice {
+                dependent: dependent.to_vec(),
+                constraints: M,
+                coordinates: N,
+            }
+            .into());
+        }
+        let partition = Partition {
+            independent: free,
+            dependent,
+        };
+        Ok(partition.rates(&self.closure(q).1, &u)?.rates)
+    }
+
     /// q̈ at (t, q, q̇), checked: the parameters, a finite state, a regular configuration.
     ///
     /// # Errors
