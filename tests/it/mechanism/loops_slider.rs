@@ -45,7 +45,7 @@ fn slider(theta: f64) -> f64 {
 
 #[test]
 fn the_slider_follows_the_closed_form_along_a_run() {
-    let theta = 0.4;
+    let theta: f64 = 0.4;
     // The rod's angle relative to the crank, from sin(θ + β) = −(r/l) sin θ.
     let beta = (-(R / L) * theta.sin()).asin() - theta;
     let q0 = [theta, beta, slider(theta)];
