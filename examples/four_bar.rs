@@ -22,7 +22,7 @@ use std::error::Error;
 use std::f64::consts::{PI, TAU};
 
 use common::{Axes, Series, Table, plot};
-use precess::mechanism::loops::{LoopDynamics, loop_run};
+use precess::mechanism::loops::LoopDynamics;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
 
@@ -45,7 +45,11 @@ const TURNS: f64 = 1e4;
 /// the assembly `branch` = ±1.
 fn freudenstein(theta1: f64, branch: f64) -> (f64, f64) {
     let [a, b, c, d] = LINKS;
-    let (k1, k2, k3) = (d / a, d / c, (a * a - b * b + c * c + d * d) / (2.0 * a * c));
+    let (k1, k2, k3) = (
+        d / a,
+        d / c,
+        (a * a - b * b + c * c + d * d) / (2.0 * a * c),
+    );
     let (ca, cb, cc) = (k1 - theta1.cos(), -theta1.sin(), k3 - k2 * theta1.cos());
     let t = (-cb + branch * (ca * ca + cb * cb - cc * cc).sqrt()) / (cc - ca);
     let theta3 = 2.0 * t.atan();
@@ -71,11 +75,11 @@ fn main() -> Result<(), Box<dyn Error>> {
     let e0 = bar.energy(&q0, &qd0);
     let cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
     // The crank's period at this energy, from a probe of 20 s.
-    let mut probe = loop_run(&bar, 0.0, y0, cfg)?;
+    let mut probe = bar.closed_run(0.0, y0, cfg)?;
     probe.advance_to(20.0)?;
     let period = 20.0 / ((probe.state().x[0] - q0[0]) / TAU);
     let t_end = TURNS * period;
-    let mut run = loop_run(&bar, 0.0, y0, cfg)?;
+    let mut run = bar.closed_run(0.0, y0, cfg)?;
     let (mut samples, mut worst, mut worst_rocker) = (Vec::new(), 0.0_f64, 0.0_f64);
     let n = 400;
     for k in 1..=n {
@@ -107,7 +111,9 @@ fn main() -> Result<(), Box<dyn Error>> {
     table.print(&format!(
         "Four-bar over {turns:.0} crank turns ({t_end:.0} s), DOP853 at rtol = atol = 1e-12"
     ));
-    println!("  max |φ| over the run: {worst:.2e}; max |θ₃ − Freudenstein| at the samples: {worst_rocker:.2e} rad");
+    println!(
+        "  max |φ| over the run: {worst:.2e}; max |θ₃ − Freudenstein| at the samples: {worst_rocker:.2e} rad"
+    );
     println!(
         "  pin force on the coupler at the end (rows {:?}): ({:.4}, {:.4}) N",
         FourBar::CLOSURE_ROWS,

@@ -104,10 +104,7 @@ impl Checker<'_> {
 
 /// Each closure with its target resolved to a body index (or the ground), in the order of
 /// the bodies; an unknown target is an error spanned on it, with a suggestion.
-pub(super) fn resolve(
-    ck: &Checker,
-    specs: &[LinkSpec],
-) -> Option<Vec<(LoopClosure, ClosesSpec)>> {
+pub(super) fn resolve(ck: &Checker, specs: &[LinkSpec]) -> Option<Vec<(LoopClosure, ClosesSpec)>> {
     let names: Vec<String> = specs.iter().map(|s| s.name.to_string()).collect();
     let mut out = Vec::new();
     let mut ok = true;
@@ -122,7 +119,10 @@ pub(super) fn resolve(
             if b == body {
                 ck.cx.error_spanned_by(
                     &closes.target,
-                    format!("body `{target}` cannot close a loop on itself: name another body or `{}`", keys::GROUND),
+                    format!(
+                        "body `{target}` cannot close a loop on itself: name another body or `{}`",
+                        keys::GROUND
+                    ),
                 );
                 ok = false;
                 continue;

@@ -206,7 +206,9 @@ impl Checks {
         let closure = closure.to_owned();
         self.tests.push(Box::new(move |o| {
             let p = Private;
-            let values = indices.iter().map(|&i| o.get(i).cloned().unwrap_or_default());
+            let values = indices
+                .iter()
+                .map(|&i| o.get(i).cloned().unwrap_or_default());
             quote! {
                 #p::check_loop_sides(#closure, &[#((#names, f64::max(#values, 0.0).sqrt())),*])?;
             }

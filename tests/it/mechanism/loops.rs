@@ -6,7 +6,7 @@
 
 use std::f64::consts::{PI, TAU};
 
-use precess::mechanism::loops::{LoopDynamics, LoopHalt, loop_run};
+use precess::mechanism::loops::{LoopDynamics, LoopHalt};
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
 
@@ -43,7 +43,11 @@ struct TripleRocker;
 /// on the assembly `branch` = ±1; with the coupler's absolute angle from the closing
 /// triangle. `[a, b, c, d]` = crank, coupler, rocker, ground.
 fn freudenstein([a, b, c, d]: [f64; 4], theta1: f64, branch: f64) -> (f64, f64) {
-    let (k1, k2, k3) = (d / a, d / c, (a * a - b * b + c * c + d * d) / (2.0 * a * c));
+    let (k1, k2, k3) = (
+        d / a,
+        d / c,
+        (a * a - b * b + c * c + d * d) / (2.0 * a * c),
+    );
     // A cos θ₃ + B sin θ₃ = C with A = K₁ − cos θ₁, B = −sin θ₁, C = K₂ cos θ₁ − K₃.
     let (ca, cb, cc) = (k1 - theta1.cos(), -theta1.sin(), k2 * theta1.cos() - k3);
     let t = (-cb + branch * (ca * ca + cb * cb - cc * cc).sqrt()) / (-cc - ca);
@@ -61,10 +65,18 @@ fn wrap(x: f64, y: f64) -> f64 {
 
 /// The state [q, q̇] on the loop at crank angle θ₁ and crank rate ω (Freudenstein's
 /// positions, the other rates from the closure).
-fn start<T: LoopDynamics<3, 2, 1>>(model: &T, links: [f64; 4], theta1: f64, branch: f64, omega: f64) -> [f64; 6] {
+fn start<T: LoopDynamics<3, 2, 1>>(
+    model: &T,
+    links: [f64; 4],
+    theta1: f64,
+    branch: f64,
+    omega: f64,
+) -> [f64; 6] {
     let (coupler, rocker) = freudenstein(links, theta1, branch);
     let q = [theta1, coupler - theta1, rocker];
-    let qd = model.rates_from(&q, [0], [omega]).expect("the crank is free here");
+    let qd = model
+        .rates_from(&q, [0], [omega])
+        .expect("the crank is free here");
     [q[0], q[1], q[2], qd[0], qd[1], qd[2]]
 }
 
@@ -81,7 +93,11 @@ fn the_derived_closure_holds_at_freudenstein_s_positions() {
         for branch in [1.0, -1.0] {
             let (coupler, rocker) = freudenstein(links, theta1, branch);
             let q = [theta1, coupler - theta1, rocker];
-            assert!(CrankRocker.residual(&q) < 1e-14, "θ₁ = {theta1}: {}", CrankRocker.residual(&q));
+            assert!(
+                CrankRocker.residual(&q) < 1e-14,
+                "θ₁ = {theta1}: {}",
+                CrankRocker.residual(&q)
+            );
         }
     }
 }
@@ -93,13 +109,17 @@ fn the_rocker_follows_freudenstein_and_the_loop_stays_closed_over_ten_thousand_t
     let (q0, qd0) = halves(&y0);
     let e0 = CrankRocker.energy(&q0, &qd0);
     let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
-    let mut run = loop_run(&CrankRocker, 0.0, y0, cfg).expect("starts on the loop");
-    let (mut worst_phi, mut worst_rocker, mut worst_coupler, mut worst_energy) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    let mut run = CrankRocker
+        .closed_run(0.0, y0, cfg)
+        .expect("starts on the loop");
+    let (mut worst_phi, mut worst_rocker, mut worst_coupler, mut worst_energy) =
+        (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
     let mut t = 0.0;
     // About 0.74 s a turn at this energy: sample every 5 s until 10⁴ turns.
     while run.state().x[0] - q0[0] < 1e4 * TAU {
         t += 5.0;
-        run.advance_to(t).expect("no halt on a Grashof crank-rocker");
+        run.advance_to(t)
+            .expect("no halt on a Grashof crank-rocker");
         let (q, qd) = halves(&run.state().x);
         worst_phi = worst_phi.max(CrankRocker.residual(&q));
         let (coupler, rocker) = freudenstein(links, q[0], 1.0);
@@ -114,7 +134,10 @@ fn the_rocker_follows_freudenstein_and_the_loop_stays_closed_over_ten_thousand_t
     );
     assert!(turns >= 1e4);
     assert!(worst_phi <= 1e-10, "{worst_phi:e}");
-    assert!(worst_rocker <= 1e-10 && worst_coupler <= 1e-10, "{worst_rocker:e} {worst_coupler:e}");
+    assert!(
+        worst_rocker <= 1e-10 && worst_coupler <= 1e-10,
+        "{worst_rocker:e} {worst_coupler:e}"
+    );
     assert!(worst_energy <= 1e-6, "{worst_energy:e}");
 }
 
@@ -135,21 +158,35 @@ fn the_pin_force_balances_each_side_of_the_loop() {
         let bx = d + c * t3.cos();
         let by = c * t3.sin();
         // Rocker about D: (m₃ c²/3) θ̈₃ = −m₃ g (c/2) cos θ₃ − ((B − D) × λ)_z.
-        let rocker = m3 * c * c / 3.0 * a3 + m3 * G * c / 2.0 * t3.cos()
+        let rocker = m3 * c * c / 3.0 * a3
+            + m3 * G * c / 2.0 * t3.cos()
             + (c * t3.cos() * l[1] - c * t3.sin() * l[0]);
         // Crank and coupler about A: d/dt L_A = Σ weights' moments + (B × λ)_z.
         let (t1, w1, a1) = (q[0], qd[0], qdd[0]);
         let (psi, wp, ap) = (q[0] + q[1], qd[0] + qd[1], qdd[0] + qdd[1]);
-        let r_g = [a * t1.cos() + b / 2.0 * psi.cos(), a * t1.sin() + b / 2.0 * psi.sin()];
-        let acc_g = [
-            a * (-a1 * t1.sin() - w1 * w1 * t1.cos()) + b / 2.0 * (-ap * psi.sin() - wp * wp * psi.cos()),
-            a * (a1 * t1.cos() - w1 * w1 * t1.sin()) + b / 2.0 * (ap * psi.cos() - wp * wp * psi.sin()),
+        let r_g = [
+            a * t1.cos() + b / 2.0 * psi.cos(),
+            a * t1.sin() + b / 2.0 * psi.sin(),
         ];
-        let dl = m1 * a * a / 3.0 * a1 + m2 * (r_g[0] * acc_g[1] - r_g[1] * acc_g[0]) + m2 * b * b / 12.0 * ap;
+        let acc_g = [
+            a * (-a1 * t1.sin() - w1 * w1 * t1.cos())
+                + b / 2.0 * (-ap * psi.sin() - wp * wp * psi.cos()),
+            a * (a1 * t1.cos() - w1 * w1 * t1.sin())
+                + b / 2.0 * (ap * psi.cos() - wp * wp * psi.sin()),
+        ];
+        let dl = m1 * a * a / 3.0 * a1
+            + m2 * (r_g[0] * acc_g[1] - r_g[1] * acc_g[0])
+            + m2 * b * b / 12.0 * ap;
         let moments = -m1 * G * a / 2.0 * t1.cos() - m2 * G * r_g[0] + (bx * l[1] - by * l[0]);
         let scale = (m3 * G * c).max(l[0].abs() + l[1].abs());
-        assert!(rocker.abs() < 1e-12 * scale, "rocker: {rocker:e} (λ = {l:?}, θ̇₃ = {w3})");
-        assert!((dl - moments).abs() < 1e-12 * scale, "crank and coupler: {dl} against {moments}");
+        assert!(
+            rocker.abs() < 1e-12 * scale,
+            "rocker: {rocker:e} (λ = {l:?}, θ̇₃ = {w3})"
+        );
+        assert!(
+            (dl - moments).abs() < 1e-12 * scale,
+            "crank and coupler: {dl} against {moments}"
+        );
     }
 }
 
@@ -169,20 +206,30 @@ fn a_triple_rocker_s_crank_passes_its_dead_point_on_the_other_coordinates() {
     let (q0, qd0) = halves(&y0);
     let e0 = TripleRocker.energy(&q0, &qd0);
     let limit = (1.0f64 / 16.0).acos();
-    let mut run = loop_run(&TripleRocker, 0.0, y0, AdaptiveConfig::with_tol(1e-12, 1e-12)).expect("starts");
-    let (mut highest, mut reversed, mut worst_phi, mut worst_energy) = (0.0_f64, false, 0.0_f64, 0.0_f64);
+    let mut run = TripleRocker
+        .closed_run(0.0, y0, AdaptiveConfig::with_tol(1e-12, 1e-12))
+        .expect("starts");
+    let (mut highest, mut reversed, mut worst_phi, mut worst_energy) =
+        (0.0_f64, false, 0.0_f64, 0.0_f64);
     let mut crank_dependent = false;
     for k in 1..=2000 {
-        run.advance_to(f64::from(k) * 1e-3).expect("the run goes on");
+        run.advance_to(f64::from(k) * 1e-3)
+            .expect("the run goes on");
         assert_eq!(run.halt(), None::<&LoopHalt>);
         let (q, qd) = halves(&run.state().x);
         highest = highest.max(q[0]);
         reversed |= qd[0] < 0.0;
         worst_phi = worst_phi.max(TripleRocker.residual(&q));
         worst_energy = worst_energy.max((TripleRocker.energy(&q, &qd) - e0).abs());
-        crank_dependent |= TripleRocker.partition(&q).expect("regular").dependent.contains(&0);
+        crank_dependent |= TripleRocker
+            .partition(&q)
+            .expect("regular")
+            .dependent
+            .contains(&0);
     }
-    eprintln!("highest θ₁ {highest} (limit {limit}), max |φ| {worst_phi:e}, energy {worst_energy:e}");
+    eprintln!(
+        "highest θ₁ {highest} (limit {limit}), max |φ| {worst_phi:e}, energy {worst_energy:e}"
+    );
     // The crank rose to its limit, where the rows were solved for it instead, and came back.
     assert!(reversed && crank_dependent);
     assert!((highest - limit).abs() < 1e-6, "{highest} against {limit}");

@@ -3,7 +3,7 @@
 //! sides cannot close, refused at run time by name.
 
 use precess::mechanism::MechanismError;
-use precess::mechanism::loops::{LoopDynamics, loop_run};
+use precess::mechanism::loops::LoopDynamics;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
 
@@ -49,23 +49,40 @@ fn the_slider_follows_the_closed_form_along_a_run() {
     // The rod's angle relative to the crank, from sin(θ + β) = −(r/l) sin θ.
     let beta = (-(R / L) * theta.sin()).asin() - theta;
     let q0 = [theta, beta, slider(theta)];
-    assert!(SliderCrank.residual(&q0) < 1e-15, "{}", SliderCrank.residual(&q0));
-    let qd0 = SliderCrank.rates_from(&q0, [SliderCrank::THETA], [5.0]).expect("free crank");
+    assert!(
+        SliderCrank.residual(&q0) < 1e-15,
+        "{}",
+        SliderCrank.residual(&q0)
+    );
+    let qd0 = SliderCrank
+        .rates_from(&q0, [SliderCrank::THETA], [5.0])
+        .expect("free crank");
     // ẋ = dx/dθ θ̇.
-    let dx = -R * theta.sin() - R * R * theta.sin() * theta.cos() / (L * L - R * R * theta.sin().powi(2)).sqrt();
-    assert!((qd0[SliderCrank::X] - 5.0 * dx).abs() < 1e-13, "{} against {}", qd0[2], 5.0 * dx);
+    let dx = -R * theta.sin()
+        - R * R * theta.sin() * theta.cos() / (L * L - R * R * theta.sin().powi(2)).sqrt();
+    assert!(
+        (qd0[SliderCrank::X] - 5.0 * dx).abs() < 1e-13,
+        "{} against {}",
+        qd0[2],
+        5.0 * dx
+    );
     let y0 = [q0[0], q0[1], q0[2], qd0[0], qd0[1], qd0[2]];
     let e0 = SliderCrank.energy(&q0, &qd0);
-    let mut run = loop_run(&SliderCrank, 0.0, y0, AdaptiveConfig::with_tol(1e-11, 1e-11)).expect("starts");
+    let mut run = SliderCrank
+        .closed_run(0.0, y0, AdaptiveConfig::with_tol(1e-11, 1e-11))
+        .expect("starts");
     let (mut worst, mut energy) = (0.0_f64, 0.0_f64);
     for k in 1..=500 {
         run.advance_to(f64::from(k) * 0.02).expect("runs");
         let y = run.state().x;
         worst = worst.max((y[2] - slider(y[0])).abs());
-        energy = energy.max((SliderCrank.energy(&[y[0], y[1], y[2]], &[y[3], y[4], y[5]]) - e0).abs());
+        energy =
+            energy.max((SliderCrank.energy(&[y[0], y[1], y[2]], &[y[3], y[4], y[5]]) - e0).abs());
     }
     let turns = (run.state().x[0] - theta) / std::f64::consts::TAU;
-    eprintln!("{turns:.1} crank turns: slider off the closed form by {worst:e} m, energy {energy:e} J");
+    eprintln!(
+        "{turns:.1} crank turns: slider off the closed form by {worst:e} m, energy {energy:e} J"
+    );
     assert!(turns.abs() > 3.0);
     assert!(worst < 1e-12, "{worst:e}");
     assert!(energy < 1e-8 * e0.abs(), "{energy:e}");
@@ -73,7 +90,12 @@ fn the_slider_follows_the_closed_form_along_a_run() {
 
 #[test]
 fn field_lengths_that_cannot_close_are_refused_by_name() {
-    let good = Linkage { a: 1.0, b: 3.0, c: 2.5, d: 3.0 };
+    let good = Linkage {
+        a: 1.0,
+        b: 3.0,
+        c: 2.5,
+        d: 3.0,
+    };
     assert_eq!(good.check_parameters(), Ok(()));
     let long = Linkage { c: 8.0, ..good };
     let e = long.check_parameters();
@@ -83,6 +105,12 @@ fn field_lengths_that_cannot_close_are_refused_by_name() {
         "{e:?}"
     );
     let q = [0.3, 0.0, 1.0];
-    assert!(matches!(long.accelerations(0.0, &q, &[0.0; 3]), Err(MechanismError::LoopCannotClose { .. })));
-    assert!(loop_run(&long, 0.0, [0.0; 6], AdaptiveConfig::default()).is_err());
+    assert!(matches!(
+        long.accelerations(0.0, &q, &[0.0; 3]),
+        Err(MechanismError::LoopCannotClose { .. })
+    ));
+    assert!(
+        long.closed_run(0.0, [0.0; 6], AdaptiveConfig::default())
+            .is_err()
+    );
 }

@@ -124,7 +124,11 @@ impl MechanismScene {
         // The loop's bodies: each chain up to the first body both share (or the ground).
         let common = left.iter().copied().find(|b| right.contains(b));
         let cut = |chain: &[usize]| -> Vec<usize> {
-            chain.iter().copied().take_while(|&b| Some(b) != common).collect()
+            chain
+                .iter()
+                .copied()
+                .take_while(|&b| Some(b) != common)
+                .collect()
         };
         let (left, right) = (cut(&left), cut(&right));
         let mut axis: Option<[ExprId; 3]> = None;
@@ -147,7 +151,11 @@ impl MechanismScene {
         // loop, its child's joint on the chain or the closing point.
         for (chain, end) in [(&left, closure.at), (&right, closure.to_at)] {
             for (k, &b) in chain.iter().enumerate() {
-                let exit = if k == 0 { end } else { self.bodies[chain[k - 1]].joint.at };
+                let exit = if k == 0 {
+                    end
+                } else {
+                    self.bodies[chain[k - 1]].joint.at
+                };
                 let name = self.bodies[b].name.clone();
                 sides.push(side(arena, name, &exit, &zero, &axis));
             }
@@ -165,7 +173,13 @@ impl MechanismScene {
 }
 
 /// The side from `q` to `p` across the unit `axis`: |p − q|² − ((p − q)·axis)².
-fn side(arena: &mut Arena, body: String, p: &[ExprId; 3], q: &[ExprId; 3], axis: &[ExprId; 3]) -> LoopSide {
+fn side(
+    arena: &mut Arena,
+    body: String,
+    p: &[ExprId; 3],
+    q: &[ExprId; 3],
+    axis: &[ExprId; 3],
+) -> LoopSide {
     let d = [0, 1, 2].map(|i| arena.sub(p[i], q[i]));
     let length = dot(arena, &d, &d);
     let along = dot(arena, &d, axis);

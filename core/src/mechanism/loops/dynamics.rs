@@ -12,9 +12,9 @@
 
 use nalgebra::{DMatrix, DVector, SMatrix, SVector};
 
-use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, SINGULAR_BLOCK};
+use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, SINGULAR_BLOCK, START_RESIDUAL};
 use crate::mechanism::error::MechanismError;
-use crate::ode::{OdeError, System};
+use crate::ode::{AdaptiveConfig, Dop853, Hybrid, OdeError, System};
 
 /// The loop residual max |φ| that [`LoopDynamics::close_loop`] reaches (lengths of the
 /// description; Newton also stops at a step at rounding level).
@@ -86,28 +86,26 @@ pub fn best_partition<const M: usize, const N: usize, const K: usize>(
     })
 }
 
+/// M (n × n) and f (n) of a mechanism's tree at one state.
+pub type MassForcing<const N: usize> = (SMatrix<f64, N, N>, SVector<f64, N>);
+
 /// A mechanism of n coordinates whose loop closures give m rows, leaving k = n − m free.
 /// `#[derive(Mechanism)]` implements it for a struct with `closes = ..` bodies.
 pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
-    /// The coordinates' names, in state order.
-    fn coordinate_names(&self) -> [&'static str; N];
-
-    /// M(q) and f(t, q, q̇) of the tree cut open at its closures.
-    fn mass_forcing(
-        &self,
-        t: f64,
-        q: &[f64; N],
-        qdot: &[f64; N],
-    ) -> (SMatrix<f64, N, N>, SVector<f64, N>);
-
     /// φ(q), the closing points' separations (ground axes), and A = ∂φ/∂q.
     fn closure(&self, q: &[f64; N]) -> ([f64; M], SMatrix<f64, M, N>);
 
     /// Ȧq̇ at (q, q̇).
     fn rate_terms(&self, q: &[f64; N], qdot: &[f64; N]) -> SVector<f64, M>;
 
+    /// M(q) and f(t, q, q̇) of the tree cut open at its closures.
+    fn mass_forcing(&self, t: f64, q: &[f64; N], qdot: &[f64; N]) -> MassForcing<N>;
+
     /// T + V.
     fn energy(&self, q: &[f64; N], qdot: &[f64; N]) -> f64;
+
+    /// The coordinates' names, in state order.
+    fn coordinate_names(&self) -> [&'static str; N];
 
     /// Checks the parameters read from fields (the derive overrides it): the tree's rules,
     /// and each planar loop's sides against [`super::check_loop_sides`].
@@ -122,7 +120,10 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
     /// The loop residual max |φ(q)|.
     fn residual(&self, q: &[f64; N]) -> f64 {
         let (phi, _) = self.closure(q);
-        phi.iter().fold(0.0, |m, v| if v.is_nan() { f64::NAN } else { m.max(v.abs()) })
+        phi.iter().fold(
+            0.0,
+            |m, v| if v.is_nan() { f64::NAN } else { m.max(v.abs()) },
+        )
     }
 
     /// The dependent coordinates chosen at q ([`best_partition`]).
@@ -141,7 +142,12 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
     /// [`LagrangeError::DependentChoice`] (naming the dependent coordinates left) when
     /// `free` repeats a coordinate or names one past n; [`LagrangeError::SingularAtState`] where the other coordinates' block is singular
     /// (`free` at a dead point).
-    fn rates_from(&self, q: &[f64; N], free: [usize; K], u: [f64; K]) -> Result<[f64; N], MechanismError> {
+    fn rates_from(
+        &self,
+        q: &[f64; N],
+        free: [usize; K],
+        u: [f64; K],
+    ) -> Result<[f64; N], MechanismError> {
         if q.iter().chain(&u).any(|v| !v.is_finite()) {
             return Err(MechanismError::NonFinite {
                 quantity: "coordinates or free rates",
@@ -174,7 +180,12 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
     /// # Errors
     /// As [`LoopDynamics::check_parameters`]; [`MechanismError::NonFinite`];
     /// [`LagrangeError::SingularAtState`], [`LagrangeError::SingularReducedMass`].
-    fn accelerations(&self, t: f64, q: &[f64; N], qdot: &[f64; N]) -> Result<[f64; N], MechanismError> {
+    fn accelerations(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> Result<[f64; N], MechanismError> {
         self.check_parameters()?;
         Ok(self.solve(t, q, qdot)?.0)
     }
@@ -185,7 +196,12 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
     ///
     /// # Errors
     /// As [`LoopDynamics::accelerations`].
-    fn multipliers(&self, t: f64, q: &[f64; N], qdot: &[f64; N]) -> Result<[f64; M], MechanismError> {
+    fn multipliers(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+    ) -> Result<[f64; M], MechanismError> {
         self.check_parameters()?;
         Ok(self.solve(t, q, qdot)?.1)
     }
@@ -245,7 +261,12 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
         if let Some(bad) = q.iter().chain(qdot.iter()).position(|v| !v.is_finite()) {
             return Err(LagrangeError::NonFiniteState {
                 index: bad,
-                value: q.iter().chain(qdot.iter()).nth(bad).copied().unwrap_or(f64::NAN),
+                value: q
+                    .iter()
+                    .chain(qdot.iter())
+                    .nth(bad)
+                    .copied()
+                    .unwrap_or(f64::NAN),
             }
             .into());
         }
@@ -294,44 +315,55 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
         Ok(iterations)
     }
 
-    /// This mechanism as a [`System`] over `[q, q̇]` (S = 2n entries). Where the projection
-    /// fails the derivative is NaN, which the steppers report; [`super::loop_run`] wraps it in
+    /// This mechanism as a [`System`] over `[q, q̇]` (2n entries). Where the projection
+    /// fails the derivative is NaN, which the steppers report; [`LoopDynamics::closed_run`] wraps it in
     /// the run loop, which keeps the loop closed.
-    fn loop_system<const S: usize>(&self) -> LoopSystem<'_, Self, N, M, K, S>
+    fn loop_system(&self) -> LoopSystem<'_, Self, N, M, K>
     where
         Self: Sized,
     {
-        const { assert!(S == 2 * N, "the state is [q, q̇], 2n numbers") };
         LoopSystem { model: self }
     }
+
+    /// Starts a run at `(t0, y0)`, `y0 = [q, q̇]` (S = 2n), in the one run loop with
+    /// DOP853: a [`Stepper`](crate::ode::Stepper) for [`Run`](crate::ode::Run), trajectories
+    /// and ensembles, which closes the loop after every step ([`super::LoopRun`]).
+    ///
+    /// # Errors
+    /// As [`LoopDynamics::check_parameters`]; [`LagrangeError::StartOffLoop`] when y0 is off
+    /// the loop by more than [`crate::lagrange::START_RESIDUAL`] (close it first with
+    /// [`LoopDynamics::close_loop`], on the branch you mean); [`MechanismError::Ode`] for a
+    /// bad configuration of the stepper or a right-hand side not finite at the start.
+    fn closed_run<const S: usize>(
+        &self,
+        t0: f64,
+        y0: [f64; S],
+        cfg: AdaptiveConfig,
+    ) -> Result<super::LoopRun<'_, Self, N, M, K, S>, MechanismError>
+    where
+        Self: Sized,
+    {
+        self.check_parameters()?;
+        let residual = self.residual(&halves::<N, S>(&y0).0);
+        // Not `residual > START_RESIDUAL`: a NaN residual is no closed loop either.
+        if !(residual <= START_RESIDUAL) {
+            return Err(LagrangeError::StartOffLoop {
+                residual,
+                allowed: START_RESIDUAL,
+            }
+            .into());
+        }
+        let ode = Dop853::new(self.loop_system(), t0, y0, cfg)?;
+        Ok(Hybrid::new(ode)?.with_max_steps(cfg.max_steps))
+    }
 }
 
-/// A loop mechanism as an ODE system: `y = [q, q̇]`, `y' = [q̇, q̈]`.
+/// A loop mechanism as an ODE system: `y = [q, q̇]`, `y' = [q̇, q̈]` (a `System<S>` for
+/// S = 2n only, checked when it is built).
 #[derive(Debug)]
-pub struct LoopSystem<'a, T, const N: usize, const M: usize, const K: usize, const S: usize> {
-    pub(super) model: &'a T,
-}
-
-impl<'a, T, const N: usize, const M: usize, const K: usize, const S: usize>
-    LoopSystem<'a, T, N, M, K, S>
-{
+pub struct LoopSystem<'a, T, const N: usize, const M: usize, const K: usize> {
     /// The mechanism.
-    pub fn model(&self) -> &'a T {
-        self.model
-    }
-}
-
-impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Clone
-    for LoopSystem<'_, T, N, M, K, S>
-{
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Copy
-    for LoopSystem<'_, T, N, M, K, S>
-{
+    pub model: &'a T,
 }
 
 /// q and q̇ of a state `[q, q̇]`.
@@ -343,25 +375,24 @@ pub(super) fn halves<const N: usize, const S: usize>(y: &[f64; S]) -> ([f64; N],
 }
 
 impl<T, const N: usize, const M: usize, const K: usize, const S: usize> System<S>
-    for LoopSystem<'_, T, N, M, K, S>
+    for LoopSystem<'_, T, N, M, K>
 where
     T: LoopDynamics<N, M, K>,
 {
     fn rhs(&self, t: f64, y: &[f64; S], dydt: &mut [f64; S]) {
+        const { assert!(S == 2 * N, "the state is [q, q̇], 2n numbers") };
         let (q, qdot) = halves::<N, S>(y);
-        match self.model.solve(t, &q, &qdot) {
-            Ok((qdd, _)) => {
-                dydt[..N].copy_from_slice(&qdot);
-                dydt[N..].copy_from_slice(&qdd);
-            }
-            Err(_) => dydt.fill(f64::NAN),
-        }
+        // A refused state gives NaN accelerations, which the stepper reports.
+        let qdd = self
+            .model
+            .solve(t, &q, &qdot)
+            .map_or([f64::NAN; N], |(qdd, _)| qdd);
+        dydt[..N].copy_from_slice(&qdot);
+        dydt[N..].copy_from_slice(&qdd);
     }
 
     /// The model's [`LoopDynamics::check_parameters`], before any step.
     fn check_parameters(&self) -> Result<(), OdeError> {
-        self.model
-            .check_parameters()
-            .map_err(MechanismError::into_ode_error)
+        LoopDynamics::check_parameters(self.model).map_err(MechanismError::into_ode_error)
     }
 }

@@ -14,8 +14,8 @@
 //!   rocker instead of stopping), the multipliers are the closing joints' reactions, and
 //!   [`LoopDynamics::close_loop`] pulls a state back onto φ = 0 and A q̇ = 0. The derive
 //!   implements it with straight-line code for `closes = ..` bodies.
-//! - [`loop_run`] runs it in the one run loop, which projects after every step and halts
-//!   with a [`LoopHalt`] where the loop cannot be closed.
+//! - [`LoopDynamics::closed_run`] runs it in the one run loop, which projects after every
+//!   step and halts with a [`LoopHalt`] where the loop cannot be closed.
 
 mod derivation;
 mod dynamics;
@@ -23,6 +23,6 @@ mod run;
 mod scene;
 
 pub use derivation::LoopDerivation;
-pub use dynamics::{LOOP_TOLERANCE, LoopDynamics, LoopSystem, best_partition};
-pub use run::{LoopHalt, LoopRun, loop_run};
+pub use dynamics::{LOOP_TOLERANCE, LoopDynamics, LoopSystem, MassForcing, best_partition};
+pub use run::{LoopHalt, LoopRun};
 pub use scene::{LoopClosure, LoopSide, check_loop_sides};

@@ -5,11 +5,9 @@
 //! folded flat), halts the run with a [`LoopHalt`] instead of stepping on.
 
 use super::dynamics::{LoopDynamics, LoopSystem, halves};
-use crate::lagrange::{LagrangeError, START_RESIDUAL};
+use crate::lagrange::START_RESIDUAL;
 use crate::mechanism::error::MechanismError;
-use crate::ode::{
-    Action, AdaptiveConfig, Dop853, HookAction, Hooks, Hybrid, HybridState, OdeError,
-};
+use crate::ode::{Action, Dop853, HookAction, Hooks, Hybrid, HybridState, OdeError};
 
 /// Why a loop mechanism's run stopped by itself.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,20 +32,13 @@ pub enum LoopHalt {
 
 /// The loop mechanism's run: DOP853 in the one run loop.
 pub type LoopRun<'a, T, const N: usize, const M: usize, const K: usize, const S: usize> =
-    Hybrid<Dop853<LoopSystem<'a, T, N, M, K, S>, S>>;
+    Hybrid<Dop853<LoopSystem<'a, T, N, M, K>, S>>;
 
 impl<T, const N: usize, const M: usize, const K: usize, const S: usize> Hooks<[f64; S]>
-    for LoopSystem<'_, T, N, M, K, S>
+    for LoopSystem<'_, T, N, M, K>
 where
     T: LoopDynamics<N, M, K>,
 {
-    type Mode = ();
-    type Halt = LoopHalt;
-
-    fn mode(&self) {}
-
-    fn set_mode(&mut self, _mode: ()) {}
-
     /// Closes the loop; a failure leaves the state, for [`Hooks::after_step`] to halt on.
     fn project(&self, y: &mut [f64; S]) -> bool {
         let (mut q, mut qdot) = halves::<N, S>(y);
@@ -76,36 +67,11 @@ where
         }
         Ok(Action::Continue)
     }
-}
 
-/// Starts `model` at `(t0, y0)`, `y0 = [q, q̇]`, in the one run loop with DOP853: a
-/// [`Stepper`](crate::ode::Stepper) for [`Run`](crate::ode::Run), trajectories and
-/// ensembles, which keeps the loop closed after every step.
-///
-/// # Errors
-/// As [`LoopDynamics::check_parameters`]; [`LagrangeError::StartOffLoop`] when y0 is off the
-/// loop by more than [`START_RESIDUAL`] (close it first with [`LoopDynamics::close_loop`],
-/// on the branch you mean); [`MechanismError::Ode`] for a bad configuration of the stepper
-/// or a right-hand side that is not finite at the start.
-pub fn loop_run<T, const N: usize, const M: usize, const K: usize, const S: usize>(
-    model: &T,
-    t0: f64,
-    y0: [f64; S],
-    cfg: AdaptiveConfig,
-) -> Result<LoopRun<'_, T, N, M, K, S>, MechanismError>
-where
-    T: LoopDynamics<N, M, K>,
-{
-    model.check_parameters()?;
-    let (q, _) = halves::<N, S>(&y0);
-    let residual = model.residual(&q);
-    if residual.is_nan() || residual > START_RESIDUAL {
-        return Err(LagrangeError::StartOffLoop {
-            residual,
-            allowed: START_RESIDUAL,
-        }
-        .into());
-    }
-    let ode = Dop853::new(model.loop_system::<S>(), t0, y0, cfg)?;
-    Ok(Hybrid::new(ode)?.with_max_steps(cfg.max_steps))
+    type Mode = ();
+    type Halt = LoopHalt;
+
+    fn mode(&self) {}
+
+    fn set_mode(&mut self, _mode: ()) {}
 }

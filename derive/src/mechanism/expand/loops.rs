@@ -16,7 +16,6 @@ use super::Method;
 use crate::lang::ctxt::Ctxt;
 use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
-use crate::lang::symbols::Lowering;
 use crate::mechanism::check::CheckedMechanism;
 use crate::mechanism::closes::CLOSES;
 
@@ -50,27 +49,9 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
     let coords = derivation.coordinates();
     let (n, m) = (coords.len(), derivation.constraints.len());
     let k = n - m;
-    let mut symbols = parameters.tokens();
-    for effort in &checked.efforts {
-        let local = super::local_of(effort);
-        symbols.insert_expr(arena, effort.symbol, quote!(#local));
-    }
-    let low = Lowering::new(cx, ident, symbols);
-    let method = Method {
-        low: &low,
-        coordinates: coords,
-        time: derivation.time,
-        efforts: &checked.efforts,
-    };
-    let eqs = &derivation.equations;
-    let dynamics: Vec<ExprId> = eqs.mass.iter().flatten().chain(&eqs.forcing).copied().collect();
-    let mass_forcing = method.body(arena, &dynamics, |o| {
-        let (mm, f) = o.split_at((n * n).min(o.len()));
-        quote! {(
-            #p::SMatrix::<f64, #n, #n>::from_row_slice(&[#(#mm),*]),
-            #p::SVector::<f64, #n>::from_column_slice(&[#(#f),*]),
-        )}
-    });
+    let low = super::effort_lowering(cx, ident, parameters, arena, &checked.efforts);
+    let method = Method::new(&low, coords, derivation.time, &checked.efforts);
+    let mass_forcing = super::mass_forcing(&method, arena, &derivation.equations);
     let zero = arena.zero();
     let constraints = &derivation.constraints;
     let positions = constraints.positions.iter().map(|h| h.unwrap_or(zero));
@@ -84,18 +65,21 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
             #p::SMatrix::<f64, #m, #n>::from_row_slice(&[#(#a),*]),
         )}
     });
-    let rate_terms = method.body(arena, &derivation.rate_terms, |o| {
-        quote!(#p::SVector::<f64, #m>::from_column_slice(&[#(#o),*]))
-    });
+    let rate_terms = method.body(
+        arena,
+        &derivation.rate_terms,
+        |o| quote!(#p::SVector::<f64, #m>::from_column_slice(&[#(#o),*])),
+    );
     let total = arena.add(derivation.kinetic, derivation.potential);
     let energy = method.body(arena, &[total], |o| quote!(#(#o)*));
     let names = checked
         .coordinates
         .iter()
         .map(|c| LitStr::new(&c.to_string(), c.span()));
-    let row_names = derivation.rows.iter().map(|&(c, axis)| {
-        format!("{}.{}", closures[c].name, ["x", "y", "z"][axis])
-    });
+    let row_names = derivation
+        .rows
+        .iter()
+        .map(|&(c, axis)| format!("{}.{}", closures[c].name, ["x", "y", "z"][axis]));
     let consts = super::coordinate_consts(checked, "q and q̇");
     let sides: Vec<_> = derivation
         .sides
@@ -103,7 +87,8 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
         .zip(&closures)
         .filter_map(|(s, c)| Some((c.name.clone(), s.clone()?)))
         .collect();
-    let check_parameters = super::super::parameters::method_with_loops(&low, arena, checked, &sides);
+    let check_parameters =
+        super::super::parameters::method_with_loops(&low, arena, checked, &sides);
     let poses = super::super::poses::expand(cx, ident, arena, &method, checked, coords);
     let doc_rows = format!(
         "The closure rows, `body.axis` for the ground-axis component of each closing point's \
@@ -117,19 +102,13 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
             #(#consts)*
             #[doc = #doc_rows]
             pub const CLOSURE_ROWS: [&'static str; #m] = [#(#row_names),*];
-            /// The length of the state [q, q̇]: `precess::mechanism::loops::loop_run` takes it.
+            /// The length of the state [q, q̇]: `LoopDynamics::closed_run` takes it.
             pub const STATE: usize = 2 * #n;
         }
 
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
         impl #p::LoopDynamics<#n, #m, #k> for #ident {
-            fn coordinate_names(&self) -> [&'static str; #n] {
-                [#(#names),*]
-            }
-
-            fn mass_forcing(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> (#p::SMatrix<f64, #n, #n>, #p::SVector<f64, #n>) #mass_forcing
-
             fn closure(&self, q: &[f64; #n]) -> ([f64; #m], #p::SMatrix<f64, #m, #n>) {
                 // The closures do not depend on time or rates.
                 let (t, qdot) = (0.0_f64, &[0.0_f64; #n]);
@@ -141,9 +120,15 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
                 #rate_terms
             }
 
+            fn mass_forcing(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> (#p::SMatrix<f64, #n, #n>, #p::SVector<f64, #n>) #mass_forcing
+
             fn energy(&self, q: &[f64; #n], qdot: &[f64; #n]) -> f64 {
                 let t = 0.0_f64;
                 #energy
+            }
+
+            fn coordinate_names(&self) -> [&'static str; #n] {
+                [#(#names),*]
             }
 
             #check_parameters
