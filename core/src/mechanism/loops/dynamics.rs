@@ -345,8 +345,7 @@ pub trait LoopDynamics<const N: usize, const M: usize, const K: usize> {
     {
         self.check_parameters()?;
         let residual = self.residual(&halves::<N, S>(&y0).0);
-        // Not `residual > START_RESIDUAL`: a NaN residual is no closed loop either.
-        if !(residual <= START_RESIDUAL) {
+        if residual.is_nan() || residual > START_RESIDUAL {
             return Err(LagrangeError::StartOffLoop {
                 residual,
                 allowed: START_RESIDUAL,
