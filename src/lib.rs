@@ -104,6 +104,7 @@ pub mod prelude {
         ContactDynamics, ContactError, ContactSystem, LawKind, Phase, Reaction,
     };
     pub use precess_core::free::{FreeDynamics, FreeError, FreeFlight, FreeState, FreeSystem};
+    pub use precess_core::mechanism::loops::LoopDynamics;
     pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, ChartedMechanism, MechanismDynamics, MechanismError,
@@ -134,6 +135,7 @@ pub mod __private {
     };
     pub use precess_core::lagrange::Partition;
     pub use precess_core::mechanism::charts::SphericalJoint;
+    pub use precess_core::mechanism::loops::{LoopDynamics, check_loop_sides};
     pub use precess_core::mechanism::rolling::RollingDynamics;
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, LinkPose, MechanismDynamics, MechanismError, MechanismPoses,

@@ -52,6 +52,8 @@ mod mechanism {
     mod free_joint;
     mod jacobian;
     mod kane;
+    mod loops;
+    mod loops_slider;
     mod parameters;
     mod pendulum;
     mod poses;

@@ -274,6 +274,40 @@ pub enum MechanismError {
         /// [N, M, K] of the model's type.
         asked: [usize; 3],
     },
+    /// A planar loop whose longest side is not shorter than the sum of the others: it
+    /// cannot close, or closes only folded flat ([`super::loops::check_loop_sides`]).
+    #[error(
+        "the loop closed by `{closure}` cannot close: the side of `{body}` is {longest}, not shorter than the sum of the others, {others}"
+    )]
+    LoopCannotClose {
+        /// The closing body.
+        closure: String,
+        /// The body (or `"ground"`) with the longest side.
+        body: String,
+        /// That side's length.
+        longest: f64,
+        /// The sum of the other sides.
+        others: f64,
+    },
+    /// The closures give as many independent-looking rows as there are coordinates, or
+    /// more: nothing would be left to move.
+    #[error(
+        "the loop closures give {rows} constraint rows on {coordinates} coordinates, leaving no free coordinate"
+    )]
+    TooManyClosureRows {
+        /// The closure rows (identically zero components left out).
+        rows: usize,
+        /// The coordinates.
+        coordinates: usize,
+    },
+    /// A closure names a body index past the mechanism's bodies.
+    #[error("a loop closure names body number {body}, but there are only {count} bodies")]
+    UnknownClosureBody {
+        /// The index given.
+        body: usize,
+        /// How many bodies there are.
+        count: usize,
+    },
     /// A parameter could not be bound.
     #[error(transparent)]
     Binding(#[from] BindingError),
@@ -386,6 +420,15 @@ impl MechanismError {
                 let (quantity, value) = body_quantity(error);
                 (format!("body `{body}`: {quantity}"), value)
             }
+            MechanismError::LoopCannotClose {
+                closure,
+                body,
+                longest,
+                ..
+            } => (
+                format!("loop closed by `{closure}`: side of `{body}`"),
+                *longest,
+            ),
             MechanismError::Binding(b) => binding_quantity(b),
             _ => ("parameters".to_owned(), f64::NAN),
         };

@@ -22,6 +22,9 @@
 //!   parts, the power and every generalised momentum per sample, named as a top's.
 //! - [`rolling`]: bodies whose wheels roll without slip on a floor (nonholonomic rows, the
 //!   Whipple bicycle), [`MechanismScene::derive_rolling`] and [`rolling::RollingDynamics`].
+//! - [`loops`]: closed kinematic loops (`closes = ..`: a four-bar, a slider-crank),
+//!   [`MechanismScene::derive_loops`] and [`loops::LoopDynamics`], the dependent coordinates
+//!   chosen at each configuration and the loop closed after every step.
 //! - [`MechanismDerivation::taylor_tape`] gives the Taylor recurrences of `(q, q̇)' = (q̇, q̈)`
 //!   for [`crate::taylor`]'s integrator (`taylor = K` on `#[mechanism]` generates them).
 //!
@@ -42,6 +45,7 @@ mod dynamics;
 mod error;
 mod interpreted;
 mod kinematics;
+pub mod loops;
 mod poses;
 mod quantities;
 pub mod rolling;

@@ -4,11 +4,13 @@
 //! before any is given up on.
 
 use precess_core::body::{Description, check_part, evaluate, mass_properties};
+use precess_core::mechanism::loops::LoopClosure;
 use precess_core::mechanism::{JointKind, MechanismBody, MechanismScene, Parent, Route};
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
 use super::attr::{LinkAttr, LinkItem, Links};
+use super::closes::{CLOSES, ClosesSpec};
 use super::joint::path_ident;
 use super::loads::Coordinate;
 use super::rolling::{CheckedRolling, RollingSettings, WheelSpec};
@@ -42,6 +44,8 @@ pub struct CheckedMechanism {
     pub parts: Vec<Description<ExprId>>,
     /// The wheels, the floor and the free speeds, when bodies roll.
     pub rolling: Option<CheckedRolling>,
+    /// The loop closures (`closes = ..`), in the order of the bodies, with their tokens.
+    pub loops: Vec<(LoopClosure, ClosesSpec)>,
 }
 
 /// One link as read, before the tree is checked.
@@ -64,6 +68,8 @@ pub(super) struct LinkSpec<'a> {
     pub(super) parts: Description<ExprId>,
     /// Its rolling surface, if it rolls.
     pub(super) rolls: Option<WheelSpec>,
+    /// The loop it closes, if it closes one.
+    pub(super) closes: Option<ClosesSpec>,
 }
 
 /// Checks every attribute; `None` after recording why the mechanism cannot be derived.
@@ -107,6 +113,7 @@ pub fn check(
     if !ck.refuse_coordinate_names(&names, "the mechanism") {
         return None;
     }
+    let loops = super::closes::resolve(ck, &specs)?;
     let mut wheels = Vec::new();
     let mut bodies = Vec::with_capacity(specs.len());
     let mut parts = Vec::with_capacity(specs.len());
@@ -119,6 +126,13 @@ pub fn check(
         parts.push(spec.parts);
     }
     let rolling = super::rolling::rolling(ck, &rolling_settings, wheels, &coordinates)?;
+    if let (Some(_), Some((_, closes))) = (&rolling, loops.first()) {
+        ck.cx.error_spanned_by(
+            &closes.key,
+            format!("`{CLOSES}` cannot be used with rolling bodies (`{}`): a mechanism either rolls or closes loops", keys::ROLLS),
+        );
+        return None;
+    }
     Some(CheckedMechanism {
         scene: MechanismScene { bodies, gravity },
         coordinates,
@@ -126,6 +140,7 @@ pub fn check(
         route,
         parts,
         rolling,
+        loops,
     })
 }
 
@@ -179,6 +194,7 @@ pub(super) struct LinkKeys<'a> {
     pub(super) space_torque: Option<&'a Expr>,
     pub(super) spring: Option<(&'a Ident, &'a [KeyValue])>,
     pub(super) rolls: Option<(&'a Ident, &'a Expr)>,
+    pub(super) closes: Option<(&'a Ident, &'a Expr)>,
     pub(super) parts: Option<(&'a Ident, &'a [Item])>,
 }
 
@@ -234,6 +250,9 @@ impl Checker<'_> {
                 ),
                 LinkItem::Item(Item::Setting(kv)) if kv.key == keys::ROLLS => {
                     k.rolls = Some((&kv.key, &kv.value));
+                }
+                LinkItem::Item(Item::Setting(kv)) if kv.key == CLOSES => {
+                    k.closes = Some((&kv.key, &kv.value));
                 }
                 LinkItem::Item(Item::Setting(kv)) => {
                     let slot = match kv.key.to_string().as_str() {
@@ -313,6 +332,7 @@ impl Checker<'_> {
                 key: key.clone(),
             })
         });
+        let closes = k.closes.map(|(key, e)| self.closes(key, e));
         let body_torque = k
             .body_torque
             .map(|e| self.expecting(Dim::TORQUE, keys::BODY_TORQUE, |ck| ck.vector(e)));
@@ -369,6 +389,7 @@ impl Checker<'_> {
             body,
             parts: description,
             rolls: rolls.flatten(),
+            closes: closes.flatten(),
         })
     }
 

@@ -21,6 +21,7 @@ use crate::lang::symbols::{FieldParameters, Lowering};
 use crate::lang::variational::VariationalKey;
 
 mod charts;
+mod loops;
 mod rolling;
 
 /// Past this many operations q̈ and its pivots are emitted once, in a function the checked
@@ -37,6 +38,17 @@ pub fn expand(
 ) -> Option<TokenStream> {
     if let Some(rolling) = &checked.rolling {
         return rolling::expand(ex, checked, rolling);
+    }
+    if let Some((_, closes)) = checked.loops.first() {
+        // Taylor coefficients and variational equations are of an unconstrained q̈.
+        if taylor.is_some() || variational.is_some() {
+            ex.cx.error_spanned_by(
+                &closes.key,
+                "`closes` cannot be used with `taylor` or `variational(...)` on `#[mechanism]`: their equations are the tree's, without the loop",
+            );
+            return None;
+        }
+        return loops::expand(ex, checked);
     }
     let (cx, ident, parameters, arena) = ex.split();
     let p = Private;
@@ -244,6 +256,46 @@ pub fn expand(
     })
 }
 
+/// The lowering of a mechanism's methods: the fields by `parameters`, each user effort's
+/// value by the local its call is bound to.
+pub(super) fn effort_lowering<'a>(
+    cx: &'a Ctxt,
+    ident: &'a Ident,
+    parameters: &FieldParameters,
+    arena: &mut Arena,
+    efforts: &[UserEffort],
+) -> Lowering<'a> {
+    let mut symbols = parameters.tokens();
+    for effort in efforts {
+        let local = local_of(effort);
+        symbols.insert_expr(arena, effort.symbol, quote!(#local));
+    }
+    Lowering::new(cx, ident, symbols)
+}
+
+/// `(M, f)` of `eqs` as an `(SMatrix<n, n>, SVector<n>)`, one straight-line block.
+pub(super) fn mass_forcing(
+    method: &Method,
+    arena: &mut Arena,
+    eqs: &precess_core::lagrange::EquationsOfMotion,
+) -> TokenStream {
+    let (p, n) = (Private, eqs.coords.len());
+    let dynamics: Vec<ExprId> = eqs
+        .mass
+        .iter()
+        .flatten()
+        .chain(&eqs.forcing)
+        .copied()
+        .collect();
+    method.body(arena, &dynamics, |o| {
+        let (mm, f) = o.split_at((n * n).min(o.len()));
+        quote! {(
+            #p::SMatrix::<f64, #n, #n>::from_row_slice(&[#(#mm),*]),
+            #p::SVector::<f64, #n>::from_column_slice(&[#(#f),*]),
+        )}
+    })
+}
+
 /// The local a user effort's value is held in.
 fn local_of(effort: &UserEffort) -> Ident {
     format_ident!("__effort_{}", effort.index)
@@ -288,7 +340,22 @@ pub(super) struct Method<'a> {
     pub(super) efforts: &'a [UserEffort],
 }
 
-impl Method<'_> {
+impl<'a> Method<'a> {
+    /// The lowering of methods over `coordinates` and `time`, calling `efforts`.
+    pub(super) fn new(
+        low: &'a Lowering<'a>,
+        coordinates: &'a Coordinates,
+        time: ExprId,
+        efforts: &'a [UserEffort],
+    ) -> Method<'a> {
+        Method {
+            low,
+            coordinates,
+            time,
+            efforts,
+        }
+    }
+
     /// `{ user calls; lets; build(outputs) }`.
     pub(super) fn body(
         &self,

@@ -10,6 +10,7 @@
 
 pub mod attr;
 pub mod check;
+mod closes;
 pub mod expand;
 mod fallback;
 mod jacobian;

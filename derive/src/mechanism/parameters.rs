@@ -7,6 +7,7 @@
 
 use precess_core::body::{Description, Part, evaluate};
 use precess_core::codegen::Emitted;
+use precess_core::mechanism::loops::LoopSide;
 use precess_core::mechanism::rolling::WheelSurface;
 use precess_core::mechanism::{JointKind, MechanismScene};
 use precess_core::sym::{Arena, ExprId};
@@ -21,6 +22,17 @@ use crate::lang::tokens::{orientation, shape};
 
 /// `fn check_parameters(&self)`, or nothing when no checked value reads a field.
 pub fn method(low: &Lowering, arena: &mut Arena, checked: &CheckedMechanism) -> TokenStream {
+    method_with_loops(low, arena, checked, &[])
+}
+
+/// As [`method`], with the closure rule on each planar loop's sides (closure, sides) that
+/// read a field.
+pub fn method_with_loops(
+    low: &Lowering,
+    arena: &mut Arena,
+    checked: &CheckedMechanism,
+    loops: &[(String, Vec<LoopSide>)],
+) -> TokenStream {
     let p = Private;
     let user = |e: ExprId| checked.efforts.iter().any(|u| u.symbol == e);
     let mut checks = Checks::default();
@@ -73,6 +85,9 @@ pub fn method(low: &Lowering, arena: &mut Arena, checked: &CheckedMechanism) -> 
         for (wheel, body) in rolling.scene.wheels.iter().zip(&rolling.bodies) {
             checks.wheel(arena, body, &wheel.surface);
         }
+    }
+    for (closure, sides) in loops {
+        checks.loop_sides(arena, closure, sides);
     }
     if checks.values.is_empty() {
         return TokenStream::new();
@@ -178,6 +193,26 @@ impl Checks {
                 }}
             }));
         }
+    }
+
+    /// A planar loop's sides, when one reads a field: their lengths √(side²) through
+    /// `check_loop_sides`, the rule literal sides met while expanding.
+    fn loop_sides(&mut self, arena: &Arena, closure: &str, sides: &[LoopSide]) {
+        if !sides.iter().any(|s| reads_field(arena, s.squared)) {
+            return;
+        }
+        let indices: Vec<usize> = sides.iter().map(|s| self.value(s.squared)).collect();
+        let names: Vec<String> = sides.iter().map(|s| s.body.clone()).collect();
+        let closure = closure.to_owned();
+        self.tests.push(Box::new(move |o| {
+            let p = Private;
+            let values = indices
+                .iter()
+                .map(|&i| o.get(i).cloned().unwrap_or_default());
+            quote! {
+                #p::check_loop_sides(#closure, &[#((#names, f64::max(#values, 0.0).sqrt())),*])?;
+            }
+        }));
     }
 
     /// A rolling body's surface: its hub or centre finite, its radius positive, a disk's

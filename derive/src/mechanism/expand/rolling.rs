@@ -14,7 +14,6 @@ use syn::LitStr;
 use super::Method;
 use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
-use crate::lang::symbols::Lowering;
 use crate::mechanism::check::CheckedMechanism;
 use crate::mechanism::rolling::CheckedRolling;
 
@@ -62,28 +61,9 @@ pub(super) fn expand(
         derivation.independent.len(),
     );
     let wheels = derivation.tilts.len();
-    let mut symbols = parameters.tokens();
-    for effort in &checked.efforts {
-        let local = super::local_of(effort);
-        symbols.insert_expr(arena, effort.symbol, quote!(#local));
-    }
-    let low = Lowering::new(cx, ident, symbols);
-    let method = Method {
-        low: &low,
-        coordinates: coords,
-        time: derivation.time,
-        efforts: &checked.efforts,
-    };
-    let eqs = &derivation.equations;
-    let mass: Vec<ExprId> = eqs.mass.iter().flatten().copied().collect();
-    let dynamics: Vec<ExprId> = mass.iter().chain(&eqs.forcing).copied().collect();
-    let mass_forcing = method.body(arena, &dynamics, |o| {
-        let (mm, f) = o.split_at((n * n).min(o.len()));
-        quote! {(
-            #p::SMatrix::<f64, #n, #n>::from_row_slice(&[#(#mm),*]),
-            #p::SVector::<f64, #n>::from_column_slice(&[#(#f),*]),
-        )}
-    });
+    let low = super::effort_lowering(cx, ident, parameters, arena, &checked.efforts);
+    let method = Method::new(&low, coords, derivation.time, &checked.efforts);
+    let mass_forcing = super::mass_forcing(&method, arena, &derivation.equations);
     let rows: Vec<ExprId> = derivation
         .constraints
         .coefficients
