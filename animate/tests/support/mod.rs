@@ -1,4 +1,4 @@
-//! What the animation tests share: the tippe top's run, a heavy top's precession, and a
+//! What the animation tests share: the tippe top's run (of `precess::models`' top), a heavy top's precession, and a
 //! reader of a `.glb`'s accessors.
 
 #![allow(dead_code)] // each test file uses the part it needs
@@ -7,32 +7,15 @@ pub mod browser;
 
 use gltf_json::Root;
 use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN};
-use precess::nalgebra::{UnitQuaternion, Vector3};
 use precess::ode::HybridState;
 use precess::ode::{AdaptiveConfig, Run, Trajectory};
 use precess::prelude::*;
 
-/// The tippe top of the `tippe_top` example: R = 2 cm, α = 0.3, M = 20 g, I₁ = 0.35 M R²,
-/// I₃ = 0.4 M R², viscous friction c.
-#[derive(RigidBody)]
-#[rigid(body(
-    mass = 0.02,
-    inertia = diag(0.35 * 0.02 * 0.02 * 0.02, 0.35 * 0.02 * 0.02 * 0.02, 0.4 * 0.02 * 0.02 * 0.02),
-))]
-#[contact(
-    surface = sphere(radius = 0.02, center = [0.0, 0.0, 0.3 * 0.02]),
-    law = sliding(viscous = viscous),
-    gravity = 9.81,
-)]
-pub struct Tippe {
-    /// The viscous friction coefficient c [kg/s].
-    pub viscous: f64,
-}
+pub use precess::models::TippeTop as Tippe;
+pub use precess::models::tippe_top::RADIUS;
 
-/// The sphere's radius R [m].
-pub const RADIUS: f64 = 0.02;
 /// The offset αR of the sphere's centre above the centre of mass [m].
-pub const OFFSET: f64 = 0.3 * 0.02;
+pub const OFFSET: f64 = precess::models::tippe_top::ALPHA * RADIUS;
 
 /// The tippe top started 0.1 rad off upright at 140 rad/s, run to `t_end`, sampled every
 /// `every` s (the example's run: it has turned over by 8 s).
@@ -41,11 +24,7 @@ pub fn tippe_run(
     every: f64,
 ) -> (Tippe, Trajectory<HybridState<Phase, [f64; STATE_LEN]>>) {
     let model = Tippe { viscous: 0.1 };
-    let q = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.1);
-    let q = q.quaternion();
-    let mut y0 = [0.0; STATE_LEN];
-    y0[4..8].copy_from_slice(&[q.w, q.i, q.j, q.k]);
-    y0[10] = 140.0;
+    let y0 = Tippe::start(0.1, 140.0);
     let mut cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
     cfg.max_steps = 10_000_000;
     let phase = model.law().first_phase();

@@ -329,6 +329,9 @@ pub const JOINT_KINDS: &[&str] = &precess_core::mechanism::JointKind::NAMES;
 /// The surface a mechanism's body rolls on the floor with, `rolls = disk(..)` or
 /// `rolls = sphere(..)`.
 pub const ROLLS: &str = "rolls";
+/// A body's point held on another body's point, closing a kinematic loop:
+/// `closes = other(at = [..], to = [..])`.
+pub const CLOSES: &str = "closes";
 /// The floor's upward normal of a mechanism with rolling bodies: a signed ground axis.
 pub const UP: &str = "up";
 /// The coordinates whose rates are a rolling mechanism's free speeds, `speeds = [a, b]`.
@@ -353,6 +356,7 @@ pub const LINK_KEYS: &[&str] = &[
     BODY_TORQUE,
     SPACE_TORQUE,
     ROLLS,
+    CLOSES,
 ];
 /// The `name(...)` groups of `#[link(...)]`.
 pub const LINK_GROUPS: &[&str] = &[PARTS_GROUP, SPRING];

@@ -14,8 +14,7 @@ use crate::lang::check::Checker;
 use crate::lang::keys;
 use crate::lang::units::Dim;
 
-/// The key on `#[body(...)]`.
-pub const CLOSES: &str = "closes";
+pub use keys::CLOSES;
 /// The point on the other body.
 const TO: &str = "to";
 

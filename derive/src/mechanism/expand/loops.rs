@@ -33,7 +33,8 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
             cx.error_spanned_by(
                 &last.value,
                 format!(
-                    "`{CLOSES}` adds too many constraints: the closures hold {rows} components of their points on {coordinates} coordinates, leaving no free coordinate; give the mechanism more joints or close fewer loops"
+                    "`{CLOSES}` adds too many constraints: the closures hold {rows} components of their points on {coordinates} {}, leaving no free coordinate; give the mechanism more joints or close fewer loops",
+                    if coordinates == 1 { "coordinate" } else { "coordinates" }
                 ),
             );
             return None;
