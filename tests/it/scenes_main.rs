@@ -83,6 +83,7 @@ mod contact {
     mod errors;
     mod events;
     mod invariants;
+    mod laws;
     mod newton_euler;
     mod properties;
     pub mod reference;
