@@ -93,6 +93,7 @@ mod contact {
     mod stick_slip;
     mod support;
     mod system_checks;
+    mod tippe_laws;
     mod tippe_top;
 }
 /// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.
