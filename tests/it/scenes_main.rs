@@ -80,6 +80,7 @@ mod top {
 }
 /// The contact scene: a body on a table.
 mod contact {
+    mod derived_laws;
     mod errors;
     mod events;
     mod invariants;
