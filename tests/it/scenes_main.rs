@@ -80,6 +80,7 @@ mod top {
 }
 /// The contact scene: a body on a table.
 mod contact {
+    mod coin;
     mod derived_laws;
     mod errors;
     mod events;
