@@ -111,7 +111,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     let curve = |trajectory: &precess::ode::Trajectory<_>| -> Vec<(f64, f64)> {
         let s = trajectory.column("spin").unwrap_or_default();
-        trajectory.times().iter().copied().zip(s.iter().copied()).collect()
+        trajectory
+            .times()
+            .iter()
+            .copied()
+            .zip(s.iter().copied())
+            .collect()
     };
     let axes = Axes {
         title: "A coin spun on its edge",

@@ -122,9 +122,7 @@ impl ContactScene {
         let tau = applied(arena, &k, &torques)?;
         let (rolling, sliding) = match self.law {
             ContactLaw::Rolling { .. } => (Some(self.rolling(arena, &k, &tau)?), None),
-            ContactLaw::Sliding(friction) => {
-                (None, Some(self.sliding(arena, &k, friction, &tau)?))
-            }
+            ContactLaw::Sliding(friction) => (None, Some(self.sliding(arena, &k, friction, &tau)?)),
             ContactLaw::StickSlip { mu } => (
                 Some(self.rolling(arena, &k, &tau)?),
                 Some(self.sliding(arena, &k, Friction::Coulomb(mu), &tau)?),
@@ -449,17 +447,17 @@ fn applied(
     let per_normal = match torques.pivoting {
         None => None,
         Some(l) => {
-        let floor = Rational::new(1, 10)
-            .and_then(|r| r.checked_pow(SIGN_FLOOR_EXPONENT))
-            .unwrap_or(Rational::ZERO);
-        let floor = arena.constant(floor);
-        let w2 = arena.mul(w_g, w_g);
-        let w2 = arena.add(w2, floor);
-        let size = arena.sqrt(w2)?;
-        let sign = arena.div(w_g, size)?;
-        let nl = arena.neg(l);
-        let scale = arena.mul(nl, sign);
-        Some(k.gamma.map(|g| arena.mul(scale, g)))
+            let floor = Rational::new(1, 10)
+                .and_then(|r| r.checked_pow(SIGN_FLOOR_EXPONENT))
+                .unwrap_or(Rational::ZERO);
+            let floor = arena.constant(floor);
+            let w2 = arena.mul(w_g, w_g);
+            let w2 = arena.add(w2, floor);
+            let size = arena.sqrt(w2)?;
+            let sign = arena.div(w_g, size)?;
+            let nl = arena.neg(l);
+            let scale = arena.mul(nl, sign);
+            Some(k.gamma.map(|g| arena.mul(scale, g)))
         }
     };
     Ok(Applied { fixed, per_normal })
@@ -478,7 +476,11 @@ impl ContactScene {
         } = self.law
         {
             for (name, law, extra) in [
-                ("rolling_resistance", rolling_resistance, &mut out.rolling_resistance),
+                (
+                    "rolling_resistance",
+                    rolling_resistance,
+                    &mut out.rolling_resistance,
+                ),
                 ("spin_resistance", spin_resistance, &mut out.spin_resistance),
             ] {
                 match (law, &*extra) {

@@ -13,8 +13,8 @@ use precess_core::contact::{
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::{quote, quote_spanned};
-use syn::spanned::Spanned;
 use syn::Ident;
+use syn::spanned::Spanned;
 
 use super::check::ContactSettings;
 use crate::lang::ctxt::Ctxt;
@@ -39,7 +39,8 @@ pub fn expand(
     // The user couple enters the derivation as three input symbols, read from the value the
     // user function returns.
     if settings.couple.is_some() {
-        let u: [ExprId; 3] = std::array::from_fn(|i| arena.input(&format!("contact_couple_{}", i + 1)));
+        let u: [ExprId; 3] =
+            std::array::from_fn(|i| arena.input(&format!("contact_couple_{}", i + 1)));
         for (i, &ui) in u.iter().enumerate() {
             symbols.insert_expr(arena, ui, quote!(__u[#i]));
         }
@@ -50,7 +51,8 @@ pub fn expand(
         .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
     let low = Lowering::new(cx, ident, symbols);
-    let couple = |arena: &Arena, outputs: &[ExprId]| couple_call(arena, outputs, settings, &torques);
+    let couple =
+        |arena: &Arena, outputs: &[ExprId]| couple_call(arena, outputs, settings, &torques);
     let method = StateMethod {
         low: &low,
         state: &derivation.state,
@@ -161,13 +163,7 @@ pub fn expand(
         }
         None => quote!({ ::core::option::Option::None }),
     };
-    let (check, values) = check_parameters(
-        (cx, ident),
-        parameters,
-        &low,
-        arena,
-        &derivation,
-    );
+    let (check, values) = check_parameters((cx, ident), parameters, &low, arena, &derivation);
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -236,11 +232,10 @@ fn couple_call(
     let (Some(path), Some(u)) = (&settings.couple, torques.user) else {
         return TokenStream::new();
     };
-    let read = u.iter().filter_map(|&e| arena.as_symbol(e)).any(|s| {
-        outputs
-            .iter()
-            .any(|&o| arena.free_symbols(o).contains(&s))
-    });
+    let read = u
+        .iter()
+        .filter_map(|&e| arena.as_symbol(e))
+        .any(|s| outputs.iter().any(|&o| arena.free_symbols(o).contains(&s)));
     if !read {
         return TokenStream::new();
     }

@@ -20,10 +20,7 @@ fn coin() -> NumBody {
         mass: m,
         center: [0.0; 3],
         inertia: [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, 2.0 * i]],
-        surface: NumSurface::DiskRim {
-            c: [0.0; 3],
-            rho,
-        },
+        surface: NumSurface::DiskRim { c: [0.0; 3], rho },
         gravity: 9.81,
     }
 }
@@ -74,7 +71,10 @@ fn a_coin_with_coulomb_and_pivoting_friction_comes_to_rest_at_the_closed_form_ti
         run.advance_to(t_star).unwrap(),
         ContactOutcome::Reached { t: t_star }
     );
-    let w = m.contact(run.y()).gamma.dot(&Vector3::new(run.y()[8], run.y()[9], run.y()[10]));
+    let w = m
+        .contact(run.y())
+        .gamma
+        .dot(&Vector3::new(run.y()[8], run.y()[9], run.y()[10]));
     let expected = w0 * (-cs * t_star / body.inertia[0][0]).exp();
     println!("  linear spin resistance: ω = {w} at t* against ω₀ e^(−c_s t*/I_d) = {expected}");
     assert!((w / expected - 1.0).abs() < 1e-9, "{w} vs {expected}");

@@ -78,11 +78,19 @@ fn interpreted(law: &str, f: Couple) -> ContactModel {
             pivoting: Some(p(&mut a, "l")),
             user: Some(u),
         };
-        (ContactLaw::StickSlip { mu: p(&mut a, "mu") }, torques)
+        (
+            ContactLaw::StickSlip {
+                mu: p(&mut a, "mu"),
+            },
+            torques,
+        )
     } else {
         values.push(("mu", 0.3));
         let mu = p(&mut a, "mu");
-        (ContactLaw::Sliding(Friction::NormalViscous(mu)), ContactTorques::default())
+        (
+            ContactLaw::Sliding(Friction::NormalViscous(mu)),
+            ContactTorques::default(),
+        )
     };
     let scene = ContactScene {
         mass: m,
@@ -150,7 +158,10 @@ fn the_derived_resistances_pivoting_and_couple_match_the_interpreted_model() {
     let rolling = gap(&derived, &model, Phase::Rolling, &states(false, &model));
     let sliding = gap(&derived, &model, Phase::Sliding, &states(true, &model));
     println!("derived against interpreted: rolling {rolling:e}, sliding {sliding:e}");
-    assert!(rolling < 1e-12 && sliding < 1e-12, "{rolling:e} {sliding:e}");
+    assert!(
+        rolling < 1e-12 && sliding < 1e-12,
+        "{rolling:e} {sliding:e}"
+    );
     // The couple is read: against a model without it the two differ.
     let bare = interpreted("stick_slip", |_, _| Vector3::zeros());
     let without = gap(&derived, &bare, Phase::Rolling, &states(false, &model));

@@ -5,8 +5,7 @@
 
 use nalgebra::{UnitQuaternion, Vector3};
 use precess::contact::{
-    ContactDynamics, ContactError, ContactOutcome, ContactRun, ContactScene, ContactTorques,
-    Phase,
+    ContactDynamics, ContactError, ContactOutcome, ContactRun, ContactScene, ContactTorques, Phase,
 };
 use precess::ode::AdaptiveConfig;
 use precess::sym::{Arena, Rational};
@@ -24,10 +23,7 @@ fn ball() -> NumBody {
         mass: m,
         center: [0.0; 3],
         inertia: [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, i]],
-        surface: NumSurface::Sphere {
-            c: [0.0; 3],
-            rho,
-        },
+        surface: NumSurface::Sphere { c: [0.0; 3], rho },
         gravity: 9.81,
     }
 }
@@ -49,7 +45,11 @@ fn pivoting_friction_stops_a_spin_at_i_omega_over_l_n() {
     let i = body.inertia[2][2];
     let t_star = i * w0 / (l * body.mass * body.gravity);
     let y0 = m
-        .rolling_state([0.0, 0.0], &UnitQuaternion::identity(), &Vector3::new(0.0, 0.0, w0))
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(0.0, 0.0, w0),
+        )
         .unwrap();
     let cfg = AdaptiveConfig::with_tol(TIGHT, TIGHT);
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
@@ -64,11 +64,16 @@ fn pivoting_friction_stops_a_spin_at_i_omega_over_l_n() {
     else {
         panic!("{out:?}")
     };
-    println!("spin stopped at {t} s against I ω₀/(ℓ_p M g) = {t_star} s; spin {spin:e} ≤ {threshold:e}");
+    println!(
+        "spin stopped at {t} s against I ω₀/(ℓ_p M g) = {t_star} s; spin {spin:e} ≤ {threshold:e}"
+    );
     // The witness fires where |ω₃| = δ_ω = 10⁻⁹ of the angular scale, δ_ω I/(ℓ_p M g) early,
     // at the last double where the spin is still above it.
     assert!(((t - t_star) / t_star).abs() < 1e-8, "{t} vs {t_star}");
-    assert!(spin.abs() >= threshold && spin.abs() < threshold * (1.0 + 1e-6), "{spin:e}");
+    assert!(
+        spin.abs() >= threshold && spin.abs() < threshold * (1.0 + 1e-6),
+        "{spin:e}"
+    );
 }
 
 #[test]
@@ -105,9 +110,17 @@ fn a_spin_the_friction_cannot_hold_passes_through_zero() {
     for s in &through {
         let (before, after) = (s.state, s.after);
         let spin = |y: &[f64; 11]| m.contact(y).gamma.dot(&Vector3::new(y[8], y[9], y[10]));
-        assert!(spin(&before) * spin(&after) < 0.0, "{} → {}", spin(&before), spin(&after));
+        assert!(
+            spin(&before) * spin(&after) < 0.0,
+            "{} → {}",
+            spin(&before),
+            spin(&after)
+        );
         // No energy added at the pass.
-        let (e0, e1) = (m.energy(Phase::Rolling, &before), m.energy(Phase::Rolling, &after));
+        let (e0, e1) = (
+            m.energy(Phase::Rolling, &before),
+            m.energy(Phase::Rolling, &after),
+        );
         assert!(e1 - e0 <= 1e-15 * e0.abs(), "{e0} → {e1}");
     }
 }
@@ -132,8 +145,18 @@ fn pivoting_and_normal_viscous_friction_match_newton_euler() {
         let rolling = stick.rolling_state([0.1, 0.2], &q, &w).unwrap();
         let sliding = state([0.1, 0.2], [0.3 * x.cos(), -0.2 * x.sin()], &q, &w);
         for (model, law, phase, y) in [
-            (&stick, NumLaw::Rolling { cr: None, cs: None }, Phase::Rolling, rolling),
-            (&viscous, NumLaw::NormalViscous(0.4), Phase::Sliding, sliding),
+            (
+                &stick,
+                NumLaw::Rolling { cr: None, cs: None },
+                Phase::Rolling,
+                rolling,
+            ),
+            (
+                &viscous,
+                NumLaw::NormalViscous(0.4),
+                Phase::Sliding,
+                sliding,
+            ),
         ] {
             let reference = newton_euler_pivoting(&body, law, Some(l), &y);
             let d = model.accelerations(phase, 0.0, &y).unwrap();
@@ -163,7 +186,11 @@ fn a_rolling_resistance_under_stick_slip_slows_a_ball_at_the_closed_form_rate() 
     let m = try_model_with(&body, NumLaw::StickSlip(0.3), torques).unwrap();
     let (w0, rho) = (20.0, 0.1);
     let y0 = m
-        .rolling_state([0.0, 0.0], &UnitQuaternion::identity(), &Vector3::new(0.0, w0, 0.0))
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(0.0, w0, 0.0),
+        )
         .unwrap();
     let rate = cr / (body.inertia[1][1] + body.mass * rho * rho);
     let cfg = AdaptiveConfig::with_tol(TIGHT, TIGHT);
@@ -181,7 +208,9 @@ fn a_rolling_resistance_under_stick_slip_slows_a_ball_at_the_closed_form_rate() 
         let x = rho * w0 * (1.0 - (-rate * t).exp()) / rate;
         worst = worst.max((y[0] / x - 1.0).abs());
     }
-    println!("rolling resistance c_r = {cr}: worst relative gap {worst:e} over 5 s, rate {rate} 1/s");
+    println!(
+        "rolling resistance c_r = {cr}: worst relative gap {worst:e} over 5 s, rate {rate} 1/s"
+    );
     assert!(run.switches().is_empty(), "{:?}", run.switches());
     assert!(worst < 1e-10, "{worst:e}");
 }
@@ -195,7 +224,12 @@ fn normal_viscous_friction_takes_a_sliding_balls_slip_away_at_seven_halves_mu_g(
     let mu = 0.5;
     let m = try_model_with(&body, NumLaw::NormalViscous(mu), NumTorques::default()).unwrap();
     let v0 = 2.0;
-    let y0 = state([0.0, 0.0], [v0, 0.0], &UnitQuaternion::identity(), &Vector3::zeros());
+    let y0 = state(
+        [0.0, 0.0],
+        [v0, 0.0],
+        &UnitQuaternion::identity(),
+        &Vector3::zeros(),
+    );
     let rate = 3.5 * mu * body.gravity;
     let cfg = AdaptiveConfig::with_tol(TIGHT, TIGHT);
     let mut run = ContactRun::new(&m, Phase::Sliding, 0.0, y0, cfg).unwrap();
@@ -209,7 +243,10 @@ fn normal_viscous_friction_takes_a_sliding_balls_slip_away_at_seven_halves_mu_g(
     }
     // It ends rolling at 5/7 v₀, as the Coulomb ball does, but only in the limit.
     let v_end = run.y()[2];
-    println!("F = −μ N u, μ = {mu} s/m: slip decays at (7/2) μ g = {rate} 1/s to {worst:e}; v → {v_end} (5/7 v₀ = {})", 5.0 / 7.0 * v0);
+    println!(
+        "F = −μ N u, μ = {mu} s/m: slip decays at (7/2) μ g = {rate} 1/s to {worst:e}; v → {v_end} (5/7 v₀ = {})",
+        5.0 / 7.0 * v0
+    );
     // The tolerance is absolute below 10⁻¹² m/s: the slip falls to 7e-8 m/s by 1 s.
     assert!(worst < 1e-7, "{worst:e}");
     assert!((v_end / (5.0 / 7.0 * v0) - 1.0).abs() < 1e-6);
@@ -219,8 +256,14 @@ fn normal_viscous_friction_takes_a_sliding_balls_slip_away_at_seven_halves_mu_g(
 fn negative_coefficients_and_a_missing_couple_are_typed_errors() {
     let body = ball();
     for torques in [
-        NumTorques { pivoting: Some(-0.001), ..NumTorques::default() },
-        NumTorques { cr: Some(-0.1), ..NumTorques::default() },
+        NumTorques {
+            pivoting: Some(-0.001),
+            ..NumTorques::default()
+        },
+        NumTorques {
+            cr: Some(-0.1),
+            ..NumTorques::default()
+        },
     ] {
         let e = try_model_with(&body, NumLaw::StickSlip(0.3), torques).unwrap_err();
         assert!(
@@ -257,7 +300,12 @@ fn negative_coefficients_and_a_missing_couple_are_typed_errors() {
         ..ContactTorques::default()
     };
     let e = scene.derive_with(&mut a, &twice).unwrap_err();
-    assert_eq!(e, ContactError::DeclaredTwice { name: "rolling_resistance" });
+    assert_eq!(
+        e,
+        ContactError::DeclaredTwice {
+            name: "rolling_resistance"
+        }
+    );
 }
 
 /// A literal ball on the table under stick–slip: M = 2, ρ = 1/10, I = 1/125, μ = 3/10.

@@ -23,7 +23,10 @@ pub enum NumSurface {
 /// A contact law by numbers.
 #[derive(Clone, Copy, Debug)]
 pub enum NumLaw {
-    Rolling { cr: Option<f64>, cs: Option<f64> },
+    Rolling {
+        cr: Option<f64>,
+        cs: Option<f64>,
+    },
     Frictionless,
     Viscous(f64),
     Coulomb(f64),

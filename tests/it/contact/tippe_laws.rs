@@ -49,10 +49,7 @@ fn spin_top(m: &ContactModel, t_end: f64) -> Flip {
         horizontal,
         gamma_end: c.gamma.z,
         height_end: c.height,
-        energy: (
-            m.energy(Phase::Sliding, &y0),
-            m.energy(run.phase(), &y),
-        ),
+        energy: (m.energy(Phase::Sliding, &y0), m.energy(run.phase(), &y)),
         phase: run.phase(),
         switches: run.switches().len(),
         first_switch: run.switches().first().map(|s| s.t),
@@ -65,21 +62,43 @@ fn coulomb_stick_slip_locks_the_tippe_top_into_rolling_and_normal_viscous_fricti
     let (radius, a) = (0.02, 0.006);
     let coulomb = spin_top(&model(&body, NumLaw::StickSlip(0.3)), 20.0);
     let viscous = spin_top(&model(&body, NumLaw::NormalViscous(0.3)), 20.0);
-    for (name, f) in [("Coulomb stick–slip μ = 0.3", &coulomb), ("F = −μ N u, μ = 0.3 s/m", &viscous)] {
+    for (name, f) in [
+        ("Coulomb stick–slip μ = 0.3", &coulomb),
+        ("F = −μ N u, μ = 0.3 s/m", &viscous),
+    ] {
         println!(
             "tippe top, {name}: horizontal at {:?} s; at 20 s γ₃ = {}, height {} m ({:?}, {} switches, the first at {:?} s), E {} → {} J",
-            f.horizontal, f.gamma_end, f.height_end, f.phase, f.switches, f.first_switch, f.energy.0, f.energy.1
+            f.horizontal,
+            f.gamma_end,
+            f.height_end,
+            f.phase,
+            f.switches,
+            f.first_switch,
+            f.energy.0,
+            f.energy.1
         );
     }
     // Stick–slip: one stick, then rolling to the end, upright, at the rolling energy.
     assert_eq!(coulomb.phase, Phase::Rolling);
-    assert!(coulomb.first_switch.is_some_and(|t| t < 0.1), "{:?}", coulomb.first_switch);
+    assert!(
+        coulomb.first_switch.is_some_and(|t| t < 0.1),
+        "{:?}",
+        coulomb.first_switch
+    );
     assert!(coulomb.horizontal.is_none());
     assert!(coulomb.gamma_end > 0.99, "{}", coulomb.gamma_end);
-    assert!((coulomb.height_end - (radius - a)).abs() < 1e-4, "{}", coulomb.height_end);
+    assert!(
+        (coulomb.height_end - (radius - a)).abs() < 1e-4,
+        "{}",
+        coulomb.height_end
+    );
     // F = −μ N u: turned over, the centre of mass at R + a.
     let t_flip = viscous.horizontal.expect("the top turned over");
     assert!(t_flip > 0.5 && t_flip < 15.0, "{t_flip}");
     assert!(viscous.gamma_end < -0.999, "{}", viscous.gamma_end);
-    assert!((viscous.height_end - (radius + a)).abs() < 1e-5, "{}", viscous.height_end);
+    assert!(
+        (viscous.height_end - (radius + a)).abs() < 1e-5,
+        "{}",
+        viscous.height_end
+    );
 }
