@@ -21,6 +21,7 @@
 use super::error::ContactError;
 use super::scene::{ContactLaw, ContactScene, ContactTorques, Friction};
 use super::state::STATE_LEN;
+use super::torques::{Applied, applied};
 use crate::rigid::{quaternion_rate, rotation_of_quaternion};
 use crate::sym::mat3::{Mat3, cross, determinant, dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, Rational, SymbolId};
@@ -119,7 +120,7 @@ impl ContactScene {
         let state: [ExprId; STATE_LEN] = std::array::from_fn(|k| arena.input(NAMES[k]));
         let k = self.kinematics(arena, &state)?;
         let torques = self.merged(torques)?;
-        let tau = applied(arena, &k, &torques)?;
+        let tau = applied(arena, &k.omega, &k.gamma, &torques)?;
         let (rolling, sliding) = match self.law {
             ContactLaw::Rolling { .. } => (Some(self.rolling(arena, &k, &tau)?), None),
             ContactLaw::Sliding(friction) => (None, Some(self.sliding(arena, &k, friction, &tau)?)),
@@ -400,97 +401,6 @@ impl ContactScene {
             linear_momentum,
             angular_momentum_contact,
         })
-    }
-}
-
-/// The torques a phase adds to Euler's equation: `fixed` a function of the state, and
-/// N `per_normal` proportional to the normal force.
-struct Applied {
-    fixed: [ExprId; 3],
-    per_normal: Option<[ExprId; 3]>,
-}
-
-/// The spin ω·γ below which sign(ω·γ) is written as ω·γ/√((ω·γ)² + ε²), ε = 10⁻¹⁵⁰ rad/s:
-/// exact to 10⁻²⁰ wherever a run can be (a spin this small has stopped, which a witness
-/// sees long before), and 0 rather than 0/0 at a spin of exactly zero.
-const SIGN_FLOOR_EXPONENT: i64 = 300;
-
-/// `torques` acting on the body: the resistance −c_r ω_∥ − c_s ω_⊥ (ω_⊥ = (ω·γ) γ) and the
-/// user couple as `fixed`, the pivoting friction −ℓ_p sign(ω·γ) γ per unit normal force.
-///
-/// # Errors
-/// [`ContactError::Sym`] if the engine refuses the sign's root or division (it cannot: the
-/// radicand holds a positive constant).
-fn applied(
-    arena: &mut Arena,
-    k: &Kinematics,
-    torques: &ContactTorques,
-) -> Result<Applied, ContactError> {
-    let w_g = dot(arena, &k.omega, &k.gamma);
-    let perp = k.gamma.map(|g| arena.mul(w_g, g));
-    let fixed = std::array::from_fn(|j| {
-        let mut terms = Vec::new();
-        if let Some(c) = torques.rolling_resistance {
-            let par = arena.sub(k.omega[j], perp[j]);
-            let t = arena.mul(c, par);
-            terms.push(arena.neg(t));
-        }
-        if let Some(c) = torques.spin_resistance {
-            let t = arena.mul(c, perp[j]);
-            terms.push(arena.neg(t));
-        }
-        if let Some(u) = torques.user {
-            terms.push(u[j]);
-        }
-        arena.sum(&terms)
-    });
-    let per_normal = match torques.pivoting {
-        None => None,
-        Some(l) => {
-            let floor = Rational::new(1, 10)
-                .and_then(|r| r.checked_pow(SIGN_FLOOR_EXPONENT))
-                .unwrap_or(Rational::ZERO);
-            let floor = arena.constant(floor);
-            let w2 = arena.mul(w_g, w_g);
-            let w2 = arena.add(w2, floor);
-            let size = arena.sqrt(w2)?;
-            let sign = arena.div(w_g, size)?;
-            let nl = arena.neg(l);
-            let scale = arena.mul(nl, sign);
-            Some(k.gamma.map(|g| arena.mul(scale, g)))
-        }
-    };
-    Ok(Applied { fixed, per_normal })
-}
-
-impl ContactScene {
-    /// `torques` with a rolling law's own resistances joined in.
-    ///
-    /// # Errors
-    /// [`ContactError::DeclaredTwice`] for a resistance both declare.
-    fn merged(&self, torques: &ContactTorques) -> Result<ContactTorques, ContactError> {
-        let mut out = *torques;
-        if let ContactLaw::Rolling {
-            rolling_resistance,
-            spin_resistance,
-        } = self.law
-        {
-            for (name, law, extra) in [
-                (
-                    "rolling_resistance",
-                    rolling_resistance,
-                    &mut out.rolling_resistance,
-                ),
-                ("spin_resistance", spin_resistance, &mut out.spin_resistance),
-            ] {
-                match (law, &*extra) {
-                    (Some(_), Some(_)) => return Err(ContactError::DeclaredTwice { name }),
-                    (Some(c), None) => *extra = Some(c),
-                    _ => {}
-                }
-            }
-        }
-        Ok(out)
     }
 }
 
