@@ -7,9 +7,10 @@
 //! a viscous couple τ = −κ ω / sin³ α whose coefficient grows as the gap under the disk
 //! closes; in the steady motion it dissipates P = κ Ω² / sin α ∝ Ω²/α, and the balance
 //! dE/dt = −P gives sin³ α = 2κ (t₀ − t)/A: α ∝ (t₀ − t)^{1/3}, Ω ∝ (t₀ − t)^{−1/6}
-//! (`contact::theory::EulerDisk`). The couple is added to the derived rolling model through
-//! the contact's effective inertia I + m(|r|² − r rᵀ), the same matrix the rolling equations
-//! solve with. The run fits t₀ and both exponents from the simulated motion.
+//! (`contact::theory::EulerDisk`). The couple is the contact's user couple,
+//! `#[contact(torque = air)]`, a function of the attitude and ω that the derived rolling
+//! equations take as part of their torque. The run fits t₀ and both exponents from the
+//! simulated motion.
 //!
 //! The model is adiabatic: it holds while the couple's damping rate κ / (A sin³ α) stays
 //! well below Ω. Here it is ≤ 1 % of Ω down to sin α = 0.002. With a couple a thousand times
@@ -22,13 +23,10 @@
 //! derive the decay for sliding, pivoting and rolling friction, each with its own exponents
 //! (`contact::theory::power_law_exponents` gives them from how P scales with Ω and α).
 //!
-//! The disk is declared on a struct (`#[rigid(disk(..))]`, `#[contact(.., law = rolling, ..)]`).
-//! `#[contact]` has no key for an external couple (its laws' torques are the rolling and spin
-//! resistances, −c_r ω_∥ and −c_s ω_⊥, not a couple that grows as the disk closes on the
-//! table), so the air layer's couple is added by `Settling`, a wrapper system around the
-//! generated `ContactDynamics`, integrated with the adaptive DOP853 through `ode::Run`: every
-//! step recorded with sin α and Ω as quantities, and the run ended by a terminal event where
-//! sin α reaches 0.001, located on the dense output.
+//! The disk is declared on a struct (`#[rigid(disk(..))]`, `#[contact(.., law = rolling,
+//! torque = air)]`) and integrated by `ContactRun`, the contact's instance of the one run
+//! loop, through `ode::Run`: every step recorded with sin α and Ω as quantities, and the run
+//! ended by a terminal event where sin α reaches 0.001, located on the dense output.
 //!
 //! Run with `cargo run --release --example eulers_disk`.
 
@@ -38,22 +36,27 @@ use std::error::Error;
 
 use common::{Axes, Series, Table, animation, plot, plot_dir};
 use precess::contact::theory::{DiskState, EulerDisk, RollingDisk, power_law_exponents};
-use precess::contact::{ContactDynamics, Phase, STATE_LEN, attitude_of};
+use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN, attitude_of};
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
-use precess::ode::{Adaptive, AdaptiveConfig, Dop853Pair, Event, Run, StopReason, System};
+use precess::ode::{AdaptiveConfig, Event, Run, StopReason};
 use precess::prelude::RigidBody;
 
-/// A thin uniform disk, radius 5 cm and mass 0.3 kg, rolling on its sharp rim.
+/// A thin uniform disk, radius 5 cm and mass 0.3 kg, rolling on its sharp rim under the air
+/// layer's couple of coefficient `kappa`.
 #[derive(RigidBody)]
 #[rigid(disk(mass = 0.3, radius = 0.05))]
-#[contact(surface = disk_rim(radius = 0.05), law = rolling, gravity = 9.81)]
-struct Disk;
+#[contact(surface = disk_rim(radius = 0.05), law = rolling, gravity = 9.81, torque = air)]
+struct Disk {
+    /// The couple's coefficient κ (N m s).
+    kappa: f64,
+}
 
-/// The derived rolling disk with the air layer's couple added.
-struct Settling {
-    model: Disk,
-    theory: EulerDisk,
-    inertia: Matrix3<f64>,
+/// Moffatt's air-layer couple τ = −κ ω / sin³ α (description axes), α the angle of the disk
+/// to the table: the axis n = R e₃ (R's third column) leans α from the vertical, so sin α is
+/// the length of its horizontal part.
+fn air(disk: &Disk, r: &Matrix3<f64>, w: &Vector3<f64>) -> Vector3<f64> {
+    let sin_alpha = r[(0, 2)].hypot(r[(1, 2)]);
+    -w * (disk.kappa / sin_alpha.powi(3))
 }
 
 /// sin α of a state: the disk's axis (body z) has n_z = −cos α, and n_z = γ₃.
@@ -68,25 +71,6 @@ fn precession(y: &[f64; STATE_LEN]) -> f64 {
     let n = q * Vector3::z();
     let nd = (q * Vector3::new(y[8], y[9], y[10])).cross(&n);
     (n.x * nd.y - n.y * nd.x) / (n.x * n.x + n.y * n.y)
-}
-
-impl System<STATE_LEN> for Settling {
-    fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
-        self.model.phase_rhs(Phase::Rolling, t, y, dydt);
-        let w = Vector3::new(y[8], y[9], y[10]);
-        let tau = self.theory.couple(&w, sin_alpha(y).asin());
-        // Rolling: (I + m(|r|² − r rᵀ)) ω̇ = … + τ, and v̇ = … + r × ω̇ (body axes).
-        let r = self.model.contact(y).body;
-        let m = self.theory.disk.mass;
-        let j = self.inertia + (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * m;
-        let dw = j.lu().solve(&tau).unwrap_or_else(Vector3::zeros);
-        let dv = attitude_of(y) * r.cross(&dw);
-        for k in 0..3 {
-            dydt[8 + k] += dw[k];
-        }
-        dydt[2] += dv.x;
-        dydt[3] += dv.y;
-    }
 }
 
 /// The least-squares slope and intercept of y against x.
@@ -108,7 +92,9 @@ fn fit(points: &[(f64, f64)]) -> (f64, f64) {
 fn main() -> Result<(), Box<dyn Error>> {
     let disk = RollingDisk::thin(0.05, 0.3, 9.81);
     let theory = EulerDisk { disk, kappa: 1e-11 };
-    let model = Disk;
+    let model = Disk {
+        kappa: theory.kappa,
+    };
 
     // The steady motion at α₀ = 0.03 rad: θ = π/2 − α₀, ω₃ = 0, the centre at rest.
     let alpha0 = 0.03_f64;
@@ -123,14 +109,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         Matrix3::from_columns(&[u, t, n]),
     ));
     let y0 = model.rolling_state([0.0, 0.0], &q, &(q.inverse() * s.angular_velocity(0.0)))?;
-    let sys = Settling {
-        model: Disk,
-        theory,
-        inertia: Disk.inertia_cm(),
-    };
     let mut cfg = AdaptiveConfig::with_tol(1e-11, 1e-11);
     cfg.max_steps = 50_000_000;
-    let mut ode = Adaptive::<_, Dop853Pair, STATE_LEN>::new(sys, 0.0, y0, cfg)?;
+    let mut ode = ContactRun::new(&model, Phase::Rolling, 0.0, y0, cfg)?;
     let stop = 0.001;
     let out = Run::new(&mut ode, 1e3)
         .sample_steps()

@@ -127,7 +127,7 @@ pub mod __private {
     pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
     pub use precess_core::contact::{
         ContactDynamics, ContactError, ContactMomenta, ContactPoint, ContactValues, LawKind, Phase,
-        Reaction, SurfaceKind,
+        Reaction, SurfaceKind, attitude_of,
     };
     pub use precess_core::exact::Dd;
     pub use precess_core::free::{

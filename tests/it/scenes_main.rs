@@ -82,9 +82,12 @@ mod top {
 }
 /// The contact scene: a body on a table.
 mod contact {
+    mod coin;
+    mod derived_laws;
     mod errors;
     mod events;
     mod invariants;
+    mod laws;
     mod newton_euler;
     mod properties;
     pub mod reference;
@@ -94,6 +97,7 @@ mod contact {
     mod stick_slip;
     mod support;
     mod system_checks;
+    mod tippe_laws;
     mod tippe_top;
 }
 /// The rolling disk declared once on a table and once as a mechanism's wheel: one geometry.

@@ -19,8 +19,9 @@
 //! Every law's horizontal acceleration is the horizontal part of R F / M.
 
 use super::error::ContactError;
-use super::scene::{ContactLaw, ContactScene, Friction};
+use super::scene::{ContactLaw, ContactScene, ContactTorques, Friction};
 use super::state::STATE_LEN;
+use super::torques::{Applied, applied};
 use crate::rigid::{quaternion_rate, rotation_of_quaternion};
 use crate::sym::mat3::{Mat3, cross, determinant, dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId, Rational, SymbolId};
@@ -47,6 +48,8 @@ pub struct ContactEquations {
 pub struct ContactDerivation {
     /// The scene derived (its parameters are what an interpreted model checks).
     pub scene: ContactScene,
+    /// The torques beyond the law's friction, a rolling law's own resistances among them.
+    pub torques: ContactTorques,
     /// The state symbols, in the order of [`super::layout`].
     pub state: [ExprId; STATE_LEN],
     /// The rolling equations (the rolling and stick–slip laws).
@@ -96,27 +99,35 @@ impl ContactScene {
     /// [`ContactError::Sym`] if a division or root of the derivation is refused (a surface
     /// length or the mass identically zero).
     pub fn derive(&self, arena: &mut Arena) -> Result<ContactDerivation, ContactError> {
+        self.derive_with(arena, &ContactTorques::default())
+    }
+
+    /// As [`ContactScene::derive`], under the further `torques` (resistances, pivoting
+    /// friction, a user couple) in every phase the law derives. A rolling law's own
+    /// resistances join them.
+    ///
+    /// # Errors
+    /// As [`ContactScene::derive`]; [`ContactError::DeclaredTwice`] for a resistance both the
+    /// rolling law and `torques` declare.
+    pub fn derive_with(
+        &self,
+        arena: &mut Arena,
+        torques: &ContactTorques,
+    ) -> Result<ContactDerivation, ContactError> {
         const NAMES: [&str; STATE_LEN] = [
             "x", "y", "v_x", "v_y", "q_w", "q_x", "q_y", "q_z", "omega_1", "omega_2", "omega_3",
         ];
         let state: [ExprId; STATE_LEN] = std::array::from_fn(|k| arena.input(NAMES[k]));
         let k = self.kinematics(arena, &state)?;
+        let torques = self.merged(torques)?;
+        let tau = applied(arena, &k.omega, &k.gamma, &torques)?;
         let (rolling, sliding) = match self.law {
-            ContactLaw::Rolling {
-                rolling_resistance,
-                spin_resistance,
-            } => {
-                let tau = resistance(arena, &k, rolling_resistance, spin_resistance);
-                (Some(self.rolling(arena, &k, &tau)?), None)
-            }
-            ContactLaw::Sliding(friction) => (None, Some(self.sliding(arena, &k, friction)?)),
-            ContactLaw::StickSlip { mu } => {
-                let z = [arena.zero(); 3];
-                (
-                    Some(self.rolling(arena, &k, &z)?),
-                    Some(self.sliding(arena, &k, Friction::Coulomb(mu))?),
-                )
-            }
+            ContactLaw::Rolling { .. } => (Some(self.rolling(arena, &k, &tau)?), None),
+            ContactLaw::Sliding(friction) => (None, Some(self.sliding(arena, &k, friction, &tau)?)),
+            ContactLaw::StickSlip { mu } => (
+                Some(self.rolling(arena, &k, &tau)?),
+                Some(self.sliding(arena, &k, Friction::Coulomb(mu), &tau)?),
+            ),
         };
         let lever = mat_vec(arena, &k.rotation, &k.r);
         let contact_space = [
@@ -133,6 +144,7 @@ impl ContactScene {
         let angular_momentum_center = mat_vec(arena, &k.rotation, &k.i_omega);
         Ok(ContactDerivation {
             scene: self.clone(),
+            torques,
             state,
             rolling,
             sliding,
@@ -203,18 +215,23 @@ impl ContactScene {
         })
     }
 
-    /// The rolling phase under the extra torque `tau` (the resistances).
+    /// The rolling phase under the extra torques `tau`.
+    ///
+    /// A torque N κ proportional to the normal force (pivoting friction) makes the system
+    /// (I + M(|r|² 1 − r rᵀ)) ω̇ = b + N κ implicit, since under rolling N = F·γ =
+    /// N₀ + n·ω̇ with N₀ = M γ·(ṙ × ω + ω × v + g γ) and n = M (γ × r); it is solved as
+    /// (I + M(|r|² 1 − r rᵀ) − κ nᵀ) ω̇ = b + N₀ κ, by the same adjugate.
     fn rolling(
         &self,
         arena: &mut Arena,
         k: &Kinematics,
-        tau: &[ExprId; 3],
+        tau: &Applied,
     ) -> Result<ContactEquations, ContactError> {
         let m = self.mass;
         let v = cross(arena, &k.r, &k.omega);
         // The symmetric matrix I + M(|r|² 1 − r rᵀ).
         let r2 = dot(arena, &k.r, &k.r);
-        let a: Vec<Vec<ExprId>> = (0..3)
+        let mut a: Vec<Vec<ExprId>> = (0..3)
             .map(|i| {
                 (0..3)
                     .map(|j| {
@@ -236,10 +253,24 @@ impl ContactScene {
         let inner: [ExprId; 3] =
             std::array::from_fn(|j| arena.sum(&[rdot_w[j], w_v[j], g_gamma[j]]));
         let r_inner = cross(arena, &k.r, &inner);
-        let b: [ExprId; 3] = std::array::from_fn(|j| {
+        let mut b: [ExprId; 3] = std::array::from_fn(|j| {
             let t = arena.mul(m, r_inner[j]);
-            arena.sum(&[k.gyroscopic[j], t, tau[j]])
+            arena.sum(&[k.gyroscopic[j], t, tau.fixed[j]])
         });
+        if let Some(kappa) = tau.per_normal {
+            let g_inner = dot(arena, &k.gamma, &inner);
+            let n0 = arena.mul(m, g_inner);
+            let g_r = cross(arena, &k.gamma, &k.r);
+            let n = g_r.map(|c| arena.mul(m, c));
+            for i in 0..3 {
+                for j in 0..3 {
+                    let kn = arena.mul(kappa[i], n[j]);
+                    a[i][j] = arena.sub(a[i][j], kn);
+                }
+                let kn0 = arena.mul(kappa[i], n0);
+                b[i] = arena.add(b[i], kn0);
+            }
+        }
         let omega_dot = solve3(arena, &a, &b)?;
         let r_wd = cross(arena, &k.r, &omega_dot);
         let v_dot: [ExprId; 3] = std::array::from_fn(|j| arena.add(rdot_w[j], r_wd[j]));
@@ -251,12 +282,14 @@ impl ContactScene {
         self.equations(arena, k, &omega_dot, &force, &v)
     }
 
-    /// The sliding phase under `friction`.
+    /// The sliding phase under `friction` and the extra torques `tau` (a torque N κ
+    /// joins the part of ω̇ proportional to N: β = I⁻¹(r × e + κ)).
     fn sliding(
         &self,
         arena: &mut Arena,
         k: &Kinematics,
         friction: Friction,
+        tau: &Applied,
     ) -> Result<ContactEquations, ContactError> {
         let m = self.mass;
         let to_body = transpose(&k.rotation);
@@ -280,12 +313,23 @@ impl ContactScene {
                 });
                 (zero, e)
             }
+            Friction::NormalViscous(mu) => {
+                let e: [ExprId; 3] = std::array::from_fn(|j| {
+                    let t = arena.mul(mu, u[j]);
+                    arena.sub(k.gamma[j], t)
+                });
+                (zero, e)
+            }
         };
         let inv = inverse3(arena, &self.inertia)?;
         let r_f0 = cross(arena, &k.r, &f0);
-        let free: [ExprId; 3] = std::array::from_fn(|j| arena.add(k.gyroscopic[j], r_f0[j]));
+        let free: [ExprId; 3] =
+            std::array::from_fn(|j| arena.sum(&[k.gyroscopic[j], r_f0[j], tau.fixed[j]]));
         let alpha = mat_vec(arena, &inv, &free);
-        let r_e = cross(arena, &k.r, &e);
+        let mut r_e = cross(arena, &k.r, &e);
+        if let Some(kappa) = tau.per_normal {
+            r_e = std::array::from_fn(|j| arena.add(r_e[j], kappa[j]));
+        }
         let beta = mat_vec(arena, &inv, &r_e);
         // z̈ = A + b·ω̇ with A = −ṙ·γ̇ − r·(γ̇ × ω), b = γ × r.
         let rd_gd = dot(arena, &k.r_dot, &k.gamma_dot);
@@ -358,30 +402,6 @@ impl ContactScene {
             angular_momentum_contact,
         })
     }
-}
-
-/// The resistance torque −c_r ω_∥ − c_s ω_⊥, ω_⊥ = (ω·γ) γ.
-fn resistance(
-    arena: &mut Arena,
-    k: &Kinematics,
-    rolling: Option<ExprId>,
-    spin: Option<ExprId>,
-) -> [ExprId; 3] {
-    let w_g = dot(arena, &k.omega, &k.gamma);
-    let perp = k.gamma.map(|g| arena.mul(w_g, g));
-    std::array::from_fn(|j| {
-        let mut terms = Vec::new();
-        if let Some(c) = rolling {
-            let par = arena.sub(k.omega[j], perp[j]);
-            let t = arena.mul(c, par);
-            terms.push(arena.neg(t));
-        }
-        if let Some(c) = spin {
-            let t = arena.mul(c, perp[j]);
-            terms.push(arena.neg(t));
-        }
-        arena.sum(&terms)
-    })
 }
 
 /// x = A⁻¹ b by the adjugate: one division by det A, shared.

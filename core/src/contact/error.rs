@@ -187,6 +187,29 @@ pub enum ContactError {
         /// The slip speed taken as zero: 10⁻⁹ of the run's velocity scale.
         threshold: f64,
     },
+    /// A resistance declared twice: by the rolling law and by the further torques of
+    /// [`ContactScene::derive_with`](super::ContactScene::derive_with).
+    #[error(
+        "`{name}` is declared twice, by `ContactLaw::Rolling` and by `ContactTorques`: \
+         declare it once"
+    )]
+    DeclaredTwice {
+        /// The resistance's name.
+        name: &'static str,
+    },
+    /// A derivation with a user couple given to [`ContactModel::new`](super::ContactModel::new),
+    /// which cannot supply it, or a couple given to a derivation without one.
+    #[error(
+        "the derivation {reads} a user couple but the model was {given}: build it with \
+         `ContactModel::with_torque` for a derivation of `ContactTorques {{ user: Some(..) }}`, \
+         and with `ContactModel::new` otherwise"
+    )]
+    UserTorque {
+        /// "reads" or "does not read".
+        reads: &'static str,
+        /// What the model was given.
+        given: &'static str,
+    },
     /// A sliding start under Coulomb friction (sliding or stick–slip) with no slip: the
     /// friction's direction u/|u| is undefined.
     #[error(

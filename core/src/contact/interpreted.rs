@@ -1,14 +1,14 @@
 //! A contact derivation evaluated at run time through the code generator's interpreter: the
 //! path for scenes built at run time, and the reference for the generated code.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::checks::ContactValues;
 use super::derivation::{ContactDerivation, ContactEquations};
 use super::dynamics::{ContactDynamics, ContactMomenta, ContactPoint, Reaction};
 use super::error::ContactError;
-use super::scene::{ContactLaw, Friction, LawKind, Phase};
-use super::state::STATE_LEN;
+use super::scene::{ContactLaw, LawKind, Phase, coefficients};
+use super::state::{STATE_LEN, attitude_of, layout};
 #[cfg(doc)]
 use crate::codegen::BindingError;
 use crate::codegen::{Bindings, OpCount, Program};
@@ -99,12 +99,31 @@ pub struct ContactModel {
     /// Where μ sits among the coefficients, for a Coulomb or stick–slip law.
     mu: Option<usize>,
     state: [SymbolId; STATE_LEN],
+    /// The user couple and the symbols its value is read as.
+    torque: Option<UserCouple>,
     bindings: Bindings,
     /// The values set, so that a value refused by the rules is undone.
     values: Vec<(String, f64)>,
 }
 
 const CONTACT_OUTPUTS: usize = 17;
+
+/// A user couple's function: (R, ω) → torque, description axes.
+type CoupleFn = dyn Fn(&Matrix3<f64>, &Vector3<f64>) -> Vector3<f64> + Send + Sync;
+
+/// The user couple of a model and the input symbols its value is read as.
+struct UserCouple {
+    symbols: [SymbolId; 3],
+    f: Box<CoupleFn>,
+}
+
+impl std::fmt::Debug for UserCouple {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("UserCouple")
+            .field("symbols", &self.symbols)
+            .finish_non_exhaustive()
+    }
+}
 
 impl ContactModel {
     /// Lowers the derivation, with a value for each parameter it reads (`(name, value)`
@@ -119,6 +138,32 @@ impl ContactModel {
         arena: &mut Arena,
         derivation: &ContactDerivation,
         parameters: &[(&str, f64)],
+    ) -> Result<ContactModel, ContactError> {
+        Self::build(arena, derivation, parameters, None)
+    }
+
+    /// As [`ContactModel::new`], for a derivation with a user couple
+    /// ([`ContactTorques::user`](super::ContactTorques::user)): `torque(R, ω)` gives it in
+    /// description axes from the attitude R (description → space) and ω (description axes),
+    /// as `#[contact(torque = f)]` calls its function.
+    ///
+    /// # Errors
+    /// As [`ContactModel::new`]; [`ContactError::UserTorque`] for a derivation without a
+    /// user couple (and `new` gives it for one with).
+    pub fn with_torque(
+        arena: &mut Arena,
+        derivation: &ContactDerivation,
+        parameters: &[(&str, f64)],
+        torque: impl Fn(&Matrix3<f64>, &Vector3<f64>) -> Vector3<f64> + Send + Sync + 'static,
+    ) -> Result<ContactModel, ContactError> {
+        Self::build(arena, derivation, parameters, Some(Box::new(torque)))
+    }
+
+    fn build(
+        arena: &mut Arena,
+        derivation: &ContactDerivation,
+        parameters: &[(&str, f64)],
+        torque: Option<Box<CoupleFn>>,
     ) -> Result<ContactModel, ContactError> {
         let d = derivation;
         let state = d.state.map(|e| {
@@ -139,30 +184,14 @@ impl ContactModel {
         let contact = Program::lower(arena, &contact);
         let scene = &d.scene;
         let (placement, lengths) = scene.surface.dimensions();
-        let (law, coefficients, mu): (LawKind, Vec<(&'static str, ExprId)>, Option<usize>) =
-            match scene.law {
-                ContactLaw::Rolling {
-                    rolling_resistance,
-                    spin_resistance,
-                } => {
-                    let mut c = Vec::new();
-                    if let Some(e) = rolling_resistance {
-                        c.push(("rolling_resistance", e));
-                    }
-                    if let Some(e) = spin_resistance {
-                        c.push(("spin_resistance", e));
-                    }
-                    (LawKind::Rolling, c, None)
-                }
-                ContactLaw::Sliding(Friction::Frictionless) => (LawKind::Sliding, vec![], None),
-                ContactLaw::Sliding(Friction::Viscous(c)) => {
-                    (LawKind::Sliding, vec![("viscous", c)], None)
-                }
-                ContactLaw::Sliding(Friction::Coulomb(mu)) => {
-                    (LawKind::Sliding, vec![("mu", mu)], Some(0))
-                }
-                ContactLaw::StickSlip { mu } => (LawKind::StickSlip, vec![("mu", mu)], Some(0)),
-            };
+        let law = match scene.law {
+            ContactLaw::Rolling { .. } => LawKind::Rolling,
+            ContactLaw::Sliding(_) => LawKind::Sliding,
+            ContactLaw::StickSlip { .. } => LawKind::StickSlip,
+        };
+        let coefficients = coefficients(&scene.law, &d.torques);
+        // μ is the Coulomb coefficient of a Coulomb or stick–slip law, named `mu`.
+        let mu = coefficients.iter().position(|&(n, _)| n == "mu");
         let mut values: Vec<ExprId> = vec![scene.mass];
         values.extend(scene.center);
         values.extend(scene.inertia.iter().flatten());
@@ -176,7 +205,35 @@ impl ContactModel {
             programs.extend(p.all());
         }
         let owned: Vec<Program> = programs.into_iter().cloned().collect();
-        let bindings = Bindings::new(arena, &owned, &state, parameters)?;
+        let torque = match (d.torques.user, torque) {
+            (None, None) => None,
+            (Some(u), Some(f)) => Some(UserCouple {
+                symbols: u.map(|e| {
+                    arena
+                        .as_symbol(e)
+                        .unwrap_or_else(|| unreachable!("a user couple is input symbols"))
+                }),
+                f,
+            }),
+            (Some(_), None) => {
+                return Err(ContactError::UserTorque {
+                    reads: "reads",
+                    given: "given none",
+                });
+            }
+            (None, Some(_)) => {
+                return Err(ContactError::UserTorque {
+                    reads: "does not read",
+                    given: "given one",
+                });
+            }
+        };
+        let supplied: Vec<SymbolId> = state
+            .iter()
+            .chain(torque.iter().flat_map(|c| &c.symbols))
+            .copied()
+            .collect();
+        let bindings = Bindings::new(arena, &owned, &supplied, parameters)?;
         let model = ContactModel {
             law,
             surface: scene.surface.kind(),
@@ -188,6 +245,7 @@ impl ContactModel {
             coefficients: coefficients.iter().map(|&(n, _)| n).collect(),
             mu,
             state,
+            torque,
             bindings,
             values: parameters.iter().map(|&(n, v)| (n.to_owned(), v)).collect(),
         };
@@ -230,8 +288,17 @@ impl ContactModel {
     }
 
     fn run(&self, p: &Program, y: &[f64; STATE_LEN], out: &mut [f64]) {
-        self.bindings
-            .eval(p, self.state.iter().copied().zip(*y), out);
+        let inputs = self.state.iter().copied().zip(*y);
+        match &self.torque {
+            None => self.bindings.eval(p, inputs, out),
+            Some(c) => {
+                let r = attitude_of(y).to_rotation_matrix().into_inner();
+                let w = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
+                let u = (c.f)(&r, &w);
+                let couple = c.symbols.iter().copied().zip([u.x, u.y, u.z]);
+                self.bindings.eval(p, inputs.chain(couple), out);
+            }
+        }
     }
 
     fn phase(&self, phase: Phase) -> Option<&PhasePrograms> {

@@ -15,9 +15,10 @@
 //!   the angular momentum about the contact point; [`ContactError`] is the scene's one error.
 //!
 //! The files, with the roles every scene gives them: `scene.rs` (the description, with the
-//! [`Phase`]s and the [`LawKind`]), `derivation.rs`, `interpreted.rs` (the model),
+//! [`Phase`]s, the [`LawKind`] and the [`ContactTorques`]), `derivation.rs` with
+//! `torques.rs` (the torques beyond the law's friction), `interpreted.rs` (the model),
 //! `dynamics.rs` (the trait), `error.rs`; then `system.rs` (the ODE adapter), `phases.rs`
-//! (the run loop's hooks), `run.rs` (the run driver) with `outcome.rs` (what a run reports),
+//! (the run loop's hooks) with `pivot.rs` (pivoting friction's spin witness), `run.rs` (the run driver) with `outcome.rs` (what a run reports),
 //! `checks.rs` (the run-time checks) and `theory/` (closed forms to measure runs against).
 
 mod checks;
@@ -27,6 +28,7 @@ mod error;
 mod interpreted;
 mod outcome;
 mod phases;
+mod pivot;
 mod quantities;
 mod run;
 mod scene;
@@ -36,6 +38,7 @@ mod state;
 use crate::rigid as surface;
 mod system;
 pub mod theory;
+mod torques;
 
 /// The surfaces and their support maps, shared with a mechanism's wheels: they live in
 /// [`crate::rigid`].
@@ -49,6 +52,6 @@ pub use outcome::{ContactOutcome, Switch};
 pub use phases::{STICK_FRACTION, normal_denominator};
 pub use quantities::ContactQuantities;
 pub use run::{ContactRun, SEED_SLIP};
-pub use scene::{ContactLaw, ContactScene, Friction, LawKind, Phase};
+pub use scene::{ContactLaw, ContactScene, ContactTorques, Friction, LawKind, Phase, coefficients};
 pub use state::{STATE_LEN, attitude_of, layout};
 pub use system::ContactSystem;

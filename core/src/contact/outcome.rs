@@ -80,6 +80,21 @@ pub enum ContactOutcome {
         /// The slip speed taken as zero.
         threshold: f64,
     },
+    /// Pivoting friction stopped the spin about the vertical and holds it: the spin ω·γ fell
+    /// to the rate taken as zero, and the torque the rest of the motion puts on it is within
+    /// the friction's ℓ_p N (the flow points back to zero spin from both sides). A phase with
+    /// the spin held at zero is not modelled, so the run ends here; a coin spun flat on the
+    /// table comes to rest so.
+    SpinStopped {
+        /// When.
+        t: f64,
+        /// The state then.
+        state: [f64; STATE_LEN],
+        /// The spin ω·γ there (rad/s).
+        spin: f64,
+        /// The spin taken as zero: 10⁻⁹ of the run's angular velocity scale.
+        threshold: f64,
+    },
 }
 
 /// A change of phase during a run: the loop's [`Transition`](crate::ode::Transition) of a

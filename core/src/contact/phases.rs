@@ -8,6 +8,7 @@
 //! | `slip speed` \|u\| − δ | Coulomb sliding | the body slides | a plastic tangential impulse removes u; rolling if it holds, else the slip restarts (stick–slip); halt with [`ContactError::SlipStopped`] (pure Coulomb) |
 //! | `solvability` D | Coulomb sliding | N has one value | Painlevé's paradox (halt) |
 //! | `support` | disk rims, tori, paraboloids | the support map places the contact | lying flat or past the rim (halt) |
+//! | `spin` \|ω·γ\| − δ_ω | pivoting friction | the body spins | the friction holds the spin (halt) or the spin passes zero (`pivot.rs`) |
 //!
 //! δ is 10⁻⁹ of the velocity scale V = |v| + |ω||r| + √(g|r|), the rolling states' own
 //! tolerance. Every witness is continuous along a phase's motion (D > 0 keeps N continuous
@@ -27,6 +28,7 @@ use super::checks::MIN_TILT;
 use super::dynamics::ContactDynamics;
 use super::error::ContactError;
 use super::outcome::ContactOutcome;
+use super::pivot;
 use super::scene::{LawKind, Phase};
 use super::state::{STATE_LEN, attitude_of, layout};
 use super::surface::SurfaceKind;
@@ -43,18 +45,20 @@ pub const STICK_FRACTION: f64 = 1e-9;
 const SEED_OVER_STICK: f64 = 2.0;
 
 /// The witnesses, by index.
-const NAMES: [&str; 5] = [
+const NAMES: [&str; 6] = [
     "normal force",
     "friction cone",
     "slip speed",
     "solvability",
     "support",
+    "spin",
 ];
 const NORMAL: usize = 0;
 const CONE: usize = 1;
 const SLIP: usize = 2;
 const SOLVABLE: usize = 3;
 const SUPPORT: usize = 4;
+const SPIN: usize = 5;
 
 type State = [f64; STATE_LEN];
 type ContactAction = Action<Phase, State, ContactOutcome>;
@@ -89,11 +93,17 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
 
     fn watches(&self, mode: &Phase, id: usize) -> bool {
         let w = &self.watch;
-        let coulomb_sliding = *mode == Phase::Sliding && w.mu.is_some();
+        let sliding = *mode == Phase::Sliding;
+        let coulomb_sliding = sliding && w.mu.is_some();
+        // N solves a linear equation whose coefficient a friction or torque proportional to
+        // N can bring to zero.
+        let scaled = w.mu.is_some() || w.normal_viscous.is_some() || w.pivoting.is_some();
         match id {
             NORMAL => true,
             CONE => *mode == Phase::Rolling && w.law == LawKind::StickSlip,
-            SLIP | SOLVABLE => coulomb_sliding,
+            SLIP => coulomb_sliding,
+            SOLVABLE => sliding && scaled,
+            SPIN => w.pivoting.is_some(),
             SUPPORT => matches!(
                 w.surface,
                 SurfaceKind::DiskRim | SurfaceKind::Torus | SurfaceKind::Paraboloid
@@ -112,6 +122,7 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
             }
             SOLVABLE => denominator(self.body, &self.watch, x),
             SUPPORT => support_margin(&self.watch, x),
+            SPIN => pivot::spin_margin(self.body, &self.watch, x),
             _ => 1.0,
         }
     }
@@ -152,6 +163,7 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
                 surface: w.surface.name(),
                 margin: support_margin(w, &x),
             }),
+            SPIN => pivot::spin_stopped(body, w, t, s.mode, x),
             _ => Action::Continue,
         })
     }
@@ -187,19 +199,28 @@ fn cone_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f
     w.mu.unwrap_or(0.0) * r.normal - r.friction.norm()
 }
 
-/// The denominator D = 1 − M (γ × r)·I⁻¹(r × e), e = γ − μ û, of the normal force of
-/// Coulomb sliding (description axes): N = A/D with A free of μ, so D ≤ 0 is Painlevé's
-/// paradox. 1 when the slip has no direction.
+/// The denominator D = 1 − M (γ × r)·I⁻¹(r × e + κ) of the normal force of sliding
+/// (description axes), the contact force being F₀ + N e and the torque N κ: e = γ − μ û
+/// under Coulomb friction, γ − μ u under F = −μ N u, κ = −ℓ_p sign(ω·γ) γ for pivoting
+/// friction. N = A/D with A free of them, so D ≤ 0 is Painlevé's paradox. Under Coulomb
+/// friction, 1 when the slip has no direction.
 pub(crate) fn denominator<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
     let c = body.contact(x);
     let u_space = slip(body, x);
     let speed = u_space.norm();
-    if speed == 0.0 {
-        return 1.0;
-    }
-    let u_hat = attitude_of(x).inverse_transform_vector(&u_space) / speed;
-    let e = c.gamma - w.mu.unwrap_or(0.0) * u_hat;
-    let beta = w.inertia_inv * c.body.cross(&e);
+    let u_body = attitude_of(x).inverse_transform_vector(&u_space);
+    let e = match (w.mu, w.normal_viscous) {
+        (Some(_), _) if speed == 0.0 => return 1.0,
+        (Some(mu), _) => c.gamma - mu * u_body / speed,
+        (None, Some(mu)) => c.gamma - mu * u_body,
+        (None, None) => c.gamma,
+    };
+    let spin = c.gamma.dot(&omega(x));
+    let kappa = match w.pivoting {
+        Some(l) if spin != 0.0 => -l * spin.signum() * c.gamma,
+        _ => Vector3::zeros(),
+    };
+    let beta = w.inertia_inv * (c.body.cross(&e) + kappa);
     1.0 - w.mass * c.gamma.cross(&c.body).dot(&beta)
 }
 
@@ -240,10 +261,22 @@ fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: State) -> State {
     let mut y = x;
     y[layout::VELOCITY] += seed * dir.x;
     y[layout::VELOCITY + 1] += seed * dir.y;
+    keep_kinetic(body, w, (Phase::Rolling, &x), (Phase::Sliding, y))
+}
+
+/// `y` (in `to`) with its velocities scaled by √(T/T′), so that its kinetic energy T′ is
+/// the kinetic energy T of `x` (in `from`), and with the attitude unchanged, its energy:
+/// a state changed by a switch's seed so adds no energy.
+pub(crate) fn keep_kinetic<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    (from, x): (Phase, &State),
+    (to, mut y): (Phase, State),
+) -> State {
     // The potential energy depends on the attitude alone, which the seed leaves.
-    let potential = w.mass * w.gravity * body.contact(&x).height;
-    let before = body.energy(Phase::Rolling, &x) - potential;
-    let after = body.energy(Phase::Sliding, &y) - potential;
+    let potential = w.mass * w.gravity * body.contact(x).height;
+    let before = body.energy(from, x) - potential;
+    let after = body.energy(to, &y) - potential;
     if before > 0.0 && after > 0.0 {
         let s = (before / after).sqrt();
         for k in [layout::VELOCITY, layout::VELOCITY + 1] {
@@ -349,11 +382,11 @@ pub(crate) fn check_start<D: ContactDynamics + ?Sized>(
 ) -> Result<(), ContactError> {
     let (body, w, phase) = (sys.body, &sys.watch, sys.phase);
     if phase == Phase::Sliding
-        && let Some(mu) = w.mu
+        && let Some(mu) = w.mu.or(w.normal_viscous).or(w.pivoting.map(|_| 0.0))
     {
         let slip = slip(body, x).norm();
         let threshold = stick_speed(body, w, x);
-        if slip <= threshold {
+        if w.mu.is_some() && slip <= threshold {
             return Err(ContactError::ZeroSlip { slip, threshold });
         }
         let d = denominator(body, w, x);

@@ -15,6 +15,32 @@ pub enum Friction {
     Viscous(ExprId),
     /// Coulomb friction F = −μ N u/|u| while sliding.
     Coulomb(ExprId),
+    /// Viscous friction scaled by the normal force, F = −μ N u (μ in s/m): the tippe top's
+    /// law of Rauch-Wojciechowski and of Cohen 1977's "viscous-type" friction. Unlike
+    /// Coulomb's it is smooth where the slip stops, so a sliding run needs no stick.
+    NormalViscous(ExprId),
+}
+
+/// Torques on a body on a table beyond its law's friction: resistances at the contact
+/// against its turning, and a couple supplied at run time. Each acts in every phase the law
+/// derives (rolling and sliding alike under stick–slip).
+///
+/// - rolling resistance −c_r ω_∥ and spin resistance −c_s ω_⊥, ω_⊥ = (ω·γ) γ the spin about
+///   the vertical and ω_∥ = ω − ω_⊥ (linear, in N·m·s);
+/// - pivoting friction −ℓ_p N sign(ω·γ) γ, ℓ_p = μ_p r_p (a length: the pivoting
+///   coefficient times the radius of the contact patch): Coulomb's law for the spin, so it
+///   stops a spin in finite time (Leine & Glocker; Le Saux, Leine & Glocker 2005);
+/// - a user couple: three input symbols (description axes) the run supplies.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ContactTorques {
+    /// Rolling resistance c_r, if declared.
+    pub rolling_resistance: Option<ExprId>,
+    /// Spin resistance c_s, if declared.
+    pub spin_resistance: Option<ExprId>,
+    /// Pivoting friction ℓ_p = μ_p r_p, if declared.
+    pub pivoting: Option<ExprId>,
+    /// A couple supplied at run time, description axes, as three input symbols.
+    pub user: Option<[ExprId; 3]>,
 }
 
 /// How the body and the table meet at the contact point.
@@ -109,4 +135,43 @@ impl LawKind {
             _ => Phase::Rolling,
         }
     }
+}
+
+/// The coefficients of a law and its further torques by the names the run-time rule
+/// ([`super::ContactValues`]) and the messages give them, in one order for the interpreted
+/// model and the derive: the law's friction (`mu`, `viscous`, `normal_viscous`), then
+/// `rolling_resistance`, `spin_resistance`, `pivoting`.
+pub fn coefficients(law: &ContactLaw, torques: &ContactTorques) -> Vec<(&'static str, ExprId)> {
+    let friction = match *law {
+        ContactLaw::Sliding(Friction::Viscous(c)) => Some(("viscous", c)),
+        ContactLaw::Sliding(Friction::NormalViscous(mu)) => Some(("normal_viscous", mu)),
+        ContactLaw::Sliding(Friction::Coulomb(mu)) | ContactLaw::StickSlip { mu } => {
+            Some(("mu", mu))
+        }
+        ContactLaw::Sliding(Friction::Frictionless) | ContactLaw::Rolling { .. } => None,
+    };
+    // A rolling law's own resistances are the torques' once merged; before, they are read
+    // from the law.
+    let (rolling, spin) = match *law {
+        ContactLaw::Rolling {
+            rolling_resistance,
+            spin_resistance,
+        } => (
+            rolling_resistance.or(torques.rolling_resistance),
+            spin_resistance.or(torques.spin_resistance),
+        ),
+        _ => (torques.rolling_resistance, torques.spin_resistance),
+    };
+    friction
+        .into_iter()
+        .chain(
+            [
+                ("rolling_resistance", rolling),
+                ("spin_resistance", spin),
+                ("pivoting", torques.pivoting),
+            ]
+            .into_iter()
+            .filter_map(|(n, c)| c.map(|c| (n, c))),
+        )
+        .collect()
 }

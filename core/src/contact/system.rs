@@ -13,7 +13,8 @@ use crate::ode::{OdeError, System};
 /// One phase of a body on a table as an ODE system on the state array of
 /// [`super::layout`], for any stepper, and as the hooks of the run loop
 /// ([`crate::ode::Hybrid`]): the phase is its mode; lift-off, the friction cone, the slip
-/// stopping, Painlevé's paradox and the support map's limit are its witnesses.
+/// stopping, Painlevé's paradox, the support map's limit and a spin that pivoting friction
+/// stops are its witnesses.
 #[derive(Debug)]
 pub struct ContactSystem<'a, D: ?Sized> {
     /// The body.
@@ -33,6 +34,10 @@ pub(crate) struct Watch {
     pub(crate) surface: SurfaceKind,
     /// μ of a Coulomb or stick–slip law.
     pub(crate) mu: Option<f64>,
+    /// μ of the normal-force-scaled viscous law F = −μ N u.
+    pub(crate) normal_viscous: Option<f64>,
+    /// ℓ_p of the pivoting friction −ℓ_p N sign(ω·γ) γ.
+    pub(crate) pivoting: Option<f64>,
     pub(crate) mass: f64,
     /// The inverse of the inertia about the centre of mass, description axes.
     pub(crate) inertia_inv: Matrix3<f64>,
@@ -54,10 +59,18 @@ impl<'a, D: ContactDynamics + ?Sized> ContactSystem<'a, D> {
             value: inertia.determinant(),
             rule: "invertible (its determinant is this)",
         })?;
+        let coefficient = |name: &str| {
+            v.coefficients
+                .iter()
+                .find(|(n, _)| *n == name)
+                .map(|&(_, c)| c)
+        };
         let watch = Watch {
             law: body.law(),
             surface: body.surface_kind(),
             mu: body.friction_coefficient(),
+            normal_viscous: coefficient("normal_viscous"),
+            pivoting: coefficient("pivoting"),
             mass: v.mass,
             inertia_inv,
             gravity: v.gravity,

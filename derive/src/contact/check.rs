@@ -4,7 +4,9 @@
 //! at run time, in the generated `ContactDynamics::check_parameters`). One function per rule,
 //! its reason in a comment.
 
-use precess_core::contact::{ContactError, ContactLaw, ContactScene, ContactValues, Surface};
+use precess_core::contact::{
+    ContactError, ContactLaw, ContactScene, ContactTorques, ContactValues, Surface,
+};
 use precess_core::sym::ExprId;
 use syn::{Attribute, Expr, Ident};
 
@@ -22,6 +24,11 @@ pub struct ContactSettings {
     pub surface: Surface,
     /// The contact law.
     pub law: ContactLaw,
+    /// The torques beyond the law's friction the law's keys declare (the resistances of
+    /// stick–slip, pivoting friction); the user couple's symbols join at expansion.
+    pub torques: ContactTorques,
+    /// The path of the user couple function, `torque = f`.
+    pub couple: Option<syn::Path>,
     /// g along −z in space.
     pub gravity: ExprId,
 }
@@ -75,6 +82,7 @@ pub fn check(
     let in_contact = format!("`#[{}]`", keys::CONTACT);
     let mut seen: Vec<&Ident> = Vec::new();
     let (mut surface, mut law, mut gravity) = (None, None, None);
+    let mut couple = None;
     let mut surface_value = None;
     let mut written_as_group: Vec<&str> = Vec::new();
     for item in &items.items {
@@ -105,6 +113,7 @@ pub fn check(
                 surface_value = Some(value);
             }
             Some(keys::LAW) => law = read_law(ck, value),
+            Some(keys::TORQUE) => couple = user_fn(ck, value),
             Some(keys::GRAVITY) => {
                 gravity = ck.expecting(Dim::ACCELERATION, keys::GRAVITY, |ck| {
                     let why = "it is g along −z; one pulling up would lift the body off the table";
@@ -148,11 +157,33 @@ pub fn check(
     if !ok {
         return None;
     }
+    let (law, torques) = law?;
     Some(Some(ContactSettings {
         surface: surface?,
-        law: law?,
+        law,
+        torques,
+        couple,
         gravity: gravity?,
     }))
+}
+
+/// The path of the user couple, `torque = f`: a function of the state, as `#[top]`'s
+/// `torque` is, without the time (the normal force, which the witnesses read, is then a
+/// function of the state alone).
+fn user_fn(ck: &mut Checker, value: &Expr) -> Option<syn::Path> {
+    match value {
+        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
+        _ => {
+            ck.cx.error_spanned_by(
+                value,
+                format!(
+                    "`{}` expects a path to a function `fn(&Self, &Matrix3<f64>, &Vector3<f64>) -> Vector3<f64>` (attitude, body ω → the couple on the body, description axes)",
+                    keys::TORQUE
+                ),
+            );
+            None
+        }
+    }
 }
 
 /// The message for `name(...)` written as an item of `#[contact]` itself.

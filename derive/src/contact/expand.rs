@@ -7,12 +7,14 @@
 
 use precess_core::codegen::Emitted;
 use precess_core::contact::{
-    ContactDerivation, ContactEquations, ContactLaw, Friction, STATE_LEN, SurfaceKind,
+    ContactDerivation, ContactEquations, ContactLaw, ContactTorques, Friction, STATE_LEN,
+    SurfaceKind, coefficients,
 };
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{quote, quote_spanned};
 use syn::Ident;
+use syn::spanned::Spanned;
 
 use super::check::ContactSettings;
 use crate::lang::ctxt::Ctxt;
@@ -32,15 +34,29 @@ pub fn expand(
     let p = Private;
     let scene = settings.scene(checked);
     let what = "the equations of the body on the table";
+    let mut torques = settings.torques;
+    let mut symbols = parameters.tokens();
+    // The user couple enters the derivation as three input symbols, read from the value the
+    // user function returns.
+    if settings.couple.is_some() {
+        let u: [ExprId; 3] =
+            std::array::from_fn(|i| arena.input(&format!("contact_couple_{}", i + 1)));
+        for (i, &ui) in u.iter().enumerate() {
+            symbols.insert_expr(arena, ui, quote!(__u[#i]));
+        }
+        torques.user = Some(u);
+    }
     let derivation = scene
-        .derive(arena)
+        .derive_with(arena, &torques)
         .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
-    let low = Lowering::new(cx, ident, parameters.tokens());
+    let low = Lowering::new(cx, ident, symbols);
+    let couple =
+        |arena: &Arena, outputs: &[ExprId]| couple_call(arena, outputs, settings, &torques);
     let method = StateMethod {
         low: &low,
         state: &derivation.state,
-        prelude: None,
+        prelude: Some(&couple),
     };
     let vector = |o: &[TokenStream]| quote!(#p::Vector3::new(#(#o),*));
     let ContactDerivation {
@@ -147,7 +163,7 @@ pub fn expand(
         }
         None => quote!({ ::core::option::Option::None }),
     };
-    let (check, values) = check_parameters((cx, ident), parameters, &low, arena, settings, checked);
+    let (check, values) = check_parameters((cx, ident), parameters, &low, arena, &derivation);
     Some(quote! {
         #[automatically_derived]
         #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery, unused_parens)]
@@ -203,24 +219,34 @@ fn surface_kind(kind: SurfaceKind) -> TokenStream {
     }
 }
 
-/// The law's coefficients by the names the run-time rule gives them.
-fn coefficients(law: &ContactLaw) -> Vec<(&'static str, ExprId)> {
-    match *law {
-        ContactLaw::Rolling {
-            rolling_resistance,
-            spin_resistance,
-        } => [
-            ("rolling_resistance", rolling_resistance),
-            ("spin_resistance", spin_resistance),
-        ]
-        .into_iter()
-        .filter_map(|(n, c)| c.map(|c| (n, c)))
-        .collect(),
-        ContactLaw::Sliding(Friction::Frictionless) => Vec::new(),
-        ContactLaw::Sliding(Friction::Viscous(c)) => vec![("viscous", c)],
-        ContactLaw::Sliding(Friction::Coulomb(mu)) | ContactLaw::StickSlip { mu } => {
-            vec![("mu", mu)]
-        }
+/// The call of the user couple, `let __u = f(self, &R, &ω);`, where `outputs` read its
+/// value (nothing otherwise). The function is first bound to a fn pointer of the signature
+/// the attribute documents, spanned on its path: a function of another signature is then one
+/// error on the path in the attribute, naming the expected and the found signature.
+fn couple_call(
+    arena: &Arena,
+    outputs: &[ExprId],
+    settings: &ContactSettings,
+    torques: &ContactTorques,
+) -> TokenStream {
+    let (Some(path), Some(u)) = (&settings.couple, torques.user) else {
+        return TokenStream::new();
+    };
+    let read = u
+        .iter()
+        .filter_map(|&e| arena.as_symbol(e))
+        .any(|s| outputs.iter().any(|&o| arena.free_symbols(o).contains(&s)));
+    if !read {
+        return TokenStream::new();
+    }
+    let p = Private;
+    let bind = quote_spanned! {path.span()=>
+        let __torque: fn(&Self, &#p::Matrix3<f64>, &#p::Vector3<f64>) -> #p::Vector3<f64> = #path;
+    };
+    quote! {
+        #bind
+        let __r = #p::attitude_of(y).to_rotation_matrix().into_inner();
+        let __u = __torque(self, &__r, &#p::Vector3::new(y[8], y[9], y[10]));
     }
 }
 
@@ -233,13 +259,12 @@ fn check_parameters(
     parameters: &FieldParameters,
     low: &Lowering,
     arena: &Arena,
-    settings: &ContactSettings,
-    checked: &CheckedBody,
+    derivation: &ContactDerivation,
 ) -> (TokenStream, TokenStream) {
     let p = Private;
-    let scene = settings.scene(checked);
+    let scene = &derivation.scene;
     let (placement, lengths) = scene.surface.dimensions();
-    let coefficients = coefficients(&scene.law);
+    let coefficients = coefficients(&scene.law, &derivation.torques);
     let mut values: Vec<ExprId> = vec![scene.mass, scene.gravity];
     values.extend(scene.center);
     values.extend(scene.inertia.iter().flatten());

@@ -3,7 +3,7 @@
 //! against the tables in `keys.rs`, each dimension and coefficient
 //! with the rule it must meet where it is a literal (fields meet the same rules at run time).
 
-use precess_core::contact::{ContactLaw, Friction, Surface};
+use precess_core::contact::{ContactLaw, ContactTorques, Friction, Surface};
 use precess_core::sym::ExprId;
 use syn::{Expr, Ident};
 
@@ -27,12 +27,14 @@ pub fn surface_list() -> String {
 /// The laws as the messages list them.
 pub fn law_list() -> String {
     format!(
-        "`{r}`, `{r}({rr} = c, {sr} = c)`, `{s}({v} = c)`, `{s}({c} = μ)`, `{s}({f})` or `{ss}({mu} = μ)`",
+        "`{r}`, `{r}({rr} = c, {sr} = c, {p} = ℓ)`, `{s}({v} = c)`, `{s}({nv} = μ)`, `{s}({c} = μ)`, `{s}({f})` or `{ss}({mu} = μ, {rr} = c, {sr} = c, {p} = ℓ)`",
         r = keys::ROLLING,
         rr = keys::ROLLING_RESISTANCE,
         sr = keys::SPIN_RESISTANCE,
+        p = keys::PIVOTING,
         s = keys::SLIDING,
         v = keys::VISCOUS,
+        nv = keys::NORMAL_VISCOUS,
         c = keys::COULOMB,
         f = keys::FRICTIONLESS,
         ss = keys::STICK_SLIP,
@@ -146,8 +148,10 @@ pub fn read_surface(ck: &mut Checker, value: &Expr) -> Option<Surface> {
     surface::read_surface(ck, value, Place::Table).map(|s| s.surface)
 }
 
-/// `law = name` or `law = name(key = value, ...)`, one of [`LAWS`].
-pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
+/// `law = name` or `law = name(key = value, ...)`, one of [`LAWS`]: the law, and the
+/// torques it declares beyond a rolling law's own resistances (the resistances of
+/// stick–slip, pivoting friction).
+pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<(ContactLaw, ContactTorques)> {
     let what = format!("a contact law: {}", law_list());
     let (name, args) = call_form(ck, value, &what)?;
     let Some(&(kind, allowed)) = LAWS.iter().find(|(l, _)| name == l) else {
@@ -169,6 +173,16 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
         let (dim, what) = match key {
             keys::ROLLING_RESISTANCE | keys::SPIN_RESISTANCE => (Dim::ROTARY_DAMPING, None),
             keys::VISCOUS => (Dim::DRAG, None),
+            // ℓ_p = μ_p r_p, a friction coefficient times the contact patch's radius.
+            keys::PIVOTING => (
+                Dim::LENGTH,
+                Some("a length (m): the pivoting coefficient times the contact patch's radius"),
+            ),
+            // μ of F = −μ N u: a force per newton per slip speed, s/m.
+            keys::NORMAL_VISCOUS => (
+                Dim::DRAG.times(Dim::FORCE.pow(-1)?)?,
+                Some("an inverse speed (s/m): F = −μ N u"),
+            ),
             _ => (
                 Dim::NONE,
                 Some("a pure number (a friction coefficient has no units)"),
@@ -183,15 +197,27 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
             None => Some(None),
         }
     };
-    match kind {
-        keys::ROLLING => {
-            let rolling_resistance = coefficient(ck, keys::ROLLING_RESISTANCE);
-            let spin_resistance = coefficient(ck, keys::SPIN_RESISTANCE);
-            Some(ContactLaw::Rolling {
-                rolling_resistance: rolling_resistance?,
-                spin_resistance: spin_resistance?,
-            })
-        }
+    // Every law but sliding takes the resistances; each is read (and its errors told)
+    // before any is refused.
+    let (rolling_resistance, spin_resistance, pivoting) = if kind == keys::SLIDING {
+        (Some(None), Some(None), Some(None))
+    } else {
+        (
+            coefficient(ck, keys::ROLLING_RESISTANCE),
+            coefficient(ck, keys::SPIN_RESISTANCE),
+            coefficient(ck, keys::PIVOTING),
+        )
+    };
+    let (rolling_resistance, spin_resistance) = (rolling_resistance?, spin_resistance?);
+    let mut torques = ContactTorques {
+        pivoting: pivoting?,
+        ..ContactTorques::default()
+    };
+    let law = match kind {
+        keys::ROLLING => ContactLaw::Rolling {
+            rolling_resistance,
+            spin_resistance,
+        },
         keys::SLIDING => {
             // One friction law: two would be two different tables.
             if args.len() != 1 {
@@ -203,8 +229,9 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
                 ck.cx.error_spanned_by(
                     value,
                     format!(
-                        "`{kind}` {which} friction: `{kind}({} = c)`, `{kind}({} = μ)` or `{kind}({})`",
+                        "`{kind}` {which} friction: `{kind}({} = c)`, `{kind}({} = μ)`, `{kind}({} = μ)` or `{kind}({})`",
                         keys::VISCOUS,
+                        keys::NORMAL_VISCOUS,
                         keys::COULOMB,
                         keys::FRICTIONLESS
                     ),
@@ -212,12 +239,14 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
                 return None;
             }
             let viscous = coefficient(ck, keys::VISCOUS)?;
+            let normal_viscous = coefficient(ck, keys::NORMAL_VISCOUS)?;
             let coulomb = coefficient(ck, keys::COULOMB)?;
-            Some(ContactLaw::Sliding(match (viscous, coulomb) {
-                (Some(c), _) => Friction::Viscous(c),
-                (_, Some(mu)) => Friction::Coulomb(mu),
+            ContactLaw::Sliding(match (viscous, normal_viscous, coulomb) {
+                (Some(c), _, _) => Friction::Viscous(c),
+                (_, Some(mu), _) => Friction::NormalViscous(mu),
+                (_, _, Some(mu)) => Friction::Coulomb(mu),
                 _ => Friction::Frictionless,
-            }))
+            })
         }
         _ => {
             let Some(mu) = coefficient(ck, keys::MU)? else {
@@ -230,9 +259,12 @@ pub fn read_law(ck: &mut Checker, value: &Expr) -> Option<ContactLaw> {
                 );
                 return None;
             };
-            Some(ContactLaw::StickSlip { mu })
+            torques.rolling_resistance = rolling_resistance;
+            torques.spin_resistance = spin_resistance;
+            ContactLaw::StickSlip { mu }
         }
-    }
+    };
+    Some((law, torques))
 }
 
 /// Why friction or resistance must not be negative.

@@ -203,7 +203,7 @@ fn contact_input() -> impl proptest::strategy::Strategy<Value = String> {
                 _ => format!("spehre(radius = {a})"),
             }
         });
-    let law = (0..8usize, v()).prop_map(|(kind, c)| match kind {
+    let law = (0..11usize, v()).prop_map(|(kind, c)| match kind {
         0 => "rolling".to_owned(),
         1 => format!("rolling(rolling_resistance = {c})"),
         2 => format!("rolling(spin_resistance = {c}, rolling_resistance = {c})"),
@@ -211,6 +211,9 @@ fn contact_input() -> impl proptest::strategy::Strategy<Value = String> {
         4 => format!("sliding(coulomb = {c})"),
         5 => "sliding(frictionless)".to_owned(),
         6 => format!("stick_slip(mu = {c})"),
+        7 => format!("stick_slip(mu = {c}, rolling_resistance = {c}, pivoting = {c})"),
+        8 => format!("sliding(normal_viscous = {c})"),
+        9 => format!("rolling(pivoting = {c}, spin_resistance = {c})"),
         _ => format!("sliding(viscous = {c}, coulomb = {c})"),
     });
     (surface, law, proptest::option::of(v()), v(), v()).prop_map(|(surface, law, g, h, m)| {

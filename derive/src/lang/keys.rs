@@ -371,8 +371,9 @@ pub const CONTACT: &str = "contact";
 pub const SURFACE: &str = "surface";
 /// The law of the contact, `law = rolling` or `law = sliding(viscous = c)`.
 pub const LAW: &str = "law";
-/// The keys of `#[contact(...)]`, in the order the docs list them; all three are required.
-pub const CONTACT_KEYS: &[&str] = &[SURFACE, LAW, GRAVITY];
+/// The keys of `#[contact(...)]`, in the order the docs list them; the first three are
+/// required, `torque` (a user couple, a path to a function of the state) is optional.
+pub const CONTACT_KEYS: &[&str] = &[SURFACE, LAW, GRAVITY, TORQUE];
 
 /// The centre of a contact surface (sphere, ellipsoid, disk rim, torus).
 pub const SURFACE_CENTER: &str = "center";
@@ -408,6 +409,10 @@ pub const ROLLING_RESISTANCE: &str = "rolling_resistance";
 pub const SPIN_RESISTANCE: &str = "spin_resistance";
 /// Viscous sliding friction −c u.
 pub const VISCOUS: &str = "viscous";
+/// Viscous sliding friction scaled by the normal force, −μ N u.
+pub const NORMAL_VISCOUS: &str = "normal_viscous";
+/// Pivoting friction −ℓ_p N sign(ω·γ) γ against the spin about the vertical.
+pub const PIVOTING: &str = "pivoting";
 /// Coulomb sliding friction −μ N u/|u|.
 pub const COULOMB: &str = "coulomb";
 /// No sliding friction at all (a flag, no value).
@@ -416,9 +421,12 @@ pub const FRICTIONLESS: &str = "frictionless";
 pub const MU: &str = "mu";
 /// The contact laws, `name(keys)`, in the order the docs list them.
 pub const LAWS: &[(&str, &[&str])] = &[
-    (ROLLING, &[ROLLING_RESISTANCE, SPIN_RESISTANCE]),
-    (SLIDING, &[VISCOUS, COULOMB, FRICTIONLESS]),
-    (STICK_SLIP, &[MU]),
+    (ROLLING, &[ROLLING_RESISTANCE, SPIN_RESISTANCE, PIVOTING]),
+    (SLIDING, &[VISCOUS, NORMAL_VISCOUS, COULOMB, FRICTIONLESS]),
+    (
+        STICK_SLIP,
+        &[MU, ROLLING_RESISTANCE, SPIN_RESISTANCE, PIVOTING],
+    ),
 ];
 
 #[cfg(test)]

@@ -5,7 +5,8 @@
 
 use nalgebra::{DMatrix, DVector, Matrix3, UnitQuaternion, Vector3};
 use precess::contact::{
-    ContactLaw, ContactModel, ContactScene, Friction, STATE_LEN, Surface, attitude_of, layout,
+    ContactLaw, ContactModel, ContactScene, ContactTorques, Friction, STATE_LEN, Surface,
+    attitude_of, layout,
 };
 use precess::sym::{Arena, ExprId};
 
@@ -22,11 +23,25 @@ pub enum NumSurface {
 /// A contact law by numbers.
 #[derive(Clone, Copy, Debug)]
 pub enum NumLaw {
-    Rolling { cr: Option<f64>, cs: Option<f64> },
+    Rolling {
+        cr: Option<f64>,
+        cs: Option<f64>,
+    },
     Frictionless,
     Viscous(f64),
     Coulomb(f64),
     StickSlip(f64),
+    /// F = −μ N u.
+    NormalViscous(f64),
+}
+
+/// The torques beyond a law's friction by numbers (`ContactTorques`): resistances and
+/// pivoting friction ℓ_p.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NumTorques {
+    pub cr: Option<f64>,
+    pub cs: Option<f64>,
+    pub pivoting: Option<f64>,
 }
 
 /// A body on a table by numbers.
@@ -111,6 +126,15 @@ pub fn try_model(
     body: &NumBody,
     law: NumLaw,
 ) -> Result<ContactModel, precess::contact::ContactError> {
+    try_model_with(body, law, NumTorques::default())
+}
+
+/// As [`try_model`], under the further `torques`.
+pub fn try_model_with(
+    body: &NumBody,
+    law: NumLaw,
+    torques: NumTorques,
+) -> Result<ContactModel, precess::contact::ContactError> {
     let mut a = Arena::new();
     let mut values: Vec<(String, f64)> = Vec::new();
     let mut num = |a: &mut Arena, v: f64| -> ExprId { number(a, &mut values, v) };
@@ -161,6 +185,21 @@ pub fn try_model(
         NumLaw::StickSlip(mu) => ContactLaw::StickSlip {
             mu: a.parameter_valued(&mut values, "mu", mu),
         },
+        NumLaw::NormalViscous(mu) => ContactLaw::Sliding(Friction::NormalViscous(
+            a.parameter_valued(&mut values, "mu", mu),
+        )),
+    };
+    let torques = ContactTorques {
+        rolling_resistance: torques
+            .cr
+            .map(|c| a.parameter_valued(&mut values, "cr_extra", c)),
+        spin_resistance: torques
+            .cs
+            .map(|c| a.parameter_valued(&mut values, "cs_extra", c)),
+        pivoting: torques
+            .pivoting
+            .map(|c| a.parameter_valued(&mut values, "pivoting", c)),
+        user: None,
     };
     let scene = ContactScene {
         mass,
@@ -170,7 +209,7 @@ pub fn try_model(
         law,
         gravity,
     };
-    let d = scene.derive(&mut a)?;
+    let d = scene.derive_with(&mut a, &torques)?;
     let pairs: Vec<(&str, f64)> = values.iter().map(|(n, v)| (n.as_str(), *v)).collect();
     ContactModel::new(&mut a, &d, &pairs)
 }
@@ -271,6 +310,17 @@ fn skew(v: &Vector3<f64>) -> Matrix3<f64> {
 /// components, differentiated along the moving contact: a = −Ω̇ × ρ − Ω × ρ̇) or at zero
 /// vertically (sliding: the vertical component only, and F = F₀ + N e from the friction law).
 pub fn newton_euler(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> Reference {
+    newton_euler_pivoting(body, law, None, y)
+}
+
+/// As [`newton_euler`], with pivoting friction −ℓ_p N sign(Ω_z) ẑ when `pivoting` is given
+/// (N the unknown normal force, so its coefficient joins the solve's matrix).
+pub fn newton_euler_pivoting(
+    body: &NumBody,
+    law: NumLaw,
+    pivoting: Option<f64>,
+    y: &[f64; STATE_LEN],
+) -> Reference {
     let q = attitude_of(y);
     let r_mat = q.to_rotation_matrix().into_inner();
     let omega_b = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
@@ -287,6 +337,8 @@ pub fn newton_euler(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> Refere
     let (m, g) = (body.mass, body.gravity);
     let z = Vector3::z();
     let gyro = omega.cross(&(i_s * omega));
+    // The pivoting torque per newton of N, about ẑ: −ℓ_p sign(Ω_z).
+    let pivot = -pivoting.unwrap_or(0.0) * omega.z.signum();
     match law {
         NumLaw::Rolling { cr, cs } => {
             // Resistance torques: −c_r Ω_∥ − c_s Ω_⊥ about the vertical.
@@ -304,6 +356,7 @@ pub fn newton_euler(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> Refere
             a.view_mut((3, 0), (3, 3)).copy_from(&i_s);
             a.view_mut((3, 3), (3, 3)).copy_from(&(-skew(&rho)));
             b.rows_mut(3, 3).copy_from(&(-gyro + tau));
+            a[(5, 5)] -= pivot;
             let x = a.lu().solve(&b).unwrap();
             let omega_dot = Vector3::new(x[0], x[1], x[2]);
             let force = Vector3::new(x[3], x[4], x[5]);
@@ -320,6 +373,7 @@ pub fn newton_euler(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> Refere
             let (f0, e) = match law {
                 NumLaw::Viscous(c) => (-c * u, z),
                 NumLaw::Coulomb(mu) => (Vector3::zeros(), z - mu * u / u.norm()),
+                NumLaw::NormalViscous(mu) => (Vector3::zeros(), z - mu * u),
                 _ => (Vector3::zeros(), z),
             };
             let mut a = DMatrix::<f64>::zeros(4, 4);
@@ -337,6 +391,7 @@ pub fn newton_euler(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> Refere
             for i in 0..3 {
                 a[(1 + i, 3)] = -re[i];
             }
+            a[(3, 3)] -= pivot;
             b.rows_mut(1, 3).copy_from(&(-gyro + rho.cross(&f0)));
             let x = a.lu().solve(&b).unwrap();
             let omega_dot = Vector3::new(x[0], x[1], x[2]);
