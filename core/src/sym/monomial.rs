@@ -24,6 +24,10 @@ pub(crate) enum Product {
     Terms(Box<[(Rational, ExprId)]>),
 }
 
+/// A monomial's factors while it is merged: (the factor as it stands, or `None` where its
+/// exponent changed; base; exponent).
+type Merged = Vec<(Option<ExprId>, ExprId, i64)>;
+
 /// The most factors a fast-path monomial holds; larger ones take the general path.
 const MAX_FACTORS: usize = 24;
 
@@ -77,7 +81,7 @@ impl Arena {
         }
         f.sort_unstable_by_key(|&(_, b, _)| b);
         // (factor, base, exponent) merged; factor is None where the exponent changed.
-        let mut merged: Vec<(Option<ExprId>, ExprId, i64)> = Vec::with_capacity(f.len());
+        let mut merged: Merged = Vec::with_capacity(f.len());
         // Each sine folded: (the cosine of its argument, k of (1 − cos²)^k).
         let mut folded: Vec<(ExprId, i64)> = Vec::new();
         let mut i = 0;
@@ -115,8 +119,7 @@ impl Arena {
             return Some(Product::Monomial(self.monomial_of(&merged)));
         }
         // Π (1 − c²)^k = Σ_j C(k, j) (−1)^j c^(2j), one cosine at a time.
-        let mut terms: Vec<(Rational, Vec<(Option<ExprId>, ExprId, i64)>)> =
-            vec![(Rational::ONE, merged)];
+        let mut terms: Vec<(Rational, Merged)> = vec![(Rational::ONE, merged)];
         for (c, k) in folded {
             let mut next = Vec::with_capacity(terms.len() * (k as usize + 1));
             for (coefficient, factors) in &terms {
