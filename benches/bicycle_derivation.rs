@@ -10,9 +10,7 @@ use precess::mechanism::rolling::RollingModel;
 use precess::sym::Arena;
 use std::hint::black_box;
 
-#[path = "common/bicycle_scene.rs"]
-mod bicycle_scene;
-use bicycle_scene::bicycle_scene;
+use precess_testkit::bicycle::mechanism_scene;
 
 /// The paper's Table 1, named as the scene's parameters.
 const BENCHMARK: [(&str, f64); 26] = [
@@ -50,7 +48,7 @@ const NAMES: [&str; 8] = [
 
 fn lowered() -> RollingModel<8, 5, 3> {
     let mut a = Arena::new();
-    let (scene, rolling) = bicycle_scene(&mut a);
+    let (scene, rolling) = mechanism_scene(&mut a);
     let d = scene
         .derive_rolling(&mut a, &rolling)
         .expect("the bicycle derives");
@@ -64,7 +62,7 @@ fn bicycle(c: &mut Criterion) {
     group.bench_function("derive_rolling", |b| {
         b.iter(|| {
             let mut a = Arena::new();
-            let (scene, rolling) = bicycle_scene(&mut a);
+            let (scene, rolling) = mechanism_scene(&mut a);
             black_box(
                 scene
                     .derive_rolling(&mut a, &rolling)

@@ -1,6 +1,7 @@
 //! The Whipple bicycle of examples/mechanisms/bicycle.rs built at run time as the derive
-//! builds it (the parameters named as the struct's fields), so that the derivation bench
-//! times what `#[derive(Mechanism)]` runs while it expands (included by path).
+//! builds it (the parameters named as the struct's fields): the scene the cross-check test
+//! interprets and the derivation bench times (what `#[derive(Mechanism)]` runs while it
+//! expands).
 
 use precess::mechanism::rolling::{RollingScene, RollingWheel, WheelSurface};
 use precess::mechanism::{JointKind, MechanismScene, Parent};
@@ -8,7 +9,7 @@ use precess::sym::Arena;
 
 /// The bicycle's tree (three massless carriers, the rear frame, the rear wheel, the front
 /// frame, the front wheel) and its two knife-edge wheels rolling on the floor z = 0, z down.
-pub fn bicycle_scene(a: &mut Arena) -> (MechanismScene, RollingScene) {
+pub fn mechanism_scene(a: &mut Arena) -> (MechanismScene, RollingScene) {
     let (o, z) = (a.one(), a.zero());
     let mut p = |n: &str| a.parameter(n);
     let [w, c, lambda, g, r_r, m_r, i_rxx, i_ryy] =
