@@ -15,8 +15,15 @@ precess's counterpart is `MechanismScene::derive_rolling` on the same bicycle (M
 rolling rows and Ȧq̇, exactly), timed by the bicycle's bench or test.
 
 Usage: python3 scripts/sympy_bicycle.py   (needs sympy; takes minutes)
+       python3 scripts/sympy_bicycle.py --derivation-only [runs]
+           stops at Kane's equations and repeats that in `runs` fresh processes (default 5),
+           printing each time and the median: the figure compared with the derivation bench
+           (`cargo bench -p precess-benches --bench bicycle_derivation`)
 """
 
+import statistics
+import subprocess
+import sys
 import time
 
 import sympy
@@ -27,18 +34,48 @@ marks = {}
 original = me.KanesMethod.kanes_equations
 
 
+class Derived(Exception):
+    """Raised after Kane's equations when only the derivation is timed."""
+
+
 def timed_kanes_equations(self, *args, **kwargs):
     out = original(self, *args, **kwargs)
     marks["kane"] = time.perf_counter()
+    if marks.get("stop"):
+        raise Derived
     return out
 
 
+def derivation_only():
+    """One derivation in this process (SymPy's caches start empty), in seconds."""
+    marks["stop"] = True
+    start = time.perf_counter()
+    try:
+        test_kane3.test_bicycle()
+    except Derived:
+        pass
+    return marks["kane"] - start
+
+
 me.KanesMethod.kanes_equations = timed_kanes_equations
-start = time.perf_counter()
-test_kane3.test_bicycle()
-end = time.perf_counter()
-derivation = marks["kane"] - start
-print(f"sympy {sympy.__version__}")
-print(f"derivation (to Kane's equations): {derivation:.2f} s")
-print(f"linearisation and eigenvalues:    {end - marks['kane']:.2f} s")
-print(f"whole test:                        {end - start:.2f} s")
+if len(sys.argv) > 1 and sys.argv[1] == "--child":
+    print(derivation_only())
+elif len(sys.argv) > 1 and sys.argv[1] == "--derivation-only":
+    runs = int(sys.argv[2]) if len(sys.argv) > 2 else 5
+    times = []
+    for _ in range(runs):
+        child = subprocess.run(
+            [sys.executable, __file__, "--child"], capture_output=True, text=True, check=True
+        )
+        times.append(float(child.stdout.split()[-1]))
+        print(f"derivation (to Kane's equations): {times[-1]:.3f} s")
+    print(f"sympy {sympy.__version__}, median of {runs}: {statistics.median(times):.3f} s")
+else:
+    start = time.perf_counter()
+    test_kane3.test_bicycle()
+    end = time.perf_counter()
+    derivation = marks["kane"] - start
+    print(f"sympy {sympy.__version__}")
+    print(f"derivation (to Kane's equations): {derivation:.2f} s")
+    print(f"linearisation and eigenvalues:    {end - marks['kane']:.2f} s")
+    print(f"whole test:                        {end - start:.2f} s")

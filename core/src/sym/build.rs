@@ -69,7 +69,8 @@ impl Arena {
     pub fn sum(&mut self, terms: &[ExprId]) -> ExprId {
         // Flatten, then split every term into (coefficient, monomial).
         let mut consts: Vec<Rational> = Vec::new();
-        let mut split: Vec<(ExprId, Rational)> = Vec::with_capacity(terms.len());
+        // (monomial, coefficient, the term as given).
+        let mut split: Vec<(ExprId, Rational, ExprId)> = Vec::with_capacity(terms.len());
         let mut stack: Vec<ExprId> = terms.iter().rev().copied().collect();
         while let Some(t) = stack.pop() {
             match self.node(t) {
@@ -77,16 +78,22 @@ impl Arena {
                 Node::Const(r) => fold_into(&mut consts, *r, Rational::checked_add),
                 _ => {
                     let (c, m) = self.split_coefficient(t);
-                    split.push((m, c));
+                    split.push((m, c, t));
                 }
             }
         }
         // Collect like terms: sort by monomial, then add coefficients of equal monomials.
-        split.sort_by_key(|&(m, _)| m);
+        split.sort_by_key(|&(m, _, _)| m);
         let mut out: Vec<ExprId> = Vec::with_capacity(split.len() + 1);
         let mut i = 0;
         while i < split.len() {
             let m = split[i].0;
+            // A monomial met once keeps its (canonical) term: c·m rebuilt is that node.
+            if split.get(i + 1).is_none_or(|next| next.0 != m) {
+                out.push(split[i].2);
+                i += 1;
+                continue;
+            }
             let mut coeffs = vec![split[i].1];
             i += 1;
             while i < split.len() && split[i].0 == m {

@@ -14,6 +14,7 @@
 use super::arena::{Arena, ExprId, Node};
 use super::error::SymError;
 use super::hash::IdMap;
+use super::monomial::Product;
 use super::rational::Rational;
 
 /// The most terms an expansion may produce; a product or power whose expansion would have
@@ -185,7 +186,7 @@ impl Arena {
     }
 
     /// The terms of `e` as (coefficient, monomial) pairs.
-    fn split_terms(&mut self, e: ExprId) -> Terms {
+    pub(crate) fn split_terms(&mut self, e: ExprId) -> Terms {
         let terms: Vec<ExprId> = match self.node(e) {
             Node::Add(t) => t.to_vec(),
             _ => vec![e],
@@ -206,21 +207,85 @@ impl Arena {
         self.sum_of_terms(&acc)
     }
 
-    fn sum_of_terms(&mut self, terms: &Terms) -> ExprId {
-        let parts: Vec<ExprId> = terms
-            .iter()
-            .map(|&(c, m)| self.scale_monomial(c, m))
+    /// The sum of `terms`, as [`Arena::sum`] builds it; directly when the monomials are
+    /// distinct (as [`Arena::multiply_terms`] leaves them unless a coefficient overflowed).
+    pub(crate) fn sum_of_terms(&mut self, terms: &Terms) -> ExprId {
+        let one = self.one();
+        let mut constant = Some(Rational::ZERO);
+        let mut parts: Vec<(ExprId, Rational)> = Vec::with_capacity(terms.len());
+        for &(c, m) in terms.iter().filter(|(c, _)| !c.is_zero()) {
+            if m == one {
+                constant = constant.and_then(|k| k.checked_add(c));
+            } else {
+                parts.push((m, c));
+            }
+        }
+        parts.sort_unstable_by_key(|&(m, _)| m);
+        let distinct = parts.windows(2).all(|w| w[0].0 != w[1].0);
+        let Some(constant) = constant.filter(|_| distinct) else {
+            let all: Vec<ExprId> = terms
+                .iter()
+                .map(|&(c, m)| self.scale_monomial(c, m))
+                .collect();
+            return self.sum(&all);
+        };
+        let mut out: Vec<ExprId> = parts
+            .into_iter()
+            .map(|(m, c)| self.scaled_monomial(c, m))
             .collect();
-        self.sum(&parts)
+        out.sort_unstable();
+        if !constant.is_zero() {
+            out.insert(0, self.constant(constant));
+        }
+        match out.len() {
+            0 => self.zero(),
+            1 => out[0],
+            _ => self.intern(Node::Add(out.into_boxed_slice())),
+        }
     }
 
     /// `(Σ a) · (Σ b)` with like monomials collected; every monomial product is canonical
-    /// and expanded (`sin · sin` folds to `1 − cos²`, whose terms are spread out).
+    /// and expanded (`sin · sin` folds to `1 − cos²`, whose terms are spread out), and
+    /// remembered per pair ([`Arena::remembered_product`]).
     fn multiply_terms(&mut self, a: &Terms, b: &Terms) -> Terms {
-        let one = self.one();
         let mut index: IdMap<ExprId, usize> = IdMap::default();
         let mut out: Terms = Vec::with_capacity(a.len().max(b.len()));
-        let mut add = |out: &mut Terms, c: Rational, m: ExprId| match index.get(&m) {
+        for &(c1, m1) in a {
+            for &(c2, m2) in b {
+                match self.remembered_product(m1, m2) {
+                    Product::Monomial(m) => {
+                        self.collect_term(&mut index, &mut out, [c1, c2, Rational::ONE], m);
+                    }
+                    Product::Terms(terms) => {
+                        for &(ci, mi) in terms.iter() {
+                            self.collect_term(&mut index, &mut out, [c1, c2, ci], mi);
+                        }
+                    }
+                }
+            }
+        }
+        out.retain(|(c, _)| !c.is_zero());
+        out
+    }
+
+    /// Adds `k₀ k₁ k₂ · m` to `out`, whose monomials `index` locates.
+    fn collect_term(
+        &mut self,
+        index: &mut IdMap<ExprId, usize>,
+        out: &mut Terms,
+        k: [Rational; 3],
+        m: ExprId,
+    ) {
+        let (c, m) = match k[0].checked_mul(k[1]).and_then(|c| c.checked_mul(k[2])) {
+            Some(c) => (c, m),
+            None => {
+                // Keep the coefficients unfolded inside the term: exact.
+                let ks = k.map(|c| self.constant(c));
+                let t = self.product(&[ks[0], ks[1], ks[2], m]);
+                self.split_coefficient(t)
+            }
+        };
+        match index.get(&m) {
             Some(&i) => match out[i].0.checked_add(c) {
                 Some(s) => out[i].0 = s,
                 // An overflowing sum of coefficients stays two terms: exact, unfolded.
@@ -230,37 +295,7 @@ impl Arena {
                 index.insert(m, out.len());
                 out.push((c, m));
             }
-        };
-        for &(c1, m1) in a {
-            for &(c2, m2) in b {
-                let p = if m1 == one {
-                    m2
-                } else if m2 == one {
-                    m1
-                } else {
-                    self.mul(m1, m2)
-                };
-                let p = if self.has_sum_factor(p) {
-                    self.expand(p)
-                } else {
-                    p
-                };
-                for (ci, mi) in self.split_terms(p) {
-                    match c1.checked_mul(c2).and_then(|c| c.checked_mul(ci)) {
-                        Some(c) => add(&mut out, c, mi),
-                        None => {
-                            // Keep the coefficients unfolded inside the term: exact.
-                            let ks = [c1, c2, ci].map(|c| self.constant(c));
-                            let t = self.product(&[ks[0], ks[1], ks[2], mi]);
-                            let (c, m) = self.split_coefficient(t);
-                            add(&mut out, c, m);
-                        }
-                    }
-                }
-            }
         }
-        out.retain(|(c, _)| !c.is_zero());
-        out
     }
 
     /// True if `e` is a sum, or a product or positive power with a sum inside it.

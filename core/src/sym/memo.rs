@@ -2,6 +2,7 @@
 
 use super::arena::{ExprId, SymbolId};
 use super::hash::IdMap;
+use super::monomial::Product;
 
 /// Per-node results of the arena's transforms.
 #[derive(Clone, Debug, Default)]
@@ -11,4 +12,6 @@ pub(crate) struct Memo {
     /// Products and powers left factored because their expansion would pass the term
     /// limit, with the number of terms it would have had.
     pub(crate) too_large: IdMap<ExprId, usize>,
+    /// The expanded product of two monomials, by the pair (smaller id first).
+    pub(crate) products: IdMap<(ExprId, ExprId), Product>,
 }

@@ -33,6 +33,7 @@ mod hash;
 mod literal;
 pub mod mat3;
 mod memo;
+mod monomial;
 mod node;
 mod rational;
 pub(crate) mod series;

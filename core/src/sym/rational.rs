@@ -266,6 +266,12 @@ impl Rational {
         if rhs.is_zero() {
             return Some(self);
         }
+        if self.is_plain() && rhs.is_plain() && self.den == 1 && rhs.den == 1 {
+            match self.num.checked_add(rhs.num) {
+                Some(n) if n != i128::MIN => return Some(Rational::plain(n, 1)),
+                _ => {}
+            }
+        }
         if self.is_plain() && rhs.is_plain() {
             // Cross-multiply over the gcd of the denominators to stay small.
             let g = gcd_i128(self.den, rhs.den);
@@ -308,6 +314,13 @@ impl Rational {
     pub fn checked_mul(self, rhs: Rational) -> Option<Rational> {
         if self.is_zero() || rhs.is_zero() {
             return Some(Rational::ZERO);
+        }
+        // Integers, the expansion's commonest coefficients: no gcd to take.
+        if self.is_plain() && rhs.is_plain() && self.den == 1 && rhs.den == 1 {
+            match self.num.checked_mul(rhs.num) {
+                Some(n) if n != i128::MIN => return Some(Rational::plain(n, 1)),
+                _ => {}
+            }
         }
         if self.is_plain() && rhs.is_plain() {
             let g1 = gcd_i128(self.num, rhs.den).max(1);

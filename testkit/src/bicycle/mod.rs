@@ -25,8 +25,10 @@
 
 mod derive;
 mod linear;
+mod scene;
 
 pub use linear::{CAPSIZE_SPEED, Linear, STANDSTILL, TABLE_2, WEAVE_FREQUENCY, WEAVE_SPEED};
+pub use scene::mechanism_scene;
 
 use precess::codegen::{Bindings, Program};
 use precess::lagrange::{LagrangeError, MAX_NEWTON};
