@@ -36,6 +36,7 @@ pub fn expand(
         .derive(arena)
         .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
+    crate::lang::export::contact(ident, arena, &derivation);
     let low = Lowering::new(cx, ident, parameters.tokens());
     let method = StateMethod {
         low: &low,

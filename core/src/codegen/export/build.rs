@@ -75,6 +75,25 @@ impl ExportBuilder {
         Ok(builder)
     }
 
+    /// Names the state's entries `names` (written as C and Python identifiers) rather than
+    /// as their symbols are named.
+    ///
+    /// # Errors
+    /// [`ExportError::InputLength`] for a count other than the state's,
+    /// [`ExportError::DuplicateName`] for two names written alike.
+    pub fn name_state(&mut self, names: &[&str]) -> Result<&mut Self, ExportError> {
+        if names.len() != self.state.len() {
+            return Err(ExportError::InputLength {
+                what: "state names",
+                found: names.len(),
+                expected: self.state.len(),
+            });
+        }
+        self.exported.state = names.iter().map(|n| identifier(n)).collect();
+        self.exported.check_names()?;
+        Ok(self)
+    }
+
     /// Adds the function `name` computing `outputs`, of shape `(rows, cols)` (row by row).
     ///
     /// # Errors

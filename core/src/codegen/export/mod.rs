@@ -164,7 +164,7 @@ pub enum ExportError {
     /// The inputs given to [`Exported::eval`] have the wrong length.
     #[error("`{what}` has {found} values, the scene {expected}")]
     InputLength {
-        /// `"y"` or `"p"`.
+        /// `"y"`, `"p"` or `"state names"`.
         what: &'static str,
         /// The length given.
         found: usize,
