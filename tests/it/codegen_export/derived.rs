@@ -58,19 +58,16 @@ fn compare(
 
 /// A heavy top of fields with damping and a body-fixed torque.
 #[derive(RigidBody)]
-#[rigid(
-    cuboid(mass = m, size = [a, b, c], at = [0.01, -0.02, h]),
-    pivot = [0.0, 0.0, 0.0],
-)]
-#[top(gravity = 9.81, body_torque = [0.01, 0.0, tau], damping = k, angles = zxz)]
+#[rigid(cuboid(mass = mass, size = [wide, deep, tall], at = [0.01, -0.02, lift]), pivot = [0.0, 0.0, 0.0])]
+#[top(gravity = 9.81, body_torque = [0.01, 0.0, spin_up], damping = drag, angles = zxz)]
 struct ExportedBrick {
-    m: f64,
-    a: f64,
-    b: f64,
-    c: f64,
-    h: f64,
-    tau: f64,
-    k: f64,
+    mass: f64,
+    wide: f64,
+    deep: f64,
+    tall: f64,
+    lift: f64,
+    spin_up: f64,
+    drag: f64,
 }
 
 #[test]
@@ -83,20 +80,23 @@ fn a_top_exports_its_state_derivative_and_jacobian_bit_for_bit() {
     );
     let mut fields = e.parameters().to_vec();
     fields.sort();
-    assert_eq!(fields, ["a", "b", "c", "h", "k", "m", "tau"]);
+    assert_eq!(
+        fields,
+        ["deep", "drag", "lift", "mass", "spin_up", "tall", "wide"]
+    );
     let cases = cases(&e, 1000, 1, |_, _| {});
     let mut rhs: Vec<Vec<f64>> = Vec::new();
     let mut jac = Vec::new();
     for c in &cases {
         let v = |n: &str| c.param(&e, n);
         let top = ExportedBrick {
-            m: v("m"),
-            a: v("a"),
-            b: v("b"),
-            c: v("c"),
-            h: v("h"),
-            tau: v("tau"),
-            k: v("k"),
+            mass: v("mass"),
+            wide: v("wide"),
+            deep: v("deep"),
+            tall: v("tall"),
+            lift: v("lift"),
+            spin_up: v("spin_up"),
+            drag: v("drag"),
         };
         let (q, qd) = ([c.y[0], c.y[1], c.y[2]], [c.y[3], c.y[4], c.y[5]]);
         let acc = top.accelerations_unchecked(c.t, &q, &qd);
@@ -120,25 +120,25 @@ fn a_top_exports_its_state_derivative_and_jacobian_bit_for_bit() {
     compare("top", &e, &cases, &[("rhs", rhs), ("jacobian", jac)], 0);
 }
 
-/// The tippe top of `examples/tippe_top.rs`, its friction coefficient a field.
+/// A tippe top whose every value is a field: a sphere of radius r centred 0.3 r above the
+/// centre of mass, gliding with viscous friction c.
 #[derive(RigidBody)]
-#[rigid(body(
-    mass = 0.02,
-    inertia = diag(0.35 * 0.02 * 0.02 * 0.02, 0.35 * 0.02 * 0.02 * 0.02, 0.4 * 0.02 * 0.02 * 0.02),
-))]
-#[contact(
-    surface = sphere(radius = 0.02, center = [0.0, 0.0, 0.3 * 0.02]),
-    law = sliding(viscous = viscous),
-    gravity = 9.81,
-)]
+#[rigid(body(mass = m, inertia = diag(i1, i1, i3)))]
+#[contact(surface = sphere(radius = r, center = [0.0, 0.0, 0.3 * r]), law = sliding(viscous = c), gravity = 9.81)]
 struct Tippe {
-    viscous: f64,
+    m: f64,
+    i1: f64,
+    i3: f64,
+    r: f64,
+    c: f64,
 }
 
 #[test]
 fn a_body_on_a_table_exports_its_phase_reaction_energy_and_jellett_bit_for_bit() {
     let e = Tippe::exported().expect("exported");
-    assert_eq!(e.parameters(), ["viscous"]);
+    let mut fields = e.parameters().to_vec();
+    fields.sort();
+    assert_eq!(fields, ["c", "i1", "i3", "m", "r"]);
     let names: Vec<&str> = e.functions().iter().map(|f| f.name()).collect();
     assert_eq!(
         names,
@@ -162,7 +162,14 @@ fn a_body_on_a_table_exports_its_phase_reaction_energy_and_jellett_bit_for_bit()
     });
     let (mut rhs, mut reaction, mut energy, mut jellett) = (vec![], vec![], vec![], vec![]);
     for c in &cases {
-        let top = Tippe { viscous: c.p[0] };
+        let v = |n: &str| c.param(&e, n);
+        let top = Tippe {
+            m: v("m"),
+            i1: v("i1"),
+            i3: v("i3"),
+            r: v("r"),
+            c: v("c"),
+        };
         let y: [f64; 11] = c.y.clone().try_into().expect("11 states");
         let mut d = [0.0; 11];
         top.phase_rhs(Phase::Sliding, c.t, &y, &mut d);
@@ -214,13 +221,11 @@ fn a_free_body_exports_its_state_derivative_and_energy_bit_for_bit() {
     compare("free", &e, &cases, &[("rhs", rhs), ("energy", energy)], 0);
 }
 
-/// Two point masses on rods of field lengths.
+/// Two point masses on rods of field lengths, swinging about y.
 #[derive(Mechanism)]
 #[mechanism(gravity = 9.81)]
-#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1,
-       parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
-#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -l1]), q = theta2,
-       parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
+#[body(upper, parent = ground, joint = revolute(axis = y), q = theta1, parts(particle(mass = m1, at = [0.0, 0.0, -l1])))]
+#[body(lower, parent = upper, joint = revolute(axis = y, at = [0.0, 0.0, -l1]), q = theta2, parts(particle(mass = m2, at = [0.0, 0.0, -l2])))]
 struct Swing {
     m1: f64,
     l1: f64,

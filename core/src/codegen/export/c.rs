@@ -3,8 +3,17 @@
 
 use std::fmt::Write;
 
+use super::syntax::Syntax;
 use super::{Exported, ExportedFunction};
-use crate::codegen::program::Op;
+
+/// C's spelling: `const double v3 = sin(v2);`, `y[0]`, `p->m`.
+const C: Syntax = Syntax {
+    local: "v",
+    math: "",
+    literal,
+    state: |k| format!("y[{k}]"),
+    parameter: |p| format!("p->{p}"),
+};
 
 /// A constant as a C99 expression: the shortest decimal that reads back to the same double
 /// (C's strtod, as compilers parse literals, rounds correctly), parenthesised when negative.
@@ -91,7 +100,6 @@ impl Exported {
     /// ```
     pub fn c_source(&self) -> String {
         let name = &self.name;
-        let n = self.state.len();
         let mut s = String::new();
         let _ = writeln!(
             s,
@@ -101,24 +109,7 @@ impl Exported {
             let _ = writeln!(s, "\n/* {} */\n{}\n{{", f.doc, prototype(name, f));
             let _ = writeln!(s, "    (void)t;\n    (void)y;\n    (void)p;");
             for (i, op) in f.program.ops.iter().enumerate() {
-                let rhs = match *op {
-                    Op::Const(c) => literal(c),
-                    Op::Input(k) => match k.index() {
-                        0 => "t".to_owned(),
-                        k if k <= n => format!("y[{}]", k - 1),
-                        k => format!("p->{}", self.parameters[k - 1 - n]),
-                    },
-                    Op::Add(a, b) => format!("v{a} + v{b}"),
-                    Op::Sub(a, b) => format!("v{a} - v{b}"),
-                    Op::Mul(a, b) => format!("v{a} * v{b}"),
-                    Op::Div(a, b) => format!("v{a} / v{b}"),
-                    Op::Neg(a) => format!("-v{a}"),
-                    Op::Sqrt(a) => format!("sqrt(v{a})"),
-                    Op::Powf(a, r) => format!("pow(v{a}, {})", literal(r)),
-                    Op::Sin(a) => format!("sin(v{a})"),
-                    Op::Cos(a) => format!("cos(v{a})"),
-                    Op::Func(g, a) => format!("{}(v{a})", g.name()),
-                };
+                let rhs = C.expression(self, op);
                 let _ = writeln!(s, "    const double v{i} = {rhs};");
             }
             for (k, o) in f.program.outputs.iter().enumerate() {

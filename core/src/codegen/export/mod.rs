@@ -25,6 +25,7 @@ mod c;
 mod eval;
 mod names;
 mod python;
+mod syntax;
 mod text;
 
 use thiserror::Error;

@@ -3,7 +3,16 @@
 use std::fmt::Write;
 
 use super::Exported;
-use crate::codegen::program::Op;
+use super::syntax::Syntax;
+
+/// NumPy's spelling: `_v3 = np.sin(_v2)`, `y[0]`, the parameter as a float64 array.
+const PYTHON: Syntax = Syntax {
+    local: "_v",
+    math: "np.",
+    literal,
+    state: |k| format!("y[{k}]"),
+    parameter: |p| format!("np.asarray({p}, dtype=np.float64)"),
+};
 
 /// A constant as a NumPy double: the shortest decimal that reads back to it.
 fn literal(x: f64) -> String {
@@ -44,7 +53,6 @@ impl Exported {
     /// ```
     pub fn python(&self) -> String {
         let name = &self.name;
-        let n = self.state.len();
         let tuple = |v: &[String]| {
             let quoted: Vec<String> = v.iter().map(|x| format!("\"{x}\",")).collect();
             format!("({})", quoted.join(" "))
@@ -79,27 +87,7 @@ impl Exported {
             );
             let _ = writeln!(s, "    with np.errstate(all=\"ignore\"):");
             for (i, op) in f.program.ops.iter().enumerate() {
-                let rhs = match *op {
-                    Op::Const(c) => literal(c),
-                    Op::Input(k) => match k.index() {
-                        0 => "t".to_owned(),
-                        k if k <= n => format!("y[{}]", k - 1),
-                        k => format!(
-                            "np.asarray({}, dtype=np.float64)",
-                            self.parameters[k - 1 - n]
-                        ),
-                    },
-                    Op::Add(a, b) => format!("_v{a} + _v{b}"),
-                    Op::Sub(a, b) => format!("_v{a} - _v{b}"),
-                    Op::Mul(a, b) => format!("_v{a} * _v{b}"),
-                    Op::Div(a, b) => format!("np.divide(_v{a}, _v{b})"),
-                    Op::Neg(a) => format!("-_v{a}"),
-                    Op::Sqrt(a) => format!("np.sqrt(_v{a})"),
-                    Op::Powf(a, r) => format!("np.power(_v{a}, {})", literal(r)),
-                    Op::Sin(a) => format!("np.sin(_v{a})"),
-                    Op::Cos(a) => format!("np.cos(_v{a})"),
-                    Op::Func(g, a) => format!("np.{}(_v{a})", g.name()),
-                };
+                let rhs = PYTHON.expression(self, op);
                 let _ = writeln!(s, "        _v{i} = {rhs}");
             }
             let _ = writeln!(s, "        _out = np.empty(({},) + _shape)", f.len());
