@@ -153,11 +153,11 @@ fn a_body_on_a_table_exports_its_phase_reaction_energy_and_jellett_bit_for_bit()
         // A unit quaternion, ω up to 200 rad/s.
         let q: Vec<f64> = (0..4).map(|_| rng.uniform(-1.0, 1.0)).collect();
         let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
-        for k in 0..4 {
-            c.y[4 + k] = q[k] / n;
+        for (y, q) in c.y[4..8].iter_mut().zip(&q) {
+            *y = q / n;
         }
-        for k in 8..11 {
-            c.y[k] = rng.uniform(-200.0, 200.0);
+        for w in &mut c.y[8..11] {
+            *w = rng.uniform(-200.0, 200.0);
         }
     });
     let (mut rhs, mut reaction, mut energy, mut jellett) = (vec![], vec![], vec![], vec![]);
