@@ -52,6 +52,10 @@ pub struct Ensembles;
 #[doc = include_str!("../docs/equations.md")]
 pub struct Equations;
 
+/// docs/export.md.
+#[doc = include_str!("../docs/export.md")]
+pub struct Export;
+
 /// docs/exact.md.
 #[doc = include_str!("../docs/exact.md")]
 pub struct Exact;

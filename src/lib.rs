@@ -124,7 +124,7 @@ pub mod __private {
         About, Axis, BodyError, Description, Matrix3, Orientation, Part, Principal, RigidBody,
         Rotation3, Shape, Vector3, check_part, euler_rhs_diagonal, principal_frame,
     };
-    pub use precess_core::codegen::{MethodCost, OpCount, Typeset};
+    pub use precess_core::codegen::{Export, MethodCost, OpCount, Typeset};
     pub use precess_core::contact::{
         ContactDynamics, ContactError, ContactMomenta, ContactPoint, ContactValues, LawKind, Phase,
         Reaction, SurfaceKind, attitude_of,

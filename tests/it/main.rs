@@ -25,6 +25,8 @@ mod body {
     mod validate;
 }
 /// The derive macro end to end.
+/// The export of a scene's equations as C99 and Python.
+mod codegen_export;
 mod derive {
     mod contact;
     mod equations;

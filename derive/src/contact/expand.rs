@@ -50,6 +50,7 @@ pub fn expand(
         .derive_with(arena, &torques)
         .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
+    crate::lang::export::contact(ident, arena, &derivation);
     let low = Lowering::new(cx, ident, symbols);
     let couple =
         |arena: &Arena, outputs: &[ExprId]| couple_call(arena, outputs, settings, &torques);

@@ -237,6 +237,7 @@ pub fn expand(
     let inertia = &checked.body.props.inertia_cm;
     crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, ABOUT)?;
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
+    crate::lang::export::free(ident, arena, &derivation);
     let full_state = derivation.full_state();
     let n = full_state.len();
     let taylor = settings.taylor.map(|order| {

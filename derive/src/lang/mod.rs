@@ -17,6 +17,8 @@
 //!   syn reads a value; `dim`, the dimensions each key's values are checked against.
 //! - `expansion`: what every expansion reads; `symbols`, the lowering of the arena's
 //!   expressions to Rust reading the fields; `tokens`, the body language's values as Rust.
+//! - `export`: every derive's `impl Export` (the scene's programs as text for C and Python),
+//!   one call in each scene's expansion.
 //! - `taylor`: the `taylor = K` key of every attribute, found, checked and expanded in one
 //!   place.
 //! - `variational`: the `variational(...)` group of `#[top]` and `#[mechanism]`, checked
@@ -32,6 +34,7 @@ pub mod check;
 pub mod ctxt;
 pub mod dim;
 pub mod expansion;
+pub mod export;
 pub mod keys;
 pub mod parts;
 pub mod private;

@@ -61,6 +61,7 @@ pub fn expand(
         }
     };
     let taylor = taylor.map(|k| taylor_system(cx, ident, arena, parameters, &derivation, k));
+    let taylor = crate::lang::export::mechanism(ident, arena, &derivation, taylor);
     let variational = variational
         .map(|key| super::variational::expand(cx, ident, arena, parameters, &derivation, key));
     let n = checked.coordinates.len();

@@ -126,6 +126,7 @@ pub fn expand(ex: &mut Expansion, checked: &CheckedBody) -> Option<TokenStream> 
     let taylor = checked
         .taylor
         .map(|order| euler::expand(ex, checked, order));
+    let taylor = crate::lang::export::body(ex, checked, taylor);
     Some(quote! {
         #taylor
 

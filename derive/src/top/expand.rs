@@ -154,6 +154,7 @@ pub fn expand(
     };
     // `taylor` and `variational(...)` are refused with a driven rotor (check.rs).
     let extra = lagrangian.map(|(state, rhs)| {
+        crate::lang::export::top(ident, arena, &state, &rhs);
         let variational = settings.variational.as_ref().map(|key| {
             super::variational::expand(cx, ident, arena, &taylor_symbols, (&state, &rhs), key)
         });

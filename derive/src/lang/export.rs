@@ -1,0 +1,246 @@
+//! `impl Export` for every derived struct: the scene's programs written as text
+//! (`precess_core::codegen::Exported::to_text`) while the macro expands, read back at run
+//! time to emit C99 or Python (`docs/export.md`).
+//!
+//! Text rather than the C and the Python themselves: one string literal a third of their
+//! size, no formatting of either in the macro, and one emitter for derived structs and
+//! scenes built at run time. Each function is lowered from the same outputs as the Rust
+//! method it stands for, so its program is that method's.
+//!
+//! `#[derive(RigidBody)]` runs the expansion of a scene (top, free, contact) before the
+//! body's own, and only the latter's tokens are certain to be emitted last: a scene
+//! registers its export here ([`top`], [`free`], [`contact`]), keyed by the expansion's
+//! arena, and [`body`] emits it, or the body's torque-free Euler equations when no scene
+//! registered one, so a struct gets one `impl Export` whatever its attributes. A
+//! `#[derive(Mechanism)]` emits its own ([`mechanism`]).
+
+use std::cell::RefCell;
+
+use precess_core::codegen::{ExportBuilder, ExportError, Exported};
+use precess_core::contact::ContactDerivation;
+use precess_core::free::FreeDerivation;
+use precess_core::mechanism::MechanismDerivation;
+use precess_core::sym::{Arena, ExprId};
+use proc_macro2::TokenStream;
+use quote::{ToTokens, quote};
+use syn::Ident;
+
+use super::expansion::Expansion;
+use super::private::Private;
+use crate::rigid::check::CheckedBody;
+
+/// An export's text, or why there is none.
+type Text = Result<String, String>;
+
+thread_local! {
+    /// The export a scene registered, keyed by the arena of its expansion (`Arena::zero`'s id
+    /// carries the arena's tag): at most one entry, so an expansion that failed before
+    /// [`body`] ran cannot leave its export to another struct.
+    static REGISTERED: RefCell<Option<(ExprId, Text)>> = const { RefCell::new(None) };
+}
+
+/// Records the export of the scene derived in `arena` (the first one registered wins).
+fn register(arena: &Arena, text: Text) {
+    REGISTERED.with(|r| {
+        let mut r = r.borrow_mut();
+        if r.as_ref().is_none_or(|(key, _)| *key != arena.zero()) {
+            *r = Some((arena.zero(), text));
+        }
+    });
+}
+
+/// The export registered for `arena`, if any; clears the registry.
+fn take(arena: &Arena) -> Option<Text> {
+    REGISTERED.with(|r| {
+        r.borrow_mut()
+            .take()
+            .and_then(|(key, text)| (key == arena.zero()).then_some(text))
+    })
+}
+
+/// `TippeTop` → `tippe_top`, the C and Python prefix.
+fn snake_case(ident: &Ident) -> String {
+    let mut s = String::new();
+    for (i, c) in ident.to_string().chars().enumerate() {
+        if c.is_uppercase() && i > 0 {
+            s.push('_');
+        }
+        s.extend(c.to_lowercase());
+    }
+    s
+}
+
+fn text(built: Result<Exported, ExportError>) -> Text {
+    built.map(|e| e.to_text()).map_err(|e| e.to_string())
+}
+
+/// One function added to a builder: `(name, doc, lowered outputs, kept range, shape)`.
+type Function<'a> = (
+    &'a str,
+    &'a str,
+    Vec<ExprId>,
+    std::ops::Range<usize>,
+    (usize, usize),
+);
+
+/// The scene `ident` over `state` with `functions`, the Jacobian of the function
+/// `jacobian_of` (an index) added as `jacobian`.
+fn build(
+    ident: &Ident,
+    arena: &mut Arena,
+    state: &[ExprId],
+    functions: &[Function],
+    jacobian_of: Option<usize>,
+) -> Result<Exported, ExportError> {
+    let mut b = ExportBuilder::new(&snake_case(ident), arena, state)?;
+    // The arena tells apart symbols made under one name (the rate `omega_1` of the body's
+    // impl and of its export) by trailing primes; the export has only its own.
+    let names: Vec<String> = state
+        .iter()
+        .filter_map(|&e| arena.as_symbol(e))
+        .map(|s| arena.symbol(s).name.trim_end_matches('\'').to_owned())
+        .collect();
+    b.name_state(&names.iter().map(String::as_str).collect::<Vec<_>>())?;
+    for (name, doc, lowered, kept, shape) in functions {
+        b.function_of(arena, name, doc, lowered, kept.clone(), *shape)?;
+    }
+    if let Some((_, _, lowered, kept, _)) = jacobian_of.and_then(|i| functions.get(i)) {
+        let of = &lowered[kept.clone()];
+        b.jacobian(
+            arena,
+            "jacobian",
+            "the Jacobian of the state derivative, d(dy/dt)/dy",
+            of,
+        )?;
+    }
+    Ok(b.finish())
+}
+
+/// A function returning all it lowers.
+fn whole<'a>(name: &'a str, doc: &'a str, outputs: Vec<ExprId>) -> Function<'a> {
+    let n = outputs.len();
+    (name, doc, outputs, 0..n, (n, 1))
+}
+
+/// A top without motors: the declared chart's `[q, q̇]`, its derivative `(q̇, q̈)` (q̈ lowered
+/// alone, as the chart's `accelerations` arm is: the rates are bare inputs) and its
+/// Jacobian (the last three rows are `angle_jacobian`'s).
+pub fn top(ident: &Ident, arena: &mut Arena, state: &[ExprId], rhs: &[ExprId]) {
+    let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
+    let built = build(ident, arena, state, &f, Some(0));
+    register(arena, text(built));
+}
+
+/// A free body: its `free_rhs` over the full state, its energy.
+pub fn free(ident: &Ident, arena: &mut Arena, d: &FreeDerivation) {
+    let f = [
+        whole("rhs", "the state derivative dy/dt", d.full_rhs()),
+        whole("energy", "the energy", vec![d.energy]),
+    ];
+    let built = build(ident, arena, &d.full_state(), &f, None);
+    register(arena, text(built));
+}
+
+/// A body on a table: each derived phase's right-hand side, reaction (N, then the friction
+/// force) and energy, and Jellett's quantity, each lowered as its method is.
+pub fn contact(ident: &Ident, arena: &mut Arena, d: &ContactDerivation) {
+    let mut f: Vec<Function> = Vec::new();
+    let phases = [
+        (
+            d.rolling.as_ref(),
+            ["rhs_rolling", "reaction_rolling", "energy_rolling"],
+        ),
+        (
+            d.sliding.as_ref(),
+            ["rhs_sliding", "reaction_sliding", "energy_sliding"],
+        ),
+    ];
+    for (e, [rhs, reaction, energy]) in phases {
+        let Some(e) = e else { continue };
+        f.push(whole(
+            rhs,
+            "the state derivative dy/dt in this phase",
+            e.rhs.to_vec(),
+        ));
+        let r = std::iter::once(e.normal).chain(e.friction).collect();
+        f.push(whole(
+            reaction,
+            "the normal force N and the friction force (space axes)",
+            r,
+        ));
+        f.push(whole(energy, "the energy", vec![e.energy]));
+    }
+    f.push(whole("jellett", "Jellett's quantity", vec![d.jellett]));
+    let built = build(ident, arena, &d.state, &f, None);
+    register(arena, text(built));
+}
+
+/// The struct's `impl Export`, after `before`: a scene's registered export, or the body's
+/// torque-free Euler equations `ω̇ = f(ω)` in principal axes (as `taylor = K` on `#[rigid]`
+/// emits them) with their Jacobian.
+pub fn body(ex: &mut Expansion, checked: &CheckedBody, before: impl ToTokens) -> TokenStream {
+    let (ident, arena) = (ex.ident, &mut *ex.arena);
+    let text = take(arena).unwrap_or_else(|| {
+        let omega: [ExprId; 3] = std::array::from_fn(|i| arena.input(&format!("omega_{}", i + 1)));
+        let zero = [arena.zero(); 3];
+        match checked.body.euler_rhs_principal(arena, omega, zero) {
+            Ok(Some(rhs)) => {
+                let f = [whole(
+                    "rhs",
+                    "Euler's equations, dω/dt in principal axes",
+                    rhs.to_vec(),
+                )];
+                text(build(ident, arena, &omega, &f, Some(0)))
+            }
+            Ok(None) => Err("the principal moments are found at run time".to_owned()),
+            Err(e) => Err(e.to_string()),
+        }
+    });
+    let export = tokens(ident, text);
+    quote!(#before #export)
+}
+
+/// A tree mechanism's `impl Export`, after `before`: `(q̇, q̈)` over `[q, q̇]`, q̈ lowered with
+/// the pivots as its methods lower it.
+pub fn mechanism(
+    ident: &Ident,
+    arena: &mut Arena,
+    d: &MechanismDerivation,
+    before: impl ToTokens,
+) -> TokenStream {
+    let c = &d.coordinates;
+    let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
+    let np = d.pivots.len();
+    let lowered: Vec<ExprId> = d
+        .pivots
+        .iter()
+        .chain(&c.rates)
+        .chain(&d.accelerations)
+        .copied()
+        .collect();
+    let n = lowered.len() - np;
+    let f = [(
+        "rhs",
+        "the state derivative dy/dt",
+        lowered,
+        np..np + n,
+        (n, 1),
+    )];
+    let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
+    quote!(#before #export)
+}
+
+/// `impl Export for ident` with `text`.
+fn tokens(ident: &Ident, text: Text) -> TokenStream {
+    let p = Private;
+    let value = match text {
+        Ok(t) => quote!(::core::result::Result::Ok(#t)),
+        Err(reason) => quote!(::core::result::Result::Err(#reason)),
+    };
+    quote! {
+        #[automatically_derived]
+        impl #p::Export for #ident {
+            const EXPORTED: ::core::result::Result<&'static str, &'static str> = #value;
+        }
+    }
+}

@@ -1,0 +1,5 @@
+//! The export of a scene's equations as C99 and Python (`codegen::Exported`, `docs/export.md`).
+
+mod derived;
+mod runtime;
+mod support;
