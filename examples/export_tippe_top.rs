@@ -1,7 +1,7 @@
 //! The tippe top exported to C and Python, and the Python integrated by SciPy.
 //!
-//! The top of `tippe_top` (`common/tippe.rs`: a sphere of radius R with its centre of mass αR
-//! below the centre, gliding with viscous friction) implements `precess::codegen::Export`:
+//! The top of `tippe_top` (`precess::models::TippeTop`: a sphere of radius R with its centre
+//! of mass αR below the centre, gliding with viscous friction) implements `precess::codegen::Export`:
 //! the derive wrote its equations as text while it expanded. This example writes them as
 //! `top.h`, `top.c` and `top.py` (to `target/precess-export/`), checks that the Python module
 //! gives the derived Rust method's bits at the start, and integrates it with SciPy's
@@ -13,8 +13,6 @@
 //! writes the files and says why it stops there.
 
 mod common;
-#[path = "common/tippe.rs"]
-mod tippe;
 
 use std::error::Error;
 use std::path::Path;
@@ -24,7 +22,8 @@ use common::{Axes, Series, Table, plot};
 use precess::codegen::Export;
 use precess::contact::{ContactDynamics, ContactRun, Phase};
 use precess::ode::{AdaptiveConfig, Run};
-use tippe::{Top, axis_up};
+use precess::models::TippeTop as Top;
+use precess::models::tippe_top::MASS;
 
 /// The end of both runs [s]: the axis has turned over and settled by then.
 const END: f64 = 12.0;
@@ -70,10 +69,10 @@ print(" ".join(format(int(b), "x") for b in top.rhs_sliding(0.0, y0, viscous=flo
 "#;
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let theory = tippe::theory();
-    let viscous = 5.0 * tippe::MASS;
+    let theory = Top::theory();
+    let viscous = 5.0 * MASS;
     let model = Top { viscous };
-    let y0 = tippe::start(0.1, 140.0);
+    let y0 = Top::start(0.1, 140.0);
 
     // The exported files.
     let dir = Path::new("target/precess-export");
@@ -106,7 +105,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out = Run::new(&mut run, END)
         .sample_every(EVERY)
         .quantity("θ (deg)", |_t, s| {
-            axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
+            Top::axis_up(s).clamp(-1.0, 1.0).acos().to_degrees()
         })
         .integrate()?;
     let times = out.trajectory.times().to_vec();

@@ -36,7 +36,6 @@ mod trajectory;
 
 pub use adaptive::Adaptive;
 pub(crate) use config::check_tolerances;
-pub(crate) use fixed::switch_by_restart;
 pub use config::{AdaptiveConfig, FixedStepConfig};
 pub use controller::PiController;
 pub use drivers::{Dop853, Dopri5, Solution, Vern9, solve, solve_dense};
@@ -44,6 +43,7 @@ pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub(crate) use events::StepRoots;
 pub use events::{Direction, Event, EventHit};
+pub(crate) use fixed::switch_by_restart;
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
 pub(crate) use hybrid::delegate_stepper;
