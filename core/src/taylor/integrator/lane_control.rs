@@ -30,6 +30,27 @@ fn weighted_norm<const N: usize, const L: usize>(c: &[Lanes<L>; N], w: &[[f64; L
     m
 }
 
+/// One component's Horner sum from its top row `top` down the rows `rows` (highest first),
+/// with the slope's two running sums: (s, d, e) ← (s·h + cₖ, d·h + s, e·h + d) in every lane,
+/// the scalar `defect::increment_and_slope`'s operations in its order. The lane loop is the
+/// innermost, so the compiler packs the lanes and cannot vectorise across components.
+#[inline(always)]
+fn horner_with_slope<'a, const L: usize>(
+    top: Lanes<L>,
+    rows: impl Iterator<Item = &'a Lanes<L>>,
+    h: &[f64; L],
+) -> (Lanes<L>, Lanes<L>, Lanes<L>) {
+    let (mut s, mut d, mut e) = (top.0, [0.0f64; L], [0.0f64; L]);
+    for ck in rows {
+        for l in 0..L {
+            e[l] = e[l] * h[l] + d[l];
+            d[l] = d[l] * h[l] + s[l];
+            s[l] = s[l] * h[l] + ck.0[l];
+        }
+    }
+    (Lanes(s), Lanes(d), Lanes(e))
+}
+
 impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
     /// The steps of the lanes `odes` (each with its rule, `None` for a lane without a step)
     /// towards `t_limit`, from the batch's jet `c` at their points: `Some` for the lanes
@@ -103,18 +124,15 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             ok[l] &= !natural.is_nan() && h[l] > 0.0 && (clamped[l] || t[l] + h[l] != t[l]);
         }
 
-        // The sum with the slope (`defect::increment_and_slope`), then Kahan (`kahan_add`),
-        // on whole lane values: each is one packed operation (loops indexed by lane were
-        // vectorised across the rows, with gathers).
+        // The sum with the slope (`defect::increment_and_slope`), one component at a time
+        // over its rows with the lanes innermost: with the components inside, the 8-lane
+        // AVX-512 copy vectorised across the 6 components with gathers and scatters.
         let hl = Lanes(h);
-        let zero = [Lanes::<L>::splat(0.0); N];
-        let (mut s, mut d, mut e) = (c[p], zero, zero);
-        for ck in c[1..p].iter().rev() {
-            for i in 0..N {
-                e[i] = e[i] * hl + d[i];
-                d[i] = d[i] * hl + s[i];
-                s[i] = s[i] * hl + ck[i];
-            }
+        let mut s = [Lanes::<L>::splat(0.0); N];
+        let (mut d, mut e) = (s, s);
+        for i in 0..N {
+            (s[i], d[i], e[i]) =
+                horner_with_slope(c[p][i], c[1..p].iter().rev().map(|ck| &ck[i]), &h);
         }
         let (mut y_new, mut comp_new) = ([[0.0f64; L]; N], [[0.0f64; L]; N]);
         for i in 0..N {
