@@ -67,7 +67,7 @@ pub fn lane_impl(
         impl #ident {
             /// The symbols the lanes' recurrences read, as the scalar recurrences read them.
             #[doc(hidden)]
-            #[inline]
+            #[inline(always)]
             fn __precess_lane_symbols(&self, t: f64, y: &[f64; #n]) -> [f64; #m] {
                 #prelude
                 [#(#reads),*]
@@ -79,6 +79,10 @@ pub fn lane_impl(
         impl<const __L: usize> #p::TaylorLanes<#n, __L> for #ident {
             type LaneWorkspace = #workspace;
 
+            // Inlined into the batch's stepping, which is compiled once per instruction set
+            // and chosen at run time (`BatchTaylor::advance_until`): out of line, the jets
+            // would be compiled for the target's baseline alone.
+            #[inline(always)]
             fn lane_coefficients_into(
                 systems: [&Self; __L],
                 ws: &mut Self::LaneWorkspace,

@@ -1,8 +1,11 @@
-//! [`BatchTaylor`]: `L` Taylor integrations stepped together, their jets computed in lanes
-//! and everything else (order, step size, sum, events) lane by lane with the scalar code.
+//! [`BatchTaylor`]: `L` Taylor integrations stepped together, their jets and their ordinary
+//! steps' size and sum computed in lanes, and the rest (the rule, the check, the commit,
+//! events, every unusual step) lane by lane with the scalar code.
 
+use super::events::{event_step, event_value};
 use super::{Lanes, TaylorLanes};
 use crate::ode::{OdeError, check_stop};
+use crate::taylor::integrator::{PendingStep, StepRule};
 use crate::taylor::{Taylor, TaylorConfig};
 
 /// Where one lane stopped: the time and state, and whether its event ended it.
@@ -28,13 +31,20 @@ enum Lane<S: TaylorLanes<N, L>, const N: usize, const L: usize> {
 /// `L` Taylor integrations of the systems of one type, each with its own parameters,
 /// initial point, end time, step sizes and event, stepped together: each step computes the
 /// jets of every lane in one call ([`TaylorLanes`], straight-line code on [`Lanes<L>`]
-/// that the compiler vectorises), then each lane sizes its own step from its own
-/// coefficients, sums it and checks its event with the scalar integrator's code.
+/// that the compiler vectorises), sizes and sums every lane's step from its own
+/// coefficients in lane arithmetic, computes the jets at the steps' ends in one call more
+/// (each lane's defect check reads its own, and its next step starts from it), and checks,
+/// commits and runs each lane's event with the scalar integrator's code. The whole loop is
+/// compiled for AVX-512, AVX2 and the baseline and dispatched on the processor at run time
+/// (see the module's notes).
 ///
 /// **Bitwise equal to scalar runs.** A lane is a [`Taylor`] whose jets come from the batch;
-/// since a lane's coefficients are the scalar ones bit for bit ([`TaylorLanes`]), every lane
-/// takes the steps of a scalar [`Taylor`] run of the same system, start and configuration,
-/// and ends on the same bits.
+/// since a lane's coefficients are the scalar ones bit for bit ([`TaylorLanes`]) and the
+/// lanes' step control does the scalar operations in the scalar order on each lane, every
+/// lane takes the steps of a scalar [`Taylor`] run of the same system, start and
+/// configuration, ends on the same bits and counts the same steps, jets and evaluations.
+/// A step outside the ordinary (a jet whose top rows vanish or overflow, lanes at different
+/// orders, a step the check cuts) is taken by that lane's scalar code.
 ///
 /// **Divergence is masked.** The batch computes every lane's jet to the highest order any
 /// active lane needs (a lane's lower orders do not depend on the higher ones). A lane that
@@ -54,8 +64,12 @@ enum Lane<S: TaylorLanes<N, L>, const N: usize, const L: usize> {
 pub struct BatchTaylor<S: TaylorLanes<N, L>, const N: usize, const L: usize> {
     lanes: Vec<Lane<S, N, L>>,
     ws: S::LaneWorkspace,
-    /// The batch's jet, orders 0 … the highest order any lane may use.
-    coeffs: Vec<[Lanes<L>; N]>,
+    /// The lanes' jets at their points, orders 0 … the highest order any lane may use (lane
+    /// l's is read only where the loop marks it valid).
+    cur: Vec<[Lanes<L>; N]>,
+    /// The batch's last computation: the jets at the steps' ends, or at points without a jet
+    /// in `cur`.
+    next: Vec<[Lanes<L>; N]>,
 }
 
 impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> {
@@ -103,7 +117,8 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
         Self {
             lanes,
             ws: S::LaneWorkspace::default(),
-            coeffs: vec![[Lanes::splat(0.0); N]; rows + 1],
+            cur: vec![[Lanes::splat(0.0); N]; rows + 1],
+            next: vec![[Lanes::splat(0.0); N]; rows + 1],
         }
     }
 
@@ -140,12 +155,32 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
         t_end: [f64; L],
         mut g: impl FnMut(usize, f64, &[f64; N]) -> f64,
     ) -> [Result<LaneEnd<N>, OdeError>; L] {
+        // The whole stepping, jets and step control, compiled for the best instruction set
+        // the processor has (AVX-512, AVX2 or the target's baseline), chosen here at run
+        // time: `pulp` keeps the `#[target_feature]` functions and their `unsafe` calls, and
+        // the code inlined into them (`#[inline(always)]` down to the lanes' arithmetic) is
+        // compiled once per set. No set changes a lane's bits: Rust fuses no multiply-add
+        // whatever the target, and every operation here rounds as its scalar one.
+        pulp::Arch::new().dispatch(Advance {
+            batch: self,
+            t_end,
+            g: &mut g,
+        })
+    }
+
+    /// [`BatchTaylor::advance_until`]'s loop, inlined into each of its dispatched copies.
+    #[inline(always)]
+    fn advance_lanes(
+        &mut self,
+        t_end: [f64; L],
+        g: &mut impl FnMut(usize, f64, &[f64; N]) -> f64,
+    ) -> [Result<LaneEnd<N>, OdeError>; L] {
         let mut ends: [Option<Result<LaneEnd<N>, OdeError>>; L] = core::array::from_fn(|_| None);
         let mut g_last = [0.0f64; L];
         for (l, lane) in self.lanes.iter().enumerate() {
             match lane {
                 Lane::Live(ode) => match check_stop(ode.t(), t_end[l])
-                    .and_then(|()| event_value(&mut g, l, ode.t(), ode.y()))
+                    .and_then(|()| event_value(g, l, ode.t(), ode.y()))
                 {
                     Ok(v) => g_last[l] = v,
                     Err(e) => ends[l] = Some(Err(e)),
@@ -153,17 +188,20 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
                 Lane::Failed(e) => ends[l] = Some(Err(e.clone())),
             }
         }
-        let mut orders = [None::<usize>; L];
+        let mut rules: [Option<StepRule<N>>; L] = [None; L];
+        let mut pending: [Option<PendingStep<N>>; L] = [None; L];
+        // Whether lane l's jet at its point is in `self.cur` (to its rule's order).
+        let mut valid = [false; L];
         loop {
-            // The order each active lane needs, or its end.
+            // The rule of each active lane's next step, or its end.
             for (l, lane) in self.lanes.iter().enumerate() {
-                orders[l] = None;
+                rules[l] = None;
                 if ends[l].is_some() {
                     continue;
                 }
                 let Lane::Live(ode) = lane else { continue };
-                match ode.lane_order(t_end[l]) {
-                    Ok(Some(p)) => orders[l] = Some(p),
+                match ode.lane_rule(t_end[l]) {
+                    Ok(Some(rule)) => rules[l] = Some(rule),
                     Ok(None) => {
                         ends[l] = Some(Ok(LaneEnd {
                             t: ode.t(),
@@ -174,27 +212,62 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
                     Err(e) => ends[l] = Some(Err(e)),
                 }
             }
-            let Some(order) = orders.iter().flatten().copied().max() else {
+            if rules.iter().all(Option::is_none) {
                 break;
-            };
-            self.batch_jet(&orders, order);
-            for l in 0..L {
-                if orders[l].is_none() {
-                    continue;
+            }
+            self.fresh_jets(&rules, &mut valid, &mut ends);
+            // Each lane sizes and sums its step (in lanes where it is an ordinary one); the
+            // batch computes the jets at the steps' ends, which each lane's check reads and
+            // its next step starts from.
+            for (l, lane) in self.lanes.iter_mut().enumerate() {
+                if let (Lane::Live(ode), Some(rule), None) = (lane, rules[l], &ends[l])
+                    && let Err(e) = ode.lane_take_jet(&rule)
+                {
+                    ends[l] = Some(Err(e));
                 }
-                let Some(Lane::Live(ode)) = self.lanes.get_mut(l) else {
+            }
+            let active: [Option<(&Taylor<S, N>, StepRule<N>)>; L] =
+                core::array::from_fn(|l| match (self.lanes.get(l), rules[l], &ends[l]) {
+                    (Some(Lane::Live(ode)), Some(rule), None) => Some((ode, rule)),
+                    _ => None,
+                });
+            let summed = Taylor::lanes_begin(active, t_end, &self.cur);
+            let mut stepped = [false; L];
+            for (l, lane) in self.lanes.iter_mut().enumerate() {
+                let (Lane::Live(ode), Some(rule), None) = (lane, rules[l], &ends[l]) else {
                     continue;
                 };
-                let coeffs = &self.coeffs;
-                let stepped = ode.lane_step(t_end[l], |rows| {
-                    for (row, batch) in rows.iter_mut().zip(coeffs) {
-                        for (v, lanes) in row.iter_mut().zip(batch) {
-                            *v = lanes.0[l];
-                        }
-                    }
-                });
-                let end = stepped.and_then(|()| event_step(ode, l, &mut g, &mut g_last[l]));
-                match end {
+                let step = match summed[l] {
+                    Some(step) => Ok(Some(step)),
+                    None => ode.lane_begin_ruled(rule, t_end[l]),
+                };
+                match step {
+                    Ok(step) => (pending[l], stepped[l]) = (step, true),
+                    Err(e) => ends[l] = Some(Err(e)),
+                }
+            }
+            let at_ends = pending
+                .each_ref()
+                .map(|s| s.as_ref().map(|s| (s.order, s.t_new, s.y_new)));
+            self.batch_jet(&at_ends);
+            valid = [false; L];
+            for (l, step) in pending.iter_mut().enumerate() {
+                let (Some(step), Some(Lane::Live(ode))) = (step.take(), self.lanes.get_mut(l))
+                else {
+                    continue;
+                };
+                match ode.lane_finish(step, |rows| column(&self.next, l, rows)) {
+                    Ok(kept) => valid[l] = kept,
+                    Err(e) => (ends[l], stepped[l]) = (Some(Err(e)), false),
+                }
+            }
+            std::mem::swap(&mut self.cur, &mut self.next);
+            for (l, lane) in self.lanes.iter_mut().enumerate() {
+                let Lane::Live(ode) = lane else { continue };
+                if !stepped[l] {
+                    continue;
+                }
+                match event_step(ode, l, g, &mut g_last[l]) {
                     Ok(Some(end)) => ends[l] = Some(Ok(end)),
                     Ok(None) => {}
                     Err(e) => ends[l] = Some(Err(e)),
@@ -216,103 +289,117 @@ impl<S: TaylorLanes<N, L>, const N: usize, const L: usize> BatchTaylor<S, N, L> 
         })
     }
 
-    /// The jets of every lane to `order` into `self.coeffs`; the lanes without an order
-    /// (finished or failed) take the first active lane's point and system, and are not read.
-    fn batch_jet(&mut self, orders: &[Option<usize>; L], order: usize) {
-        let live = |l: usize| match self.lanes.get(l) {
-            Some(Lane::Live(ode)) if orders[l].is_some() => Some(ode),
+    /// Puts the jet at its point of every lane with a rule and no jet in `self.cur`: the one
+    /// the lane's integrator kept (a step its check cut ends on a scalar jet), or one batch
+    /// computation for the others, written to their integrators as well (the first step,
+    /// one after an event).
+    #[inline(always)]
+    fn fresh_jets(
+        &mut self,
+        rules: &[Option<StepRule<N>>; L],
+        valid: &mut [bool; L],
+        ends: &mut [Option<Result<LaneEnd<N>, OdeError>>; L],
+    ) {
+        let mut points = [None; L];
+        for (l, lane) in self.lanes.iter().enumerate() {
+            let (Lane::Live(ode), Some(rule), false) = (lane, rules[l], valid[l]) else {
+                continue;
+            };
+            let kept = ode.lane_kept_jet();
+            if kept.len() > rule.order {
+                set_column(&mut self.cur, l, kept);
+                valid[l] = true;
+            } else {
+                points[l] = Some((rule.order, ode.t(), *ode.y()));
+            }
+        }
+        self.batch_jet(&points);
+        for (l, point) in points.iter().enumerate() {
+            let (Some((p, _, _)), Some(Lane::Live(ode))) = (point, self.lanes.get_mut(l)) else {
+                continue;
+            };
+            match ode.lane_set_jet(*p, |rows| column(&self.next, l, rows)) {
+                Ok(()) => {
+                    set_column(&mut self.cur, l, ode.lane_kept_jet());
+                    valid[l] = true;
+                }
+                Err(e) => ends[l] = Some(Err(e)),
+            }
+        }
+    }
+
+    /// The jets at `points` (lane l's order, t and y, or `None` for a lane with nothing to
+    /// compute) into `self.next`, in one batch computation to the highest order asked (a
+    /// lane's lower orders do not depend on the higher ones). A lane without a point takes
+    /// the first one's point and system, and is not read; no point, no computation.
+    #[inline(always)]
+    fn batch_jet(&mut self, points: &[Option<(usize, f64, [f64; N])>; L]) {
+        let live = |l: usize| match (self.lanes.get(l), points[l]) {
+            (Some(Lane::Live(ode)), Some((_, t, y))) => Some((ode.system(), t, y)),
             _ => None,
         };
         let Some(first) = (0..L).find_map(live) else {
             return;
         };
-        let odes: [&Taylor<S, N>; L] = core::array::from_fn(|l| live(l).unwrap_or(first));
-        let systems = odes.map(Taylor::system);
-        let t = Lanes(odes.map(Taylor::t));
-        let y: [Lanes<L>; N] = core::array::from_fn(|i| Lanes(odes.map(|o| o.y()[i])));
-        let Some(rows) = self.coeffs.get_mut(..=order) else {
+        let Some(order) = points.iter().flatten().map(|p| p.0).max() else {
             return;
         };
-        S::lane_coefficients_into(systems, &mut self.ws, t, &y, order, rows);
-    }
-}
-
-/// g at a lane's point, checked finite.
-fn event_value<const N: usize>(
-    g: &mut impl FnMut(usize, f64, &[f64; N]) -> f64,
-    l: usize,
-    t: f64,
-    y: &[f64; N],
-) -> Result<f64, OdeError> {
-    let v = g(l, t, y);
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(OdeError::NonFiniteEvent {
-            index: 0,
-            t,
-            value: v,
-        })
-    }
-}
-
-/// After a lane's step: the lane's end if its event changed sign in the step (the lane put
-/// at the root), else `None`; `g_last` follows the step.
-fn event_step<S: TaylorLanes<N, L>, const N: usize, const L: usize>(
-    ode: &mut Taylor<S, N>,
-    l: usize,
-    g: &mut impl FnMut(usize, f64, &[f64; N]) -> f64,
-    g_last: &mut f64,
-) -> Result<Option<LaneEnd<N>>, OdeError> {
-    let (t_a, t_b) = (ode.last_step_start(), ode.t());
-    let g_b = event_value(g, l, t_b, ode.y())?;
-    let g_a = *g_last;
-    *g_last = g_b;
-    if g_a == 0.0 {
-        // A start on g = 0: the sign to leave from is the first one g takes.
-        return Ok(None);
-    }
-    if (g_a < 0.0) == (g_b < 0.0) && g_b != 0.0 {
-        return Ok(None);
-    }
-    // Bisection with the secant (Illinois), on the step polynomial: [lo, hi] brackets the
-    // root, g(lo) has g_a's sign.
-    let (mut lo, mut hi, mut g_lo, mut g_hi) = (t_a, t_b, g_a, g_b);
-    let mut side = 0i8;
-    for _ in 0..200 {
-        if g_hi == 0.0 {
-            break;
-        }
-        let secant = hi - g_hi * (hi - lo) / (g_hi - g_lo);
-        let mid = 0.5 * (lo + hi);
-        let t = if secant > lo && secant < hi {
-            secant
-        } else {
-            mid
+        let at: [(&S, f64, [f64; N]); L] = core::array::from_fn(|l| live(l).unwrap_or(first));
+        let t = Lanes(at.map(|a| a.1));
+        let y: [Lanes<L>; N] = core::array::from_fn(|i| Lanes(at.map(|a| a.2[i])));
+        let Some(rows) = self.next.get_mut(..=order) else {
+            return;
         };
-        if t <= lo || t >= hi {
-            break;
-        }
-        let v = event_value(g, l, t, &ode.dense_at(t)?)?;
-        if (v < 0.0) == (g_lo < 0.0) && v != 0.0 {
-            (lo, g_lo) = (t, v);
-            if side == -1 {
-                g_hi *= 0.5;
-            }
-            side = -1;
-        } else {
-            (hi, g_hi) = (t, v);
-            if side == 1 {
-                g_lo *= 0.5;
-            }
-            side = 1;
+        S::lane_coefficients_into(at.map(|a| a.0), &mut self.ws, t, &y, order, rows);
+    }
+}
+
+/// `rows` into lane `l` of the batch's jet `batch`.
+#[inline(always)]
+fn set_column<const N: usize, const L: usize>(
+    batch: &mut [[Lanes<L>; N]],
+    l: usize,
+    rows: &[[f64; N]],
+) {
+    for (lanes, row) in batch.iter_mut().zip(rows) {
+        for (lane, v) in lanes.iter_mut().zip(row) {
+            lane.0[l] = *v;
         }
     }
-    let y = ode.dense_at(hi)?;
-    ode.reset_state(hi, y);
-    Ok(Some(LaneEnd {
-        t: hi,
-        y,
-        event: true,
-    }))
+}
+
+/// [`BatchTaylor::advance_lanes`] as an operation for `pulp`'s dispatch: its `with_simd`
+/// is inlined into the `#[target_feature]` function of each instruction set, and the loop
+/// into it (a closure would be called out of line, compiled for the baseline alone).
+struct Advance<'b, S: TaylorLanes<N, L>, G, const N: usize, const L: usize> {
+    batch: &'b mut BatchTaylor<S, N, L>,
+    t_end: [f64; L],
+    g: &'b mut G,
+}
+
+impl<S, G, const N: usize, const L: usize> pulp::WithSimd for Advance<'_, S, G, N, L>
+where
+    S: TaylorLanes<N, L>,
+    G: FnMut(usize, f64, &[f64; N]) -> f64,
+{
+    type Output = [Result<LaneEnd<N>, OdeError>; L];
+
+    #[inline(always)]
+    fn with_simd<Simd: pulp::Simd>(self, _: Simd) -> Self::Output {
+        self.batch.advance_lanes(self.t_end, self.g)
+    }
+}
+
+/// Lane `l`'s rows of the batch's jet `batch`, into `rows`.
+#[inline(always)]
+fn column<const N: usize, const L: usize>(
+    batch: &[[Lanes<L>; N]],
+    l: usize,
+    rows: &mut [[f64; N]],
+) {
+    for (row, lanes) in rows.iter_mut().zip(batch) {
+        for (v, lane) in row.iter_mut().zip(lanes) {
+            *v = lane.0[l];
+        }
+    }
 }

@@ -16,7 +16,7 @@ use crate::taylor::kernels::LANES_FROM;
 /// let b = [Lanes([6.0, 1.0]), Lanes([7.0, 5.0])];
 /// assert_eq!(dot_reversed(&a, &b), Lanes([32.0, 5.0]));
 /// ```
-#[inline]
+#[inline(always)]
 pub fn dot_reversed<const L: usize>(a: &[Lanes<L>], b: &[Lanes<L>]) -> Lanes<L> {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
@@ -69,7 +69,7 @@ pub const fn fuse_sums(l: usize) -> bool {
 
 /// [`crate::taylor::kernels::cauchy`] in every lane: the interior first, the boundary pair
 /// `a_0 b_{n−1} + a_{n−1} b_0` last.
-#[inline]
+#[inline(always)]
 pub fn cauchy<const L: usize>(a: &[Lanes<L>], b: &[Lanes<L>]) -> Lanes<L> {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
@@ -83,7 +83,7 @@ pub fn cauchy<const L: usize>(a: &[Lanes<L>], b: &[Lanes<L>]) -> Lanes<L> {
 }
 
 /// [`crate::taylor::kernels::square`] in every lane.
-#[inline]
+#[inline(always)]
 pub fn square<const L: usize>(a: &[Lanes<L>]) -> Lanes<L> {
     match a {
         [first, inner @ .., last] => square_interior(inner) + 2.0 * *first * *last,
@@ -93,7 +93,7 @@ pub fn square<const L: usize>(a: &[Lanes<L>]) -> Lanes<L> {
 }
 
 /// [`crate::taylor::kernels::square_interior`] in every lane.
-#[inline]
+#[inline(always)]
 pub fn square_interior<const L: usize>(inner: &[Lanes<L>]) -> Lanes<L> {
     let half = inner.len() / 2;
     let (low, rest) = inner.split_at(half);
@@ -107,7 +107,7 @@ pub fn square_interior<const L: usize>(inner: &[Lanes<L>]) -> Lanes<L> {
 
 /// [`crate::taylor::kernels::power_interior`] in every lane (the weights are the same in
 /// every lane: they depend on the order only).
-#[inline]
+#[inline(always)]
 pub fn power_interior<const L: usize>(a: &[Lanes<L>], c: &[Lanes<L>], r: f64) -> Lanes<L> {
     let n = a.len().min(c.len());
     let (a, c) = (&a[..n], &c[..n]);

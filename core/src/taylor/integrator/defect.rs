@@ -67,6 +67,19 @@ pub(super) struct Slope<const N: usize> {
     second: [f64; N],
 }
 
+impl<const N: usize> Slope<N> {
+    /// The slope of the step of order `p` and size `h` whose re-expanded rows are `value`
+    /// (y_p′(h)) and `second` (y_p″(h)/2), summed elsewhere (the lanes).
+    pub(super) fn new(p: usize, h: f64, value: [f64; N], second: [f64; N]) -> Self {
+        Self {
+            p,
+            h,
+            value,
+            second,
+        }
+    }
+}
+
 /// C(k, 2) = k(k − 1)/2, the weight of c_k hᵏ⁻² in y_p″(h)/2.
 fn binomial(k: f64) -> f64 {
     0.5 * k * (k - 1.0)

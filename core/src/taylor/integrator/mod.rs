@@ -28,10 +28,13 @@ mod config;
 mod defect;
 mod drivers;
 mod extended;
+mod lane_control;
+mod lanes;
 mod radius;
 
 pub use config::{StepScale, TaylorConfig};
 pub use drivers::{solve, solve_dense};
+pub(crate) use lanes::PendingStep;
 
 use super::TaylorSystem;
 use crate::exact::Dd;
@@ -129,8 +132,8 @@ struct LastStep<const N: usize> {
 /// What a step's mode fixes before its jet: the order, the step factor, the mode's ε, and
 /// the weight of each component, wᵢ = 1/sᵢ (see [`Taylor::step_rule`]).
 #[derive(Clone, Copy)]
-struct StepRule<const N: usize> {
-    order: usize,
+pub(crate) struct StepRule<const N: usize> {
+    pub(crate) order: usize,
     factor: f64,
     eps: f64,
     weights: [f64; N],
@@ -320,53 +323,29 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         self.finish_step(rule, t_limit, true)
     }
 
-    /// The order the next step towards `t_limit` needs of its jet (`None`: `t_limit` is the
-    /// current time): what a batch of lanes computes for this lane before
-    /// [`Taylor::lane_step`].
-    ///
-    /// # Errors
-    /// As [`Taylor::step`] before its jet; [`OdeError::InvalidParameter`] in the extended
-    /// mode, which the lanes do not have.
-    pub(crate) fn lane_order(&self, t_limit: f64) -> Result<Option<usize>, OdeError> {
-        if let Some(low) = self.cfg.extended {
-            return Err(OdeError::InvalidParameter {
-                name: "extended (the lanes step in f64 only)",
-                value: low as f64,
-            });
-        }
-        Ok(self.step_rule(t_limit)?.map(|r| r.order))
-    }
-
-    /// [`Taylor::step`] with the jet written by `fill` (the rows of orders 0 … p, p the
-    /// order [`Taylor::lane_order`] gave) instead of computed here: the rest of the step is
-    /// the scalar step's, so with the same coefficients the lane lands where a scalar run
-    /// does, bit for bit.
-    ///
-    /// # Errors
-    /// As [`Taylor::step`].
-    pub(crate) fn lane_step(
-        &mut self,
-        t_limit: f64,
-        fill: impl FnOnce(&mut [[f64; N]]),
-    ) -> Result<(), OdeError> {
-        let Some(rule) = self.step_rule(t_limit)? else {
-            return Ok(());
-        };
-        fill(rows_to_order(&mut self.coeffs, rule.order)?);
-        self.jets += 1;
-        self.stats.rhs_evals += rule.order as u64;
-        self.finish_step(rule, t_limit, false)
-    }
-
     /// The step after its jet of order `rule.order`: the jet again at the top order if it
     /// vanishes, the step size, the sum, the defect check (against the next step's jet,
     /// kept when `keep_ahead`, or a jet of order 2 at the step's end) and the commit.
     fn finish_step(
         &mut self,
-        mut rule: StepRule<N>,
+        rule: StepRule<N>,
         t_limit: f64,
         keep_ahead: bool,
     ) -> Result<(), OdeError> {
+        let (rule, h, clamped) = self.size_step(rule, t_limit)?;
+        if !self.cfg.defect_check || self.cfg.fixed_step.is_some() {
+            return self.commit_unchecked(rule.order, h, clamped, t_limit);
+        }
+        self.checked_steps(rule, h, clamped, t_limit, keep_ahead)
+    }
+
+    /// The rule (its order raised to the top one, and the jet computed again there, if the
+    /// jet vanishes) and the step size and whether it was clamped to land on `t_limit`.
+    fn size_step(
+        &mut self,
+        mut rule: StepRule<N>,
+        t_limit: f64,
+    ) -> Result<(StepRule<N>, f64, bool), OdeError> {
         if self.cfg.fixed_step.is_none()
             && rule.order < self.top_order
             && radius::vanishes(&self.coeffs[..=rule.order])
@@ -377,16 +356,37 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             rule.factor = TaylorConfig::step_factor(rule.eps, rule.order);
             self.jet(rule.order)?;
         }
-        let p = rule.order;
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the
         // new state through Horner (h > 0), which is checked in `commit_step`, and an ∞ in
         // the rows the step size reads is caught by `radius::radius`.
-        let (mut h, mut clamped) = self.step_size(&self.coeffs[..=p], rule, t_limit)?;
-        if !self.cfg.defect_check || self.cfg.fixed_step.is_some() {
-            let increment = horner_increment(&self.coeffs[..=p], h);
-            let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
-            return self.commit_step(h, p, clamped, t_limit, y_new, comp_new);
-        }
+        let (h, clamped) = self.step_size(&self.coeffs[..=rule.order], rule, t_limit)?;
+        Ok((rule, h, clamped))
+    }
+
+    /// The step of `h` summed from the jet of order `p` and committed, without a check.
+    fn commit_unchecked(
+        &mut self,
+        p: usize,
+        h: f64,
+        clamped: bool,
+        t_limit: f64,
+    ) -> Result<(), OdeError> {
+        let increment = horner_increment(&self.coeffs[..=p], h);
+        let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
+        self.commit_step(h, p, clamped, t_limit, y_new, comp_new)
+    }
+
+    /// The step of `h` summed, checked, taken again shorter from the same jet until the
+    /// check passes, and committed.
+    fn checked_steps(
+        &mut self,
+        rule: StepRule<N>,
+        mut h: f64,
+        mut clamped: bool,
+        t_limit: f64,
+        keep_ahead: bool,
+    ) -> Result<(), OdeError> {
+        let p = rule.order;
         loop {
             let (increment, slope) = defect::increment_and_slope(&self.coeffs[..=p], h);
             let (y_new, comp_new) = kahan_add(self.y, self.y_comp, increment);
@@ -424,24 +424,46 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             return Ok(None);
         }
         let shorter = if keep_ahead {
-            // The order the next step's rule gives at y_new (`step_rule`'s mode test).
-            let relative = self.cfg.rtol * max_abs(y_new) > self.cfg.atol;
-            let q = self.rules[usize::from(!relative)].0;
+            let q = self.next_order(y_new);
             let rows = rows_to_order(&mut self.ahead, q)?;
             self.sys
                 .coefficients_into(&mut self.ws, t_new, y_new, q, rows);
-            self.jets += 1;
-            self.stats.rhs_evals += q as u64;
-            self.ahead_order = q;
-            let d = self.ahead.get(1..=q.min(defect::ORDER)).unwrap_or(&[]);
-            let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
-            defect::shorter_step(c, slope, d, &rule.weights, rule.eps)
+            self.judge_ahead(q, slope, rule)
         } else {
             let rows = defect::end_rows(&self.sys, &mut self.ws, t_new, y_new);
             self.stats.rhs_evals += defect::ORDER as u64;
             let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
             defect::shorter_step(c, slope, &rows[1..], &rule.weights, rule.eps)
         };
+        self.cut(shorter)
+    }
+
+    /// The order the next step's rule gives at `y` (`step_rule`'s mode test): that of the
+    /// jet a check computes at a step's end and keeps.
+    fn next_order(&self, y: &[f64; N]) -> usize {
+        let relative = self.cfg.rtol * max_abs(y) > self.cfg.atol;
+        self.rules[usize::from(!relative)].0
+    }
+
+    /// The defect check against the jet at the step's end, of order `q`, just written into
+    /// `ahead` (counted here as the jet it is, and kept as the next step's).
+    fn judge_ahead(
+        &mut self,
+        q: usize,
+        slope: &defect::Slope<N>,
+        rule: &StepRule<N>,
+    ) -> Option<f64> {
+        self.jets += 1;
+        self.stats.rhs_evals += q as u64;
+        self.ahead_order = q;
+        let d = self.ahead.get(1..=q.min(defect::ORDER)).unwrap_or(&[]);
+        let c = self.coeffs.get(..=rule.order).unwrap_or(&[]);
+        defect::shorter_step(c, slope, d, &rule.weights, rule.eps)
+    }
+
+    /// A check's verdict: `shorter` passed on, a rejection counted and its jet ahead
+    /// dropped, or [`OdeError::StepSizeUnderflow`] when the shorter step no longer changes t.
+    fn cut(&mut self, shorter: Option<f64>) -> Result<Option<f64>, OdeError> {
         if let Some(h) = shorter {
             self.ahead_order = 0;
             self.stats.rejections += 1;

@@ -27,7 +27,7 @@
 /// past a factor 4/e⁻² ≈ 30 of that. It binds where the coefficients still grow at the order
 /// p, as those of x' = t²⁰y just after t = 0 (ratio (20 − k)/((k + 1)t₀) at order k), whose
 /// root estimate sees nothing of the orders to come.
-const RATIO: f64 = 4.0;
+pub(super) const RATIO: f64 = 4.0;
 
 /// The estimated radius of convergence of the jet `c` (orders 0 … p, p ≥ 1) with the
 /// components weighted by `w` (wᵢ = 1/sᵢ): +∞ when every row of orders 1 … p vanishes,
@@ -100,7 +100,7 @@ pub(super) fn radius<const N: usize>(c: &[[f64; N]], w: &[f64; N]) -> Option<f64
 /// `__powidf2` (the runtime's square-and-multiply: r ← r·x for each set bit of k from the
 /// lowest, x ← x² between), in the same order, so the same bits, without its call, which
 /// callgrind counted at 89 of the 4 700 instructions of a heavy-top step.
-fn power(mut x: f64, mut k: usize) -> f64 {
+pub(super) fn power(mut x: f64, mut k: usize) -> f64 {
     let mut r = 1.0;
     loop {
         if k & 1 == 1 {
