@@ -21,9 +21,9 @@ use std::process::Command;
 use common::{Axes, Series, Table, plot};
 use precess::codegen::Export;
 use precess::contact::{ContactDynamics, ContactRun, Phase};
-use precess::ode::{AdaptiveConfig, Run};
 use precess::models::TippeTop as Top;
 use precess::models::tippe_top::MASS;
+use precess::ode::{AdaptiveConfig, Run};
 
 /// The end of both runs [s]: the axis has turned over and settled by then.
 const END: f64 = 12.0;

@@ -7,20 +7,20 @@ use crate::contact::theory;
 use crate::nalgebra::{UnitQuaternion, Vector3};
 use crate::prelude::RigidBody;
 
-/// The sphere's radius R [m].
+/// The sphere's radius R \[m\].
 pub const RADIUS: f64 = 0.02;
 /// The eccentricity α: the centre of mass is αR below the sphere's centre.
 pub const ALPHA: f64 = 0.3;
-/// The mass M [kg].
+/// The mass M \[kg\].
 pub const MASS: f64 = 0.02;
-/// Gravity g [m/s²].
+/// Gravity g \[m/s²\].
 pub const GRAVITY: f64 = 9.81;
 
 /// The tippe top: mass M = 20 g with its centre of mass at the origin, I₁ = 0.35 M R² and
 /// I₃ = 0.4 M R² about it (I₁/I₃ = 0.875, inside the inversion range
 /// 1 − α < I₁/I₃ < 1 + α), a sphere of radius R = 2 cm centred αR = 6 mm above the centre of
 /// mass, gliding with viscous friction F = −c u on the slip u of its contact point
-/// (Cohen 1977, Or 1994); c = `viscous` [kg/s] is a run-time parameter.
+/// (Cohen 1977, Or 1994); c = `viscous` \[kg/s\] is a run-time parameter.
 ///
 /// # Examples
 ///
@@ -48,7 +48,7 @@ pub const GRAVITY: f64 = 9.81;
     gravity = 9.81,
 )]
 pub struct TippeTop {
-    /// The viscous friction coefficient c [kg/s].
+    /// The viscous friction coefficient c \[kg/s\].
     pub viscous: f64,
 }
 

@@ -101,7 +101,7 @@ impl StateSpace {
     }
 
     /// The linearisation of M(q) q̈ = f(q, q̇) + G u about a point where q̈ = 0, in
-    /// x = (δq, δq̇): A = [[0, I], [∂q̈/∂q, ∂q̈/∂q̇]], B = [[0], [M⁻¹ G]]. Exact when the
+    /// x = (δq, δq̇): A = ((0, I), (∂q̈/∂q, ∂q̈/∂q̇)), B = ((0), (M⁻¹ G)). Exact when the
     /// Jacobian is (the derived ones are): no differencing here.
     ///
     /// A point with q̇ ≠ 0 is a steady motion; A is then the motion's own linearisation

@@ -286,7 +286,7 @@ impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
         &self.method
     }
 
-    /// As [`switch_by_restart`]: the state checked by the method, then the method changed.
+    /// As `ode::fixed::switch_by_restart`: the state checked by the method, then the method changed.
     fn switch(
         &mut self,
         t: f64,

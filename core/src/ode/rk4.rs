@@ -288,7 +288,7 @@ impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
         &self.sys
     }
 
-    /// As [`switch_by_restart`]: the state checked to be finite, then the system changed.
+    /// As `ode::fixed::switch_by_restart`: the state checked to be finite, then the system changed.
     fn switch(
         &mut self,
         t: f64,

@@ -33,16 +33,16 @@ use crate::nalgebra::{Complex, Matrix2, Matrix4, Matrix4x2};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Canonical {
-    /// The mass matrix M [kg m²].
+    /// The mass matrix M \[kg m²\].
     pub m: Matrix2<f64>,
     /// C₁, the matrix of the velocity terms per unit speed (gyroscopic and
-    /// damping-like) [kg m].
+    /// damping-like) \[kg m\].
     pub c1: Matrix2<f64>,
-    /// K₀, the gravity stiffness per unit g [kg m].
+    /// K₀, the gravity stiffness per unit g \[kg m\].
     pub k0: Matrix2<f64>,
-    /// K₂, the stiffness per unit v² [kg].
+    /// K₂, the stiffness per unit v² \[kg\].
     pub k2: Matrix2<f64>,
-    /// Gravity g [m/s²].
+    /// Gravity g \[m/s²\].
     pub g: f64,
 }
 
@@ -88,7 +88,7 @@ impl Canonical {
     }
 
     /// The state matrix A at speed v of ẋ = A x + B T, x = (φ, δ, φ̇, δ̇):
-    /// A = [[0, I], [−M⁻¹ (g K₀ + v² K₂), −v M⁻¹ C₁]].
+    /// A = ((0, I), (−M⁻¹ (g K₀ + v² K₂), −v M⁻¹ C₁)).
     ///
     /// # Errors
     /// [`LinalgError::NonFinite`] for a non-finite v.
@@ -113,7 +113,7 @@ impl Canonical {
     }
 
     /// The input matrix B of ẋ = A x + B T for the torques T = (T_φ, T_δ) (a lean torque
-    /// and the rider's steer torque): B = [[0], [M⁻¹]], the same at every speed.
+    /// and the rider's steer torque): B = (0; M⁻¹), the same at every speed.
     pub fn input_matrix(&self) -> Matrix4x2<f64> {
         let mut b = Matrix4x2::zeros();
         b.fixed_view_mut::<2, 2>(2, 0)
@@ -155,7 +155,7 @@ impl Canonical {
     }
 
     /// Where the largest real part of the eigenvalues crosses zero in the speed range
-    /// [lo, hi], to [`CROSSING_TOLERANCE`]: the weave speed v_w for a range where only the
+    /// \[lo, hi\], to [`CROSSING_TOLERANCE`]: the weave speed v_w for a range where only the
     /// weave pair crosses (the bicycle turns stable), the capsize speed v_c for one where
     /// only the capsize mode does (unstable again). See
     /// [`crate::linalg::stability_crossing`].
@@ -180,8 +180,8 @@ impl Canonical {
 /// The eigenvalues at one forward speed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SpeedModes {
-    /// The forward speed v [m/s].
+    /// The forward speed v \[m/s\].
     pub speed: f64,
-    /// The eigenvalues there [1/s], by decreasing real part.
+    /// The eigenvalues there \[1/s\], by decreasing real part.
     pub eigenvalues: Vec<Complex<f64>>,
 }

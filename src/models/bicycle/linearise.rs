@@ -16,7 +16,7 @@ use crate::nalgebra::{Matrix2, Matrix3};
 /// ε·|u̇|/h where u̇ vanishes at the upright run).
 pub const ANGLE_STEP: f64 = 1e-2;
 
-/// The largest lateral acceleration [rad/s²] allowed at the reference state of the
+/// The largest lateral acceleration \[rad/s²\] allowed at the reference state of the
 /// linearisation: the upright straight run must be a steady motion (it is for every
 /// bicycle symmetric about its mid-plane, which the fields cannot break).
 pub const STEADY_TOLERANCE: f64 = 1e-9;
@@ -48,13 +48,13 @@ pub enum BicycleLinearisationError {
         speed: f64,
         /// The largest |φ̈|, |δ̈| there.
         residual: f64,
-        /// [`STEADY_TOLERANCE`].
+        /// `STEADY_TOLERANCE`.
         allowed: f64,
     },
 }
 
 impl Bicycle {
-    /// [φ̈, δ̈] on the constraints at roll φ, steer δ and their rates `x`, the rear wheel
+    /// \[φ̈, δ̈\] on the constraints at roll φ, steer δ and their rates `x`, the rear wheel
     /// turning at −v / r_R, the pitch put back on the floor first.
     fn lateral(&self, x: [f64; 4], v: f64) -> Result<[f64; 2], MechanismError> {
         let mut q = [0.0; 8];
@@ -65,7 +65,7 @@ impl Bicycle {
         Ok([ud[0], ud[1]])
     }
 
-    /// ∂[φ̈, δ̈]/∂x_j at the upright run at speed v. For a rate (j ≥ 2) one central
+    /// ∂\[φ̈, δ̈\]/∂x_j at the upright run at speed v. For a rate (j ≥ 2) one central
     /// difference of step 1, which is exact: at fixed q the accelerations are a quadratic
     /// form in the speeds (u̇ = K(q)⁻¹ Sᵀ (f − M s), f and s quadratic in q̇ = S u), so the
     /// difference quotient of a quadratic is its derivative. For an angle, central

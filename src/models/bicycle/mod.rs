@@ -51,57 +51,57 @@ use crate::prelude::*;
        q = theta_f, parts(body(mass = m_f, inertia = diag(i_fxx, i_fyy, i_fxx))),
        rolls = disk(radius = r_f, axle = y))]
 pub struct Bicycle {
-    /// Wheel base w [m].
+    /// Wheel base w \[m\].
     pub w: f64,
-    /// Trail c [m].
+    /// Trail c \[m\].
     pub c: f64,
-    /// Steer axis tilt λ from the vertical [rad].
+    /// Steer axis tilt λ from the vertical \[rad\].
     pub lambda: f64,
-    /// Gravity g [m/s²].
+    /// Gravity g \[m/s²\].
     pub g: f64,
-    /// Rear wheel radius r_R [m].
+    /// Rear wheel radius r_R \[m\].
     pub r_r: f64,
-    /// Rear wheel mass m_R [kg].
+    /// Rear wheel mass m_R \[kg\].
     pub m_r: f64,
-    /// Rear wheel's moment about a diameter, I_Rxx = I_Rzz [kg·m²].
+    /// Rear wheel's moment about a diameter, I_Rxx = I_Rzz \[kg·m²\].
     pub i_rxx: f64,
-    /// Rear wheel's moment about its axle, I_Ryy [kg·m²].
+    /// Rear wheel's moment about its axle, I_Ryy \[kg·m²\].
     pub i_ryy: f64,
-    /// Rear frame's centre of mass x_B [m].
+    /// Rear frame's centre of mass x_B \[m\].
     pub x_b: f64,
-    /// Rear frame's centre of mass z_B [m] (negative: above the ground).
+    /// Rear frame's centre of mass z_B \[m\] (negative: above the ground).
     pub z_b: f64,
-    /// Rear frame's mass m_B [kg].
+    /// Rear frame's mass m_B \[kg\].
     pub m_b: f64,
-    /// Rear frame's I_Bxx about its centre [kg·m²].
+    /// Rear frame's I_Bxx about its centre \[kg·m²\].
     pub i_bxx: f64,
-    /// Rear frame's I_Byy [kg·m²].
+    /// Rear frame's I_Byy \[kg·m²\].
     pub i_byy: f64,
-    /// Rear frame's I_Bzz [kg·m²].
+    /// Rear frame's I_Bzz \[kg·m²\].
     pub i_bzz: f64,
-    /// Rear frame's product I_Bxz [kg·m²].
+    /// Rear frame's product I_Bxz \[kg·m²\].
     pub i_bxz: f64,
-    /// Front frame's centre of mass x_H [m].
+    /// Front frame's centre of mass x_H \[m\].
     pub x_h: f64,
-    /// Front frame's centre of mass z_H [m].
+    /// Front frame's centre of mass z_H \[m\].
     pub z_h: f64,
-    /// Front frame's mass m_H [kg].
+    /// Front frame's mass m_H \[kg\].
     pub m_h: f64,
-    /// Front frame's I_Hxx about its centre [kg·m²].
+    /// Front frame's I_Hxx about its centre \[kg·m²\].
     pub i_hxx: f64,
-    /// Front frame's I_Hyy [kg·m²].
+    /// Front frame's I_Hyy \[kg·m²\].
     pub i_hyy: f64,
-    /// Front frame's I_Hzz [kg·m²].
+    /// Front frame's I_Hzz \[kg·m²\].
     pub i_hzz: f64,
-    /// Front frame's product I_Hxz [kg·m²].
+    /// Front frame's product I_Hxz \[kg·m²\].
     pub i_hxz: f64,
-    /// Front wheel radius r_F [m].
+    /// Front wheel radius r_F \[m\].
     pub r_f: f64,
-    /// Front wheel mass m_F [kg].
+    /// Front wheel mass m_F \[kg\].
     pub m_f: f64,
-    /// Front wheel's moment about a diameter, I_Fxx = I_Fzz [kg·m²].
+    /// Front wheel's moment about a diameter, I_Fxx = I_Fzz \[kg·m²\].
     pub i_fxx: f64,
-    /// Front wheel's moment about its axle, I_Fyy [kg·m²].
+    /// Front wheel's moment about its axle, I_Fyy \[kg·m²\].
     pub i_fyy: f64,
 }
 

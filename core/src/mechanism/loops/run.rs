@@ -25,7 +25,7 @@ pub enum LoopHalt {
     Singular {
         /// When.
         t: f64,
-        /// The projection's complaint ([`LagrangeError::SingularAtState`]).
+        /// The projection's complaint ([`LagrangeError::SingularAtState`](crate::lagrange::LagrangeError::SingularAtState)).
         error: MechanismError,
     },
 }
