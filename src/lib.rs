@@ -47,6 +47,7 @@ extern crate self as precess;
 
 pub use precess_core::*;
 
+#[cfg(feature = "models")]
 pub mod models;
 
 /// Figures of runs written as SVG: a trajectory's columns against time, phase portraits,

@@ -10,7 +10,10 @@
 //!   spin;
 //! - [`HeavyTop`]: a disk on a stem about a fixed pivot (a symmetric heavy top).
 //!
-//! The examples `bicycle`, `tippe_top`, `rattleback` and `heavy_top` run them.
+//! The examples `bicycle`, `tippe_top`, `rattleback` and `heavy_top` run them. The module is
+//! behind the `models` feature (`precess = { version = "..", features = ["models"] }`): the
+//! scenes are derived where precess is compiled, and a crate that does not use them should
+//! not pay for the bicycle's derive.
 
 pub mod bicycle;
 pub mod heavy_top;
