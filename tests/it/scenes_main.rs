@@ -3,14 +3,13 @@
 //! over this tree (`main.rs` is the first and says why there are two); it shares `common`
 //! with it.
 
-// Each of the two crates uses part of the shared helpers.
-#[allow(dead_code)]
+// Each of the two crates uses part of the shared helpers (and re-exports).
+#[allow(dead_code, unused_imports)]
 mod common;
 
 /// Closed forms for bodies on a table against an independent Newton–Euler formulation.
 mod contact_theory {
     mod disk;
-    mod newton_euler;
     mod scene;
     mod sphere;
 }

@@ -47,7 +47,7 @@ fn shift_along_the_symmetry_axis_raises_i1_and_i2_not_i3() {
     let closed =
         Matrix3::from_diagonal(&Vector3::new(t + m * h * h, t + m * h * h, 0.5 * m * r * r));
     let lattice = shifted(
-        &revolution(m, -l / 2.0, l / 2.0, |_| 0.0, |_| r, 120),
+        &revolution(m, -l / 2.0, l / 2.0, &|_| 0.0, &|_| r, 120),
         Vector3::new(0.0, 0.0, h),
     );
     let direct = tensor_about(&lattice, &Vector3::zeros());
@@ -120,7 +120,7 @@ fn spinning_top_composite() {
     let a = ms * rs * rs / 2.0 + md * rd * rd / 2.0;
     let closed = Matrix3::from_diagonal(&Vector3::new(t, t, a));
     let mut lattice = shifted(
-        &revolution(ms, 0.0, ls, |_| 0.0, |_| rs, 100),
+        &revolution(ms, 0.0, ls, &|_| 0.0, &|_| rs, 100),
         Vector3::zeros(),
     );
     lattice.extend(shifted(&disk(md, rd, 300), Vector3::new(0.0, 0.0, hd)));

@@ -24,11 +24,6 @@ fn reference(axis: [f64; 3], angle: f64) -> Matrix3<f64> {
     *Rotation3::from_axis_angle(&Unit::new_normalize(Vector3::from(axis)), angle).matrix()
 }
 
-/// A lattice given in the part's own axes, turned by `r` about the origin and moved to `at`.
-fn placed(ps: &[Particle], r: &Matrix3<f64>, at: &Vector3<f64>) -> Vec<Particle> {
-    ps.iter().map(|(m, x)| (*m, r * x + at)).collect()
-}
-
 /// The tensor about its centre, and the centre, of one part, without the rules of a whole
 /// body (a rod alone has a zero moment but a well-defined tensor).
 fn part_properties(part: Part<f64>) -> (Matrix3<f64>, Vector3<f64>) {
@@ -99,7 +94,7 @@ fn solids() -> Vec<Solid> {
                 length: l,
                 axis: Axis::Z,
             },
-            lattice: revolution(M, -l / 2.0, l / 2.0, |_| 0.0, |_| r, N),
+            lattice: revolution(M, -l / 2.0, l / 2.0, &|_| 0.0, &|_| r, N),
             closed: [cyl_t, cyl_t, 0.5 * M * r * r],
             offset: Vector3::zeros(),
             tol: 3e-4,
@@ -112,7 +107,7 @@ fn solids() -> Vec<Solid> {
                 length: l,
                 axis: Axis::X,
             },
-            lattice: z_to_x(&revolution(M, -l / 2.0, l / 2.0, |_| 0.0, |_| r, N)),
+            lattice: z_to_x(&revolution(M, -l / 2.0, l / 2.0, &|_| 0.0, &|_| r, N)),
             closed: [0.5 * M * r * r, cyl_t, cyl_t],
             offset: Vector3::zeros(),
             tol: 3e-4,
@@ -126,7 +121,7 @@ fn solids() -> Vec<Solid> {
                 length: l,
                 axis: Axis::Z,
             },
-            lattice: revolution(M, -l / 2.0, l / 2.0, |_| ti, |_| to, N),
+            lattice: revolution(M, -l / 2.0, l / 2.0, &|_| ti, &|_| to, N),
             closed: [tube_t, tube_t, 0.5 * M * (ti * ti + to * to)],
             offset: Vector3::zeros(),
             tol: 3e-4,
@@ -176,7 +171,7 @@ fn solids() -> Vec<Solid> {
                 axis: Axis::Z,
                 reversed: false,
             },
-            lattice: revolution(M, 0.0, h, |_| 0.0, |s| r * (1.0 - s / h), N),
+            lattice: revolution(M, 0.0, h, &|_| 0.0, &|s| r * (1.0 - s / h), N),
             closed: [cone_t, cone_t, 0.3 * M * r * r],
             offset: z(h / 4.0),
             tol: 1e-3,
@@ -190,7 +185,7 @@ fn solids() -> Vec<Solid> {
                 axis: Axis::Z,
                 reversed: true,
             },
-            lattice: revolution(M, -h, 0.0, |_| 0.0, |s| r * (1.0 + s / h), N),
+            lattice: revolution(M, -h, 0.0, &|_| 0.0, &|s| r * (1.0 + s / h), N),
             closed: [cone_t, cone_t, 0.3 * M * r * r],
             offset: z(-h / 4.0),
             tol: 1e-3,
@@ -273,7 +268,7 @@ fn a_rotated_composite_matches_direct_summation_about_its_pivot() {
         .expect("a valid top");
     let mut lattice = placed(&rod(0.3, l, 4000), &rot, &stem_at);
     lattice.extend(placed(
-        &revolution(1.2, 0.0, h, |_| 0.0, |s| r * (1.0 - s / h), N),
+        &revolution(1.2, 0.0, h, &|_| 0.0, &|s| r * (1.0 - s / h), N),
         &rot,
         &cone_at,
     ));

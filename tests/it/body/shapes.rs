@@ -107,7 +107,7 @@ fn cylinder() {
         length: l,
         axis: Axis::Z,
     };
-    let lattice = revolution(M, -l / 2.0, l / 2.0, |_| 0.0, |_| r, N);
+    let lattice = revolution(M, -l / 2.0, l / 2.0, &|_| 0.0, &|_| r, N);
     check("cylinder", shape, [t, t, 0.5 * M * r * r], lattice, 1e-4);
 }
 
@@ -121,7 +121,7 @@ fn cylinder_along_x() {
         length: l,
         axis: Axis::X,
     };
-    let lattice = z_to_x(&revolution(M, -l / 2.0, l / 2.0, |_| 0.0, |_| r, N));
+    let lattice = z_to_x(&revolution(M, -l / 2.0, l / 2.0, &|_| 0.0, &|_| r, N));
     check("cylinder x", shape, [0.5 * M * r * r, t, t], lattice, 1e-4);
 }
 
@@ -136,7 +136,7 @@ fn tube() {
         length: l,
         axis: Axis::Z,
     };
-    let lattice = revolution(M, -l / 2.0, l / 2.0, |_| a, |_| b, N);
+    let lattice = revolution(M, -l / 2.0, l / 2.0, &|_| a, &|_| b, N);
     check(
         "tube",
         shape,
@@ -238,7 +238,7 @@ fn cone() {
         reversed: false,
     };
     // Base at z = 0 (the part's `at`), apex at z = h.
-    let lattice = revolution(M, 0.0, h, |_| 0.0, |z| r * (1.0 - z / h), N);
+    let lattice = revolution(M, 0.0, h, &|_| 0.0, &|z| r * (1.0 - z / h), N);
     check("cone", shape, [t, t, 0.3 * M * r * r], lattice, 3e-4);
     let (_, g) = built(Shape::Cone {
         mass: M,
@@ -280,36 +280,15 @@ fn particle_pair() {
     assert_eq!(b.inertia(), closed);
 }
 
-/// Equal particles on a uniform cubic grid, kept where `inside` holds: the plainest lattice.
-fn cubic_lattice(
-    m: f64,
-    half: [f64; 3],
-    n: usize,
-    inside: impl Fn(Vector3<f64>) -> bool,
-) -> Vec<Particle> {
-    let mut ps = Vec::new();
-    for x in mids(-half[0], half[0], n) {
-        for y in mids(-half[1], half[1], n) {
-            for z in mids(-half[2], half[2], n) {
-                let p = Vector3::new(x, y, z);
-                if inside(p) {
-                    ps.push((1.0, p));
-                }
-            }
-        }
-    }
-    normalise(ps, m)
-}
-
 #[test]
 fn uniform_cubic_lattices() {
     let n = 160;
     let r = 0.3;
-    let sphere = cubic_lattice(M, [r; 3], n, |p| p.norm() <= r);
+    let sphere = cubic_lattice(M, [r; 3], n, &|p| p.norm() <= r);
     let (l, h) = (1.2, 0.9);
-    let cylinder = cubic_lattice(M, [r, r, l / 2.0], n, |p| p.x * p.x + p.y * p.y <= r * r);
+    let cylinder = cubic_lattice(M, [r, r, l / 2.0], n, &|p| p.x * p.x + p.y * p.y <= r * r);
     // Cone, base at z = 0 and apex at z = h: shifted so the grid spans [0, h].
-    let cone: Vec<Particle> = cubic_lattice(M, [r, r, h / 2.0], n, |p| {
+    let cone: Vec<Particle> = cubic_lattice(M, [r, r, h / 2.0], n, &|p| {
         let z = p.z + h / 2.0;
         (p.x * p.x + p.y * p.y).sqrt() <= r * (1.0 - z / h)
     })
@@ -366,7 +345,7 @@ fn reversed_cone_points_down() {
         reversed: true,
     };
     // Base at z = 0, apex at z = −h.
-    let lattice = revolution(M, -h, 0.0, |_| 0.0, |z| r * (1.0 + z / h), N);
+    let lattice = revolution(M, -h, 0.0, &|_| 0.0, &|z| r * (1.0 + z / h), N);
     check(
         "cone −z",
         shape.clone(),

@@ -5,7 +5,7 @@
 use nalgebra::{Matrix3, Vector3};
 use precess::contact::theory::{DiskState, EulerDisk, RollingDisk};
 
-use super::newton_euler::{Body, Rolling, Shape};
+use precess_testkit::newton_euler::{Body, Rolling, Shape};
 
 /// A thin disk and a thick one (a coin-shaped cylinder of height equal to its radius), so a
 /// formula that holds only for A = C/2 fails.

@@ -280,7 +280,7 @@ fn derived_tippe_top_inverts_to_jelletts_state() {
 /// of the long axis turns back (the spin reversal the example reports).
 #[test]
 fn derived_rattleback_matches_newton_euler() {
-    use super::newton_euler::{Body, Rolling, Shape};
+    use precess_testkit::newton_euler::{Body, Rolling, Shape};
     let inertia = Matrix3::new(2e-4, -2e-5, 0.0, -2e-5, 1.6e-3, 0.0, 0.0, 0.0, 1.7e-3);
     let mut a = Arena::new();
     let z = a.zero();

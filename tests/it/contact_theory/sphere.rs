@@ -5,7 +5,7 @@
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use precess::contact::theory::{SphereBody, TippeTop};
 
-use super::newton_euler::{Body, Rolling, Shape, Sliding, SlidingSphere};
+use precess_testkit::newton_euler::{Body, Rolling, Shape, Sliding, SlidingSphere};
 
 fn quaternion(rot: &Matrix3<f64>) -> UnitQuaternion<f64> {
     UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(*rot))

@@ -86,7 +86,7 @@ fn literal_rotations_agree_with_the_builder_and_direct_summation() {
         ps.into_iter().map(|(m, x)| (m, r * x + at)).collect()
     };
     let mut lattice = turn(
-        revolution(2.5, -0.6, 0.6, |_| 0.0, |_| 0.3, n),
+        revolution(2.5, -0.6, 0.6, &|_| 0.0, &|_| 0.3, n),
         &cylinder,
         Vector3::new(0.2, -0.4, 0.9),
     );
@@ -96,7 +96,7 @@ fn literal_rotations_agree_with_the_builder_and_direct_summation() {
         Vector3::zeros(),
     ));
     lattice.extend(turn(
-        revolution(0.5, -0.9, 0.0, |_| 0.0, |s| 0.3 * (1.0 + s / 0.9), n),
+        revolution(0.5, -0.9, 0.0, &|_| 0.0, &|s| 0.3 * (1.0 + s / 0.9), n),
         &cone,
         Vector3::new(0.0, 0.0, 0.9),
     ));

@@ -4,7 +4,7 @@
 //! sphere sliding under viscous friction. Integrated with classical RK4 on the rotation
 //! matrix (its drift off SO(3) is O(h⁴) per unit time, far below what the tests resolve).
 
-use nalgebra::{Matrix3, Vector3};
+use precess::nalgebra::{Matrix3, Vector3};
 
 /// The surface a body touches the table with, fixed in the body (body axes, from the centre
 /// of mass).
