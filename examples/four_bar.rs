@@ -1,5 +1,6 @@
-//! A crank-rocker four-bar linkage under gravity, declared with `#[derive(Mechanism)]` and a
-//! `closes = ..` joint, run over ten thousand crank turns with the loop kept closed.
+//! A crank-rocker four-bar linkage under gravity, `precess::models::FourBar` (declared with
+//! `#[derive(Mechanism)]` and a `closes = ..` joint), run over ten thousand crank turns with
+//! the loop kept closed.
 //!
 //! ```sh
 //! cargo run --release --example four_bar [plot directory]
@@ -10,7 +11,7 @@
 //! with the shortest link the crank next to the ground, so the crank turns fully and the
 //! rocker swings. The tree is crank → coupler and rocker, cut open at the coupler–rocker
 //! pin, which `closes = rocker(..)` puts back: two rows φ = B_coupler − B_rocker = 0. The
-//! rocker angle is checked against Freudenstein's closed form
+//! rocker angle is checked against Freudenstein's closed form (`FourBar::positions`)
 //! K₁ cos θ₃ − K₂ cos θ₁ + K₃ = cos(θ₁ − θ₃), K₁ = d/a, K₂ = d/c,
 //! K₃ = (a² − b² + c² + d²)/(2ac); the energy, conserved by the equations, measures the
 //! integrator's error; the loop residual max |φ| is kept at rounding by the run loop's
@@ -23,39 +24,17 @@ use std::f64::consts::{PI, TAU};
 
 use common::{Axes, Series, Table, plot};
 use precess::mechanism::loops::LoopDynamics;
+use precess::models::FourBar;
+use precess::models::four_bar::Circuit;
 use precess::ode::{AdaptiveConfig, Stepper};
-use precess::prelude::*;
 
-/// The four-bar: θ₁ the crank, θ₂ the coupler relative to the crank, θ₃ the rocker.
-#[derive(Mechanism)]
-#[mechanism(gravity = [0.0, -9.81, 0.0])]
-#[body(crank, joint = revolute(axis = z), q = theta1,
-       parts(rod(mass = 0.5, length = 1.0, axis = x, at = [0.5, 0.0, 0.0])))]
-#[body(coupler, parent = crank, joint = revolute(axis = z, at = [1.0, 0.0, 0.0]), q = theta2,
-       parts(rod(mass = 1.5, length = 3.0, axis = x, at = [1.5, 0.0, 0.0])),
-       closes = rocker(at = [3.0, 0.0, 0.0], to = [2.5, 0.0, 0.0]))]
-#[body(rocker, joint = revolute(axis = z, at = [3.0, 0.0, 0.0]), q = theta3,
-       parts(rod(mass = 1.2, length = 2.5, axis = x, at = [1.25, 0.0, 0.0])))]
-struct FourBar;
-
-const LINKS: [f64; 4] = [1.0, 3.0, 2.5, 3.0];
 const TURNS: f64 = 1e4;
 
-/// Freudenstein's rocker angle θ₃ and the coupler's absolute angle for the crank at θ₁, on
-/// the assembly `branch` = ±1.
-fn freudenstein(theta1: f64, branch: f64) -> (f64, f64) {
-    let [a, b, c, d] = LINKS;
-    let (k1, k2, k3) = (
-        d / a,
-        d / c,
-        (a * a - b * b + c * c + d * d) / (2.0 * a * c),
-    );
-    let (ca, cb, cc) = (k1 - theta1.cos(), -theta1.sin(), k3 - k2 * theta1.cos());
-    let t = (-cb + branch * (ca * ca + cb * cb - cc * cc).sqrt()) / (cc - ca);
-    let theta3 = 2.0 * t.atan();
-    let bx = d + c * theta3.cos() - a * theta1.cos();
-    let by = c * theta3.sin() - a * theta1.sin();
-    (by.atan2(bx), theta3)
+/// Freudenstein's coupler (absolute) and rocker angles for the crank at θ₁, on the circuit
+/// of the run.
+fn freudenstein(theta1: f64) -> (f64, f64) {
+    let [t1, t2, t3] = FourBar::positions(theta1, Circuit::Clockwise);
+    (t1 + t2, t3)
 }
 
 /// `x − y` wrapped into (−π, π].
@@ -66,12 +45,8 @@ fn wrap(x: f64, y: f64) -> f64 {
 
 fn main() -> Result<(), Box<dyn Error>> {
     let bar = FourBar;
-    let (coupler, rocker) = freudenstein(0.3, 1.0);
-    let q0 = [0.3, coupler - 0.3, rocker];
-    let qd0 = bar.rates_from(&q0, [FourBar::THETA1], [6.0])?;
-    let mut y0 = [0.0; FourBar::STATE];
-    y0[..3].copy_from_slice(&q0);
-    y0[3..].copy_from_slice(&qd0);
+    let y0 = bar.start(0.3, 6.0, Circuit::Clockwise)?;
+    let (q0, qd0) = ([y0[0], y0[1], y0[2]], [y0[3], y0[4], y0[5]]);
     let e0 = bar.energy(&q0, &qd0);
     let cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
     // The crank's period at this energy, from a probe of 20 s.
@@ -88,13 +63,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         let y = run.state().x;
         let q = [y[0], y[1], y[2]];
         worst = worst.max(bar.residual(&q));
-        worst_rocker = worst_rocker.max(wrap(y[2], freudenstein(y[0], 1.0).1).abs());
+        worst_rocker = worst_rocker.max(wrap(y[2], freudenstein(y[0]).1).abs());
         let e = bar.energy(&q, &[y[3], y[4], y[5]]);
         samples.push((t, worst.max(1e-17), ((e - e0) / e0).abs().max(1e-17)));
     }
     let y = run.state().x;
     let turns = (y[0] - q0[0]) / TAU;
-    let (coupler, rocker) = freudenstein(y[0], 1.0);
+    let (coupler, rocker) = freudenstein(y[0]);
     let lambda = bar.multipliers(t_end, &[y[0], y[1], y[2]], &[y[3], y[4], y[5]])?;
     let mut table = Table::default();
     table.row("θ₃ at the end [rad]", y[2], y[2] - wrap(y[2], rocker));

@@ -1,29 +1,20 @@
-//! A four-bar declared with `closes = ..` on `#[derive(Mechanism)]`: its rocker against
+//! A four-bar declared with `closes = ..` on `#[derive(Mechanism)]` (the crank-rocker
+//! `precess::models::FourBar`: crank a = 1, coupler b = 3, rocker c = 2.5, ground d = 3,
+//! θ₂ the coupler's angle relative to the crank): its rocker against
 //! Freudenstein's equation solved in closed form here, the loop residual and the energy over
-//! 10⁴ crank turns, the pin force (the multipliers) against Newton–Euler of the links, and a
+//! a hundred crank turns (the example `four_bar` runs 10⁴ in release; the test crates are
+//! compiled without optimisation, where 10⁴ turns took five minutes), the pin force (the multipliers) against Newton–Euler of the links, and a
 //! triple rocker whose crank passes its dead point (the dependent coordinates change there
 //! instead of the run stopping or stepping through it).
 
 use std::f64::consts::{PI, TAU};
 
 use precess::mechanism::loops::{LoopDynamics, LoopHalt};
+use precess::models::FourBar;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
 
 const G: f64 = 9.81;
-
-/// Crank a = 1, coupler b = 3, rocker c = 2.5, ground d = 3: a crank-rocker. θ₂ is the
-/// coupler's angle relative to the crank.
-#[derive(Mechanism)]
-#[mechanism(gravity = [0.0, -9.81, 0.0])]
-#[body(crank, joint = revolute(axis = z), q = theta1,
-       parts(rod(mass = 0.5, length = 1.0, axis = x, at = [0.5, 0.0, 0.0])))]
-#[body(coupler, parent = crank, joint = revolute(axis = z, at = [1.0, 0.0, 0.0]), q = theta2,
-       parts(rod(mass = 1.5, length = 3.0, axis = x, at = [1.5, 0.0, 0.0])),
-       closes = rocker(at = [3.0, 0.0, 0.0], to = [2.5, 0.0, 0.0]))]
-#[body(rocker, joint = revolute(axis = z, at = [3.0, 0.0, 0.0]), q = theta3,
-       parts(rod(mass = 1.2, length = 2.5, axis = x, at = [1.25, 0.0, 0.0])))]
-struct CrankRocker;
 
 /// The triple rocker a = 2, b = 1.5, c = 2, d = 3 (not Grashof: s + l = 4.5 > p + q = 4),
 /// whose crank swings at most to cos θ₁ = (a² + d² − (b + c)²)/(2ad) = 1/16.
@@ -87,58 +78,58 @@ fn halves(y: &[f64; 6]) -> ([f64; 3], [f64; 3]) {
 #[test]
 fn the_derived_closure_holds_at_freudenstein_s_positions() {
     let links = [1.0, 3.0, 2.5, 3.0];
-    assert_eq!(CrankRocker::CLOSURE_ROWS, ["coupler.x", "coupler.y"]);
+    assert_eq!(FourBar::CLOSURE_ROWS, ["coupler.x", "coupler.y"]);
     for k in 0..64 {
         let theta1 = TAU * f64::from(k) / 64.0;
         for branch in [1.0, -1.0] {
             let (coupler, rocker) = freudenstein(links, theta1, branch);
             let q = [theta1, coupler - theta1, rocker];
             assert!(
-                CrankRocker.residual(&q) < 1e-14,
+                FourBar.residual(&q) < 1e-14,
                 "θ₁ = {theta1}: {}",
-                CrankRocker.residual(&q)
+                FourBar.residual(&q)
             );
         }
     }
 }
 
 #[test]
-fn the_rocker_follows_freudenstein_and_the_loop_stays_closed_over_ten_thousand_turns() {
+fn the_rocker_follows_freudenstein_and_the_loop_stays_closed_over_a_hundred_turns() {
     let links = [1.0, 3.0, 2.5, 3.0];
-    let y0 = start(&CrankRocker, links, 0.3, 1.0, 6.0);
+    let y0 = start(&FourBar, links, 0.3, 1.0, 6.0);
     let (q0, qd0) = halves(&y0);
-    let e0 = CrankRocker.energy(&q0, &qd0);
+    let e0 = FourBar.energy(&q0, &qd0);
     let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
-    let mut run = CrankRocker
+    let mut run = FourBar
         .closed_run(0.0, y0, cfg)
         .expect("starts on the loop");
     let (mut worst_phi, mut worst_rocker, mut worst_coupler, mut worst_energy) =
         (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
     let mut t = 0.0;
-    // About 0.74 s a turn at this energy: sample every 5 s until 10⁴ turns.
-    while run.state().x[0] - q0[0] < 1e4 * TAU {
-        t += 5.0;
+    // About 0.74 s a turn at this energy: sample every 0.5 s until 100 turns.
+    while run.state().x[0] - q0[0] < 1e2 * TAU {
+        t += 0.5;
         run.advance_to(t)
             .expect("no halt on a Grashof crank-rocker");
         let (q, qd) = halves(&run.state().x);
-        worst_phi = worst_phi.max(CrankRocker.residual(&q));
+        worst_phi = worst_phi.max(FourBar.residual(&q));
         let (coupler, rocker) = freudenstein(links, q[0], 1.0);
         worst_rocker = worst_rocker.max(wrap(q[2], rocker).abs());
         worst_coupler = worst_coupler.max(wrap(q[0] + q[1], coupler).abs());
-        worst_energy = worst_energy.max(((CrankRocker.energy(&q, &qd) - e0) / e0).abs());
+        worst_energy = worst_energy.max(((FourBar.energy(&q, &qd) - e0) / e0).abs());
     }
     let turns = (run.state().x[0] - q0[0]) / TAU;
     eprintln!(
         "{turns:.0} turns in {t} s ({} steps): max |φ| {worst_phi:e}, θ₃ off Freudenstein {worst_rocker:e}, coupler {worst_coupler:e}, energy {worst_energy:e}",
         run.inner().stats().steps
     );
-    assert!(turns >= 1e4);
-    assert!(worst_phi <= 1e-10, "{worst_phi:e}");
+    assert!(turns >= 1e2);
+    assert!(worst_phi <= 1e-12, "{worst_phi:e}");
     assert!(
-        worst_rocker <= 1e-10 && worst_coupler <= 1e-10,
+        worst_rocker <= 1e-12 && worst_coupler <= 1e-12,
         "{worst_rocker:e} {worst_coupler:e}"
     );
-    assert!(worst_energy <= 1e-6, "{worst_energy:e}");
+    assert!(worst_energy <= 1e-7, "{worst_energy:e}");
 }
 
 #[test]
@@ -150,10 +141,10 @@ fn the_pin_force_balances_each_side_of_the_loop() {
     let [m1, m2, m3] = [0.5, 1.5, 1.2];
     for (k, omega) in [(0, 6.0), (1, -2.0), (2, 0.0), (3, 9.0)] {
         let theta1 = 0.3 + 1.7 * f64::from(k);
-        let y = start(&CrankRocker, [a, b, c, d], theta1, 1.0, omega);
+        let y = start(&FourBar, [a, b, c, d], theta1, 1.0, omega);
         let (q, qd) = halves(&y);
-        let qdd = CrankRocker.accelerations(0.0, &q, &qd).expect("regular");
-        let l = CrankRocker.multipliers(0.0, &q, &qd).expect("regular");
+        let qdd = FourBar.accelerations(0.0, &q, &qd).expect("regular");
+        let l = FourBar.multipliers(0.0, &q, &qd).expect("regular");
         let (t3, w3, a3) = (q[2], qd[2], qdd[2]);
         let bx = d + c * t3.cos();
         let by = c * t3.sin();

@@ -1,22 +1,14 @@
-//! A slider-crank declared with `closes = ..`: the slider against
-//! x = r cos θ + √(l² − r² sin² θ) along a run, its energy; and a four-bar of fields whose
-//! sides cannot close, refused at run time by name.
+//! A slider-crank declared with `closes = ..` (`precess::models::SliderCrank`: crank
+//! r = 0.5 about the origin, connecting rod l = 1.5 pinned to a slider on the x axis): the
+//! slider against x = r cos θ + √(l² − r² sin² θ) at many crank angles and along a run, the
+//! loop residual and the energy over the run, the pin force against Newton–Euler of the
+//! links; and a four-bar of fields whose sides cannot close, refused at run time by name.
 
 use precess::mechanism::MechanismError;
 use precess::mechanism::loops::LoopDynamics;
+use precess::models::SliderCrank;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
-
-/// Crank r = 0.5 about the origin, connecting rod l = 1.5 pinned to a slider on the x axis.
-#[derive(Mechanism)]
-#[mechanism(gravity = [0.0, -9.81, 0.0])]
-#[body(crank, joint = revolute(axis = z), q = theta,
-       parts(rod(mass = 0.4, length = 0.5, axis = x, at = [0.25, 0.0, 0.0])))]
-#[body(rod, parent = crank, joint = revolute(axis = z, at = [0.5, 0.0, 0.0]), q = beta,
-       parts(rod(mass = 0.9, length = 1.5, axis = x, at = [0.75, 0.0, 0.0])),
-       closes = slider(at = [1.5, 0.0, 0.0]))]
-#[body(slider, joint = prismatic(axis = x), q = x, parts(particle(mass = 2.0)))]
-struct SliderCrank;
 
 /// A four-bar whose link lengths are fields.
 #[derive(Mechanism)]
@@ -37,18 +29,111 @@ struct Linkage {
 
 const R: f64 = 0.5;
 const L: f64 = 1.5;
+const G: f64 = 9.81;
+/// Crank, rod and slider \[kg\].
+const MASSES: [f64; 3] = [0.4, 0.9, 2.0];
 
 /// The slider's closed form for the crank at θ.
 fn slider(theta: f64) -> f64 {
     R * theta.cos() + (L * L - R * R * theta.sin().powi(2)).sqrt()
 }
 
+/// dx/dθ of [`slider`].
+fn slider_slope(theta: f64) -> f64 {
+    let s = theta.sin();
+    -R * s - R * R * s * theta.cos() / (L * L - R * R * s * s).sqrt()
+}
+
+/// The rod's angle relative to the crank, from sin(θ + β) = −(r/l) sin θ, cos(θ + β) > 0.
+fn rod(theta: f64) -> f64 {
+    (-(R / L) * theta.sin()).asin() - theta
+}
+
+#[test]
+fn the_slider_sits_on_the_closed_form_at_every_crank_angle() {
+    assert_eq!(SliderCrank::CLOSURE_ROWS, ["rod.x", "rod.y"]);
+    let (mut at_closed_form, mut after_newton, mut slider_off, mut rate_off) =
+        (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    for k in 0..720 {
+        let theta = -std::f64::consts::PI + std::f64::consts::TAU * (f64::from(k) + 0.5) / 720.0;
+        // The closed form's positions satisfy the derived rows.
+        let exact = [theta, rod(theta), slider(theta)];
+        at_closed_form = at_closed_form.max(SliderCrank.residual(&exact));
+        // A configuration off the loop, pulled back by Newton over the dependent
+        // coordinates the pivoting chose (the crank among them, at some angles): the slider
+        // lands on x(θ) of wherever the crank ended, its rate on (dx/dθ) θ̇.
+        let mut q = [theta, rod(theta) + 2e-3, slider(theta) - 3e-3];
+        let mut qd = [3.0, -1.0, 0.5];
+        SliderCrank
+            .close_loop(&mut q, &mut qd)
+            .expect("closes from nearby");
+        after_newton = after_newton.max(SliderCrank.residual(&q));
+        slider_off = slider_off.max((q[SliderCrank::X] - slider(q[0])).abs());
+        rate_off = rate_off.max(
+            (qd[SliderCrank::X] - slider_slope(q[0]) * qd[SliderCrank::THETA]).abs()
+                / qd.iter().fold(1.0_f64, |m, v| m.max(v.abs())),
+        );
+    }
+    eprintln!(
+        "max |φ| at the closed form {at_closed_form:e}, after Newton {after_newton:e}; slider off x(θ) by {slider_off:e} m, ẋ off by {rate_off:e}"
+    );
+    assert!(at_closed_form < 1e-15, "{at_closed_form:e}");
+    assert!(after_newton <= 1e-14, "{after_newton:e}");
+    assert!(slider_off < 1e-12, "{slider_off:e}");
+    assert!(rate_off < 1e-12, "{rate_off:e}");
+}
+
+#[test]
+fn the_pin_force_balances_the_slider_and_the_crank_with_its_rod() {
+    // Newton–Euler on the two sides of the cut, λ the force on the rod at B = (x, 0): the
+    // slider (its guide takes y) m_s ẍ = −λ_x; the crank and the rod turn about the origin
+    // under their weights and λ at B (the pivot's force has no moment there),
+    // d/dt L_O = Σ weights' moments + x λ_y.
+    let [m1, m2, m3] = MASSES;
+    for (theta, omega) in [(0.4, 5.0), (2.0, -3.0), (3.5, 0.0), (5.5, 8.0)] {
+        let q = [theta, rod(theta), slider(theta)];
+        let qd = SliderCrank
+            .rates_from(&q, [SliderCrank::THETA], [omega])
+            .expect("free crank");
+        let qdd = SliderCrank.accelerations(0.0, &q, &qd).expect("regular");
+        let l = SliderCrank.multipliers(0.0, &q, &qd).expect("regular");
+        let slider_balance = m3 * qdd[2] + l[0];
+        let (t1, w1, a1) = (q[0], qd[0], qdd[0]);
+        let (psi, wp, ap) = (q[0] + q[1], qd[0] + qd[1], qdd[0] + qdd[1]);
+        let r_g = [
+            R * t1.cos() + L / 2.0 * psi.cos(),
+            R * t1.sin() + L / 2.0 * psi.sin(),
+        ];
+        let acc_g = [
+            R * (-a1 * t1.sin() - w1 * w1 * t1.cos())
+                + L / 2.0 * (-ap * psi.sin() - wp * wp * psi.cos()),
+            R * (a1 * t1.cos() - w1 * w1 * t1.sin())
+                + L / 2.0 * (ap * psi.cos() - wp * wp * psi.sin()),
+        ];
+        let dl = m1 * R * R / 3.0 * a1
+            + m2 * (r_g[0] * acc_g[1] - r_g[1] * acc_g[0])
+            + m2 * L * L / 12.0 * ap;
+        let moments = -m1 * G * R / 2.0 * t1.cos() - m2 * G * r_g[0] + q[2] * l[1];
+        let scale = (m3 * G).max(l[0].abs() + l[1].abs());
+        eprintln!(
+            "θ = {theta}: λ = {l:?}, slider {slider_balance:e}, crank and rod {:e}",
+            dl - moments
+        );
+        assert!(
+            slider_balance.abs() < 1e-12 * scale,
+            "slider: {slider_balance:e} (λ = {l:?})"
+        );
+        assert!(
+            (dl - moments).abs() < 1e-12 * scale * (R + L),
+            "crank and rod: {dl} against {moments}"
+        );
+    }
+}
+
 #[test]
 fn the_slider_follows_the_closed_form_along_a_run() {
     let theta: f64 = 0.4;
-    // The rod's angle relative to the crank, from sin(θ + β) = −(r/l) sin θ.
-    let beta = (-(R / L) * theta.sin()).asin() - theta;
-    let q0 = [theta, beta, slider(theta)];
+    let q0 = [theta, rod(theta), slider(theta)];
     assert!(
         SliderCrank.residual(&q0) < 1e-15,
         "{}",
@@ -58,8 +143,7 @@ fn the_slider_follows_the_closed_form_along_a_run() {
         .rates_from(&q0, [SliderCrank::THETA], [5.0])
         .expect("free crank");
     // ẋ = dx/dθ θ̇.
-    let dx = -R * theta.sin()
-        - R * R * theta.sin() * theta.cos() / (L * L - R * R * theta.sin().powi(2)).sqrt();
+    let dx = slider_slope(theta);
     assert!(
         (qd0[SliderCrank::X] - 5.0 * dx).abs() < 1e-13,
         "{} against {}",
@@ -71,20 +155,22 @@ fn the_slider_follows_the_closed_form_along_a_run() {
     let mut run = SliderCrank
         .closed_run(0.0, y0, AdaptiveConfig::with_tol(1e-11, 1e-11))
         .expect("starts");
-    let (mut worst, mut energy) = (0.0_f64, 0.0_f64);
+    let (mut worst, mut energy, mut phi) = (0.0_f64, 0.0_f64, 0.0_f64);
     for k in 1..=500 {
         run.advance_to(f64::from(k) * 0.02).expect("runs");
         let y = run.state().x;
         worst = worst.max((y[2] - slider(y[0])).abs());
+        phi = phi.max(SliderCrank.residual(&[y[0], y[1], y[2]]));
         energy =
             energy.max((SliderCrank.energy(&[y[0], y[1], y[2]], &[y[3], y[4], y[5]]) - e0).abs());
     }
     let turns = (run.state().x[0] - theta) / std::f64::consts::TAU;
     eprintln!(
-        "{turns:.1} crank turns: slider off the closed form by {worst:e} m, energy {energy:e} J"
+        "{turns:.1} crank turns: slider off the closed form by {worst:e} m, max |φ| {phi:e} m, energy {energy:e} J"
     );
     assert!(turns.abs() > 3.0);
     assert!(worst < 1e-12, "{worst:e}");
+    assert!(phi <= 1e-13, "{phi:e}");
     assert!(energy < 1e-8 * e0.abs(), "{energy:e}");
 }
 
