@@ -6,6 +6,7 @@
 #![forbid(unsafe_code)]
 
 pub mod bicycle;
+pub mod linkages;
 pub mod newton_euler;
 pub mod particles;
 pub mod rng;

@@ -1,18 +1,19 @@
 //! A four-bar declared with `closes = ..` on `#[derive(Mechanism)]` (the crank-rocker
 //! `precess::models::FourBar`: crank a = 1, coupler b = 3, rocker c = 2.5, ground d = 3,
 //! θ₂ the coupler's angle relative to the crank): its rocker against
-//! Freudenstein's equation solved in closed form here, the loop residual and the energy over
-//! a hundred crank turns (the example `four_bar` runs 10⁴ in release; the test crates are
-//! compiled without optimisation, where 10⁴ turns took five minutes), the pin force (the multipliers) against Newton–Euler of the links, and a
+//! Freudenstein's equation solved in closed form (the testkit's `linkages`) at many crank
+//! angles (the loop residual and the energy over 10⁴ crank turns are in the optimised crate
+//! `long-runs`), the pin force (the multipliers) against Newton–Euler of the links, and a
 //! triple rocker whose crank passes its dead point (the dependent coordinates change there
 //! instead of the run stopping or stepping through it).
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 use precess::mechanism::loops::{LoopDynamics, LoopHalt};
 use precess::models::FourBar;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
+use precess_testkit::linkages::{freudenstein, wrap};
 
 const G: f64 = 9.81;
 
@@ -28,31 +29,6 @@ const G: f64 = 9.81;
 #[body(rocker, joint = revolute(axis = z, at = [3.0, 0.0, 0.0]), q = theta3,
        parts(rod(mass = 1.2, length = 2.0, axis = x, at = [1.0, 0.0, 0.0])))]
 struct TripleRocker;
-
-/// Freudenstein's equation K₁ cos θ₃ − K₂ cos θ₁ + K₃ = cos(θ₁ − θ₃), K₁ = d/a, K₂ = d/c,
-/// K₃ = (a² − b² + c² + d²)/(2ac), solved for the rocker θ₃ by the half-angle substitution
-/// on the assembly `branch` = ±1; with the coupler's absolute angle from the closing
-/// triangle. `[a, b, c, d]` = crank, coupler, rocker, ground.
-fn freudenstein([a, b, c, d]: [f64; 4], theta1: f64, branch: f64) -> (f64, f64) {
-    let (k1, k2, k3) = (
-        d / a,
-        d / c,
-        (a * a - b * b + c * c + d * d) / (2.0 * a * c),
-    );
-    // A cos θ₃ + B sin θ₃ = C with A = K₁ − cos θ₁, B = −sin θ₁, C = K₂ cos θ₁ − K₃.
-    let (ca, cb, cc) = (k1 - theta1.cos(), -theta1.sin(), k2 * theta1.cos() - k3);
-    let t = (-cb + branch * (ca * ca + cb * cb - cc * cc).sqrt()) / (-cc - ca);
-    let theta3 = 2.0 * t.atan();
-    let bx = d + c * theta3.cos() - a * theta1.cos();
-    let by = c * theta3.sin() - a * theta1.sin();
-    (by.atan2(bx), theta3)
-}
-
-/// `x − y` wrapped into (−π, π].
-fn wrap(x: f64, y: f64) -> f64 {
-    let d = (x - y).rem_euclid(TAU);
-    if d > PI { d - TAU } else { d }
-}
 
 /// The state [q, q̇] on the loop at crank angle θ₁ and crank rate ω (Freudenstein's
 /// positions, the other rates from the closure).
@@ -91,45 +67,6 @@ fn the_derived_closure_holds_at_freudenstein_s_positions() {
             );
         }
     }
-}
-
-#[test]
-fn the_rocker_follows_freudenstein_and_the_loop_stays_closed_over_a_hundred_turns() {
-    let links = [1.0, 3.0, 2.5, 3.0];
-    let y0 = start(&FourBar, links, 0.3, 1.0, 6.0);
-    let (q0, qd0) = halves(&y0);
-    let e0 = FourBar.energy(&q0, &qd0);
-    let cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);
-    let mut run = FourBar
-        .closed_run(0.0, y0, cfg)
-        .expect("starts on the loop");
-    let (mut worst_phi, mut worst_rocker, mut worst_coupler, mut worst_energy) =
-        (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-    let mut t = 0.0;
-    // About 0.74 s a turn at this energy: sample every 0.5 s until 100 turns.
-    while run.state().x[0] - q0[0] < 1e2 * TAU {
-        t += 0.5;
-        run.advance_to(t)
-            .expect("no halt on a Grashof crank-rocker");
-        let (q, qd) = halves(&run.state().x);
-        worst_phi = worst_phi.max(FourBar.residual(&q));
-        let (coupler, rocker) = freudenstein(links, q[0], 1.0);
-        worst_rocker = worst_rocker.max(wrap(q[2], rocker).abs());
-        worst_coupler = worst_coupler.max(wrap(q[0] + q[1], coupler).abs());
-        worst_energy = worst_energy.max(((FourBar.energy(&q, &qd) - e0) / e0).abs());
-    }
-    let turns = (run.state().x[0] - q0[0]) / TAU;
-    eprintln!(
-        "{turns:.0} turns in {t} s ({} steps): max |φ| {worst_phi:e}, θ₃ off Freudenstein {worst_rocker:e}, coupler {worst_coupler:e}, energy {worst_energy:e}",
-        run.inner().stats().steps
-    );
-    assert!(turns >= 1e2);
-    assert!(worst_phi <= 1e-12, "{worst_phi:e}");
-    assert!(
-        worst_rocker <= 1e-12 && worst_coupler <= 1e-12,
-        "{worst_rocker:e} {worst_coupler:e}"
-    );
-    assert!(worst_energy <= 1e-7, "{worst_energy:e}");
 }
 
 #[test]
