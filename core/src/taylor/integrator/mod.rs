@@ -215,20 +215,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         })
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64; N] {
-        &self.y
-    }
-
-    /// Work done so far (a jet of order p counts as p evaluations).
-    pub fn stats(&self) -> Stats {
-        self.stats
-    }
+    crate::ode::state_accessors!(N, #[doc = "A jet of order p counts as p evaluations."]);
 
     /// Computations of the Taylor coefficients so far (one per step).
     pub fn jets(&self) -> u64 {
