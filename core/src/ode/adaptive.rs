@@ -7,6 +7,7 @@ use super::config::AdaptiveConfig;
 use super::controller::PiController;
 use super::error::{OdeError, check_finite, check_span, check_stop};
 use super::pairs::{DenseCoeffs, EmbeddedPair, Stages};
+use super::stepper::state_accessors;
 use super::system::{Stats, System, all_finite, non_finite};
 
 /// An adaptive integrator using the embedded pair `P` on a system `S` of dimension `N`.
@@ -122,24 +123,11 @@ impl<S: System<N>, P: EmbeddedPair, const N: usize> Adaptive<S, P, N> {
         (100.0 * h).min(h1).min(self.cfg.h_max)
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64; N] {
-        &self.y
-    }
+    state_accessors!(N);
 
     /// Step size the controller will try next.
     pub fn h(&self) -> f64 {
         self.h
-    }
-
-    /// Work done so far.
-    pub fn stats(&self) -> Stats {
-        self.stats
     }
 
     /// The system being integrated.

@@ -111,6 +111,35 @@ pub(crate) fn switch_by_restart<T: Stepper, Sy>(
     stepper.restart(t, state)
 }
 
+/// The [`Switchable`](super::Switchable) of a stepper whose fresh start and continued start
+/// are the same ([`FixedStepper`], [`Rk4`](super::Rk4), the Taylor integrator), written once:
+/// the system is the stepper's field `$field`, changed through `$system_mut` (`|stepper|`,
+/// which may also drop what the stepper computed from the old system), `$check`
+/// (`|stepper, state|`) refuses a bad state, and the switch is [`switch_by_restart`].
+/// Invoked as `restart_switchable!([generics] Type, field: System, system_mut, check)`.
+macro_rules! restart_switchable {
+    ([$($generics:tt)*] $ty:ty, $field:ident: $sys:ty, $system_mut:expr, $check:expr) => {
+        impl<$($generics)*> $crate::ode::Switchable for $ty {
+            type System = $sys;
+
+            fn system(&self) -> &$sys {
+                &self.$field
+            }
+
+            fn switch(
+                &mut self,
+                t: f64,
+                state: <Self as $crate::ode::Stepper>::State,
+                _fresh: bool,
+                change: &mut dyn FnMut(&mut $sys),
+            ) -> Result<(), $crate::ode::OdeError> {
+                $crate::ode::switch_by_restart(self, (t, state), $check, $system_mut, change)
+            }
+        }
+    };
+}
+pub(crate) use restart_switchable;
+
 /// One step of a fixed-step method on its own state, for [`FixedStepper`].
 ///
 /// The rigid-body splittings implement it (`FreeBodySplitting`, `PotentialSplitting` on
@@ -279,25 +308,10 @@ impl<M: FixedStepMethod> Stepper for FixedStepper<M> {
     }
 }
 
-impl<M: FixedStepMethod> super::Switchable for FixedStepper<M> {
-    type System = M;
-
-    fn system(&self) -> &M {
-        &self.method
-    }
-
-    /// As `ode::fixed::switch_by_restart`: the state checked by the method, then the method changed.
-    fn switch(
-        &mut self,
-        t: f64,
-        state: M::State,
-        _fresh: bool,
-        change: &mut dyn FnMut(&mut M),
-    ) -> Result<(), OdeError> {
-        let check = |s: &Self, y: &M::State| s.method.check_state(y);
-        switch_by_restart(self, (t, state), check, |s| &mut s.method, change)
-    }
-}
+// The state checked by the method, then the method changed.
+restart_switchable!([M: FixedStepMethod] FixedStepper<M>, method: M, |s| &mut s.method, |s, y| {
+    s.method.check_state(y)
+});
 
 /// Knuth's TwoSum: `(s, e)` with s = fl(a + b) and a + b = s + e exactly, whatever the
 /// magnitudes; the compensated updates keep `e` beside the state and add it back next step.

@@ -43,9 +43,9 @@ pub use error::OdeError;
 pub(crate) use error::{check_finite, check_inertia, check_span, check_stop};
 pub(crate) use events::StepRoots;
 pub use events::{Direction, Event, EventHit};
-pub(crate) use fixed::switch_by_restart;
 pub(crate) use fixed::two_sum;
 pub use fixed::{FixedStepMethod, FixedStepper};
+pub(crate) use fixed::{restart_switchable, switch_by_restart};
 pub(crate) use hybrid::delegate_stepper;
 pub use hybrid::{
     Action, Cause, HookAction, Hooks, Hybrid, HybridState, MAX_SWITCHES_AT_ONCE, Mode, Switchable,
@@ -60,6 +60,6 @@ pub use rk4::Rk4;
 pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;
 pub use stepper::Stepper;
-pub(crate) use stepper::inherent_stepper;
+pub(crate) use stepper::{inherent_stepper, state_accessors};
 pub use system::{FnSystem, Stats, System};
 pub use trajectory::{MAX_SAMPLES, Quantities, StateColumns, Trajectory};

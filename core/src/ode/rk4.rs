@@ -2,8 +2,8 @@
 
 use super::config::FixedStepConfig;
 use super::error::{OdeError, check_finite, check_span};
-use super::fixed::{StepGrid, check_inside, fixed_step_clock, switch_by_restart, two_sum};
-use super::stepper::Stepper;
+use super::fixed::{StepGrid, check_inside, fixed_step_clock, restart_switchable, two_sum};
+use super::stepper::{Stepper, state_accessors};
 use super::system::{Stats, System, all_finite, non_finite};
 
 /// Steps between two checks of RK4's state (the first bad step is then found by replaying
@@ -67,20 +67,7 @@ impl<S: System<N>, const N: usize> Rk4<S, N> {
         })
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64; N] {
-        &self.y
-    }
-
-    /// Work done so far.
-    pub fn stats(&self) -> Stats {
-        self.stats
-    }
+    state_accessors!(N);
 
     /// The increment h (k₁ + 2k₂ + 2k₃ + k₄)/6 of one step of size `h` from `(t, y)` (no
     /// checks; the caller guarantees h > 0); stage times are capped at `t_hi` so a step ending
@@ -281,22 +268,7 @@ impl<S: System<N>, const N: usize> Stepper for Rk4<S, N> {
     }
 }
 
-impl<S: System<N>, const N: usize> super::Switchable for Rk4<S, N> {
-    type System = S;
-
-    fn system(&self) -> &S {
-        &self.sys
-    }
-
-    /// As `ode::fixed::switch_by_restart`: the state checked to be finite, then the system changed.
-    fn switch(
-        &mut self,
-        t: f64,
-        state: [f64; N],
-        _fresh: bool,
-        change: &mut dyn FnMut(&mut S),
-    ) -> Result<(), OdeError> {
-        let check = |_: &Self, y: &[f64; N]| check_finite(y);
-        switch_by_restart(self, (t, state), check, |s| &mut s.sys, change)
-    }
-}
+// The state checked to be finite, then the system changed.
+restart_switchable!([S: System<N>, const N: usize] Rk4<S, N>, sys: S, |s| &mut s.sys, |_, y| {
+    check_finite(y)
+});

@@ -80,6 +80,31 @@ pub trait Stepper {
     }
 }
 
+/// The inherent accessors `t`, `y` and `stats` of a stepper over `[f64; N]` that keeps them
+/// in fields of those names (the pairs' [`Adaptive`], [`Rk4`](super::Rk4), the Taylor
+/// integrator), written once; the attributes given (a doc line) are added to `stats`.
+/// Invoked inside the stepper's inherent `impl` as `state_accessors!(N)`.
+macro_rules! state_accessors {
+    ($n:ident $(, $(#[$stats:meta])+)?) => {
+        /// Current time.
+        pub fn t(&self) -> f64 {
+            self.t
+        }
+
+        /// Current state.
+        pub fn y(&self) -> &[f64; $n] {
+            &self.y
+        }
+
+        /// Work done so far.
+        $($(#[$stats])+)?
+        pub fn stats(&self) -> $crate::ode::Stats {
+            self.stats
+        }
+    };
+}
+pub(crate) use state_accessors;
+
 /// The [`Stepper`] of an adaptive driver over `[f64; N]` whose inherent methods carry the
 /// trait's meaning (`t`, `y`, `stats`, `step`, `last_step_start`, `dense_at`,
 /// `reset_state`): the pairs' [`Adaptive`] and the Taylor integrator, written once.

@@ -171,19 +171,8 @@ pub fn check(
 /// `torque` is, without the time (the normal force, which the witnesses read, is then a
 /// function of the state alone).
 fn user_fn(ck: &mut Checker, value: &Expr) -> Option<syn::Path> {
-    match value {
-        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
-        _ => {
-            ck.cx.error_spanned_by(
-                value,
-                format!(
-                    "`{}` expects a path to a function `fn(&Self, &Matrix3<f64>, &Vector3<f64>) -> Vector3<f64>` (attitude, body ω → the couple on the body, description axes)",
-                    keys::TORQUE
-                ),
-            );
-            None
-        }
-    }
+    let function = "`fn(&Self, &Matrix3<f64>, &Vector3<f64>) -> Vector3<f64>` (attitude, body ω → the couple on the body, description axes)";
+    ck.function_path(value, &format!("`{}`", keys::TORQUE), function)
 }
 
 /// The message for `name(...)` written as an item of `#[contact]` itself.

@@ -293,22 +293,16 @@ const FEEDS_ENERGY: Option<&str> = Some("a negative one feeds energy in");
 
 /// The path of a user function.
 fn user_fn(ck: &mut Checker, value: &Expr, what: &str) -> Option<syn::Path> {
-    match value {
-        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
-        _ => {
-            let message = match what {
-                keys::WRENCH => format!(
-                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> AppliedWrench` (time, state → force and torque, in the frame its constructor names: `AppliedWrench::space`, `AppliedWrench::body` or `AppliedWrench::at_point_space`)"
-                ),
-                keys::FORCE => format!(
-                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the force on the centre of mass, space axes)"
-                ),
-                _ => format!(
-                    "`{what}` expects a path to a function `fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the torque about the centre of mass, description axes)"
-                ),
-            };
-            ck.cx.error_spanned_by(value, message);
-            None
+    let function = match what {
+        keys::WRENCH => {
+            "`fn(&Self, f64, &FreeState) -> AppliedWrench` (time, state → force and torque, in the frame its constructor names: `AppliedWrench::space`, `AppliedWrench::body` or `AppliedWrench::at_point_space`)"
         }
-    }
+        keys::FORCE => {
+            "`fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the force on the centre of mass, space axes)"
+        }
+        _ => {
+            "`fn(&Self, f64, &FreeState) -> Vector3<f64>` (time, state → the torque about the centre of mass, description axes)"
+        }
+    };
+    ck.function_path(value, &format!("`{what}`"), function)
 }

@@ -4,6 +4,7 @@
 //! in `parts.rs`; each attribute's own rules are in its `check.rs`.
 
 use precess_core::sym::Arena;
+use syn::Expr;
 
 use super::ast::Input;
 use super::ctxt::Ctxt;
@@ -45,6 +46,26 @@ impl<'a> Checker<'a> {
 }
 
 impl Checker<'_> {
+    /// The path of a user function (a plain path, not `<T as Trait>::f`), as the scenes'
+    /// `torque = f`, `force = f`, `wrench = f` and a rotor's motor take it; else an error on
+    /// `value`: `who` (the key, in backticks) expects a path to a function `function` (its
+    /// type in backticks, then what it maps to what). None after an error.
+    pub(crate) fn function_path(
+        &self,
+        value: &Expr,
+        who: &str,
+        function: &str,
+    ) -> Option<syn::Path> {
+        match value {
+            Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
+            _ => {
+                let message = format!("{who} expects a path to a function {function}");
+                self.cx.error_spanned_by(value, message);
+                None
+            }
+        }
+    }
+
     /// Refuses every field read by a value whose name is one of the scene's `coordinates`
     /// (`whose` names them in the message, `the top's angles (zxz)`); false after an error.
     ///

@@ -207,19 +207,8 @@ pub fn check(
 
 /// The motor function's path.
 fn motor(ck: &mut Checker, value: &Expr) -> Option<syn::Path> {
-    match value {
-        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
-        _ => {
-            ck.cx.error_spanned_by(
-                value,
-                format!(
-                    "the rotor's `{}` expects a path to a function `fn(&Self, f64, &[f64]) -> f64` (time and the whole state → the motor torque on the wheel about its axis, N m; the state's rotor slots are `Self::ROTOR_k`)",
-                    keys::TORQUE
-                ),
-            );
-            None
-        }
-    }
+    let function = "`fn(&Self, f64, &[f64]) -> f64` (time and the whole state → the motor torque on the wheel about its axis, N m; the state's rotor slots are `Self::ROTOR_k`)";
+    ck.function_path(value, &format!("the rotor's `{}`", keys::TORQUE), function)
 }
 
 /// `[x, y, z]`, not zero when written in literals.

@@ -239,13 +239,8 @@ fn literal_rule(ck: &Checker, key: &str, value: &Expr, v: &[ExprId]) -> bool {
 
 /// The path of the user torque function.
 fn user_fn(ck: &mut Checker, value: &Expr) -> Option<syn::Path> {
-    match value {
-        Expr::Path(p) if p.qself.is_none() => Some(p.path.clone()),
-        _ => {
-            ck.cx.error_spanned_by(value, format!("`{}` expects a path to a function `fn(&Self, f64, &Matrix3<f64>, &Vector3<f64>) -> Vector3<f64>` (time, attitude, body ω → body torque)", keys::TORQUE));
-            None
-        }
-    }
+    let function = "`fn(&Self, f64, &Matrix3<f64>, &Vector3<f64>) -> Vector3<f64>` (time, attitude, body ω → body torque)";
+    ck.function_path(value, &format!("`{}`", keys::TORQUE), function)
 }
 
 /// `zxz` or `zyx`.

@@ -3,32 +3,16 @@
 
 use super::{Taylor, TaylorConfig};
 use crate::ode::drivers::{check_sampling, check_sorted, sample, through_stops};
-use crate::ode::switch_by_restart;
-use crate::ode::{OdeError, Solution, Stats, check_span, inherent_stepper};
+use crate::ode::{OdeError, Solution, Stats, check_span, inherent_stepper, restart_switchable};
 use crate::taylor::TaylorSystem;
 
 inherent_stepper!([S: TaylorSystem<N>, const N: usize] Taylor<S, N>, N);
 
-/// The Taylor integrator chooses every step from its jet, so a fresh start and a continued
-/// one are the same.
-impl<S: TaylorSystem<N>, const N: usize> crate::ode::Switchable for Taylor<S, N> {
-    type System = S;
-
-    fn system(&self) -> &S {
-        Taylor::system(self)
-    }
-
-    fn switch(
-        &mut self,
-        t: f64,
-        state: [f64; N],
-        _fresh: bool,
-        change: &mut dyn FnMut(&mut S),
-    ) -> Result<(), OdeError> {
-        let check = |_: &Self, y: &[f64; N]| crate::ode::check_finite(y);
-        switch_by_restart(self, (t, state), check, |s| s.system_mut(), change)
-    }
-}
+// The Taylor integrator chooses every step from its jet, so a fresh start and a continued
+// one are the same; `system_mut` drops the jet computed ahead with the old system.
+restart_switchable!([S: TaylorSystem<N>, const N: usize] Taylor<S, N>, sys: S, |s| s.system_mut(), |_, y| {
+    crate::ode::check_finite(y)
+});
 
 /// Integrates from `(t0, y0)` to `t_end` with the Taylor integrator, stopping exactly at
 /// each time in `stops` (ascending; those past `t_end` are ignored), as

@@ -215,20 +215,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         })
     }
 
-    /// Current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// Current state.
-    pub fn y(&self) -> &[f64; N] {
-        &self.y
-    }
-
-    /// Work done so far (a jet of order p counts as p evaluations).
-    pub fn stats(&self) -> Stats {
-        self.stats
-    }
+    crate::ode::state_accessors!(N, #[doc = "A jet of order p counts as p evaluations."]);
 
     /// Computations of the Taylor coefficients so far (one per step).
     pub fn jets(&self) -> u64 {
@@ -265,14 +252,14 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         (self.last.t, self.last.t_lo, self.last.h, &self.last.y, rows)
     }
 
-    /// [`TaylorSystem::check_parameters`] of the integrator's system, for a restart.
     /// The system, to be changed between steps by a hybrid run (which restarts the
-    /// integrator at once).
+    /// integrator at once); the jet computed ahead with the old system is dropped.
     pub(crate) fn system_mut(&mut self) -> &mut S {
         self.ahead_order = 0;
         &mut self.sys
     }
 
+    /// [`TaylorSystem::check_parameters`] of the integrator's system, for a restart.
     pub(crate) fn check_system(&self) -> Result<(), OdeError> {
         self.sys.check_parameters()
     }
