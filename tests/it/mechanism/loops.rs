@@ -13,7 +13,7 @@ use precess::mechanism::loops::{LoopDynamics, LoopHalt};
 use precess::models::FourBar;
 use precess::ode::{AdaptiveConfig, Stepper};
 use precess::prelude::*;
-use precess_testkit::linkages::{freudenstein, wrap};
+use precess_testkit::linkages::freudenstein;
 
 const G: f64 = 9.81;
 
