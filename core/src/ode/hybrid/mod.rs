@@ -7,7 +7,8 @@
 //! - **witnesses**: continuous functions w(t, x) of the state, positive while the mode holds,
 //!   whose fall through zero is an event (a normal force reaching zero, the friction rolling
 //!   needs leaving the cone, a slip stopping, a disk lying down). They are scanned on the
-//!   wrapped stepper's own solution inside each step with the scan of every run's events
+//!   wrapped stepper's own solution inside each step, projected as the scene projects its
+//!   states (the state it acts on at a root), with the scan of every run's events
 //!   (every root inside the step, not only a change of sign between its ends), and the first
 //!   root is located to adjacent doubles; the step is cut there;
 //! - **guards** ([`Hooks::after_step`]): what can jump (a normal force when the slip
