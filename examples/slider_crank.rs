@@ -24,6 +24,7 @@ use precess::mechanism::loops::LoopDynamics;
 use precess::models::SliderCrank;
 use precess::models::slider_crank::{CRANK as R, GRAVITY as G, MASSES, ROD as L};
 use precess::ode::{AdaptiveConfig, Stepper};
+use precess_testkit::linkages::slider_crank_pin_force;
 
 const T_END: f64 = 60.0;
 const SAMPLES: u32 = 6000;
@@ -37,28 +38,6 @@ fn slider(theta: f64) -> f64 {
 fn slider_slope(theta: f64) -> f64 {
     let s = theta.sin();
     -R * s - R * R * s * theta.cos() / (L * L - R * R * s * s).sqrt()
-}
-
-/// Newton–Euler's pin force (λ_x, λ_y) on the rod at (q, q̇, q̈): λ_x from the slider,
-/// λ_y from the moments about the origin of the crank and the rod.
-fn newton_euler(q: &[f64; 3], qd: &[f64; 3], qdd: &[f64; 3]) -> (f64, f64) {
-    let [m1, m2, m3] = MASSES;
-    let (t1, w1, a1) = (q[0], qd[0], qdd[0]);
-    let (psi, wp, ap) = (q[0] + q[1], qd[0] + qd[1], qdd[0] + qdd[1]);
-    let r_g = [
-        R * t1.cos() + L / 2.0 * psi.cos(),
-        R * t1.sin() + L / 2.0 * psi.sin(),
-    ];
-    let acc_g = [
-        R * (-a1 * t1.sin() - w1 * w1 * t1.cos())
-            + L / 2.0 * (-ap * psi.sin() - wp * wp * psi.cos()),
-        R * (a1 * t1.cos() - w1 * w1 * t1.sin()) + L / 2.0 * (ap * psi.cos() - wp * wp * psi.sin()),
-    ];
-    let dl = m1 * R * R / 3.0 * a1
-        + m2 * (r_g[0] * acc_g[1] - r_g[1] * acc_g[0])
-        + m2 * L * L / 12.0 * ap;
-    let weights = -m1 * G * R / 2.0 * t1.cos() - m2 * G * r_g[0];
-    (-m3 * qdd[2], (dl - weights) / q[2])
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
@@ -81,7 +60,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         worst_phi = worst_phi.max(crank.residual(&q));
         let qdd = crank.accelerations(t, &q, &qd)?;
         let lambda = crank.multipliers(t, &q, &qd)?;
-        let (fx, fy) = newton_euler(&q, &qd, &qdd);
+        let (fx, fy) = slider_crank_pin_force([R, L], MASSES, G, (&q, &qd, &qdd));
         worst_force = worst_force.max((lambda[0] - fx).abs().max((lambda[1] - fy).abs()));
         if k % 10 == 0 {
             path.push((q[0].rem_euclid(TAU), q[2]));
@@ -92,7 +71,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (q, qd) = ([y[0], y[1], y[2]], [y[3], y[4], y[5]]);
     let qdd = crank.accelerations(T_END, &q, &qd)?;
     let lambda = crank.multipliers(T_END, &q, &qd)?;
-    let (fx, fy) = newton_euler(&q, &qd, &qdd);
+    let (fx, fy) = slider_crank_pin_force([R, L], MASSES, G, (&q, &qd, &qdd));
     let turns = (q[0] - q0[0]) / TAU;
     let mut table = Table::default();
     table.row("slider x at the end [m]", q[2], slider(q[0]));

@@ -27,3 +27,31 @@ pub fn wrap(x: f64, y: f64) -> f64 {
     let d = (x - y).rem_euclid(TAU);
     if d > PI { d - TAU } else { d }
 }
+
+/// Newton–Euler's pin force (λ_x, λ_y) at the cut of a slider-crank (crank `r` from the
+/// origin, rod `l` to the slider on the x axis; uniform rods of masses m₁, m₂, a slider of
+/// m₃; gravity g along −y) at (q, q̇, q̈) = ((θ, ψ − θ, x), …): λ_x from the slider's
+/// equation, λ_y from the moments of the crank and the rod about the origin.
+pub fn slider_crank_pin_force(
+    [r, l]: [f64; 2],
+    [m1, m2, m3]: [f64; 3],
+    g: f64,
+    (q, qd, qdd): (&[f64; 3], &[f64; 3], &[f64; 3]),
+) -> (f64, f64) {
+    let (t1, w1, a1) = (q[0], qd[0], qdd[0]);
+    let (psi, wp, ap) = (q[0] + q[1], qd[0] + qd[1], qdd[0] + qdd[1]);
+    let r_g = [
+        r * t1.cos() + l / 2.0 * psi.cos(),
+        r * t1.sin() + l / 2.0 * psi.sin(),
+    ];
+    let acc_g = [
+        r * (-a1 * t1.sin() - w1 * w1 * t1.cos())
+            + l / 2.0 * (-ap * psi.sin() - wp * wp * psi.cos()),
+        r * (a1 * t1.cos() - w1 * w1 * t1.sin()) + l / 2.0 * (ap * psi.cos() - wp * wp * psi.sin()),
+    ];
+    let dl = m1 * r * r / 3.0 * a1
+        + m2 * (r_g[0] * acc_g[1] - r_g[1] * acc_g[0])
+        + m2 * l * l / 12.0 * ap;
+    let weights = -m1 * g * r / 2.0 * t1.cos() - m2 * g * r_g[0];
+    (-m3 * qdd[2], (dl - weights) / q[2])
+}
