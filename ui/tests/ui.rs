@@ -27,6 +27,14 @@ struct Facade {
     deps: PathBuf,
 }
 
+impl Facade {
+    /// The facade whose metadata is `rmeta`, in `deps/` beside what it depends on.
+    fn at(rmeta: PathBuf) -> Self {
+        let deps = rmeta.parent().expect("in a folder").to_path_buf();
+        Facade { rmeta, deps }
+    }
+}
+
 /// Asks cargo to build the facade (its dependencies are the tests' own, already built) and
 /// reads the artifact's path from its JSON messages; or takes that path from
 /// `PRECESS_UI_FACADE` when it is set (`.ci/run` sets it: there, cargo's build lock is held by
@@ -40,8 +48,7 @@ fn facade(workspace: &Path) -> Facade {
             "PRECESS_UI_FACADE names no file: {}",
             rmeta.display()
         );
-        let deps = rmeta.parent().expect("in a folder").to_path_buf();
-        return Facade { rmeta, deps };
+        return Facade::at(rmeta);
     }
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let out = Command::new(cargo)
@@ -71,8 +78,7 @@ fn facade(workspace: &Path) -> Facade {
                 .map(PathBuf::from)
         })
         .expect("cargo names the facade's artifact");
-    let deps = rmeta.parent().expect("in a folder").to_path_buf();
-    Facade { rmeta, deps }
+    Facade::at(rmeta)
 }
 
 /// The compiler's output as trybuild compares it: its closing summary lines dropped, every
