@@ -10,19 +10,11 @@ use nalgebra::{UnitQuaternion, Vector3};
 use precess::contact::{ContactDynamics, ContactOutcome, ContactRun, Phase};
 use precess::ode::AdaptiveConfig;
 
-use super::reference::{NumBody, NumLaw, NumSurface, NumTorques, try_model_with};
+use super::reference::{NumBody, NumLaw, NumTorques, disk, try_model_with};
 
-/// A coin: a thin disk of radius 12 mm and 5.7 g, I = M ρ²/4 (1, 1, 2).
+/// A coin: a thin disk of radius 12 mm and 5.7 g.
 fn coin() -> NumBody {
-    let (m, rho) = (0.0057, 0.012);
-    let i = m * rho * rho / 4.0;
-    NumBody {
-        mass: m,
-        center: [0.0; 3],
-        inertia: [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, 2.0 * i]],
-        surface: NumSurface::DiskRim { c: [0.0; 3], rho },
-        gravity: 9.81,
-    }
+    disk(0.0057, 0.012)
 }
 
 /// Standing on its edge (its axis, body z, horizontal along space y), spinning at `w0`

@@ -102,9 +102,13 @@ pub fn offset_sphere() -> NumBody {
     }
 }
 
-/// A thin uniform disk of radius ρ = 0.1 m, M = 1 kg: I = M ρ²/4 (1, 1, 2).
+/// A thin uniform disk of radius ρ = 0.1 m, M = 1 kg.
 pub fn thin_disk() -> NumBody {
-    let (m, rho) = (1.0, 0.1);
+    disk(1.0, 0.1)
+}
+
+/// A thin uniform disk of mass `m` and radius `rho` on its rim: I = M ρ²/4 (1, 1, 2).
+pub fn disk(m: f64, rho: f64) -> NumBody {
     let i = m * rho * rho / 4.0;
     NumBody {
         mass: m,
