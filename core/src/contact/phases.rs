@@ -11,7 +11,10 @@
 //! | `spin` \|ω·γ\| − δ_ω | pivoting friction | the body spins | the friction holds the spin (halt) or the spin passes zero (`pivot.rs`) |
 //!
 //! δ is 10⁻⁹ of the velocity scale V = |v| + |ω||r| + √(g|r|), the rolling states' own
-//! tolerance. Every witness is continuous along a phase's motion (D > 0 keeps N continuous
+//! tolerance, or what the run's stepper resolves (atol + rtol V) where that is larger: a slip
+//! below the stepper's accuracy cannot be told from zero, and under Coulomb friction it
+//! chatters there, the friction reversing from step to step, until it falls below δ by
+//! chance (δ_ω likewise, at the scale V/|r|). Every witness is continuous along a phase's motion (D > 0 keeps N continuous
 //! under Coulomb sliding), so each root is located on the stepper's solution; what can jump
 //! — N when a slip restarts in a new direction — jumps only at a switch, where the new phase
 //! is checked before it is entered: a restart that would need N < 0 (or D ≤ 0) halts and
@@ -184,9 +187,11 @@ pub(crate) fn velocity_scale<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x
     v.norm() + omega.norm() * r + (w.gravity * r).sqrt()
 }
 
-/// The slip speed taken as zero at `x`.
+/// The slip speed taken as zero at `x`: 10⁻⁹ of the velocity scale V, or what the stepper
+/// resolves at V (atol + rtol V) where that is larger.
 pub(crate) fn stick_speed<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
-    STICK_FRACTION * velocity_scale(body, w, x)
+    let scale = velocity_scale(body, w, x);
+    (STICK_FRACTION * scale).max(w.resolved(scale))
 }
 
 fn omega(x: &State) -> Vector3<f64> {

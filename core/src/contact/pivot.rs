@@ -29,10 +29,12 @@ use crate::ode::Action;
 
 type State = [f64; STATE_LEN];
 
-/// The spin taken as zero at `x`: 10⁻⁹ of V/|r|, V the velocity scale.
+/// The spin taken as zero at `x`: 10⁻⁹ of V/|r|, V the velocity scale, or what the stepper
+/// resolves at that scale where that is larger.
 pub(crate) fn spin_threshold<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
     let r = body.contact(x).body.norm().max(f64::MIN_POSITIVE);
-    STICK_FRACTION * velocity_scale(body, w, x) / r
+    let scale = velocity_scale(body, w, x) / r;
+    (STICK_FRACTION * scale).max(w.resolved(scale))
 }
 
 /// The spin about the vertical, ω·γ.

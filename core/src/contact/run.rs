@@ -15,9 +15,10 @@ use crate::ode::{
     Adaptive, AdaptiveConfig, Cause, Dop853Pair, EmbeddedPair, Hybrid, HybridState, Stats, Stepper,
 };
 
-/// The slip seeded when rolling gives way to sliding is twice the slip speed taken as zero,
-/// 10⁻⁹ of the velocity scale ([`STICK_FRACTION`](super::STICK_FRACTION)); this is kept as the order of magnitude
-/// for a body moving at about 1 m/s.
+/// The slip seeded when rolling gives way to sliding is twice the slip speed taken as zero:
+/// 10⁻⁹ of the velocity scale ([`STICK_FRACTION`](super::STICK_FRACTION)), or what the run's
+/// tolerances resolve where that is larger; this is kept as the order of magnitude for a body
+/// moving at about 1 m/s at tight tolerances.
 pub const SEED_SLIP: f64 = 2e-9;
 
 /// A body on a table integrated by the pair `P` (DOP853 by default).
@@ -93,7 +94,7 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         cfg: AdaptiveConfig,
     ) -> Result<Self, ContactError> {
         body.check_state(phase, &y0)?;
-        let sys = ContactSystem::new(body, phase)?;
+        let sys = ContactSystem::new(body, phase)?.resolving(cfg.atol, cfg.rtol);
         check_start(&sys, t0, &y0)?;
         let ode = Adaptive::new(sys, t0, y0, cfg)?;
         Ok(ContactRun {
