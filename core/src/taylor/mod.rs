@@ -22,6 +22,7 @@ mod interpreted;
 pub mod kernels;
 mod recurrence;
 mod recurrence_dd;
+mod scalars;
 mod tape;
 
 pub use emit::TaylorTokens;
