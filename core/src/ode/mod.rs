@@ -61,5 +61,6 @@ pub use run::{Control, Outcome, Progress, Run, StopReason};
 pub use sampling::MIN_SAMPLE_SPACINGS;
 pub use stepper::Stepper;
 pub(crate) use stepper::{inherent_stepper, state_accessors};
+pub(crate) use system::forward_to_referent;
 pub use system::{FnSystem, Stats, System};
 pub use trajectory::{MAX_SAMPLES, Quantities, StateColumns, Trajectory};

@@ -93,17 +93,27 @@ where
     }
 }
 
+/// The methods of a trait's impl for `&S` that call the same method of `S` (the `System` and
+/// `TaylorSystem` impls for references): each signature written once, the forwarding call
+/// made from it, so a reference runs exactly as the system it points to. A method left out
+/// would silently take the trait's default instead; list every one the trait has. Invoked
+/// inside the impl as `forward_to_referent! { fn name(&self, arg: Type, …) -> Output; … }`.
+macro_rules! forward_to_referent {
+    ($(fn $name:ident(&self $(, $arg:ident: $ty:ty)* $(,)?) $(-> $out:ty)?;)*) => {
+        $(
+            fn $name(&self $(, $arg: $ty)*) $(-> $out)? {
+                (**self).$name($($arg),*)
+            }
+        )*
+    };
+}
+pub(crate) use forward_to_referent;
+
 impl<S: System<N> + ?Sized, const N: usize> System<N> for &S {
-    fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]) {
-        (**self).rhs(t, y, dydt)
-    }
-
-    fn check_parameters(&self) -> Result<(), OdeError> {
-        (**self).check_parameters()
-    }
-
-    fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError> {
-        (**self).explain_non_finite(t, y)
+    forward_to_referent! {
+        fn rhs(&self, t: f64, y: &[f64; N], dydt: &mut [f64; N]);
+        fn check_parameters(&self) -> Result<(), OdeError>;
+        fn explain_non_finite(&self, t: f64, y: &[f64; N]) -> Option<OdeError>;
     }
 }
 

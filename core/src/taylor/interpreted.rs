@@ -4,9 +4,10 @@ use thiserror::Error;
 
 use super::recurrence;
 use super::recurrence_dd::{self, DdTable};
-use super::tape::{ScalarOp, Tape, Value};
+use super::scalars::bind_scalars;
+use super::tape::{Tape, Value};
 use super::{MAX_TAYLOR_ORDER, TaylorSystem};
-use crate::codegen::{BindingError, Bindings, Program, check_distinct};
+use crate::codegen::{BindingError, Program};
 use crate::exact::Dd;
 use crate::sym::{Arena, ExprId, SymbolId};
 
@@ -285,116 +286,4 @@ pub(super) fn bound_tape(
     symbols.extend(time);
     let (scalars, scalars_dd) = bind_scalars(arena, &program, &tape, &symbols, values)?;
     Ok((tape, scalars, scalars_dd))
-}
-
-/// The values of `tape`'s scalars (lowered from `program`, whose inputs are `symbols` and
-/// parameters), in f64 and in double-double, with the parameters bound by name from
-/// `values`.
-///
-/// # Errors
-/// The binding errors, then [`TaylorError::NonFiniteConstant`], as [`TaylorTape::new`].
-fn bind_scalars(
-    arena: &Arena,
-    program: &Program,
-    tape: &Tape,
-    symbols: &[SymbolId],
-    values: &[(&str, f64)],
-) -> Result<(Vec<f64>, Vec<Dd>), TaylorError> {
-    // A parameter of the arena that the program does not read is bound by code that
-    // binds a whole scene: judged for finiteness, then left out of what Bindings sees.
-    let inputs = program.inputs();
-    let read = |name: &str| inputs.iter().any(|&s| arena.symbol(s).name == name);
-    // A name given twice is refused before any is judged, read or not.
-    check_distinct(values)?;
-    let mut used = Vec::with_capacity(values.len());
-    for &(name, value) in values {
-        if read(name) || arena.find_parameter(name).is_none() {
-            used.push((name, value));
-        } else if !value.is_finite() {
-            return Err(BindingError::NonFinite {
-                name: name.to_owned(),
-                value,
-            }
-            .into());
-        }
-    }
-    // Bindings judges the names and values; the values are then read here by name.
-    Bindings::new(arena, std::slice::from_ref(program), symbols, &used)?;
-    let value_of = |s| {
-        let name = &arena.symbol(s).name;
-        values
-            .iter()
-            .rev()
-            .find(|(n, _)| n == name)
-            .map_or(f64::NAN, |&(_, v)| v)
-    };
-    let mut scalars: Vec<f64> = Vec::with_capacity(tape.scalars.len());
-    for op in &tape.scalars {
-        let x = |i: u32| scalars[i as usize];
-        let v = match *op {
-            ScalarOp::Const(c) => c,
-            ScalarOp::Symbol(s) => value_of(s),
-            ScalarOp::Add(a, b) => x(a) + x(b),
-            ScalarOp::Sub(a, b) => x(a) - x(b),
-            ScalarOp::Mul(a, b) => x(a) * x(b),
-            ScalarOp::Div(a, b) => x(a) / x(b),
-            ScalarOp::Neg(a) => -x(a),
-            ScalarOp::Sqrt(a) => x(a).sqrt(),
-            ScalarOp::Powf(a, r) => x(a).powf(r),
-            ScalarOp::Sin(a) => x(a).sin(),
-            ScalarOp::Cos(a) => x(a).cos(),
-            ScalarOp::Func(f, a) => f.value(x(a)),
-        };
-        if !v.is_finite() {
-            return Err(TaylorError::NonFiniteConstant {
-                operation: operation_name(op),
-                value: v,
-            });
-        }
-        scalars.push(v);
-    }
-    let scalars_dd = scalars_in_dd(tape, &value_of);
-    Ok((scalars, scalars_dd))
-}
-
-/// How [`TaylorError::NonFiniteConstant`] names a scalar operation.
-fn operation_name(op: &ScalarOp) -> &'static str {
-    match op {
-        ScalarOp::Const(_) => "a number",
-        ScalarOp::Symbol(_) => "a parameter",
-        ScalarOp::Add(..) => "a sum",
-        ScalarOp::Sub(..) => "a difference",
-        ScalarOp::Mul(..) => "a product",
-        ScalarOp::Div(..) => "a quotient",
-        ScalarOp::Neg(_) => "a negation",
-        ScalarOp::Sqrt(_) => "a square root",
-        ScalarOp::Powf(..) => "a real power",
-        ScalarOp::Sin(_) => "a sine",
-        ScalarOp::Cos(_) => "a cosine",
-        ScalarOp::Func(f, _) => f.name(),
-    }
-}
-
-/// The tape's scalars in double-double; `value_of` gives a symbol's bound value.
-fn scalars_in_dd(tape: &Tape, value_of: &dyn Fn(crate::sym::SymbolId) -> f64) -> Vec<Dd> {
-    let mut out: Vec<Dd> = Vec::with_capacity(tape.scalars.len());
-    for op in &tape.scalars {
-        let x = |i: u32| out[i as usize];
-        let v = match *op {
-            ScalarOp::Const(c) => Dd::from(c),
-            ScalarOp::Symbol(s) => Dd::from(value_of(s)),
-            ScalarOp::Add(a, b) => x(a) + x(b),
-            ScalarOp::Sub(a, b) => x(a) - x(b),
-            ScalarOp::Mul(a, b) => x(a) * x(b),
-            ScalarOp::Div(a, b) => x(a) / x(b),
-            ScalarOp::Neg(a) => -x(a),
-            ScalarOp::Sqrt(a) => x(a).sqrt(),
-            ScalarOp::Sin(a) => x(a).sin_cos().0,
-            ScalarOp::Cos(a) => x(a).sin_cos().1,
-            ScalarOp::Powf(a, r) => x(a).powf(r),
-            ScalarOp::Func(f, a) => f.value_dd(x(a)),
-        };
-        out.push(v);
-    }
-    out
 }

@@ -22,6 +22,7 @@ mod interpreted;
 pub mod kernels;
 mod recurrence;
 mod recurrence_dd;
+mod scalars;
 mod tape;
 
 pub use emit::TaylorTokens;
@@ -176,35 +177,13 @@ pub trait TaylorSystem<const N: usize> {
 impl<S: TaylorSystem<N> + ?Sized, const N: usize> TaylorSystem<N> for &S {
     type Workspace = S::Workspace;
 
-    fn check_parameters(&self) -> Result<(), crate::ode::OdeError> {
-        (**self).check_parameters()
-    }
-
-    fn max_order(&self) -> usize {
-        (**self).max_order()
-    }
-
-    fn coefficients_into(
-        &self,
-        ws: &mut Self::Workspace,
-        t: f64,
-        y: &[f64; N],
-        order: usize,
-        coeffs: &mut [[f64; N]],
-    ) {
-        (**self).coefficients_into(ws, t, y, order, coeffs)
-    }
-
-    fn coefficients_extended_into(
-        &self,
-        ws: &mut Self::Workspace,
-        t: Dd,
-        y: &[Dd; N],
-        order: usize,
-        coeffs: &mut [[f64; N]],
-        low: &mut [[Dd; N]],
-    ) -> bool {
-        (**self).coefficients_extended_into(ws, t, y, order, coeffs, low)
+    crate::ode::forward_to_referent! {
+        fn check_parameters(&self) -> Result<(), crate::ode::OdeError>;
+        fn max_order(&self) -> usize;
+        fn coefficients_into(&self, ws: &mut Self::Workspace, t: f64, y: &[f64; N], order: usize,
+            coeffs: &mut [[f64; N]]);
+        fn coefficients_extended_into(&self, ws: &mut Self::Workspace, t: Dd, y: &[Dd; N],
+            order: usize, coeffs: &mut [[f64; N]], low: &mut [[Dd; N]]) -> bool;
     }
 }
 
