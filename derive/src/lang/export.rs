@@ -9,7 +9,7 @@
 //!
 //! `#[derive(RigidBody)]` runs the expansion of a scene (top, free, contact) before the
 //! body's own, and only the latter's tokens are certain to be emitted last: a scene
-//! registers its export here ([`top`], [`free`], [`contact`]), keyed by the expansion's
+//! registers its export here ([`top`], [`driven_top`], [`free`], [`contact`]), keyed by the expansion's
 //! arena, and [`body`] emits it, or the body's torque-free Euler equations when no scene
 //! registered one, so a struct gets one `impl Export` whatever its attributes. A
 //! `#[derive(Mechanism)]` emits its own ([`mechanism`]).
@@ -84,7 +84,7 @@ type Function<'a> = (
 );
 
 /// The scene `ident` over `state` with `functions`, the Jacobian of the function
-/// `jacobian_of` (an index) added as `jacobian`.
+/// `jacobian_of` (an index) added as `jacobian`; the state's entries named as their symbols.
 fn build(
     ident: &Ident,
     arena: &mut Arena,
@@ -92,7 +92,6 @@ fn build(
     functions: &[Function],
     jacobian_of: Option<usize>,
 ) -> Result<Exported, ExportError> {
-    let mut b = ExportBuilder::new(&snake_case(ident), arena, state)?;
     // The arena tells apart symbols made under one name (the rate `omega_1` of the body's
     // impl and of its export) by trailing primes; the export has only its own.
     let names: Vec<String> = state
@@ -100,18 +99,31 @@ fn build(
         .filter_map(|&e| arena.as_symbol(e))
         .map(|s| arena.symbol(s).name.trim_end_matches('\'').to_owned())
         .collect();
+    build_with(ident, arena, (state, &names, &[]), functions, jacobian_of)
+}
+
+/// [`build`] over `state` named `names`, its functions reading the `inputs` the caller
+/// supplies too.
+fn build_with(
+    ident: &Ident,
+    arena: &mut Arena,
+    (state, names, inputs): (&[ExprId], &[String], &[ExprId]),
+    functions: &[Function],
+    jacobian_of: Option<usize>,
+) -> Result<Exported, ExportError> {
+    let mut b = ExportBuilder::with_inputs(&snake_case(ident), arena, state, inputs)?;
     b.name_state(&names.iter().map(String::as_str).collect::<Vec<_>>())?;
     for (name, doc, lowered, kept, shape) in functions {
         b.function_of(arena, name, doc, lowered, kept.clone(), *shape)?;
     }
     if let Some((_, _, lowered, kept, _)) = jacobian_of.and_then(|i| functions.get(i)) {
         let of = &lowered[kept.clone()];
-        b.jacobian(
-            arena,
-            "jacobian",
-            "the Jacobian of the state derivative, d(dy/dt)/dy",
-            of,
-        )?;
+        let doc = if inputs.is_empty() {
+            "the Jacobian of the state derivative, d(dy/dt)/dy"
+        } else {
+            "the Jacobian of the state derivative, d(dy/dt)/dy, the inputs u held"
+        };
+        b.jacobian(arena, "jacobian", doc, of)?;
     }
     Ok(b.finish())
 }
@@ -128,6 +140,21 @@ fn whole<'a>(name: &'a str, doc: &'a str, outputs: Vec<ExprId>) -> Function<'a> 
 pub fn top(ident: &Ident, arena: &mut Arena, state: &[ExprId], rhs: &[ExprId]) {
     let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
     let built = build(ident, arena, state, &f, Some(0));
+    register(arena, text(built));
+}
+
+/// A top with driven rotors: the declared chart's `[q, q̇, Ω]` (each wheel's rate named
+/// `rotor_k` as `TopDynamics::coordinate` names it), the motors' torques `u` the inputs,
+/// its derivative `(q̇, q̈, Ω̇)` lowered as `rhs_in` lowers it (q̈ and Ω̇ together; the rates
+/// q̇ are bare inputs) and its Jacobian in y at fixed u.
+pub fn driven_top(
+    ident: &Ident,
+    arena: &mut Arena,
+    (state, names, motors): (&[ExprId], &[String], &[ExprId]),
+    rhs: &[ExprId],
+) {
+    let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
+    let built = build_with(ident, arena, (state, names, motors), &f, Some(0));
     register(arena, text(built));
 }
 

@@ -103,13 +103,14 @@ pub(super) fn identifier(name: &str) -> String {
 }
 
 impl Exported {
-    /// Refuses two state entries, two parameters, a state entry and a parameter, or two
-    /// functions written alike.
+    /// Refuses two values (state entries, inputs, parameters) or two functions written
+    /// alike.
     pub(super) fn check_names(&self) -> Result<(), ExportError> {
         let mut seen: Vec<&str> = Vec::new();
         let values = self
             .state
             .iter()
+            .chain(&self.inputs)
             .chain(&self.parameters)
             .map(String::as_str);
         for name in values {
