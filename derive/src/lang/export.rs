@@ -20,6 +20,7 @@ use precess_core::codegen::{ExportBuilder, ExportError, Exported};
 use precess_core::contact::ContactDerivation;
 use precess_core::free::FreeDerivation;
 use precess_core::mechanism::MechanismDerivation;
+use precess_core::mechanism::rolling::RollingDerivation;
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
 use quote::{ToTokens, quote};
@@ -253,6 +254,83 @@ pub fn mechanism(
         np..np + n,
         (n, 1),
     )];
+    let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
+    quote!(#before #export)
+}
+
+/// A rolling mechanism's `impl Export`, after `before`: the pieces of Maggi's equations its
+/// methods compute from generated code, over `[q, q̇]` (every coordinate and its rate; the
+/// projection onto the free speeds is numerical, the caller's): M and f lowered together as
+/// `mass_forcing` lowers them, A and Ȧq̇ as `constraint_rows`, the wheels' heights and T + V.
+pub fn rolling(
+    ident: &Ident,
+    arena: &mut Arena,
+    d: &RollingDerivation,
+    before: impl ToTokens,
+) -> TokenStream {
+    let c = d.coordinates();
+    let (n, m) = (c.len(), d.rows());
+    let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
+    let eqs = &d.equations;
+    let dynamics: Vec<ExprId> = eqs
+        .mass
+        .iter()
+        .flatten()
+        .chain(&eqs.forcing)
+        .copied()
+        .collect();
+    let rows: Vec<ExprId> = d
+        .constraints
+        .coefficients
+        .iter()
+        .flatten()
+        .chain(&d.rate_terms)
+        .copied()
+        .collect();
+    let zero = arena.zero();
+    let heights: Vec<ExprId> = d
+        .constraints
+        .positions
+        .iter()
+        .map(|h| h.unwrap_or(zero))
+        .collect();
+    let energy = arena.add(d.kinetic, d.potential);
+    let f = [
+        (
+            "mass",
+            "the mass matrix M(q) of the unconstrained tree, M q'' = f + A^T lambda",
+            dynamics.clone(),
+            0..n * n,
+            (n, n),
+        ),
+        (
+            "forcing",
+            "the forcing f(t, q, q') of the unconstrained tree",
+            dynamics,
+            n * n..n * n + n,
+            (n, 1),
+        ),
+        (
+            "constraints",
+            "the wheels' constraint rows A(q), A q' = 0",
+            rows.clone(),
+            0..m * n,
+            (m, n),
+        ),
+        (
+            "rate_terms",
+            "the rate terms (dA/dt) q', A q'' + (dA/dt) q' = 0",
+            rows,
+            m * n..m * n + m,
+            (m, 1),
+        ),
+        whole(
+            "heights",
+            "each row's position function: a wheel's height, 0 for a no-slip row",
+            heights,
+        ),
+        whole("energy", "the energy T + V", vec![energy]),
+    ];
     let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
     quote!(#before #export)
 }

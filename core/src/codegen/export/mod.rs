@@ -201,7 +201,8 @@ pub enum ExportError {
 
 /// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, with or
 /// without motors, a free body, a body on a table, or the body's own torque-free Euler
-/// equations) and every tree `#[derive(Mechanism)]` implements it.
+/// equations) and every `#[derive(Mechanism)]` without a closed loop (a tree's state
+/// derivative, a rolling mechanism's pieces of Maggi's equations) implements it.
 ///
 /// The macro writes the scene's [`Exported`] as text ([`Export::EXPORTED`]) while it
 /// expands, from the same programs its Rust methods are emitted from; the methods read it
