@@ -12,7 +12,8 @@
 //! registers its export here ([`top`], [`driven_top`], [`free`], [`contact`]), keyed by the expansion's
 //! arena, and [`body`] emits it, or the body's torque-free Euler equations when no scene
 //! registered one, so a struct gets one `impl Export` whatever its attributes. A
-//! `#[derive(Mechanism)]` emits its own ([`mechanism`]).
+//! `#[derive(Mechanism)]` emits its own ([`mechanism`], [`rolling`]), and so does
+//! `taylor_system!` ([`system`]).
 
 use std::cell::RefCell;
 
@@ -332,6 +333,20 @@ pub fn rolling(
         whole("energy", "the energy T + V", vec![energy]),
     ];
     let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
+    quote!(#before #export)
+}
+
+/// A `taylor_system!`'s `impl Export`, after `before`: its state, its right-hand side (lowered
+/// whole, as `System::rhs` lowers it) and the Jacobian of it.
+pub fn system(
+    ident: &Ident,
+    arena: &mut Arena,
+    state: &[ExprId],
+    rhs: &[ExprId],
+    before: impl ToTokens,
+) -> TokenStream {
+    let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
+    let export = tokens(ident, text(build(ident, arena, state, &f, Some(0))));
     quote!(#before #export)
 }
 

@@ -6,18 +6,21 @@
 
 use super::support::{Case, run_c, run_python, worst};
 use crate::common::rng::Rng;
-use nalgebra::{DMatrix, DVector};
 use precess::codegen::{Export, ExportError, Exported};
 use precess::contact::{ContactDynamics, Phase};
 use precess::free::FreeDynamics;
 use precess::mechanism::MechanismDynamics;
-use precess::mechanism::rolling::RollingDynamics;
 use precess::ode::System;
 use precess::prelude::*;
 use precess::top::TopDynamics;
 
 /// States and parameters drawn by `draw` (the export's order), `count` of them.
-fn cases(e: &Exported, count: usize, seed: u64, draw: impl Fn(&mut Rng, &mut Case)) -> Vec<Case> {
+pub(super) fn cases(
+    e: &Exported,
+    count: usize,
+    seed: u64,
+    draw: impl Fn(&mut Rng, &mut Case),
+) -> Vec<Case> {
     let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| {
@@ -41,7 +44,7 @@ fn cases(e: &Exported, count: usize, seed: u64, draw: impl Fn(&mut Rng, &mut Cas
 
 /// Compares each of `functions` (export name, the Rust outputs per case) in C and Python,
 /// printing the worst distance, and asserts it is at most `max_ulps`.
-fn compare(
+pub(super) fn compare(
     test: &str,
     e: &Exported,
     cases: &[Case],
@@ -198,145 +201,6 @@ fn a_body_on_a_table_exports_its_phase_reaction_energy_and_jellett_bit_for_bit()
     );
 }
 
-/// A gyroscope on a pivot: a wheel spun at a constant rate, and two wheels turned by motors
-/// whose torques are the fields `torque_a`, `torque_b` (read by the motors, not by the
-/// equations: the export takes them as its inputs u, so both sides see the same torques).
-#[derive(RigidBody)]
-#[rigid(body(mass = m, at = [0.01, 0.0, -h], inertia = diag(a, a, c), about = pivot), pivot = [0.0, 0.0, 0.0])]
-#[top(gravity = 9.81, angles = zyx, damping = drag,
-      rotor(axis = [0, 1, 0], inertia = 0.01, rate = spin),
-      rotor(axis = [0, 0, 1], inertia = j_spin, torque = Gimbal::spin_motor),
-      rotor(axis = [1, 0, 1], inertia = j_tilt, torque = Gimbal::tilt_motor))]
-struct Gimbal {
-    m: f64,
-    h: f64,
-    a: f64,
-    c: f64,
-    drag: f64,
-    spin: f64,
-    j_spin: f64,
-    j_tilt: f64,
-    torque_a: f64,
-    torque_b: f64,
-}
-
-impl Gimbal {
-    fn spin_motor(&self, _t: f64, _y: &[f64]) -> f64 {
-        self.torque_a
-    }
-
-    fn tilt_motor(&self, _t: f64, _y: &[f64]) -> f64 {
-        self.torque_b
-    }
-}
-
-#[test]
-fn a_top_with_motors_exports_its_state_derivative_with_the_motor_torques_as_inputs() {
-    let e = Gimbal::exported().expect("exported");
-    assert_eq!(
-        e.state(),
-        [
-            "yaw",
-            "pitch",
-            "roll",
-            "yaw_dot",
-            "pitch_dot",
-            "roll_dot",
-            "rotor_1",
-            "rotor_2"
-        ]
-    );
-    assert_eq!(e.inputs(), ["u_rotor_1", "u_rotor_2"]);
-    assert_eq!(Gimbal::input_names().expect("inputs"), e.inputs());
-    let mut fields = e.parameters().to_vec();
-    fields.sort();
-    // The motors' fields are the inputs' values, no parameters.
-    assert_eq!(
-        fields,
-        ["a", "c", "drag", "h", "j_spin", "j_tilt", "m", "spin"]
-    );
-    let header = e.c_header();
-    assert!(header.contains("#define GIMBAL_INPUT_LEN 2\n#define GIMBAL_U_U_ROTOR_1 0"));
-    assert!(header.contains(
-        "void gimbal_rhs(double t, const double *y, const double *u, const gimbal_params *p, double *out);"
-    ));
-    assert!(e.python().contains("def rhs(t, y, u, *, "));
-    // Wheels light enough that I − Σ J â âᵀ stays positive definite, the pitch away from
-    // the chart's gimbal lock at ±π/2 (where the finite differences below lose their digits).
-    let cases = cases(&e, 1000, 6, |rng, c| {
-        c.y[1] = rng.uniform(-1.2, 1.2);
-        for (name, lo, hi) in [
-            ("a", 0.5, 1.0),
-            ("c", 0.5, 1.0),
-            ("j_spin", 0.01, 0.2),
-            ("j_tilt", 0.01, 0.2),
-        ] {
-            let k = e
-                .parameters()
-                .iter()
-                .position(|p| p == name)
-                .expect("a parameter");
-            c.p[k] = rng.uniform(lo, hi);
-        }
-    });
-    let top = |c: &Case| {
-        let v = |n: &str| c.param(&e, n);
-        Gimbal {
-            m: v("m"),
-            h: v("h"),
-            a: v("a"),
-            c: v("c"),
-            drag: v("drag"),
-            spin: v("spin"),
-            j_spin: v("j_spin"),
-            j_tilt: v("j_tilt"),
-            torque_a: c.u[0],
-            torque_b: c.u[1],
-        }
-    };
-    let rhs_in = |c: &Case, y: &[f64; 8]| {
-        let mut d = [0.0; 8];
-        TopDynamics::<8>::rhs_in(&top(c), AngleSequence::Zyx, c.t, y, &mut d);
-        d
-    };
-    let mut rhs: Vec<Vec<f64>> = Vec::new();
-    let mut jac = Vec::new();
-    for c in &cases {
-        let y: [f64; 8] = c.y.clone().try_into().expect("8 states");
-        let want = rhs_in(c, &y);
-        let got = e
-            .eval_with_inputs("rhs", c.t, &c.y, &c.u, &c.p)
-            .expect("eval");
-        assert_eq!(
-            got.iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
-            want.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
-        );
-        rhs.push(want.to_vec());
-        // The Jacobian at fixed u against central differences of the Rust rhs_in.
-        let j = e
-            .eval_with_inputs("jacobian", c.t, &c.y, &c.u, &c.p)
-            .expect("eval");
-        for k in 0..8 {
-            let step = 1e-6 * (1.0 + y[k].abs());
-            let (mut up, mut down) = (y, y);
-            up[k] += step;
-            down[k] -= step;
-            let (fu, fd) = (rhs_in(c, &up), rhs_in(c, &down));
-            for i in 0..8 {
-                let fd_ik = (fu[i] - fd[i]) / (2.0 * step);
-                let scale = 1.0 + j[i * 8 + k].abs() + want[i].abs();
-                assert!(
-                    (j[i * 8 + k] - fd_ik).abs() <= 1e-6 * scale,
-                    "d rhs_{i}/d y_{k}: {} vs {fd_ik}",
-                    j[i * 8 + k]
-                );
-            }
-        }
-        jac.push(j);
-    }
-    compare("driven", &e, &cases, &[("rhs", rhs), ("jacobian", jac)], 0);
-}
-
 /// A ball in flight under gravity and linear drag.
 #[derive(RigidBody)]
 #[rigid(cuboid(mass = m, size = [0.1, 0.2, 0.3]))]
@@ -395,136 +259,6 @@ fn a_mechanism_exports_its_state_derivative_bit_for_bit() {
         rhs.push(vec![c.y[2], c.y[3], a[0], a[1]]);
     }
     compare("mechanism", &e, &cases, &[("rhs", rhs)], 0);
-}
-
-/// A disk of fields rolling on its rim: slides along x, y and z carry the hub, a spherical
-/// joint turns the disk (n = 6 coordinates, 3 rows: no slip along x and y, the height; 3
-/// free speeds).
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81, up = z, speeds = [yaw, pitch, roll])]
-#[body(slide_x, parent = ground, joint = prismatic(axis = x), q = x, parts(particle(mass = 0.0)))]
-#[body(slide_y, parent = slide_x, joint = prismatic(axis = y), q = y, parts(particle(mass = 0.0)))]
-#[body(slide_z, parent = slide_y, joint = prismatic(axis = z), q = z, parts(particle(mass = 0.0)))]
-#[body(disk, parent = slide_z, joint = spherical(sequence = zyx), q = [yaw, pitch, roll],
-       parts(disk(mass = m, radius = r)), rolls = disk_rim(radius = r, axle = z))]
-struct RollingCoin {
-    m: f64,
-    r: f64,
-}
-
-#[test]
-fn a_rolling_mechanism_exports_the_pieces_of_maggis_equations_bit_for_bit() {
-    let e = RollingCoin::exported().expect("exported");
-    // `y` is the emitted code's state array: the coordinate gets a trailing `_`.
-    assert_eq!(e.state()[..6], ["x", "y_", "z", "yaw", "pitch", "roll"]);
-    let dots = ["x", "y", "z", "yaw", "pitch", "roll"].map(|q| format!("{q}_dot"));
-    assert_eq!(e.state()[6..], dots);
-    let fns: Vec<&str> = e.functions().iter().map(|f| f.name()).collect();
-    assert_eq!(
-        fns,
-        [
-            "mass",
-            "forcing",
-            "constraints",
-            "rate_terms",
-            "heights",
-            "energy"
-        ]
-    );
-    // Leans up to a radian, so the disk stands (the projection below needs it).
-    let cases = cases(&e, 1000, 8, |rng, c| {
-        c.y[4] = rng.uniform(-1.0, 1.0);
-        c.y[5] = rng.uniform(-1.0, 1.0);
-    });
-    let coin = |c: &Case| RollingCoin {
-        m: c.param(&e, "m"),
-        r: c.param(&e, "r"),
-    };
-    let split = |c: &Case| -> ([f64; 6], [f64; 6]) {
-        (
-            c.y[..6].try_into().expect("q"),
-            c.y[6..].try_into().expect("q̇"),
-        )
-    };
-    let (mut mass, mut forcing, mut rows, mut rate_terms, mut heights, mut energy) =
-        (vec![], vec![], vec![], vec![], vec![], vec![]);
-    for c in &cases {
-        let (w, (q, qd)) = (coin(c), split(c));
-        let (mm, f) = RollingDynamics::<6, 3, 3>::mass_forcing(&w, c.t, &q, &qd);
-        // nalgebra is column-major; the export writes a matrix row by row.
-        mass.push(mm.transpose().as_slice().to_vec());
-        forcing.push(f.as_slice().to_vec());
-        let (a, b) = RollingDynamics::<6, 3, 3>::constraint_rows(&w, &q, &qd);
-        rows.push(a.transpose().as_slice().to_vec());
-        rate_terms.push(b.as_slice().to_vec());
-        heights.push(RollingDynamics::<6, 3, 3>::heights(&w, &q).to_vec());
-        energy.push(vec![RollingDynamics::<6, 3, 3>::energy(&w, &q, &qd)]);
-    }
-    // Maggi's projection as docs/export.md writes it, over the exported pieces, against the
-    // Rust rolling rhs (`derivative`), from (q, u): u the free speeds (yaw, pitch, roll).
-    let mut worst_projection = 0.0_f64;
-    for c in cases.iter().take(200) {
-        let w = coin(c);
-        let (q, _) = split(c);
-        let u = [c.y[9], c.y[10], c.y[11]];
-        let (ind, dep) = ([3, 4, 5], [0, 1, 2]);
-        let ev = |name: &str, qd: &[f64]| {
-            let y: Vec<f64> = q.iter().chain(qd).copied().collect();
-            e.eval(name, c.t, &y, &c.p).expect("eval")
-        };
-        let a = DMatrix::from_row_slice(3, 6, &ev("constraints", &[0.0; 6]));
-        let block = |cols: [usize; 3]| DMatrix::from_fn(3, 3, |i, j| a[(i, cols[j])]);
-        let a_d = block(dep).lu();
-        // S: q̇ = S u, S_I = 1, S_D = −A_D⁻¹ A_I.
-        let s_d = -a_d.solve(&block(ind)).expect("A_D regular");
-        let mut s = DMatrix::zeros(6, 3);
-        for j in 0..3 {
-            s[(ind[j], j)] = 1.0;
-            for i in 0..3 {
-                s[(dep[i], j)] = s_d[(i, j)];
-            }
-        }
-        let qd = &s * DVector::from_column_slice(&u);
-        let mm = DMatrix::from_row_slice(6, 6, &ev("mass", qd.as_slice()));
-        let f = DVector::from_vec(ev("forcing", qd.as_slice()));
-        let b = DVector::from_vec(ev("rate_terms", qd.as_slice()));
-        // s₀: the accelerations at u̇ = 0, s₀_I = 0, s₀_D = −A_D⁻¹ Ȧq̇.
-        let s0_d = -a_d.solve(&b).expect("A_D regular");
-        let mut s0 = DVector::zeros(6);
-        for i in 0..3 {
-            s0[dep[i]] = s0_d[i];
-        }
-        let k = s.transpose() * &mm * &s;
-        let rhs = s.transpose() * (f - &mm * s0);
-        let ud = k.lu().solve(&rhs).expect("K regular");
-        let (want_qd, want_ud) = w.derivative(c.t, &q, &u).expect("the coin stands");
-        for (got, want) in qd
-            .iter()
-            .chain(ud.iter())
-            .zip(want_qd.iter().chain(&want_ud))
-        {
-            let d = (got - want).abs() / (1.0 + want.abs());
-            assert!(d <= 1e-12, "{got} vs {want}");
-            worst_projection = worst_projection.max(d);
-        }
-    }
-    println!(
-        "rolling: the projection over the exported pieces against derivative: {worst_projection:e}"
-    );
-    compare(
-        "rolling",
-        &e,
-        &cases,
-        &[
-            ("mass", mass),
-            ("forcing", forcing),
-            ("constraints", rows),
-            ("rate_terms", rate_terms),
-            ("heights", heights),
-            ("energy", energy),
-        ],
-        0,
-    );
 }
 
 /// A box of fields, with the Taylor system of its torque-free Euler equations.

@@ -1,5 +1,8 @@
 //! The export of a scene's equations as C99 and Python (`codegen::Exported`, `docs/export.md`).
 
 mod derived;
+mod driven;
+mod rolling;
 mod runtime;
 mod support;
+mod system;
