@@ -7,6 +7,7 @@ use super::support::Case;
 use nalgebra::{DMatrix, DVector};
 use precess::codegen::Export;
 use precess::mechanism::rolling::RollingDynamics;
+use precess::models::Bicycle;
 use precess::prelude::*;
 
 /// A disk of fields rolling on its rim: slides along x, y and z carry the hub, a spherical
@@ -58,20 +59,7 @@ fn a_rolling_mechanism_exports_the_pieces_of_maggis_equations_bit_for_bit() {
             c.y[6..].try_into().expect("q̇"),
         )
     };
-    let (mut mass, mut forcing, mut rows, mut rate_terms, mut heights, mut energy) =
-        (vec![], vec![], vec![], vec![], vec![], vec![]);
-    for c in &cases {
-        let (w, (q, qd)) = (coin(c), split(c));
-        let (mm, f) = RollingDynamics::<6, 3, 3>::mass_forcing(&w, c.t, &q, &qd);
-        // nalgebra is column-major; the export writes a matrix row by row.
-        mass.push(mm.transpose().as_slice().to_vec());
-        forcing.push(f.as_slice().to_vec());
-        let (a, b) = RollingDynamics::<6, 3, 3>::constraint_rows(&w, &q, &qd);
-        rows.push(a.transpose().as_slice().to_vec());
-        rate_terms.push(b.as_slice().to_vec());
-        heights.push(RollingDynamics::<6, 3, 3>::heights(&w, &q).to_vec());
-        energy.push(vec![RollingDynamics::<6, 3, 3>::energy(&w, &q, &qd)]);
-    }
+    let want = pieces(&cases, |c| (coin(c), split(c)));
     // Maggi's projection as docs/export.md writes it, over the exported pieces, against the
     // Rust rolling rhs (`derivative`), from (q, u): u the free speeds (yaw, pitch, roll).
     let mut worst_projection = 0.0_f64;
@@ -123,18 +111,86 @@ fn a_rolling_mechanism_exports_the_pieces_of_maggis_equations_bit_for_bit() {
     println!(
         "rolling: the projection over the exported pieces against derivative: {worst_projection:e}"
     );
-    compare(
-        "rolling",
-        &e,
-        &cases,
-        &[
-            ("mass", mass),
-            ("forcing", forcing),
-            ("constraints", rows),
-            ("rate_terms", rate_terms),
-            ("heights", heights),
-            ("energy", energy),
-        ],
-        0,
-    );
+    compare("rolling", &e, &cases, &want, 0);
+}
+
+/// Per function of a rolling mechanism's export, the outputs of its `RollingDynamics` method
+/// at each case (a matrix row by row): the model and (q, q̇) of a case by `at`.
+fn pieces<T: RollingDynamics<N, M, K>, const N: usize, const M: usize, const K: usize>(
+    cases: &[Case],
+    at: impl Fn(&Case) -> (T, ([f64; N], [f64; N])),
+) -> Vec<(&'static str, Vec<Vec<f64>>)> {
+    let names = [
+        "mass",
+        "forcing",
+        "constraints",
+        "rate_terms",
+        "heights",
+        "energy",
+    ];
+    let mut want: Vec<(&str, Vec<Vec<f64>>)> = names.iter().map(|&n| (n, vec![])).collect();
+    for c in cases {
+        let (w, (q, qd)) = at(c);
+        let (mm, f) = w.mass_forcing(c.t, &q, &qd);
+        let (a, b) = w.constraint_rows(&q, &qd);
+        // nalgebra is column-major; the export writes a matrix row by row.
+        let values = [
+            mm.transpose().as_slice().to_vec(),
+            f.as_slice().to_vec(),
+            a.transpose().as_slice().to_vec(),
+            b.as_slice().to_vec(),
+            w.heights(&q).to_vec(),
+            vec![w.energy(&q, &qd)],
+        ];
+        for ((_, v), x) in want.iter_mut().zip(values) {
+            v.push(x);
+        }
+    }
+    want
+}
+
+#[test]
+fn the_benchmark_bicycle_exports_its_pieces_bit_for_bit() {
+    let e = Bicycle::exported().expect("exported");
+    assert_eq!(e.state().len(), 16);
+    let b = Bicycle::benchmark();
+    // The parameters the derive read, by name (`lambda` is a Python keyword: `lambda_`).
+    let value = |name: &str| match name {
+        "w" => b.w,
+        "c" => b.c,
+        "lambda_" => b.lambda,
+        "g" => b.g,
+        "r_r" => b.r_r,
+        "m_r" => b.m_r,
+        "i_rxx" => b.i_rxx,
+        "i_ryy" => b.i_ryy,
+        "x_b" => b.x_b,
+        "z_b" => b.z_b,
+        "m_b" => b.m_b,
+        "i_bxx" => b.i_bxx,
+        "i_byy" => b.i_byy,
+        "i_bzz" => b.i_bzz,
+        "i_bxz" => b.i_bxz,
+        "x_h" => b.x_h,
+        "z_h" => b.z_h,
+        "m_h" => b.m_h,
+        "i_hxx" => b.i_hxx,
+        "i_hyy" => b.i_hyy,
+        "i_hzz" => b.i_hzz,
+        "i_hxz" => b.i_hxz,
+        "r_f" => b.r_f,
+        "m_f" => b.m_f,
+        "i_fxx" => b.i_fxx,
+        "i_fyy" => b.i_fyy,
+        other => panic!("no field {other}"),
+    };
+    let cases = cases(&e, 1000, 10, |_, c| {
+        c.p = e.parameters().iter().map(|n| value(n)).collect();
+    });
+    let want = pieces(&cases, |c| {
+        let q: [f64; 8] = c.y[..8].try_into().expect("q");
+        let qd: [f64; 8] = c.y[8..].try_into().expect("q̇");
+        (b, (q, qd))
+    });
+    compare("bicycle", &e, &cases, &want, 0);
 }
