@@ -34,6 +34,11 @@ use crate::rigid::check::CheckedBody;
 /// An export's text, or why there is none.
 type Text = Result<String, String>;
 
+/// The values a scene's Rust code takes from user functions (a motor's torque, a user
+/// torque's components), each symbol with its name: the export's inputs u, which the caller
+/// of the C or the Python supplies.
+pub type Inputs = Vec<(ExprId, String)>;
+
 thread_local! {
     /// The export a scene registered, keyed by the arena of its expansion (`Arena::zero`'s id
     /// carries the arena's tag): at most one entry, so an expansion that failed before
@@ -94,14 +99,38 @@ fn build(
     functions: &[Function],
     jacobian_of: Option<usize>,
 ) -> Result<Exported, ExportError> {
-    // The arena tells apart symbols made under one name (the rate `omega_1` of the body's
-    // impl and of its export) by trailing primes; the export has only its own.
-    let names: Vec<String> = state
+    let names = symbol_names(arena, state);
+    build_with(ident, arena, (state, &names, &[]), functions, jacobian_of)
+}
+
+/// [`build`] with the `inputs` the caller supplies, named as given.
+fn build_inputs(
+    ident: &Ident,
+    arena: &mut Arena,
+    state: &[ExprId],
+    inputs: &[(ExprId, String)],
+    functions: &[Function],
+    jacobian_of: Option<usize>,
+) -> Result<Exported, ExportError> {
+    let names = symbol_names(arena, state);
+    build_with(
+        ident,
+        arena,
+        (state, &names, inputs),
+        functions,
+        jacobian_of,
+    )
+}
+
+/// The names of `state`'s symbols. The arena tells apart symbols made under one name (the
+/// rate `omega_1` of the body's impl and of its export) by trailing primes; the export has
+/// only its own.
+pub fn symbol_names(arena: &Arena, state: &[ExprId]) -> Vec<String> {
+    state
         .iter()
         .filter_map(|&e| arena.as_symbol(e))
         .map(|s| arena.symbol(s).name.trim_end_matches('\'').to_owned())
-        .collect();
-    build_with(ident, arena, (state, &names, &[]), functions, jacobian_of)
+        .collect()
 }
 
 /// [`build`] over `state` named `names`, its functions reading the `inputs` the caller
@@ -109,12 +138,14 @@ fn build(
 fn build_with(
     ident: &Ident,
     arena: &mut Arena,
-    (state, names, inputs): (&[ExprId], &[String], &[ExprId]),
+    (state, names, inputs): (&[ExprId], &[String], &[(ExprId, String)]),
     functions: &[Function],
     jacobian_of: Option<usize>,
 ) -> Result<Exported, ExportError> {
-    let mut b = ExportBuilder::with_inputs(&snake_case(ident), arena, state, inputs)?;
+    let symbols: Vec<ExprId> = inputs.iter().map(|(e, _)| *e).collect();
+    let mut b = ExportBuilder::with_inputs(&snake_case(ident), arena, state, &symbols)?;
     b.name_state(&names.iter().map(String::as_str).collect::<Vec<_>>())?;
+    b.name_inputs(&inputs.iter().map(|(_, n)| n.as_str()).collect::<Vec<_>>())?;
     for (name, doc, lowered, kept, shape) in functions {
         b.function_of(arena, name, doc, lowered, kept.clone(), *shape)?;
     }
@@ -138,21 +169,23 @@ fn whole<'a>(name: &'a str, doc: &'a str, outputs: Vec<ExprId>) -> Function<'a> 
 
 /// A top without motors: the declared chart's `[q, q̇]`, its derivative `(q̇, q̈)` (q̈ lowered
 /// alone, as the chart's `accelerations` arm is: the rates are bare inputs) and its
-/// Jacobian (the last three rows are `angle_jacobian`'s).
-pub fn top(ident: &Ident, arena: &mut Arena, state: &[ExprId], rhs: &[ExprId]) {
+/// Jacobian (the last three rows are `angle_jacobian`'s, which holds a user torque's
+/// value as this one holds the `inputs`).
+pub fn top(ident: &Ident, arena: &mut Arena, state: &[ExprId], inputs: &Inputs, rhs: &[ExprId]) {
     let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
-    let built = build(ident, arena, state, &f, Some(0));
+    let built = build_inputs(ident, arena, state, inputs, &f, Some(0));
     register(arena, text(built));
 }
 
 /// A top with driven rotors: the declared chart's `[q, q̇, Ω]` (each wheel's rate named
-/// `rotor_k` as `TopDynamics::coordinate` names it), the motors' torques `u` the inputs,
-/// its derivative `(q̇, q̈, Ω̇)` lowered as `rhs_in` lowers it (q̈ and Ω̇ together; the rates
-/// q̇ are bare inputs) and its Jacobian in y at fixed u.
+/// `rotor_k` as `TopDynamics::coordinate` names it), the motors' torques (and a user
+/// torque's components) the inputs u, its derivative `(q̇, q̈, Ω̇)` lowered as `rhs_in`
+/// lowers it (q̈ and Ω̇ together; the rates q̇ are bare inputs) and its Jacobian in y at
+/// fixed u.
 pub fn driven_top(
     ident: &Ident,
     arena: &mut Arena,
-    (state, names, motors): (&[ExprId], &[String], &[ExprId]),
+    (state, names, motors): (&[ExprId], &[String], &Inputs),
     rhs: &[ExprId],
 ) {
     let f = [whole("rhs", "the state derivative dy/dt", rhs.to_vec())];
@@ -160,19 +193,29 @@ pub fn driven_top(
     register(arena, text(built));
 }
 
-/// A free body: its `free_rhs` over the full state, its energy.
-pub fn free(ident: &Ident, arena: &mut Arena, d: &FreeDerivation) {
+/// A vector's three symbols as inputs named `{name}_x`, `{name}_y`, `{name}_z`.
+pub fn vector_inputs(v: Option<&[ExprId; 3]>, name: &str) -> Inputs {
+    v.iter()
+        .flat_map(|v| v.iter().zip(["x", "y", "z"]))
+        .map(|(&e, axis)| (e, format!("{name}_{axis}")))
+        .collect()
+}
+
+/// A free body: its `free_rhs` over the full state, its energy; `inputs` the values of its
+/// user functions (motors, force, torque, wrench).
+pub fn free(ident: &Ident, arena: &mut Arena, d: &FreeDerivation, inputs: &Inputs) {
     let f = [
         whole("rhs", "the state derivative dy/dt", d.full_rhs()),
         whole("energy", "the energy", vec![d.energy]),
     ];
-    let built = build(ident, arena, &d.full_state(), &f, None);
+    let built = build_inputs(ident, arena, &d.full_state(), inputs, &f, None);
     register(arena, text(built));
 }
 
 /// A body on a table: each derived phase's right-hand side, reaction (N, then the friction
-/// force) and energy, and Jellett's quantity, each lowered as its method is.
-pub fn contact(ident: &Ident, arena: &mut Arena, d: &ContactDerivation) {
+/// force) and energy, and Jellett's quantity, each lowered as its method is; `inputs` a user
+/// couple's components.
+pub fn contact(ident: &Ident, arena: &mut Arena, d: &ContactDerivation, inputs: &Inputs) {
     let mut f: Vec<Function> = Vec::new();
     let phases = [
         (
@@ -200,7 +243,7 @@ pub fn contact(ident: &Ident, arena: &mut Arena, d: &ContactDerivation) {
         f.push(whole(energy, "the energy", vec![e.energy]));
     }
     f.push(whole("jellett", "Jellett's quantity", vec![d.jellett]));
-    let built = build(ident, arena, &d.state, &f, None);
+    let built = build_inputs(ident, arena, &d.state, inputs, &f, None);
     register(arena, text(built));
 }
 
@@ -230,11 +273,11 @@ pub fn body(ex: &mut Expansion, checked: &CheckedBody, before: impl ToTokens) ->
 }
 
 /// A tree mechanism's `impl Export`, after `before`: `(q̇, q̈)` over `[q, q̇]`, q̈ lowered with
-/// the pivots as its methods lower it.
+/// the pivots as its methods lower it; `inputs` the values of its `effort = f` functions.
 pub fn mechanism(
     ident: &Ident,
     arena: &mut Arena,
-    d: &MechanismDerivation,
+    (d, inputs): (&MechanismDerivation, &Inputs),
     before: impl ToTokens,
 ) -> TokenStream {
     let c = &d.coordinates;
@@ -255,7 +298,8 @@ pub fn mechanism(
         np..np + n,
         (n, 1),
     )];
-    let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
+    let built = build_inputs(ident, arena, &state, inputs, &f, None);
+    let export = tokens(ident, text(built));
     quote!(#before #export)
 }
 
@@ -266,7 +310,7 @@ pub fn mechanism(
 pub fn rolling(
     ident: &Ident,
     arena: &mut Arena,
-    d: &RollingDerivation,
+    (d, inputs): (&RollingDerivation, &Inputs),
     before: impl ToTokens,
 ) -> TokenStream {
     let c = d.coordinates();
@@ -332,7 +376,10 @@ pub fn rolling(
         ),
         whole("energy", "the energy T + V", vec![energy]),
     ];
-    let export = tokens(ident, text(build(ident, arena, &state, &f, None)));
+    let export = tokens(
+        ident,
+        text(build_inputs(ident, arena, &state, inputs, &f, None)),
+    );
     quote!(#before #export)
 }
 

@@ -99,20 +99,29 @@ pub(super) struct DrivenMethods {
 
 impl DrivenInputs {
     /// Registers the export of the declared chart `d`: the state `[q, q̇, Ω]`, the motors'
-    /// torques as the inputs the caller supplies, `rhs_in`'s outputs (q̇ then q̈ and Ω̇).
-    fn export(&self, ident: &syn::Ident, arena: &mut Arena, d: &DrivenDerivation) {
+    /// torques (then `user`, a user torque's components) as the inputs the caller supplies,
+    /// `rhs_in`'s outputs (q̇ then q̈ and Ω̇).
+    fn export(
+        &self,
+        ident: &syn::Ident,
+        arena: &mut Arena,
+        d: &DrivenDerivation,
+        user: &crate::lang::export::Inputs,
+    ) {
         let c = d.effective.coords();
         let mut state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
-        // The angles and their rates named as their symbols (as a top without motors names
-        // them), without the primes that tell apart symbols made twice under one name.
-        let mut names: Vec<String> = state
-            .iter()
-            .filter_map(|&e| arena.as_symbol(e))
-            .map(|s| arena.symbol(s).name.trim_end_matches('\'').to_owned())
-            .collect();
+        // The angles and their rates named as their symbols, as a top without motors names
+        // them.
+        let mut names = crate::lang::export::symbol_names(arena, &state);
         state.extend(&self.rates);
         names.extend(self.names.iter().cloned());
-        let motors: Vec<ExprId> = self.rotors.iter().map(|r| r.torque).collect();
+        let inputs: crate::lang::export::Inputs = self
+            .rotors
+            .iter()
+            .zip(&self.names)
+            .map(|(r, name)| (r.torque, format!("u_{name}")))
+            .chain(user.iter().cloned())
+            .collect();
         let rhs: Vec<ExprId> = c
             .rates
             .iter()
@@ -120,7 +129,7 @@ impl DrivenInputs {
             .chain(&d.rotor_accel)
             .copied()
             .collect();
-        crate::lang::export::driven_top(ident, arena, (&state, &names, &motors), &rhs);
+        crate::lang::export::driven_top(ident, arena, (&state, &names, &inputs), &rhs);
     }
 }
 
@@ -150,7 +159,12 @@ pub(super) fn methods(
         AngleSequence::Zxz => zxz,
         AngleSequence::Zyx => zyx,
     };
-    inputs.export(low.ident(), arena, &declared);
+    inputs.export(
+        low.ident(),
+        arena,
+        &declared,
+        &super::expand::user_inputs(scene),
+    );
     let reads = state_reads(&declared, inputs);
     let momenta_in = momenta_tokens(low, arena, &declared.conserved_momenta, &reads);
     // Every rotor's momentum at the state: the constant ones' and J Ω â of each driven one.

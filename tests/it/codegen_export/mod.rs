@@ -1,7 +1,7 @@
 //! The export of a scene's equations as C99 and Python (`codegen::Exported`, `docs/export.md`).
 
 mod derived;
-mod driven;
+mod inputs;
 mod rolling;
 mod runtime;
 mod support;

@@ -143,6 +143,25 @@ impl ExportBuilder {
         Ok(self)
     }
 
+    /// Names the inputs `names` (written as C and Python identifiers) rather than as their
+    /// symbols are named.
+    ///
+    /// # Errors
+    /// [`ExportError::InputLength`] for a count other than the inputs',
+    /// [`ExportError::DuplicateName`] for two names written alike.
+    pub fn name_inputs(&mut self, names: &[&str]) -> Result<&mut Self, ExportError> {
+        if names.len() != self.inputs.len() {
+            return Err(ExportError::InputLength {
+                what: "input names",
+                found: names.len(),
+                expected: self.inputs.len(),
+            });
+        }
+        self.exported.inputs = names.iter().map(|n| identifier(n)).collect();
+        self.exported.check_names()?;
+        Ok(self)
+    }
+
     /// Adds the function `name` computing `outputs`, of shape `(rows, cols)` (row by row).
     ///
     /// # Errors

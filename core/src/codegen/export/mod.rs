@@ -105,8 +105,8 @@ impl Exported {
     }
 
     /// The names of the inputs u, in order: values the scene's Rust code takes from a user
-    /// function (a driven rotor's motor torque) and the exported functions take from their
-    /// caller. Empty for most scenes, whose C and Python then take no `u`.
+    /// function (a motor's torque, a user torque's components) and the exported functions
+    /// take from their caller. Empty for most scenes, whose C and Python then take no `u`.
     pub fn inputs(&self) -> &[String] {
         &self.inputs
     }
@@ -176,14 +176,15 @@ pub enum ExportError {
     /// The inputs given to [`Exported::eval`] have the wrong length.
     #[error("`{what}` has {found} values, the scene {expected}")]
     InputLength {
-        /// `"y"`, `"u"`, `"p"` or `"state names"`.
+        /// `"y"`, `"u"`, `"p"`, `"state names"` or `"input names"`.
         what: &'static str,
         /// The length given.
         found: usize,
         /// The length expected.
         expected: usize,
     },
-    /// The derive could not export the scene (a user function's value in its equations).
+    /// The derive could not export the scene (a value found only at run time in its
+    /// equations, such as a principal frame of field products of inertia).
     #[error("the scene cannot be exported: {reason}")]
     NotExportable {
         /// Why.
@@ -201,8 +202,10 @@ pub enum ExportError {
 
 /// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, with or
 /// without motors, a free body, a body on a table, or the body's own torque-free Euler
-/// equations) and every `#[derive(Mechanism)]` without a closed loop (a tree's state
-/// derivative, a rolling mechanism's pieces of Maggi's equations) implements it.
+/// equations), every `#[derive(Mechanism)]` without a closed loop (a tree's state
+/// derivative, a rolling mechanism's pieces of Maggi's equations) and every
+/// `taylor_system!` implements it. The values of user functions (motors, user torques,
+/// forces, wrenches, couples, efforts) are the export's inputs ([`Exported::inputs`]).
 ///
 /// The macro writes the scene's [`Exported`] as text ([`Export::EXPORTED`]) while it
 /// expands, from the same programs its Rust methods are emitted from; the methods read it
@@ -210,9 +213,8 @@ pub enum ExportError {
 ///
 /// # Errors
 /// Every method returns [`ExportError::NotExportable`] when the equations read a value the
-/// export cannot (a user function's torque; a motor's torque is an input instead, see
-/// [`Exported::inputs`]), and [`ExportError::Text`] never for the text the
-/// macro wrote.
+/// export cannot (one found only at run time), and [`ExportError::Text`] never for the text
+/// the macro wrote.
 pub trait Export {
     /// The [`Exported::to_text`] of the scene, or why it could not be exported.
     const EXPORTED: Result<&'static str, &'static str>;
@@ -247,8 +249,8 @@ pub trait Export {
         Ok(Self::exported()?.state)
     }
 
-    /// The names of the inputs the caller supplies (a driven rotor's motor torque), empty
-    /// for most scenes.
+    /// The names of the inputs the caller supplies (user functions' values: a motor's
+    /// torque, a user torque's components), empty for most scenes.
     fn input_names() -> Result<Vec<String>, ExportError> {
         Ok(Self::exported()?.inputs)
     }
