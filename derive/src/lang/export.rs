@@ -12,7 +12,7 @@
 //! registers its export here ([`top`], [`driven_top`], [`free`], [`contact`]), keyed by the expansion's
 //! arena, and [`body`] emits it, or the body's torque-free Euler equations when no scene
 //! registered one, so a struct gets one `impl Export` whatever its attributes. A
-//! `#[derive(Mechanism)]` emits its own ([`mechanism`], [`rolling`]), and so does
+//! `#[derive(Mechanism)]` emits its own ([`mechanism`], [`rolling`], [`closed`]), and so does
 //! `taylor_system!` ([`system`]).
 
 use std::cell::RefCell;
@@ -21,6 +21,7 @@ use precess_core::codegen::{ExportBuilder, ExportError, Exported};
 use precess_core::contact::ContactDerivation;
 use precess_core::free::FreeDerivation;
 use precess_core::mechanism::MechanismDerivation;
+use precess_core::mechanism::loops::LoopDerivation;
 use precess_core::mechanism::rolling::RollingDerivation;
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -380,6 +381,77 @@ pub fn rolling(
         ident,
         text(build_inputs(ident, arena, &state, inputs, &f, None)),
     );
+    quote!(#before #export)
+}
+
+/// A closed mechanism's `impl Export`, after `before`: the pieces of its equations its
+/// `LoopDynamics` methods compute from generated code, over `[q, q̇]` (the choice of the
+/// dependent coordinates and the projection are numerical, the caller's): M and f lowered
+/// together as `mass_forcing` lowers them, φ and A as `closure`, Ȧq̇ and T + V.
+pub fn closed(
+    ident: &Ident,
+    arena: &mut Arena,
+    (d, inputs): (&LoopDerivation, &Inputs),
+    before: impl ToTokens,
+) -> TokenStream {
+    let c = d.coordinates();
+    let (n, m) = (c.len(), d.constraints.len());
+    let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
+    let eqs = &d.equations;
+    let dynamics: Vec<ExprId> = eqs
+        .mass
+        .iter()
+        .flatten()
+        .chain(&eqs.forcing)
+        .copied()
+        .collect();
+    let zero = arena.zero();
+    let closure: Vec<ExprId> = d
+        .constraints
+        .positions
+        .iter()
+        .map(|h| h.unwrap_or(zero))
+        .chain(d.constraints.coefficients.iter().flatten().copied())
+        .collect();
+    let energy = arena.add(d.kinetic, d.potential);
+    let f = [
+        (
+            "mass",
+            "the mass matrix M(q) of the tree cut open, M q'' = f + A^T lambda",
+            dynamics.clone(),
+            0..n * n,
+            (n, n),
+        ),
+        (
+            "forcing",
+            "the forcing f(t, q, q') of the tree cut open",
+            dynamics,
+            n * n..n * n + n,
+            (n, 1),
+        ),
+        (
+            "closure",
+            "the closure rows phi(q), zero when every loop is closed",
+            closure.clone(),
+            0..m,
+            (m, 1),
+        ),
+        (
+            "constraints",
+            "their Jacobian A(q) = d(phi)/dq, A q' = 0",
+            closure,
+            m..m + m * n,
+            (m, n),
+        ),
+        whole(
+            "rate_terms",
+            "the rate terms (dA/dt) q', A q'' + (dA/dt) q' = 0",
+            d.rate_terms.clone(),
+        ),
+        whole("energy", "the energy T + V", vec![energy]),
+    ];
+    let built = build_inputs(ident, arena, &state, inputs, &f, None);
+    let export = tokens(ident, text(built));
     quote!(#before #export)
 }
 

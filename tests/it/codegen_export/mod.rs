@@ -1,5 +1,6 @@
 //! The export of a scene's equations as C99 and Python (`codegen::Exported`, `docs/export.md`).
 
+mod closed;
 mod derived;
 mod inputs;
 mod rolling;

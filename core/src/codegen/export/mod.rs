@@ -202,8 +202,8 @@ pub enum ExportError {
 
 /// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, with or
 /// without motors, a free body, a body on a table, or the body's own torque-free Euler
-/// equations), every `#[derive(Mechanism)]` without a closed loop (a tree's state
-/// derivative, a rolling mechanism's pieces of Maggi's equations) and every
+/// equations), every `#[derive(Mechanism)]` (a tree's state derivative, the pieces of a
+/// rolling or a closed mechanism's equations, which their runs project numerically) and every
 /// `taylor_system!` implements it. The values of user functions (motors, user torques,
 /// forces, wrenches, couples, efforts) are the export's inputs ([`Exported::inputs`]).
 ///
