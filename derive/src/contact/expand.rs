@@ -50,7 +50,9 @@ pub fn expand(
         .derive_with(arena, &torques)
         .map_err(|e| cannot_derive(cx, ident, what, &e))
         .ok()?;
-    crate::lang::export::contact(ident, arena, &derivation);
+    // The user couple's value is the export's input: its caller supplies it.
+    let inputs = crate::lang::export::vector_inputs(torques.user.as_ref(), "couple");
+    crate::lang::export::contact(ident, arena, &derivation, &inputs);
     let low = Lowering::new(cx, ident, symbols);
     let couple =
         |arena: &Arena, outputs: &[ExprId]| couple_call(arena, outputs, settings, &torques);

@@ -211,6 +211,37 @@ fn scene(
     (scene, preludes)
 }
 
+/// The values of a free body's user functions, the inputs of its export (the caller of the
+/// C or the Python supplies them): each motor's torque, the user force (space axes), the
+/// user torque (description axes), a wrench's four parts (force and torque, space then
+/// description axes).
+fn export_inputs(scene: &FreeScene) -> crate::lang::export::Inputs {
+    use crate::lang::export::vector_inputs;
+    let motors = scene
+        .driven
+        .iter()
+        .enumerate()
+        .map(|(k, d)| (d.torque, format!("u_rotor_{k}")));
+    let wrench = scene.user_wrench.as_ref().map(|w| w.symbols());
+    let parts = [
+        "force_space",
+        "torque_space",
+        "force_description",
+        "torque_description",
+    ];
+    let wrench = wrench.iter().flat_map(|w| {
+        parts.iter().enumerate().flat_map(move |(i, part)| {
+            let v = [w[3 * i], w[3 * i + 1], w[3 * i + 2]];
+            vector_inputs(Some(&v), &format!("wrench_{part}"))
+        })
+    });
+    motors
+        .chain(vector_inputs(scene.user_force.as_ref(), "force"))
+        .chain(vector_inputs(scene.user_torque.as_ref(), "torque"))
+        .chain(wrench)
+        .collect()
+}
+
 /// Where a free body's driven-rotor rule reads its inertia: about its centre of mass.
 const ABOUT: crate::lang::rotor::InertiaAbout<'static> = crate::lang::rotor::InertiaAbout {
     body: "body",
@@ -237,7 +268,7 @@ pub fn expand(
     let inertia = &checked.body.props.inertia_cm;
     crate::lang::rotor::literal_driven_inertia(cx, arena, inertia, &settings.driven, ABOUT)?;
     let derivation = scene.derive(arena).map_err(|e| failed(&e)).ok()?;
-    crate::lang::export::free(ident, arena, &derivation);
+    crate::lang::export::free(ident, arena, &derivation, &export_inputs(&scene));
     let full_state = derivation.full_state();
     let n = full_state.len();
     let taylor = settings.taylor.map(|order| {

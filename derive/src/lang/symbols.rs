@@ -93,6 +93,11 @@ impl<'a> Lowering<'a> {
         Lowering { cx, ident, symbols }
     }
 
+    /// The struct the code is lowered for.
+    pub fn ident(&self) -> &'a Ident {
+        self.ident
+    }
+
     /// `outputs` as straight-line Rust reading the common symbols.
     pub fn lower(&self, arena: &Arena, outputs: &[ExprId]) -> Emitted {
         self.symbols.lower(self.cx, self.ident, arena, outputs)

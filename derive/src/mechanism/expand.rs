@@ -61,7 +61,8 @@ pub fn expand(
         }
     };
     let taylor = taylor.map(|k| taylor_system(cx, ident, arena, parameters, &derivation, k));
-    let taylor = crate::lang::export::mechanism(ident, arena, &derivation, taylor);
+    let inputs = effort_inputs(&checked.efforts);
+    let taylor = crate::lang::export::mechanism(ident, arena, (&derivation, &inputs), taylor);
     let variational = variational
         .map(|key| super::variational::expand(cx, ident, arena, parameters, &derivation, key));
     let n = checked.coordinates.len();
@@ -295,6 +296,15 @@ pub(super) fn mass_forcing(
             #p::SVector::<f64, #n>::from_column_slice(&[#(#f),*]),
         )}
     })
+}
+
+/// The user efforts' values, the inputs of the export (its caller supplies them): `effort_k`,
+/// k counting the `effort = f` functions as declared.
+pub(super) fn effort_inputs(efforts: &[UserEffort]) -> crate::lang::export::Inputs {
+    efforts
+        .iter()
+        .map(|e| (e.symbol, format!("effort_{}", e.index)))
+        .collect()
 }
 
 /// The local a user effort's value is held in.

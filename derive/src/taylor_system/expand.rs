@@ -1,7 +1,7 @@
 //! Expansion of `taylor_system!`: the checked equations lowered into the arena, emitted as
 //! the struct with `impl System<N>` (the right-hand side as straight-line code) and
 //! `impl TaylorSystem<N>` (the recurrences, by `lang::taylor`, as for `taylor = K` on the
-//! derives).
+//! derives), and `impl Export` (the right-hand side and its Jacobian as C and Python).
 
 use precess_core::sym::{Arena, ExprId};
 use proc_macro2::TokenStream;
@@ -94,6 +94,7 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         checked.order,
         None,
     );
+    let taylor = crate::lang::export::system(ident, &mut arena, &state, &rhs, taylor);
     let names = checked
         .state
         .iter()

@@ -24,6 +24,8 @@ pub(super) struct DrivenInputs {
     rotors: Vec<DrivenRotor>,
     rates: Vec<ExprId>,
     motors: Vec<syn::Path>,
+    /// Each wheel's name, `rotor_k` (k its place among every rotor declared).
+    names: Vec<String>,
 }
 
 impl DrivenInputs {
@@ -34,6 +36,7 @@ impl DrivenInputs {
             rotors: Vec::new(),
             rates: Vec::new(),
             motors: Vec::new(),
+            names: Vec::new(),
         };
         for (k, (declared, d)) in settings.driven.iter().enumerate() {
             let u = arena.input(&format!("u_rotor_{declared}"));
@@ -47,6 +50,7 @@ impl DrivenInputs {
             out.rates
                 .push(arena.input(&format!("Omega_rotor_{declared}")));
             out.motors.push(d.torque.clone());
+            out.names.push(format!("rotor_{declared}"));
         }
         out
     }
@@ -93,6 +97,42 @@ pub(super) struct DrivenMethods {
     pub scene: TopScene,
 }
 
+impl DrivenInputs {
+    /// Registers the export of the declared chart `d`: the state `[q, q̇, Ω]`, the motors'
+    /// torques (then `user`, a user torque's components) as the inputs the caller supplies,
+    /// `rhs_in`'s outputs (q̇ then q̈ and Ω̇).
+    fn export(
+        &self,
+        ident: &syn::Ident,
+        arena: &mut Arena,
+        d: &DrivenDerivation,
+        user: &crate::lang::export::Inputs,
+    ) {
+        let c = d.effective.coords();
+        let mut state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
+        // The angles and their rates named as their symbols, as a top without motors names
+        // them.
+        let mut names = crate::lang::export::symbol_names(arena, &state);
+        state.extend(&self.rates);
+        names.extend(self.names.iter().cloned());
+        let inputs: crate::lang::export::Inputs = self
+            .rotors
+            .iter()
+            .zip(&self.names)
+            .map(|(r, name)| (r.torque, format!("u_{name}")))
+            .chain(user.iter().cloned())
+            .collect();
+        let rhs: Vec<ExprId> = c
+            .rates
+            .iter()
+            .chain(&d.accel)
+            .chain(&d.rotor_accel)
+            .copied()
+            .collect();
+        crate::lang::export::driven_top(ident, arena, (&state, &names, &inputs), &rhs);
+    }
+}
+
 /// Derives the driven scene in both charts and lowers every method over the whole state.
 pub(super) fn methods(
     low: &Lowering,
@@ -119,6 +159,12 @@ pub(super) fn methods(
         AngleSequence::Zxz => zxz,
         AngleSequence::Zyx => zyx,
     };
+    inputs.export(
+        low.ident(),
+        arena,
+        &declared,
+        &super::expand::user_inputs(scene),
+    );
     let reads = state_reads(&declared, inputs);
     let momenta_in = momenta_tokens(low, arena, &declared.conserved_momenta, &reads);
     // Every rotor's momentum at the state: the constant ones' and J Ω â of each driven one.

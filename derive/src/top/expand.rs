@@ -52,6 +52,12 @@ pub(super) fn sequence_tokens(s: AngleSequence) -> TokenStream {
     }
 }
 
+/// A user torque's components (body axes), the inputs of the scene's export: the caller of
+/// the C or the Python supplies the value the Rust function returns.
+pub(super) fn user_inputs(scene: &TopScene) -> crate::lang::export::Inputs {
+    crate::lang::export::vector_inputs(scene.user_torque.as_ref(), "torque")
+}
+
 /// The declared user torque function, if any: how each method calls it into `__u`.
 pub(super) struct UserCall(Option<syn::Path>);
 
@@ -154,7 +160,7 @@ pub fn expand(
     };
     // `taylor` and `variational(...)` are refused with a driven rotor (check.rs).
     let extra = lagrangian.map(|(state, rhs)| {
-        crate::lang::export::top(ident, arena, &state, &rhs);
+        crate::lang::export::top(ident, arena, &state, &user_inputs(&scene), &rhs);
         let variational = settings.variational.as_ref().map(|key| {
             super::variational::expand(cx, ident, arena, &taylor_symbols, (&state, &rhs), key)
         });

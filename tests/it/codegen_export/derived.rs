@@ -15,13 +15,21 @@ use precess::prelude::*;
 use precess::top::TopDynamics;
 
 /// States and parameters drawn by `draw` (the export's order), `count` of them.
-fn cases(e: &Exported, count: usize, seed: u64, draw: impl Fn(&mut Rng, &mut Case)) -> Vec<Case> {
+pub(super) fn cases(
+    e: &Exported,
+    count: usize,
+    seed: u64,
+    draw: impl Fn(&mut Rng, &mut Case),
+) -> Vec<Case> {
     let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| {
             let mut c = Case {
                 t: rng.uniform(0.0, 10.0),
                 y: (0..e.state().len())
+                    .map(|_| rng.uniform(-2.0, 2.0))
+                    .collect(),
+                u: (0..e.inputs().len())
                     .map(|_| rng.uniform(-2.0, 2.0))
                     .collect(),
                 p: (0..e.parameters().len())
@@ -36,7 +44,7 @@ fn cases(e: &Exported, count: usize, seed: u64, draw: impl Fn(&mut Rng, &mut Cas
 
 /// Compares each of `functions` (export name, the Rust outputs per case) in C and Python,
 /// printing the worst distance, and asserts it is at most `max_ulps`.
-fn compare(
+pub(super) fn compare(
     test: &str,
     e: &Exported,
     cases: &[Case],
@@ -284,22 +292,23 @@ fn a_body_exports_its_euler_equations_bit_for_bit() {
     compare("euler", &e, &cases, &[("rhs", rhs)], 0);
 }
 
-/// A top whose torque is a Rust function: its value cannot be exported.
+/// A body of field products of inertia: its principal frame is found at run time, which its
+/// Euler equations read and the export cannot.
 #[derive(RigidBody)]
-#[rigid(sphere(mass = 1.0, radius = 0.1, at = [0.0, 0.0, 0.3]), pivot = [0.0, 0.0, 0.0])]
-#[top(gravity = 9.81, torque = twist)]
-struct Twisted;
-
-fn twist(_: &Twisted, _t: f64, _r: &Matrix3<f64>, _w: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::new(0.0, 0.0, 0.1)
+#[rigid(body(mass = 1.0, inertia = [[a, b, 0.0], [b, c, 0.0], [0.0, 0.0, d]]))]
+struct Skewed {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
 }
 
 #[test]
-fn a_user_function_is_a_typed_refusal_not_a_wrong_export() {
-    let err = Twisted::c_source().expect_err("a user torque cannot be exported");
+fn a_value_found_at_run_time_is_a_typed_refusal_not_a_wrong_export() {
+    let err = Skewed::c_source().expect_err("a run-time principal frame cannot be exported");
     let ExportError::NotExportable { reason } = &err else {
         panic!("{err:?}");
     };
-    assert!(reason.contains("u0"), "{reason}");
-    assert!(Twisted::state_names().is_err());
+    assert!(reason.contains("run time"), "{reason}");
+    assert!(Skewed::state_names().is_err());
 }

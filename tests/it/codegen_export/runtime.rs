@@ -49,6 +49,7 @@ fn cases(e: &Exported) -> Vec<Case> {
         .map(|_| Case {
             t: rng.uniform(0.0, 5.0),
             y: vec![rng.uniform(-3.0, 3.0), rng.uniform(0.0, 4.0)],
+            u: Vec::new(),
             p: (0..e.parameters().len())
                 .map(|_| rng.uniform(0.1, 2.0))
                 .collect(),
@@ -107,6 +108,36 @@ fn the_text_reads_back_the_same_scene() {
     b.function(&a, "f", "x/10", &[f], (1, 1)).expect("f");
     let back = Exported::from_text(&b.clone().finish().to_text()).expect("read back");
     assert_eq!(back.eval("f", 0.0, &[3.0], &[]), Ok(vec![0.1 * 3.0]));
+    // A scene with inputs: a cart pushed by a force F the caller supplies, ẍ = F/m − c ẋ.
+    let mut a = Arena::new();
+    let (x, v, force) = (a.input("x"), a.input("v"), a.input("force"));
+    let (m, c) = (a.parameter("m"), a.parameter("c"));
+    let fm = a.div(force, m).expect("F/m");
+    let cv = a.mul(c, v);
+    let acc = a.sub(fm, cv);
+    let mut b = ExportBuilder::with_inputs("cart", &a, &[x, v], &[force]).expect("builder");
+    b.function(&a, "rhs", "dy/dt", &[v, acc], (2, 1))
+        .expect("rhs");
+    let e = b.finish();
+    let text = e.to_text();
+    assert!(
+        text.contains("\nstate x v\ninputs force\nparameters m c\n"),
+        "{text}"
+    );
+    assert_eq!(Exported::from_text(&text), Ok(e.clone()));
+    // The environment is [t, y, u, p]: F = 3, m = 2, c = 0.5 at v = 1.
+    assert_eq!(
+        e.eval_with_inputs("rhs", 0.0, &[0.0, 1.0], &[3.0], &[2.0, 0.5]),
+        Ok(vec![1.0, 1.0])
+    );
+    assert_eq!(
+        e.eval("rhs", 0.0, &[0.0, 1.0], &[2.0, 0.5]),
+        Err(ExportError::InputLength {
+            what: "u",
+            found: 0,
+            expected: 1
+        })
+    );
 }
 
 #[test]

@@ -8,11 +8,13 @@ use std::process::{Command, Stdio};
 
 use precess::codegen::Exported;
 
-/// One evaluation point: the time, the state and the parameters (in the export's order).
+/// One evaluation point: the time, the state, the inputs (empty for a scene without) and the
+/// parameters (in the export's order).
 #[derive(Clone, Debug)]
 pub struct Case {
     pub t: f64,
     pub y: Vec<f64>,
+    pub u: Vec<f64>,
     pub p: Vec<f64>,
 }
 
@@ -34,12 +36,13 @@ fn dir(test: &str) -> PathBuf {
     d
 }
 
-/// The inputs as text: the count, then per case t, y, p as the hexadecimal bits.
+/// The inputs as text: the count, then per case t, y, u, p as the hexadecimal bits.
 fn input_text(cases: &[Case]) -> String {
     let mut s = format!("{}\n", cases.len());
     for c in cases {
         let values = std::iter::once(c.t)
             .chain(c.y.iter().copied())
+            .chain(c.u.iter().copied())
             .chain(c.p.iter().copied());
         for v in values {
             let _ = write!(s, "{:x} ", v.to_bits());
@@ -69,22 +72,24 @@ fn parse_outputs(e: &Exported, text: &str, cases: usize) -> Outputs {
 
 /// A C `main` reading the cases and printing every function's outputs.
 fn c_driver(e: &Exported) -> String {
-    let (name, n) = (e.name(), e.state().len());
+    let (name, n, m) = (e.name(), e.state().len(), e.inputs().len());
     let mut s = format!(
         "#include <stdio.h>\n#include <string.h>\n#include \"{name}.h\"\n\
          static double rd(void) {{ unsigned long long b = 0; if (scanf(\"%llx\", &b) != 1) return 0.0; double x; memcpy(&x, &b, 8); return x; }}\n\
          static void wr(double x) {{ unsigned long long b; memcpy(&b, &x, 8); printf(\"%llx \", b); }}\n\
-         int main(void) {{\n int k = 0; if (scanf(\"%d\", &k) != 1) return 1;\n for (int i = 0; i < k; i++) {{\n  double t = rd(); double y[{}]; {name}_params p;\n  for (int j = 0; j < {n}; j++) y[j] = rd();\n",
-        n.max(1)
+         int main(void) {{\n int k = 0; if (scanf(\"%d\", &k) != 1) return 1;\n for (int i = 0; i < k; i++) {{\n  double t = rd(); double y[{}]; double u[{}]; {name}_params p;\n  for (int j = 0; j < {n}; j++) y[j] = rd();\n  for (int j = 0; j < {m}; j++) u[j] = rd();\n  (void)u;\n",
+        n.max(1),
+        m.max(1)
     );
     for q in e.parameters() {
         let _ = writeln!(s, "  p.{q} = rd();");
     }
+    let u = if m == 0 { "" } else { " u," };
     for f in e.functions() {
         let _ = writeln!(
             s,
-            "  {{ double out[{m}]; {name}_{f}(t, y, &p, out); for (int j = 0; j < {m}; j++) wr(out[j]); }}",
-            m = f.len().max(1),
+            "  {{ double out[{len}]; {name}_{f}(t, y,{u} &p, out); for (int j = 0; j < {len}; j++) wr(out[j]); }}",
+            len = f.len().max(1),
             f = f.name()
         );
     }
@@ -195,21 +200,27 @@ pub fn run_python(test: &str, e: &Exported, cases: &[Case]) -> Option<Outputs> {
     let d = dir(test);
     let name = e.name();
     std::fs::write(d.join(format!("{name}.py")), e.python()).expect("write the module");
+    let (n, m) = (e.state().len(), e.inputs().len());
     let kwargs: String = e
         .parameters()
         .iter()
         .enumerate()
-        .map(|(j, q)| format!("{q}=a[:, {}], ", 1 + e.state().len() + j))
+        .map(|(j, q)| format!("{q}=a[:, {}], ", 1 + n + m + j))
         .collect();
+    // The inputs, positional after y, of shape (m, k) as y is (n, k).
+    let u = if m == 0 {
+        String::new()
+    } else {
+        format!("a[:, {}:{}].T, ", 1 + n, 1 + n + m)
+    };
     let script = format!(
         "import sys\nimport numpy as np\nsys.path.insert(0, sys.argv[1])\nimport {name} as m\n\
          lines = sys.stdin.read().split('\\n')\nk = int(lines[0])\n\
          a = np.array([[int(w, 16) for w in l.split()] for l in lines[1:k + 1]], dtype=np.uint64).view(np.float64)\n\
          a = a.reshape(k, -1)\nt = a[:, 0]\ny = a[:, 1:1 + {n}].T\n\
-         outs = [np.asarray(getattr(m, f)(t, y, {kwargs})).reshape(-1, k) for f in {fns:?}]\n\
+         outs = [np.asarray(getattr(m, f)(t, y, {u}{kwargs})).reshape(-1, k) for f in {fns:?}]\n\
          o = np.concatenate(outs, axis=0).T.copy()\n\
          for row in o.view(np.uint64):\n    print(' '.join(format(int(x), 'x') for x in row))\n",
-        n = e.state().len(),
         fns = e
             .functions()
             .iter()

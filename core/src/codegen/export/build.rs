@@ -1,6 +1,6 @@
 //! Building an [`Exported`] scene from an arena: each function lowered by
 //! [`Program::lower`] exactly as the Rust code is, its inputs renumbered into the
-//! environment `[t, y, p]`.
+//! environment `[t, y, u, p]`.
 
 use std::ops::Range;
 
@@ -9,9 +9,9 @@ use super::{ExportError, Exported, ExportedFunction};
 use crate::codegen::program::{Op, Program, Slot};
 use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 
-/// Builds an [`Exported`] scene over one arena: the state first, then one function at a
-/// time; a symbol of kind [`SymbolKind::Parameter`] a function reads becomes a parameter
-/// (named as the symbol), the arena's time symbol the time `t`.
+/// Builds an [`Exported`] scene over one arena: the state (and the inputs, if any) first,
+/// then one function at a time; a symbol of kind [`SymbolKind::Parameter`] a function reads
+/// becomes a parameter (named as the symbol), the arena's time symbol the time `t`.
 ///
 /// ```
 /// use precess_core::codegen::ExportBuilder;
@@ -35,39 +35,88 @@ use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 pub struct ExportBuilder {
     exported: Exported,
     state: Vec<SymbolId>,
+    inputs: Vec<SymbolId>,
     parameters: Vec<SymbolId>,
     time: Option<SymbolId>,
 }
 
+/// The symbols of `entries`, each a bare symbol (`first` is the index of the first in the
+/// state, for the error), and their names as identifiers.
+fn symbols(
+    arena: &Arena,
+    entries: &[ExprId],
+    first: usize,
+) -> Result<(Vec<SymbolId>, Vec<String>), ExportError> {
+    let symbols = entries
+        .iter()
+        .enumerate()
+        .map(|(index, &e)| {
+            arena.as_symbol(e).ok_or(ExportError::StateNotSymbol {
+                index: first + index,
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let names = symbols
+        .iter()
+        .map(|&s| identifier(&arena.symbol(s).name))
+        .collect();
+    Ok((symbols, names))
+}
+
 impl ExportBuilder {
     /// A scene called `name` (written as a C and Python identifier) over the state `state`,
-    /// each entry a bare symbol of `arena`.
+    /// each entry a bare symbol of `arena`, without inputs.
     ///
     /// # Errors
     /// [`ExportError::StateNotSymbol`] for an entry that is not a symbol,
     /// [`ExportError::DuplicateName`] for two entries written alike.
     pub fn new(name: &str, arena: &Arena, state: &[ExprId]) -> Result<Self, ExportError> {
-        let symbols = state
-            .iter()
-            .enumerate()
-            .map(|(index, &e)| {
-                arena
-                    .as_symbol(e)
-                    .ok_or(ExportError::StateNotSymbol { index })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let names: Vec<String> = symbols
-            .iter()
-            .map(|&s| identifier(&arena.symbol(s).name))
-            .collect();
+        Self::with_inputs(name, arena, state, &[])
+    }
+
+    /// A scene over the state `state` whose functions also read the inputs `inputs` (bare
+    /// symbols of `arena`, named as they are): values the Rust code takes from a user
+    /// function, which the caller of the C or the Python passes as the array `u`.
+    ///
+    /// ```
+    /// use precess_core::codegen::ExportBuilder;
+    /// use precess_core::sym::Arena;
+    /// // A cart pushed by a force F the caller supplies: ẍ = F/m.
+    /// let mut a = Arena::new();
+    /// let (x, v, force) = (a.input("x"), a.input("v"), a.input("force"));
+    /// let m = a.parameter("m");
+    /// let acc = a.div(force, m).unwrap();
+    /// let mut b = ExportBuilder::with_inputs("cart", &a, &[x, v], &[force]).unwrap();
+    /// b.function(&a, "rhs", "the state derivative", &[v, acc], (2, 1)).unwrap();
+    /// let e = b.finish();
+    /// assert_eq!(e.inputs(), ["force"]);
+    /// assert_eq!(e.eval_with_inputs("rhs", 0.0, &[0.0, 1.0], &[3.0], &[2.0]).unwrap(), vec![1.0, 1.5]);
+    /// assert!(e.c_header().contains("void cart_rhs(double t, const double *y, const double *u, const cart_params *p, double *out);"));
+    /// assert!(e.python().contains("def rhs(t, y, u, *, m):"));
+    /// ```
+    ///
+    /// # Errors
+    /// [`ExportError::StateNotSymbol`] for an entry of either that is not a symbol (its
+    /// index counted through the state, then the inputs), [`ExportError::DuplicateName`] for
+    /// two entries written alike.
+    pub fn with_inputs(
+        name: &str,
+        arena: &Arena,
+        state: &[ExprId],
+        inputs: &[ExprId],
+    ) -> Result<Self, ExportError> {
+        let (state_symbols, state_names) = symbols(arena, state, 0)?;
+        let (input_symbols, input_names) = symbols(arena, inputs, state.len())?;
         let builder = ExportBuilder {
             exported: Exported {
                 name: identifier(name),
-                state: names,
+                state: state_names,
+                inputs: input_names,
                 parameters: Vec::new(),
                 functions: Vec::new(),
             },
-            state: symbols,
+            state: state_symbols,
+            inputs: input_symbols,
             parameters: Vec::new(),
             time: arena.time_symbol(),
         };
@@ -94,11 +143,30 @@ impl ExportBuilder {
         Ok(self)
     }
 
+    /// Names the inputs `names` (written as C and Python identifiers) rather than as their
+    /// symbols are named.
+    ///
+    /// # Errors
+    /// [`ExportError::InputLength`] for a count other than the inputs',
+    /// [`ExportError::DuplicateName`] for two names written alike.
+    pub fn name_inputs(&mut self, names: &[&str]) -> Result<&mut Self, ExportError> {
+        if names.len() != self.inputs.len() {
+            return Err(ExportError::InputLength {
+                what: "input names",
+                found: names.len(),
+                expected: self.inputs.len(),
+            });
+        }
+        self.exported.inputs = names.iter().map(|n| identifier(n)).collect();
+        self.exported.check_names()?;
+        Ok(self)
+    }
+
     /// Adds the function `name` computing `outputs`, of shape `(rows, cols)` (row by row).
     ///
     /// # Errors
     /// [`ExportError::Shape`] if `rows · cols ≠ outputs.len()`, [`ExportError::Unbound`] if
-    /// an output reads a symbol that is neither the time, the state nor a parameter,
+    /// an output reads a symbol that is neither the time, the state, an input nor a parameter,
     /// [`ExportError::DuplicateName`] for a name already used.
     pub fn function(
         &mut self,
@@ -152,7 +220,8 @@ impl ExportBuilder {
     }
 
     /// Adds the function `name`, the Jacobian `∂fᵢ/∂yⱼ` of `of` with respect to the state
-    /// (`of.len()` rows, one column per state entry), differentiated in `arena`.
+    /// (`of.len()` rows, one column per state entry; the inputs held), differentiated in
+    /// `arena`.
     ///
     /// # Errors
     /// As [`ExportBuilder::function`].
@@ -178,20 +247,20 @@ impl ExportBuilder {
         self.exported
     }
 
-    /// `program` with each input read from its place in `[t, y, p]`.
+    /// `program` with each input read from its place in `[t, y, u, p]`.
     fn renumber(
         &mut self,
         arena: &Arena,
         function: &str,
         program: Program,
     ) -> Result<Program, ExportError> {
-        let n = self.state.len();
+        let n = self.state.len() + self.inputs.len();
         let mut ops = program.ops;
         for op in &mut ops {
             let Op::Input(s) = *op else { continue };
             let place = if Some(s) == self.time {
                 0
-            } else if let Some(k) = self.state.iter().position(|&x| x == s) {
+            } else if let Some(k) = self.state.iter().chain(&self.inputs).position(|&x| x == s) {
                 1 + k
             } else if arena.symbol(s).kind == SymbolKind::Parameter {
                 let k = match self.parameters.iter().position(|&x| x == s) {

@@ -12,6 +12,7 @@ const C: Syntax = Syntax {
     math: "",
     literal,
     state: |k| format!("y[{k}]"),
+    input: |k| format!("u[{k}]"),
     parameter: |p| format!("p->{p}"),
 };
 
@@ -49,9 +50,14 @@ impl Exported {
         let name = &self.name;
         let upper = name.to_uppercase();
         let mut s = String::new();
+        let inputs = if self.inputs.is_empty() {
+            String::new()
+        } else {
+            format!(",\n * the inputs u ({upper}_INPUT_LEN values, which the caller supplies)")
+        };
         let _ = writeln!(
             s,
-            "/* {name}.h: the equations of `{name}`, exported by precess.\n *\n * Every function reads the time t, the state y ({upper}_STATE_LEN values) and the\n * parameters p, and writes its outputs to out (a matrix row by row). None allocates.\n * For the bits precess computes, compile without contracting a*b + c into a fused\n * multiply-add (gcc, clang: -ffp-contract=off) and link the C library's libm. */"
+            "/* {name}.h: the equations of `{name}`, exported by precess.\n *\n * Every function reads the time t, the state y ({upper}_STATE_LEN values){inputs} and the\n * parameters p, and writes its outputs to out (a matrix row by row). None allocates.\n * For the bits precess computes, compile without contracting a*b + c into a fused\n * multiply-add (gcc, clang: -ffp-contract=off) and link the C library's libm. */"
         );
         let _ = writeln!(s, "#ifndef PRECESS_{upper}_H\n#define PRECESS_{upper}_H\n");
         let _ = writeln!(s, "#ifdef __cplusplus\nextern \"C\" {{\n#endif\n");
@@ -59,6 +65,16 @@ impl Exported {
         let _ = writeln!(s, "#define {upper}_STATE_LEN {}", self.state.len());
         for (k, y) in self.state.iter().enumerate() {
             let _ = writeln!(s, "#define {upper}_Y_{} {k}", y.to_uppercase());
+        }
+        if !self.inputs.is_empty() {
+            let _ = writeln!(
+                s,
+                "\n/* The inputs u the caller supplies (in Rust, user functions' values), by index. */"
+            );
+            let _ = writeln!(s, "#define {upper}_INPUT_LEN {}", self.inputs.len());
+            for (k, u) in self.inputs.iter().enumerate() {
+                let _ = writeln!(s, "#define {upper}_U_{} {k}", u.to_uppercase());
+            }
         }
         let _ = writeln!(
             s,
@@ -77,7 +93,7 @@ impl Exported {
             let _ = writeln!(s, "\n/* {}: {} x {} */", f.doc, f.rows, f.cols);
             let _ = writeln!(s, "#define {upper}_{fu}_ROWS {}", f.rows);
             let _ = writeln!(s, "#define {upper}_{fu}_COLS {}", f.cols);
-            let _ = writeln!(s, "{};", prototype(name, f));
+            let _ = writeln!(s, "{};", self.prototype(f));
         }
         let _ = writeln!(s, "\n#ifdef __cplusplus\n}}\n#endif\n\n#endif");
         s
@@ -106,8 +122,11 @@ impl Exported {
             "/* {name}.c: the equations of `{name}`, exported by precess (see {name}.h). */\n#include <math.h>\n#include \"{name}.h\""
         );
         for f in &self.functions {
-            let _ = writeln!(s, "\n/* {} */\n{}\n{{", f.doc, prototype(name, f));
+            let _ = writeln!(s, "\n/* {} */\n{}\n{{", f.doc, self.prototype(f));
             let _ = writeln!(s, "    (void)t;\n    (void)y;\n    (void)p;");
+            if !self.inputs.is_empty() {
+                let _ = writeln!(s, "    (void)u;");
+            }
             for (i, op) in f.program.ops.iter().enumerate() {
                 let rhs = C.expression(self, op);
                 let _ = writeln!(s, "    const double v{i} = {rhs};");
@@ -121,10 +140,19 @@ impl Exported {
     }
 }
 
-/// `void name_f(double t, const double *y, const name_params *p, double *out)`.
-fn prototype(name: &str, f: &ExportedFunction) -> String {
-    format!(
-        "void {name}_{}(double t, const double *y, const {name}_params *p, double *out)",
-        f.name
-    )
+impl Exported {
+    /// `void name_f(double t, const double *y, const name_params *p, double *out)`, with
+    /// `const double *u` after `y` when the scene has inputs.
+    fn prototype(&self, f: &ExportedFunction) -> String {
+        let name = &self.name;
+        let u = if self.inputs.is_empty() {
+            ""
+        } else {
+            " const double *u,"
+        };
+        format!(
+            "void {name}_{}(double t, const double *y,{u} const {name}_params *p, double *out)",
+            f.name
+        )
+    }
 }

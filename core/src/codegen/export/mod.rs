@@ -1,14 +1,16 @@
 //! Export of a scene's equations as C99 and as a NumPy module: what SymPy's codegen and PyDy
 //! give, from the straight-line [`Program`]s precess already lowers.
 //!
-//! An [`Exported`] scene is a name, the names of its state y and of its parameters p, and
-//! functions `f(t, y, p)` (the state derivative, the quantities and the Jacobians the scene
-//! has), each one program. Its emitters write
+//! An [`Exported`] scene is a name, the names of its state y, of its inputs u (values a
+//! user function gives in Rust, such as a motor's torque, which the caller of the C or the
+//! Python supplies; most scenes have none) and of its parameters p, and functions
+//! `f(t, y, u, p)` (the state derivative, the quantities and the Jacobians the scene has),
+//! each one program. Its emitters write
 //! - [`Exported::c_header`] and [`Exported::c_source`]: C99, no allocation, the parameters
 //!   as a struct, one `void name_f(double t, const double *y, const name_params *p,
-//!   double *out)` per function;
+//!   double *out)` per function (with `const double *u` after `y` when the scene has inputs);
 //! - [`Exported::python`]: a module over NumPy, vectorised over many states (y of shape
-//!   `(n,)` or `(n, k)`), the parameters as keyword arguments.
+//!   `(n,)` or `(n, k)`), the parameters as keyword arguments (`u` positional after `y`).
 //!
 //! Both execute the program's instructions in its order, one IEEE operation each, so a C
 //! compiler that does not contract `a·b + c` into a fused multiply–add (`-ffp-contract=off`)
@@ -39,14 +41,16 @@ use super::program::Program;
 pub struct Exported {
     name: String,
     state: Vec<String>,
+    inputs: Vec<String>,
     parameters: Vec<String>,
     functions: Vec<ExportedFunction>,
 }
 
-/// One exported function `out = f(t, y, p)`.
+/// One exported function `out = f(t, y, u, p)`.
 ///
-/// Its program reads the environment `[t, y₀ … yₙ₋₁, p₀ … pₘ₋₁]`: the time, the state and
-/// the parameters, in the order of [`Exported::state`] and [`Exported::parameters`].
+/// Its program reads the environment `[t, y₀ … yₙ₋₁, u₀ … uₖ₋₁, p₀ … pₘ₋₁]`: the time, the
+/// state, the inputs and the parameters, in the order of [`Exported::state`],
+/// [`Exported::inputs`] and [`Exported::parameters`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExportedFunction {
     name: String,
@@ -83,7 +87,7 @@ impl ExportedFunction {
         self.len() == 0
     }
 
-    /// The program, reading the environment `[t, y, p]`.
+    /// The program, reading the environment `[t, y, u, p]`.
     pub fn program(&self) -> &Program {
         &self.program
     }
@@ -98,6 +102,13 @@ impl Exported {
     /// The names of the state's entries, in order.
     pub fn state(&self) -> &[String] {
         &self.state
+    }
+
+    /// The names of the inputs u, in order: values the scene's Rust code takes from a user
+    /// function (a motor's torque, a user torque's components) and the exported functions
+    /// take from their caller. Empty for most scenes, whose C and Python then take no `u`.
+    pub fn inputs(&self) -> &[String] {
+        &self.inputs
     }
 
     /// The names of the parameters the functions read (the struct's fields for a derived
@@ -120,10 +131,10 @@ impl Exported {
 /// Why a scene could not be exported, or an exported text not read.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum ExportError {
-    /// A function reads a symbol that is neither the time, a state entry nor a parameter (a
-    /// user function's value, a rate not in the state).
+    /// A function reads a symbol that is neither the time, a state entry, an input nor a
+    /// parameter (a user function's value not declared an input, a rate not in the state).
     #[error(
-        "the exported function `{function}` reads `{symbol}`, which is neither the time, the state nor a parameter"
+        "the exported function `{function}` reads `{symbol}`, which is neither the time, the state, an input nor a parameter"
     )]
     Unbound {
         /// The function.
@@ -165,14 +176,15 @@ pub enum ExportError {
     /// The inputs given to [`Exported::eval`] have the wrong length.
     #[error("`{what}` has {found} values, the scene {expected}")]
     InputLength {
-        /// `"y"`, `"p"` or `"state names"`.
+        /// `"y"`, `"u"`, `"p"`, `"state names"` or `"input names"`.
         what: &'static str,
         /// The length given.
         found: usize,
         /// The length expected.
         expected: usize,
     },
-    /// The derive could not export the scene (a user function's value in its equations).
+    /// The derive could not export the scene (a value found only at run time in its
+    /// equations, such as a principal frame of field products of inertia).
     #[error("the scene cannot be exported: {reason}")]
     NotExportable {
         /// Why.
@@ -188,9 +200,12 @@ pub enum ExportError {
     },
 }
 
-/// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, a free
-/// body, a body on a table, or the body's own torque-free Euler equations) and every
-/// `#[derive(Mechanism)]` implements it.
+/// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, with or
+/// without motors, a free body, a body on a table, or the body's own torque-free Euler
+/// equations), every `#[derive(Mechanism)]` (a tree's state derivative, the pieces of a
+/// rolling or a closed mechanism's equations, which their runs project numerically) and every
+/// `taylor_system!` implements it. The values of user functions (motors, user torques,
+/// forces, wrenches, couples, efforts) are the export's inputs ([`Exported::inputs`]).
 ///
 /// The macro writes the scene's [`Exported`] as text ([`Export::EXPORTED`]) while it
 /// expands, from the same programs its Rust methods are emitted from; the methods read it
@@ -198,8 +213,8 @@ pub enum ExportError {
 ///
 /// # Errors
 /// Every method returns [`ExportError::NotExportable`] when the equations read a value the
-/// export cannot (a user function's torque), and [`ExportError::Text`] never for the text the
-/// macro wrote.
+/// export cannot (one found only at run time), and [`ExportError::Text`] never for the text
+/// the macro wrote.
 pub trait Export {
     /// The [`Exported::to_text`] of the scene, or why it could not be exported.
     const EXPORTED: Result<&'static str, &'static str>;
@@ -232,6 +247,12 @@ pub trait Export {
     /// The names of the state's entries.
     fn state_names() -> Result<Vec<String>, ExportError> {
         Ok(Self::exported()?.state)
+    }
+
+    /// The names of the inputs the caller supplies (user functions' values: a motor's
+    /// torque, a user torque's components), empty for most scenes.
+    fn input_names() -> Result<Vec<String>, ExportError> {
+        Ok(Self::exported()?.inputs)
     }
 
     /// The names of the parameters (the fields the equations read).

@@ -3,8 +3,8 @@
 
 use super::{ExportError, Exported};
 
-/// Words C99 or Python reserve, and the names the emitted code binds (`t`, `y`, `p`, `out`,
-/// `np`, `math`): a name among them gets a trailing `_`.
+/// Words C99 or Python reserve, and the names the emitted code binds (`t`, `y`, `u`, `p`,
+/// `out`, `np`, `math`): a name among them gets a trailing `_`.
 const RESERVED: &[&str] = &[
     // C99
     "auto",
@@ -76,6 +76,7 @@ const RESERVED: &[&str] = &[
     // The emitted code's own names.
     "t",
     "y",
+    "u",
     "p",
     "out",
     "np",
@@ -103,13 +104,14 @@ pub(super) fn identifier(name: &str) -> String {
 }
 
 impl Exported {
-    /// Refuses two state entries, two parameters, a state entry and a parameter, or two
-    /// functions written alike.
+    /// Refuses two values (state entries, inputs, parameters) or two functions written
+    /// alike.
     pub(super) fn check_names(&self) -> Result<(), ExportError> {
         let mut seen: Vec<&str> = Vec::new();
         let values = self
             .state
             .iter()
+            .chain(&self.inputs)
             .chain(&self.parameters)
             .map(String::as_str);
         for name in values {
@@ -144,6 +146,7 @@ mod tests {
         assert_eq!(identifier("lambda"), "lambda_");
         assert_eq!(identifier("double"), "double_");
         assert_eq!(identifier("y"), "y_");
+        assert_eq!(identifier("u"), "u_");
         assert_eq!(identifier("_v3"), "p_v3");
     }
 }

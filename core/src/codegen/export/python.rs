@@ -11,6 +11,7 @@ const PYTHON: Syntax = Syntax {
     math: "np.",
     literal,
     state: |k| format!("y[{k}]"),
+    input: |k| format!("u[{k}]"),
     parameter: |p| format!("np.asarray({p}, dtype=np.float64)"),
 };
 
@@ -34,7 +35,8 @@ impl Exported {
     /// The Python module (save it as `<name>.py`): for each function
     /// `f(t, y, *, p₀, …)`, with `y` of shape `(n,)` or `(n, k)` (k states, as SciPy's
     /// `solve_ivp(..., vectorized=True)` passes them) and the parameters as keyword arguments
-    /// (numbers, or arrays broadcasting against a row of `y`), returning an array of shape
+    /// (numbers, or arrays broadcasting against a row of `y`); a scene with inputs takes them
+    /// as `f(t, y, u, *, p₀, …)`, `u` of shape `(m,)` or `(m, k)`, broadcasting as `y`; returning an array of shape
     /// `(rows,)` or `(rows, cols)` followed by the states' shape. Every instruction is one
     /// NumPy operation on float64, in the program's order.
     ///
@@ -58,12 +60,20 @@ impl Exported {
             format!("({})", quoted.join(" "))
         };
         let mut s = String::new();
+        let inputs = if self.inputs.is_empty() {
+            ""
+        } else {
+            ", the inputs u (INPUTS, values the caller supplies;\nshape (m,) or (m, k))"
+        };
         let _ = writeln!(
             s,
-            "\"\"\"The equations of `{name}`, exported by precess.\n\nEach function takes the time t, the state y (shape (n,), or (n, k) for k states at\nonce) and the parameters as keyword arguments, and returns its outputs (shape (rows,)\nor (rows, cols), followed by the states' shape).\n\"\"\"\n\nimport numpy as np\n"
+            "\"\"\"The equations of `{name}`, exported by precess.\n\nEach function takes the time t, the state y (shape (n,), or (n, k) for k states at\nonce){inputs} and the parameters as keyword arguments, and returns its outputs (shape (rows,)\nor (rows, cols), followed by the states' shape).\n\"\"\"\n\nimport numpy as np\n"
         );
         let _ = writeln!(s, "NAME = \"{name}\"");
         let _ = writeln!(s, "STATE = {}", tuple(&self.state));
+        if !self.inputs.is_empty() {
+            let _ = writeln!(s, "INPUTS = {}", tuple(&self.inputs));
+        }
         let _ = writeln!(s, "PARAMETERS = {}", tuple(&self.parameters));
         for f in &self.functions {
             let kwargs: String = self.parameters.iter().map(|p| format!(", {p}")).collect();
@@ -72,15 +82,19 @@ impl Exported {
             } else {
                 ", *"
             };
-            let _ = writeln!(s, "\n\ndef {}(t, y{star}{kwargs}):", f.name);
+            let u = if self.inputs.is_empty() { "" } else { ", u" };
+            let _ = writeln!(s, "\n\ndef {}(t, y{u}{star}{kwargs}):", f.name);
             let _ = writeln!(s, "    \"\"\"{}: {} x {}.\"\"\"", f.doc, f.rows, f.cols);
             let _ = writeln!(s, "    y = np.asarray(y, dtype=np.float64)");
+            let mut shapes = String::new();
+            if !self.inputs.is_empty() {
+                let _ = writeln!(s, "    u = np.asarray(u, dtype=np.float64)");
+                shapes.push_str(", u.shape[1:]");
+            }
             let _ = writeln!(s, "    t = np.asarray(t, dtype=np.float64)");
-            let shapes: String = self
-                .parameters
-                .iter()
-                .map(|p| format!(", np.shape({p})"))
-                .collect();
+            for p in &self.parameters {
+                let _ = write!(shapes, ", np.shape({p})");
+            }
             let _ = writeln!(
                 s,
                 "    _shape = np.broadcast_shapes(y.shape[1:], t.shape{shapes})"

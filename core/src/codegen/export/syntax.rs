@@ -1,6 +1,6 @@
 //! What the C and the Python write differently for one instruction: the locals' prefix, the
-//! math functions' namespace, constants, and how the time, the state and the parameters are
-//! read. The instruction's shape is written once, here.
+//! math functions' namespace, constants, and how the time, the state, the inputs and the
+//! parameters are read. The instruction's shape is written once, here.
 
 use super::Exported;
 use crate::codegen::program::Op;
@@ -15,6 +15,8 @@ pub(super) struct Syntax {
     pub literal: fn(f64) -> String,
     /// The state entry `k`.
     pub state: fn(usize) -> String,
+    /// The input `k`.
+    pub input: fn(usize) -> String,
     /// The parameter named so.
     pub parameter: fn(&str) -> String,
 }
@@ -23,13 +25,14 @@ impl Syntax {
     /// The right-hand side of the local bound to `op`.
     pub(super) fn expression(&self, e: &Exported, op: &Op) -> String {
         let (v, m) = (self.local, self.math);
-        let n = e.state.len();
+        let (n, inputs) = (e.state.len(), e.inputs.len());
         match *op {
             Op::Const(c) => (self.literal)(c),
             Op::Input(k) => match k.index() {
                 0 => "t".to_owned(),
                 k if k <= n => (self.state)(k - 1),
-                k => (self.parameter)(&e.parameters[k - 1 - n]),
+                k if k <= n + inputs => (self.input)(k - 1 - n),
+                k => (self.parameter)(&e.parameters[k - 1 - n - inputs]),
             },
             Op::Add(a, b) => format!("{v}{a} + {v}{b}"),
             Op::Sub(a, b) => format!("{v}{a} - {v}{b}"),

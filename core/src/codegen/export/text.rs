@@ -6,6 +6,7 @@
 //! precess-export 1
 //! name pendulum
 //! state theta omega
+//! inputs u0      only for a scene with inputs (the environment is [t, y, u, p])
 //! parameters g l
 //! function rhs 2 1 the state derivative
 //! i 2            one instruction a line: c <bits>, i <place>, + - * / a b,
@@ -30,6 +31,9 @@ impl Exported {
         let mut s = String::new();
         let _ = writeln!(s, "{HEADER}\nname {}", self.name);
         let _ = writeln!(s, "state {}", self.state.join(" ").trim_end());
+        if !self.inputs.is_empty() {
+            let _ = writeln!(s, "inputs {}", self.inputs.join(" "));
+        }
         let _ = writeln!(s, "parameters {}", self.parameters.join(" ").trim_end());
         for f in &self.functions {
             let doc = f.doc.replace(['\n', '\r'], " ");
@@ -63,42 +67,32 @@ impl Exported {
     /// instruction, an operand that is not an earlier instruction, an input past the
     /// environment, an output count that does not fill the function's shape, a repeated name.
     pub fn from_text(text: &str) -> Result<Exported, ExportError> {
-        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
-        let mut next = |want: &str| -> Result<(usize, Vec<&str>), ExportError> {
-            let (n, line) = lines
-                .next()
-                .ok_or_else(|| malformed(0, format!("the text ends before `{want}`")))?;
-            Ok((n, line.split_whitespace().collect()))
-        };
-        let (n, header) = next(HEADER)?;
-        if header.join(" ") != HEADER {
-            return Err(malformed(n, format!("expected `{HEADER}`")));
-        }
-        let mut field = |key: &str| -> Result<Vec<String>, ExportError> {
-            let (n, words) = next(key)?;
-            match words.split_first() {
-                Some((&k, rest)) if k == key => Ok(rest.iter().map(|w| (*w).to_owned()).collect()),
-                _ => Err(malformed(n, format!("expected `{key} …`"))),
-            }
-        };
-        let name = field("name")?.concat();
-        let state = field("state")?;
-        let parameters = field("parameters")?;
-        let env = 1 + state.len() + parameters.len();
-        let mut exported = Exported {
-            name,
-            state,
-            parameters,
-            functions: Vec::new(),
-        };
         let mut rest = text
             .lines()
             .enumerate()
-            .skip(4)
-            .map(|(i, l)| (i + 1, l))
+            .map(|(i, l)| (i + 1, l.split_whitespace().collect::<Vec<_>>()))
             .peekable();
-        while let Some((n, line)) = rest.next() {
-            let words: Vec<&str> = line.split_whitespace().collect();
+        let (n, header) = next_line(&mut rest, HEADER)?;
+        if header.join(" ") != HEADER {
+            return Err(malformed(n, format!("expected `{HEADER}`")));
+        }
+        let name = field(&mut rest, "name")?.concat();
+        let state = field(&mut rest, "state")?;
+        // Only a scene with inputs has the line.
+        let inputs = match rest.peek() {
+            Some((_, words)) if words.first() == Some(&"inputs") => field(&mut rest, "inputs")?,
+            _ => Vec::new(),
+        };
+        let parameters = field(&mut rest, "parameters")?;
+        let env = 1 + state.len() + inputs.len() + parameters.len();
+        let mut exported = Exported {
+            name,
+            state,
+            inputs,
+            parameters,
+            functions: Vec::new(),
+        };
+        while let Some((n, words)) = rest.next() {
             let [kw, fname, rows, cols, doc @ ..] = words.as_slice() else {
                 return Err(malformed(
                     n,
@@ -111,10 +105,9 @@ impl Exported {
             let (rows, cols) = (count(n, rows)?, count(n, cols)?);
             let mut ops: Vec<Op> = Vec::new();
             let outputs = loop {
-                let (n, line) = rest
+                let (n, words) = rest
                     .next()
                     .ok_or_else(|| malformed(n, "the function has no `outputs` line".into()))?;
-                let words: Vec<&str> = line.split_whitespace().collect();
                 if words.first() == Some(&"outputs") {
                     let outputs = words[1..]
                         .iter()
@@ -142,6 +135,28 @@ impl Exported {
             .check_names()
             .map_err(|e| malformed(0, e.to_string()))?;
         Ok(exported)
+    }
+}
+
+/// The next line's number and words, or the error of a text that ends before `want`.
+fn next_line<'a>(
+    lines: &mut impl Iterator<Item = (usize, Vec<&'a str>)>,
+    want: &str,
+) -> Result<(usize, Vec<&'a str>), ExportError> {
+    lines
+        .next()
+        .ok_or_else(|| malformed(0, format!("the text ends before `{want}`")))
+}
+
+/// The words after `key` on the next line, which must start with it.
+fn field<'a>(
+    lines: &mut impl Iterator<Item = (usize, Vec<&'a str>)>,
+    key: &str,
+) -> Result<Vec<String>, ExportError> {
+    let (n, words) = next_line(lines, key)?;
+    match words.split_first() {
+        Some((&k, rest)) if k == key => Ok(rest.iter().map(|w| (*w).to_owned()).collect()),
+        _ => Err(malformed(n, format!("expected `{key} …`"))),
     }
 }
 

@@ -91,6 +91,8 @@ pub(super) fn expand(ex: &mut Expansion, checked: &CheckedMechanism) -> Option<T
     let check_parameters =
         super::super::parameters::method_with_loops(&low, arena, checked, &sides);
     let poses = super::super::poses::expand(cx, ident, arena, &method, checked, coords);
+    let inputs = super::effort_inputs(&checked.efforts);
+    let poses = crate::lang::export::closed(ident, arena, (&derivation, &inputs), poses);
     let doc_rows = format!(
         "The closure rows, `body.axis` for the ground-axis component of each closing point's \
          separation: the order of φ, of A's rows and of `multipliers` ({m} rows, {k} free \

@@ -126,6 +126,8 @@ pub(super) fn expand(
     // The links' poses at q, as the tree mechanisms give them (`precess::animate::mechanism`
     // draws a rolling mechanism from them): q is the first n slots of the rolling state.
     let poses = super::super::poses::expand(cx, ident, arena, &method, checked, coords);
+    let inputs = super::effort_inputs(&checked.efforts);
+    let poses = crate::lang::export::rolling(ident, arena, (&derivation, &inputs), poses);
     Some(quote! {
         #[automatically_derived]
         impl #ident {
