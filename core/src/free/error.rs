@@ -161,8 +161,9 @@ pub enum FreeError {
 impl FreeError {
     /// This refusal as the integrators report it, from
     /// [`System::check_parameters`](crate::ode::System::check_parameters), as every rigid
-    /// scene reports its own ([`crate::rigid`] holds the shared conversion): a bad parameter, coefficient or inertia is [`OdeError::InvalidSystemParameter`] naming it
-    /// with its value and this error's message ([`FreeError::Ode`] is passed on,
+    /// scene reports its own ([`crate::rigid`] holds the shared conversion): a bad parameter,
+    /// coefficient or inertia is [`OdeError::InvalidSystemParameter`] naming it with its
+    /// value and this error's message ([`FreeError::Ode`] is passed on,
     /// [`FreeError::NonFiniteMotor`] names the motor in [`OdeError::NonFiniteInput`]); a
     /// [`FreeError::NonFiniteWrench`] is named `wrench: <part>` with its first component that
     /// is not finite.
