@@ -95,6 +95,17 @@ pub struct EquationsOfMotion {
 }
 
 impl EquationsOfMotion {
+    /// M's entries row by row, then f: the outputs that one straight-line program lowers
+    /// to compute both (the derive's `(M, f)` methods and the export's `mass` and `forcing`).
+    pub fn mass_then_forcing(&self) -> Vec<ExprId> {
+        self.mass
+            .iter()
+            .flatten()
+            .chain(&self.forcing)
+            .copied()
+            .collect()
+    }
+
     /// Derives the equations of motion of the Lagrangian `l` under the generalised forces
     /// `forces` (one per coordinate).
     ///

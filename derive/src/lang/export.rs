@@ -20,6 +20,7 @@ use std::cell::RefCell;
 use precess_core::codegen::{ExportBuilder, ExportError, Exported};
 use precess_core::contact::ContactDerivation;
 use precess_core::free::FreeDerivation;
+use precess_core::lagrange::EquationsOfMotion;
 use precess_core::mechanism::MechanismDerivation;
 use precess_core::mechanism::loops::LoopDerivation;
 use precess_core::mechanism::rolling::RollingDerivation;
@@ -163,6 +164,18 @@ fn build_with(
 }
 
 /// A function returning all it lowers.
+/// The `mass` and `forcing` functions of a mechanism's tree, documented by `docs`, lowered
+/// together from `eqs` as its `(M, f)` method lowers them.
+fn mass_and_forcing<'a>(eqs: &EquationsOfMotion, docs: [&'a str; 2]) -> [Function<'a>; 2] {
+    let n = eqs.coords.len();
+    let both = eqs.mass_then_forcing();
+    let [mass, forcing] = docs;
+    [
+        ("mass", mass, both.clone(), 0..n * n, (n, n)),
+        ("forcing", forcing, both, n * n..n * n + n, (n, 1)),
+    ]
+}
+
 fn whole<'a>(name: &'a str, doc: &'a str, outputs: Vec<ExprId>) -> Function<'a> {
     let n = outputs.len();
     (name, doc, outputs, 0..n, (n, 1))
@@ -317,14 +330,6 @@ pub fn rolling(
     let c = d.coordinates();
     let (n, m) = (c.len(), d.rows());
     let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
-    let eqs = &d.equations;
-    let dynamics: Vec<ExprId> = eqs
-        .mass
-        .iter()
-        .flatten()
-        .chain(&eqs.forcing)
-        .copied()
-        .collect();
     let rows: Vec<ExprId> = d
         .constraints
         .coefficients
@@ -341,21 +346,16 @@ pub fn rolling(
         .map(|h| h.unwrap_or(zero))
         .collect();
     let energy = arena.add(d.kinetic, d.potential);
-    let f = [
-        (
-            "mass",
+    let [mass, forcing] = mass_and_forcing(
+        &d.equations,
+        [
             "the mass matrix M(q) of the unconstrained tree, M q'' = f + A^T lambda",
-            dynamics.clone(),
-            0..n * n,
-            (n, n),
-        ),
-        (
-            "forcing",
             "the forcing f(t, q, q') of the unconstrained tree",
-            dynamics,
-            n * n..n * n + n,
-            (n, 1),
-        ),
+        ],
+    );
+    let f = [
+        mass,
+        forcing,
         (
             "constraints",
             "the wheels' constraint rows A(q), A q' = 0",
@@ -397,14 +397,6 @@ pub fn closed(
     let c = d.coordinates();
     let (n, m) = (c.len(), d.constraints.len());
     let state: Vec<ExprId> = c.q.iter().chain(&c.rates).copied().collect();
-    let eqs = &d.equations;
-    let dynamics: Vec<ExprId> = eqs
-        .mass
-        .iter()
-        .flatten()
-        .chain(&eqs.forcing)
-        .copied()
-        .collect();
     let zero = arena.zero();
     let closure: Vec<ExprId> = d
         .constraints
@@ -414,21 +406,16 @@ pub fn closed(
         .chain(d.constraints.coefficients.iter().flatten().copied())
         .collect();
     let energy = arena.add(d.kinetic, d.potential);
-    let f = [
-        (
-            "mass",
+    let [mass, forcing] = mass_and_forcing(
+        &d.equations,
+        [
             "the mass matrix M(q) of the tree cut open, M q'' = f + A^T lambda",
-            dynamics.clone(),
-            0..n * n,
-            (n, n),
-        ),
-        (
-            "forcing",
             "the forcing f(t, q, q') of the tree cut open",
-            dynamics,
-            n * n..n * n + n,
-            (n, 1),
-        ),
+        ],
+    );
+    let f = [
+        mass,
+        forcing,
         (
             "closure",
             "the closure rows phi(q), zero when every loop is closed",

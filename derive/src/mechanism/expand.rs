@@ -282,13 +282,7 @@ pub(super) fn mass_forcing(
     eqs: &precess_core::lagrange::EquationsOfMotion,
 ) -> TokenStream {
     let (p, n) = (Private, eqs.coords.len());
-    let dynamics: Vec<ExprId> = eqs
-        .mass
-        .iter()
-        .flatten()
-        .chain(&eqs.forcing)
-        .copied()
-        .collect();
+    let dynamics = eqs.mass_then_forcing();
     method.body(arena, &dynamics, |o| {
         let (mm, f) = o.split_at((n * n).min(o.len()));
         quote! {(
