@@ -10,9 +10,10 @@ use std::path::{Path, PathBuf};
 use precess::ode::{AdaptiveConfig, Dop853, FnSystem, Run, Trajectory};
 use precess::plot::{self, Coordinate, Figure, PlotError, Scale, Series, Style, Work, axis_range};
 
-/// A directory of this test's own under the system's temporary directory.
+/// A directory of this test's own under the target's scratch space (not the system's temporary
+/// directory, where a directory per run piled up): a run overwrites the last one's figures.
 fn dir(test: &str) -> PathBuf {
-    std::env::temp_dir().join(format!("precess-plot-{}-{test}", std::process::id()))
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("plot-{test}"))
 }
 
 fn read(path: &Path) -> String {

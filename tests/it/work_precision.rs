@@ -42,7 +42,8 @@ fn quick_rungs_measure_small_errors_and_write_the_report() {
         .unwrap();
     assert!(b5_exact.outcome.error < 1e-14);
 
-    let dir = std::env::temp_dir().join(format!("precess-wp-{}", std::process::id()));
+    // Under the target's scratch space: the report written here replaces the last run's.
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("work-precision");
     let doc = dir.join("docs/performance.md");
     std::fs::create_dir_all(doc.parent().unwrap()).unwrap();
     let outside = "# Performance\n\nkept above\n\n<!-- work-precision:begin -->\nold\n<!-- work-precision:end -->\n\n## Mechanisms at scale\n\nkept below\n";

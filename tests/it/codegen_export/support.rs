@@ -29,9 +29,10 @@ impl Case {
 /// Per case, per function (in the export's order), the outputs.
 pub type Outputs = Vec<Vec<Vec<f64>>>;
 
-/// A fresh directory for one test's files.
+/// The directory of one test's files, under the target's scratch space (not the system's
+/// temporary directory, where a directory per run piled up): a run overwrites the last one's.
 fn dir(test: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("precess-export-{}-{test}", std::process::id()));
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("export-{test}"));
     std::fs::create_dir_all(&d).expect("temporary directory");
     d
 }
