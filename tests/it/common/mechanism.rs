@@ -8,7 +8,6 @@ pub use precess_testkit::mechanism::{NumBody, NumJoint, NumLoad, NumMechanism, r
 
 use nalgebra::{Matrix3, Vector3};
 use precess::mechanism::{CoordinateLoad, JointKind, MechanismScene, Parent, Spring};
-use precess::rigid::AngleSequence;
 use precess::sym::{Arena, ExprId};
 
 /// How the numbers enter the scene: as exact literals (folded into the derivation) or as
