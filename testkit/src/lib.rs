@@ -20,6 +20,7 @@ pub mod monte_carlo;
 pub mod newton_euler;
 pub mod particles;
 pub mod rng;
+pub mod rotations;
 pub mod scenes;
 pub mod systems;
 pub mod work_precision;
