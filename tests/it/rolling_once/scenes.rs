@@ -10,7 +10,7 @@
 
 use precess::contact::{ContactDynamics, STATE_LEN, attitude_of, layout};
 use precess::mechanism::rolling::RollingDynamics;
-use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+use precess::nalgebra::{Matrix3, Rotation3, Vector3};
 use precess::prelude::*;
 
 /// The disk's radius r (m).
