@@ -12,6 +12,7 @@ extern crate self as precess_testkit;
 pub mod bicycle;
 pub mod constrained;
 pub mod contact;
+pub mod eulerian_top;
 pub mod linkages;
 pub mod mechanism;
 /// The uncertain heavy top of the `monte_carlo_top` example, its very file included, so
