@@ -12,6 +12,7 @@ extern crate self as precess_testkit;
 pub mod bicycle;
 pub mod constrained;
 pub mod contact;
+pub mod euler;
 pub mod eulerian_top;
 pub mod linkages;
 pub mod mechanism;
