@@ -18,6 +18,9 @@ pub fn generic_rhs(i: &Matrix3<f64>, w: &Vector3<f64>, g: &Vector3<f64>) -> Vect
     inverse * (g - w.cross(&(i * w)))
 }
 
+/// A right-hand side ω̇(ω, G), all three in one body's axes.
+pub type Rhs<'a> = &'a dyn Fn(&Vector3<f64>, &Vector3<f64>) -> Vector3<f64>;
+
 /// The worst relative error |ω̇ − ω̇_generic| / max(|ω̇_generic|, 1) of `principal_rhs` (ω and
 /// G in principal axes to ω̇ in principal axes) against [`generic_rhs`] of the tensor `i`
 /// in description axes, `r` the principal axes in description axes, at 10⁴ states drawn
@@ -25,7 +28,7 @@ pub fn generic_rhs(i: &Matrix3<f64>, w: &Vector3<f64>, g: &Vector3<f64>) -> Vect
 pub fn principal_rhs_error(
     i: &Matrix3<f64>,
     r: &Matrix3<f64>,
-    principal_rhs: &dyn Fn(&Vector3<f64>, &Vector3<f64>) -> Vector3<f64>,
+    principal_rhs: Rhs<'_>,
     seed: u64,
 ) -> f64 {
     let mut rng = Rng::new(seed);
