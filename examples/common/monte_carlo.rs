@@ -41,7 +41,7 @@ pub fn tolerances() -> AdaptiveConfig {
     AdaptiveConfig::with_tol(1e-12, 1e-12)
 }
 
-/// A diagonal covariance: standard deviation `angle` on the three angles [rad] and `rate`
+/// A diagonal covariance: standard deviation `angle` on the three angles \[rad\] and `rate`
 /// on the three rates [rad/s].
 pub fn covariance(angle: f64, rate: f64) -> DMatrix<f64> {
     let d = [angle, angle, angle, rate, rate, rate].map(|s| s * s);

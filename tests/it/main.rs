@@ -8,7 +8,7 @@
 
 // Each of the two crates uses part of the shared helpers (the mechanism references are the
 // other crate's, the body sums this one's).
-#[allow(dead_code)]
+#[allow(dead_code, unused_imports)]
 mod common;
 
 /// Mass properties, shapes and their validation.

@@ -1,17 +1,17 @@
 //! The physics `examples/monte_carlo_top.rs` relies on, through its own code
-//! (`common/monte_carlo.rs`): the flow map of the run-time variational equations is the
-//! derived top's flow and its central differences; for a small P₀ the sample moments of an
-//! ensemble of Gaussian starts agree with the nominal state and Φ P₀ Φᵀ within their
-//! sampling errors; for a wide P₀ they do not.
+//! (`common/monte_carlo.rs`, compiled optimised as the testkit's `monte_carlo`): the flow
+//! map of the run-time variational equations is the derived top's flow and its central
+//! differences; for a small P₀ the sample moments of an ensemble of Gaussian starts agree
+//! with the nominal state and Φ P₀ Φᵀ within their sampling errors; for a wide P₀ they do
+//! not.
 
-#[path = "../../examples/common/monte_carlo.rs"]
-mod monte_carlo;
-
-use monte_carlo::{Moments, UncertainTop, X0, covariance, flow_maps, mahalanobis2, tolerances};
 use precess::ensemble::Ensemble;
 use precess::nalgebra::DMatrix;
 use precess::ode::Dop853;
 use precess::prelude::*;
+use precess_testkit::monte_carlo::{
+    self, Moments, UncertainTop, X0, covariance, flow_maps, mahalanobis2, tolerances,
+};
 
 const TIMES: [f64; 3] = [1.0, 4.0, 12.0];
 

@@ -12,7 +12,7 @@ pub struct Eulerian {
 
 impl Eulerian {
     pub fn state(r: &Matrix3<f64>, w: &Vector3<f64>) -> [f64; 7] {
-        let q = UnitQuaternion::from_matrix(r);
+        let q = precess_testkit::rotations::quaternion_of(r);
         [q.w, q.i, q.j, q.k, w.x, w.y, w.z]
     }
 

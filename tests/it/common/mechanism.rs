@@ -1,85 +1,14 @@
-//! Shared by the mechanism tests: a numeric description of a mechanism, the symbolic scene
-//! built from it, and an independent recursive Newton–Euler algorithm (rnea.rs) to check the
-//! derived q̈ against.
+//! Shared by the mechanism tests: a numeric description of a mechanism and an independent
+//! recursive Newton–Euler algorithm over it (both in the testkit, optimised), and the
+//! symbolic scene built from the description.
 
 pub mod examples;
-pub mod rnea;
 pub use super::rng;
+pub use precess_testkit::mechanism::{NumBody, NumJoint, NumLoad, NumMechanism, rnea};
 
 use nalgebra::{Matrix3, Vector3};
 use precess::mechanism::{CoordinateLoad, JointKind, MechanismScene, Parent, Spring};
-use precess::rigid::AngleSequence;
 use precess::sym::{Arena, ExprId};
-
-/// A joint with f64 geometry (axes in the parent's frame, not necessarily unit).
-#[derive(Clone, Debug)]
-pub enum NumJoint {
-    Revolute([f64; 3]),
-    Prismatic([f64; 3]),
-    Universal([f64; 3], [f64; 3]),
-    Spherical(AngleSequence),
-}
-
-impl NumJoint {
-    pub fn dof(&self) -> usize {
-        match self {
-            NumJoint::Revolute(_) | NumJoint::Prismatic(_) => 1,
-            NumJoint::Universal(..) => 2,
-            NumJoint::Spherical(_) => 3,
-        }
-    }
-}
-
-/// Per-coordinate loads with f64 values.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct NumLoad {
-    pub spring: Option<(f64, f64)>,
-    pub damper: Option<f64>,
-    pub effort: Option<f64>,
-}
-
-/// One body: its joint to `parent` (None: the ground) at `at`, and its mass properties in
-/// its own frame (inertia about the centre of mass).
-#[derive(Clone, Debug)]
-pub struct NumBody {
-    pub parent: Option<usize>,
-    pub at: [f64; 3],
-    pub joint: NumJoint,
-    pub mass: f64,
-    pub center: [f64; 3],
-    pub inertia: Matrix3<f64>,
-    pub loads: Vec<NumLoad>,
-    pub body_torque: Option<[f64; 3]>,
-    pub space_torque: Option<[f64; 3]>,
-}
-
-impl NumBody {
-    pub fn new(parent: Option<usize>, at: [f64; 3], joint: NumJoint) -> NumBody {
-        NumBody {
-            parent,
-            at,
-            loads: vec![NumLoad::default(); joint.dof()],
-            joint,
-            mass: 1.0,
-            center: [0.0; 3],
-            inertia: Matrix3::identity() * 0.1,
-            body_torque: None,
-            space_torque: None,
-        }
-    }
-}
-
-#[derive(Clone, Debug)]
-pub struct NumMechanism {
-    pub bodies: Vec<NumBody>,
-    pub gravity: [f64; 3],
-}
-
-impl NumMechanism {
-    pub fn dof(&self) -> usize {
-        self.bodies.iter().map(|b| b.joint.dof()).sum()
-    }
-}
 
 /// How the numbers enter the scene: as exact literals (folded into the derivation) or as
 /// parameters bound at run time.

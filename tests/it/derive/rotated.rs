@@ -83,7 +83,7 @@ fn literal_rotations_agree_with_the_builder_and_direct_summation() {
         * Rotation3::from_axis_angle(&Vector3::z_axis(), -0.2);
     let cone = Rotation3::from_axis_angle(&Vector3::y_axis(), PI / 2.0);
     let turn = |ps: Vec<Particle>, r: &Rotation3<f64>, at: Vector3<f64>| -> Vec<Particle> {
-        ps.into_iter().map(|(m, x)| (m, r * x + at)).collect()
+        placed(&ps, r.matrix(), &at)
     };
     let mut lattice = turn(
         revolution(2.5, -0.6, 0.6, &|_| 0.0, &|_| 0.3, n),

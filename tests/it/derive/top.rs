@@ -93,7 +93,7 @@ fn generated_angle_and_eulerian_forms_agree() {
             {
                 let r = brick.rotation_in(AngleSequence::Zxz, &q);
                 let w = brick.omega_from_rates(&q, &qd);
-                let att = UnitQuaternion::from_matrix(&r);
+                let att = precess_testkit::rotations::quaternion_of(&r);
                 (
                     omega_dot_from_angles(&brick, t, q, qd),
                     brick.eulerian_rhs(t, &att, &w),
@@ -103,7 +103,7 @@ fn generated_angle_and_eulerian_forms_agree() {
             {
                 let r = reference.rotation_in(AngleSequence::Zxz, &q);
                 let w = reference.omega_from_rates(&q, &qd);
-                let att = UnitQuaternion::from_matrix(&r);
+                let att = precess_testkit::rotations::quaternion_of(&r);
                 (
                     omega_dot_from_angles(&reference, t, q, qd),
                     reference.eulerian_rhs(t, &att, &w),

@@ -43,7 +43,7 @@ fn the_free_body_turns_as_the_torque_free_top() {
     let mut top = Dop853::new(&chart, 0.0, y0, tight).unwrap();
 
     let r0 = PivotedAtCenter.rotation_in(AngleSequence::Zxz, &q0);
-    let att0 = UnitQuaternion::from_matrix(&r0);
+    let att0 = precess_testkit::rotations::quaternion_of(&r0);
     let s0 = FreeState::from_description(
         Vector3::zeros(),
         Vector3::zeros(),

@@ -1,5 +1,5 @@
 //! The mechanism engine against an independent recursive Newton–Euler algorithm (in
-//! tests/mechanism_support/rnea.rs): every route's q̈ at 10³ random states.
+//! the testkit's `mechanism::rnea`): every route's q̈ at 10³ random states.
 
 use crate::common::mechanism as mechanism_support;
 

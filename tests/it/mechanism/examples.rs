@@ -1,6 +1,6 @@
 //! Every example mechanism — the very struct its example derives, included from
 //! examples/mechanisms/ — against the independent numeric Newton–Euler algorithm of
-//! tests/mechanism_support/rnea.rs: q̈ at 10³ random states (and random field values where the
+//! the testkit's `mechanism::rnea`: q̈ at 10³ random states (and random field values where the
 //! struct has fields), T and the cyclic momenta against ½ q̇ᵀ M q̇ and (M q̇)ᵢ of the reference's
 //! mass matrix, and E and the cyclic momenta conserved along a short DOP853 run.
 //!
@@ -19,7 +19,6 @@ use examples::double_pendulum::DoublePendulum;
 use examples::gimballed_gyroscope::Gyroscope;
 use examples::{
     angles, babyboot_reference, chain_reference, double_pendulum_reference, gyroscope_reference,
-    reference_mass_matrix,
 };
 use mechanism_support::rng::Rng;
 use mechanism_support::{NumMechanism, relative_difference, rnea};
@@ -66,18 +65,14 @@ fn worst<const N: usize, M: MechanismDynamics<N>>(
         let (mech, reference, q, qdot) = draw(rng);
         let derived = mech.accelerations(0.0, &q, &qdot).expect("regular state");
         let expected = rnea::accelerations(&reference, &q, &qdot);
-        let mass = reference_mass_matrix(&reference, &q);
-        let singular = mass.clone().singular_values();
-        if singular.max() <= WELL_CONDITIONED * singular.min() {
+        let mass = rnea::mass_matrix(&reference, &q);
+        if rnea::condition(&mass) <= WELL_CONDITIONED {
             w.forward = w.forward.max(relative_difference(&derived, &expected, 1.0));
             w.judged += 1;
         }
-        // The backward error: |M (q̈ − q̈_ref)| against |M| |q̈_ref|, the size of the
-        // terms whose rounding any algorithm's M q̈ carries.
-        let error = DVector::from_iterator(N, derived.iter().zip(&expected).map(|(a, b)| a - b));
-        let scale = mass.abs() * DVector::from_iterator(N, expected.iter().map(|a| a.abs()));
-        let residual = (&mass * error).amax() / scale.amax().max(1.0);
-        w.residual = w.residual.max(residual);
+        w.residual = w
+            .residual
+            .max(rnea::backward_error(&mass, &derived, &expected));
         let v = DVector::from_column_slice(&qdot);
         let momenta = &mass * &v;
         let kinetic = 0.5 * v.dot(&momenta);

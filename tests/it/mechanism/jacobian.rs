@@ -1,6 +1,6 @@
 //! The Jacobians of the example mechanisms (exact on the symbolic and factored routes,
 //! central differences on the recursive one) against five-point differences of the
-//! independent Newton–Euler q̈ (tests/mechanism_support/rnea.rs), and the double pendulum's
+//! independent Newton–Euler q̈ (the testkit's `mechanism::rnea`), and the double pendulum's
 //! linearisation about its hanging equilibrium against the closed form and its normal modes.
 
 use crate::common::mechanism as mechanism_support;
@@ -19,22 +19,10 @@ use mechanism_support::{NumMechanism, rnea};
 use nalgebra::DMatrix;
 use precess::mechanism::MechanismDynamics;
 
-/// ∂q̈/∂(q, q̇) of the reference by the five-point stencil (f(−2h) − 8 f(−h) + 8 f(h) −
-/// f(2h)) / 12h, h = 1e-3: truncation h⁴ f⁽⁵⁾/30 ≈ 1e-13 and rounding ≈ ε |q̈| / h ≈ 1e-13
-/// relative for these mechanisms' smooth q̈.
+/// ∂q̈/∂(q, q̇) of the reference by the five-point stencil at h = 1e-3: truncation and
+/// rounding both ≈ 1e-13 relative for these mechanisms' smooth q̈.
 fn reference_jacobian(m: &NumMechanism, q: &[f64], qdot: &[f64]) -> DMatrix<f64> {
-    let n = q.len();
-    let h = 1e-3;
-    let state: Vec<f64> = q.iter().chain(qdot).copied().collect();
-    let at = |y: &[f64]| rnea::accelerations(m, &y[..n], &y[n..]);
-    DMatrix::from_fn(n, 2 * n, |i, j| {
-        let shifted = |k: f64| {
-            let mut y = state.clone();
-            y[j] += k * h;
-            at(&y)[i]
-        };
-        (shifted(-2.0) - 8.0 * shifted(-1.0) + 8.0 * shifted(1.0) - shifted(2.0)) / (12.0 * h)
-    })
+    rnea::acceleration_jacobian(m, q, qdot, 1e-3)
 }
 
 /// The largest difference between the derived (∂q̈/∂q, ∂q̈/∂q̇) and the reference's

@@ -1,6 +1,6 @@
 //! Kane's equations of a mechanism (`MechanismScene::kane_equations`, the route rolling
 //! mechanisms take) against the independent recursive Newton–Euler algorithm of
-//! tests/it/common/mechanism/rnea.rs: q̈ = M⁻¹ f at random states of the engine tests' scenes
+//! the testkit's `mechanism::rnea`: q̈ = M⁻¹ f at random states of the engine tests' scenes
 //! (springs, dampers, efforts, body and space torques, universal, prismatic and spherical
 //! joints; past three coordinates the kinematics are the unexpanded recursive forms), with
 //! literal and with parameter values.

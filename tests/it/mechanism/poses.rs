@@ -1,6 +1,6 @@
 //! Every example mechanism's derived link poses (`MechanismPoses`, the very structs the
 //! examples derive) against the frames of the independent Newton–Euler reference of
-//! tests/it/common/mechanism/rnea.rs, at random coordinates: the rotation R_b and origin o_b of
+//! the testkit's `mechanism::rnea`, at random coordinates: the rotation R_b and origin o_b of
 //! each body, and its centre o_b + R_b c.
 
 use crate::common::mechanism::examples;

@@ -10,7 +10,7 @@
 
 use precess::contact::{ContactDynamics, STATE_LEN, attitude_of, layout};
 use precess::mechanism::rolling::RollingDynamics;
-use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+use precess::nalgebra::{Matrix3, Rotation3, Vector3};
 use precess::prelude::*;
 
 /// The disk's radius r (m).
@@ -85,7 +85,7 @@ pub fn angle_rates(q: &[f64; 3], omega: &Vector3<f64>) -> [f64; 3] {
 pub fn table_state(q: &Q, rates: &Q) -> [f64; STATE_LEN] {
     let r = rotation(q[3], q[4], q[5]);
     let omega = space_omega(q, rates);
-    let attitude = UnitQuaternion::from_matrix(&r);
+    let attitude = precess_testkit::rotations::quaternion_of(&r);
     let mut y = [0.0; STATE_LEN];
     y[layout::POSITION] = q[0];
     y[layout::POSITION + 1] = q[1];

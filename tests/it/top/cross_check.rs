@@ -1,31 +1,18 @@
 //! The central cross-check: the Euler-angle Lagrangian equations derived by precess's own
-//! engine against the Eulerian form written independently here with nalgebra,
+//! engine against the Eulerian form written independently with nalgebra (the testkit's
+//! `eulerian_top`, optimised),
 //! ω̇ = I⁻¹ (τ − ω × I ω), τ = c × (Rᵀ(−M g ẑ)) + G_body + Rᵀ G_space − k ω + u.
 //! At 10⁴ random states per scene, ω̇ from q̈ (ω̇ = B q̈ + Ḃ q̇) must equal it to 1e-10.
 
 use crate::common;
 
 use common::rng::Rng;
-use nalgebra::{Matrix3, Rotation3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 use precess_core::codegen::Program;
 use precess_core::rigid::AngleSequence;
 use precess_core::sym::{Arena, ExprId, Rational};
 use precess_core::top::TopScene;
-
-/// A numeric scene: everything the independent Eulerian form needs.
-#[derive(Clone)]
-struct Scene {
-    name: &'static str,
-    sequence: AngleSequence,
-    inertia: Matrix3<f64>,
-    mass: f64,
-    center: Vector3<f64>,
-    gravity: Option<f64>,
-    body_torque: Option<Vector3<f64>>,
-    space_torque: Option<Vector3<f64>>,
-    damping: Option<f64>,
-    user_torque: Option<Vector3<f64>>,
-}
+use precess_testkit::eulerian_top::{NumTop as Scene, attitude};
 
 fn base(name: &'static str, inertia: Matrix3<f64>, center: Vector3<f64>) -> Scene {
     Scene {
@@ -112,61 +99,6 @@ fn symbolic(a: &mut Arena, s: &Scene) -> (TopScene, Option<[ExprId; 3]>) {
     (scene, user)
 }
 
-/// R and body ω from the textbook formulas (not from the engine).
-fn attitude(seq: AngleSequence, q: [f64; 3], qd: [f64; 3]) -> (Rotation3<f64>, Vector3<f64>) {
-    let (x, y, z) = (Vector3::x_axis(), Vector3::y_axis(), Vector3::z_axis());
-    match seq {
-        AngleSequence::Zxz => {
-            let [phi, th, psi] = q;
-            let [dphi, dth, dpsi] = qd;
-            let r = Rotation3::from_axis_angle(&z, phi)
-                * Rotation3::from_axis_angle(&x, th)
-                * Rotation3::from_axis_angle(&z, psi);
-            let w = Vector3::new(
-                dphi * th.sin() * psi.sin() + dth * psi.cos(),
-                dphi * th.sin() * psi.cos() - dth * psi.sin(),
-                dphi * th.cos() + dpsi,
-            );
-            (r, w)
-        }
-        AngleSequence::Zyx => {
-            let [yaw, pitch, roll] = q;
-            let [dyaw, dpitch, droll] = qd;
-            let r = Rotation3::from_axis_angle(&z, yaw)
-                * Rotation3::from_axis_angle(&y, pitch)
-                * Rotation3::from_axis_angle(&x, roll);
-            let w = Vector3::new(
-                droll - dyaw * pitch.sin(),
-                dpitch * roll.cos() + dyaw * pitch.cos() * roll.sin(),
-                -dpitch * roll.sin() + dyaw * pitch.cos() * roll.cos(),
-            );
-            (r, w)
-        }
-    }
-}
-
-fn eulerian(s: &Scene, r: &Rotation3<f64>, w: &Vector3<f64>) -> Vector3<f64> {
-    let rt = r.inverse();
-    let mut tau = Vector3::zeros();
-    if let Some(g) = s.gravity {
-        tau += s.center.cross(&(rt * Vector3::new(0.0, 0.0, -s.mass * g)));
-    }
-    if let Some(b) = s.body_torque {
-        tau += b;
-    }
-    if let Some(sp) = s.space_torque {
-        tau += rt * sp;
-    }
-    if let Some(k) = s.damping {
-        tau -= k * w;
-    }
-    if let Some(u) = s.user_torque {
-        tau += u;
-    }
-    let inv = s.inertia.try_inverse().expect("positive definite");
-    inv * (tau - w.cross(&(s.inertia * w)))
-}
-
 /// A random state away from the chart's singularity (|sin θ| ≥ 0.2 or |cos pitch| ≥ 0.2).
 fn random_state(rng: &mut Rng, seq: AngleSequence) -> ([f64; 3], [f64; 3]) {
     let mut q = [rng.uniform(-3.0, 3.0), 0.0, rng.uniform(-3.0, 3.0)];
@@ -213,7 +145,7 @@ fn lagrangian_and_eulerian_forms_agree_at_random_states() {
             }
             let lagrangian = wdot.eval(&env);
             let (r, w) = attitude(s.sequence, q, qd);
-            let expected = eulerian(&s, &r, &w);
+            let expected = s.omega_dot(&r, &w);
             // Relative to the size of the terms that make up ω̇ (|ω|² I/I), not to ω̇
             // itself, which can pass through zero.
             let scale = 1.0 + w.norm_squared() + expected.norm();
@@ -261,7 +193,7 @@ fn symbolic_eulerian_form_matches_nalgebra() {
                 env[idx(w[i])] = wv[i];
             }
             let got = prog.eval(&env);
-            let expected = eulerian(&s, &r, &wv);
+            let expected = s.omega_dot(&r, &wv);
             let scale = 1.0 + wv.norm_squared() + expected.norm();
             for k in 0..3 {
                 assert!(

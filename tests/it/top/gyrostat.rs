@@ -141,7 +141,7 @@ fn lagrangian_and_eulerian_forms_agree_with_rotors() {
         let expected = volterra(&GYRO, 9.81, &h, &r, &w);
         let qdd = GYRO.accelerations(0.0, &q, &qd).unwrap();
         let from_angles = omega_dot_zxz(&q, &qd, &qdd);
-        let attitude = UnitQuaternion::from_matrix(&r);
+        let attitude = precess_testkit::rotations::quaternion_of(&r);
         let eulerian = GYRO.eulerian_rhs(0.0, &attitude, &w);
         let scale = expected.norm().max(1.0);
         worst.0 = worst.0.max((from_angles - expected).norm() / scale);
@@ -249,7 +249,7 @@ fn energy_and_vertical_momentum_are_conserved() {
     let r0 = GYRO.rotation_in(AngleSequence::Zxz, &[0.3, 1.1, -0.4]);
     let w0 = Vector3::new(2.0, -3.0, 4.0);
     let (e0, l0) = integrals(&r0, &w0);
-    let y0 = EulerianTop::<Gyro>::state(&UnitQuaternion::from_matrix(&r0), &w0);
+    let y0 = EulerianTop::<Gyro>::state(&precess_testkit::rotations::quaternion_of(&r0), &w0);
     let mut run = Dop853::new(
         EulerianTop(&GYRO),
         0.0,
@@ -291,7 +291,7 @@ fn rate_zero_equals_no_rotor() {
             assert_relative_eq!(a[k], b[k], max_relative = 1e-14, epsilon = 1e-14);
         }
         let r = Stopped.rotation_in(AngleSequence::Zxz, &q);
-        let attitude = UnitQuaternion::from_matrix(&r);
+        let attitude = precess_testkit::rotations::quaternion_of(&r);
         let w = Vector3::from(qd);
         assert_relative_eq!(
             Stopped.eulerian_rhs(0.0, &attitude, &w),

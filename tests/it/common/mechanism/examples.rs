@@ -16,10 +16,10 @@ pub mod free_floating;
 #[path = "../../../../examples/mechanisms/gimballed_gyroscope.rs"]
 pub mod gimballed_gyroscope;
 
-use nalgebra::{DMatrix, Matrix3};
+use nalgebra::Matrix3;
 
 use super::rng::Rng;
-use super::{NumBody, NumJoint, NumMechanism, rnea};
+use super::{NumBody, NumJoint, NumMechanism};
 use chain::LINKS;
 use double_pendulum::DoublePendulum;
 use gimballed_gyroscope::Gyroscope;
@@ -115,22 +115,6 @@ pub fn chain_reference() -> NumMechanism {
         bodies,
         gravity: [0.0, 0.0, -G],
     }
-}
-
-/// The reference's mass matrix: column j is the inverse dynamics of q̈ = e_j without bias.
-pub fn reference_mass_matrix(m: &NumMechanism, q: &[f64]) -> DMatrix<f64> {
-    let n = q.len();
-    let zero = vec![0.0; n];
-    let mut mass = DMatrix::zeros(n, n);
-    for j in 0..n {
-        let mut e = zero.clone();
-        e[j] = 1.0;
-        let column = rnea::inverse_dynamics(m, q, &zero, &e, false);
-        for (i, v) in column.iter().enumerate() {
-            mass[(i, j)] = *v;
-        }
-    }
-    mass
 }
 
 pub fn angles<const N: usize>(rng: &mut Rng) -> [f64; N] {

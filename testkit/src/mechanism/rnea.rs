@@ -2,9 +2,10 @@
 //! one-coordinate revolute or prismatic links (a universal two, a spherical the three
 //! elementary rotations of its sequence) with massless links between, kinematics forward
 //! from the ground in ground axes, forces backward. M by unit accelerations, the bias at
-//! q̈ = 0, and q̈ = M⁻¹ (Q − bias).
+//! q̈ = 0, and q̈ = M⁻¹ (Q − bias). Also what the tests judge the derived q̈ with: its
+//! Jacobian by differences, the mass matrix's condition and the backward error.
 
-use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Unit, Vector3};
+use precess::nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Unit, Vector3};
 use precess::rigid::AngleSequence;
 
 use super::{NumJoint, NumMechanism};
@@ -15,6 +16,7 @@ enum Motion {
     Slide,
 }
 
+/// One coordinate's link: a turn about or a slide along `axis` (the parent's axes) at `at`.
 struct Link {
     parent: Option<usize>,
     at: Vector3<f64>,
@@ -87,6 +89,7 @@ fn links(m: &NumMechanism) -> Vec<Link> {
     out
 }
 
+/// A link's frame in ground axes: its attitude, origin and their rates.
 struct Frame {
     rotation: Matrix3<f64>,
     origin: Vector3<f64>,
@@ -194,20 +197,30 @@ pub fn inverse_dynamics(
     tau
 }
 
-/// q̈ from M q̈ = Q − bias, Q the joint springs, dampers and efforts.
-pub fn accelerations(m: &NumMechanism, q: &[f64], qd: &[f64]) -> Vec<f64> {
+/// The mass matrix at q: column j is the inverse dynamics of q̈ = e_j without bias.
+pub fn mass_matrix(m: &NumMechanism, q: &[f64]) -> DMatrix<f64> {
     let n = q.len();
     let zero = vec![0.0; n];
     let mut mass = DMatrix::zeros(n, n);
     for j in 0..n {
         let mut e = zero.clone();
         e[j] = 1.0;
-        let col = inverse_dynamics(m, q, &zero, &e, false);
-        for i in 0..n {
-            mass[(i, j)] = col[i];
+        let column = inverse_dynamics(m, q, &zero, &e, false);
+        for (i, v) in column.iter().enumerate() {
+            mass[(i, j)] = *v;
         }
     }
-    let bias = inverse_dynamics(m, q, qd, &zero, true);
+    mass
+}
+
+/// q̈ from M q̈ = Q − bias, Q the joint springs, dampers and efforts.
+///
+/// # Panics
+/// If the mass matrix is singular at q (a test's state drawn where it must not be).
+pub fn accelerations(m: &NumMechanism, q: &[f64], qd: &[f64]) -> Vec<f64> {
+    let n = q.len();
+    let mass = mass_matrix(m, q);
+    let bias = inverse_dynamics(m, q, qd, &vec![0.0; n], true);
     let mut rhs = DVector::zeros(n);
     let mut k = 0;
     for b in &m.bodies {
@@ -228,6 +241,87 @@ pub fn accelerations(m: &NumMechanism, q: &[f64], qd: &[f64]) -> Vec<f64> {
     }
     let x = mass.lu().solve(&rhs).expect("regular mass matrix");
     x.iter().copied().collect()
+}
+
+/// ∂q̈/∂(q, q̇) (n × 2n) of [`accelerations`] by the five-point stencil (f(−2h) − 8 f(−h) +
+/// 8 f(h) − f(2h)) / 12h: truncation h⁴ f⁽⁵⁾/30, rounding ≈ ε |q̈| / h; at h = 1e-3 both
+/// ≈ 1e-13 relative for a smooth q̈.
+pub fn acceleration_jacobian(m: &NumMechanism, q: &[f64], qd: &[f64], h: f64) -> DMatrix<f64> {
+    let n = q.len();
+    let state: Vec<f64> = q.iter().chain(qd).copied().collect();
+    let mut jacobian = DMatrix::zeros(n, 2 * n);
+    for j in 0..2 * n {
+        let shifted = |k: f64| {
+            let mut y = state.clone();
+            y[j] += k * h;
+            accelerations(m, &y[..n], &y[n..])
+        };
+        let (m2, m1, p1, p2) = (shifted(-2.0), shifted(-1.0), shifted(1.0), shifted(2.0));
+        for i in 0..n {
+            jacobian[(i, j)] = (m2[i] - 8.0 * m1[i] + 8.0 * p1[i] - p2[i]) / (12.0 * h);
+        }
+    }
+    jacobian
+}
+
+/// The 2-norm condition number σ_max / σ_min of a symmetric mass matrix, its singular
+/// values being its eigenvalues' moduli (infinite when singular). The eigenvalues by cyclic
+/// Jacobi rotations, to sweeps that leave the off-diagonal below 1e-14 of the matrix's size
+/// (above its rounding floor): each eigenvalue then moves by less than that (Weyl), 1e-10 of
+/// the smallest a condition of 1e4 allows. nalgebra's SVD, compiled optimised here, was
+/// 10 s of the testkit's build.
+pub fn condition(mass: &DMatrix<f64>) -> f64 {
+    let n = mass.nrows();
+    let mut a: Vec<Vec<f64>> = (0..n)
+        .map(|i| (0..n).map(|j| mass[(i, j)]).collect())
+        .collect();
+    let size: f64 = a.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
+    for _sweep in 0..64 {
+        let off: f64 = (0..n)
+            .flat_map(|i| (0..n).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| a[i][j] * a[i][j])
+            .sum::<f64>()
+            .sqrt();
+        if off <= 1e-14 * size {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[p][q] == 0.0 {
+                    continue;
+                }
+                // The rotation in the (p, q) plane that zeroes a_pq (Golub & Van Loan 8.5.2).
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + theta.hypot(1.0));
+                let c = 1.0 / t.hypot(1.0);
+                let s = t * c;
+                for row in a.iter_mut() {
+                    let (x, y) = (row[p], row[q]);
+                    row[p] = c * x - s * y;
+                    row[q] = s * x + c * y;
+                }
+                let (head, tail) = a.split_at_mut(q);
+                for (x, y) in head[p].iter_mut().zip(tail[0].iter_mut()) {
+                    (*x, *y) = (c * *x - s * *y, s * *x + c * *y);
+                }
+            }
+        }
+    }
+    let moduli = (0..n).map(|i| a[i][i].abs());
+    let (lo, hi) = moduli.fold((f64::INFINITY, 0.0_f64), |(lo, hi), x| {
+        (lo.min(x), hi.max(x))
+    });
+    hi / lo
+}
+
+/// The backward error of a q̈ against the reference's: |M (q̈ − q̈_ref)|∞ / max(| |M|
+/// |q̈_ref| |∞, 1), the residual against the size of the terms whose rounding any
+/// algorithm's M q̈ carries.
+pub fn backward_error(mass: &DMatrix<f64>, qdd: &[f64], reference: &[f64]) -> f64 {
+    let n = qdd.len();
+    let error = DVector::from_iterator(n, qdd.iter().zip(reference).map(|(a, b)| a - b));
+    let scale = mass.abs() * DVector::from_iterator(n, reference.iter().map(|a| a.abs()));
+    (mass * error).amax() / scale.amax().max(1.0)
 }
 
 /// Each body's frame at q, in body order: (R_b, o_b), its axes to ground axes and its
