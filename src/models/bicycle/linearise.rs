@@ -6,9 +6,9 @@ use thiserror::Error;
 
 use super::Bicycle;
 use super::canonical::Canonical;
+use crate::lagrange::LagrangeError;
 use crate::linalg::LinalgError;
 use crate::mechanism::MechanismError;
-use crate::lagrange::LagrangeError;
 use crate::mechanism::rolling::RollingDynamics;
 use crate::nalgebra::{DMatrix, DVector, Matrix2, Matrix3};
 

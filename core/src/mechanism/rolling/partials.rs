@@ -137,7 +137,11 @@ pub(super) fn jacobian<const N: usize, const M: usize, const K: usize>(
     let s = partition.rates(a, u)?.projection;
     let u = SVector::<f64, K>::from_column_slice(u);
     let a_d = SMatrix::<f64, M, M>::from_fn(|r, c| a[(r, partition.dependent[c])]);
-    let a_d_inv = solve(a_d, SMatrix::<f64, M, M>::identity(), Inverted::DependentBlock)?;
+    let a_d_inv = solve(
+        a_d,
+        SMatrix::<f64, M, M>::identity(),
+        Inverted::DependentBlock,
+    )?;
     // A dependent block (M rows) scattered into the coordinates' order.
     let embed = |x: SVector<f64, M>| {
         let mut out = SVector::<f64, N>::zeros();

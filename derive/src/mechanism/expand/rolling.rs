@@ -85,9 +85,11 @@ pub(super) fn expand(
     // whose dependence on q and q̇ the engine cannot see (the trait's default differences).
     let partials = if checked.efforts.is_empty() {
         let entries = derivation.partials(arena);
-        let body = method.body(arena, &entries, |o| {
-            quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*]))
-        });
+        let body = method.body(
+            arena,
+            &entries,
+            |o| quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*])),
+        );
         quote! {
             fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
                 ::core::option::Option::Some(#body)
