@@ -46,13 +46,19 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
         qdot: &[f64; N],
     ) -> (SMatrix<f64, M, N>, SVector<f64, M>);
 
-    /// The partial derivatives of M, f, A and Ȧq̇ at (t, q, q̇), differentiated exactly: the
-    /// derive emits them as straight-line code, [`super::RollingModel`] interprets them.
-    /// `None` where they are not known (a mechanism with user-function efforts, whose
-    /// dependence on q and q̇ the engine cannot see): then
+    /// The partial derivatives of M q̈, f, A and Ȧq̇ at (t, q, q̇, q̈), differentiated
+    /// exactly ([`RollingPartials`]): the derive emits them as straight-line code. `None`
+    /// where they are not known: a mechanism with user-function efforts (whose dependence on
+    /// q and q̇ the engine cannot see) and the interpreted [`super::RollingModel`]; then
     /// [`RollingDynamics::acceleration_jacobian`] differences.
-    fn partials(&self, t: f64, q: &[f64; N], qdot: &[f64; N]) -> Option<RollingPartials<N, M>> {
-        let _ = (t, q, qdot);
+    fn partials(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+        qddot: &[f64; N],
+    ) -> Option<RollingPartials<N, M>> {
+        let _ = (t, q, qdot, qddot);
         None
     }
 
@@ -172,7 +178,7 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// coordinates' tangent to the height rows in, as `Bicycle::canonical` does).
     ///
     /// Exact where [`RollingDynamics::partials`] gives the derivatives (every derived
-    /// rolling mechanism without user efforts, and [`super::RollingModel`]): they are carried
+    /// rolling mechanism without user efforts): they are carried
     /// through the projection by the product rule (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the like; see
     /// docs/linearisation.md). Otherwise central differences of
     /// [`RollingDynamics::derivative`] in (q, u) with Richardson extrapolation
@@ -188,11 +194,16 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
         q: &[f64; N],
         u: &[f64; K],
     ) -> Result<(SMatrix<f64, K, N>, SMatrix<f64, K, K>), MechanismError> {
-        let (rates, _) = self.derivative(t, q, u)?;
-        let (by_q, by_u) = match self.partials(t, q, &rates) {
+        let (rates, ud) = self.derivative(t, q, u)?;
+        let partition = self.partition();
+        let (a, rate_terms) = self.constraint_rows(q, &rates);
+        let projected = partition.rates(&a, u)?;
+        let q_ddot = partition.full_accelerations(&a, &rate_terms, &projected, &ud)?;
+        let mut qddot = [0.0; N];
+        qddot.copy_from_slice(q_ddot.as_slice());
+        let (by_q, by_u) = match self.partials(t, q, &rates, &qddot) {
             Some(partials) => {
                 let (mass, forcing) = self.mass_forcing(t, q, &rates);
-                let (a, rate_terms) = self.constraint_rows(q, &rates);
                 let at = AtState {
                     mass,
                     forcing,
@@ -200,7 +211,7 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
                     rate_terms,
                     partials: &partials,
                 };
-                jacobian(&self.partition(), &at, u)?
+                jacobian(&partition, &at, u)?
             }
             None => {
                 let state: Vec<f64> = q.iter().chain(u.iter()).copied().collect();

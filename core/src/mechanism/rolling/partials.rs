@@ -1,7 +1,8 @@
 //! The exact Jacobian of a rolling mechanism's free accelerations u̇(q, u).
 //!
 //! The engine differentiates the pieces of Maggi's equations symbolically
-//! ([`RollingDerivation::partials`]: ∂M/∂q, ∂f/∂q, ∂f/∂q̇, ∂A/∂q, ∂(Ȧq̇)/∂q, ∂(Ȧq̇)/∂q̇,
+//! ([`RollingDerivation::partials`]: ∂(M a)/∂q at a = q̈, ∂f/∂q, ∂f/∂q̇, ∂A/∂q,
+//! ∂(Ȧq̇)/∂q, ∂(Ȧq̇)/∂q̇,
 //! lowered to straight-line code by the derive), and [`jacobian`] carries them through the
 //! numerical projection by the product rule, with q̇ = S u and S_I = I:
 //!
@@ -9,6 +10,8 @@
 //! - A s + Ȧq̇ = 0 with s_I = 0 gives ds_D = −A_D⁻¹ (d(Ȧq̇) + dA s);
 //! - K u̇ = r, K = Sᵀ M S, r = Sᵀ (f − M s) gives du̇ = K⁻¹ (dr − dK u̇), with
 //!   dK = dSᵀ M S + Sᵀ dM S + Sᵀ M dS and dr = dSᵀ (f − M s) + Sᵀ (df − dM s − M ds).
+//!   M's derivative enters only as Sᵀ dM (S u̇ + s) = Sᵀ dM q̈, so the engine gives
+//!   ∂(M a)/∂q with a = q̈ (n² entries), not every ∂M/∂q_j (n³).
 //!
 //! Nothing is differenced; the error is that of the solves with A_D and K.
 
@@ -22,8 +25,8 @@ use crate::sym::{Arena, ExprId};
 /// one state, from [`super::RollingDynamics::partials`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RollingPartials<const N: usize, const M: usize> {
-    /// ∂M/∂q_j, one matrix per coordinate j.
-    pub mass: [SMatrix<f64, N, N>; N],
+    /// ∂(M a)/∂q at a = q̈: column j is (∂M/∂q_j) q̈.
+    pub mass_times_accelerations: SMatrix<f64, N, N>,
     /// ∂f/∂q: column j is ∂f/∂q_j.
     pub forcing_by_q: SMatrix<f64, N, N>,
     /// ∂f/∂q̇: column j is ∂f/∂q̇_j.
@@ -37,21 +40,21 @@ pub struct RollingPartials<const N: usize, const M: usize> {
 }
 
 impl<const N: usize, const M: usize> RollingPartials<N, M> {
-    /// The number of values [`RollingPartials::from_slice`] reads: n³ + 2n² + m n² + 2 m n.
-    pub const LEN: usize = N * N * N + 2 * N * N + M * N * N + 2 * M * N;
+    /// The number of values [`RollingPartials::from_slice`] reads: 3n² + m n² + 2 m n.
+    pub const LEN: usize = 3 * N * N + M * N * N + 2 * M * N;
 
-    /// The partials from the values in the order of [`RollingDerivation::partials`]: ∂M/∂q_j
-    /// for each j (row-major), ∂f/∂q and ∂f/∂q̇ (row i is f_i), ∂A/∂q_j for each j
+    /// The partials from the values in the order of [`RollingDerivation::partials`]:
+    /// ∂(M q̈)/∂q, ∂f/∂q and ∂f/∂q̇ (row i is f_i), ∂A/∂q_j for each j
     /// (row-major), ∂(Ȧq̇)/∂q and ∂(Ȧq̇)/∂q̇ (row r is row r's term). A value missing from a
     /// short slice reads as NaN, which the Jacobian reports as not finite.
     pub fn from_slice(values: &[f64]) -> RollingPartials<N, M> {
         let at = |i: usize| values.get(i).copied().unwrap_or(f64::NAN);
         let (nn, mn) = (N * N, M * N);
-        let forcing = N * nn;
+        let forcing = nn;
         let rows = forcing + 2 * nn;
         let rate_terms = rows + N * mn;
         RollingPartials {
-            mass: std::array::from_fn(|j| SMatrix::from_fn(|r, c| at(j * nn + r * N + c))),
+            mass_times_accelerations: SMatrix::from_fn(|i, j| at(i * N + j)),
             forcing_by_q: SMatrix::from_fn(|i, j| at(forcing + i * N + j)),
             forcing_by_qdot: SMatrix::from_fn(|i, j| at(forcing + nn + i * N + j)),
             rows: std::array::from_fn(|j| SMatrix::from_fn(|r, c| at(rows + j * mn + r * N + c))),
@@ -62,8 +65,9 @@ impl<const N: usize, const M: usize> RollingPartials<N, M> {
 }
 
 impl RollingDerivation {
-    /// The partial derivatives of M, f, A and Ȧq̇ in the coordinates and rates, differentiated
-    /// by the engine, in the order [`RollingPartials::from_slice`] reads.
+    /// The partial derivatives of M q̈ (q̈ the acceleration symbols), f, A and Ȧq̇ in the
+    /// coordinates and rates, differentiated by the engine, in the order
+    /// [`RollingPartials::from_slice`] reads.
     pub fn partials(&self, arena: &mut Arena) -> Vec<ExprId> {
         let coords = self.coordinates();
         let zero = arena.zero();
@@ -79,9 +83,16 @@ impl RollingDerivation {
         let eqs = &self.equations;
         let a = &self.constraints.coefficients;
         let mut out = Vec::new();
-        for &s in &q {
-            for &e in eqs.mass.iter().flatten() {
-                out.push(d(arena, e, s));
+        let accels = coords.accels.clone();
+        for row in &eqs.mass {
+            let terms: Vec<ExprId> = row
+                .iter()
+                .zip(&accels)
+                .map(|(&m, &a)| arena.mul(m, a))
+                .collect();
+            let product = arena.sum(&terms);
+            for &s in &q {
+                out.push(d(arena, product, s));
             }
         }
         for by in [&q, &rates] {
@@ -109,7 +120,7 @@ impl RollingDerivation {
 
 /// The pieces at one state (q, u) that the Jacobian starts from, with q̇ = S u.
 pub(super) struct AtState<'a, const N: usize, const M: usize> {
-    /// M(q) and f(t, q, q̇).
+    /// M(q).
     pub mass: SMatrix<f64, N, N>,
     /// f.
     pub forcing: SVector<f64, N>,
@@ -167,14 +178,12 @@ pub(super) fn jacobian<const N: usize, const M: usize, const K: usize>(
         let dqdot = ds_proj * u;
         let dr = p.rate_terms_by_q.column(j) + p.rate_terms_by_qdot * dqdot;
         let d_drift = embed(-(a_d_inv * (dr + da * drift)));
-        let dm = &p.mass[j];
         let df = p.forcing_by_q.column(j) + p.forcing_by_qdot * dqdot;
-        let dk = ds_proj.transpose() * mass * s
-            + s.transpose() * dm * s
-            + s.transpose() * mass * ds_proj;
-        let drhs = ds_proj.transpose() * reduced_force
-            + s.transpose() * (df - dm * drift - mass * d_drift);
-        by_q.set_column(j, &(k_inv * (drhs - dk * ud)));
+        // dr − dK u̇, M's derivative in it gathered as Sᵀ dM q̈.
+        let dk_rest = ds_proj.transpose() * mass * s + s.transpose() * mass * ds_proj;
+        let dr_rest = ds_proj.transpose() * reduced_force
+            + s.transpose() * (df - mass * d_drift - p.mass_times_accelerations.column(j));
+        by_q.set_column(j, &(k_inv * (dr_rest - dk_rest * ud)));
     }
     let mut by_u = SMatrix::<f64, K, K>::zeros();
     for j in 0..K {

@@ -91,7 +91,7 @@ pub(super) fn expand(
             |o| quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*])),
         );
         quote! {
-            fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
+            fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n], qddot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
                 ::core::option::Option::Some(#body)
             }
         }
