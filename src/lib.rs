@@ -137,7 +137,7 @@ pub mod __private {
     pub use precess_core::lagrange::Partition;
     pub use precess_core::mechanism::charts::SphericalJoint;
     pub use precess_core::mechanism::loops::{LoopDynamics, check_loop_sides};
-    pub use precess_core::mechanism::rolling::RollingDynamics;
+    pub use precess_core::mechanism::rolling::{RollingDynamics, RollingPartials};
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, LinkPose, MechanismDynamics, MechanismError, MechanismPoses,
         check_axis, check_universal_axes,

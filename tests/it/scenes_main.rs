@@ -23,6 +23,7 @@ mod constraints {
     mod errors;
     mod four_bar;
     mod rheonomic;
+    mod rolling_jacobian;
     mod rolling_macro;
 }
 /// The free-body scene.

@@ -33,4 +33,5 @@ pub use equations::{Coordinates, EquationsOfMotion};
 pub use error::LagrangeError;
 pub use model::{ConstrainedModel, ConstrainedSystem};
 pub use partition::{MAX_NEWTON, SINGULAR_BLOCK, START_RESIDUAL};
+pub(crate) use projection::{Inverted, solve};
 pub use projection::{Partition, Projected};

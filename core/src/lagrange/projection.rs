@@ -191,7 +191,7 @@ impl<const M: usize, const K: usize> Partition<M, K> {
 
 /// The matrix a projection solves with, which names the error when it is singular.
 #[derive(Clone, Copy)]
-enum Inverted {
+pub(crate) enum Inverted {
     /// A_D (or its transpose): [`LagrangeError::SingularAtState`].
     DependentBlock,
     /// K = Sᵀ M S: [`LagrangeError::SingularReducedMass`].
@@ -203,7 +203,7 @@ enum Inverted {
 ///
 /// # Errors
 /// [`LagrangeError::SingularAtState`] or [`LagrangeError::SingularReducedMass`], by `inverted`.
-fn solve<const R: usize, const C: usize>(
+pub(crate) fn solve<const R: usize, const C: usize>(
     a: SMatrix<f64, R, R>,
     b: SMatrix<f64, R, C>,
     inverted: Inverted,

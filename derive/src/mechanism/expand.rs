@@ -374,6 +374,10 @@ impl<'a> Method<'a> {
             reads.push((q, quote!(q[#k])));
             reads.push((v, quote!(qdot[#k])));
         }
+        // q̈ is read only by the rolling `partials` (∂(M a)/∂q at a = q̈).
+        for (k, &a) in c.accels.iter().enumerate() {
+            reads.push((a, quote!(qddot[#k])));
+        }
         reads.push((self.time, quote!(t)));
         let read = symbols_read(arena, outputs);
         // A user function is called only by the methods whose result reads its value.

@@ -6,15 +6,11 @@ use thiserror::Error;
 
 use super::Bicycle;
 use super::canonical::Canonical;
+use crate::lagrange::LagrangeError;
 use crate::linalg::LinalgError;
 use crate::mechanism::MechanismError;
 use crate::mechanism::rolling::RollingDynamics;
-use crate::nalgebra::{Matrix2, Matrix3};
-
-/// The largest relative step of the central differences in the angles (h, h/2, h/4 are
-/// taken and extrapolated twice by Richardson: truncation O(h⁶) ≈ 1e-12, rounding about
-/// ε·|u̇|/h where u̇ vanishes at the upright run).
-pub const ANGLE_STEP: f64 = 1e-2;
+use crate::nalgebra::{DMatrix, DVector, Matrix2, Matrix3};
 
 /// The largest lateral acceleration \[rad/s²\] allowed at the reference state of the
 /// linearisation: the upright straight run must be a steady motion (it is for every
@@ -54,45 +50,12 @@ pub enum BicycleLinearisationError {
 }
 
 impl Bicycle {
-    /// \[φ̈, δ̈\] on the constraints at roll φ, steer δ and their rates `x`, the rear wheel
-    /// turning at −v / r_R, the pitch put back on the floor first.
-    fn lateral(&self, x: [f64; 4], v: f64) -> Result<[f64; 2], MechanismError> {
-        let mut q = [0.0; 8];
-        q[Bicycle::PHI] = x[0];
-        q[Bicycle::DELTA] = x[1];
-        self.close_contacts(&mut q)?;
-        let (_, ud) = self.derivative(0.0, &q, &[x[2], x[3], -v / self.r_r])?;
-        Ok([ud[0], ud[1]])
-    }
-
-    /// ∂\[φ̈, δ̈\]/∂x_j at the upright run at speed v. For a rate (j ≥ 2) one central
-    /// difference of step 1, which is exact: at fixed q the accelerations are a quadratic
-    /// form in the speeds (u̇ = K(q)⁻¹ Sᵀ (f − M s), f and s quadratic in q̇ = S u), so the
-    /// difference quotient of a quadratic is its derivative. For an angle, central
-    /// differences extrapolated twice by Richardson, since the derive emits no Jacobian for
-    /// rolling mechanisms.
-    fn lateral_column(&self, j: usize, v: f64) -> Result<[f64; 2], MechanismError> {
-        let central = |h: f64| -> Result<[f64; 2], MechanismError> {
-            let (mut xp, mut xm) = ([0.0; 4], [0.0; 4]);
-            xp[j] = h;
-            xm[j] = -h;
-            let (p, m) = (self.lateral(xp, v)?, self.lateral(xm, v)?);
-            Ok([(p[0] - m[0]) / (2.0 * h), (p[1] - m[1]) / (2.0 * h)])
-        };
-        if j >= 2 {
-            return central(1.0);
-        }
-        let h = ANGLE_STEP;
-        let d = [central(h)?, central(h / 2.0)?, central(h / 4.0)?];
-        Ok([0, 1].map(|i| {
-            let r1 = (4.0 * d[1][i] - d[0][i]) / 3.0;
-            let r2 = (4.0 * d[2][i] - d[1][i]) / 3.0;
-            (16.0 * r2 - r1) / 15.0
-        }))
-    }
-
     /// The lower half of the lateral state matrix at speed v:
-    /// (∂(φ̈, δ̈)/∂(φ, δ), ∂(φ̈, δ̈)/∂(φ̇, δ̇)).
+    /// (∂(φ̈, δ̈)/∂(φ, δ), ∂(φ̈, δ̈)/∂(φ̇, δ̇)), exact: the rolling mechanism's
+    /// [`RollingDynamics::acceleration_jacobian`] (the derived derivatives of M, f, A and
+    /// Ȧq̇ through the projection) at the upright run, its coordinate columns chained along
+    /// the tangent of the front wheel's height (the pitch following φ and δ by the
+    /// implicit-function theorem).
     ///
     /// # Errors
     /// As [`Bicycle::canonical`].
@@ -107,7 +70,11 @@ impl Bicycle {
             }
             .into());
         }
-        let at_rest = self.lateral([0.0; 4], v)?;
+        // The upright run: the pitch that puts the front wheel on the floor.
+        let mut q = [0.0; 8];
+        self.close_contacts(&mut q)?;
+        let u = [0.0, 0.0, -v / self.r_r];
+        let (_, at_rest) = self.derivative(0.0, &q, &u)?;
         let residual = at_rest[0].abs().max(at_rest[1].abs());
         if residual.is_nan() || residual > STEADY_TOLERANCE {
             return Err(BicycleLinearisationError::NotSteady {
@@ -116,14 +83,54 @@ impl Bicycle {
                 allowed: STEADY_TOLERANCE,
             });
         }
-        let c = [0, 1, 2, 3]
-            .map(|j| self.lateral_column(j, v))
-            .into_iter()
-            .collect::<Result<Vec<_>, _>>()?;
+        let (by_q, by_u) = self.acceleration_jacobian(0.0, &q, &u)?;
+        // The wheels stay on the floor as φ or δ moves: along the tangent of the height
+        // rows (implicit-function theorem), the dependent coordinates following by the
+        // least-norm step `close_contacts` takes (only the pitch, for the bicycle).
+        let tangents = self.contact_tangents(&q)?;
+        let angle = |i: usize, t: &[f64; 8]| (0..8).map(|k| by_q[(i, k)] * t[k]).sum::<f64>();
+        let [t_phi, t_delta] = &tangents;
         Ok((
-            Matrix2::new(c[0][0], c[1][0], c[0][1], c[1][1]),
-            Matrix2::new(c[2][0], c[3][0], c[2][1], c[3][1]),
+            Matrix2::new(
+                angle(0, t_phi),
+                angle(0, t_delta),
+                angle(1, t_phi),
+                angle(1, t_delta),
+            ),
+            Matrix2::new(by_u[(0, 0)], by_u[(0, 1)], by_u[(1, 0)], by_u[(1, 1)]),
         ))
+    }
+
+    /// dq/dφ and dq/dδ on the floor at `q`: the unit change of the angle, the dependent
+    /// coordinates moving by the least-norm solution of J_D dq_D = −J e_j, J the height
+    /// rows of A (∂h/∂q, their coefficients).
+    fn contact_tangents(&self, q: &[f64; 8]) -> Result<[[f64; 8]; 2], MechanismError> {
+        let (a, _) = self.constraint_rows(q, &[0.0; 8]);
+        let dependent = self.partition().dependent;
+        let rows: Vec<usize> = (0..5).filter(|&r| self.holonomic_rows()[r]).collect();
+        let j_d = DMatrix::from_fn(rows.len(), 5, |i, c| a[(rows[i], dependent[c])]);
+        let normal = &j_d * j_d.transpose();
+        let singular = LagrangeError::SingularAtState {
+            determinant: normal.determinant(),
+            scale: normal.norm(),
+        };
+        let lu = normal.lu();
+        let mut out = [[0.0; 8]; 2];
+        for (t, free) in out.iter_mut().zip([Bicycle::PHI, Bicycle::DELTA]) {
+            t[free] = 1.0;
+            let rhs = DVector::from_fn(rows.len(), |i, _| a[(rows[i], free)]);
+            let Some(y) = lu.solve(&rhs) else {
+                return Err(singular.into());
+            };
+            let step = j_d.transpose() * y;
+            for (c, &d) in dependent.iter().enumerate() {
+                t[d] = -step[c];
+            }
+            if t.iter().any(|v| !v.is_finite()) {
+                return Err(singular.clone().into());
+            }
+        }
+        Ok(out)
     }
 
     /// The linearised lateral equations about the upright straight run in the canonical
@@ -134,9 +141,7 @@ impl Bicycle {
     /// With u̇ = M⁻¹ r, ∂u̇/∂q = −M⁻¹ (g K₀ + v² K₂) and ∂u̇/∂q̇ = −v M⁻¹ C₁ are exactly
     /// quadratic and linear in v, so the speeds 0 and 1 fix them:
     /// K₀ = −M ∂u̇/∂q|₀ / g, K₂ = −M (∂u̇/∂q|₁ − ∂u̇/∂q|₀), C₁ = −M ∂u̇/∂q̇|₁.
-    /// The rate derivatives are exact; the angle derivatives are Richardson-extrapolated
-    /// central differences (the derive emits no Jacobian for a rolling mechanism; about
-    /// 1e-14 relative on the benchmark, docs/linearisation.md).
+    /// Both are exact ([`Bicycle::lateral_jacobian`]); nothing is differenced.
     ///
     /// # Errors
     /// [`BicycleLinearisationError::Mechanism`] for a parameter out of range or a state the

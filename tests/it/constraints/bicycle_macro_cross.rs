@@ -246,3 +246,26 @@ fn a_field_value_that_breaks_a_rule_is_refused_naming_it() {
         "{err}"
     );
 }
+
+/// The derived bicycle's exact `acceleration_jacobian` (the derive's derivatives through the
+/// projection) against the hand-built scene interpreted, whose `RollingModel` has no
+/// derivative code and differences u̇ (central, Richardson): two formulations, two methods.
+#[test]
+fn the_exact_rolling_jacobian_matches_the_interpreted_scenes_differences() {
+    let bike = Bicycle::benchmark();
+    let model = interpreted(&bike);
+    let mut rng = Rng::new(39);
+    let mut worst = 0.0_f64;
+    for _ in 0..4 {
+        let (q, u) = random_state(&bike, &mut rng);
+        let (by_q, by_u) = bike.acceleration_jacobian(0.0, &q, &u).expect("exact");
+        let (dq, du) = model
+            .acceleration_jacobian(0.0, &q, &u)
+            .expect("differenced");
+        let exact: Vec<f64> = by_q.iter().chain(by_u.iter()).copied().collect();
+        let differenced: Vec<f64> = dq.iter().chain(du.iter()).copied().collect();
+        worst = worst.max(relative(&exact, &differenced));
+    }
+    println!("exact against the interpreted scene's differences: {worst:e}");
+    assert!(worst < 1e-9, "{worst:e}");
+}

@@ -7,6 +7,7 @@
 
 use nalgebra::{SMatrix, SVector};
 
+use super::partials::{AtState, RollingPartials, jacobian};
 use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, START_RESIDUAL};
 use crate::mechanism::error::MechanismError;
 use crate::ode::{OdeError, System};
@@ -44,6 +45,22 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
         q: &[f64; N],
         qdot: &[f64; N],
     ) -> (SMatrix<f64, M, N>, SVector<f64, M>);
+
+    /// The partial derivatives of M q̈, f, A and Ȧq̇ at (t, q, q̇, q̈), differentiated
+    /// exactly ([`RollingPartials`]): the derive emits them as straight-line code. `None`
+    /// where they are not known: a mechanism with user-function efforts (whose dependence on
+    /// q and q̇ the engine cannot see) and the interpreted [`super::RollingModel`]; then
+    /// [`RollingDynamics::acceleration_jacobian`] differences.
+    fn partials(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+        qddot: &[f64; N],
+    ) -> Option<RollingPartials<N, M>> {
+        let _ = (t, q, qdot, qddot);
+        None
+    }
 
     /// Which rows are holonomic (a wheel's height), the others nonholonomic (no slip).
     fn holonomic_rows(&self) -> [bool; M];
@@ -153,6 +170,83 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
         let (mass, forcing) = self.mass_forcing(t, q, &projected.rates);
         let ud = partition.accelerations(&mass, &forcing, &a, &rate_terms, &projected)?;
         Ok((projected.rates, ud))
+    }
+
+    /// The Jacobian of the free accelerations u̇(t, q, u) of [`RollingDynamics::derivative`]:
+    /// `(∂u̇/∂q, ∂u̇/∂u)`, k × n and k × k, every coordinate taken as independent (the
+    /// heights are not held: a caller that keeps the wheels on the floor chains the
+    /// coordinates' tangent to the height rows in, as `Bicycle::canonical` does).
+    ///
+    /// Exact where [`RollingDynamics::partials`] gives the derivatives (every derived
+    /// rolling mechanism without user efforts): they are carried
+    /// through the projection by the product rule (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the like; see
+    /// docs/linearisation.md). Otherwise central differences of
+    /// [`RollingDynamics::derivative`] in (q, u) with Richardson extrapolation
+    /// ([`crate::linalg::jacobian`], about 1e-12 relative).
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::derivative`]; [`MechanismError::NonFinite`] if a derivative is
+    /// not finite.
+    #[allow(clippy::type_complexity)]
+    fn acceleration_jacobian(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        u: &[f64; K],
+    ) -> Result<(SMatrix<f64, K, N>, SMatrix<f64, K, K>), MechanismError> {
+        let (rates, ud) = self.derivative(t, q, u)?;
+        let partition = self.partition();
+        let (a, rate_terms) = self.constraint_rows(q, &rates);
+        let projected = partition.rates(&a, u)?;
+        let q_ddot = partition.full_accelerations(&a, &rate_terms, &projected, &ud)?;
+        let mut qddot = [0.0; N];
+        qddot.copy_from_slice(q_ddot.as_slice());
+        let (by_q, by_u) = match self.partials(t, q, &rates, &qddot) {
+            Some(partials) => {
+                let (mass, forcing) = self.mass_forcing(t, q, &rates);
+                let at = AtState {
+                    mass,
+                    forcing,
+                    a,
+                    rate_terms,
+                    partials: &partials,
+                };
+                jacobian(&partition, &at, u)?
+            }
+            None => {
+                let state: Vec<f64> = q.iter().chain(u.iter()).copied().collect();
+                let jac = crate::linalg::jacobian(
+                    |y, out| {
+                        let (mut q, mut u) = ([0.0; N], [0.0; K]);
+                        q.copy_from_slice(&y[..N]);
+                        u.copy_from_slice(&y[N..]);
+                        match self.derivative(t, &q, &u) {
+                            Ok((qd, ud)) => {
+                                out[..N].copy_from_slice(&qd);
+                                out[N..].copy_from_slice(&ud);
+                            }
+                            Err(_) => out.fill(f64::NAN),
+                        }
+                    },
+                    &state,
+                )
+                .map_err(|_| MechanismError::NonFinite {
+                    quantity: "difference quotients of the accelerations",
+                    values: state.clone(),
+                })?;
+                (
+                    SMatrix::from_fn(|i, j| jac[(N + i, j)]),
+                    SMatrix::from_fn(|i, j| jac[(N + i, N + j)]),
+                )
+            }
+        };
+        if by_q.iter().chain(by_u.iter()).any(|v| !v.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "derivatives of the free accelerations",
+                values: by_q.iter().chain(by_u.iter()).copied().collect(),
+            });
+        }
+        Ok((by_q, by_u))
     }
 
     /// The constraints' multipliers λ at (t, q, u): M q̈ = f + Aᵀ λ. For a wheel's two

@@ -10,6 +10,9 @@
 //!   evaluation, puts the wheels on the floor ([`RollingDynamics::close_contacts`]) and
 //!   reports the multipliers (the contact forces). The derive implements it with
 //!   straight-line code; [`RollingModel`] interprets a derivation.
+//! - [`RollingDynamics::acceleration_jacobian`] gives ∂u̇/∂q and ∂u̇/∂u exactly, from the
+//!   engine's derivatives of M, f, A and Ȧq̇ ([`RollingPartials`]) carried through the
+//!   projection by the product rule.
 //!
 //! Why numerically: the symbolic elimination of a five-row block with a square root in its
 //! rows (the bicycle's) swelled past 8 GB; see docs/bicycle.md.
@@ -19,11 +22,13 @@
 mod derivation;
 mod dynamics;
 mod interpreted;
+mod partials;
 mod run;
 mod scene;
 
 pub use derivation::RollingDerivation;
 pub use dynamics::{CONTACT_TOLERANCE, MIN_TILT, RollingDynamics, RollingSystem, split_rolling};
 pub use interpreted::RollingModel;
+pub use partials::RollingPartials;
 pub use run::{FLAT_WITNESS, RollingHalt, RollingRun, rolling_run};
 pub use scene::{RollingScene, RollingWheel, WheelSurface};

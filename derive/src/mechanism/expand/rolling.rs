@@ -1,8 +1,10 @@
 //! Expansion of a mechanism whose bodies roll: the engine's `derive_rolling` (M, f, the
 //! wheels' rows A and Ȧq̇, heights, tilts, contact velocities, T + V), each method one
 //! straight-line block quoted into `impl RollingDynamics<N, M, K>`; the provided methods
-//! of the trait finish Maggi's projection numerically. No `MechanismDynamics` and no
-//! `System<2N>`: the state is (q, u), n coordinates and k free speeds, not (q, q̇).
+//! of the trait finish Maggi's projection numerically. `partials` gives the engine's
+//! derivatives of M, f, A and Ȧq̇, from which the trait's `acceleration_jacobian` is
+//! exact. No `MechanismDynamics` and no `System<2N>`: the state is (q, u), n coordinates
+//! and k free speeds, not (q, q̇).
 
 use precess_core::mechanism::MechanismError;
 use precess_core::mechanism::rolling::RollingDerivation;
@@ -79,6 +81,23 @@ pub(super) fn expand(
             #p::SVector::<f64, #m>::from_column_slice(&[#(#r),*]),
         )}
     });
+    // The exact derivatives the Jacobian of u̇ is assembled from; not with user efforts,
+    // whose dependence on q and q̇ the engine cannot see (the trait's default differences).
+    let partials = if checked.efforts.is_empty() {
+        let entries = derivation.partials(arena);
+        let body = method.body(
+            arena,
+            &entries,
+            |o| quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*])),
+        );
+        quote! {
+            fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n], qddot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
+                ::core::option::Option::Some(#body)
+            }
+        }
+    } else {
+        TokenStream::new()
+    };
     let zero = arena.zero();
     let heights: Vec<ExprId> = derivation
         .constraints
@@ -159,6 +178,8 @@ pub(super) fn expand(
                 let t = 0.0_f64;
                 #constraint_rows
             }
+
+            #partials
 
             fn holonomic_rows(&self) -> [bool; #m] {
                 [#(#holonomic),*]
