@@ -280,3 +280,39 @@ fn canonical_matrices_match_appendix_a_at_other_parameters() {
     println!("capsize {v_c} (closed form) vs {}", found.parameter);
     assert!(((found.parameter - v_c) / v_c).abs() < 1e-10);
 }
+
+/// The rolling input matrix K⁻¹ Sᵀ G of a lean torque on φ and a steer torque on δ, at the
+/// upright run: the lateral response is M⁻¹ of the paper's M (eq. 5.3), and the rear
+/// wheel's speed, which the mirror symmetry decouples, takes none of it.
+#[test]
+fn lean_and_steer_torques_accelerate_by_the_inverse_of_the_published_mass_matrix() {
+    use precess::mechanism::rolling::RollingDynamics;
+    use precess::nalgebra::SMatrix;
+    let b = Bicycle::benchmark();
+    let mut q = [0.0; 8];
+    b.close_contacts(&mut q).expect("on the floor");
+    let mut g = SMatrix::<f64, 8, 2>::zeros();
+    g[(Bicycle::PHI, 0)] = 1.0;
+    g[(Bicycle::DELTA, 1)] = 1.0;
+    let v = 5.0;
+    let inputs = b
+        .input_matrix(0.0, &q, &[0.0, 0.0, -v / b.r_r], &g)
+        .expect("regular");
+    let lateral = Matrix2::new(
+        inputs[(0, 0)],
+        inputs[(0, 1)],
+        inputs[(1, 0)],
+        inputs[(1, 1)],
+    );
+    let identity = published()[0] * lateral;
+    let off = (identity - Matrix2::identity()).amax();
+    let rear: Vec<f64> = inputs.row(2).iter().copied().collect();
+    println!("M·B_lateral − I: {off:e}; rear wheel: {rear:?}");
+    assert!(off < 1e-12, "{off:e}");
+    assert!(inputs.row(2).amax() < 1e-12, "{:?}", inputs.row(2));
+    let bad = g.map(|x| x * f64::NAN);
+    assert!(
+        b.input_matrix(0.0, &q, &[0.0, 0.0, -v / b.r_r], &bad)
+            .is_err()
+    );
+}

@@ -8,7 +8,7 @@
 use nalgebra::{SMatrix, SVector};
 
 use super::partials::{AtState, RollingPartials, jacobian};
-use crate::lagrange::{LagrangeError, MAX_NEWTON, Partition, START_RESIDUAL};
+use crate::lagrange::{Inverted, LagrangeError, MAX_NEWTON, Partition, START_RESIDUAL, solve};
 use crate::mechanism::error::MechanismError;
 use crate::ode::{OdeError, System};
 
@@ -247,6 +247,36 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
             });
         }
         Ok((by_q, by_u))
+    }
+
+    /// ∂u̇/∂τ for inputs τ that enter as generalised forces Q = G τ (column j of `g` the
+    /// generalised force of a unit of input j: for a torque at a hinge, the unit vector of
+    /// the hinge's coordinate, as a bicycle's steer torque on δ): K⁻¹ Sᵀ G, K = Sᵀ M S,
+    /// exact, since u̇ is linear in Q. With [`RollingDynamics::acceleration_jacobian`] it
+    /// gives B of ẋ = A x + B τ about a steady motion.
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::rates`]; [`LagrangeError::SingularReducedMass`] where K is
+    /// singular; [`MechanismError::NonFinite`] for a non-finite entry of `g`.
+    fn input_matrix<const P: usize>(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        u: &[f64; K],
+        g: &SMatrix<f64, N, P>,
+    ) -> Result<SMatrix<f64, K, P>, MechanismError> {
+        if g.iter().any(|v| !v.is_finite()) {
+            return Err(MechanismError::NonFinite {
+                quantity: "input matrix G",
+                values: g.iter().copied().collect(),
+            });
+        }
+        let rates = self.rates(q, u)?;
+        let (a, _) = self.constraint_rows(q, &rates);
+        let s = self.partition().rates(&a, u)?.projection;
+        let (mass, _) = self.mass_forcing(t, q, &rates);
+        let k = s.transpose() * mass * s;
+        Ok(solve(k, s.transpose() * g, Inverted::ReducedMass)?)
     }
 
     /// The constraints' multipliers λ at (t, q, u): M q̈ = f + Aᵀ λ. For a wheel's two
