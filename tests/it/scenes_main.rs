@@ -105,7 +105,7 @@ mod rolling_once {
     mod accelerations;
     mod poses;
     mod run;
-    mod scenes;
+    pub(crate) mod scenes;
     mod support;
     mod theory;
 }

@@ -6,22 +6,9 @@
 
 use precess::mechanism::rolling::RollingDynamics;
 use precess::models::Bicycle;
-use precess::prelude::*;
 use precess_testkit::rng::Rng;
 
-/// A disk of fields rolling on its rim: slides along x, y and z carry the hub, a spherical
-/// joint turns the disk (6 coordinates; no slip along x and y and the height: 3 rows).
-#[derive(Mechanism)]
-#[mechanism(gravity = 9.81, up = z, speeds = [yaw, pitch, roll])]
-#[body(slide_x, parent = ground, joint = prismatic(axis = x), q = x, parts(particle(mass = 0.0)))]
-#[body(slide_y, parent = slide_x, joint = prismatic(axis = y), q = y, parts(particle(mass = 0.0)))]
-#[body(slide_z, parent = slide_y, joint = prismatic(axis = z), q = z, parts(particle(mass = 0.0)))]
-#[body(disk, parent = slide_z, joint = spherical(sequence = zyx), q = [yaw, pitch, roll],
-       parts(disk(mass = m, radius = r)), rolls = disk_rim(radius = r, axle = z))]
-struct Coin {
-    m: f64,
-    r: f64,
-}
+use crate::rolling_once::scenes::WheelDisk;
 
 /// u̇ at (q, u), every coordinate free (the heights not re-closed: the Jacobian's meaning).
 fn free_accelerations<const N: usize, const M: usize, const K: usize>(
@@ -93,7 +80,9 @@ fn worst_gap<const N: usize, const M: usize, const K: usize>(
 
 #[test]
 fn a_rolling_disks_exact_jacobian_matches_richardson_differences() {
-    let coin = Coin { m: 0.7, r: 0.15 };
+    // The rolling-once tests' disk (0.5 kg, radius 0.1 m): slides along x, y and z carry
+    // the hub, a spherical joint turns it (6 coordinates, 3 rows, 3 free speeds).
+    let coin = WheelDisk;
     let mut rng = Rng::new(39);
     let mut worst = 0.0_f64;
     for _ in 0..10 {
