@@ -136,6 +136,18 @@ pub enum MechanismError {
         /// The values.
         values: Vec<f64>,
     },
+    /// A coordinate index that is not one of the free (independent) coordinates.
+    #[error(
+        "coordinate {index} is not a free coordinate of the {coordinates} (dependent: {dependent:?})"
+    )]
+    NotFreeCoordinate {
+        /// The index given.
+        index: usize,
+        /// The coordinate count.
+        coordinates: usize,
+        /// The dependent coordinates' indices.
+        dependent: Vec<usize>,
+    },
     /// A state of the wrong length.
     #[error("{quantity} has {got} entries, the mechanism has {expected} coordinates")]
     StateLength {

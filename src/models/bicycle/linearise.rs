@@ -6,11 +6,10 @@ use thiserror::Error;
 
 use super::Bicycle;
 use super::canonical::Canonical;
-use crate::lagrange::LagrangeError;
 use crate::linalg::LinalgError;
 use crate::mechanism::MechanismError;
 use crate::mechanism::rolling::RollingDynamics;
-use crate::nalgebra::{DMatrix, DVector, Matrix2, Matrix3};
+use crate::nalgebra::{Matrix2, Matrix3};
 
 /// The largest lateral acceleration \[rad/s²\] allowed at the reference state of the
 /// linearisation: the upright straight run must be a steady motion (it is for every
@@ -87,7 +86,10 @@ impl Bicycle {
         // The wheels stay on the floor as φ or δ moves: along the tangent of the height
         // rows (implicit-function theorem), the dependent coordinates following by the
         // least-norm step `close_contacts` takes (only the pitch, for the bicycle).
-        let tangents = self.contact_tangents(&q)?;
+        let tangents = [
+            self.height_tangent(&q, Bicycle::PHI)?,
+            self.height_tangent(&q, Bicycle::DELTA)?,
+        ];
         let angle = |i: usize, t: &[f64; 8]| (0..8).map(|k| by_q[(i, k)] * t[k]).sum::<f64>();
         let [t_phi, t_delta] = &tangents;
         Ok((
@@ -99,38 +101,6 @@ impl Bicycle {
             ),
             Matrix2::new(by_u[(0, 0)], by_u[(0, 1)], by_u[(1, 0)], by_u[(1, 1)]),
         ))
-    }
-
-    /// dq/dφ and dq/dδ on the floor at `q`: the unit change of the angle, the dependent
-    /// coordinates moving by the least-norm solution of J_D dq_D = −J e_j, J the height
-    /// rows of A (∂h/∂q, their coefficients).
-    fn contact_tangents(&self, q: &[f64; 8]) -> Result<[[f64; 8]; 2], MechanismError> {
-        let (a, _) = self.constraint_rows(q, &[0.0; 8]);
-        let dependent = self.partition().dependent;
-        let rows: Vec<usize> = (0..5).filter(|&r| self.holonomic_rows()[r]).collect();
-        let j_d = DMatrix::from_fn(rows.len(), 5, |i, c| a[(rows[i], dependent[c])]);
-        let normal = &j_d * j_d.transpose();
-        let singular = LagrangeError::SingularAtState {
-            determinant: normal.determinant(),
-            scale: normal.norm(),
-        };
-        let lu = normal.lu();
-        let mut out = [[0.0; 8]; 2];
-        for (t, free) in out.iter_mut().zip([Bicycle::PHI, Bicycle::DELTA]) {
-            t[free] = 1.0;
-            let rhs = DVector::from_fn(rows.len(), |i, _| a[(rows[i], free)]);
-            let Some(y) = lu.solve(&rhs) else {
-                return Err(singular.into());
-            };
-            let step = j_d.transpose() * y;
-            for (c, &d) in dependent.iter().enumerate() {
-                t[d] = -step[c];
-            }
-            if t.iter().any(|v| !v.is_finite()) {
-                return Err(singular.clone().into());
-            }
-        }
-        Ok(out)
     }
 
     /// The linearised lateral equations about the upright straight run in the canonical

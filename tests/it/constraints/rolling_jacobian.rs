@@ -128,3 +128,49 @@ fn the_bicycles_exact_jacobian_matches_richardson_differences() {
     println!("bicycle: worst relative gap {worst:e}");
     assert!(worst < 1e-9, "{worst:e}");
 }
+
+/// Along `height_tangent` the wheel stays on the floor to second order (its height after a
+/// step h is O(h²), against O(h) for the angle moved alone); a dependent coordinate has no
+/// tangent of its own.
+#[test]
+fn the_height_tangent_keeps_the_wheel_on_the_floor_to_second_order() {
+    use precess::mechanism::MechanismError;
+    let disk = WheelDisk;
+    let mut q = [0.2, -0.1, 0.1, 0.7, 0.3, std::f64::consts::FRAC_PI_2 - 0.4];
+    disk.close_contacts(&mut q).expect("on the floor");
+    let h = 1e-3;
+    for free in 3..6 {
+        let t = disk.height_tangent(&q, free).expect("a free coordinate");
+        let along = |s: f64| {
+            let moved: [f64; 6] = std::array::from_fn(|k| q[k] + s * t[k]);
+            disk.heights(&moved)[2].abs()
+        };
+        let mut alone = q;
+        alone[free] += h;
+        let unfollowed = disk.heights(&alone)[2].abs();
+        println!(
+            "q[{free}]: height {:.1e} at h, {:.1e} at h/2 along the tangent; {unfollowed:.1e} \
+             moved alone",
+            along(h),
+            along(h / 2.0)
+        );
+        // Second order: at most h² (the rim's curvature is 1/r = 10/m), and a quarter of it
+        // at h/2 wherever the angle moves the wheel at all.
+        assert!(along(h) <= h * h, "{:e}", along(h));
+        if unfollowed > 0.0 {
+            assert!(
+                along(h) < 1e-2 * unfollowed,
+                "{:e} against {unfollowed:e}",
+                along(h)
+            );
+            let ratio = along(h) / along(h / 2.0);
+            assert!((3.5..4.5).contains(&ratio), "ratio {ratio}");
+        }
+    }
+    let dependent = disk.partition().dependent;
+    assert!(matches!(
+        disk.height_tangent(&q, dependent[0]),
+        Err(MechanismError::NotFreeCoordinate { .. })
+    ));
+    assert!(disk.height_tangent(&q, 6).is_err());
+}

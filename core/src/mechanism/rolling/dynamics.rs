@@ -304,7 +304,6 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// [`LagrangeError::SingularAtState`] if the heights do not depend on the dependent
     /// coordinates there.
     fn close_contacts(&self, q: &mut [f64; N]) -> Result<usize, MechanismError> {
-        let partition = self.partition();
         let mut residual = f64::NAN;
         for k in 0..MAX_NEWTON {
             self.check_configuration(q)?;
@@ -313,28 +312,9 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
             if residual <= CONTACT_TOLERANCE {
                 return Ok(k);
             }
-            // Only the holonomic rows: their Jacobian in the dependent coordinates.
-            let (a, _) = self.constraint_rows(q, &[0.0; N]);
-            let holonomic = self.holonomic_rows();
-            let rows: Vec<usize> = (0..M).filter(|&r| holonomic[r]).collect();
-            let jacobian = nalgebra::DMatrix::from_fn(rows.len(), M, |i, c| {
-                a[(rows[i], partition.dependent[c])]
-            });
-            let values = nalgebra::DVector::from_fn(rows.len(), |i, _| h[rows[i]]);
-            let normal = &jacobian * jacobian.transpose();
-            let singular = LagrangeError::SingularAtState {
-                determinant: normal.determinant(),
-                scale: normal.norm(),
-            };
-            let Some(y) = normal.lu().solve(&values) else {
-                return Err(singular.into());
-            };
-            let step = jacobian.transpose() * y;
-            if step.iter().any(|v| !v.is_finite()) {
-                return Err(singular.into());
-            }
-            for (c, &d) in partition.dependent.iter().enumerate() {
-                q[d] -= step[c];
+            let step = self.height_step(q, &h)?;
+            for (qi, di) in q.iter_mut().zip(step) {
+                *qi -= di;
             }
         }
         Err(LagrangeError::LoopNotClosed {
@@ -343,6 +323,67 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
             tolerance: CONTACT_TOLERANCE,
         }
         .into())
+    }
+
+    /// The least-norm change of the dependent coordinates that changes the heights by `b`
+    /// to first order (one value per row of A; only the holonomic rows are read): J_D dq_D =
+    /// b, J the holonomic rows of A at `q`, dq_D = J_Dᵀ (J_D J_Dᵀ)⁻¹ b, returned in the
+    /// coordinates' order (zero at the free ones). [`RollingDynamics::close_contacts`]
+    /// steps by it; [`RollingDynamics::height_tangent`] follows it.
+    ///
+    /// # Errors
+    /// [`LagrangeError::SingularAtState`] if the heights do not depend on the dependent
+    /// coordinates at `q` (or the step is not finite).
+    fn height_step(&self, q: &[f64; N], b: &[f64; M]) -> Result<[f64; N], MechanismError> {
+        let dependent = self.partition().dependent;
+        let (a, _) = self.constraint_rows(q, &[0.0; N]);
+        let holonomic = self.holonomic_rows();
+        let rows: Vec<usize> = (0..M).filter(|&r| holonomic[r]).collect();
+        let jacobian = nalgebra::DMatrix::from_fn(rows.len(), M, |i, c| a[(rows[i], dependent[c])]);
+        let values = nalgebra::DVector::from_fn(rows.len(), |i, _| b[rows[i]]);
+        let normal = &jacobian * jacobian.transpose();
+        let singular = LagrangeError::SingularAtState {
+            determinant: normal.determinant(),
+            scale: normal.norm(),
+        };
+        let Some(y) = normal.lu().solve(&values) else {
+            return Err(singular.into());
+        };
+        let step = jacobian.transpose() * y;
+        if step.iter().any(|v| !v.is_finite()) {
+            return Err(singular.into());
+        }
+        let mut out = [0.0; N];
+        for (c, &d) in dependent.iter().enumerate() {
+            out[d] = step[c];
+        }
+        Ok(out)
+    }
+
+    /// dq/dq_j on the floor at `q`, `free` = j a free coordinate: its unit change, the
+    /// dependent coordinates following so that every wheel's height stays zero to first
+    /// order (the implicit-function theorem, least-norm where the rows leave freedom, as
+    /// [`RollingDynamics::close_contacts`] steps). Chained into the coordinate columns of
+    /// [`RollingDynamics::acceleration_jacobian`], it gives the Jacobian on the floor.
+    ///
+    /// # Errors
+    /// As [`RollingDynamics::height_step`]; [`MechanismError::NotFreeCoordinate`] for a
+    /// `free` that is a dependent coordinate or none.
+    fn height_tangent(&self, q: &[f64; N], free: usize) -> Result<[f64; N], MechanismError> {
+        let dependent = self.partition().dependent;
+        if free >= N || dependent.contains(&free) {
+            return Err(MechanismError::NotFreeCoordinate {
+                index: free,
+                coordinates: N,
+                dependent: dependent.to_vec(),
+            });
+        }
+        let (a, _) = self.constraint_rows(q, &[0.0; N]);
+        let column: [f64; M] = std::array::from_fn(|r| a[(r, free)]);
+        let step = self.height_step(q, &column)?;
+        let mut t = step.map(|v| -v);
+        t[free] += 1.0;
+        Ok(t)
     }
 
     /// This mechanism as a [`System`] over the state (q, u) of S = n + k entries (a state

@@ -83,11 +83,10 @@ impl RollingDerivation {
         let eqs = &self.equations;
         let a = &self.constraints.coefficients;
         let mut out = Vec::new();
-        let accels = coords.accels.clone();
         for row in &eqs.mass {
             let terms: Vec<ExprId> = row
                 .iter()
-                .zip(&accels)
+                .zip(&coords.accels)
                 .map(|(&m, &a)| arena.mul(m, a))
                 .collect();
             let product = arena.sum(&terms);
