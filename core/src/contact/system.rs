@@ -93,9 +93,11 @@ impl<'a, D: ContactDynamics + ?Sized> ContactSystem<'a, D> {
     /// The system integrated by a stepper with these tolerances: a slip or a spin below what
     /// the stepper resolves (atol + rtol × the velocity scale) is taken as zero. Without
     /// this, a Coulomb slip that should stop chatters about zero at the tolerance's size, the
-    /// friction reversing from step to step, and the steps shrink to that size: a stick–slip
-    /// top at tol 10⁻⁷ took 10⁵ steps for 0.02 s.
-    pub(crate) fn resolving(mut self, atol: f64, rtol: f64) -> Self {
+    /// friction reversing from step to step, and the steps shrink to that size: an eccentric
+    /// sphere at tol 10⁻⁷ took 10⁵ steps for 0.02 s. [`super::ContactRun`] sets its stepper's
+    /// tolerances; a run built by hand over this system (`ode::Hybrid` over a stepper of
+    /// it) should set the same.
+    pub fn resolving(mut self, atol: f64, rtol: f64) -> Self {
         self.watch.resolution = (atol, rtol);
         self
     }

@@ -101,8 +101,7 @@ fn build(
     functions: &[Function],
     jacobian_of: Option<usize>,
 ) -> Result<Exported, ExportError> {
-    let names = symbol_names(arena, state);
-    build_with(ident, arena, (state, &names, &[]), functions, jacobian_of)
+    build_inputs(ident, arena, state, &[], functions, jacobian_of)
 }
 
 /// [`build`] with the `inputs` the caller supplies, named as given.
@@ -163,7 +162,6 @@ fn build_with(
     Ok(b.finish())
 }
 
-/// A function returning all it lowers.
 /// The `mass` and `forcing` functions of a mechanism's tree, documented by `docs`, lowered
 /// together from `eqs` as its `(M, f)` method lowers them.
 fn mass_and_forcing<'a>(eqs: &EquationsOfMotion, docs: [&'a str; 2]) -> [Function<'a>; 2] {
@@ -176,6 +174,7 @@ fn mass_and_forcing<'a>(eqs: &EquationsOfMotion, docs: [&'a str; 2]) -> [Functio
     ]
 }
 
+/// A function returning all it lowers.
 fn whole<'a>(name: &'a str, doc: &'a str, outputs: Vec<ExprId>) -> Function<'a> {
     let n = outputs.len();
     (name, doc, outputs, 0..n, (n, 1))
