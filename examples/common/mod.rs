@@ -13,11 +13,28 @@ use std::path::PathBuf;
 
 /// The directory for figures: the first command-line argument, else
 /// [`precess::plot::DEFAULT_DIR`] (`target/precess-plots`).
+///
+/// `-h` or `--help` prints the usage and exits; any other argument that starts with `-` is
+/// refused, so that a mistyped flag never becomes a directory of that name.
 pub fn plot_dir() -> Result<PathBuf, Box<dyn Error>> {
-    let dir = std::env::args()
-        .nth(1)
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(precess::plot::DEFAULT_DIR));
+    let dir = match std::env::args().nth(1) {
+        None => PathBuf::from(precess::plot::DEFAULT_DIR),
+        Some(flag) if flag == "-h" || flag == "--help" => {
+            let program = std::env::args().next().unwrap_or_default();
+            println!(
+                "usage: {program} [DIR]\n\nPrints measured against theory and writes the \
+                 figures to DIR (default {}).",
+                precess::plot::DEFAULT_DIR
+            );
+            std::process::exit(0);
+        }
+        Some(flag) if flag.starts_with('-') => {
+            return Err(
+                format!("unknown option {flag:?}: the only argument is a directory").into(),
+            );
+        }
+        Some(dir) => PathBuf::from(dir),
+    };
     std::fs::create_dir_all(&dir)?;
     Ok(dir)
 }
