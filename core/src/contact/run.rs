@@ -8,7 +8,7 @@ use super::dynamics::ContactDynamics;
 use super::error::ContactError;
 use super::outcome::{ContactOutcome, Switch};
 use super::phases::check_start;
-use super::scene::Phase;
+use super::scene::{ContactMode, Phase};
 use super::state::STATE_LEN;
 use super::system::ContactSystem;
 use crate::ode::{
@@ -114,7 +114,12 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 
     /// The current phase.
     pub fn phase(&self) -> Phase {
-        *self.run.mode()
+        self.run.mode().phase
+    }
+
+    /// Whether pivoting friction holds the spin about the vertical at zero now.
+    pub fn spin_held(&self) -> bool {
+        self.run.mode().spin_held
     }
 
     /// The phase switches so far, each from the loop's transitions.
@@ -124,8 +129,10 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             .iter()
             .map(|tr| Switch {
                 t: tr.t,
-                from: tr.before.mode,
-                to: tr.after.mode,
+                from: tr.before.mode.phase,
+                to: tr.after.mode.phase,
+                spin_held_before: tr.before.mode.spin_held,
+                spin_held_after: tr.after.mode.spin_held,
                 state: tr.before.x,
                 after: tr.after.x,
                 witness: match tr.cause {
@@ -179,5 +186,5 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 crate::ode::delegate_stepper!(
     [D: ContactDynamics + ?Sized, P: EmbeddedPair] ContactRun<'_, D, P>,
     run,
-    HybridState<Phase, [f64; STATE_LEN]>
+    HybridState<ContactMode, [f64; STATE_LEN]>
 );
