@@ -143,8 +143,19 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
         }
     }
 
+    /// The quaternion back on the unit sphere; with the spin held, a spin the steps let
+    /// drift (below δ_ω: a spin seeded as it breaks loose is twice that) back to zero, under
+    /// rolling the horizontal velocity with it.
     fn project(&self, x: &mut State) -> bool {
-        normalise_quaternion(x, layout::QUATERNION)
+        let mut changed = normalise_quaternion(x, layout::QUATERNION);
+        if self.spin_held
+            && pivot::spin(self.body, x) != 0.0
+            && pivot::spin_margin(self.body, &self.watch, x) < 0.0
+        {
+            *x = pivot::with_spin(self.body, self.phase, x, 0.0);
+            changed = true;
+        }
+        changed
     }
 
     fn on_witness(

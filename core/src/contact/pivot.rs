@@ -32,8 +32,9 @@
 //! is positive; at its root the couple the motion needs reaches ℓ_p N and the spin breaks
 //! loose: it is seeded at 2δ_ω against the couple (the way the rest of the motion turns it),
 //! the velocities scaled back to the kinetic energy they had, and the spin is free again.
-//! The probes are at ±h with h = 10⁻¹² (|ω| + |v|/|r|) + 10⁻¹⁰⁰ rad/s, so the held
-//! motion is the constrained one to 10⁻¹² of the state's own scales.
+//! The probes are at ±h with h = 10⁻¹³ (|ω| + |v|/|r|) + 10⁻¹⁰⁰ rad/s (some 300 times the
+//! rounding of ω·γ), so the held motion is the constrained one to about 10⁻¹³ of the state's
+//! own scales.
 //!
 //! The sign in the equations is ω·γ/√((ω·γ)² + ε²) with ε = 10⁻¹⁵⁰ rad/s, so the
 //! right-hand side is finite, if meaningless, at a spin of exactly zero; a held run never
@@ -53,7 +54,7 @@ use crate::ode::Action;
 type State = [f64; STATE_LEN];
 
 /// The probes' spin h as a fraction of the state's angular scale |ω| + |v|/|r|.
-const PROBE_FRACTION: f64 = 1e-12;
+const PROBE_FRACTION: f64 = 1e-13;
 
 /// The probes' spin at a body at rest: far above the sign's ε = 10⁻¹⁵⁰ rad/s, so the sign is
 /// exactly ±1 there too.
