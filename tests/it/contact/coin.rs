@@ -3,7 +3,8 @@
 //! holds without friction, N = M g, and only the pivoting torque acts on the spin, about the
 //! contact point through the centre, I_d ω̇ = −ℓ_p M g (I_d = M ρ²/4 the moment about a
 //! diameter). The coin comes to rest in finite time, at t* = I_d ω₀ / (ℓ_p M g), where the
-//! friction holds the spin and the run goes on with it held: the coin stands at rest. Under a
+//! friction holds the spin and the run goes on with it held: the coin stands at rest, an
+//! unstable equilibrium it leaves at the toppling rate √(4g/(5ρ)). Under a
 //! linear spin resistance −c_s ω_⊥ instead, the spin only decays, e^(−c_s t / I_d), and the
 //! coin never stops.
 
@@ -65,6 +66,21 @@ fn a_coin_with_coulomb_and_pivoting_friction_comes_to_rest_at_the_closed_form_ti
     let rest = body.mass * body.gravity * 0.012;
     let e = m.energy(Phase::Rolling, state);
     assert!((e / rest - 1.0).abs() < 1e-12, "{e} vs {rest}");
+    // Standing on its edge at rest is unstable: the rounding's tilt grows as e^(s t) with
+    // s² = M g ρ / (I_d + M ρ²) = 4g/(5ρ), the coin toppling about the rim's tangent (on
+    // which the contact point stays, so rolling holds without friction), its spin held.
+    let rate = (4.0 * body.gravity / (5.0 * 0.012)).sqrt();
+    let tilt = |y: &[f64; 11]| Vector3::new(y[8], y[9], y[10]).norm();
+    let w1 = tilt(run.y());
+    let span = 0.5 * t_star;
+    run.advance_to(t_end + span).unwrap();
+    let measured = (tilt(run.y()) / w1).ln() / span;
+    println!(
+        "  at rest on its edge, the tilt grows at {measured} 1/s against √(4g/(5ρ)) = {rate} 1/s, |ω| {w1:e} → {:e} rad/s",
+        tilt(run.y())
+    );
+    assert!(run.spin_held());
+    assert!((measured / rate - 1.0).abs() < 1e-4, "{measured} vs {rate}");
 
     // A linear spin resistance with the same initial torque only slows it exponentially.
     let cs = l * body.mass * body.gravity / w0;

@@ -255,3 +255,59 @@ fn holding_a_spin_needs_pivoting_friction() {
     let e = held_spin(&m, Phase::Rolling, 0.0, &y).unwrap_err();
     assert_eq!(e, ContactError::NoPivoting { law: "rolling" });
 }
+
+#[test]
+fn a_struck_ball_without_spin_slides_then_rolls_with_its_spin_held() {
+    // A billiard ball struck without spin, under stick–slip (μ = 0.2) and pivoting
+    // friction: held from the start, it slides for t* = 2 v₀/(7 μ g), then rolls at 5/7 v₀,
+    // its spin held throughout, x(1) = v₀ t* − ½ μ g t*² + 5/7 v₀ (1 − t*).
+    let (mass, rho, mu, g, v0) = (0.17, 0.1, 0.2, 9.81, 2.0);
+    let i = 0.4 * mass * rho * rho;
+    let body = NumBody {
+        mass,
+        center: [0.0; 3],
+        inertia: [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, i]],
+        surface: NumSurface::Sphere { c: [0.0; 3], rho },
+        gravity: g,
+    };
+    let m = try_model_with(&body, NumLaw::StickSlip(mu), pivoting(0.002)).unwrap();
+    let y0 = state(
+        [0.0, 0.0],
+        [v0, 0.0],
+        &UnitQuaternion::identity(),
+        &Vector3::zeros(),
+    );
+    let cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
+    let mut run = ContactRun::new(&m, Phase::Sliding, 0.0, y0, cfg).unwrap();
+    assert_eq!(
+        run.advance_to(1.0).unwrap(),
+        ContactOutcome::Reached { t: 1.0 }
+    );
+    let t_star = 2.0 * v0 / (7.0 * mu * g);
+    let switches = run.switches();
+    let [held, rolls] = switches.as_slice() else {
+        panic!("{switches:?}")
+    };
+    let x1 = v0 * t_star - 0.5 * mu * g * t_star * t_star + 5.0 / 7.0 * v0 * (1.0 - t_star);
+    println!(
+        "struck ball, spin held: rolls from {} s (t* = {t_star}), v = {} (5/7 v₀ = {}), x(1) = {} ({x1})",
+        rolls.t,
+        run.y()[2],
+        5.0 / 7.0 * v0,
+        run.y()[0]
+    );
+    assert_eq!(
+        (held.t, held.witness, held.to),
+        (0.0, Some("spin"), Phase::Sliding)
+    );
+    assert!(held.spin_held_after);
+    assert_eq!(
+        (rolls.from, rolls.to, rolls.witness),
+        (Phase::Sliding, Phase::Rolling, Some("slip speed"))
+    );
+    assert!(rolls.spin_held_before && rolls.spin_held_after && run.spin_held());
+    assert!((rolls.t - t_star).abs() < 1e-9, "{} vs {t_star}", rolls.t);
+    assert!((run.y()[2] - 5.0 / 7.0 * v0).abs() < 1e-9, "{}", run.y()[2]);
+    assert!((run.y()[0] - x1).abs() < 1e-9, "{} vs {x1}", run.y()[0]);
+    assert!(spin(&m, run.y()).abs() < 1e-15);
+}
