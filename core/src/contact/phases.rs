@@ -1,5 +1,6 @@
-//! The contact's hooks in the run loop: its phases (rolling, sliding) as the loop's modes,
-//! and the witnesses at whose roots a body on a table changes phase or stops.
+//! The contact's hooks in the run loop: its phases (rolling, sliding), each with the spin
+//! free or held at zero by pivoting friction ([`ContactMode`]), as the loop's modes, and the
+//! witnesses at whose roots a body on a table changes mode or stops.
 //!
 //! | witness | watched | positive while | at its root |
 //! | --- | --- | --- | --- |

@@ -1,8 +1,9 @@
 //! A body on a table integrated by an adaptive embedded pair in the one run loop
-//! ([`crate::ode::Hybrid`]): the phase is the loop's mode, the quaternion is put back on the
-//! unit sphere after every accepted step, and the stick–slip switches, the lift-off, the
-//! slip stopping, Painlevé's paradox and a disk lying flat are the witnesses of
-//! [`super::phases`], located on the pair's dense output.
+//! ([`crate::ode::Hybrid`]): the phase, with the spin free or held by pivoting friction, is
+//! the loop's mode, the quaternion is put back on the unit sphere after every accepted step
+//! (and a held spin back to zero), and the stick–slip switches, the lift-off, the slip
+//! stopping, Painlevé's paradox, a disk lying flat and a spin stopping or breaking loose are
+//! the witnesses of [`super::phases`], located on the pair's dense output.
 
 use super::dynamics::ContactDynamics;
 use super::error::ContactError;
