@@ -311,3 +311,55 @@ fn a_struck_ball_without_spin_slides_then_rolls_with_its_spin_held() {
     assert!((run.y()[0] - x1).abs() < 1e-9, "{} vs {x1}", run.y()[0]);
     assert!(spin(&m, run.y()).abs() < 1e-15);
 }
+
+#[test]
+fn a_planar_stick_slip_run_is_the_same_with_its_spin_held() {
+    // The eccentric sphere rolling about a horizontal axis through its symmetry axis moves
+    // in a plane and never spins, so holding the spin at zero changes nothing: under
+    // stick–slip with a low μ it slips and sticks again, and the run with pivoting friction
+    // (its spin held from t = 0, through every stick and slip) must switch where the run
+    // without it does and end in the same state.
+    let body = offset_sphere();
+    let mu = 0.02;
+    let free = try_model_with(&body, NumLaw::StickSlip(mu), NumTorques::default()).unwrap();
+    let held = try_model_with(&body, NumLaw::StickSlip(mu), pivoting(0.001)).unwrap();
+    let y0 = free
+        .rolling_state(
+            [0.0, 0.0],
+            &UnitQuaternion::identity(),
+            &Vector3::new(30.0, 0.0, 0.0),
+        )
+        .unwrap();
+    let cfg = AdaptiveConfig::with_tol(1e-12, 1e-12);
+    let t_end = 0.5;
+    let mut a = ContactRun::new(&free, Phase::Rolling, 0.0, y0, cfg).unwrap();
+    let mut b = ContactRun::new(&held, Phase::Rolling, 0.0, y0, cfg).unwrap();
+    let (out_a, out_b) = (a.advance_to(t_end).unwrap(), b.advance_to(t_end).unwrap());
+    let (sa, sb) = (a.switches(), b.switches());
+    // The held run's first switch holds the spin at t = 0; the rest are the stick–slip's.
+    let (first, rest) = sb.split_first().unwrap();
+    assert_eq!(
+        (first.t, first.witness, first.spin_held_after),
+        (0.0, Some("spin"), true)
+    );
+    let gap = (0..11)
+        .map(|k| (a.y()[k] - b.y()[k]).abs())
+        .fold(0.0, f64::max);
+    println!(
+        "eccentric sphere, μ = {mu}: {} stick–slip switches free, {} held ({out_a:?}, {out_b:?}); first slip at {:?} and {:?} s; end states apart by {gap:e}",
+        sa.len(),
+        rest.len(),
+        sa.first().map(|s| s.t),
+        rest.first().map(|s| s.t)
+    );
+    assert_eq!(out_a, out_b);
+    assert!(!sa.is_empty(), "the sphere never slipped");
+    assert_eq!(sa.len(), rest.len());
+    for (x, y) in sa.iter().zip(rest) {
+        assert_eq!((x.from, x.to, x.witness), (y.from, y.to, y.witness));
+        assert!(y.spin_held_before && y.spin_held_after, "{y:?}");
+        assert!((x.t - y.t).abs() < 1e-9, "{} vs {}", x.t, y.t);
+    }
+    assert!(b.spin_held());
+    assert!(gap < 1e-8, "{gap:e}");
+}
