@@ -4,17 +4,19 @@
 //!
 //! **The spin stops.** The `spin` witness |ω·γ| − δ_ω (δ_ω = 10⁻⁹ of the angular velocity
 //! scale V/|r|) falls through zero where a spin stops; there the flow on either side
-//! decides, as Filippov's construction does for any switched vector field:
+//! decides, as Filippov's construction does for any switched vector field. The spin's rate
+//! d(ω·γ)/dt = ω̇·γ (γ̇ ⊥ ω) on the two sides, ρ₊ under the friction −ℓ_p N γ and ρ₋ under
+//! +ℓ_p N γ, differs by the friction alone, so ρ₊ < ρ₋, and:
 //!
-//! - the spin's rate d(ω·γ)/dt = ω̇·γ (γ̇ ⊥ ω) is evaluated at the spins +δ_ω and −δ_ω
-//!   (each the phase's own equations, the rest of the state the same);
-//! - both point back to zero: the friction holds the spin (the torque the rest of the motion
-//!   puts on it is within ℓ_p N). The spin is set to zero (under rolling the horizontal
-//!   velocity put back on the constraint; the energy never raised) and the run goes on in
-//!   the same phase with the spin held;
-//! - both point the same way: the spin passes through zero. It is set to 2δ_ω on the far
-//!   side (the velocities then scaled back to the kinetic energy they had) and the phase
-//!   goes on with the spin free.
+//! - ρ₊ ≤ 0 ≤ ρ₋, both pointing back to zero: the friction holds the spin (the couple the
+//!   held motion needs, below, is within ℓ_p N: the `pivot cone` margin is ≥ 0). The spin is
+//!   set to zero (under rolling the horizontal velocity put back on the constraint; the
+//!   energy never raised) and the run goes on in the same phase with the spin held;
+//! - both of one sign: the spin passes through zero, the way the couple the held motion
+//!   would need could not hold it. It is set to 2δ_ω on the far side (the velocities then
+//!   scaled back to the kinetic energy they had) and the phase goes on with the spin free.
+//!
+//! The test is the held motion's own margin, so that a spin held is never let go at once.
 //!
 //! **The spin held.** The phase's equations with the constraint d(ω·γ)/dt = ω̇·γ = 0 and a
 //! pivot couple λγ in place of the friction, λ a multiplier. The equations are linear in the
@@ -207,14 +209,6 @@ pub(crate) fn spin_zeroed<D: ContactDynamics + ?Sized>(
     }
 }
 
-/// d(ω·γ)/dt = ω̇·γ under `phase` at `x`.
-fn spin_rate<D: ContactDynamics + ?Sized>(body: &D, phase: Phase, t: f64, x: &State) -> f64 {
-    let mut d = [0.0; STATE_LEN];
-    body.phase_rhs(phase, t, x, &mut d);
-    let w_dot = Vector3::new(d[layout::OMEGA], d[layout::OMEGA + 1], d[layout::OMEGA + 2]);
-    w_dot.dot(&body.contact(x).gamma)
-}
-
 /// The spin of `x` has fallen to δ_ω under `phase` at `t`: held at zero where the friction
 /// holds it, otherwise carried through zero (see the module's note).
 pub(crate) fn spin_stopped<D: ContactDynamics + ?Sized>(
@@ -224,17 +218,15 @@ pub(crate) fn spin_stopped<D: ContactDynamics + ?Sized>(
     phase: Phase,
     x: State,
 ) -> Action<ContactMode, State, ContactOutcome> {
-    let delta = spin_threshold(body, w, &x);
-    let up = spin_rate(body, phase, t, &with_spin(body, phase, &x, delta));
-    let down = spin_rate(body, phase, t, &with_spin(body, phase, &x, -delta));
-    if up <= 0.0 && down >= 0.0 {
+    let held = held(body, w.pivoting.unwrap_or(0.0), phase, t, &x);
+    if held.margin >= 0.0 {
         return Action::Switch {
             mode: ContactMode::held(phase),
             state: spin_zeroed(body, w, phase, &x),
             fresh: false,
         };
     }
-    let target = if up + down > 0.0 { 2.0 } else { -2.0 } * delta;
+    let target = -held.couple.signum() * SEED_OVER_THRESHOLD * spin_threshold(body, w, &x);
     let y = with_spin(body, phase, &x, target);
     Action::Switch {
         mode: ContactMode::free(phase),
