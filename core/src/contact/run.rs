@@ -118,7 +118,10 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
         self.run.mode().phase
     }
 
-    /// Whether pivoting friction holds the spin about the vertical at zero now.
+    /// Whether pivoting friction holds the spin about the vertical at zero now. While it
+    /// does, the body's own [`ContactDynamics::reaction`] of the phase is the one with the
+    /// full friction ∓ℓ_p N of whatever sign the rounding gives ω·γ; the reaction with the
+    /// pivot couple in place, and the couple, are [`super::held_spin`]'s.
     pub fn spin_held(&self) -> bool {
         self.run.mode().spin_held
     }
