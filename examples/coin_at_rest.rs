@@ -3,13 +3,15 @@
 //! vertical (ℓ_p = μ_p r_p, a pivoting coefficient times the contact patch's radius;
 //! Leine & Glocker's drilling friction), brakes its spin at the constant rate ℓ_p M g / I_d.
 //! Spun about its vertical diameter the contact point is on the spin axis, N = M g, and the
-//! spin stops at t* = I_d ω₀ / (ℓ_p M g), I_d = M ρ²/4; the run halts there with the typed
-//! outcome `ContactOutcome::SpinStopped`. A linear spin resistance −c_s ω_⊥ with the same
-//! initial torque only slows the spin exponentially: that coin spins for ever.
+//! spin stops at t* = I_d ω₀ / (ℓ_p M g), I_d = M ρ²/4; there the friction holds the spin at
+//! zero and the run goes on with it held (a switch of the `spin` witness): the coin stands at
+//! rest on its edge, an unstable equilibrium whose rounding-sized tilt grows as e^(st),
+//! s = √(4g/(5ρ)). A linear spin resistance −c_s ω_⊥ with the same initial torque only slows
+//! the spin exponentially: that coin spins for ever.
 //!
 //! The coin is declared on a struct (`#[contact(.., law = stick_slip(mu = 0.3,
 //! pivoting = 2e-4), ..)]`) and runs in `ContactRun`, the contact's instance of the one run
-//! loop, whose `spin` witness stops it.
+//! loop, whose `spin` witness finds where the friction comes to hold the spin.
 //!
 //! Run with `cargo run --release --example coin_at_rest`.
 
@@ -18,7 +20,7 @@ mod common;
 use std::error::Error;
 
 use common::{Axes, Series, Table, plot};
-use precess::contact::{ContactDynamics, ContactOutcome, ContactRun, Phase, STATE_LEN};
+use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN};
 use precess::nalgebra::{UnitQuaternion, Vector3};
 use precess::ode::{AdaptiveConfig, Run};
 use precess::prelude::RigidBody;
@@ -74,9 +76,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         .sample_every(t_star / 200.0)
         .quantity("spin", |_t, y| spin(&Coin, y))
         .integrate()?;
-    let Some(&ContactOutcome::SpinStopped { t, state, .. }) = run.run().halt() else {
-        return Err(format!("the coin did not come to rest: {:?}", out.stop).into());
+    if let Some(halt) = run.run().halt() {
+        return Err(format!("the run stopped: {halt:?}").into());
+    }
+    let Some(held) = run.switches().into_iter().find(|s| s.spin_held_after) else {
+        return Err("the friction never held the spin".into());
     };
+    let (t, state) = (held.t, out.state.x);
     let damped = Damped { cs: brake / w0 };
     let mut slow = ContactRun::new(&damped, Phase::Rolling, 0.0, on_edge(&damped, w0)?, cfg)?;
     let on = Run::new(&mut slow, 3.0 * t_star)
@@ -88,7 +94,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         "A coin (ρ = {RADIUS} m, M = {MASS} kg) spun on its edge at {w0} rad/s, μ = 0.3, ℓ_p = {PIVOTING} m"
     );
     let mut table = Table::default();
-    table.row("time at rest (s)", t, t_star);
+    table.row("time the spin is held (s)", t, t_star);
     table.row(
         "spin halfway (rad/s)",
         out.trajectory
@@ -105,9 +111,12 @@ fn main() -> Result<(), Box<dyn Error>> {
     );
     table.print("Pivoting friction stops the coin at t* = I_d ω₀ / (ℓ_p M g)");
     println!(
-        "  at rest: |ω| = {:e} rad/s, the centre's speed {:e} m/s",
+        "  at 3 t* = {:.3} s, the spin held ({}): |ω| = {:e} rad/s and the centre's speed {:e} m/s, the\n  coin starting to topple from its edge, the rounding's tilt grown at √(4g/(5ρ)) = {:.2} 1/s",
+        run.t(),
+        run.spin_held(),
         Vector3::new(state[8], state[9], state[10]).norm(),
-        state[2].hypot(state[3])
+        state[2].hypot(state[3]),
+        (4.0 * GRAVITY / (5.0 * RADIUS)).sqrt()
     );
     let curve = |trajectory: &precess::ode::Trajectory<_>| -> Vec<(f64, f64)> {
         let s = trajectory.column("spin").unwrap_or_default();

@@ -26,7 +26,8 @@ use std::error::Error;
 use common::{Axes, Series, Table, plot};
 use precess::contact::theory::{DiskState, RollingDisk};
 use precess::contact::{
-    ContactDynamics, ContactError, ContactQuantities, ContactRun, Phase, STATE_LEN, attitude_of,
+    ContactDynamics, ContactError, ContactMode, ContactQuantities, ContactRun, Phase, STATE_LEN,
+    attitude_of,
 };
 use precess::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 use precess::ode::{AdaptiveConfig, HybridState, Outcome, Run};
@@ -72,7 +73,7 @@ fn lean_rate_ratio(model: &Disk, d: &RollingDisk, w0: f64) -> Result<f64, Box<dy
 }
 
 /// What a run of the disk gives: its samples, each with its phase, and why it stopped.
-type Rolled = Outcome<HybridState<Phase, [f64; STATE_LEN]>>;
+type Rolled = Outcome<HybridState<ContactMode, [f64; STATE_LEN]>>;
 
 /// Rolls the disk from `y0` for `t_end` s in the run loop at tolerance `tol`, sampled every
 /// 10 ms with the lean θ and the standard quantities. A run the scene halts (the disk lying

@@ -39,7 +39,7 @@ use std::time::Instant;
 
 use common::Table;
 use precess::contact::{
-    ContactDynamics, ContactError, ContactOutcome, ContactRun, Phase, STATE_LEN,
+    ContactDynamics, ContactError, ContactMode, ContactOutcome, ContactRun, Phase, STATE_LEN,
 };
 use precess::ensemble::{Ensemble, EnsembleProgress, rayon};
 use precess::ode::{AdaptiveConfig, HybridState, OdeError, Stats, Stepper};
@@ -66,7 +66,7 @@ struct UntilInverted<'a> {
 }
 
 impl Stepper for UntilInverted<'_> {
-    type State = HybridState<Phase, [f64; STATE_LEN]>;
+    type State = HybridState<ContactMode, [f64; STATE_LEN]>;
 
     fn t(&self) -> f64 {
         Stepper::t(&self.run)

@@ -89,6 +89,7 @@ mod contact {
     mod invariants;
     mod laws;
     mod newton_euler;
+    mod pivot_held;
     mod properties;
     pub mod reference;
     mod rolling_disk;

@@ -6,7 +6,7 @@
 pub mod browser;
 
 use gltf_json::Root;
-use precess::contact::{ContactDynamics, ContactRun, Phase, STATE_LEN};
+use precess::contact::{ContactDynamics, ContactMode, ContactRun, STATE_LEN};
 use precess::ode::HybridState;
 use precess::ode::{AdaptiveConfig, Run, Trajectory};
 use precess::prelude::*;
@@ -22,7 +22,10 @@ pub const OFFSET: f64 = precess::models::tippe_top::ALPHA * RADIUS;
 pub fn tippe_run(
     t_end: f64,
     every: f64,
-) -> (Tippe, Trajectory<HybridState<Phase, [f64; STATE_LEN]>>) {
+) -> (
+    Tippe,
+    Trajectory<HybridState<ContactMode, [f64; STATE_LEN]>>,
+) {
     let model = Tippe { viscous: 0.1 };
     let y0 = Tippe::start(0.1, 140.0);
     let mut cfg = AdaptiveConfig::with_tol(1e-10, 1e-10);

@@ -224,6 +224,16 @@ pub enum ContactError {
         /// The slip speed taken as zero.
         threshold: f64,
     },
+    /// The motion with the spin held at zero was asked of a body without pivoting
+    /// friction: no couple holds its spin.
+    #[error(
+        "the spin can be held only by pivoting friction, and this body's {law} law declares \
+         none: declare `pivoting = ℓ_p` (ContactTorques {{ pivoting: Some(..) }})"
+    )]
+    NoPivoting {
+        /// The contact law's name.
+        law: &'static str,
+    },
     /// The symbolic derivation failed (a division or root the arena refused).
     #[error(transparent)]
     Sym(#[from] SymError),

@@ -18,7 +18,8 @@
 //! [`Phase`]s, the [`LawKind`] and the [`ContactTorques`]), `derivation.rs` with
 //! `torques.rs` (the torques beyond the law's friction), `interpreted.rs` (the model),
 //! `dynamics.rs` (the trait), `error.rs`; then `system.rs` (the ODE adapter), `phases.rs`
-//! (the run loop's hooks) with `pivot.rs` (pivoting friction's spin witness), `run.rs` (the run driver) with `outcome.rs` (what a run reports),
+//! (the run loop's hooks) with `pivot.rs` (pivoting friction: the spin stopping, held, breaking
+//! loose), `run.rs` (the run driver) with `outcome.rs` (what a run reports),
 //! `checks.rs` (the run-time checks) and `theory/` (closed forms to measure runs against).
 
 mod checks;
@@ -50,8 +51,11 @@ pub use error::ContactError;
 pub use interpreted::ContactModel;
 pub use outcome::{ContactOutcome, Switch};
 pub use phases::{STICK_FRACTION, normal_denominator};
+pub use pivot::{HeldSpin, held_spin};
 pub use quantities::ContactQuantities;
 pub use run::{ContactRun, SEED_SLIP};
-pub use scene::{ContactLaw, ContactScene, ContactTorques, Friction, LawKind, Phase, coefficients};
+pub use scene::{
+    ContactLaw, ContactMode, ContactScene, ContactTorques, Friction, LawKind, Phase, coefficients,
+};
 pub use state::{STATE_LEN, attitude_of, layout};
 pub use system::ContactSystem;

@@ -80,21 +80,6 @@ pub enum ContactOutcome {
         /// The slip speed taken as zero.
         threshold: f64,
     },
-    /// Pivoting friction stopped the spin about the vertical and holds it: the spin ω·γ fell
-    /// to the rate taken as zero, and the torque the rest of the motion puts on it is within
-    /// the friction's ℓ_p N (the flow points back to zero spin from both sides). A phase with
-    /// the spin held at zero is not modelled, so the run ends here; a coin spun flat on the
-    /// table comes to rest so.
-    SpinStopped {
-        /// When.
-        t: f64,
-        /// The state then.
-        state: [f64; STATE_LEN],
-        /// The spin ω·γ there (rad/s).
-        spin: f64,
-        /// The spin taken as zero: 10⁻⁹ of the run's angular velocity scale.
-        threshold: f64,
-    },
 }
 
 /// A change of phase during a run: the loop's [`Transition`](crate::ode::Transition) of a
@@ -105,14 +90,19 @@ pub struct Switch {
     pub t: f64,
     /// The phase before.
     pub from: Phase,
-    /// The phase after (the same for a slip restarted in a new direction).
+    /// The phase after (the same for a slip restarted in a new direction, and for a spin
+    /// that pivoting friction comes to hold or lets go).
     pub to: Phase,
+    /// Whether pivoting friction held the spin at zero before.
+    pub spin_held_before: bool,
+    /// Whether it holds it after.
+    pub spin_held_after: bool,
     /// The state at the switch, as the phase before left it (before the slip is seeded or
     /// the contact point brought to rest).
     pub state: [f64; STATE_LEN],
     /// The state the phase after starts from.
     pub after: [f64; STATE_LEN],
-    /// The witness whose root it was (`friction cone`, `slip speed`), or `None` for a
-    /// switch the start made.
+    /// The witness whose root it was (`friction cone`, `slip speed`, `spin`, `pivot cone`),
+    /// or `None` for a switch the start made.
     pub witness: Option<&'static str>,
 }

@@ -1,5 +1,6 @@
-//! The contact's hooks in the run loop: its phases (rolling, sliding) as the loop's modes,
-//! and the witnesses at whose roots a body on a table changes phase or stops.
+//! The contact's hooks in the run loop: its phases (rolling, sliding), each with the spin
+//! free or held at zero by pivoting friction ([`ContactMode`]), as the loop's modes, and the
+//! witnesses at whose roots a body on a table changes mode or stops.
 //!
 //! | witness | watched | positive while | at its root |
 //! | --- | --- | --- | --- |
@@ -8,7 +9,8 @@
 //! | `slip speed` \|u\| − δ | Coulomb sliding | the body slides | a plastic tangential impulse removes u; rolling if it holds, else the slip restarts (stick–slip); halt with [`ContactError::SlipStopped`] (pure Coulomb) |
 //! | `solvability` D | Coulomb sliding | N has one value | Painlevé's paradox (halt) |
 //! | `support` | disk rims, tori, paraboloids | the support map places the contact | lying flat or past the rim (halt) |
-//! | `spin` \|ω·γ\| − δ_ω | pivoting friction | the body spins | the friction holds the spin (halt) or the spin passes zero (`pivot.rs`) |
+//! | `spin` \|ω·γ\| − δ_ω | pivoting friction, spin free | the body spins | the friction holds the spin: the same phase with the spin held; or the spin passes zero (`pivot.rs`) |
+//! | `pivot cone` ℓ_p N − \|λ\| | spin held | the couple λ holding the spin is within ℓ_p N | the spin breaks loose, seeded against the couple (`pivot.rs`) |
 //!
 //! δ is 10⁻⁹ of the velocity scale V = |v| + |ω||r| + √(g|r|), the rolling states' own
 //! tolerance, or what the run's stepper resolves (atol + rtol V) where that is larger: a slip
@@ -29,10 +31,11 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::checks::MIN_TILT;
 use super::dynamics::ContactDynamics;
+use super::dynamics::Reaction;
 use super::error::ContactError;
 use super::outcome::ContactOutcome;
 use super::pivot;
-use super::scene::{LawKind, Phase};
+use super::scene::{ContactMode, LawKind, Phase};
 use super::state::{STATE_LEN, attitude_of, layout};
 use super::surface::SurfaceKind;
 use super::system::{ContactSystem, Watch};
@@ -48,13 +51,14 @@ pub const STICK_FRACTION: f64 = 1e-9;
 const SEED_OVER_STICK: f64 = 2.0;
 
 /// The witnesses, by index.
-const NAMES: [&str; 6] = [
+const NAMES: [&str; 7] = [
     "normal force",
     "friction cone",
     "slip speed",
     "solvability",
     "support",
     "spin",
+    "pivot cone",
 ];
 const NORMAL: usize = 0;
 const CONE: usize = 1;
@@ -62,51 +66,59 @@ const SLIP: usize = 2;
 const SOLVABLE: usize = 3;
 const SUPPORT: usize = 4;
 const SPIN: usize = 5;
+const PIVOT: usize = 6;
 
 type State = [f64; STATE_LEN];
-type ContactAction = Action<Phase, State, ContactOutcome>;
+type ContactAction = Action<ContactMode, State, ContactOutcome>;
 
-/// The phase as the mode of a run: its CSV column `phase` holds 0 rolling, 1 sliding.
-impl Mode for Phase {
+/// The phase as the mode of a run: its CSV column `phase` holds 0 rolling, 1 sliding, and 2
+/// more where the spin is held (2 rolling, 3 sliding).
+impl Mode for ContactMode {
     const COLUMN: Option<&'static str> = Some("phase");
 
     fn number(&self) -> f64 {
-        match self {
+        let phase = match self.phase {
             Phase::Rolling => 0.0,
             Phase::Sliding => 1.0,
-        }
+        };
+        if self.spin_held { phase + 2.0 } else { phase }
     }
 }
 
 impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
-    type Mode = Phase;
+    type Mode = ContactMode;
     type Halt = ContactOutcome;
 
-    fn mode(&self) -> Phase {
-        self.phase
+    fn mode(&self) -> ContactMode {
+        ContactMode {
+            phase: self.phase,
+            spin_held: self.spin_held,
+        }
     }
 
-    fn set_mode(&mut self, mode: Phase) {
-        self.phase = mode;
+    fn set_mode(&mut self, mode: ContactMode) {
+        self.phase = mode.phase;
+        self.spin_held = mode.spin_held;
     }
 
     fn witness_names(&self) -> &[&'static str] {
         &NAMES
     }
 
-    fn watches(&self, mode: &Phase, id: usize) -> bool {
+    fn watches(&self, mode: &ContactMode, id: usize) -> bool {
         let w = &self.watch;
-        let sliding = *mode == Phase::Sliding;
+        let sliding = mode.phase == Phase::Sliding;
         let coulomb_sliding = sliding && w.mu.is_some();
         // N solves a linear equation whose coefficient a friction or torque proportional to
         // N can bring to zero.
         let scaled = w.mu.is_some() || w.normal_viscous.is_some() || w.pivoting.is_some();
         match id {
             NORMAL => true,
-            CONE => *mode == Phase::Rolling && w.law == LawKind::StickSlip,
+            CONE => mode.phase == Phase::Rolling && w.law == LawKind::StickSlip,
             SLIP => coulomb_sliding,
             SOLVABLE => sliding && scaled,
-            SPIN => w.pivoting.is_some(),
+            SPIN => w.pivoting.is_some() && !mode.spin_held,
+            PIVOT => w.pivoting.is_some() && mode.spin_held,
             SUPPORT => matches!(
                 w.surface,
                 SurfaceKind::DiskRim | SurfaceKind::Torus | SurfaceKind::Paraboloid
@@ -115,38 +127,52 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
         }
     }
 
-    fn witness(&self, mode: &Phase, id: usize, _t: f64, x: &State) -> f64 {
+    fn witness(&self, mode: &ContactMode, id: usize, t: f64, x: &State) -> f64 {
+        let (body, w) = (self.body, &self.watch);
         match id {
-            NORMAL => self.body.reaction(*mode, x).normal,
-            CONE => cone_margin(self.body, &self.watch, x),
+            NORMAL => reaction(body, w, *mode, x).normal,
+            CONE => cone_margin(body, w, mode.spin_held, x),
             SLIP => {
-                let u = slip(self.body, x);
-                u.norm() - stick_speed(self.body, &self.watch, x)
+                let u = slip(body, x);
+                u.norm() - stick_speed(body, w, x)
             }
-            SOLVABLE => denominator(self.body, &self.watch, x),
-            SUPPORT => support_margin(&self.watch, x),
-            SPIN => pivot::spin_margin(self.body, &self.watch, x),
+            SOLVABLE => denominator(body, w, mode.spin_held, x),
+            SUPPORT => support_margin(w, x),
+            SPIN => pivot::spin_margin(body, w, x),
+            PIVOT => pivot::held(body, w.pivoting.unwrap_or(0.0), mode.phase, t, x).margin,
             _ => 1.0,
         }
     }
 
+    /// The quaternion back on the unit sphere; with the spin held, a spin the steps let
+    /// drift (below δ_ω: a spin seeded as it breaks loose is twice that) back to zero, under
+    /// rolling the horizontal velocity with it.
     fn project(&self, x: &mut State) -> bool {
-        normalise_quaternion(x, layout::QUATERNION)
+        let mut changed = normalise_quaternion(x, layout::QUATERNION);
+        if self.spin_held
+            && pivot::spin(self.body, x) != 0.0
+            && pivot::spin_margin(self.body, &self.watch, x) < 0.0
+        {
+            *x = pivot::with_spin(self.body, self.phase, x, 0.0);
+            changed = true;
+        }
+        changed
     }
 
     fn on_witness(
         &self,
         id: usize,
         t: f64,
-        s: &HybridState<Phase, State>,
+        s: &HybridState<ContactMode, State>,
         _w: f64,
     ) -> Result<ContactAction, OdeError> {
         let (body, w, x) = (self.body, &self.watch, s.x);
+        let held = s.mode.spin_held;
         Ok(match id {
             NORMAL => Action::Halt(ContactOutcome::LiftOff { t, state: x }),
-            CONE => enter_sliding(body, w, t, seeded(body, w, x), s.mode),
+            CONE => enter_sliding(body, w, t, seeded(body, w, held, x), s.mode),
             SLIP => match w.law {
-                LawKind::StickSlip => stick(body, w, t, x),
+                LawKind::StickSlip => stick(body, w, t, x, held),
                 _ => Action::Halt(ContactOutcome::SlipStopped {
                     t,
                     state: x,
@@ -157,8 +183,8 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
             SOLVABLE => Action::Halt(ContactOutcome::Painleve {
                 t,
                 state: x,
-                denominator: denominator(body, w, &x),
-                normal: body.reaction(s.mode, &x).normal,
+                denominator: denominator(body, w, held, &x),
+                normal: reaction(body, w, s.mode, &x).normal,
             }),
             SUPPORT => Action::Halt(ContactOutcome::Unsupported {
                 t,
@@ -166,9 +192,25 @@ impl<D: ContactDynamics + ?Sized> Hooks<State> for ContactSystem<'_, D> {
                 surface: w.surface.name(),
                 margin: support_margin(w, &x),
             }),
-            SPIN => pivot::spin_stopped(body, w, t, s.mode, x),
+            SPIN => pivot::spin_stopped(body, w, t, s.mode.phase, x),
+            PIVOT => pivot::break_loose(body, w, t, s.mode.phase, x),
             _ => Action::Continue,
         })
+    }
+}
+
+/// The force of the table on the body in `mode`: the phase's own, or with the spin held
+/// the one with the pivot couple in place.
+fn reaction<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    mode: ContactMode,
+    x: &State,
+) -> Reaction {
+    if mode.spin_held {
+        pivot::held(body, w.pivoting.unwrap_or(0.0), mode.phase, 0.0, x).reaction
+    } else {
+        body.reaction(mode.phase, x)
     }
 }
 
@@ -198,9 +240,13 @@ fn omega(x: &State) -> Vector3<f64> {
     Vector3::new(x[layout::OMEGA], x[layout::OMEGA + 1], x[layout::OMEGA + 2])
 }
 
-/// μN − |F_t| of rolling at `x`: the room left in the friction cone.
-fn cone_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
-    let r = body.reaction(Phase::Rolling, x);
+/// μN − |F_t| of rolling at `x` (the spin held or not): the room left in the friction cone.
+fn cone_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, held: bool, x: &State) -> f64 {
+    let mode = ContactMode {
+        phase: Phase::Rolling,
+        spin_held: held,
+    };
+    let r = reaction(body, w, mode, x);
     w.mu.unwrap_or(0.0) * r.normal - r.friction.norm()
 }
 
@@ -208,8 +254,15 @@ fn cone_margin<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f
 /// (description axes), the contact force being F₀ + N e and the torque N κ: e = γ − μ û
 /// under Coulomb friction, γ − μ u under F = −μ N u, κ = −ℓ_p sign(ω·γ) γ for pivoting
 /// friction. N = A/D with A free of them, so D ≤ 0 is Painlevé's paradox. Under Coulomb
-/// friction, 1 when the slip has no direction.
-pub(crate) fn denominator<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &State) -> f64 {
+/// friction, 1 when the slip has no direction. With the spin held (`held`) the pivot couple
+/// λγ solves ω̇·γ = 0, which takes the part of N's torque about γ away:
+/// κ = −γ (γ·I⁻¹(r × e))/(γ·I⁻¹γ).
+pub(crate) fn denominator<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    held: bool,
+    x: &State,
+) -> f64 {
     let c = body.contact(x);
     let u_space = slip(body, x);
     let speed = u_space.norm();
@@ -222,6 +275,10 @@ pub(crate) fn denominator<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: &
     };
     let spin = c.gamma.dot(&omega(x));
     let kappa = match w.pivoting {
+        _ if held => {
+            let along = w.inertia_inv * c.gamma;
+            -c.gamma * c.gamma.dot(&(w.inertia_inv * c.body.cross(&e))) / c.gamma.dot(&along)
+        }
         Some(l) if spin != 0.0 => -l * spin.signum() * c.gamma,
         _ => Vector3::zeros(),
     };
@@ -241,7 +298,7 @@ pub fn normal_denominator<D: ContactDynamics + ?Sized>(
     y: &State,
 ) -> Result<f64, ContactError> {
     let sys = ContactSystem::new(body, Phase::Sliding)?;
-    Ok(denominator(body, &sys.watch, y))
+    Ok(denominator(body, &sys.watch, false, y))
 }
 
 /// How far the support map is from its singular set: sin(tilt) − sin(MIN_TILT) of a disk
@@ -258,9 +315,14 @@ fn support_margin(w: &Watch, x: &State) -> f64 {
 /// `x` with a slip of [`SEED_OVER_STICK`] times the stick speed started against the
 /// friction rolling needs there (Coulomb's law needs a direction, and at the switch the slip
 /// is zero), the velocities then scaled by √(T/T') so that the kinetic energy T, and so the
-/// energy, is what it was: seeding never adds energy.
-fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, x: State) -> State {
-    let f = body.reaction(Phase::Rolling, &x).friction;
+/// energy, is what it was: seeding never adds energy. A held spin stays zero (the scaling
+/// keeps it).
+fn seeded<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, held: bool, x: State) -> State {
+    let rolling = ContactMode {
+        phase: Phase::Rolling,
+        spin_held: held,
+    };
+    let f = reaction(body, w, rolling, &x).friction;
     let dir = -f / f.norm().max(f64::MIN_POSITIVE);
     let seed = SEED_OVER_STICK * stick_speed(body, w, &x);
     let mut y = x;
@@ -294,17 +356,22 @@ pub(crate) fn keep_kinetic<D: ContactDynamics + ?Sized>(
     y
 }
 
-/// Goes on sliding from `x` (seeded) at `t`, left from `from` — or halts where the sliding
-/// equations cannot take the state: N would have to jump below zero, or Painlevé's paradox.
+/// Goes on sliding from `x` (seeded) at `t`, left from `from` (a held spin staying held) —
+/// or halts where the sliding equations cannot take the state: N would have to jump below
+/// zero, or Painlevé's paradox.
 fn enter_sliding<D: ContactDynamics + ?Sized>(
     body: &D,
     w: &Watch,
     t: f64,
     x: State,
-    from: Phase,
+    from: ContactMode,
 ) -> ContactAction {
-    let d = denominator(body, w, &x);
-    let after = body.reaction(Phase::Sliding, &x).normal;
+    let to = ContactMode {
+        phase: Phase::Sliding,
+        spin_held: from.spin_held,
+    };
+    let d = denominator(body, w, to.spin_held, &x);
+    let after = reaction(body, w, to, &x).normal;
     if d <= 0.0 {
         return Action::Halt(ContactOutcome::Painleve {
             t,
@@ -317,13 +384,13 @@ fn enter_sliding<D: ContactDynamics + ?Sized>(
         return Action::Halt(ContactOutcome::NormalForceJump {
             t,
             state: x,
-            phase: from,
-            before: body.reaction(from, &x).normal,
+            phase: from.phase,
+            before: reaction(body, w, from, &x).normal,
             after,
         });
     }
     Action::Switch {
-        mode: Phase::Sliding,
+        mode: to,
         state: x,
         fresh: false,
     }
@@ -331,18 +398,35 @@ fn enter_sliding<D: ContactDynamics + ?Sized>(
 
 /// The slip of a stick–slip body has stopped at `x`: a plastic tangential impulse brings
 /// the contact point to rest; the body rolls on if rolling needs no more than μN, and
-/// otherwise slides again against the friction rolling needs.
-fn stick<D: ContactDynamics + ?Sized>(body: &D, w: &Watch, t: f64, x: State) -> ContactAction {
-    let rolled = impulse_to_rest(body, w, x);
-    let r = body.reaction(Phase::Rolling, &rolled);
+/// otherwise slides again against the friction rolling needs. A held spin stays held if the
+/// impulse leaves it below δ_ω (it is then set back to zero, never adding energy); an
+/// impulse that turns it further frees it, for the `spin` witness to follow.
+fn stick<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    t: f64,
+    x: State,
+    held: bool,
+) -> ContactAction {
+    let mut rolled = impulse_to_rest(body, w, x);
+    let mut mode = ContactMode::free(Phase::Rolling);
+    if held && pivot::spin_margin(body, w, &rolled) <= 0.0 {
+        rolled = pivot::spin_zeroed(body, w, Phase::Rolling, &rolled);
+        mode = ContactMode::held(Phase::Rolling);
+    }
+    let r = reaction(body, w, mode, &rolled);
     if r.normal >= 0.0 && r.friction.norm() <= w.mu.unwrap_or(0.0) * r.normal {
         return Action::Switch {
-            mode: Phase::Rolling,
+            mode,
             state: rolled,
             fresh: false,
         };
     }
-    enter_sliding(body, w, t, seeded(body, w, rolled), Phase::Sliding)
+    let from = ContactMode {
+        phase: Phase::Sliding,
+        spin_held: mode.spin_held,
+    };
+    enter_sliding(body, w, t, seeded(body, w, mode.spin_held, rolled), from)
 }
 
 /// `x` after the impulse P = −K⁻¹u at the contact point that brings it to rest:
@@ -394,7 +478,7 @@ pub(crate) fn check_start<D: ContactDynamics + ?Sized>(
         if w.mu.is_some() && slip <= threshold {
             return Err(ContactError::ZeroSlip { slip, threshold });
         }
-        let d = denominator(body, w, x);
+        let d = denominator(body, w, false, x);
         if d <= 0.0 {
             return Err(ContactError::Painleve {
                 t,

@@ -3,7 +3,7 @@
 //! contact point, per sample of a run over the state of [`super::layout`].
 
 use super::dynamics::ContactDynamics;
-use super::scene::Phase;
+use super::scene::{ContactMode, Phase};
 use super::state::STATE_LEN;
 use crate::ode::{HybridState, Quantities};
 
@@ -14,7 +14,8 @@ use crate::ode::{HybridState, Quantities};
 ///
 /// Add them to a [`Run`](crate::ode::Run) of a [`super::ContactRun`] with
 /// [`Run::quantities`](crate::ode::Run::quantities): there each sample is evaluated under
-/// its own phase (the state's mode), so N is rolling's or sliding's as the run was; over
+/// its own phase (the state's mode), so N is rolling's or sliding's as the run was (with the
+/// pivot couple in place where the spin was held); over
 /// bare state arrays they are evaluated under the phase given to [`ContactQuantities::new`].
 #[derive(Debug, Clone, Copy)]
 pub struct ContactQuantities<'a, D: ?Sized> {
@@ -53,18 +54,29 @@ impl<D: ContactDynamics + ?Sized> Quantities<[f64; STATE_LEN]> for ContactQuanti
 }
 
 /// On a run's states, each under the phase it was integrated in.
-impl<D: ContactDynamics + ?Sized> Quantities<HybridState<Phase, [f64; STATE_LEN]>>
+impl<D: ContactDynamics + ?Sized> Quantities<HybridState<ContactMode, [f64; STATE_LEN]>>
     for ContactQuantities<'_, D>
 {
     fn names(&self) -> Vec<String> {
         <Self as Quantities<[f64; STATE_LEN]>>::names(self)
     }
 
-    fn evaluate(&mut self, t: f64, s: &HybridState<Phase, [f64; STATE_LEN]>, out: &mut [f64]) {
+    fn evaluate(
+        &mut self,
+        t: f64,
+        s: &HybridState<ContactMode, [f64; STATE_LEN]>,
+        out: &mut [f64],
+    ) {
         let mut at = Self {
             body: self.body,
-            phase: s.mode,
+            phase: s.mode.phase,
         };
         Quantities::<[f64; STATE_LEN]>::evaluate(&mut at, t, &s.x, out);
+        // With the spin held, N is the one with the pivot couple in place.
+        if s.mode.spin_held
+            && let Ok(held) = super::pivot::held_spin(self.body, s.mode.phase, t, &s.x)
+        {
+            out[1] = held.reaction.normal;
+        }
     }
 }

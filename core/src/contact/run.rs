@@ -1,14 +1,15 @@
 //! A body on a table integrated by an adaptive embedded pair in the one run loop
-//! ([`crate::ode::Hybrid`]): the phase is the loop's mode, the quaternion is put back on the
-//! unit sphere after every accepted step, and the stick–slip switches, the lift-off, the
-//! slip stopping, Painlevé's paradox and a disk lying flat are the witnesses of
-//! [`super::phases`], located on the pair's dense output.
+//! ([`crate::ode::Hybrid`]): the phase, with the spin free or held by pivoting friction, is
+//! the loop's mode, the quaternion is put back on the unit sphere after every accepted step
+//! (and a held spin back to zero), and the stick–slip switches, the lift-off, the slip
+//! stopping, Painlevé's paradox, a disk lying flat and a spin stopping or breaking loose are
+//! the witnesses of [`super::phases`], located on the pair's dense output.
 
 use super::dynamics::ContactDynamics;
 use super::error::ContactError;
 use super::outcome::{ContactOutcome, Switch};
 use super::phases::check_start;
-use super::scene::Phase;
+use super::scene::{ContactMode, Phase};
 use super::state::STATE_LEN;
 use super::system::ContactSystem;
 use crate::ode::{
@@ -114,7 +115,15 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 
     /// The current phase.
     pub fn phase(&self) -> Phase {
-        *self.run.mode()
+        self.run.mode().phase
+    }
+
+    /// Whether pivoting friction holds the spin about the vertical at zero now. While it
+    /// does, the body's own [`ContactDynamics::reaction`] of the phase is the one with the
+    /// full friction ∓ℓ_p N of whatever sign the rounding gives ω·γ; the reaction with the
+    /// pivot couple in place, and the couple, are [`super::held_spin`]'s.
+    pub fn spin_held(&self) -> bool {
+        self.run.mode().spin_held
     }
 
     /// The phase switches so far, each from the loop's transitions.
@@ -124,8 +133,10 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
             .iter()
             .map(|tr| Switch {
                 t: tr.t,
-                from: tr.before.mode,
-                to: tr.after.mode,
+                from: tr.before.mode.phase,
+                to: tr.after.mode.phase,
+                spin_held_before: tr.before.mode.spin_held,
+                spin_held_after: tr.after.mode.spin_held,
                 state: tr.before.x,
                 after: tr.after.x,
                 witness: match tr.cause {
@@ -179,5 +190,5 @@ impl<'a, D: ContactDynamics + ?Sized, P: EmbeddedPair> ContactRun<'a, D, P> {
 crate::ode::delegate_stepper!(
     [D: ContactDynamics + ?Sized, P: EmbeddedPair] ContactRun<'_, D, P>,
     run,
-    HybridState<Phase, [f64; STATE_LEN]>
+    HybridState<ContactMode, [f64; STATE_LEN]>
 );

@@ -96,6 +96,44 @@ pub enum Phase {
     Sliding,
 }
 
+/// The mode of a run of a body on a table: the phase of the contact and whether pivoting
+/// friction holds the spin about the vertical at zero.
+///
+/// With the spin held the phase's equations are those of the phase with the constraint
+/// ω·γ = 0 added, kept by a pivot couple λγ whose value solves the equations with it
+/// (`pivot.rs`); the mode lasts while |λ| ≤ ℓ_p N.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ContactMode {
+    /// The phase of the contact.
+    pub phase: Phase,
+    /// Whether the spin ω·γ is held at zero by pivoting friction.
+    pub spin_held: bool,
+}
+
+impl ContactMode {
+    /// `phase` with the spin free.
+    pub fn free(phase: Phase) -> Self {
+        Self {
+            phase,
+            spin_held: false,
+        }
+    }
+
+    /// `phase` with the spin held at zero.
+    pub fn held(phase: Phase) -> Self {
+        Self {
+            phase,
+            spin_held: true,
+        }
+    }
+}
+
+impl From<Phase> for ContactMode {
+    fn from(phase: Phase) -> Self {
+        Self::free(phase)
+    }
+}
+
 /// The contact law without its coefficients: what a run needs to know of it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum LawKind {

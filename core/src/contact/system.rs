@@ -13,14 +13,17 @@ use crate::ode::{OdeError, System};
 /// One phase of a body on a table as an ODE system on the state array of
 /// [`super::layout`], for any stepper, and as the hooks of the run loop
 /// ([`crate::ode::Hybrid`]): the phase is its mode; lift-off, the friction cone, the slip
-/// stopping, Painlevé's paradox, the support map's limit and a spin that pivoting friction
-/// stops are its witnesses.
+/// stopping, Painlevé's paradox, the support map's limit, a spin that pivoting friction
+/// stops and a held spin breaking loose are its witnesses.
 #[derive(Debug)]
 pub struct ContactSystem<'a, D: ?Sized> {
     /// The body.
     pub body: &'a D,
     /// The phase whose equations are integrated.
     pub phase: Phase,
+    /// Whether the spin about the vertical is held at zero by pivoting friction (the
+    /// phase's equations with ω̇·γ = 0 and a pivot couple, see [`super::held_spin`]).
+    pub spin_held: bool,
     /// What the hooks need of the body, read once.
     pub(crate) watch: Watch,
 }
@@ -87,7 +90,12 @@ impl<'a, D: ContactDynamics + ?Sized> ContactSystem<'a, D> {
             gravity: v.gravity,
             resolution: (0.0, 0.0),
         };
-        Ok(ContactSystem { body, phase, watch })
+        Ok(ContactSystem {
+            body,
+            phase,
+            spin_held: false,
+            watch,
+        })
     }
 
     /// The system integrated by a stepper with these tolerances: a slip or a spin below what
@@ -114,7 +122,12 @@ impl<D: ?Sized> Copy for ContactSystem<'_, D> {}
 impl<D: ContactDynamics + ?Sized> System<STATE_LEN> for ContactSystem<'_, D> {
     #[inline]
     fn rhs(&self, t: f64, y: &[f64; STATE_LEN], dydt: &mut [f64; STATE_LEN]) {
-        self.body.phase_rhs(self.phase, t, y, dydt);
+        if self.spin_held {
+            let pivoting = self.watch.pivoting.unwrap_or(0.0);
+            *dydt = super::pivot::held(self.body, pivoting, self.phase, t, y).rates;
+        } else {
+            self.body.phase_rhs(self.phase, t, y, dydt);
+        }
     }
 
     /// The body's [`ContactDynamics::check_parameters`], so that any run over a body on a

@@ -3,8 +3,10 @@
 //! holds without friction, N = M g, and only the pivoting torque acts on the spin, about the
 //! contact point through the centre, I_d ω̇ = −ℓ_p M g (I_d = M ρ²/4 the moment about a
 //! diameter). The coin comes to rest in finite time, at t* = I_d ω₀ / (ℓ_p M g), where the
-//! run halts with `SpinStopped`. Under a linear spin resistance −c_s ω_⊥ instead, the spin
-//! only decays, e^(−c_s t / I_d), and the coin never stops.
+//! friction holds the spin and the run goes on with it held: the coin stands at rest, an
+//! unstable equilibrium it leaves at the toppling rate √(4g/(5ρ)). Under a
+//! linear spin resistance −c_s ω_⊥ instead, the spin only decays, e^(−c_s t / I_d), and the
+//! coin never stops.
 
 use nalgebra::{UnitQuaternion, Vector3};
 use precess::contact::{ContactDynamics, ContactOutcome, ContactRun, Phase};
@@ -38,18 +40,47 @@ fn a_coin_with_coulomb_and_pivoting_friction_comes_to_rest_at_the_closed_form_ti
     let t_star = body.inertia[0][0] * w0 / (l * body.mass * body.gravity);
     let cfg = AdaptiveConfig::with_tol(1e-12, 1e-14);
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, cfg).unwrap();
-    let out = run.advance_to(10.0 * t_star).unwrap();
-    let ContactOutcome::SpinStopped { t, state, .. } = out else {
-        panic!("the coin did not come to rest: {out:?}")
+    // The run goes on past the stop: the coin stands at rest, its spin held.
+    let t_end = 2.0 * t_star;
+    let out = run.advance_to(t_end).unwrap();
+    assert_eq!(out, ContactOutcome::Reached { t: t_end });
+    let switches = run.switches();
+    let [stop] = switches.as_slice() else {
+        panic!("{switches:?}")
     };
+    let (t, state) = (stop.t, run.y());
     let speed = Vector3::new(state[8], state[9], state[10]).norm();
     println!(
-        "coin, μ = 0.3, ℓ_p = {l} m, ω₀ = {w0} rad/s: at rest at t = {t} s against I_d ω₀/(ℓ_p M g) = {t_star} s; |ω| there {speed:e} rad/s, |v| {:e} m/s",
-        state[2].hypot(state[3])
+        "coin, μ = 0.3, ℓ_p = {l} m, ω₀ = {w0} rad/s: held at t = {t} s against I_d ω₀/(ℓ_p M g) = {t_star} s; at {t_end} s |ω| {speed:e} rad/s, |v| {:e} m/s, centre at ({:e}, {:e}) m",
+        state[2].hypot(state[3]),
+        state[0],
+        state[1]
     );
+    assert_eq!(stop.witness, Some("spin"));
+    assert!(!stop.spin_held_before && stop.spin_held_after, "{stop:?}");
+    assert!(run.spin_held() && run.phase() == Phase::Rolling);
     assert!(((t - t_star) / t_star).abs() < 1e-8, "{t} vs {t_star}");
     assert!(speed < 1e-7 * w0, "{speed:e}");
-    assert!(run.switches().is_empty(), "{:?}", run.switches());
+    assert!(state[0].hypot(state[1]) < 1e-12, "{state:?}");
+    // At rest on its edge: the energy is M g ρ, the centre a radius up.
+    let rest = body.mass * body.gravity * 0.012;
+    let e = m.energy(Phase::Rolling, state);
+    assert!((e / rest - 1.0).abs() < 1e-12, "{e} vs {rest}");
+    // Standing on its edge at rest is unstable: the rounding's tilt grows as e^(s t) with
+    // s² = M g ρ / (I_d + M ρ²) = 4g/(5ρ), the coin toppling about the rim's tangent (on
+    // which the contact point stays, so rolling holds without friction), its spin held.
+    let rate = (4.0 * body.gravity / (5.0 * 0.012)).sqrt();
+    let tilt = |y: &[f64; 11]| Vector3::new(y[8], y[9], y[10]).norm();
+    let w1 = tilt(run.y());
+    let span = 0.5 * t_star;
+    run.advance_to(t_end + span).unwrap();
+    let measured = (tilt(run.y()) / w1).ln() / span;
+    println!(
+        "  at rest on its edge, the tilt grows at {measured} 1/s against √(4g/(5ρ)) = {rate} 1/s, |ω| {w1:e} → {:e} rad/s",
+        tilt(run.y())
+    );
+    assert!(run.spin_held());
+    assert!((measured / rate - 1.0).abs() < 1e-4, "{measured} vs {rate}");
 
     // A linear spin resistance with the same initial torque only slows it exponentially.
     let cs = l * body.mass * body.gravity / w0;

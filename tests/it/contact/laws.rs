@@ -57,23 +57,41 @@ fn pivoting_friction_stops_a_spin_at_i_omega_over_l_n() {
     run.advance_to(0.5 * t_star).unwrap();
     let half = run.y()[10];
     assert!((half / (0.5 * w0) - 1.0).abs() < 1e-11, "{half}");
+    // The friction then holds the spin and the ball stays at rest: the run goes on.
     let out = run.advance_to(2.0 * t_star).unwrap();
-    let ContactOutcome::SpinStopped {
-        t, spin, threshold, ..
-    } = out
-    else {
-        panic!("{out:?}")
+    assert_eq!(out, ContactOutcome::Reached { t: 2.0 * t_star });
+    let switches = run.switches();
+    let [stop] = switches.as_slice() else {
+        panic!("{switches:?}")
     };
+    let y = run.y();
+    let speed = Vector3::new(y[8], y[9], y[10]).norm();
     println!(
-        "spin stopped at {t} s against I ω₀/(ℓ_p M g) = {t_star} s; spin {spin:e} ≤ {threshold:e}"
+        "spin held from {} s against I ω₀/(ℓ_p M g) = {t_star} s; at {} s |ω| = {speed:e} rad/s, centre at ({:e}, {:e}) m",
+        stop.t,
+        run.t(),
+        y[0],
+        y[1]
     );
-    // The witness fires where |ω₃| = δ_ω = 10⁻⁹ of the angular scale, δ_ω I/(ℓ_p M g) early,
-    // at the last double where the spin is still above it.
-    assert!(((t - t_star) / t_star).abs() < 1e-8, "{t} vs {t_star}");
+    // The witness fires where |ω₃| = δ_ω = 10⁻⁹ of the angular scale, δ_ω I/(ℓ_p M g) early.
     assert!(
-        spin.abs() >= threshold && spin.abs() < threshold * (1.0 + 1e-6),
-        "{spin:e}"
+        ((stop.t - t_star) / t_star).abs() < 1e-8,
+        "{} vs {t_star}",
+        stop.t
     );
+    assert!(
+        (stop.witness, stop.spin_held_after) == (Some("spin"), true),
+        "{stop:?}"
+    );
+    assert!(run.spin_held());
+    // At rest: no spin, no rolling, the centre where it started, the energy M g ρ.
+    assert!(speed < 1e-12, "{speed:e}");
+    assert!(
+        y[0].hypot(y[1]) < 1e-15 && y[2].hypot(y[3]) < 1e-15,
+        "{y:?}"
+    );
+    let rest = body.mass * body.gravity * 0.1;
+    assert!((m.energy(Phase::Rolling, y) / rest - 1.0).abs() < 1e-14);
 }
 
 #[test]

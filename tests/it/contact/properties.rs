@@ -103,14 +103,14 @@ proptest! {
         let out = Run::new(&mut run, 0.3)
             .sample_none()
             .observe(|t, s| {
-                let r = m.reaction(s.mode, &s.x);
-                let e = m.energy(s.mode, &s.x);
+                let r = m.reaction(s.mode.phase, &s.x);
+                let e = m.energy(s.mode.phase, &s.x);
                 let c = m.contact(&s.x);
                 let omega = Vector3::new(s.x[8], s.x[9], s.x[10]);
                 let scale = omega.norm() * c.body.norm() + 1e-3;
                 let why = if r.normal < -1e-9 * mg {
                     Some(format!("N = {} at {t}", r.normal))
-                } else if s.mode == Phase::Rolling
+                } else if s.mode.phase == Phase::Rolling
                     && m.law() == LawKind::StickSlip
                     && r.friction.norm() > mu * r.normal * (1.0 + 1e-8) + 1e-12 * mg
                 {
@@ -119,7 +119,7 @@ proptest! {
                     Some(format!("energy {e0} → {e} at {t}"))
                 } else if !conservative(num_law) && e > e_min + 1e3 * tol * e0.abs() {
                     Some(format!("energy rose from {e_min} to {e} at {t}"))
-                } else if s.mode == Phase::Rolling && c.velocity.norm() > 1e3 * tol * scale {
+                } else if s.mode.phase == Phase::Rolling && c.velocity.norm() > 1e3 * tol * scale {
                     Some(format!("rolling slips at {:e} m/s at {t}", c.velocity.norm()))
                 } else {
                     None

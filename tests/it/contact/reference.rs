@@ -431,3 +431,86 @@ pub fn state(
         omega.z,
     ]
 }
+
+/// Newton–Euler with the spin about the vertical held: as [`newton_euler`] under `law`
+/// (rolling, or sliding under F = −μ N u), with a couple λ ẑ among the unknowns and the row
+/// Ω̇_z = 0 (Ω·ẑ = ω·γ, and ẑ is fixed in space) added to the solve. Returns the reference
+/// and λ.
+pub fn newton_euler_held(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> (Reference, f64) {
+    let q = attitude_of(y);
+    let r_mat = q.to_rotation_matrix().into_inner();
+    let omega_b = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
+    let omega = r_mat * omega_b;
+    let gamma = r_mat.transpose() * Vector3::z();
+    let (s, ds) = support(&body.surface, &(-gamma));
+    let r_b = s - Vector3::from(body.center);
+    let r_dot_b = -ds * gamma.cross(&omega_b);
+    let rho = r_mat * r_b;
+    let rho_dot = omega.cross(&rho) + r_mat * r_dot_b;
+    let inertia_b = Matrix3::from_fn(|i, j| body.inertia[i][j]);
+    let i_s = r_mat * inertia_b * r_mat.transpose();
+    let (m, g) = (body.mass, body.gravity);
+    let z = Vector3::z();
+    let gyro = omega.cross(&(i_s * omega));
+    match law {
+        NumLaw::Rolling { .. } | NumLaw::StickSlip(_) => {
+            // Unknowns Ω̇ (3), F (3), λ.
+            let mut a = DMatrix::<f64>::zeros(7, 7);
+            let mut b = DVector::<f64>::zeros(7);
+            a.view_mut((0, 0), (3, 3)).copy_from(&(m * skew(&rho)));
+            a.view_mut((0, 3), (3, 3))
+                .copy_from(&(-Matrix3::identity()));
+            b.rows_mut(0, 3)
+                .copy_from(&(m * omega.cross(&rho_dot) - m * g * z));
+            // I_s Ω̇ − ρ × F − λ ẑ = −Ω × I_s Ω.
+            a.view_mut((3, 0), (3, 3)).copy_from(&i_s);
+            a.view_mut((3, 3), (3, 3)).copy_from(&(-skew(&rho)));
+            a[(5, 6)] = -1.0;
+            b.rows_mut(3, 3).copy_from(&(-gyro));
+            a[(6, 2)] = 1.0;
+            let x = a.lu().solve(&b).unwrap();
+            let force = Vector3::new(x[3], x[4], x[5]);
+            let reference = Reference {
+                omega_dot: r_mat.transpose() * Vector3::new(x[0], x[1], x[2]),
+                accel: (force - m * g * z) / m,
+                force,
+            };
+            (reference, x[6])
+        }
+        _ => {
+            let vz = -omega.cross(&rho).z;
+            let v = Vector3::new(y[layout::VELOCITY], y[layout::VELOCITY + 1], vz);
+            let u = v + omega.cross(&rho);
+            let e = match law {
+                NumLaw::NormalViscous(mu) => z - mu * u,
+                NumLaw::Coulomb(mu) => z - mu * u / u.norm(),
+                _ => z,
+            };
+            // Unknowns Ω̇ (3), N, λ.
+            let mut a = DMatrix::<f64>::zeros(5, 5);
+            let mut b = DVector::<f64>::zeros(5);
+            let row = m * skew(&rho).row(2);
+            for j in 0..3 {
+                a[(0, j)] = row[j];
+            }
+            a[(0, 3)] = -e.z;
+            b[0] = m * omega.cross(&rho_dot).z - m * g;
+            a.view_mut((1, 0), (3, 3)).copy_from(&i_s);
+            let re = rho.cross(&e);
+            for i in 0..3 {
+                a[(1 + i, 3)] = -re[i];
+            }
+            a[(3, 4)] = -1.0;
+            b.rows_mut(1, 3).copy_from(&(-gyro));
+            a[(4, 2)] = 1.0;
+            let x = a.lu().solve(&b).unwrap();
+            let force = x[3] * e;
+            let reference = Reference {
+                omega_dot: r_mat.transpose() * Vector3::new(x[0], x[1], x[2]),
+                accel: (force - m * g * z) / m,
+                force,
+            };
+            (reference, x[4])
+        }
+    }
+}

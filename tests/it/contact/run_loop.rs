@@ -269,7 +269,7 @@ fn at_exactly_the_friction_threshold_the_body_slips_at_once() {
         .sample_every(1e-4)
         .quantity("cone", |_t, s| {
             let r = m.reaction(Phase::Rolling, &s.x);
-            if s.mode == Phase::Rolling {
+            if s.mode.phase == Phase::Rolling {
                 r.friction.norm() / (mu * r.normal)
             } else {
                 0.0
