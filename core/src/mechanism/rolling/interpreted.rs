@@ -1,5 +1,11 @@
 //! A rolling derivation evaluated at run time through the code generator's interpreter: the
 //! path for mechanisms built without the macro, and the reference the tests use.
+//!
+//! Its [`RollingDynamics::acceleration_jacobian`] is exact, as the derive's: the same
+//! engine derivatives ([`RollingDerivation::partials`]), lowered on the first call. It has
+//! no case of differences: an effort here is an expression the engine differentiates with
+//! the rest, and a user function's value (an input symbol) cannot be interpreted at all
+//! ([`crate::codegen::BindingError::RunTimeInput`] from [`RollingModel::new`]).
 
 use std::sync::{Mutex, OnceLock, PoisonError};
 
@@ -7,7 +13,7 @@ use nalgebra::{SMatrix, SVector};
 
 use super::derivation::RollingDerivation;
 use super::dynamics::RollingDynamics;
-use super::partials::RollingPartials;
+use super::partials::{Differentiated, RollingPartials};
 use super::scene::{RollingScene, WheelSurface};
 use crate::codegen::{Bindings, Program};
 use crate::lagrange::Partition;
@@ -48,19 +54,21 @@ pub struct RollingModel<const N: usize, const M: usize, const K: usize> {
 /// The derivatives [`RollingDerivation::partials`] of a model, differentiated and lowered
 /// when first asked for. Eagerly they made [`RollingModel::new`] ten times slower on the
 /// bicycle (about 20 ms to 210 ms: 120 ms differentiating, 70 ms lowering 34 499
-/// operations), a cost a model that is only integrated need not pay; until then the model
-/// keeps a copy of the arena and the derivation, which the first call frees.
+/// operations), a cost a model that is only integrated need not pay. Until then the model
+/// keeps M, f, A and Ȧq̇ in an arena of their own ([`Arena::extract`]: 7 297 of the
+/// derivation's 49 283 nodes on the bicycle), which the first call frees.
 struct LazyPartials {
     program: OnceLock<Option<Program>>,
-    source: Mutex<Option<Box<(Arena, RollingDerivation)>>>,
+    source: Mutex<Option<Box<(Arena, Differentiated)>>>,
 }
 
 impl LazyPartials {
-    fn new(arena: &Arena, derivation: &RollingDerivation) -> LazyPartials {
-        LazyPartials {
+    fn new(arena: &Arena, derivation: &RollingDerivation) -> Result<LazyPartials, MechanismError> {
+        let source = Differentiated::extract(arena, derivation)?;
+        Ok(LazyPartials {
             program: OnceLock::new(),
-            source: Mutex::new(Some(Box::new((arena.clone(), derivation.clone())))),
-        }
+            source: Mutex::new(Some(Box::new(source))),
+        })
     }
 
     /// The program, lowered on the first call (one thread lowers, the others wait), or
@@ -69,8 +77,8 @@ impl LazyPartials {
         self.program
             .get_or_init(|| {
                 let mut source = self.source.lock().unwrap_or_else(PoisonError::into_inner);
-                let (arena, derivation) = &mut **source.as_mut()?;
-                let outputs = derivation.partials(arena);
+                let (arena, pieces) = &mut **source.as_mut()?;
+                let outputs = pieces.partials(arena);
                 let program = Program::lower(arena, &outputs);
                 let readable = program.inputs().into_iter().all(|s| bound(arena, s));
                 *source = None;
@@ -100,7 +108,8 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
     ///
     /// # Errors
     /// [`MechanismError::RollingSizes`] if the derivation's sizes are not (N, M, K);
-    /// [`MechanismError::Binding`] for a parameter missing, unknown or not finite.
+    /// [`MechanismError::Binding`] for a parameter missing, unknown or not finite;
+    /// [`MechanismError::Sym`] for a derivation made in another arena.
     pub fn new(
         arena: &mut Arena,
         derivation: &RollingDerivation,
@@ -171,7 +180,7 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
             rows,
             positions,
             reports,
-            partials: LazyPartials::new(arena, derivation),
+            partials: LazyPartials::new(arena, derivation)?,
             holonomic,
             wheels: derivation.tilts.len(),
             partition: Partition {
