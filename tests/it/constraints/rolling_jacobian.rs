@@ -410,12 +410,13 @@ fn the_height_tangent_keeps_the_wheel_on_the_floor_to_second_order() {
 }
 
 /// What the exact Jacobian costs the interpreted bicycle, printed (not asserted: speed
-/// belongs in benches): `RollingModel::new`, which only copies the arena for the
-/// derivatives, against their differentiation and lowering (timed alone on a copy of the
-/// arena: what the first `acceleration_jacobian` pays, and what `new` would if it lowered
-/// them eagerly), and one `acceleration_jacobian` against the central differences it
-/// replaced (`linalg::jacobian` on `derivative`). Run with `cargo test --test scenes
-/// rolling_model_costs -- --ignored --nocapture`.
+/// belongs in benches): `RollingModel::new`, which only extracts M, f, A and Ȧq̇ into an
+/// arena of their own, against a whole copy of the arena and the derivatives'
+/// differentiation and lowering (timed alone on such a copy: what `new` would add if it
+/// lowered them eagerly), the first `acceleration_jacobian` (which lowers them), and a
+/// later one against the central differences it replaced (`linalg::jacobian` on
+/// `derivative`). Run with `cargo test --test scenes rolling_model_costs -- --ignored
+/// --nocapture`.
 #[test]
 #[ignore = "timing, printed"]
 fn rolling_model_costs() {

@@ -52,11 +52,11 @@ pub struct RollingModel<const N: usize, const M: usize, const K: usize> {
 }
 
 /// The derivatives [`RollingDerivation::partials`] of a model, differentiated and lowered
-/// when first asked for. Eagerly they made [`RollingModel::new`] ten times slower on the
-/// bicycle (about 20 ms to 210 ms: 120 ms differentiating, 70 ms lowering 34 499
-/// operations), a cost a model that is only integrated need not pay. Until then the model
-/// keeps M, f, A and Ȧq̇ in an arena of their own ([`Arena::extract`]: 7 297 of the
-/// derivation's 49 283 nodes on the bicycle), which the first call frees.
+/// when first asked for. Eagerly they took [`RollingModel::new`] on the bicycle from about
+/// 22 ms to 210 ms (100–160 ms differentiating, 60–90 ms lowering 34 499 operations), a
+/// cost a model that is only integrated need not pay. Until then the model keeps M, f, A
+/// and Ȧq̇ in an arena of their own ([`Arena::extract`]: 7 310 of the derivation's 49 283
+/// nodes, 3 ms, where a copy of the whole arena took 14–21 ms), which the first call frees.
 struct LazyPartials {
     program: OnceLock<Option<Program>>,
     source: Mutex<Option<Box<(Arena, Differentiated)>>>,
