@@ -88,6 +88,7 @@ mod rigid {
 }
 /// The symbolic engine.
 mod sym {
+    mod extract;
     mod identities;
     mod limits;
     mod properties;

@@ -170,6 +170,104 @@ impl Clone for Arena {
     }
 }
 
+impl Arena {
+    /// A new arena holding only what `roots` need: the nodes they reach, every symbol (by
+    /// the same [`SymbolId`]s, so environments and lowered programs carry over) and every
+    /// abbreviation's definition. Returns it with the roots' ids in it, in order. A copy for
+    /// a caller that goes on from a few expressions of a large arena: cheaper than
+    /// [`Clone::clone`], which copies every node the derivation built on the way.
+    ///
+    /// The nodes are copied in their order here, so children still sort by id as the
+    /// constructors sort them, and an expression built again in the new arena is the copied
+    /// node itself.
+    ///
+    /// ```
+    /// use precess_core::sym::Arena;
+    /// let mut a = Arena::new();
+    /// let (x, y) = (a.parameter("x"), a.parameter("y"));
+    /// let scratch = a.mul(x, y);
+    /// let _ = a.cos(scratch);
+    /// let sum = a.add(x, y);
+    /// let s = a.sin(sum);
+    /// let e = a.mul(s, x);
+    /// let (mut b, roots) = a.extract(&[e])?;
+    /// let f = roots[0];
+    /// // x y and its cosine stay behind.
+    /// assert_eq!(b.len(), a.len() - 2);
+    /// assert_eq!(b.eval(f, &[0.3, 0.4]), a.eval(e, &[0.3, 0.4]));
+    /// let (bx, by) = (b.parameter("x"), b.parameter("y"));
+    /// let again = b.add(bx, by);
+    /// let again = b.sin(again);
+    /// assert_eq!(b.mul(again, bx), f);
+    /// # Ok::<(), precess_core::sym::SymError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`super::SymError::ForeignExpression`] for a root this arena does not own.
+    pub fn extract(&self, roots: &[ExprId]) -> Result<(Arena, Vec<ExprId>), super::SymError> {
+        self.check_owned(roots)?;
+        let mut wanted = roots.to_vec();
+        wanted.extend(self.zero_one);
+        wanted.extend(&self.symbol_nodes);
+        wanted.extend(self.definitions.values());
+        // Children sit before their parents, so in this order every child is copied first.
+        let order = self.walk(&wanted, true, |_| true);
+        let mut copy = Arena {
+            nodes: Vec::with_capacity(order.len()),
+            interned: IdMap::default(),
+            symbols: self.symbols.clone(),
+            symbol_nodes: Vec::new(),
+            by_name: self.by_name.clone(),
+            shown: self.shown.clone(),
+            time: self.time,
+            derivatives: self.derivatives.clone(),
+            definitions: IdMap::default(),
+            abbreviations: IdMap::default(),
+            tag: fresh_tag(),
+            inherited: Vec::new(),
+            zero_one: [ExprId::new(0, 0); 2],
+            memo: Default::default(),
+        };
+        copy.interned.reserve(order.len());
+        let mut moved: Vec<u32> = vec![u32::MAX; self.nodes.len()];
+        let at = |moved: &[u32], copy: &Arena, id: ExprId| ExprId::new(moved[id.index()], copy.tag);
+        for id in order {
+            let m = |c: &ExprId| at(&moved, &copy, *c);
+            let node = match self.node(id) {
+                Node::Const(r) => Node::Const(*r),
+                Node::Sym(s) => Node::Sym(*s),
+                Node::Add(c) => Node::Add(c.iter().map(m).collect()),
+                Node::Mul(c) => Node::Mul(c.iter().map(m).collect()),
+                Node::Pow(b, n) => Node::Pow(m(b), *n),
+                Node::Powr(b, r) => Node::Powr(m(b), *r),
+                Node::Sqrt(u) => Node::Sqrt(m(u)),
+                Node::Sin(u) => Node::Sin(m(u)),
+                Node::Cos(u) => Node::Cos(m(u)),
+                Node::Func(f, u) => Node::Func(*f, m(u)),
+            };
+            moved[id.index()] = copy.intern(node).index() as u32;
+        }
+        copy.zero_one = self.zero_one.map(|e| at(&moved, &copy, e));
+        copy.symbol_nodes = self
+            .symbol_nodes
+            .iter()
+            .map(|&e| at(&moved, &copy, e))
+            .collect();
+        copy.definitions = self
+            .definitions
+            .iter()
+            .map(|(&s, &e)| (s, at(&moved, &copy, e)))
+            .collect();
+        copy.abbreviations = self
+            .abbreviations
+            .iter()
+            .map(|(&k, v)| (k, v.iter().map(|&e| at(&moved, &copy, e)).collect()))
+            .collect();
+        let roots = roots.iter().map(|&e| at(&moved, &copy, e)).collect();
+        Ok((copy, roots))
+    }
+}
+
 impl Default for Arena {
     fn default() -> Self {
         Self::new()

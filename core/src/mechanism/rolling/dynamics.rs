@@ -47,10 +47,11 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     ) -> (SMatrix<f64, M, N>, SVector<f64, M>);
 
     /// The partial derivatives of M q̈, f, A and Ȧq̇ at (t, q, q̇, q̈), differentiated
-    /// exactly ([`RollingPartials`]): the derive emits them as straight-line code. `None`
-    /// where they are not known: a mechanism with user-function efforts (whose dependence on
-    /// q and q̇ the engine cannot see) and the interpreted [`super::RollingModel`]; then
-    /// [`RollingDynamics::acceleration_jacobian`] differences.
+    /// exactly ([`RollingPartials`], from [`super::RollingDerivation::partials`]): the derive
+    /// emits them as straight-line code, the interpreted [`super::RollingModel`] lowers them
+    /// on its first call. `None` where they are not known: a derived mechanism with a
+    /// user-function effort (`effort = f`, whose dependence on q and q̇ the engine cannot
+    /// see); then [`RollingDynamics::acceleration_jacobian`] differences.
     fn partials(
         &self,
         t: f64,
@@ -177,10 +178,11 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// heights are not held: a caller that keeps the wheels on the floor chains the
     /// coordinates' tangent to the height rows in, as `Bicycle::canonical` does).
     ///
-    /// Exact where [`RollingDynamics::partials`] gives the derivatives (every derived
-    /// rolling mechanism without user efforts): they are carried
-    /// through the projection by the product rule (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the like; see
-    /// docs/linearisation.md). Otherwise central differences of
+    /// Exact where [`RollingDynamics::partials`] gives the derivatives (every interpreted
+    /// [`super::RollingModel`], every derived rolling mechanism without a user-function
+    /// effort): they are carried through the projection by the product rule
+    /// (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the like; see docs/linearisation.md). Otherwise (a derived
+    /// mechanism with an `effort = f`) every entry is a central difference of
     /// [`RollingDynamics::derivative`] in (q, u) with Richardson extrapolation
     /// ([`crate::linalg::jacobian`], about 1e-12 relative).
     ///

@@ -1,17 +1,26 @@
 //! A rolling derivation evaluated at run time through the code generator's interpreter: the
 //! path for mechanisms built without the macro, and the reference the tests use.
+//!
+//! Its [`RollingDynamics::acceleration_jacobian`] is exact, as the derive's: the same
+//! engine derivatives ([`RollingDerivation::partials`]), lowered on the first call. It has
+//! no case of differences: an effort here is an expression the engine differentiates with
+//! the rest, and a user function's value (an input symbol) cannot be interpreted at all
+//! ([`crate::codegen::BindingError::RunTimeInput`] from [`RollingModel::new`]).
+
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 use nalgebra::{SMatrix, SVector};
 
 use super::derivation::RollingDerivation;
 use super::dynamics::RollingDynamics;
+use super::partials::{Differentiated, RollingPartials};
 use super::scene::{RollingScene, WheelSurface};
 use crate::codegen::{Bindings, Program};
 use crate::lagrange::Partition;
 use crate::mechanism::checks::ParameterChecks;
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::scene::MechanismScene;
-use crate::sym::{Arena, ExprId, SymbolId};
+use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 
 /// A rolling mechanism's M, f, A, Ȧq̇, heights and reports, lowered once and interpreted,
 /// for n = `N` coordinates, m = `M` rows and k = `K` free speeds.
@@ -25,16 +34,72 @@ pub struct RollingModel<const N: usize, const M: usize, const K: usize> {
     positions: Program,
     /// Outputs: T + V, then every wheel's contact velocity (three each).
     reports: Program,
+    /// The engine's derivatives of M q̈, f, A and Ȧq̇, lowered on the first call of
+    /// [`RollingDynamics::partials`].
+    partials: LazyPartials,
     holonomic: [bool; M],
     wheels: usize,
     partition: Partition<M, K>,
     names: [&'static str; N],
     q: Vec<SymbolId>,
     rates: Vec<SymbolId>,
+    /// q̈, read by `partials` alone.
+    accels: Vec<SymbolId>,
     time: Option<SymbolId>,
     bindings: Bindings,
     /// The values made of parameters, checked at construction and on every `set`.
     checks: ParameterChecks,
+}
+
+/// The derivatives [`RollingDerivation::partials`] of a model, differentiated and lowered
+/// when first asked for. Eagerly they took [`RollingModel::new`] on the bicycle from about
+/// 22 ms to 210 ms (100–160 ms differentiating, 60–90 ms lowering 34 499 operations), a
+/// cost a model that is only integrated need not pay. Until then the model keeps M, f, A
+/// and Ȧq̇ in an arena of their own ([`Arena::extract`]: 7 310 of the derivation's 49 283
+/// nodes, 3 ms, where a copy of the whole arena took 14–21 ms), which the first call frees.
+struct LazyPartials {
+    program: OnceLock<Option<Program>>,
+    source: Mutex<Option<Box<(Arena, Differentiated)>>>,
+}
+
+impl LazyPartials {
+    fn new(arena: &Arena, derivation: &RollingDerivation) -> Result<LazyPartials, MechanismError> {
+        let source = Differentiated::extract(arena, derivation)?;
+        Ok(LazyPartials {
+            program: OnceLock::new(),
+            source: Mutex::new(Some(Box::new(source))),
+        })
+    }
+
+    /// The program, lowered on the first call (one thread lowers, the others wait), or
+    /// `None` if it reads a symbol `bound` refuses.
+    fn get(&self, bound: impl Fn(&Arena, SymbolId) -> bool) -> Option<&Program> {
+        self.program
+            .get_or_init(|| {
+                let mut source = self.source.lock().unwrap_or_else(PoisonError::into_inner);
+                let (arena, pieces) = &mut **source.as_mut()?;
+                let outputs = pieces.partials(arena);
+                let program = Program::lower(arena, &outputs);
+                let readable = program.inputs().into_iter().all(|s| bound(arena, s));
+                *source = None;
+                readable.then_some(program)
+            })
+            .as_ref()
+    }
+}
+
+impl std::fmt::Debug for LazyPartials {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.program.get() {
+            Some(Some(p)) => write!(
+                f,
+                "LazyPartials(lowered, {} operations)",
+                p.op_count().total()
+            ),
+            Some(None) => f.write_str("LazyPartials(unreadable)"),
+            None => f.write_str("LazyPartials(not yet lowered)"),
+        }
+    }
 }
 
 impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
@@ -43,7 +108,8 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
     ///
     /// # Errors
     /// [`MechanismError::RollingSizes`] if the derivation's sizes are not (N, M, K);
-    /// [`MechanismError::Binding`] for a parameter missing, unknown or not finite.
+    /// [`MechanismError::Binding`] for a parameter missing, unknown or not finite;
+    /// [`MechanismError::Sym`] for a derivation made in another arena.
     pub fn new(
         arena: &mut Arena,
         derivation: &RollingDerivation,
@@ -95,8 +161,9 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
         let symbol = |e: ExprId| arena.as_symbol(e);
         let q: Vec<SymbolId> = coords.q.iter().filter_map(|&e| symbol(e)).collect();
         let rates: Vec<SymbolId> = coords.rates.iter().filter_map(|&e| symbol(e)).collect();
+        let accels: Vec<SymbolId> = coords.accels.iter().filter_map(|&e| symbol(e)).collect();
         let time = arena.as_symbol(derivation.time);
-        let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).copied().collect();
+        let mut supplied: Vec<SymbolId> = q.iter().chain(&rates).chain(&accels).copied().collect();
         supplied.extend(time);
         let bindings = Bindings::new(arena, &programs, &supplied, parameters)?;
         let mut holonomic = [false; M];
@@ -113,6 +180,7 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
             rows,
             positions,
             reports,
+            partials: LazyPartials::new(arena, derivation)?,
             holonomic,
             wheels: derivation.tilts.len(),
             partition: Partition {
@@ -122,6 +190,7 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
             names,
             q,
             rates,
+            accels,
             time,
             checks: ParameterChecks::none(arena),
             bindings,
@@ -198,6 +267,28 @@ impl<const N: usize, const M: usize, const K: usize> RollingModel<N, M, K> {
         ]
     }
 
+    /// The operation count of the lowered derivatives of M q̈, f, A and Ȧq̇
+    /// ([`RollingDynamics::partials`]), lowering them if no call has yet.
+    pub fn partials_op_count(&self) -> Option<usize> {
+        Some(self.partials_program()?.op_count().total())
+    }
+
+    /// The derivatives' program, differentiated and lowered on the first call: `None` only
+    /// if it would read a symbol the bindings do not give (the derivatives of M, f, A and
+    /// Ȧq̇ read no symbol those do not, so this is a guard, not a case).
+    fn partials_program(&self) -> Option<&Program> {
+        self.partials.get(|arena, s| {
+            let supplied = self.q.contains(&s)
+                || self.rates.contains(&s)
+                || self.accels.contains(&s)
+                || self.time == Some(s);
+            let symbol = arena.symbol(s);
+            supplied
+                || (symbol.kind == SymbolKind::Parameter
+                    && self.bindings.value(&symbol.name).is_some())
+        })
+    }
+
     fn eval(&self, program: &Program, t: f64, q: &[f64; N], qdot: &[f64; N], out: &mut [f64]) {
         let inputs = self
             .q
@@ -246,6 +337,30 @@ impl<const N: usize, const M: usize, const K: usize> RollingDynamics<N, M, K>
             SMatrix::from_row_slice(&out[..M * N]),
             SVector::from_column_slice(&out[M * N..]),
         )
+    }
+
+    /// The engine's derivatives ([`RollingDerivation::partials`]), the same expressions the
+    /// derive emits as code, lowered on the first call and interpreted, so
+    /// [`RollingDynamics::acceleration_jacobian`] is exact here too.
+    fn partials(
+        &self,
+        t: f64,
+        q: &[f64; N],
+        qdot: &[f64; N],
+        qddot: &[f64; N],
+    ) -> Option<RollingPartials<N, M>> {
+        let program = self.partials_program()?;
+        let mut out = vec![0.0; RollingPartials::<N, M>::LEN];
+        let inputs = self
+            .q
+            .iter()
+            .copied()
+            .zip(q.iter().copied())
+            .chain(self.rates.iter().copied().zip(qdot.iter().copied()))
+            .chain(self.accels.iter().copied().zip(qddot.iter().copied()))
+            .chain(self.time.map(|s| (s, t)));
+        self.bindings.eval(program, inputs, &mut out);
+        Some(RollingPartials::from_slice(&out))
     }
 
     fn holonomic_rows(&self) -> [bool; M] {

@@ -12,7 +12,8 @@
 //!   straight-line code; [`RollingModel`] interprets a derivation.
 //! - [`RollingDynamics::acceleration_jacobian`] gives ∂u̇/∂q and ∂u̇/∂u exactly, from the
 //!   engine's derivatives of M, f, A and Ȧq̇ ([`RollingPartials`]) carried through the
-//!   projection by the product rule.
+//!   projection by the product rule: the derive's as straight-line code, a
+//!   [`RollingModel`]'s lowered on its first call.
 //!
 //! Why numerically: the symbolic elimination of a five-row block with a square root in its
 //! rows (the bicycle's) swelled past 8 GB; see docs/bicycle.md.

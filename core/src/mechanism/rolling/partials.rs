@@ -3,7 +3,8 @@
 //! The engine differentiates the pieces of Maggi's equations symbolically
 //! ([`RollingDerivation::partials`]: ∂(M a)/∂q at a = q̈, ∂f/∂q, ∂f/∂q̇, ∂A/∂q,
 //! ∂(Ȧq̇)/∂q, ∂(Ȧq̇)/∂q̇,
-//! lowered to straight-line code by the derive), and [`jacobian`] carries them through the
+//! lowered to straight-line code by the derive, to a program by [`super::RollingModel`]),
+//! and [`jacobian`] carries them through the
 //! numerical projection by the product rule, with q̇ = S u and S_I = I:
 //!
 //! - A S = 0 gives dS_D = −A_D⁻¹ (dA S), so dq̇ = dS u;
@@ -18,8 +19,9 @@
 use nalgebra::{SMatrix, SVector};
 
 use super::derivation::RollingDerivation;
+use crate::lagrange::Coordinates;
 use crate::lagrange::{Inverted, LagrangeError, Partition, solve};
-use crate::sym::{Arena, ExprId};
+use crate::sym::{Arena, ExprId, SymError};
 
 /// The first derivatives of a rolling mechanism's M(q), f(t, q, q̇), A(q) and Ȧq̇(q, q̇) at
 /// one state, from [`super::RollingDynamics::partials`].
@@ -69,7 +71,76 @@ impl RollingDerivation {
     /// coordinates and rates, differentiated by the engine, in the order
     /// [`RollingPartials::from_slice`] reads.
     pub fn partials(&self, arena: &mut Arena) -> Vec<ExprId> {
-        let coords = self.coordinates();
+        Differentiated {
+            coords: self.coordinates().clone(),
+            mass: self.equations.mass.clone(),
+            forcing: self.equations.forcing.clone(),
+            rows: self.constraints.coefficients.clone(),
+            rate_terms: self.rate_terms.clone(),
+        }
+        .partials(arena)
+    }
+}
+
+/// What [`RollingDerivation::partials`] differentiates: M, f, A, Ȧq̇ and the coordinates,
+/// apart from the rest of the derivation, so that the interpreted model can keep them in
+/// an arena of their own ([`Differentiated::extract`]) until it differentiates them.
+#[derive(Debug)]
+pub(super) struct Differentiated {
+    pub coords: Coordinates,
+    pub mass: Vec<Vec<ExprId>>,
+    pub forcing: Vec<ExprId>,
+    pub rows: Vec<Vec<ExprId>>,
+    pub rate_terms: Vec<ExprId>,
+}
+
+impl Differentiated {
+    /// The pieces of `derivation` copied into a new arena that holds only what they need
+    /// ([`Arena::extract`]), with every symbol under the same id.
+    ///
+    /// # Errors
+    /// [`SymError::ForeignExpression`] for a piece `arena` does not own.
+    pub fn extract(
+        arena: &Arena,
+        derivation: &RollingDerivation,
+    ) -> Result<(Arena, Differentiated), SymError> {
+        let coords = derivation.coordinates();
+        let (mass, rows) = (
+            &derivation.equations.mass,
+            &derivation.constraints.coefficients,
+        );
+        let mut roots: Vec<ExprId> = mass.iter().flatten().copied().collect();
+        roots.extend(&derivation.equations.forcing);
+        roots.extend(rows.iter().flatten());
+        roots.extend(&derivation.rate_terms);
+        roots.extend(coords.q.iter().chain(&coords.rates).chain(&coords.accels));
+        let (copy, moved) = arena.extract(&roots)?;
+        let mut moved = moved.into_iter();
+        let mut take = |n: usize| -> Vec<ExprId> { moved.by_ref().take(n).collect() };
+        let mass = mass.iter().map(|r| take(r.len())).collect();
+        let forcing = take(derivation.equations.forcing.len());
+        let rows = rows.iter().map(|r| take(r.len())).collect();
+        let rate_terms = take(derivation.rate_terms.len());
+        let coords = Coordinates {
+            q: take(coords.q.len()),
+            rates: take(coords.rates.len()),
+            accels: take(coords.accels.len()),
+        };
+        Ok((
+            copy,
+            Differentiated {
+                coords,
+                mass,
+                forcing,
+                rows,
+                rate_terms,
+            },
+        ))
+    }
+
+    /// [`RollingDerivation::partials`] of these pieces.
+    pub fn partials(&self, arena: &mut Arena) -> Vec<ExprId> {
+        let coords = &self.coords;
         let zero = arena.zero();
         let symbols = |arena: &Arena, of: &[ExprId]| -> Vec<_> {
             of.iter().map(|&x| arena.as_symbol(x)).collect()
@@ -80,10 +151,8 @@ impl RollingDerivation {
             Some(s) => arena.diff(e, s),
             None => zero,
         };
-        let eqs = &self.equations;
-        let a = &self.constraints.coefficients;
         let mut out = Vec::new();
-        for row in &eqs.mass {
+        for row in &self.mass {
             let terms: Vec<ExprId> = row
                 .iter()
                 .zip(&coords.accels)
@@ -95,14 +164,14 @@ impl RollingDerivation {
             }
         }
         for by in [&q, &rates] {
-            for &e in &eqs.forcing {
+            for &e in &self.forcing {
                 for &s in by {
                     out.push(d(arena, e, s));
                 }
             }
         }
         for &s in &q {
-            for &e in a.iter().flatten() {
+            for &e in self.rows.iter().flatten() {
                 out.push(d(arena, e, s));
             }
         }
