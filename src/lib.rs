@@ -140,7 +140,7 @@ pub mod __private {
     pub use precess_core::mechanism::rolling::{RollingDynamics, RollingPartials};
     pub use precess_core::mechanism::{
         ChartSet, ChartedDynamics, LinkPose, MechanismDynamics, MechanismError, MechanismPoses,
-        check_axis, check_universal_axes,
+        check_axis, check_universal_axes, effort_jacobian,
     };
     pub use precess_core::nalgebra::UnitQuaternion;
     pub use precess_core::nalgebra::{SMatrix, SVector};

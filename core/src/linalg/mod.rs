@@ -22,6 +22,6 @@ pub use crossing::{
 };
 pub use eigen::eigenvalues;
 pub use error::LinalgError;
-pub use jacobian::{JACOBIAN_STEP, jacobian};
+pub use jacobian::{JACOBIAN_STEP, jacobian, jacobian_of};
 pub use stability::{LinearSystem, NEUTRAL_TOLERANCE, Stability};
 pub use state_space::{OPERATING_POINT_TOLERANCE, SecondOrder, StateSpace, StateSpaceError};

@@ -58,7 +58,7 @@ mod validate;
 
 pub use charts::{ChartSet, ChartedDynamics, ChartedMechanism, MechanismCharts};
 pub use derivation::{MAX_SYMBOLIC, MechanismDerivation, Route};
-pub use dynamics::{MechanismDynamics, split_state};
+pub use dynamics::{MechanismDynamics, effort_jacobian, split_state};
 pub use error::MechanismError;
 pub use interpreted::MechanismModel;
 pub use kinematics::{BodyKinematics, MAX_LAGRANGIAN};

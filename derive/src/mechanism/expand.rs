@@ -308,7 +308,7 @@ fn local_of(effort: &UserEffort) -> Ident {
 
 /// The symbols `outputs` read, looking through bound intermediates (the recursive route's
 /// abbreviations, leaves to `free_symbols`) to their definitions, as the lowering does.
-fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
+pub(super) fn symbols_read(arena: &Arena, outputs: &[ExprId]) -> HashSet<SymbolId> {
     let mut read = HashSet::new();
     let mut pending: Vec<ExprId> = outputs.to_vec();
     while let Some(e) = pending.pop() {

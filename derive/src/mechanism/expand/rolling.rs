@@ -8,7 +8,7 @@
 
 use precess_core::mechanism::MechanismError;
 use precess_core::mechanism::rolling::RollingDerivation;
-use precess_core::sym::ExprId;
+use precess_core::sym::{Arena, ExprId, SymbolId};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::LitStr;
@@ -16,7 +16,7 @@ use syn::LitStr;
 use super::Method;
 use crate::lang::expansion::{Expansion, cannot_derive};
 use crate::lang::private::Private;
-use crate::mechanism::check::CheckedMechanism;
+use crate::mechanism::check::{CheckedMechanism, UserEffort};
 use crate::mechanism::rolling::CheckedRolling;
 
 /// `impl RollingDynamics<N, M, K>`, the coordinate consts and `STATE`, or `None` after
@@ -81,23 +81,9 @@ pub(super) fn expand(
             #p::SVector::<f64, #m>::from_column_slice(&[#(#r),*]),
         )}
     });
-    // The exact derivatives the Jacobian of u̇ is assembled from; not with user efforts,
-    // whose dependence on q and q̇ the engine cannot see (the trait's default differences).
-    let partials = if checked.efforts.is_empty() {
-        let entries = derivation.partials(arena);
-        let body = method.body(
-            arena,
-            &entries,
-            |o| quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*])),
-        );
-        quote! {
-            fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n], qddot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
-                ::core::option::Option::Some(#body)
-            }
-        }
-    } else {
-        TokenStream::new()
-    };
+    // The exact derivatives the Jacobian of u̇ is assembled from; with user efforts, their
+    // values held, plus the chain rule's G ∂τ/∂(q, q̇) where only τ is differenced.
+    let partials = partials_method(&method, arena, &derivation, &checked.efforts);
     let zero = arena.zero();
     let heights: Vec<ExprId> = derivation
         .constraints
@@ -209,6 +195,87 @@ pub(super) fn expand(
         }
         #poses
     })
+}
+
+/// `fn partials`: the engine's derivatives of M q̈, f, A and Ȧq̇ with the user efforts τ held
+/// at their values, f's then completed by the chain rule, ∂f/∂q += G ∂τ/∂q and ∂f/∂q̇ +=
+/// G ∂τ/∂q̇, G = ∂f/∂τ exact (the generalised force of a unit of each effort) and ∂τ/∂(q, q̇)
+/// differences of the user functions alone (`effort_jacobian`; a failure there leaves NaN,
+/// which `acceleration_jacobian` reports). Nothing (the trait's `None`, every entry
+/// differenced) where M, A or Ȧq̇ would read an effort, which a force cannot make them do.
+fn partials_method(
+    method: &Method,
+    arena: &mut Arena,
+    derivation: &RollingDerivation,
+    efforts: &[UserEffort],
+) -> TokenStream {
+    let p = Private;
+    let (n, m) = (derivation.coordinates().len(), derivation.rows());
+    let inputs: Vec<Option<SymbolId>> = efforts.iter().map(|e| arena.as_symbol(e.symbol)).collect();
+    let not_forcing: Vec<ExprId> = derivation
+        .equations
+        .mass
+        .iter()
+        .flatten()
+        .chain(derivation.constraints.coefficients.iter().flatten())
+        .chain(&derivation.rate_terms)
+        .copied()
+        .collect();
+    if !efforts.is_empty() {
+        let read = super::symbols_read(arena, &not_forcing);
+        if inputs.iter().flatten().any(|s| read.contains(s)) {
+            return TokenStream::new();
+        }
+    }
+    let entries = derivation.partials(arena);
+    let body = method.body(
+        arena,
+        &entries,
+        |o| quote!(#p::RollingPartials::<#n, #m>::from_slice(&[#(#o),*])),
+    );
+    let value = if efforts.is_empty() {
+        body
+    } else {
+        let np = efforts.len();
+        let zero = arena.zero();
+        let g: Vec<ExprId> = derivation
+            .equations
+            .forcing
+            .iter()
+            .flat_map(|&f| inputs.iter().map(move |&s| (f, s)))
+            .map(|(f, s)| s.map_or(zero, |s| arena.diff(f, s)))
+            .collect();
+        let g = method.body(
+            arena,
+            &g,
+            |o| quote!(#p::SMatrix::<f64, #n, #np>::from_row_slice(&[#(#o),*])),
+        );
+        let calls = efforts.iter().map(|e| {
+            let path = &e.path;
+            quote!(#path(self, t, q, qdot))
+        });
+        quote! {{
+            let mut __partials: #p::RollingPartials<#n, #m> = #body;
+            let __g: #p::SMatrix<f64, #n, #np> = #g;
+            let (__by_q, __by_qdot) = #p::effort_jacobian::<#n, #np>(
+                |q: &[f64; #n], qdot: &[f64; #n]| [#(#calls),*],
+                q,
+                qdot,
+            )
+            .unwrap_or((
+                #p::SMatrix::<f64, #np, #n>::from_element(f64::NAN),
+                #p::SMatrix::<f64, #np, #n>::from_element(f64::NAN),
+            ));
+            __partials.forcing_by_q += __g * __by_q;
+            __partials.forcing_by_qdot += __g * __by_qdot;
+            __partials
+        }}
+    };
+    quote! {
+        fn partials(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n], qddot: &[f64; #n]) -> ::core::option::Option<#p::RollingPartials<#n, #m>> {
+            ::core::option::Option::Some(#value)
+        }
+    }
 }
 
 /// `1 row`, `2 rows`.
