@@ -1,9 +1,11 @@
 //! `acceleration_jacobian` of the mechanism derive: ∂q̈/∂q and ∂q̈/∂q̇ differentiated exactly
 //! by the engine and lowered with shared subexpressions. Emitted for the symbolic and
 //! factored routes; the recursive route (large chains, where the differentiated recursion
-//! would multiply the expansion) and mechanisms with user-function efforts (opaque to the
-//! differentiation: their dependence on q and q̇ is unknown) keep the trait's default,
-//! central differences.
+//! would multiply the expansion) keeps the trait's default, central differences. With
+//! user-function efforts τ (`effort = f`, opaque to the differentiation) the derivatives
+//! are taken with τ held at its values and completed by the chain rule, + (∂q̈/∂τ)
+//! (∂τ/∂(q, q̇)): ∂q̈/∂τ exact (M⁻¹ times the generalised force of a unit effort), only
+//! ∂τ/∂(q, q̇) differenced, of the user functions alone (`effort_jacobian`).
 
 use precess_core::mechanism::{MechanismDerivation, Route};
 use precess_core::sym::{Arena, ExprId};
@@ -21,7 +23,7 @@ pub fn method(
     checked: &CheckedMechanism,
     derivation: &MechanismDerivation,
 ) -> TokenStream {
-    if derivation.route == Route::Recursive || !checked.efforts.is_empty() {
+    if derivation.route == Route::Recursive {
         return TokenStream::new();
     }
     let p = Private;
@@ -32,6 +34,45 @@ pub fn method(
     if entries.len() != 2 * n * n {
         return TokenStream::new();
     }
+    let efforts = &checked.efforts;
+    let value = if efforts.is_empty() {
+        quote!(::core::result::Result::Ok(__jacobian))
+    } else {
+        // ∂q̈ᵢ/∂τ_k, row-major, and the chain rule's term added to each block.
+        let np = efforts.len();
+        let zero = arena.zero();
+        let inputs: Vec<_> = efforts.iter().map(|e| arena.as_symbol(e.symbol)).collect();
+        let by_effort: Vec<ExprId> = derivation
+            .accelerations
+            .iter()
+            .flat_map(|&a| inputs.iter().map(move |&s| (a, s)))
+            .map(|(a, s)| s.map_or(zero, |s| arena.diff(a, s)))
+            .collect();
+        let by_effort = method.body(arena, &by_effort, |o| quote!([#(#o),*]));
+        let calls = efforts.iter().map(|e| {
+            let path = &e.path;
+            quote!(#path(self, t, q, qdot))
+        });
+        quote! {{
+            let __by_effort: [f64; #n * #np] = #by_effort;
+            let (__tau_q, __tau_qdot) = #p::effort_jacobian::<#n, #np>(
+                |q: &[f64; #n], qdot: &[f64; #n]| [#(#calls),*],
+                q,
+                qdot,
+            )?;
+            let (mut __by_q, mut __by_qdot) = __jacobian;
+            for __i in 0..#n {
+                for __k in 0..#np {
+                    let __g = __by_effort[__i * #np + __k];
+                    for __j in 0..#n {
+                        __by_q[__i][__j] += __g * __tau_q[(__k, __j)];
+                        __by_qdot[__i][__j] += __g * __tau_qdot[(__k, __j)];
+                    }
+                }
+            }
+            ::core::result::Result::Ok((__by_q, __by_qdot))
+        }}
+    };
     let body = method.body(arena, &entries, |o| {
         let block = |offset: usize| {
             let rows = (0..n).map(|i| {
@@ -48,7 +89,8 @@ pub fn method(
         fn acceleration_jacobian(&self, t: f64, q: &[f64; #n], qdot: &[f64; #n]) -> ::core::result::Result<([[f64; #n]; #n], [[f64; #n]; #n]), #p::MechanismError> {
             // The checks of the accelerations: finite state, parameters, regular M.
             #p::MechanismDynamics::<#n>::accelerations(self, t, q, qdot)?;
-            ::core::result::Result::Ok(#body)
+            let __jacobian: ([[f64; #n]; #n], [[f64; #n]; #n]) = #body;
+            #value
         }
     }
 }

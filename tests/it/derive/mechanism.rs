@@ -459,3 +459,153 @@ fn each_coordinate_of_a_gimbal_has_its_own_loads() {
         );
     }
 }
+
+/// A double pendulum (two point masses) with a spring, a damper and a constant torque on each
+/// hinge, all written in the description: its Jacobian is the engine's, exact.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1,
+       spring(k = 2.0, rest = 0.1), damper = 0.5, effort = 0.3,
+       parts(particle(mass = 1.3, at = [0.0, 0.0, -0.9])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.9]), q = theta2,
+       spring(k = 3.0, rest = -0.2), damper = 0.7, effort = 0.25,
+       parts(particle(mass = 0.7, at = [0.0, 0.0, -0.6])))]
+struct SprungDouble;
+
+/// [`SprungDouble`] with the same loads from user functions ([`upper_load`],
+/// [`lower_load`]), on the symbolic route.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1, effort = upper_load,
+       parts(particle(mass = 1.3, at = [0.0, 0.0, -0.9])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.9]), q = theta2,
+       effort = lower_load, parts(particle(mass = 0.7, at = [0.0, 0.0, -0.6])))]
+struct DrivenDouble;
+
+/// [`DrivenDouble`] on the factored route (q̈ through abbreviations).
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81, route = factored)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1, effort = upper_load,
+       parts(particle(mass = 1.3, at = [0.0, 0.0, -0.9])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.9]), q = theta2,
+       effort = lower_load, parts(particle(mass = 0.7, at = [0.0, 0.0, -0.6])))]
+struct DrivenDoubleFactored;
+
+/// −2 (θ₁ − 0.1) − 0.5 θ̇₁ + 0.3: [`SprungDouble`]'s loads on the shoulder.
+fn upper_load<T>(_: &T, _t: f64, q: &[f64; 2], qdot: &[f64; 2]) -> f64 {
+    -2.0 * (q[0] - 0.1) - 0.5 * qdot[0] + 0.3
+}
+
+/// −3 (θ₂ + 0.2) − 0.7 θ̇₂ + 0.25: [`SprungDouble`]'s loads on the elbow.
+fn lower_load<T>(_: &T, _t: f64, q: &[f64; 2], qdot: &[f64; 2]) -> f64 {
+    -3.0 * (q[1] + 0.2) - 0.7 * qdot[1] + 0.25
+}
+
+/// [`SprungDouble`] without springs or dampers, its constant torques from user functions of
+/// time ([`timed_torque`]).
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1, effort = timed_torque,
+       parts(particle(mass = 1.3, at = [0.0, 0.0, -0.9])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.9]), q = theta2,
+       effort = 0.25, parts(particle(mass = 0.7, at = [0.0, 0.0, -0.6])))]
+struct TimedDouble;
+
+/// 0.3 (1 + t), whatever the state.
+fn timed_torque(_: &TimedDouble, t: f64, _q: &[f64; 2], _qdot: &[f64; 2]) -> f64 {
+    0.3 * (1.0 + t)
+}
+
+/// [`TimedDouble`] at t = 0, its torques written in the description.
+#[derive(Mechanism)]
+#[mechanism(gravity = 9.81)]
+#[body(upper, parent = ground, joint = revolute(axis = x), q = theta1, effort = 0.3,
+       parts(particle(mass = 1.3, at = [0.0, 0.0, -0.9])))]
+#[body(lower, parent = upper, joint = revolute(axis = x, at = [0.0, 0.0, -0.9]), q = theta2,
+       effort = 0.25, parts(particle(mass = 0.7, at = [0.0, 0.0, -0.6])))]
+struct ConstantDouble;
+
+/// The largest difference between two mechanisms' (∂q̈/∂q, ∂q̈/∂q̇) at random states at
+/// time t, relative to the largest entry of the first's.
+fn double_jacobian_gap(
+    exact: &impl MechanismDynamics<2>,
+    other: &impl MechanismDynamics<2>,
+    t: f64,
+    seed: u64,
+) -> f64 {
+    let mut rng = Rng::new(seed);
+    let mut worst = 0.0_f64;
+    for _ in 0..50 {
+        let q = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)];
+        let qd = [rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)];
+        let (eq, ed) = exact.acceleration_jacobian(t, &q, &qd).expect("exact");
+        let (oq, od) = other.acceleration_jacobian(t, &q, &qd).expect("other");
+        let scale = eq
+            .iter()
+            .chain(&ed)
+            .flatten()
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
+        for i in 0..2 {
+            for j in 0..2 {
+                let gap = (eq[i][j] - oq[i][j]).abs().max((ed[i][j] - od[i][j]).abs());
+                worst = worst.max(gap / scale);
+            }
+        }
+    }
+    worst
+}
+
+/// A tree mechanism with user-function efforts differentiates q̈ exactly with the efforts
+/// held and adds (∂q̈/∂τ)(∂τ/∂(q, q̇)), only τ differenced: the same loads written as a
+/// spring, a damper and a torque give the engine's exact Jacobian, which it matches to the
+/// error of differencing τ alone (on both routes that have exact derivatives), which is
+/// printed beside that of the trait's full differencing of q̈.
+#[test]
+fn a_tree_with_user_efforts_is_exact_but_for_the_functions_own_derivative() {
+    let symbolic = double_jacobian_gap(&SprungDouble, &DrivenDouble, 0.0, 17);
+    let factored = double_jacobian_gap(&SprungDouble, &DrivenDoubleFactored, 0.0, 17);
+    println!("user loads against the described ones: symbolic {symbolic:e}, factored {factored:e}");
+    // What differencing all of q̈ (the trait's default) gives on the same states.
+    struct Differenced;
+    impl MechanismDynamics<2> for Differenced {
+        const COORDINATES: [&'static str; 2] = ["theta1", "theta2"];
+        const ROUTE: &'static str = "differenced";
+        fn accelerations(
+            &self,
+            t: f64,
+            q: &[f64; 2],
+            qdot: &[f64; 2],
+        ) -> Result<[f64; 2], MechanismError> {
+            DrivenDouble.accelerations(t, q, qdot)
+        }
+        fn accelerations_unchecked(&self, t: f64, q: &[f64; 2], qdot: &[f64; 2]) -> [f64; 2] {
+            DrivenDouble.accelerations_unchecked(t, q, qdot)
+        }
+        fn kinetic(&self, q: &[f64; 2], qdot: &[f64; 2]) -> f64 {
+            DrivenDouble.kinetic(q, qdot)
+        }
+        fn potential(&self, q: &[f64; 2]) -> f64 {
+            DrivenDouble.potential(q)
+        }
+        fn power(&self, t: f64, q: &[f64; 2], qdot: &[f64; 2]) -> f64 {
+            DrivenDouble.power(t, q, qdot)
+        }
+        fn conserved_momenta(&self, q: &[f64; 2], qdot: &[f64; 2]) -> [Option<f64>; 2] {
+            DrivenDouble.conserved_momenta(q, qdot)
+        }
+    }
+    let differenced = double_jacobian_gap(&SprungDouble, &Differenced, 0.0, 17);
+    println!("full differences of q̈ against the described loads: {differenced:e}");
+    // Differencing τ alone leaves its rounding, ε |τ| / h (|τ| up to about 10 here).
+    assert!(symbolic < 1e-12, "{symbolic:e}");
+    assert!(factored < 1e-12, "{factored:e}");
+}
+
+/// Efforts that do not depend on the state difference to exactly zero: the Jacobian is the
+/// exact one of the same torques written in the description, to rounding.
+#[test]
+fn a_tree_effort_free_of_the_state_leaves_the_jacobian_exact() {
+    let worst = double_jacobian_gap(&ConstantDouble, &TimedDouble, 0.0, 19);
+    println!("torque of time against the described constant: {worst:e}");
+    assert!(worst < 1e-14, "{worst:e}");
+}
