@@ -140,7 +140,9 @@ pub trait MechanismDynamics<const N: usize> {
 
     /// The Jacobian of q̈ with respect to the state: `(∂q̈/∂q, ∂q̈/∂q̇)`, each `[row][column]`
     /// (row i is q̈ᵢ). The derive gives the exact derivatives of its symbolic and factored
-    /// routes; this default (taken by the recursive route, which has no closed form to
+    /// routes (with user-function efforts τ, `effort = f`: q̈'s with τ held, plus
+    /// (∂q̈/∂τ)(∂τ/∂(q, q̇)), ∂q̈/∂τ exact and only ∂τ differenced, by [`effort_jacobian`]);
+    /// this default (taken by the recursive route, which has no closed form to
     /// differentiate at compile time) uses central differences of
     /// [`MechanismDynamics::accelerations_unchecked`] with Richardson extrapolation
     /// ([`crate::linalg::jacobian`]): 12N evaluations of q̈ (6 per component of the state),
@@ -239,15 +241,15 @@ pub trait MechanismDynamics<const N: usize> {
 ///
 /// ```
 /// use approx::assert_relative_eq;
-/// use precess::mechanism::effort_jacobian;
+/// use precess_core::mechanism::effort_jacobian;
 ///
 /// // τ = q₀ q̇₁².
-/// let (by_q, by_qdot) =
-///     effort_jacobian(|q: &[f64; 2], qdot: &[f64; 2]| [q[0] * qdot[1] * qdot[1]], &[3.0, 1.0], &[0.0, 2.0])?;
+/// let tau = |q: &[f64; 2], qdot: &[f64; 2]| [q[0] * qdot[1] * qdot[1]];
+/// let (by_q, by_qdot) = effort_jacobian(tau, &[3.0, 1.0], &[0.0, 2.0])?;
 /// assert_relative_eq!(by_q[(0, 0)], 4.0, max_relative = 1e-12);
 /// assert_relative_eq!(by_qdot[(0, 1)], 12.0, max_relative = 1e-12);
 /// assert_eq!((by_q[(0, 1)], by_qdot[(0, 0)]), (0.0, 0.0));
-/// # Ok::<(), precess::mechanism::MechanismError>(())
+/// # Ok::<(), precess_core::mechanism::MechanismError>(())
 /// ```
 #[allow(clippy::type_complexity)]
 pub fn effort_jacobian<const N: usize, const P: usize>(

@@ -49,9 +49,13 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// The partial derivatives of M q̈, f, A and Ȧq̇ at (t, q, q̇, q̈), differentiated
     /// exactly ([`RollingPartials`], from [`super::RollingDerivation::partials`]): the derive
     /// emits them as straight-line code, the interpreted [`super::RollingModel`] lowers them
-    /// on its first call. `None` where they are not known: a derived mechanism with a
-    /// user-function effort (`effort = f`, whose dependence on q and q̇ the engine cannot
-    /// see); then [`RollingDynamics::acceleration_jacobian`] differences.
+    /// on its first call. A derived mechanism with user-function efforts τ (`effort = f`,
+    /// whose dependence on q and q̇ the engine cannot see) differentiates with τ held at
+    /// its values (the functions called at (t, q, q̇)) and adds the chain rule's
+    /// G ∂τ/∂q to ∂f/∂q and G ∂τ/∂q̇ to ∂f/∂q̇: G = ∂f/∂τ exact, ∂τ/∂(q, q̇) central
+    /// differences of the user functions alone ([`crate::mechanism::effort_jacobian`]).
+    /// `None` (this default) where they are not known; then
+    /// [`RollingDynamics::acceleration_jacobian`] differences every entry.
     fn partials(
         &self,
         t: f64,
@@ -178,13 +182,14 @@ pub trait RollingDynamics<const N: usize, const M: usize, const K: usize> {
     /// heights are not held: a caller that keeps the wheels on the floor chains the
     /// coordinates' tangent to the height rows in, as `Bicycle::canonical` does).
     ///
-    /// Exact where [`RollingDynamics::partials`] gives the derivatives (every interpreted
-    /// [`super::RollingModel`], every derived rolling mechanism without a user-function
-    /// effort): they are carried through the projection by the product rule
-    /// (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the like; see docs/linearisation.md). Otherwise (a derived
-    /// mechanism with an `effort = f`) every entry is a central difference of
-    /// [`RollingDynamics::derivative`] in (q, u) with Richardson extrapolation
-    /// ([`crate::linalg::jacobian`], about 1e-12 relative).
+    /// Built from [`RollingDynamics::partials`] where it gives the derivatives (every
+    /// interpreted [`super::RollingModel`] and every derived rolling mechanism): they are
+    /// carried through the projection by the product rule (d(K⁻¹) = −K⁻¹ dK K⁻¹ and the
+    /// like; see docs/linearisation.md), exact but for a derived mechanism's user-function
+    /// efforts' own derivatives, which `partials` differences. Where `partials` is `None`
+    /// (a hand-written implementation that does not give them) every entry is a central
+    /// difference of [`RollingDynamics::derivative`] in (q, u) with Richardson
+    /// extrapolation ([`crate::linalg::jacobian`], about 1e-12 relative).
     ///
     /// # Errors
     /// As [`RollingDynamics::derivative`]; [`MechanismError::NonFinite`] if a derivative is
