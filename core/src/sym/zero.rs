@@ -3,9 +3,9 @@
 //! Expanding a large divisor only to learn that it is not zero is the costly way round. An
 //! expression is first evaluated exactly in the integers modulo the prime p = 2⁶¹ − 1 at a
 //! pseudo-random point (abbreviations through their definitions): a non-zero value proves
-//! the expression non-zero, whatever its size. Only when every point tried gives zero (or
-//! cannot be used: a denominator or a square root without a value there) is the answer
-//! decided by expansion, which is exact.
+//! the expression non-zero, whatever its size. Only when the points tried give zero (three
+//! of them) or cannot be used (a denominator or a square root without a value there, up to
+//! 64 points) is the answer decided by expansion, which is exact.
 //!
 //! The point respects the relations the canonical form uses, so a zero of the engine's ring
 //! evaluates to zero: sin u and cos u are (2t/(1 + t²), (1 − t²)/(1 + t²)) for a t drawn from
@@ -18,6 +18,12 @@ use super::hash::IdMap;
 use super::rational::Rational;
 
 const P: u64 = (1 << 61) - 1;
+
+/// The most points [`Arena::is_zero`] evaluates at before it expands.
+const MAX_POINTS: u64 = 64;
+
+/// The usable points at which an expression vanishing sends it to the expansion.
+const ZERO_POINTS: u32 = 3;
 
 fn add(a: u64, b: u64) -> u64 {
     (a + b) % P
@@ -115,11 +121,23 @@ impl Arena {
         if self.as_rational(e).is_some() || self.as_symbol(e).is_some() {
             return Ok(false);
         }
-        for seed in 1..=3 {
-            if let Some(v) = self.modular_value(e, seed)
-                && v != 0
-            {
-                return Ok(false);
+        // A square root is defined at a point only where its argument is a square modulo p,
+        // half the residues: with k roots in `e`, one point in 2^k can be used. Points are
+        // cheap (one pass over the graph) and expansion is not (a contact's 3 × 3
+        // determinant under pivoting friction took seconds), so up to `MAX_POINTS` are
+        // drawn; an expression that vanishes at `ZERO_POINTS` usable points is taken to the
+        // exact expansion at once.
+        let mut vanished = 0;
+        for seed in 1..=MAX_POINTS {
+            match self.modular_value(e, seed) {
+                Some(0) => {
+                    vanished += 1;
+                    if vanished == ZERO_POINTS {
+                        break;
+                    }
+                }
+                Some(_) => return Ok(false),
+                None => {}
             }
         }
         let x = self.try_expand(e)?;
