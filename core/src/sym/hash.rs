@@ -33,7 +33,9 @@ impl Hasher for IdHasher {
     }
 
     fn finish(&self) -> u64 {
-        self.0
+        // The multiply leaves its entropy in the high bits, while hashbrown picks the bucket
+        // from the low ones: rotated down, as rustc-hash does.
+        self.0.rotate_left(26)
     }
 }
 
