@@ -226,13 +226,7 @@ pub(crate) fn spin_stopped<D: ContactDynamics + ?Sized>(
             fresh: false,
         };
     }
-    let target = -held.couple.signum() * SEED_OVER_THRESHOLD * spin_threshold(body, w, &x);
-    let y = with_spin(body, phase, &x, target);
-    Action::Switch {
-        mode: ContactMode::free(phase),
-        state: keep_kinetic(body, w, (phase, &x), (phase, y)),
-        fresh: false,
-    }
+    loose(body, w, phase, x, held.couple)
 }
 
 /// The pivot couple a held spin needs has reached ℓ_p N at `x` under `phase`: the spin
@@ -246,6 +240,19 @@ pub(crate) fn break_loose<D: ContactDynamics + ?Sized>(
     x: State,
 ) -> Action<ContactMode, State, ContactOutcome> {
     let couple = held(body, w.pivoting.unwrap_or(0.0), phase, t, &x).couple;
+    loose(body, w, phase, x, couple)
+}
+
+/// The spin of `x` let go under `phase`: seeded at 2δ_ω against `couple`, the pivot couple
+/// that could not hold it (the way the rest of the motion turns it), the velocities scaled
+/// back to the kinetic energy they had.
+fn loose<D: ContactDynamics + ?Sized>(
+    body: &D,
+    w: &Watch,
+    phase: Phase,
+    x: State,
+    couple: f64,
+) -> Action<ContactMode, State, ContactOutcome> {
     let target = -couple.signum() * SEED_OVER_THRESHOLD * spin_threshold(body, w, &x);
     let y = with_spin(body, phase, &x, target);
     Action::Switch {

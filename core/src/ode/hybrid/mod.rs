@@ -463,7 +463,13 @@ where
             if first.is_some_and(|(_, t)| t <= left.0) {
                 continue;
             }
-            let ((t, _), _) = locate_bracket(&mut at, left, right)?;
+            // The left end, the last time the mode held; but where the location met the
+            // witness at exactly 0 (the right end), that zero is the root and the mode still
+            // holds there (a witness of 0 is not below it). The left end is then only the
+            // last point evaluated before it, which was 1.3e-6 s and 7e-7 N early on a
+            // rolling sphere's lift-off.
+            let ((t_left, _), (t_right, g_right)) = locate_bracket(&mut at, left, right)?;
+            let t = if g_right == 0.0 { t_right } else { t_left };
             if first.is_none_or(|(_, t0)| t < t0) {
                 first = Some((id, t));
             }
