@@ -256,13 +256,12 @@ fn at_exactly_the_friction_threshold_the_body_slips_at_once() {
     let m = model(&ball, NumLaw::StickSlip(mu));
     let mut run = ContactRun::new(&m, Phase::Rolling, 0.0, y0, tol(1e-12)).unwrap();
     // The cone's margin is 0 to rounding at the start: below it, the body slides from the
-    // start; at or above it, the first step finds it falling at once.
+    // start; at or above it, the first step finds it falling at once (here to exactly 0 at
+    // 3.5e-27 s, where the loop acts).
     run.advance_to(1e-9).unwrap();
     let switch = run.switches()[0];
-    assert_eq!(
-        (switch.t, switch.from, switch.to),
-        (0.0, Phase::Rolling, Phase::Sliding)
-    );
+    assert_eq!((switch.from, switch.to), (Phase::Rolling, Phase::Sliding));
+    assert!(switch.t < 1e-20, "the slip starts at t = {}", switch.t);
     assert_eq!(switch.witness, Some("friction cone"));
     // Through 10 ms, whenever it rolls, its friction stays in the cone.
     let out = Run::new(&mut run, 1e-2)

@@ -442,3 +442,46 @@ fn the_splittings_refuse_bad_states_and_name_the_failing_step() {
     assert_eq!(err, OdeError::NonFiniteState { t: 5.0 });
     assert_eq!((s.t(), s.state().m), (5.0, y0.m));
 }
+
+/// y′ = 1 from 0 with the witness 3/4 − y: linear on the step, so the root's location lands
+/// on a time within rounding of 3/4 where the witness is exactly 0. The loop acts at that
+/// zero, not at the last point evaluated before it (which it did: here at t = 0.652, and a
+/// rolling sphere's lift-off 1.3e-6 s early, with 7e-7 N of normal force left).
+#[test]
+fn a_witness_located_at_exactly_zero_acts_at_its_zero() {
+    use precess_core::ode::{Action, Hooks, Hybrid, HybridState, System};
+    struct Line;
+    impl System<1> for Line {
+        fn rhs(&self, _t: f64, _y: &[f64; 1], d: &mut [f64; 1]) {
+            d[0] = 1.0;
+        }
+    }
+    impl Hooks<[f64; 1]> for Line {
+        type Mode = ();
+        type Halt = (f64, f64);
+        fn mode(&self) {}
+        fn set_mode(&mut self, _: ()) {}
+        fn witness_names(&self) -> &[&'static str] {
+            &["three quarters"]
+        }
+        fn witness(&self, _: &(), _: usize, _t: f64, y: &[f64; 1]) -> f64 {
+            0.75 - y[0]
+        }
+        fn on_witness(
+            &self,
+            _: usize,
+            t: f64,
+            s: &HybridState<(), [f64; 1]>,
+            _w: f64,
+        ) -> Result<Action<(), [f64; 1], (f64, f64)>, OdeError> {
+            Ok(Action::Halt((t, s.x[0])))
+        }
+    }
+    let ode = Dop853::new(Line, 0.0, [0.0], AdaptiveConfig::with_tol(1e-10, 1e-12)).unwrap();
+    let mut line = Hybrid::new(ode).unwrap();
+    let out = Run::new(&mut line, 2.0).sample_none().integrate().unwrap();
+    assert_eq!(out.stop, StopReason::Halted);
+    let (t, y) = line.halt().copied().expect("the witness halts the run");
+    assert_eq!(y, 0.75, "the witness is exactly 0 where the loop acts");
+    assert!((t - 0.75).abs() <= 2.0 * f64::EPSILON, "t = {t}");
+}
