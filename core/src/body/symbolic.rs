@@ -185,22 +185,24 @@ impl SymbolicBody {
     /// use precess_core::body::{About, Description, Part, Shape, SymbolicBody};
     /// use precess_core::sym::Arena;
     /// let mut a = Arena::new();
-    /// let (ixx, iyy, izz, ixy) = (a.parameter("ixx"), a.parameter("iyy"), a.parameter("izz"), a.parameter("ixy"));
+    /// let [ixx, iyy, izz, ixy] = ["ixx", "iyy", "izz", "ixy"].map(|n| a.parameter(n));
     /// let (z, m) = (a.zero(), a.one());
     /// let tensor = [[ixx, ixy, z], [ixy, iyy, z], [z, z, izz]];
-    /// let d = Description { parts: vec![Part::new(Shape::Explicit { mass: m, inertia: tensor, about: About::Center }, [z, z, z])], pivot: None };
+    /// let shape = Shape::Explicit { mass: m, inertia: tensor, about: About::Center };
+    /// let d = Description { parts: vec![Part::new(shape, [z, z, z])], pivot: None };
     /// let body = SymbolicBody::new(&mut a, &d).unwrap();
     /// let w = [a.input("w1"), a.input("w2"), a.input("w3")];
     /// let rhs = body.euler_rhs_description(&mut a, w, [z; 3]).unwrap();
-    /// // ω along z, the x–y products of inertia coupling it: I ω = (0, 0, I_zz ω₃), so
-    /// // ω × I ω = 0 and ω̇ = 0; with ω = (1, 0, 1), I ω = (I_xx, I_xy, I_zz) and
-    /// // ω × I ω = (−I_xy, I_xx − I_zz, I_xy).
     /// let env = |w: [f64; 3]| [2.0, 3.0, 4.0, 0.5, w[0], w[1], w[2]];
-    /// assert_eq!(a.eval(rhs[0], &env([0.0, 0.0, 1.0])), 0.0);
+    /// // ω along z, a principal axis: I ω = (0, 0, I_zz) ∥ ω, so ω̇ = 0.
+    /// assert_eq!(a.eval(rhs[2], &env([0.0, 0.0, 1.0])), 0.0);
+    /// // ω = (1, 0, 1): I ω = (I_xx, I_xy, I_zz), G = −ω × I ω = (I_xy, I_zz − I_xx, −I_xy),
+    /// // and the x–y block of I⁻¹ is [[I_yy, −I_xy], [−I_xy, I_xx]] / (I_xx I_yy − I_xy²).
     /// let (det, g) = (2.0 * 3.0 - 0.25, [0.5, 4.0 - 2.0, -0.5]);
-    /// assert_relative_eq!(a.eval(rhs[0], &env([1.0, 0.0, 1.0])), (3.0 * g[0] - 0.5 * g[1]) / det, epsilon = 1e-15);
-    /// assert_relative_eq!(a.eval(rhs[1], &env([1.0, 0.0, 1.0])), (2.0 * g[1] - 0.5 * g[0]) / det, epsilon = 1e-15);
-    /// assert_relative_eq!(a.eval(rhs[2], &env([1.0, 0.0, 1.0])), g[2] / 4.0, epsilon = 1e-15);
+    /// let got = [0, 1, 2].map(|i| a.eval(rhs[i], &env([1.0, 0.0, 1.0])));
+    /// assert_relative_eq!(got[0], (3.0 * g[0] - 0.5 * g[1]) / det, epsilon = 1e-15);
+    /// assert_relative_eq!(got[1], (2.0 * g[1] - 0.5 * g[0]) / det, epsilon = 1e-15);
+    /// assert_relative_eq!(got[2], g[2] / 4.0, epsilon = 1e-15);
     /// ```
     ///
     /// # Errors
