@@ -9,7 +9,8 @@ use super::mass::{MassProperties, mass_properties};
 use super::principal::{Principal, principal_frame};
 use super::shape::Description;
 use super::validate::matrix;
-use crate::sym::{Arena, ExprId, Node};
+use crate::sym::mat3::{cofactor, cross, determinant, mat_vec};
+use crate::sym::{Arena, ExprId, Node, SymError};
 
 /// How the principal frame of a symbolic body is known.
 #[derive(Clone, Debug, PartialEq)]
@@ -164,6 +165,79 @@ impl SymbolicBody {
             rhs[i] = arena.add(gyro, drive);
         }
         Ok(Some(rhs))
+    }
+
+    /// Euler's equations in the description axes, for any tensor and with no principal
+    /// frame: I ω̇ = G − ω × (I ω), I the inertia tensor about the reference point, ω and
+    /// the torque G in description axes, solved by the adjugate,
+    ///
+    /// ω̇ = adj(I) (G − ω × (I ω)) · (1 / det I),
+    ///
+    /// one division by det I shared by the three rows. The determinant and the adjugate's
+    /// entries, polynomials in the tensor's entries alone, are expanded (what cancels
+    /// exactly is gone, a zero product of inertia removes its terms); the products with ω
+    /// are not. This is what a body whose principal frame is found only at run time
+    /// ([`Frame::DecomposedAtRunTime`]) has as straight-line expressions, since its
+    /// principal moments and rotation are an eigen-decomposition.
+    ///
+    /// ```
+    /// use approx::assert_relative_eq;
+    /// use precess_core::body::{About, Description, Part, Shape, SymbolicBody};
+    /// use precess_core::sym::Arena;
+    /// let mut a = Arena::new();
+    /// let [ixx, iyy, izz, ixy] = ["ixx", "iyy", "izz", "ixy"].map(|n| a.parameter(n));
+    /// let (z, m) = (a.zero(), a.one());
+    /// let tensor = [[ixx, ixy, z], [ixy, iyy, z], [z, z, izz]];
+    /// let shape = Shape::Explicit { mass: m, inertia: tensor, about: About::Center };
+    /// let d = Description { parts: vec![Part::new(shape, [z, z, z])], pivot: None };
+    /// let body = SymbolicBody::new(&mut a, &d).unwrap();
+    /// let w = [a.input("w1"), a.input("w2"), a.input("w3")];
+    /// let rhs = body.euler_rhs_description(&mut a, w, [z; 3]).unwrap();
+    /// let env = |w: [f64; 3]| [2.0, 3.0, 4.0, 0.5, w[0], w[1], w[2]];
+    /// // ω along z, a principal axis: I ω = (0, 0, I_zz) ∥ ω, so ω̇ = 0.
+    /// assert_eq!(a.eval(rhs[2], &env([0.0, 0.0, 1.0])), 0.0);
+    /// // ω = (1, 0, 1): I ω = (I_xx, I_xy, I_zz), G = −ω × I ω = (I_xy, I_zz − I_xx, −I_xy),
+    /// // and the x–y block of I⁻¹ is [[I_yy, −I_xy], [−I_xy, I_xx]] / (I_xx I_yy − I_xy²).
+    /// let (det, g) = (2.0 * 3.0 - 0.25, [0.5, 4.0 - 2.0, -0.5]);
+    /// let got = [0, 1, 2].map(|i| a.eval(rhs[i], &env([1.0, 0.0, 1.0])));
+    /// assert_relative_eq!(got[0], (3.0 * g[0] - 0.5 * g[1]) / det, epsilon = 1e-15);
+    /// assert_relative_eq!(got[1], (2.0 * g[1] - 0.5 * g[0]) / det, epsilon = 1e-15);
+    /// assert_relative_eq!(got[2], g[2] / 4.0, epsilon = 1e-15);
+    /// ```
+    ///
+    /// # Errors
+    /// [`SymError::DivisionByZero`] if det I is zero whatever the parameters (no valid body
+    /// has such a tensor), [`SymError::ExpansionTooLarge`] if deciding it would expand past
+    /// the term limit.
+    pub fn euler_rhs_description(
+        &self,
+        arena: &mut Arena,
+        omega: [ExprId; 3],
+        torque: [ExprId; 3],
+    ) -> Result<[ExprId; 3], SymError> {
+        let tensor = self.props.inertia;
+        let rows: Vec<Vec<ExprId>> = tensor.iter().map(|r| r.to_vec()).collect();
+        let momentum = mat_vec(arena, &tensor, &omega);
+        let gyro = cross(arena, &omega, &momentum);
+        let g: [ExprId; 3] = std::array::from_fn(|k| arena.sub(torque[k], gyro[k]));
+        let det = determinant(arena, &rows);
+        let det = arena.expand(det);
+        let inv_det = arena.recip(det)?;
+        let mut rhs = [arena.zero(); 3];
+        for (i, o) in rhs.iter_mut().enumerate() {
+            // adj(I)ᵢⱼ = cofactor(j, i).
+            let mut terms = Vec::with_capacity(3);
+            for (j, &gj) in g.iter().enumerate() {
+                let c = cofactor(arena, &rows, j, i);
+                let c = arena.expand(c);
+                if c != arena.zero() {
+                    terms.push(arena.mul(c, gj));
+                }
+            }
+            let num = arena.sum(&terms);
+            *o = arena.mul(num, inv_det);
+        }
+        Ok(rhs)
     }
 }
 

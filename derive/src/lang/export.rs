@@ -11,7 +11,8 @@
 //! body's own, and only the latter's tokens are certain to be emitted last: a scene
 //! registers its export here ([`top`], [`driven_top`], [`free`], [`contact`]), keyed by the expansion's
 //! arena, and [`body`] emits it, or the body's torque-free Euler equations when no scene
-//! registered one, so a struct gets one `impl Export` whatever its attributes. A
+//! registered one (in principal axes, or in the description axes when the principal frame
+//! is found only at run time), so a struct gets one `impl Export` whatever its attributes. A
 //! `#[derive(Mechanism)]` emits its own ([`mechanism`], [`rolling`], [`closed`]), and so does
 //! `taylor_system!` ([`system`]).
 
@@ -261,25 +262,28 @@ pub fn contact(ident: &Ident, arena: &mut Arena, d: &ContactDerivation, inputs: 
 }
 
 /// The struct's `impl Export`, after `before`: a scene's registered export, or the body's
-/// torque-free Euler equations `ω̇ = f(ω)` in principal axes (as `taylor = K` on `#[rigid]`
-/// emits them) with their Jacobian.
+/// torque-free Euler equations `ω̇ = f(ω)` with their Jacobian: in principal axes (as
+/// `taylor = K` on `#[rigid]` emits them) when the principal frame is known at compile time,
+/// else in the description axes, `ω̇ = I⁻¹ (−ω × I ω)` over the full tensor of fields (the
+/// principal frame is an eigen-decomposition the straight-line export has no place for).
 pub fn body(ex: &mut Expansion, checked: &CheckedBody, before: impl ToTokens) -> TokenStream {
     let (ident, arena) = (ex.ident, &mut *ex.arena);
     let text = take(arena).unwrap_or_else(|| {
         let omega: [ExprId; 3] = std::array::from_fn(|i| arena.input(&format!("omega_{}", i + 1)));
         let zero = [arena.zero(); 3];
-        match checked.body.euler_rhs_principal(arena, omega, zero) {
-            Ok(Some(rhs)) => {
-                let f = [whole(
-                    "rhs",
-                    "Euler's equations, dω/dt in principal axes",
-                    rhs.to_vec(),
-                )];
-                text(build(ident, arena, &omega, &f, Some(0)))
-            }
-            Ok(None) => Err("the principal moments are found at run time".to_owned()),
-            Err(e) => Err(e.to_string()),
-        }
+        let (rhs, doc) = match checked.body.euler_rhs_principal(arena, omega, zero) {
+            Ok(Some(rhs)) => (rhs, "Euler's equations, dω/dt in principal axes"),
+            Ok(None) => match checked.body.euler_rhs_description(arena, omega, zero) {
+                Ok(rhs) => (
+                    rhs,
+                    "Euler's equations, dω/dt = I⁻¹(−ω × I ω) in the description axes (the body's principal frame is found only at run time)",
+                ),
+                Err(e) => return Err(format!("the inertia tensor cannot be inverted: {e}")),
+            },
+            Err(e) => return Err(e.to_string()),
+        };
+        let f = [whole("rhs", doc, rhs.to_vec())];
+        text(build(ident, arena, &omega, &f, Some(0)))
     });
     let export = tokens(ident, text);
     quote!(#before #export)

@@ -5,6 +5,7 @@
 //! Rust's std (which calls it) and NumPy on this machine compute alike.
 
 use super::support::{Case, run_c, run_python, worst};
+use crate::common::mechanism::{random_inertia, relative_difference};
 use crate::common::rng::Rng;
 use precess::codegen::{Export, ExportError, Exported};
 use precess::contact::{ContactDynamics, Phase};
@@ -292,23 +293,133 @@ fn a_body_exports_its_euler_equations_bit_for_bit() {
     compare("euler", &e, &cases, &[("rhs", rhs)], 0);
 }
 
-/// A body of field products of inertia: its principal frame is found at run time, which its
-/// Euler equations read and the export cannot.
+/// A body whose every product of inertia is a field: its principal frame is found at run
+/// time, so its export is Euler's equations in the description axes.
 #[derive(RigidBody)]
-#[rigid(body(mass = 1.0, inertia = [[a, b, 0.0], [b, c, 0.0], [0.0, 0.0, d]]))]
+#[rigid(body(mass = 1.0, inertia = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]))]
 struct Skewed {
-    a: f64,
-    b: f64,
-    c: f64,
-    d: f64,
+    ixx: f64,
+    iyy: f64,
+    izz: f64,
+    ixy: f64,
+    ixz: f64,
+    iyz: f64,
+}
+
+impl Skewed {
+    /// The body of the case's parameters.
+    fn of(e: &Exported, c: &Case) -> Skewed {
+        let v = |n: &str| c.param(e, n);
+        Skewed {
+            ixx: v("ixx"),
+            iyy: v("iyy"),
+            izz: v("izz"),
+            ixy: v("ixy"),
+            ixz: v("ixz"),
+            iyz: v("iyz"),
+        }
+    }
+
+    /// ω̇ in description axes from the run-time principal frame: R f(Rᵀ ω), f the derived
+    /// `euler_rhs_principal` over the moments `principal` found, R its rotation.
+    fn reference(&self, w: &Vector3<f64>) -> Vector3<f64> {
+        let p = self.principal();
+        let r = p.rotation;
+        r * self.euler_rhs_principal(&(r.inverse() * w), &Vector3::zeros())
+    }
+}
+
+/// Cases of `Skewed`: a random positive definite tensor whose principal moments obey the
+/// triangle inequality, turned by a random rotation; ω in [−2, 2]³.
+fn skewed_cases(e: &Exported, count: usize, seed: u64) -> Vec<Case> {
+    cases(e, count, seed, |rng, c| {
+        let i = random_inertia(rng);
+        for (name, (row, col)) in [
+            ("ixx", (0, 0)),
+            ("iyy", (1, 1)),
+            ("izz", (2, 2)),
+            ("ixy", (0, 1)),
+            ("ixz", (0, 2)),
+            ("iyz", (1, 2)),
+        ] {
+            let k = e.parameters().iter().position(|p| p == name).expect(name);
+            c.p[k] = i[(row, col)];
+        }
+    })
 }
 
 #[test]
-fn a_value_found_at_run_time_is_a_typed_refusal_not_a_wrong_export() {
-    let err = Skewed::c_source().expect_err("a run-time principal frame cannot be exported");
-    let ExportError::NotExportable { reason } = &err else {
-        panic!("{err:?}");
+fn a_body_of_field_products_of_inertia_exports_euler_in_description_axes_bit_for_bit() {
+    let e = Skewed::exported().expect("exported without a principal frame");
+    assert_eq!(e.state(), ["omega_1", "omega_2", "omega_3"]);
+    let mut fields = e.parameters().to_vec();
+    fields.sort();
+    assert_eq!(fields, ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"]);
+    let rhs = e.get("rhs").expect("rhs");
+    assert!(rhs.doc().contains("description axes"), "{}", rhs.doc());
+    assert_eq!(e.get("jacobian").expect("jacobian").shape(), (3, 3));
+    let cases = skewed_cases(&e, 1000, 6);
+    let eval = |name: &str| -> Vec<Vec<f64>> {
+        cases
+            .iter()
+            .map(|c| e.eval(name, c.t, &c.y, &c.p).expect("eval"))
+            .collect()
     };
-    assert!(reason.contains("run time"), "{reason}");
-    assert!(Skewed::state_names().is_err());
+    let (rhs, jac) = (eval("rhs"), eval("jacobian"));
+    compare("skewed", &e, &cases, &[("rhs", rhs), ("jacobian", jac)], 0);
+}
+
+#[test]
+fn a_body_of_field_products_of_inertia_exports_the_principal_frame_equations_rotated() {
+    let e = Skewed::exported().expect("exported");
+    let cases = skewed_cases(&e, 1000, 7);
+    let (mut worst_rhs, mut worst_scaled, mut worst_jac) = (0.0f64, 0.0f64, 0.0f64);
+    for c in &cases {
+        let s = Skewed::of(&e, c);
+        s.validate().expect("a valid body");
+        let w = Vector3::new(c.y[0], c.y[1], c.y[2]);
+        // ω̇ against the run-time principal frame's, relative to max|ω̇ᵢ| (and to the larger
+        // of it and |ω|², ω̇'s scale when the moments are of order one).
+        let got = e.eval("rhs", c.t, &c.y, &c.p).expect("rhs");
+        let want = s.reference(&w);
+        worst_rhs = worst_rhs.max(relative_difference(&got, want.as_slice(), 0.0));
+        worst_scaled =
+            worst_scaled.max(relative_difference(&got, want.as_slice(), w.norm_squared()));
+        // The Jacobian against central differences of the same: ω̇ is quadratic in ω, so
+        // the differences are exact but for rounding.
+        let jac = e.eval("jacobian", c.t, &c.y, &c.p).expect("jacobian");
+        let h = 1e-2;
+        for j in 0..3 {
+            let step = Vector3::from_fn(|i, _| if i == j { h } else { 0.0 });
+            let d = (s.reference(&(w + step)) - s.reference(&(w - step))) / (2.0 * h);
+            for i in 0..3 {
+                worst_jac = worst_jac.max((jac[3 * i + j] - d[i]).abs() / w.norm());
+            }
+        }
+    }
+    println!(
+        "skewed: rhs worst {worst_rhs:e} relative ({worst_scaled:e} of max(|ω̇|, |ω|²)), jacobian worst {worst_jac:e} of |ω|"
+    );
+    assert!(worst_rhs < 1e-13, "{worst_rhs:e}");
+    assert!(worst_scaled < 1e-14, "{worst_scaled:e}");
+    assert!(worst_jac < 1e-11, "{worst_jac:e}");
+}
+
+/// A scene whose export failed: the reason the derive would record.
+struct Refused;
+
+impl Export for Refused {
+    const EXPORTED: Result<&'static str, &'static str> = Err("a symbol that is not bound");
+}
+
+#[test]
+fn a_scene_that_could_not_be_exported_is_a_typed_refusal() {
+    let err = Refused::c_source().expect_err("no text");
+    assert_eq!(
+        err,
+        ExportError::NotExportable {
+            reason: "a symbol that is not bound".to_owned()
+        }
+    );
+    assert!(Refused::state_names().is_err() && Refused::python_module().is_err());
 }

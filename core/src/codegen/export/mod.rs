@@ -183,8 +183,8 @@ pub enum ExportError {
         /// The length expected.
         expected: usize,
     },
-    /// The derive could not export the scene (a value found only at run time in its
-    /// equations, such as a principal frame of field products of inertia).
+    /// The derive could not export the scene: forming its equations or building their
+    /// programs failed (the reason is that error's message).
     #[error("the scene cannot be exported: {reason}")]
     NotExportable {
         /// Why.
@@ -202,7 +202,8 @@ pub enum ExportError {
 
 /// The exported equations of a derived struct: every `#[derive(RigidBody)]` (a top, with or
 /// without motors, a free body, a body on a table, or the body's own torque-free Euler
-/// equations), every `#[derive(Mechanism)]` (a tree's state derivative, the pieces of a
+/// equations: in principal axes when its principal frame is known at compile time, in its
+/// description axes, ω̇ = I⁻¹(−ω × I ω), when a product of inertia depends on fields), every `#[derive(Mechanism)]` (a tree's state derivative, the pieces of a
 /// rolling or a closed mechanism's equations, which their runs project numerically) and every
 /// `taylor_system!` implements it. The values of user functions (motors, user torques,
 /// forces, wrenches, couples, efforts) are the export's inputs ([`Exported::inputs`]).
@@ -212,9 +213,8 @@ pub enum ExportError {
 /// back.
 ///
 /// # Errors
-/// Every method returns [`ExportError::NotExportable`] when the equations read a value the
-/// export cannot (one found only at run time), and [`ExportError::Text`] never for the text
-/// the macro wrote.
+/// Every method returns [`ExportError::NotExportable`] when the derive could not form the
+/// scene's equations or build their programs, and [`ExportError::Text`] never for the text the macro wrote.
 pub trait Export {
     /// The [`Exported::to_text`] of the scene, or why it could not be exported.
     const EXPORTED: Result<&'static str, &'static str>;
