@@ -309,6 +309,41 @@ fn skew(v: &Vector3<f64>) -> Matrix3<f64> {
     v.cross_matrix()
 }
 
+/// What both Newton–Euler solves read of the state (space axes): the attitude R, Ω, the
+/// contact point ρ from the centre of mass and its rate, I_s and Ω × I_s Ω.
+struct Kinematics {
+    r_mat: Matrix3<f64>,
+    omega: Vector3<f64>,
+    rho: Vector3<f64>,
+    rho_dot: Vector3<f64>,
+    i_s: Matrix3<f64>,
+    gyro: Vector3<f64>,
+}
+
+fn kinematics(body: &NumBody, y: &[f64; STATE_LEN]) -> Kinematics {
+    let r_mat = attitude_of(y).to_rotation_matrix().into_inner();
+    let omega_b = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
+    let omega = r_mat * omega_b;
+    let gamma = r_mat.transpose() * Vector3::z();
+    let (s, ds) = support(&body.surface, &(-gamma));
+    let r_b = s - Vector3::from(body.center);
+    // ṙ (body) = (∂r/∂γ) γ̇ = −(∂s/∂n) γ̇, γ̇ = γ × ω.
+    let r_dot_b = -ds * gamma.cross(&omega_b);
+    let rho = r_mat * r_b;
+    let rho_dot = omega.cross(&rho) + r_mat * r_dot_b;
+    let inertia_b = Matrix3::from_fn(|i, j| body.inertia[i][j]);
+    let i_s = r_mat * inertia_b * r_mat.transpose();
+    let gyro = omega.cross(&(i_s * omega));
+    Kinematics {
+        r_mat,
+        omega,
+        rho,
+        rho_dot,
+        i_s,
+        gyro,
+    }
+}
+
 /// Newton–Euler in space axes: M a = F − M g ẑ, I_s Ω̇ + Ω × I_s Ω = ρ × F, with the
 /// contact point's material velocity u = v + Ω × ρ held at zero (rolling: all three
 /// components, differentiated along the moving contact: a = −Ω̇ × ρ − Ω × ρ̇) or at zero
@@ -325,22 +360,15 @@ pub fn newton_euler_pivoting(
     pivoting: Option<f64>,
     y: &[f64; STATE_LEN],
 ) -> Reference {
-    let q = attitude_of(y);
-    let r_mat = q.to_rotation_matrix().into_inner();
-    let omega_b = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
-    let omega = r_mat * omega_b;
-    let gamma = r_mat.transpose() * Vector3::z();
-    let (s, ds) = support(&body.surface, &(-gamma));
-    let r_b = s - Vector3::from(body.center);
-    // ṙ (body) = (∂r/∂γ) γ̇ = −(∂s/∂n) γ̇, γ̇ = γ × ω.
-    let r_dot_b = -ds * gamma.cross(&omega_b);
-    let rho = r_mat * r_b;
-    let rho_dot = omega.cross(&rho) + r_mat * r_dot_b;
-    let inertia_b = Matrix3::from_fn(|i, j| body.inertia[i][j]);
-    let i_s = r_mat * inertia_b * r_mat.transpose();
-    let (m, g) = (body.mass, body.gravity);
-    let z = Vector3::z();
-    let gyro = omega.cross(&(i_s * omega));
+    let Kinematics {
+        r_mat,
+        omega,
+        rho,
+        rho_dot,
+        i_s,
+        gyro,
+    } = kinematics(body, y);
+    let (m, g, z) = (body.mass, body.gravity, Vector3::z());
     // The pivoting torque per newton of N, about ẑ: −ℓ_p sign(Ω_z).
     let pivot = -pivoting.unwrap_or(0.0) * omega.z.signum();
     match law {
@@ -437,21 +465,15 @@ pub fn state(
 /// Ω̇_z = 0 (Ω·ẑ = ω·γ, and ẑ is fixed in space) added to the solve. Returns the reference
 /// and λ.
 pub fn newton_euler_held(body: &NumBody, law: NumLaw, y: &[f64; STATE_LEN]) -> (Reference, f64) {
-    let q = attitude_of(y);
-    let r_mat = q.to_rotation_matrix().into_inner();
-    let omega_b = Vector3::new(y[layout::OMEGA], y[layout::OMEGA + 1], y[layout::OMEGA + 2]);
-    let omega = r_mat * omega_b;
-    let gamma = r_mat.transpose() * Vector3::z();
-    let (s, ds) = support(&body.surface, &(-gamma));
-    let r_b = s - Vector3::from(body.center);
-    let r_dot_b = -ds * gamma.cross(&omega_b);
-    let rho = r_mat * r_b;
-    let rho_dot = omega.cross(&rho) + r_mat * r_dot_b;
-    let inertia_b = Matrix3::from_fn(|i, j| body.inertia[i][j]);
-    let i_s = r_mat * inertia_b * r_mat.transpose();
-    let (m, g) = (body.mass, body.gravity);
-    let z = Vector3::z();
-    let gyro = omega.cross(&(i_s * omega));
+    let Kinematics {
+        r_mat,
+        omega,
+        rho,
+        rho_dot,
+        i_s,
+        gyro,
+    } = kinematics(body, y);
+    let (m, g, z) = (body.mass, body.gravity, Vector3::z());
     match law {
         NumLaw::Rolling { .. } | NumLaw::StickSlip(_) => {
             // Unknowns Ω̇ (3), F (3), λ.
