@@ -9,7 +9,7 @@ use super::mass::{MassProperties, mass_properties};
 use super::principal::{Principal, principal_frame};
 use super::shape::Description;
 use super::validate::matrix;
-use crate::sym::mat3::{cofactor, cross, determinant, mat_vec};
+use crate::sym::mat3::{adjugate_times, cross, determinant, mat_vec};
 use crate::sym::{Arena, ExprId, Node, SymError};
 
 /// How the principal frame of a symbolic body is known.
@@ -223,21 +223,8 @@ impl SymbolicBody {
         let det = determinant(arena, &rows);
         let det = arena.expand(det);
         let inv_det = arena.recip(det)?;
-        let mut rhs = [arena.zero(); 3];
-        for (i, o) in rhs.iter_mut().enumerate() {
-            // adj(I)ᵢⱼ = cofactor(j, i).
-            let mut terms = Vec::with_capacity(3);
-            for (j, &gj) in g.iter().enumerate() {
-                let c = cofactor(arena, &rows, j, i);
-                let c = arena.expand(c);
-                if c != arena.zero() {
-                    terms.push(arena.mul(c, gj));
-                }
-            }
-            let num = arena.sum(&terms);
-            *o = arena.mul(num, inv_det);
-        }
-        Ok(rhs)
+        let num = adjugate_times(arena, &rows, &g);
+        Ok(std::array::from_fn(|i| arena.mul(num[i], inv_det)))
     }
 }
 

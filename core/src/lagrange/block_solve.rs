@@ -9,7 +9,7 @@
 use super::equations::EquationsOfMotion;
 use super::error::LagrangeError;
 use crate::codegen::Program;
-use crate::sym::mat3::{cofactor, determinant};
+use crate::sym::mat3::{adjugate_times, determinant};
 use crate::sym::{Arena, ExprId};
 
 /// The largest coupled block solved symbolically (the adjugate grows as n!).
@@ -74,18 +74,9 @@ pub(crate) fn solve_linear(
             });
         }
         let inv_det = arena.recip(det)?;
-        let k = block.len();
-        for r in 0..k {
-            // Row r of adj(M) = cofactors of column r (M is symmetric, so rows work too).
-            let mut terms = Vec::with_capacity(k);
-            for (c, &coord) in block.iter().enumerate() {
-                let cof = cofactor(arena, &m, c, r);
-                let cof = arena.expand(cof);
-                if cof != arena.zero() {
-                    terms.push(arena.mul(cof, forcing[coord]));
-                }
-            }
-            let num = arena.sum(&terms);
+        let block_forcing: Vec<ExprId> = block.iter().map(|&coord| forcing[coord]).collect();
+        let nums = adjugate_times(arena, &m, &block_forcing);
+        for (r, &num) in nums.iter().enumerate() {
             accel[block[r]] = arena.mul(num, inv_det);
             quotients[block[r]] = (num, det);
         }

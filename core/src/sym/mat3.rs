@@ -113,3 +113,33 @@ pub fn cofactor(arena: &mut Arena, m: &[Vec<ExprId>], i: usize, j: usize) -> Exp
     let d = determinant(arena, &minor);
     if (i + j) % 2 == 1 { arena.neg(d) } else { d }
 }
+
+/// `adj(m) b`, the numerators of `m⁻¹ b = adj(m) b / det m` for a square `m`: row r is
+/// Σ_c C_cr b_c over the cofactors C, each expanded (so one that cancels to zero drops its
+/// term) and the sums left unexpanded. The division by det m is the caller's, which decides
+/// how a zero determinant is refused.
+///
+/// ```
+/// use precess_core::sym::{Arena, mat3};
+/// let mut a = Arena::new();
+/// let (x, y) = (a.parameter("x"), a.parameter("y"));
+/// let (o, z) = (a.one(), a.zero());
+/// // adj [[x, 0], [0, y]] = [[y, 0], [0, x]]: adj · (1, 1) = (y, x).
+/// let n = mat3::adjugate_times(&mut a, &[vec![x, z], vec![z, y]], &[o, o]);
+/// assert_eq!(n, vec![y, x]);
+/// ```
+pub fn adjugate_times(arena: &mut Arena, m: &[Vec<ExprId>], b: &[ExprId]) -> Vec<ExprId> {
+    (0..m.len())
+        .map(|r| {
+            let mut terms = Vec::with_capacity(b.len());
+            for (c, &bc) in b.iter().enumerate() {
+                let cof = cofactor(arena, m, c, r);
+                let cof = arena.expand(cof);
+                if cof != arena.zero() {
+                    terms.push(arena.mul(cof, bc));
+                }
+            }
+            arena.sum(&terms)
+        })
+        .collect()
+}

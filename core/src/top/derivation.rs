@@ -4,7 +4,7 @@
 use super::scene::TopScene;
 use crate::lagrange::{Accelerations, Coordinates, EquationsOfMotion, LagrangeError};
 use crate::rigid::AngleSequence;
-use crate::sym::mat3::{Mat3, cofactor, cross, determinant, dot, mat_vec, transpose};
+use crate::sym::mat3::{Mat3, adjugate_times, cross, determinant, dot, mat_vec, transpose};
 use crate::sym::{Arena, ExprId};
 
 /// Everything derived from a [`TopScene`] in angle form.
@@ -189,20 +189,10 @@ impl TopScene {
             });
         }
         let inv_det = arena.recip(det)?;
-        let mut out = [arena.zero(); 3];
-        for (r, o) in out.iter_mut().enumerate() {
-            let mut terms = Vec::with_capacity(3);
-            for (c, &f) in rhs.iter().enumerate() {
-                let cof = cofactor(arena, &m, c, r);
-                let cof = arena.expand(cof);
-                if cof != arena.zero() {
-                    terms.push(arena.mul(cof, f));
-                }
-            }
-            let num = arena.sum(&terms);
-            let num = arena.expand(num);
-            *o = arena.mul(num, inv_det);
-        }
-        Ok(out)
+        let num = adjugate_times(arena, &m, &rhs);
+        Ok(std::array::from_fn(|r| {
+            let num = arena.expand(num[r]);
+            arena.mul(num, inv_det)
+        }))
     }
 }
