@@ -5,7 +5,7 @@
 use precess::exact::FreeBodyExact;
 use precess::ode::{Event, OdeError, Run, StopReason};
 use precess::taylor::batch::{BatchTaylor, Lanes, TaylorLanes};
-use precess::taylor::{Taylor, TaylorConfig, TaylorSystem};
+use precess::taylor::{OrderRule, Taylor, TaylorConfig, TaylorSystem};
 use proptest::prelude::*;
 
 precess::taylor_system! {
@@ -101,24 +101,31 @@ fn lanes_end_where_scalar_runs_end_bit_for_bit_each_at_its_own_time() {
         [-2.0, 0.1, 0.7],
     ];
     let t_end = [200.0, 37.5, 123.25, 5.0];
-    let cfg = TaylorConfig::with_tol(1e-12, 1e-12);
-    let mut batch = BatchTaylor::new(inertias.map(free), [0.0; 4], y0, cfg);
-    let ends = batch.advance_to(t_end);
-    let mut steps = Vec::new();
-    for l in 0..4 {
-        let end = ends[l].clone().unwrap();
-        let (y, n) = scalar(free(inertias[l]), 0.0, y0[l], t_end[l], cfg).unwrap();
-        assert_eq!(end.t, t_end[l]);
-        assert!(!end.event);
-        assert_eq!(bits(&end.y), bits(&y), "lane {l}");
-        let lane = batch.lane(l).unwrap().unwrap();
-        assert_eq!(lane.stats().steps, n, "lane {l}");
-        steps.push(n);
+    // Under either order rule (the minimum-work order takes other orders and steps).
+    let jorba_zou = TaylorConfig::with_tol(1e-12, 1e-12);
+    let minimum_work = TaylorConfig {
+        order_rule: OrderRule::MinimumWork,
+        ..jorba_zou
+    };
+    for cfg in [jorba_zou, minimum_work] {
+        let mut batch = BatchTaylor::new(inertias.map(free), [0.0; 4], y0, cfg);
+        let ends = batch.advance_to(t_end);
+        let mut steps = Vec::new();
+        for l in 0..4 {
+            let end = ends[l].clone().unwrap();
+            let (y, n) = scalar(free(inertias[l]), 0.0, y0[l], t_end[l], cfg).unwrap();
+            assert_eq!(end.t, t_end[l]);
+            assert!(!end.event);
+            assert_eq!(bits(&end.y), bits(&y), "lane {l}");
+            let lane = batch.lane(l).unwrap().unwrap();
+            assert_eq!(lane.stats().steps, n, "lane {l}");
+            steps.push(n);
+        }
+        // The lanes really diverged: their step counts differ.
+        steps.sort_unstable();
+        steps.dedup();
+        assert_eq!(steps.len(), 4, "{steps:?}");
     }
-    // The lanes really diverged: their step counts differ.
-    steps.sort_unstable();
-    steps.dedup();
-    assert_eq!(steps.len(), 4, "{steps:?}");
 }
 
 #[test]

@@ -106,6 +106,8 @@ mod taylor {
     mod extended_functions;
     mod extended_generated;
     mod integrator;
+    /// The minimum-work order against Jorba and Zou's, on closed forms and invariants.
+    mod order_rule;
     mod powers;
     mod scenes;
     mod step_rule;

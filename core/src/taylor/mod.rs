@@ -27,7 +27,7 @@ mod tape;
 
 pub use emit::TaylorTokens;
 pub use events::{EVENT_MISMATCH, TaylorEvent};
-pub use integrator::{StepScale, Taylor, TaylorConfig, solve, solve_dense};
+pub use integrator::{OrderRule, StepScale, Taylor, TaylorConfig, solve, solve_dense};
 pub use interpreted::{TaylorError, TaylorTape};
 pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};
 
