@@ -20,8 +20,10 @@
 //! criterion. `scripts/heyoka_ensemble.py` runs heyoka's ensembles on the same problems and
 //! tolerances; docs/performance.md ("Many at once") sets them side by side. Rows
 //! "k×L lanes" step the same runs L at a time in batch lanes (`Ensemble::lanes`) on k
-//! threads: the generated recurrences of `SpinningTop` and of `FreeEquations` on
-//! `Lanes<L>`, bit-identical to their scalar rows.
+//! threads: the generated recurrences of `SpinningTop`, `EulerPoisson` and `FreeEquations`
+//! on `Lanes<L>`, bit-identical to their scalar rows.
+//! `PRECESS_ORDER_RULE=minimum-work` runs every Taylor row under `OrderRule::MinimumWork`
+//! instead of Jorba and Zou's order (docs/performance.md, "The order of least work").
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -38,7 +40,10 @@ use precess_testkit::systems::{FreeBody, SpinningTop};
 
 #[path = "common/peer_problems.rs"]
 mod peer_problems;
+#[path = "common/tolerance.rs"]
+mod tolerance;
 use peer_problems::{EulerPoisson, FreeEquations};
+use tolerance::taylor_config;
 
 const FREE_I: [f64; 3] = [3.0, 5.0, 9.0];
 
@@ -62,7 +67,7 @@ fn heavy_top_reference() -> (f64, f64) {
 fn heavy_top(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> {
     let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
     let y0 = [0.0, THETA0_DEG.to_radians(), psi0, 0.0, 0.0, SPIN];
-    let mut ode = Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))?;
+    let mut ode = Taylor::new(SpinningTop, 0.0, y0, taylor_config(tol))?;
     while ode.t() < t_end {
         ode.step(t_end)?;
     }
@@ -74,7 +79,7 @@ fn heavy_top(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeError> 
 fn heavy_top_start(i: usize, n: usize, tol: f64) -> Result<Taylor<SpinningTop, 6>, OdeError> {
     let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
     let y0 = [0.0, THETA0_DEG.to_radians(), psi0, 0.0, 0.0, SPIN];
-    Taylor::new(SpinningTop, 0.0, y0, TaylorConfig::with_tol(tol, tol))
+    Taylor::new(SpinningTop, 0.0, y0, taylor_config(tol))
 }
 
 /// One row of (a) stepped `L` runs at a time in batch lanes on `threads` threads.
@@ -107,20 +112,52 @@ fn heavy_top_lanes_row<const L: usize>(
     );
 }
 
+/// Run i of (a) in Euler–Poisson form at its start, for the lanes.
+fn heavy_top_ep_start(i: usize, n: usize, tol: f64) -> Result<Taylor<EulerPoisson, 6>, OdeError> {
+    let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
+    let (s, c) = THETA0_DEG.to_radians().sin_cos();
+    let y0 = [0.0, 0.0, SPIN, s * psi0.sin(), s * psi0.cos(), c];
+    Taylor::new(EulerPoisson, 0.0, y0, taylor_config(tol))
+}
+
+/// One row of (a) in Euler–Poisson form, `L` runs at a time in lanes on `threads` threads:
+/// the equations heyoka's batch integrator steps in its lanes.
+fn heavy_top_ep_lanes_row<const L: usize>(
+    n: usize,
+    threads: usize,
+    t_end: f64,
+    cos_end: f64,
+    tol: f64,
+) {
+    let (secs, results) = best_of_3(|| {
+        pool(threads).install(|| {
+            Ensemble::new(0..n).lanes::<L>().integrate(
+                t_end,
+                |i| heavy_top_ep_start(i, n, tol),
+                |_, ode| ode.y()[5],
+            )
+        })
+    });
+    let err = results
+        .outputs()
+        .map(|(_, c)| (c - cos_end).abs())
+        .fold(0.0, f64::max);
+    assert_eq!(results.failures(), 0);
+    println!(
+        "{:<9} {tol:>7.0e} {:<10} {err:>9.2e} {:>10.0}",
+        "top (EP)",
+        format!("{threads}×{L} lanes"),
+        n as f64 / secs
+    );
+}
+
 /// One row of (b) through `FreeEquations`, `L` runs at a time in lanes on `threads` threads.
 fn free_equations_lanes_row<const L: usize>(n: usize, threads: usize, tol: f64) {
     let (secs, results) = best_of_3(|| {
         pool(threads).install(|| {
             Ensemble::new(0..n).lanes::<L>().integrate(
                 200.0,
-                |i| {
-                    Taylor::new(
-                        FreeEquations,
-                        0.0,
-                        free_m0(i, n),
-                        TaylorConfig::with_tol(tol, tol),
-                    )
-                },
+                |i| Taylor::new(FreeEquations, 0.0, free_m0(i, n), taylor_config(tol)),
                 |_, ode| *ode.y(),
             )
         })
@@ -140,7 +177,7 @@ fn heavy_top_ep(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeErro
     let psi0 = std::f64::consts::TAU * i as f64 / n as f64;
     let (s, c) = THETA0_DEG.to_radians().sin_cos();
     let y0 = [0.0, 0.0, SPIN, s * psi0.sin(), s * psi0.cos(), c];
-    let mut ode = Taylor::new(EulerPoisson, 0.0, y0, TaylorConfig::with_tol(tol, tol))?;
+    let mut ode = Taylor::new(EulerPoisson, 0.0, y0, taylor_config(tol))?;
     while ode.t() < t_end {
         ode.step(t_end)?;
     }
@@ -149,7 +186,7 @@ fn heavy_top_ep(i: usize, n: usize, t_end: f64, tol: f64) -> Result<f64, OdeErro
 
 /// Run i of (b) through the equations of `taylor_system!` (`FreeEquations`): m(200).
 fn free_equations(i: usize, n: usize, tol: f64) -> Result<[f64; 3], OdeError> {
-    let cfg = TaylorConfig::with_tol(tol, tol);
+    let cfg = taylor_config(tol);
     let mut ode = Taylor::new(FreeEquations, 0.0, free_m0(i, n), cfg)?;
     while ode.t() < 200.0 {
         ode.step(200.0)?;
@@ -164,7 +201,7 @@ fn free_m0(i: usize, n: usize) -> [f64; 3] {
 
 /// Run i of (b): m(200).
 fn free_body(i: usize, n: usize, tol: f64) -> Result<[f64; 3], OdeError> {
-    let cfg = TaylorConfig::with_tol(tol, tol);
+    let cfg = taylor_config(tol);
     let mut ode = Taylor::new(FreeBody(FREE_I), 0.0, free_m0(i, n), cfg)?;
     while ode.t() < 200.0 {
         ode.step(200.0)?;
@@ -272,6 +309,10 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
                 "top (EP)",
                 n as f64 / secs
             );
+        }
+        for threads in [1, cores] {
+            heavy_top_ep_lanes_row::<4>(n, threads, t_end, cos_end, tol);
+            heavy_top_ep_lanes_row::<8>(n, threads, t_end, cos_end, tol);
         }
         for threads in [1, cores] {
             let (secs, results) = best_of_3(|| {

@@ -7,6 +7,8 @@
 //! `cargo bench -p precess-benches --bench lanes` prints the table (best of 3 passes over
 //! `PRECESS_LANES_RUNS` runs, 1024 unless set, timed by the thread's own processor time;
 //! `PRECESS_LANES_TABLE=0` skips it) and then times the tol 1e-12 passes with criterion.
+//! `PRECESS_ORDER_RULE=minimum-work` runs every Taylor row under `OrderRule::MinimumWork`
+//! instead of Jorba and Zou's order (docs/performance.md, "The order of least work").
 //! Built as is, the lanes run the AVX-512, AVX2 or baseline copy of the batch's loop that
 //! the processor has (`pulp::Arch::dispatch`, docs/lanes.md); the scalar runs are compiled
 //! for the target (SSE2 by default). docs/lanes.md has the numbers and the disassembly (the
@@ -25,7 +27,10 @@ use precess_testkit::systems::SpinningTop;
 
 #[path = "common/peer_problems.rs"]
 mod peer_problems;
+#[path = "common/tolerance.rs"]
+mod tolerance;
 use peer_problems::{EulerPoisson, FreeEquations};
+use tolerance::taylor_config;
 
 const FREE_I: [f64; 3] = [3.0, 5.0, 9.0];
 const THETA0_DEG: f64 = 20.0;
@@ -64,7 +69,7 @@ fn scalar_pass<S: TaylorSystem<N> + Copy, const N: usize>(
     t_end: f64,
     tol: f64,
 ) -> Vec<[f64; N]> {
-    scalar_pass_with(sys, y0, n, t_end, TaylorConfig::with_tol(tol, tol))
+    scalar_pass_with(sys, y0, n, t_end, taylor_config(tol))
 }
 
 /// The scalar runs without the defect check (`TaylorConfig::defect_check`), Jorba and Zou's
@@ -79,7 +84,7 @@ fn unchecked_pass<S: TaylorSystem<N> + Copy, const N: usize>(
 ) -> Vec<[f64; N]> {
     let cfg = TaylorConfig {
         defect_check: false,
-        ..TaylorConfig::with_tol(tol, tol)
+        ..taylor_config(tol)
     };
     scalar_pass_with(sys, y0, n, t_end, cfg)
 }
@@ -108,7 +113,7 @@ fn lane_pass<S: TaylorLanes<N, L> + Copy, const N: usize, const L: usize>(
     t_end: f64,
     tol: f64,
 ) -> Vec<[f64; N]> {
-    let cfg = TaylorConfig::with_tol(tol, tol);
+    let cfg = taylor_config(tol);
     let mut out = Vec::with_capacity(n);
     for start in (0..n).step_by(L) {
         let starts = core::array::from_fn(|l| y0(start + l));
