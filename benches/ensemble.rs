@@ -34,7 +34,7 @@ use precess::ensemble::rayon::{ThreadPool, ThreadPoolBuilder};
 use precess::exact::FreeBodyExact;
 use precess::ode::OdeError;
 use precess::prelude::*;
-use precess::taylor::{Taylor, TaylorConfig};
+use precess::taylor::Taylor;
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::{FreeBody, SpinningTop};
 
