@@ -22,8 +22,9 @@
 //! "k×L lanes" step the same runs L at a time in batch lanes (`Ensemble::lanes`) on k
 //! threads: the generated recurrences of `SpinningTop`, `EulerPoisson` and `FreeEquations`
 //! on `Lanes<L>`, bit-identical to their scalar rows.
-//! `PRECESS_ORDER_RULE=minimum-work` runs every Taylor row under `OrderRule::MinimumWork`
-//! instead of Jorba and Zou's order (docs/performance.md, "The order of least work").
+//! `PRECESS_ORDER_RULE=jorba-zou` runs every Taylor row under `OrderRule::JorbaZou`, heyoka's
+//! rule, instead of the default order of least work (docs/performance.md, "The order of
+//! least work").
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};

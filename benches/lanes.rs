@@ -7,8 +7,9 @@
 //! `cargo bench -p precess-benches --bench lanes` prints the table (best of 3 passes over
 //! `PRECESS_LANES_RUNS` runs, 1024 unless set, timed by the thread's own processor time;
 //! `PRECESS_LANES_TABLE=0` skips it) and then times the tol 1e-12 passes with criterion.
-//! `PRECESS_ORDER_RULE=minimum-work` runs every Taylor row under `OrderRule::MinimumWork`
-//! instead of Jorba and Zou's order (docs/performance.md, "The order of least work").
+//! `PRECESS_ORDER_RULE=jorba-zou` runs every Taylor row under `OrderRule::JorbaZou`, heyoka's
+//! rule, instead of the default order of least work (docs/performance.md, "The order of
+//! least work").
 //! Built as is, the lanes run the AVX-512, AVX2 or baseline copy of the batch's loop that
 //! the processor has (`pulp::Arch::dispatch`, docs/lanes.md); the scalar runs are compiled
 //! for the target (SSE2 by default). docs/lanes.md has the numbers and the disassembly (the

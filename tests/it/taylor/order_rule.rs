@@ -72,8 +72,12 @@ fn max_diff<const N: usize>(a: &[f64; N], b: &[f64; N]) -> f64 {
 }
 
 #[test]
-fn jorba_zou_stays_the_default() {
-    assert_eq!(TaylorConfig::default().order_rule, OrderRule::JorbaZou);
+fn minimum_work_is_the_default() {
+    assert_eq!(TaylorConfig::default().order_rule, OrderRule::MinimumWork);
+    assert_eq!(
+        TaylorConfig::with_tol(1e-10, 1e-10).order_rule,
+        OrderRule::MinimumWork
+    );
 }
 
 #[test]

@@ -178,7 +178,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         }
         let rule = |eps: f64| {
             let p = cfg.order_for(eps, system_max, N);
-            (p, TaylorConfig::step_factor(eps, p, cfg.order_rule))
+            (
+                p,
+                TaylorConfig::step_factor(eps, p, cfg.effective_order_rule()),
+            )
         };
         let rules = [rule(cfg.rtol), rule(cfg.atol)];
         let top_order = cfg.max_order.min(system_max);
@@ -342,7 +345,8 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             // Orders 1 … p all zero say nothing of the step (x' = tᵐ y at t = 0 for m ≥ p):
             // ask the system for every order it allows before taking the jet as constant.
             rule.order = self.top_order;
-            rule.factor = TaylorConfig::step_factor(rule.eps, rule.order, self.cfg.order_rule);
+            rule.factor =
+                TaylorConfig::step_factor(rule.eps, rule.order, self.cfg.effective_order_rule());
             self.jet(rule.order)?;
         }
         // No scan of every coefficient for finiteness: a NaN or ∞ in c_1 … c_p reaches the

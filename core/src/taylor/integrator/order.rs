@@ -5,8 +5,7 @@
 //! estimated from the last rows, with κ(p) = ε^(1/(p−1))·e^(−0.7/(p−1)), which keeps the
 //! estimated truncation error at ε. If a step's work were all in the jet's Cauchy products,
 //! W(p) ∝ p², the work per unit time W(p)/κ(p) would be least near p = 1 − ½ ln ε, their
-//! order, where κ = e⁻²·e^(−0.7/(p−1)); heyoka and TIDES use it, and so does precess by
-//! default ([`OrderRule::JorbaZou`]).
+//! order, where κ = e⁻²·e^(−0.7/(p−1)); heyoka and TIDES use it ([`OrderRule::JorbaZou`]).
 //!
 //! A step costs more than its products: every order writes N rows and the step's Horner sum,
 //! the radius's norms and the defect check's chains are linear in p, and the radius's
@@ -15,7 +14,7 @@
 //! Euler–Poisson form (N = 6, eight products) at the orders 12 … 24, a step's instructions
 //! fit a(p² + b p + c) with b = 11.6 and 7.6, c = 111 and 66. [`OrderRule::MinimumWork`]
 //! takes W(p) = p² + 10 p + 360/N and the order p ≥ the Jorba–Zou order, up to the caps,
-//! that minimises W(p)/κ(p), with the step κ(p)·ρ. That is about 1.5 times the Jorba–Zou
+//! that minimises W(p)/κ(p), with the step κ(p)·ρ; it is precess's default. That is about 1.5 times the Jorba–Zou
 //! order: 18 on the heavy top and 19 on B5 at ε = 10⁻¹⁰, where Jorba–Zou gives 13.
 //!
 //! The model leaves out that ρ itself grows with p where the components are measured at
@@ -28,11 +27,11 @@
 pub enum OrderRule {
     /// p = ⌈1 − ½ ln ε⌉ and the step e⁻²·e^(−0.7/(p−1))·ρ (Jorba and Zou, as heyoka and
     /// TIDES run it).
-    #[default]
     JorbaZou,
     /// The order of least work per unit time under the model W(p) = p² + 10 p + 360/N of a
     /// step's cost, at least the Jorba–Zou order, with the step ε^(1/(p−1))·e^(−0.7/(p−1))·ρ
     /// that keeps the estimated truncation error at ε at that order.
+    #[default]
     MinimumWork,
 }
 
