@@ -23,6 +23,7 @@ use super::scene::RollingScene;
 use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{basis_axis, unit_axis};
+use crate::mechanism::routes::kane::MassEntries;
 use crate::mechanism::scene::MechanismScene;
 use crate::rigid::{Rim, Surface, SurfaceError};
 use crate::sym::mat3::{cross, dot, mat_vec};
@@ -205,8 +206,9 @@ impl MechanismScene {
         let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
         let rate_terms = constraints.rate_terms_shared(arena, &coords);
         // Kane's method: the Lagrangian route's expansion of the whole tree's momenta took
-        // seconds on the bicycle (see `kane.rs`).
-        let equations = self.kane_from(arena, &lag, &kin);
+        // seconds on the bicycle (see `kane.rs`). M is left unexpanded: `RollingDynamics`
+        // solves Maggi's equations numerically and reads no structural zero of M.
+        let equations = self.kane_from(arena, &lag, &kin, MassEntries::Unexpanded);
         let power = lag.power(arena);
         Ok(RollingDerivation {
             equations,

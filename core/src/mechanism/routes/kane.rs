@@ -12,10 +12,13 @@
 //!
 //! with Q the non-conservative generalised forces and V the potential of the Lagrangian
 //! route (gravity and springs), so both routes describe one mechanism. The partial velocities
-//! are expanded (they are short), M's entries too (so structural zeros are exact); f stays
-//! in its shared, unexpanded form, which lowers smaller. On the Whipple bicycle (eight
-//! coordinates) this takes a fraction of the Lagrangian route's time, which expands the
-//! momenta of the whole tree and differentiates them again.
+//! are expanded (they are short); f stays in its shared, unexpanded form, which lowers
+//! smaller. M's entries are expanded or not as the caller asks ([`MassEntries`]): expanded,
+//! an entry that cancels is exactly zero, which a symbolic solve that splits M into its
+//! coupled blocks needs; unexpanded, they cost a fraction of that and lower smaller, which
+//! is all a numerical solve of M needs. On the Whipple bicycle (eight coordinates) this takes
+//! a fraction of the Lagrangian route's time, which expands the momenta of the whole tree and
+//! differentiates them again.
 
 use super::lagrangian::Lagrangian;
 use crate::lagrange::EquationsOfMotion;
@@ -26,6 +29,24 @@ use crate::sym::mat3::{cross, dot, mat_vec};
 use crate::sym::{Arena, ExprId, SymbolId};
 
 type Vec3 = [ExprId; 3];
+
+/// The form in which Kane's route leaves the mass matrix's entries
+/// M_ij = Σ_b m_b v_b,i · v_b,j + ω_b,iᵀ I_b ω_b,j.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum MassEntries {
+    /// Expanded to sums of distinct monomials, so that an entry whose terms cancel is the
+    /// arena's zero: the block adjugate solve (`EquationsOfMotion::solve`) splits M into the
+    /// connected blocks of its non-zero pattern and refuses a block whose determinant is
+    /// identically zero, and code generated from M skips its zero entries. The expansion is
+    /// the costly part of the route on a large tree (the bicycle's 36 entries reach 609
+    /// terms each).
+    Expanded,
+    /// The sums over the bodies of the products of the (expanded) partial velocities, left
+    /// unexpanded: for a caller that solves M numerically at each state (Maggi's equations
+    /// of a rolling mechanism), which needs no structural zero. They share their factors
+    /// and lower to fewer operations than the expanded entries.
+    Unexpanded,
+}
 
 fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> {
     exprs.iter().map(|&e| arena.as_symbol(e)).collect()
@@ -77,15 +98,17 @@ impl MechanismScene {
     /// As [`MechanismScene::validate`].
     pub fn kane_equations(&self, arena: &mut Arena) -> Result<EquationsOfMotion, MechanismError> {
         let (lag, kin) = self.lagrangian(arena)?;
-        Ok(self.kane_from(arena, &lag, &kin))
+        Ok(self.kane_from(arena, &lag, &kin, MassEntries::Expanded))
     }
 
-    /// [`MechanismScene::kane_equations`] from the Lagrangian's pieces and the kinematics.
+    /// [`MechanismScene::kane_equations`] from the Lagrangian's pieces and the kinematics,
+    /// M's entries in the form `entries` asks for.
     pub(crate) fn kane_from(
         &self,
         arena: &mut Arena,
         lag: &Lagrangian,
         kin: &[BodyKinematics],
+        entries: MassEntries,
     ) -> EquationsOfMotion {
         let coords = &lag.coords;
         let n = coords.len();
@@ -129,9 +152,12 @@ impl MechanismScene {
                 inertial[i].push(arena.add(lin, rot));
             }
         }
-        // Only the upper triangle was summed; expand it and mirror it.
+        // Only the upper triangle was summed; expand it if asked, and mirror it.
         for (i, j) in (0..n).flat_map(|i| (i..n).map(move |j| (i, j))) {
-            let e = arena.expand(mass[i][j]);
+            let e = match entries {
+                MassEntries::Expanded => arena.expand(mass[i][j]),
+                MassEntries::Unexpanded => mass[i][j],
+            };
             mass[i][j] = e;
             mass[j][i] = e;
         }
