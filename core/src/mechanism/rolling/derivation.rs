@@ -23,7 +23,7 @@ use super::scene::RollingScene;
 use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{basis_axis, unit_axis};
-use crate::mechanism::routes::kane::MassEntries;
+use crate::mechanism::routes::kane::{MassEntries, scalar_rate_at_rest, symbols};
 use crate::mechanism::scene::MechanismScene;
 use crate::rigid::{Rim, Surface, SurfaceError};
 use crate::sym::mat3::{cross, dot, mat_vec};
@@ -39,7 +39,8 @@ pub struct RollingDerivation {
     /// The wheels' constraint rows A q̇ = 0 (per wheel: the horizontal rows, then the
     /// height row where there is one).
     pub constraints: Constraints,
-    /// Ȧq̇, one per row (unexpanded: [`Constraints::rate_terms_shared`]).
+    /// Ȧq̇, one per row, unexpanded: the rate at q̈ = 0 of each row's value (the contact
+    /// point's horizontal velocity, the height's rate), equal to [`Constraints::rate_terms_shared`].
     pub rate_terms: Vec<ExprId>,
     /// The free speeds' coordinates, in the declared order.
     pub independent: Vec<usize>,
@@ -97,6 +98,9 @@ impl MechanismScene {
         let mut contact_points = Vec::new();
         let mut contact_velocities = Vec::new();
         let mut tilts = Vec::new();
+        // Each row's value A_r q̇ + b_r in a shared form: the horizontal velocity of the
+        // contact point it was read from, or the height's rate.
+        let mut row_values = Vec::new();
         for wheel in &rolling.wheels {
             let Some(k) = kin.get(wheel.body) else {
                 return Err(MechanismError::UnknownWheelBody {
@@ -147,11 +151,10 @@ impl MechanismScene {
             let from_center = [0, 1, 2].map(|i| arena.sub(hub[i], k.center[i]));
             let spin = cross(arena, &omega, &from_center);
             let v_hub = [0, 1, 2].map(|i| arena.add(k.center_velocity[i], spin[i]));
+            // Left in its shared form: each row's coefficients are expanded one by one, and
+            // Ȧq̇ is read from it (below), never from the expanded coefficients.
             let turn = cross(arena, &omega, &arm);
-            let velocity = [0, 1, 2].map(|i| {
-                let t = arena.add(v_hub[i], turn[i]);
-                arena.expand(t)
-            });
+            let velocity = [0, 1, 2].map(|i| arena.add(v_hub[i], turn[i]));
             for &h in &horizontal {
                 let row: Vec<ExprId> = coords
                     .rates
@@ -169,11 +172,13 @@ impl MechanismScene {
                 }
                 let zero = arena.zero();
                 constraints.nonholonomic(arena, &coords, &row, zero)?;
+                row_values.push(velocity[h]);
             }
             let height = dot(arena, &up, &point);
             let height = arena.expand(height);
             if height != arena.zero() {
                 constraints.holonomic(arena, &coords, height)?;
+                row_values.push(arena.dt(height));
             }
             contact_points.push(point);
             contact_velocities.push(velocity);
@@ -204,7 +209,15 @@ impl MechanismScene {
             });
         }
         let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
-        let rate_terms = constraints.rate_terms_shared(arena, &coords);
+        // Ȧq̇ row by row as the rate of the row's value at q̈ = 0 (`scalar_rate_at_rest`):
+        // the values of `Constraints::rate_terms_shared`, whose derivatives of each expanded
+        // coefficient cost several times more.
+        let q = symbols(arena, &coords.q);
+        let time = arena.time_symbol();
+        let rate_terms = row_values
+            .iter()
+            .map(|&c| scalar_rate_at_rest(arena, c, &q, &coords.rates, time))
+            .collect();
         // Kane's method: the Lagrangian route's expansion of the whole tree's momenta took
         // seconds on the bicycle (see `kane.rs`). M is left unexpanded: `RollingDynamics`
         // solves Maggi's equations numerically and reads no structural zero of M.

@@ -48,7 +48,7 @@ pub(crate) enum MassEntries {
     Unexpanded,
 }
 
-fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> {
+pub(crate) fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> {
     exprs.iter().map(|&e| arena.as_symbol(e)).collect()
 }
 
@@ -63,7 +63,31 @@ fn partial(arena: &mut Arena, v: &Vec3, s: Option<SymbolId>) -> Vec3 {
     }
 }
 
-/// Σ_j ∂v/∂q_j q̇_j (+ ∂v/∂t): the rate of v at q̈ = 0.
+/// Σ_j ∂e/∂q_j q̇_j (+ ∂e/∂t): the rate of e(q, q̇, t) at q̈ = 0, unexpanded. For e linear
+/// in q̇, e = a(q, t)·q̇ + b(q, t), this is ȧ·q̇ + ḃ.
+pub(crate) fn scalar_rate_at_rest(
+    arena: &mut Arena,
+    e: ExprId,
+    q: &[Option<SymbolId>],
+    rates: &[ExprId],
+    time: Option<SymbolId>,
+) -> ExprId {
+    let mut terms: Vec<ExprId> = q
+        .iter()
+        .zip(rates)
+        .filter_map(|(&s, &r)| {
+            let s = s?;
+            let d = arena.diff(e, s);
+            Some(arena.mul(d, r))
+        })
+        .collect();
+    if let Some(t) = time {
+        terms.push(arena.diff(e, t));
+    }
+    arena.sum(&terms)
+}
+
+/// [`scalar_rate_at_rest`] of each component: Σ_j ∂v/∂q_j q̇_j (+ ∂v/∂t).
 fn rate_at_rest(
     arena: &mut Arena,
     v: &Vec3,
@@ -71,21 +95,7 @@ fn rate_at_rest(
     rates: &[ExprId],
     time: Option<SymbolId>,
 ) -> Vec3 {
-    [0, 1, 2].map(|k| {
-        let mut terms: Vec<ExprId> = q
-            .iter()
-            .zip(rates)
-            .filter_map(|(&s, &r)| {
-                let s = s?;
-                let d = arena.diff(v[k], s);
-                Some(arena.mul(d, r))
-            })
-            .collect();
-        if let Some(t) = time {
-            terms.push(arena.diff(v[k], t));
-        }
-        arena.sum(&terms)
-    })
+    [0, 1, 2].map(|k| scalar_rate_at_rest(arena, v[k], q, rates, time))
 }
 
 impl MechanismScene {
