@@ -7,10 +7,16 @@
 //!
 //! - two nonholonomic rows: the horizontal components of v_P are zero (no slip), each row
 //!   the coefficients ∂v_P/∂q̇;
-//! - one holonomic row: up·P = 0 (the wheel touches the floor), differentiated by the
-//!   engine, unless up·P is identically zero, which happens when the joints already hold
-//!   the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is its
-//!   contact point). Then the vertical component of v_P vanishes with it.
+//! - one holonomic row: up·P = 0 (the wheel touches the floor), whose rate is up·v_P (P
+//!   slides on the body along the rim's tangent at P, which is horizontal), so its row is
+//!   ∂(up·v_P)/∂q̇; none when up·P is identically zero, which happens when the joints already
+//!   hold the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is
+//!   its contact point). Then the vertical component of v_P vanishes with it.
+//!
+//! v_P, the rows and Ȧq̇ (the rate of each row's value A_r q̇ at q̈ = 0) stay in their
+//! shared, unexpanded forms, with their zeros exact ([`Arena::is_zero`]): they are only
+//! evaluated, and expanding them multiplies out the rotations of the whole chain above
+//! each wheel.
 //!
 //! The contact point is the shared support map's ([`Surface::support_along`], the geometry of
 //! a body on a table): for a disk, hub + r d/|d| with d = −up + (up·n) n, n the axle.
@@ -151,8 +157,10 @@ impl MechanismScene {
             let from_center = [0, 1, 2].map(|i| arena.sub(hub[i], k.center[i]));
             let spin = cross(arena, &omega, &from_center);
             let v_hub = [0, 1, 2].map(|i| arena.add(k.center_velocity[i], spin[i]));
-            // Left in its shared form: each row's coefficients are expanded one by one, and
-            // Ȧq̇ is read from it (below), never from the expanded coefficients.
+            // Left in its shared form, and so are the rows' coefficients ∂v_P/∂q̇ and Ȧq̇
+            // (read from it below): expanding them multiplies out the rotations of the
+            // whole chain above the wheel, for values that are only evaluated. Their zeros
+            // stay exact (`Constraints::nonholonomic_shared`).
             let turn = cross(arena, &omega, &arm);
             let velocity = [0, 1, 2].map(|i| arena.add(v_hub[i], turn[i]));
             for &h in &horizontal {
@@ -160,25 +168,25 @@ impl MechanismScene {
                     .rates
                     .iter()
                     .map(|&r| match arena.as_symbol(r) {
-                        Some(s) => {
-                            let d = arena.diff(velocity[h], s);
-                            arena.expand(d)
-                        }
+                        Some(s) => arena.diff(velocity[h], s),
                         None => arena.zero(),
                     })
                     .collect();
-                if row.iter().all(|&e| e == arena.zero()) {
-                    continue;
-                }
                 let zero = arena.zero();
-                constraints.nonholonomic(arena, &coords, &row, zero)?;
-                row_values.push(velocity[h]);
+                if constraints.nonholonomic_shared(arena, &coords, &row, zero)? {
+                    row_values.push(velocity[h]);
+                }
             }
             let height = dot(arena, &up, &point);
             let height = arena.expand(height);
             if height != arena.zero() {
-                constraints.holonomic(arena, &coords, height)?;
-                row_values.push(arena.dt(height));
+                // d(up·P)/dt = up·v_P: relative to the body, P moves along the rim's tangent at
+                // P, which is horizontal there (on a ball it does not move), so the height
+                // rises at the vertical velocity of the body's point at P, whose derivatives
+                // share those of the horizontal rows.
+                let rise = dot(arena, &up, &velocity);
+                constraints.holonomic_shared(arena, &coords, height, rise)?;
+                row_values.push(rise);
             }
             contact_points.push(point);
             contact_velocities.push(velocity);

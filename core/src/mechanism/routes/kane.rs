@@ -12,7 +12,7 @@
 //!
 //! with Q the non-conservative generalised forces and V the potential of the Lagrangian
 //! route (gravity and springs), so both routes describe one mechanism. The partial velocities
-//! are expanded (they are short); f stays in its shared, unexpanded form, which lowers
+//! are expanded with M (they are short); f stays in its shared, unexpanded form, which lowers
 //! smaller. M's entries are expanded or not as the caller asks ([`MassEntries`]): expanded,
 //! an entry that cancels is exactly zero, which a symbolic solve that splits M into its
 //! coupled blocks needs; unexpanded, they cost a fraction of that and lower smaller, which
@@ -41,10 +41,11 @@ pub(crate) enum MassEntries {
     /// the costly part of the route on a large tree (the bicycle's 36 entries reach 609
     /// terms each).
     Expanded,
-    /// The sums over the bodies of the products of the (expanded) partial velocities, left
-    /// unexpanded: for a caller that solves M numerically at each state (Maggi's equations
-    /// of a rolling mechanism), which needs no structural zero. They share their factors
-    /// and lower to fewer operations than the expanded entries.
+    /// The sums over the bodies of the products of the partial velocities, all left
+    /// unexpanded (the partial velocities too): for a caller that solves M numerically at
+    /// each state (Maggi's equations of a rolling mechanism), which needs no structural
+    /// zero. They share their factors and lower to fewer operations than the expanded
+    /// entries.
     Unexpanded,
 }
 
@@ -52,12 +53,15 @@ pub(crate) fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> 
     exprs.iter().map(|&e| arena.as_symbol(e)).collect()
 }
 
-/// ∂v/∂s for each of the three components, expanded.
-fn partial(arena: &mut Arena, v: &Vec3, s: Option<SymbolId>) -> Vec3 {
+/// ∂v/∂s for each of the three components, expanded with M's entries.
+fn partial(arena: &mut Arena, v: &Vec3, s: Option<SymbolId>, entries: MassEntries) -> Vec3 {
     match s {
         Some(s) => v.map(|e| {
             let d = arena.diff(e, s);
-            arena.expand(d)
+            match entries {
+                MassEntries::Expanded => arena.expand(d),
+                MassEntries::Unexpanded => d,
+            }
         }),
         None => [arena.zero(); 3],
     }
@@ -130,9 +134,12 @@ impl MechanismScene {
         for (body, k) in self.bodies.iter().zip(kin) {
             let pv: Vec<Vec3> = qd
                 .iter()
-                .map(|&s| partial(arena, &k.center_velocity, s))
+                .map(|&s| partial(arena, &k.center_velocity, s, entries))
                 .collect();
-            let pw: Vec<Vec3> = qd.iter().map(|&s| partial(arena, &k.omega, s)).collect();
+            let pw: Vec<Vec3> = qd
+                .iter()
+                .map(|&s| partial(arena, &k.omega, s, entries))
+                .collect();
             let acceleration = rate_at_rest(arena, &k.center_velocity, &q, &coords.rates, time);
             let angular = rate_at_rest(arena, &k.omega, &q, &coords.rates, time);
             let i_alpha = mat_vec(arena, &body.inertia, &angular);
