@@ -3,7 +3,8 @@
 //! seven-body tree, the five rolling rows A, Ȧq̇, the heights and tilts, all exactly), and
 //! the same followed by `RollingModel::new` (the lowering to straight-line programs). SymPy's
 //! `KanesMethod` on the same bicycle is `scripts/sympy_bicycle.py`; docs/performance.md
-//! compares the two. The operation counts of the lowered programs are printed first.
+//! compares the two. The operation counts of the lowered programs are printed first;
+//! `PRECESS_BICYCLE_ONCE=1` runs one derivation alone (for `valgrind --tool=callgrind`).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use precess::mechanism::rolling::RollingModel;
@@ -56,6 +57,17 @@ fn lowered() -> RollingModel<8, 5, 3> {
 }
 
 fn bicycle(c: &mut Criterion) {
+    // PRECESS_BICYCLE_ONCE=1 runs one derivation (the scene built, derived and dropped) and
+    // nothing else, for callgrind's instruction counts.
+    if std::env::var("PRECESS_BICYCLE_ONCE").as_deref() == Ok("1") {
+        let mut a = Arena::new();
+        let (scene, rolling) = mechanism_scene(&mut a);
+        let d = scene
+            .derive_rolling(&mut a, &rolling)
+            .expect("the bicycle derives");
+        println!("bicycle derived: {} rows", d.rows());
+        return;
+    }
     println!("bicycle lowered: {:?}", lowered().op_counts());
     let mut group = c.benchmark_group("bicycle_derive");
     group.sample_size(20);

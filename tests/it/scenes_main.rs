@@ -25,6 +25,7 @@ mod constraints {
     mod rheonomic;
     mod rolling_jacobian;
     mod rolling_macro;
+    mod shared_rows;
 }
 /// The free-body scene.
 mod free {

@@ -29,9 +29,10 @@ use crate::sym::{Arena, ExprId, SymbolId, SymbolKind};
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Constraints {
-    /// `A_rj`, one row per constraint, one entry per coordinate (expanded).
+    /// `A_rj`, one row per constraint, one entry per coordinate (expanded, except the rows
+    /// added by [`Constraints::nonholonomic_shared`] and [`Constraints::holonomic_shared`]).
     pub coefficients: Vec<Vec<ExprId>>,
-    /// `b_r` (expanded).
+    /// `b_r` (expanded, except for the rows added by the `_shared` constructors).
     pub offsets: Vec<ExprId>,
     /// `φ_r` for a holonomic row, `None` for a nonholonomic one.
     pub positions: Vec<Option<ExprId>>,
@@ -86,6 +87,98 @@ impl Constraints {
         self.coefficients.push(row);
         self.offsets.push(arena.expand(offset));
         self.positions.push(None);
+        Ok(self)
+    }
+
+    /// Adds the velocity constraint `Σ_j row_j q̇_j + offset = 0` with its entries as given,
+    /// not expanded: for rows that are only evaluated, lowered or differentiated (the rolling
+    /// rows of a mechanism, solved numerically), where expanding products of long shared
+    /// factors (a wheel's contact velocity deep in a tree) costs more than all the rest and
+    /// lowers larger. An entry that is identically zero is taken as the arena's zero
+    /// ([`Arena::is_zero`], exact), so that the zeros of A are still structural, and a row
+    /// whose entries and offset all vanish is no constraint: it is not added, and the
+    /// answer is `false`.
+    ///
+    /// # Errors
+    /// As [`Constraints::nonholonomic`]; [`LagrangeError::Sym`] if an entry that vanishes at
+    /// every point tried is too large to expand.
+    pub fn nonholonomic_shared(
+        &mut self,
+        arena: &mut Arena,
+        coords: &Coordinates,
+        row: &[ExprId],
+        offset: ExprId,
+    ) -> Result<bool, LagrangeError> {
+        let r = self.len();
+        if row.len() != coords.len() {
+            return Err(LagrangeError::ConstraintLength {
+                row: r,
+                got: row.len(),
+                expected: coords.len(),
+            });
+        }
+        let mut exact = Vec::with_capacity(row.len() + 1);
+        for &e in row.iter().chain([&offset]) {
+            reject_rates(arena, r, e)?;
+            exact.push(if arena.is_zero(e)? { arena.zero() } else { e });
+        }
+        if exact.iter().all(|&e| e == arena.zero()) {
+            return Ok(false);
+        }
+        let offset = exact.pop().unwrap_or_else(|| arena.zero());
+        self.coefficients.push(exact);
+        self.offsets.push(offset);
+        self.positions.push(None);
+        Ok(true)
+    }
+
+    /// Adds the holonomic constraint `φ(q, t) = 0` from its rate given in a shared form:
+    /// `rate` is any expression equal to dφ/dt = Σ_j ∂φ/∂q_j q̇_j + ∂φ/∂t (linear in q̇), and
+    /// the row is read from it, A_j = ∂rate/∂q̇_j, with the offset ∂φ/∂t, neither expanded
+    /// (as in [`Constraints::nonholonomic_shared`], identically zero entries are made the
+    /// arena's zero, exactly). For a caller that knows a shorter form of the rate than the
+    /// derivatives of φ (a wheel's height on the floor rises at the vertical velocity of the
+    /// wheel's material point at the contact) and only evaluates the row. φ is kept, as
+    /// given, for the run-time projection.
+    ///
+    /// # Errors
+    /// [`LagrangeError::ConstraintNotLinear`] if φ holds a rate or an acceleration;
+    /// [`LagrangeError::Sym`] if an entry that vanishes at every point tried is too large to
+    /// expand.
+    pub fn holonomic_shared(
+        &mut self,
+        arena: &mut Arena,
+        coords: &Coordinates,
+        phi: ExprId,
+        rate: ExprId,
+    ) -> Result<&mut Self, LagrangeError> {
+        let r = self.len();
+        reject_rates(arena, r, phi)?;
+        // A coordinate φ does not hold has a zero entry, known without testing it (which
+        // expands what vanishes); through an abbreviation φ may hold any of them.
+        let held = arena.free_symbols(phi);
+        let opaque = held
+            .iter()
+            .any(|&s| arena.symbol(s).kind == SymbolKind::Abbreviation);
+        let mut row = Vec::with_capacity(coords.len());
+        for (&q, &qd) in coords.q.iter().zip(&coords.rates) {
+            if !opaque && !held.contains(&symbol(arena, q)) {
+                row.push(arena.zero());
+                continue;
+            }
+            let d = arena.diff(rate, symbol(arena, qd));
+            row.push(if arena.is_zero(d)? { arena.zero() } else { d });
+        }
+        let offset = match arena.time_symbol() {
+            Some(t) => {
+                let d = arena.diff(phi, t);
+                if arena.is_zero(d)? { arena.zero() } else { d }
+            }
+            None => arena.zero(),
+        };
+        self.coefficients.push(row);
+        self.offsets.push(offset);
+        self.positions.push(Some(phi));
         Ok(self)
     }
 

@@ -6,6 +6,7 @@ use super::scene::{LoopClosure, LoopSide};
 use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{BodyKinematics, unit_axis};
+use crate::mechanism::routes::kane::MassEntries;
 use crate::mechanism::scene::{JointKind, MechanismScene, Parent};
 use crate::sym::mat3::{dot, mat_vec};
 use crate::sym::{Arena, ExprId};
@@ -81,7 +82,7 @@ impl MechanismScene {
             });
         }
         let rate_terms = constraints.rate_terms_shared(arena, &coords);
-        let equations = self.kane_from(arena, &lag, &kin);
+        let equations = self.kane_from(arena, &lag, &kin, MassEntries::Expanded);
         let power = lag.power(arena);
         Ok(LoopDerivation {
             equations,

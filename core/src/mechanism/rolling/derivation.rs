@@ -7,10 +7,16 @@
 //!
 //! - two nonholonomic rows: the horizontal components of v_P are zero (no slip), each row
 //!   the coefficients ∂v_P/∂q̇;
-//! - one holonomic row: up·P = 0 (the wheel touches the floor), differentiated by the
-//!   engine, unless up·P is identically zero, which happens when the joints already hold
-//!   the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is its
-//!   contact point). Then the vertical component of v_P vanishes with it.
+//! - one holonomic row: up·P = 0 (the wheel touches the floor), whose rate is up·v_P (P
+//!   slides on the body along the rim's tangent at P, which is horizontal), so its row is
+//!   ∂(up·v_P)/∂q̇; none when up·P is identically zero, which happens when the joints already
+//!   hold the wheel on the floor (the bicycle's rear wheel hangs from a frame whose origin is
+//!   its contact point). Then the vertical component of v_P vanishes with it.
+//!
+//! v_P, the rows and Ȧq̇ (the rate of each row's value A_r q̇ at q̈ = 0) stay in their
+//! shared, unexpanded forms, with their zeros exact ([`Arena::is_zero`]): they are only
+//! evaluated, and expanding them multiplies out the rotations of the whole chain above
+//! each wheel.
 //!
 //! The contact point is the shared support map's ([`Surface::support_along`], the geometry of
 //! a body on a table): for a disk, hub + r d/|d| with d = −up + (up·n) n, n the axle.
@@ -23,6 +29,7 @@ use super::scene::RollingScene;
 use crate::lagrange::{Constraints, Coordinates, EquationsOfMotion};
 use crate::mechanism::error::MechanismError;
 use crate::mechanism::kinematics::{basis_axis, unit_axis};
+use crate::mechanism::routes::kane::{MassEntries, scalar_rate_at_rest, symbols};
 use crate::mechanism::scene::MechanismScene;
 use crate::rigid::{Rim, Surface, SurfaceError};
 use crate::sym::mat3::{cross, dot, mat_vec};
@@ -38,7 +45,8 @@ pub struct RollingDerivation {
     /// The wheels' constraint rows A q̇ = 0 (per wheel: the horizontal rows, then the
     /// height row where there is one).
     pub constraints: Constraints,
-    /// Ȧq̇, one per row (unexpanded: [`Constraints::rate_terms_shared`]).
+    /// Ȧq̇, one per row, unexpanded: the rate at q̈ = 0 of each row's value (the contact
+    /// point's horizontal velocity, the height's rate), equal to [`Constraints::rate_terms_shared`].
     pub rate_terms: Vec<ExprId>,
     /// The free speeds' coordinates, in the declared order.
     pub independent: Vec<usize>,
@@ -96,6 +104,9 @@ impl MechanismScene {
         let mut contact_points = Vec::new();
         let mut contact_velocities = Vec::new();
         let mut tilts = Vec::new();
+        // Each row's value A_r q̇ + b_r in a shared form: the horizontal velocity of the
+        // contact point it was read from, or the height's rate.
+        let mut row_values = Vec::new();
         for wheel in &rolling.wheels {
             let Some(k) = kin.get(wheel.body) else {
                 return Err(MechanismError::UnknownWheelBody {
@@ -146,33 +157,36 @@ impl MechanismScene {
             let from_center = [0, 1, 2].map(|i| arena.sub(hub[i], k.center[i]));
             let spin = cross(arena, &omega, &from_center);
             let v_hub = [0, 1, 2].map(|i| arena.add(k.center_velocity[i], spin[i]));
+            // Left in its shared form, and so are the rows' coefficients ∂v_P/∂q̇ and Ȧq̇
+            // (read from it below): expanding them multiplies out the rotations of the
+            // whole chain above the wheel, for values that are only evaluated. Their zeros
+            // stay exact (`Constraints::nonholonomic_shared`).
             let turn = cross(arena, &omega, &arm);
-            let velocity = [0, 1, 2].map(|i| {
-                let t = arena.add(v_hub[i], turn[i]);
-                arena.expand(t)
-            });
+            let velocity = [0, 1, 2].map(|i| arena.add(v_hub[i], turn[i]));
             for &h in &horizontal {
                 let row: Vec<ExprId> = coords
                     .rates
                     .iter()
                     .map(|&r| match arena.as_symbol(r) {
-                        Some(s) => {
-                            let d = arena.diff(velocity[h], s);
-                            arena.expand(d)
-                        }
+                        Some(s) => arena.diff(velocity[h], s),
                         None => arena.zero(),
                     })
                     .collect();
-                if row.iter().all(|&e| e == arena.zero()) {
-                    continue;
-                }
                 let zero = arena.zero();
-                constraints.nonholonomic(arena, &coords, &row, zero)?;
+                if constraints.nonholonomic_shared(arena, &coords, &row, zero)? {
+                    row_values.push(velocity[h]);
+                }
             }
             let height = dot(arena, &up, &point);
             let height = arena.expand(height);
             if height != arena.zero() {
-                constraints.holonomic(arena, &coords, height)?;
+                // d(up·P)/dt = up·v_P: relative to the body, P moves along the rim's tangent at
+                // P, which is horizontal there (on a ball it does not move), so the height
+                // rises at the vertical velocity of the body's point at P, whose derivatives
+                // share those of the horizontal rows.
+                let rise = dot(arena, &up, &velocity);
+                constraints.holonomic_shared(arena, &coords, height, rise)?;
+                row_values.push(rise);
             }
             contact_points.push(point);
             contact_velocities.push(velocity);
@@ -203,10 +217,19 @@ impl MechanismScene {
             });
         }
         let dependent: Vec<usize> = (0..n).filter(|i| !independent.contains(i)).collect();
-        let rate_terms = constraints.rate_terms_shared(arena, &coords);
+        // Ȧq̇ row by row as the rate of the row's value at q̈ = 0 (`scalar_rate_at_rest`):
+        // the values of `Constraints::rate_terms_shared`, whose derivatives of each expanded
+        // coefficient cost several times more.
+        let q = symbols(arena, &coords.q);
+        let time = arena.time_symbol();
+        let rate_terms = row_values
+            .iter()
+            .map(|&c| scalar_rate_at_rest(arena, c, &q, &coords.rates, time))
+            .collect();
         // Kane's method: the Lagrangian route's expansion of the whole tree's momenta took
-        // seconds on the bicycle (see `kane.rs`).
-        let equations = self.kane_from(arena, &lag, &kin);
+        // seconds on the bicycle (see `kane.rs`). M is left unexpanded: `RollingDynamics`
+        // solves Maggi's equations numerically and reads no structural zero of M.
+        let equations = self.kane_from(arena, &lag, &kin, MassEntries::Unexpanded);
         let power = lag.power(arena);
         Ok(RollingDerivation {
             equations,

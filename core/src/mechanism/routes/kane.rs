@@ -12,10 +12,13 @@
 //!
 //! with Q the non-conservative generalised forces and V the potential of the Lagrangian
 //! route (gravity and springs), so both routes describe one mechanism. The partial velocities
-//! are expanded (they are short), M's entries too (so structural zeros are exact); f stays
-//! in its shared, unexpanded form, which lowers smaller. On the Whipple bicycle (eight
-//! coordinates) this takes a fraction of the Lagrangian route's time, which expands the
-//! momenta of the whole tree and differentiates them again.
+//! are expanded with M (they are short); f stays in its shared, unexpanded form, which lowers
+//! smaller. M's entries are expanded or not as the caller asks ([`MassEntries`]): expanded,
+//! an entry that cancels is exactly zero, which a symbolic solve that splits M into its
+//! coupled blocks needs; unexpanded, they cost a fraction of that and lower smaller, which
+//! is all a numerical solve of M needs. On the Whipple bicycle (eight coordinates) this takes
+//! a fraction of the Lagrangian route's time, which expands the momenta of the whole tree and
+//! differentiates them again.
 
 use super::lagrangian::Lagrangian;
 use crate::lagrange::EquationsOfMotion;
@@ -27,22 +30,68 @@ use crate::sym::{Arena, ExprId, SymbolId};
 
 type Vec3 = [ExprId; 3];
 
-fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> {
+/// The form in which Kane's route leaves the mass matrix's entries
+/// M_ij = Σ_b m_b v_b,i · v_b,j + ω_b,iᵀ I_b ω_b,j.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum MassEntries {
+    /// Expanded to sums of distinct monomials, so that an entry whose terms cancel is the
+    /// arena's zero: the block adjugate solve (`EquationsOfMotion::solve`) splits M into the
+    /// connected blocks of its non-zero pattern and refuses a block whose determinant is
+    /// identically zero, and code generated from M skips its zero entries. The expansion is
+    /// the costly part of the route on a large tree (the bicycle's 36 entries reach 609
+    /// terms each).
+    Expanded,
+    /// The sums over the bodies of the products of the partial velocities, all left
+    /// unexpanded (the partial velocities too): for a caller that solves M numerically at
+    /// each state (Maggi's equations of a rolling mechanism), which needs no structural
+    /// zero. They share their factors and lower to fewer operations than the expanded
+    /// entries.
+    Unexpanded,
+}
+
+pub(crate) fn symbols(arena: &Arena, exprs: &[ExprId]) -> Vec<Option<SymbolId>> {
     exprs.iter().map(|&e| arena.as_symbol(e)).collect()
 }
 
-/// ∂v/∂s for each of the three components, expanded.
-fn partial(arena: &mut Arena, v: &Vec3, s: Option<SymbolId>) -> Vec3 {
+/// ∂v/∂s for each of the three components, expanded with M's entries.
+fn partial(arena: &mut Arena, v: &Vec3, s: Option<SymbolId>, entries: MassEntries) -> Vec3 {
     match s {
         Some(s) => v.map(|e| {
             let d = arena.diff(e, s);
-            arena.expand(d)
+            match entries {
+                MassEntries::Expanded => arena.expand(d),
+                MassEntries::Unexpanded => d,
+            }
         }),
         None => [arena.zero(); 3],
     }
 }
 
-/// Σ_j ∂v/∂q_j q̇_j (+ ∂v/∂t): the rate of v at q̈ = 0.
+/// Σ_j ∂e/∂q_j q̇_j (+ ∂e/∂t): the rate of e(q, q̇, t) at q̈ = 0, unexpanded. For e linear
+/// in q̇, e = a(q, t)·q̇ + b(q, t), this is ȧ·q̇ + ḃ.
+pub(crate) fn scalar_rate_at_rest(
+    arena: &mut Arena,
+    e: ExprId,
+    q: &[Option<SymbolId>],
+    rates: &[ExprId],
+    time: Option<SymbolId>,
+) -> ExprId {
+    let mut terms: Vec<ExprId> = q
+        .iter()
+        .zip(rates)
+        .filter_map(|(&s, &r)| {
+            let s = s?;
+            let d = arena.diff(e, s);
+            Some(arena.mul(d, r))
+        })
+        .collect();
+    if let Some(t) = time {
+        terms.push(arena.diff(e, t));
+    }
+    arena.sum(&terms)
+}
+
+/// [`scalar_rate_at_rest`] of each component: Σ_j ∂v/∂q_j q̇_j (+ ∂v/∂t).
 fn rate_at_rest(
     arena: &mut Arena,
     v: &Vec3,
@@ -50,21 +99,7 @@ fn rate_at_rest(
     rates: &[ExprId],
     time: Option<SymbolId>,
 ) -> Vec3 {
-    [0, 1, 2].map(|k| {
-        let mut terms: Vec<ExprId> = q
-            .iter()
-            .zip(rates)
-            .filter_map(|(&s, &r)| {
-                let s = s?;
-                let d = arena.diff(v[k], s);
-                Some(arena.mul(d, r))
-            })
-            .collect();
-        if let Some(t) = time {
-            terms.push(arena.diff(v[k], t));
-        }
-        arena.sum(&terms)
-    })
+    [0, 1, 2].map(|k| scalar_rate_at_rest(arena, v[k], q, rates, time))
 }
 
 impl MechanismScene {
@@ -77,15 +112,17 @@ impl MechanismScene {
     /// As [`MechanismScene::validate`].
     pub fn kane_equations(&self, arena: &mut Arena) -> Result<EquationsOfMotion, MechanismError> {
         let (lag, kin) = self.lagrangian(arena)?;
-        Ok(self.kane_from(arena, &lag, &kin))
+        Ok(self.kane_from(arena, &lag, &kin, MassEntries::Expanded))
     }
 
-    /// [`MechanismScene::kane_equations`] from the Lagrangian's pieces and the kinematics.
+    /// [`MechanismScene::kane_equations`] from the Lagrangian's pieces and the kinematics,
+    /// M's entries in the form `entries` asks for.
     pub(crate) fn kane_from(
         &self,
         arena: &mut Arena,
         lag: &Lagrangian,
         kin: &[BodyKinematics],
+        entries: MassEntries,
     ) -> EquationsOfMotion {
         let coords = &lag.coords;
         let n = coords.len();
@@ -97,9 +134,12 @@ impl MechanismScene {
         for (body, k) in self.bodies.iter().zip(kin) {
             let pv: Vec<Vec3> = qd
                 .iter()
-                .map(|&s| partial(arena, &k.center_velocity, s))
+                .map(|&s| partial(arena, &k.center_velocity, s, entries))
                 .collect();
-            let pw: Vec<Vec3> = qd.iter().map(|&s| partial(arena, &k.omega, s)).collect();
+            let pw: Vec<Vec3> = qd
+                .iter()
+                .map(|&s| partial(arena, &k.omega, s, entries))
+                .collect();
             let acceleration = rate_at_rest(arena, &k.center_velocity, &q, &coords.rates, time);
             let angular = rate_at_rest(arena, &k.omega, &q, &coords.rates, time);
             let i_alpha = mat_vec(arena, &body.inertia, &angular);
@@ -129,9 +169,12 @@ impl MechanismScene {
                 inertial[i].push(arena.add(lin, rot));
             }
         }
-        // Only the upper triangle was summed; expand it and mirror it.
+        // Only the upper triangle was summed; expand it if asked, and mirror it.
         for (i, j) in (0..n).flat_map(|i| (i..n).map(move |j| (i, j))) {
-            let e = arena.expand(mass[i][j]);
+            let e = match entries {
+                MassEntries::Expanded => arena.expand(mass[i][j]),
+                MassEntries::Unexpanded => mass[i][j],
+            };
             mass[i][j] = e;
             mass[j][i] = e;
         }
