@@ -26,7 +26,7 @@ use precess::ode::{
 use precess::prelude::*;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::kernels::cauchy;
-use precess::taylor::{StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
+use precess::taylor::{EventSeries, StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
@@ -454,6 +454,8 @@ precess::taylor_system! {
     d/dt g1 = g2 * w3 - g3 * w2;
     d/dt g2 = g3 * w1 - g1 * w3;
     d/dt g3 = g1 * w2 - g2 * w1;
+    // θ̇ up to a positive factor, [`theta_rate`] compiled: its recurrences beside the system's.
+    event ThetaRate = g2 * w1 - g1 * w2;
 }
 
 /// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system
@@ -520,10 +522,10 @@ fn theta_rate_event() -> TaylorEvent<6> {
 }
 
 /// [`heavy_top_period`] with the event expanded in the jet (`Run::taylor_event`).
-fn heavy_top_period_expanded<S: TaylorSystem<6>>(
+fn heavy_top_period_expanded<S: TaylorSystem<6>, G: EventSeries<6>>(
     stepper: &mut Taylor<S, 6>,
     t_end: f64,
-    event: &TaylorEvent<6>,
+    event: &G,
 ) -> Result<(f64, u64, u64), OdeError> {
     let out = Run::new(stepper, t_end)
         .sample_none()
@@ -573,12 +575,17 @@ enum Problem {
     /// The heavy top of [`Problem::HeavyTop`] with its event expanded in the jet
     /// (`Run::taylor_event`, as heyoka's `nt_event`) instead of scanned on the dense output.
     HeavyTopExpanded,
+    /// [`Problem::HeavyTopExpanded`] with the event compiled by `taylor_system!`
+    /// (`ThetaRate`) instead of interpreted.
+    HeavyTopCompiled,
     /// [`Problem::HeavyTop`] on the generated jet (`EulerPoissonGen`, Taylor only).
     HeavyTopGen,
     /// [`Problem::HeavyTopBare`] on the generated jet.
     HeavyTopGenBare,
     /// [`Problem::HeavyTopExpanded`] on the generated jet.
     HeavyTopGenExpanded,
+    /// [`Problem::HeavyTopCompiled`] on the generated jet: jet and event both compiled.
+    HeavyTopGenCompiled,
     Free357,
     Free359,
     HeavyTop,
@@ -698,7 +705,20 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
                 heavy_top_period_expanded(&mut ode, 10.0 * top.period, &top.event).unwrap();
             ((period - top.period).abs() / top.period, s, e)
         }
-        Problem::HeavyTopGen | Problem::HeavyTopGenBare | Problem::HeavyTopGenExpanded => {
+        Problem::HeavyTopCompiled => {
+            let Some(cfg) = taylor_config(m) else {
+                return (f64::NAN, 0, 0);
+            };
+            let mut ode = Taylor::new(top.sys, 0.0, top.y0, cfg).unwrap();
+            let event = ThetaRate(&top.generated);
+            let (period, s, e) =
+                heavy_top_period_expanded(&mut ode, 10.0 * top.period, &event).unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+        Problem::HeavyTopGen
+        | Problem::HeavyTopGenBare
+        | Problem::HeavyTopGenExpanded
+        | Problem::HeavyTopGenCompiled => {
             // The pairs evaluate f, not the jet: the hand-written rows are theirs.
             let Some(cfg) = taylor_config(m) else {
                 return (f64::NAN, 0, 0);
@@ -712,6 +732,9 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
                 }
                 Problem::HeavyTopGenExpanded => {
                     heavy_top_period_expanded(&mut ode, t_end, &top.event)
+                }
+                Problem::HeavyTopGenCompiled => {
+                    heavy_top_period_expanded(&mut ode, t_end, &ThetaRate(&top.generated))
                 }
                 _ => heavy_top_period(&mut ode, t_end),
             }
@@ -844,7 +867,7 @@ fn methods() -> Vec<Method> {
     v
 }
 
-const PROBLEMS: [Problem; 10] = [
+const PROBLEMS: [Problem; 12] = [
     Problem::B5,
     Problem::Free357,
     Problem::Free359,
@@ -853,7 +876,9 @@ const PROBLEMS: [Problem; 10] = [
     Problem::HeavyTopExpanded,
     Problem::HeavyTopGen,
     Problem::HeavyTopGenBare,
+    Problem::HeavyTopCompiled,
     Problem::HeavyTopGenExpanded,
+    Problem::HeavyTopGenCompiled,
     Problem::TopAngles,
 ];
 
@@ -885,6 +910,11 @@ fn table(top: &HeavyTop, refs: &References) {
                     Problem::HeavyTop
                         | Problem::HeavyTopBare
                         | Problem::HeavyTopExpanded
+                        | Problem::HeavyTopCompiled
+                        | Problem::HeavyTopGen
+                        | Problem::HeavyTopGenBare
+                        | Problem::HeavyTopGenExpanded
+                        | Problem::HeavyTopGenCompiled
                         | Problem::TopAngles
                 )
             {
@@ -893,7 +923,11 @@ fn table(top: &HeavyTop, refs: &References) {
             if taylor_config(m).is_none()
                 && matches!(
                     p,
-                    Problem::HeavyTopGen | Problem::HeavyTopGenBare | Problem::HeavyTopGenExpanded
+                    Problem::HeavyTopCompiled
+                        | Problem::HeavyTopGen
+                        | Problem::HeavyTopGenBare
+                        | Problem::HeavyTopGenExpanded
+                        | Problem::HeavyTopGenCompiled
                 )
             {
                 continue;
