@@ -4,7 +4,11 @@
 //! as events, twice: in Euler–Poisson form (ω and the vertical γ in body axes: a polynomial
 //! system, so its Taylor recurrences are Cauchy products written by hand here, as are B5's
 //! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
-//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates).
+//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates). The Euler–Poisson
+//! top is also written through `taylor_system!` (`EulerPoissonGen`, the `HeavyTopGen…`
+//! problems: the generated jet against the hand-written one in one run), with its event
+//! scanned, expanded through the interpreted tape (`…Expanded`) or compiled by the macro
+//! (`…Compiled`, `event ThetaRate = …;`).
 //!
 //! `cargo bench -p precess-benches --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
