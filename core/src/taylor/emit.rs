@@ -368,12 +368,13 @@ impl Tape {
         let (next_zero, next_k) = (next(quote!(0)), next(quote!(__k)));
         if event {
             // g's coefficient of order k into `out[k]`; the state's row k from the jet.
-            let g = |k: TokenStream| match self.outputs.first() {
-                Some(&Value::Series(x)) => layout.current(x, k),
-                Some(&Value::Scalar(x)) if k.to_string() == "0" => scalar_operand(x),
+            let g = |order_zero: bool| match (self.outputs.first(), order_zero) {
+                (Some(&Value::Series(x)), true) => layout.current(x, quote!(0)),
+                (Some(&Value::Series(x)), false) => layout.current(x, quote!(__k)),
+                (Some(&Value::Scalar(x)), true) => scalar_operand(x),
                 _ => quote!(0.0f64),
             };
-            let (g_zero, g_k) = (g(quote!(0)), g(quote!(__k)));
+            let (g_zero, g_k) = (g(true), g(false));
             let load_k = (0..self.dimension).map(|i| {
                 let id = series(i as u32);
                 quote!(#id[__k] = rows[__k - 1][#i];)

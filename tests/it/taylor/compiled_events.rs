@@ -31,11 +31,12 @@ precess::taylor_system! {
     event ThetaRate = g2 * w1 - g1 * w2;
     event CosTheta = g3;
     event Mixed = (w1 * g3).sin() / (g1 * g1 + 2.0) - r * t;
+    event Clock = t - r;
+    event Constant = r + 1.0;
 }
 
-/// The same three event functions as interpreted `TaylorEvent`s, built as the macro lowers
-/// them.
-fn interpreted(top: &Top) -> [TaylorEvent<6>; 3] {
+/// The same event functions as interpreted `TaylorEvent`s, built as the macro lowers them.
+fn interpreted(top: &Top) -> [TaylorEvent<6>; 5] {
     let mut a = Arena::new();
     let y: [ExprId; 6] = ["w1", "w2", "w3", "g1", "g2", "g3"].map(|n| a.coordinate(n));
     let [w1, w2, _, g1, g2, g3] = y;
@@ -51,11 +52,16 @@ fn interpreted(top: &Top) -> [TaylorEvent<6>; 3] {
     let quotient = a.div(sine, den).unwrap();
     let rt = a.mul(r, t);
     let mixed = a.sub(quotient, rt);
+    let clock = a.sub(t, r);
+    let one = a.integer(1);
+    let constant = a.add(r, one);
     let values = [("r", top.r)];
     [
         TaylorEvent::new(&a, y, None, theta_rate, &[]).unwrap(),
         TaylorEvent::new(&a, y, None, g3, &[]).unwrap(),
         TaylorEvent::new(&a, y, Some(t), mixed, &values).unwrap(),
+        TaylorEvent::new(&a, y, Some(t), clock, &values).unwrap(),
+        TaylorEvent::new(&a, y, None, constant, &values).unwrap(),
     ]
 }
 
@@ -87,7 +93,7 @@ fn series<G: EventSeries<6>>(g: &G, t: f64, jet: &[[f64; 6]], p: usize) -> Vec<u
 #[test]
 fn compiled_events_are_the_interpreted_ones_bit_for_bit_on_random_jets() {
     let top = Top { r: 0.73, s: 169.7 };
-    let [theta_rate, cos_theta, mixed] = interpreted(&top);
+    let [theta_rate, cos_theta, mixed, clock, constant] = interpreted(&top);
     for seed in 0..200u64 {
         // Orders 0 … 24 (the system's maximum), jets of every length up to it.
         let p = (seed % 25) as usize;
@@ -102,6 +108,12 @@ fn compiled_events_are_the_interpreted_ones_bit_for_bit_on_random_jets() {
             series(&cos_theta, t, &jet, p)
         );
         assert_eq!(series(&Mixed(&top), t, &jet, p), series(&mixed, t, &jet, p));
+        // A g of the time alone (the time's series t, 1, 0, …) and a constant one.
+        assert_eq!(series(&Clock(&top), t, &jet, p), series(&clock, t, &jet, p));
+        assert_eq!(
+            series(&Constant(&top), t, &jet, p),
+            series(&constant, t, &jet, p)
+        );
         // The component event is the jet's column itself.
         let column: Vec<u64> = jet.iter().map(|row| row[5].to_bits()).collect();
         assert_eq!(series(&CosTheta(&top), t, &jet, p), column);
@@ -180,7 +192,7 @@ fn the_compiled_theta_rate_event_finds_the_nutation_maxima_of_the_closed_form() 
         );
     }
     // The interpreted event's run is the same run: its coefficients are the same bits.
-    let [theta_rate, _, _] = interpreted(&top);
+    let [theta_rate, ..] = interpreted(&top);
     let interpreted = maxima(top, y0, t_end, &theta_rate);
     assert_eq!(
         compiled.iter().map(|t| t.to_bits()).collect::<Vec<_>>(),
