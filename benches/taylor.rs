@@ -4,7 +4,11 @@
 //! as events, twice: in Euler–Poisson form (ω and the vertical γ in body axes: a polynomial
 //! system, so its Taylor recurrences are Cauchy products written by hand here, as are B5's
 //! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
-//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates).
+//! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates). The Euler–Poisson
+//! top is also written through `taylor_system!` (`EulerPoissonGen`, the `HeavyTopGen…`
+//! problems: the generated jet against the hand-written one in one run), with its event
+//! scanned, expanded through the interpreted tape (`…Expanded`) or compiled by the macro
+//! (`…Compiled`, `event ThetaRate = …;`).
 //!
 //! `cargo bench -p precess-benches --bench taylor` prints the table (error against the closed form, steps,
 //! evaluations, the median time of one whole integration over many repeats) and then times a
@@ -26,7 +30,7 @@ use precess::ode::{
 use precess::prelude::*;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::kernels::cauchy;
-use precess::taylor::{StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
+use precess::taylor::{EventSeries, StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
@@ -436,10 +440,34 @@ impl TaylorSystem<6> for EulerPoisson {
     }
 }
 
-/// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system,
-/// initial state, exact nutation period and the span of 10 periods.
+precess::taylor_system! {
+    /// [`EulerPoisson`] through `taylor_system!` (the form of the ensemble and lanes benches,
+    /// with r = (I1 − I3)/I1 and s = Mgl/I1 as fields): the same equations, products and
+    /// constants, whose recurrences are generated (fused loops over an order's sums) instead
+    /// of written by hand with a kernel call per product.
+    #[derive(Clone, Copy, Debug)]
+    struct EulerPoissonGen {
+        r: f64,
+        s: f64,
+    }
+    state [w1, w2, w3, g1, g2, g3];
+    taylor = 24;
+    d/dt w1 = r * (w2 * w3) + s * g2;
+    d/dt w2 = -r * (w3 * w1) - s * g1;
+    d/dt w3 = 0.0;
+    d/dt g1 = g2 * w3 - g3 * w2;
+    d/dt g2 = g3 * w1 - g1 * w3;
+    d/dt g3 = g1 * w2 - g2 * w1;
+    // θ̇ up to a positive factor, [`theta_rate`] compiled: its recurrences beside the system's.
+    event ThetaRate = g2 * w1 - g1 * w2;
+}
+
+/// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system
+/// (hand-written and generated), initial state, exact nutation period and the span of 10
+/// periods.
 struct HeavyTop {
     sys: EulerPoisson,
+    generated: EulerPoissonGen,
     /// θ̇'s sign as an expression, for the expanded event.
     event: TaylorEvent<6>,
     y0: [f64; 6],
@@ -462,6 +490,10 @@ impl HeavyTop {
         let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
         Self {
             sys: EulerPoisson { i1, i3, mgl },
+            generated: EulerPoissonGen {
+                r: (i1 - i3) / i1,
+                s: mgl / i1,
+            },
             event: theta_rate_event(),
             y0,
             period,
@@ -494,10 +526,10 @@ fn theta_rate_event() -> TaylorEvent<6> {
 }
 
 /// [`heavy_top_period`] with the event expanded in the jet (`Run::taylor_event`).
-fn heavy_top_period_expanded(
-    stepper: &mut Taylor<EulerPoisson, 6>,
+fn heavy_top_period_expanded<S: TaylorSystem<6>, G: EventSeries<6>>(
+    stepper: &mut Taylor<S, 6>,
     t_end: f64,
-    event: &TaylorEvent<6>,
+    event: &G,
 ) -> Result<(f64, u64, u64), OdeError> {
     let out = Run::new(stepper, t_end)
         .sample_none()
@@ -547,6 +579,17 @@ enum Problem {
     /// The heavy top of [`Problem::HeavyTop`] with its event expanded in the jet
     /// (`Run::taylor_event`, as heyoka's `nt_event`) instead of scanned on the dense output.
     HeavyTopExpanded,
+    /// [`Problem::HeavyTopExpanded`] with the event compiled by `taylor_system!`
+    /// (`ThetaRate`) instead of interpreted.
+    HeavyTopCompiled,
+    /// [`Problem::HeavyTop`] on the generated jet (`EulerPoissonGen`, Taylor only).
+    HeavyTopGen,
+    /// [`Problem::HeavyTopBare`] on the generated jet.
+    HeavyTopGenBare,
+    /// [`Problem::HeavyTopExpanded`] on the generated jet.
+    HeavyTopGenExpanded,
+    /// [`Problem::HeavyTopCompiled`] on the generated jet: jet and event both compiled.
+    HeavyTopGenCompiled,
     Free357,
     Free359,
     HeavyTop,
@@ -664,6 +707,42 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             let mut ode = Taylor::new(top.sys, 0.0, top.y0, cfg).unwrap();
             let (period, s, e) =
                 heavy_top_period_expanded(&mut ode, 10.0 * top.period, &top.event).unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+        Problem::HeavyTopCompiled => {
+            let Some(cfg) = taylor_config(m) else {
+                return (f64::NAN, 0, 0);
+            };
+            let mut ode = Taylor::new(top.sys, 0.0, top.y0, cfg).unwrap();
+            let event = ThetaRate(&top.generated);
+            let (period, s, e) =
+                heavy_top_period_expanded(&mut ode, 10.0 * top.period, &event).unwrap();
+            ((period - top.period).abs() / top.period, s, e)
+        }
+        Problem::HeavyTopGen
+        | Problem::HeavyTopGenBare
+        | Problem::HeavyTopGenExpanded
+        | Problem::HeavyTopGenCompiled => {
+            // The pairs evaluate f, not the jet: the hand-written rows are theirs.
+            let Some(cfg) = taylor_config(m) else {
+                return (f64::NAN, 0, 0);
+            };
+            let mut ode = Taylor::new(top.generated, 0.0, top.y0, cfg).unwrap();
+            let t_end = 10.0 * top.period;
+            let (period, s, e) = match p {
+                Problem::HeavyTopGenBare => {
+                    let (_, s, e) = integrate(top.generated, top.y0, t_end, m);
+                    return (f64::NAN, s, e);
+                }
+                Problem::HeavyTopGenExpanded => {
+                    heavy_top_period_expanded(&mut ode, t_end, &top.event)
+                }
+                Problem::HeavyTopGenCompiled => {
+                    heavy_top_period_expanded(&mut ode, t_end, &ThetaRate(&top.generated))
+                }
+                _ => heavy_top_period(&mut ode, t_end),
+            }
+            .unwrap();
             ((period - top.period).abs() / top.period, s, e)
         }
         Problem::HeavyTopBare => {
@@ -792,13 +871,18 @@ fn methods() -> Vec<Method> {
     v
 }
 
-const PROBLEMS: [Problem; 7] = [
+const PROBLEMS: [Problem; 12] = [
     Problem::B5,
     Problem::Free357,
     Problem::Free359,
     Problem::HeavyTop,
     Problem::HeavyTopBare,
     Problem::HeavyTopExpanded,
+    Problem::HeavyTopGen,
+    Problem::HeavyTopGenBare,
+    Problem::HeavyTopCompiled,
+    Problem::HeavyTopGenExpanded,
+    Problem::HeavyTopGenCompiled,
     Problem::TopAngles,
 ];
 
@@ -830,7 +914,24 @@ fn table(top: &HeavyTop, refs: &References) {
                     Problem::HeavyTop
                         | Problem::HeavyTopBare
                         | Problem::HeavyTopExpanded
+                        | Problem::HeavyTopCompiled
+                        | Problem::HeavyTopGen
+                        | Problem::HeavyTopGenBare
+                        | Problem::HeavyTopGenExpanded
+                        | Problem::HeavyTopGenCompiled
                         | Problem::TopAngles
+                )
+            {
+                continue;
+            }
+            if taylor_config(m).is_none()
+                && matches!(
+                    p,
+                    Problem::HeavyTopCompiled
+                        | Problem::HeavyTopGen
+                        | Problem::HeavyTopGenBare
+                        | Problem::HeavyTopGenExpanded
+                        | Problem::HeavyTopGenCompiled
                 )
             {
                 continue;
@@ -934,6 +1035,9 @@ fn main() {
             Method::Dop853(1e-12),
             Method::Vern9(1e-12),
         ] {
+            if taylor_config(m).is_none() && run(p, m, &top, &refs).1 == 0 {
+                continue;
+            }
             g.bench_function(m.label(), |b| b.iter(|| run(p, black_box(m), &top, &refs)));
         }
         if matches!(p, Problem::B5 | Problem::Free357 | Problem::Free359) {

@@ -97,6 +97,7 @@ mod sym {
 /// The Taylor integrator.
 mod taylor {
     mod coefficients;
+    mod compiled_events;
     mod config;
     mod defect;
     mod events;

@@ -142,7 +142,56 @@ impl Tape {
                 0
             },
         };
-        self.emit(max_order, symbol, sums)
+        self.emit(max_order, symbol, sums, false)
+    }
+
+    /// The coefficients of an event function g (the tape's one output) along the series of
+    /// the state, as compiled code: the body of
+    /// [`EventSeries::coefficients_into`](super::EventSeries::coefficients_into), which reads
+    /// `ws`, `t: f64`, `y: &[f64; N]`, `rows: &[[f64; N]]` and `out: &mut [f64]`. The
+    /// recurrences are [`Tape::to_tokens`]'s (the same steps, sums and order of additions),
+    /// with the state's series read from the jet: at order k, the state's row k is loaded
+    /// from `rows[k − 1]` before the steps run, and g's coefficient of order k is written to
+    /// `out[k]`, k = 0 … p, p = min(`out.len()` − 1, `rows.len()`, `max_order`). So the
+    /// compiled coefficients are those of the interpreted
+    /// [`TaylorEvent`](super::TaylorEvent) of the same expression bit for bit (the
+    /// interpreter walks the same steps in the same order, one order at a time).
+    ///
+    /// `None` unless the tape has exactly one output (g).
+    ///
+    /// ```
+    /// use precess_core::sym::Arena;
+    /// use precess_core::taylor::Tape;
+    /// let mut a = Arena::new();
+    /// let (x, v) = (a.coordinate("x"), a.coordinate("v"));
+    /// let g = a.mul(x, v); // g = x v, over the state (x, v)
+    /// let program = precess_core::codegen::Program::lower(&a, &[g]);
+    /// let state = [a.as_symbol(x).unwrap(), a.as_symbol(v).unwrap()];
+    /// let tape = Tape::from_program(&program, &state, None);
+    /// let code = tape.to_event_tokens(20, &mut |_| quote::quote!(0.0)).unwrap();
+    /// let body = code.body.to_string();
+    /// assert!(body.contains("rows [__k - 1]"), "{body}");
+    /// assert!(body.contains("out [__k]"), "{body}");
+    /// ```
+    pub fn to_event_tokens(
+        &self,
+        max_order: usize,
+        symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
+    ) -> Option<TaylorTokens> {
+        if self.outputs.len() != 1 {
+            return None;
+        }
+        let sums = Sums {
+            split: self.split_products(),
+            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
+            lanes: false,
+            fused: if self.split_products() {
+                FUSED_SCALAR
+            } else {
+                0
+            },
+        };
+        Some(self.emit(max_order, symbol, sums, true))
     }
 
     /// The recurrences of [`Tape::to_tokens`] on `L` trajectories at once: every value a
@@ -194,15 +243,17 @@ impl Tape {
                 0
             },
         };
-        Some(self.emit(max_order, symbol, sums))
+        Some(self.emit(max_order, symbol, sums, false))
     }
 
-    /// The code of [`Tape::to_tokens`] and of the lanes ([`Tape::to_lane_tokens`]).
+    /// The code of [`Tape::to_tokens`] and of the lanes ([`Tape::to_lane_tokens`]), or with
+    /// `event` of an event function's coefficients ([`Tape::to_event_tokens`]).
     fn emit(
         &self,
         max_order: usize,
         symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
         sums: Sums,
+        event: bool,
     ) -> TaylorTokens {
         let scalar_operand = |i: u32| -> TokenStream {
             match self.scalars.get(i as usize) {
@@ -315,6 +366,52 @@ impl Tape {
             quote!([#(#ids),*])
         };
         let (next_zero, next_k) = (next(quote!(0)), next(quote!(__k)));
+        if event {
+            // g's coefficient of order k into `out[k]`; the state's row k from the jet.
+            let g = |order_zero: bool| match (self.outputs.first(), order_zero) {
+                (Some(&Value::Series(x)), true) => layout.current(x, quote!(0)),
+                (Some(&Value::Series(x)), false) => layout.current(x, quote!(__k)),
+                (Some(&Value::Scalar(x)), true) => scalar_operand(x),
+                _ => quote!(0.0f64),
+            };
+            let (g_zero, g_k) = (g(true), g(false));
+            let load_k = (0..self.dimension).map(|i| {
+                let id = series(i as u32);
+                quote!(#id[__k] = rows[__k - 1][#i];)
+            });
+            let body = quote! {
+                const __K: usize = #max_order;
+                let ::core::option::Option::Some(__top) = out.len().checked_sub(1) else {
+                    return;
+                };
+                let __p: usize = if __top < __K { __top } else { __K };
+                let __p: usize = if __p < rows.len() { __p } else { rows.len() };
+                if ws.len() != #rows {
+                    ws.clear();
+                    ws.resize(#rows, [#zero; __K + 1]);
+                }
+                let [#(#bindings),*] = &mut ws[..] else {
+                    return;
+                };
+                #scalars
+                #(#load)*
+                #time
+                #(#first)*
+                out[0] = #g_zero;
+                for __k in 1..=__p {
+                    #(#load_k)*
+                    #fused_dots
+                    #(#interiors)*
+                    #(#steps)*
+                    out[__k] = #g_k;
+                }
+            };
+            return TaylorTokens {
+                body,
+                workspace: quote!(::std::vec::Vec<[#num; #max_order + 1]>),
+                series: rows,
+            };
+        }
         let order_body = quote! {
             #fused_dots
             #(#interiors)*

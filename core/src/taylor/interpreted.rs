@@ -14,6 +14,14 @@ use crate::sym::{Arena, ExprId, SymbolId};
 /// Why a [`TaylorTape`] could not be built.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TaylorError {
+    /// An event on a state component ([`StateEvent`](super::StateEvent)) past the state.
+    #[error("event component {index} is outside the state of dimension {dimension}")]
+    EventComponentOutOfRange {
+        /// The component asked for.
+        index: usize,
+        /// The state's dimension.
+        dimension: usize,
+    },
     /// A state entry that is not a bare symbol (a coordinate, a rate, an input).
     #[error("state entry {index} is not a bare symbol")]
     StateNotASymbol {

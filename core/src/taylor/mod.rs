@@ -26,7 +26,7 @@ mod scalars;
 mod tape;
 
 pub use emit::TaylorTokens;
-pub use events::{EVENT_MISMATCH, TaylorEvent};
+pub use events::{EVENT_MISMATCH, EventSeries, StateEvent, TaylorEvent};
 pub use integrator::{OrderRule, StepScale, Taylor, TaylorConfig, solve, solve_dense};
 pub use interpreted::{TaylorError, TaylorTape};
 pub use tape::{ScalarOp, SeriesOp, SeriesStep, Tape, TapeCount, Value};

@@ -1,6 +1,8 @@
 //! Syntax of `taylor_system!`: a struct item, then statements each ended by `;`:
-//! `state [x, y, …]`, `taylor = K`, and one `d/dt x = expression` per state variable. What
-//! they mean (names, counts, the order's range) is decided in `check.rs`.
+//! `state [x, y, …]`, `taylor = K`, one `d/dt x = expression` per state variable, and any
+//! number of `event Name = expression` (an event function, emitted as a type whose Taylor
+//! coefficients are compiled recurrences). What they mean (names, counts, the order's
+//! range) is decided in `check.rs`.
 
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
@@ -8,6 +10,8 @@ use syn::{Expr, Ident, ItemStruct, Token, bracketed};
 
 /// The words of the macro's language.
 pub const STATE: &str = "state";
+/// `event Name = g;`: an event function compiled beside the system.
+pub const EVENT: &str = "event";
 /// The time, readable in the right-hand sides.
 pub const TIME: &str = "t";
 /// `d` of `d/dt x = …`.
@@ -39,6 +43,13 @@ pub enum Statement {
         /// The order as written.
         value: Expr,
     },
+    /// `event Name = expression`.
+    Event {
+        /// The name of the type emitted.
+        name: Ident,
+        /// g(t, y).
+        value: Expr,
+    },
     /// `d/dt x = expression`.
     Equation {
         /// The variable differentiated.
@@ -63,7 +74,7 @@ impl Parse for Statement {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let expected = || {
             format!(
-                "expected `{STATE} [x, y, …];`, `{} = K;` or an equation `{D}/{DT} x = …;`",
+                "expected `{STATE} [x, y, …];`, `{} = K;`, an equation `{D}/{DT} x = …;` or `{EVENT} Name = …;`",
                 crate::lang::keys::TAYLOR
             )
         };
@@ -82,6 +93,13 @@ impl Parse for Statement {
             input.parse::<Token![=]>()?;
             Statement::Taylor {
                 keyword,
+                value: input.parse()?,
+            }
+        } else if keyword == EVENT && input.peek(Ident) {
+            let name = input.parse()?;
+            input.parse::<Token![=]>()?;
+            Statement::Event {
+                name,
                 value: input.parse()?,
             }
         } else if keyword == D && input.peek(Token![/]) {

@@ -1,11 +1,12 @@
 //! Meaning of `taylor_system!`'s statements: the struct's fields are its f64 parameters
 //! (none named `t`, the time); one `state [...]` of distinct new names; one `taylor = K`;
-//! exactly one equation per state variable. Every error is recorded, spanned on the
+//! exactly one equation per state variable; events of distinct names, none the struct's.
+//! Every error is recorded, spanned on the
 //! offending tokens, before giving up.
 
 use syn::{Expr, Fields, Ident};
 
-use super::attr::{STATE, Statement, SystemInput, TIME};
+use super::attr::{EVENT, STATE, Statement, SystemInput, TIME};
 use crate::lang::ast::Field;
 use crate::lang::ctxt::Ctxt;
 use crate::lang::keys::{self, did_you_mean};
@@ -21,6 +22,8 @@ pub struct CheckedSystem<'a> {
     pub order: usize,
     /// The right-hand side of each state variable, in state order.
     pub equations: Vec<&'a Expr>,
+    /// The event functions, `(name, g)`, as written.
+    pub events: Vec<(&'a Ident, &'a Expr)>,
 }
 
 /// Checks the input; `None` after recording every error found.
@@ -36,6 +39,7 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
     let fields = fields(cx, &item.fields);
     let mut state: Option<(&Ident, &[Ident])> = None;
     let mut equations: Vec<(&Ident, &Expr)> = Vec::new();
+    let mut events: Vec<(&Ident, &Expr)> = Vec::new();
     for statement in &input.statements {
         match statement {
             Statement::State { keyword, names } => {
@@ -51,6 +55,25 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
             // Read by `TaylorKey` below.
             Statement::Taylor { .. } => {}
             Statement::Equation { name, value } => equations.push((name, value)),
+            Statement::Event { name, value } => {
+                // Each event is a type beside the system's struct: two of one name, or one
+                // named as the struct, would be two items of one name.
+                if events.iter().any(|(n, _)| *n == name) {
+                    cx.error_spanned_by(
+                        name,
+                        format!("a second `{EVENT} {name}`: name each event once"),
+                    );
+                } else if *name == item.ident {
+                    cx.error_spanned_by(
+                        name,
+                        format!(
+                            "`{EVENT} {name}` is named as the system's struct: an event is a type of its own"
+                        ),
+                    );
+                } else {
+                    events.push((name, value));
+                }
+            }
         }
     }
     let orders = input.statements.iter().filter_map(|s| match s {
@@ -121,6 +144,7 @@ pub fn check<'a>(cx: &Ctxt, input: &'a SystemInput) -> Option<CheckedSystem<'a>>
         fields,
         order: order?,
         equations: by_state.into_iter().collect::<Option<_>>()?,
+        events,
     })
 }
 

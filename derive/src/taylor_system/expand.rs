@@ -25,8 +25,24 @@ pub fn expand(input: TokenStream) -> TokenStream {
     let impls = super::check::check(&cx, &input).and_then(|c| impls(&cx, &input, &c));
     let item = input.item.to_token_stream();
     let expanded = impls.map(|impls| quote!(#item #impls));
-    // After an error the struct is still emitted, so its uses raise no errors of their own.
-    cx.finish(&input.item.ident, expanded, || item.clone())
+    // After an error the struct and the events' types are still emitted, so their uses
+    // raise no errors of their own.
+    cx.finish(&input.item.ident, expanded, || {
+        // Each name once, and none the struct's (the refused ones, reported above).
+        let mut names: Vec<&syn::Ident> = Vec::new();
+        for s in &input.statements {
+            if let super::attr::Statement::Event { name, .. } = s
+                && *name != input.item.ident
+                && !names.contains(&name)
+            {
+                names.push(name);
+            }
+        }
+        let events = names
+            .into_iter()
+            .map(|name| super::events::declaration(&input.item, name));
+        quote!(#item #(#events)*)
+    })
 }
 
 /// `impl System<N>`, `impl TaylorSystem<N>` and the names of the state, or `None` after
@@ -66,6 +82,12 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
     };
     let rhs: Vec<Option<ExprId>> = checked.equations.iter().map(|e| lowerer.expr(e)).collect();
     let rhs: Vec<ExprId> = rhs.into_iter().collect::<Option<_>>()?;
+    let events: Vec<Option<ExprId>> = checked
+        .events
+        .iter()
+        .map(|(_, g)| lowerer.expr(g))
+        .collect();
+    let events: Vec<ExprId> = events.into_iter().collect::<Option<_>>()?;
     let time = lowerer.names.time;
     let mut symbols = SymbolTokens::default();
     for (field, &e) in checked.fields.iter().zip(&fields) {
@@ -95,6 +117,21 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         None,
     );
     let taylor = crate::lang::export::system(ident, &mut arena, &state, &rhs, taylor);
+    let field_symbols: Vec<(&syn::Ident, ExprId)> =
+        checked.fields.iter().copied().zip(fields.clone()).collect();
+    let events = checked.events.iter().zip(&events).map(|((name, _), &g)| {
+        super::events::expand(
+            cx,
+            &input.item,
+            name,
+            &arena,
+            &state,
+            &field_symbols,
+            g,
+            checked.order,
+        )
+    });
+    let events: TokenStream = events.collect();
     let names = checked
         .state
         .iter()
@@ -117,5 +154,7 @@ fn impls(cx: &Ctxt, input: &SystemInput, checked: &CheckedSystem) -> Option<Toke
         }
 
         #taylor
+
+        #events
     })
 }

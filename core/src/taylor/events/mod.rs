@@ -29,8 +29,10 @@
 
 pub(crate) mod isolate;
 mod run;
+mod series;
 
 pub use run::EVENT_MISMATCH;
+pub use series::{EventSeries, StateEvent};
 
 use crate::sym::{Arena, ExprId};
 
@@ -101,7 +103,7 @@ impl<const N: usize> TaylorEvent<N> {
     /// g(t, y).
     pub fn value(&self, t: f64, y: &[f64; N]) -> f64 {
         let mut out = [0.0];
-        self.coefficients_into(&mut Vec::new(), t, y, &[], &mut out);
+        self.series_into(&mut Vec::new(), t, y, &[], &mut out);
         out[0]
     }
 
@@ -115,13 +117,13 @@ impl<const N: usize> TaylorEvent<N> {
         };
         let order = out.len().saturating_sub(1).min(rows.len());
         out.fill(0.0);
-        self.coefficients_into(&mut Vec::new(), t, y, &rows[..order], &mut out[..=order]);
+        self.series_into(&mut Vec::new(), t, y, &rows[..order], &mut out[..=order]);
     }
 
-    /// [`TaylorEvent::coefficients`] with `ws` as scratch (sized on first use, then reused):
+    /// [`TaylorEvent::coefficients`] with `ws` as scratch (the [`EventSeries`] impl) (sized on first use, then reused):
     /// the state `y` and its rows c₁ … c_p in `rows`, g₀ … g_p into `out` (p =
     /// `out.len() − 1 ≤ rows.len()`).
-    pub(crate) fn coefficients_into(
+    pub(crate) fn series_into(
         &self,
         ws: &mut Vec<f64>,
         t: f64,

@@ -1,8 +1,8 @@
-//! A [`TaylorEvent`] in a [`Run`] of the Taylor integrator: after each step, g's
+//! A Taylor event ([`EventSeries`]) in a [`Run`] of the Taylor integrator: after each step, g's
 //! coefficients from the step's jet, the roots of its polynomial isolated ([`isolate`]),
 //! and the points between which [`Run`] locates them.
 
-use super::TaylorEvent;
+use super::EventSeries;
 use super::isolate::{Isolator, Piece};
 use crate::ode::{Event, OdeError, Run, StepRoots};
 use crate::taylor::{Taylor, TaylorSystem};
@@ -17,9 +17,9 @@ pub const EVENT_MISMATCH: f64 = 1e3;
 
 /// The state of one expanded event across a run: the event, its scratch, and the last
 /// step's polynomial of g.
-struct Expanded<const N: usize> {
-    event: TaylorEvent<N>,
-    ws: Vec<f64>,
+struct Expanded<'a, G: EventSeries<N>, const N: usize> {
+    event: &'a G,
+    ws: G::Workspace,
     /// g₀ … g_p of the last step, and the same scaled to s ∈ [0, 1] (aₖ = gₖ hᵏ).
     g: Vec<f64>,
     scaled: Vec<f64>,
@@ -30,7 +30,7 @@ struct Expanded<const N: usize> {
     h: f64,
 }
 
-impl<const N: usize> Expanded<N> {
+impl<G: EventSeries<N>, const N: usize> Expanded<'_, G, N> {
     /// q(θ(t)), θ(t) = (t − t_start) − t_lo clamped to [0, h] as the dense output has it.
     fn q(&self, t: f64) -> f64 {
         let theta = ((t - self.start.0) - self.start.1).clamp(0.0, self.h);
@@ -38,7 +38,9 @@ impl<const N: usize> Expanded<N> {
     }
 }
 
-impl<S: TaylorSystem<N>, const N: usize> StepRoots<Taylor<S, N>> for Expanded<N> {
+impl<S: TaylorSystem<N>, G: EventSeries<N>, const N: usize> StepRoots<Taylor<S, N>>
+    for Expanded<'_, G, N>
+{
     fn points(
         &mut self,
         stepper: &Taylor<S, N>,
@@ -120,7 +122,7 @@ impl<S: TaylorSystem<N>, const N: usize> StepRoots<Taylor<S, N>> for Expanded<N>
 
 impl<'a, S: TaylorSystem<N>, const N: usize> Run<'a, Taylor<S, N>> {
     /// Adds an event whose function is an expression expanded with each Taylor step
-    /// ([`TaylorEvent`]): the crossings that `event` counts, every root of g's Taylor
+    /// ([`EventSeries`]): the crossings that `event` counts, every root of g's Taylor
     /// polynomial on each step found with a guarantee (isolated by Descartes' rule of signs
     /// on its Bernstein form, not sampled), each located to adjacent doubles on that
     /// polynomial; the hit's state is the step's dense output there. The hits are
@@ -140,6 +142,11 @@ impl<'a, S: TaylorSystem<N>, const N: usize> Run<'a, Taylor<S, N>> {
     /// largest: a g that varies faster than the step resolves is refused with
     /// [`OdeError::EventNotResolved`] by [`Run::integrate`], rather than its polynomial's
     /// roots taken for g's.
+    ///
+    /// `g` is any [`EventSeries`]: an interpreted [`TaylorEvent`](super::TaylorEvent) (a tape walked at every
+    /// step), the compiled type `taylor_system!` emits for an `event Name = …;` statement
+    /// (the same recurrences as Rust), or a [`StateEvent`](super::StateEvent) (g = yᵢ, the
+    /// jet's column itself).
     ///
     /// Cost per step: g's recurrences to order p (as if g were one more component of the
     /// system), the Bernstein form (p²/2 additions) and, only where a piece is not
@@ -168,17 +175,12 @@ impl<'a, S: TaylorSystem<N>, const N: usize> Run<'a, Taylor<S, N>> {
     /// }
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn taylor_event(self, event: Event, g: &TaylorEvent<N>) -> Self {
-        let ends = g.clone();
-        let mut ws = Vec::new();
-        let value = move |t: f64, y: &[f64; N]| {
-            let mut out = [0.0];
-            ends.coefficients_into(&mut ws, t, y, &[], &mut out);
-            out[0]
-        };
+    pub fn taylor_event<G: EventSeries<N>>(self, event: Event, g: &'a G) -> Self {
+        let mut ws = G::Workspace::default();
+        let value = move |t: f64, y: &[f64; N]| g.value(&mut ws, t, y);
         let roots = Expanded {
-            event: g.clone(),
-            ws: Vec::new(),
+            event: g,
+            ws: G::Workspace::default(),
             g: Vec::new(),
             scaled: Vec::new(),
             isolator: Isolator::default(),
