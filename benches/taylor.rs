@@ -30,7 +30,9 @@ use precess::ode::{
 use precess::prelude::*;
 use precess::sym::{Arena, ExprId};
 use precess::taylor::kernels::cauchy;
-use precess::taylor::{EventSeries, StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem};
+use precess::taylor::{
+    EventSeries, OrderRule, StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem,
+};
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::SpinningTop;
 
@@ -598,11 +600,17 @@ enum Problem {
 
 #[derive(Clone, Copy, Debug)]
 enum Method {
+    /// Taylor as configured by default: the order of least work, each component at its own
+    /// scale, the defect check on.
     Taylor(f64),
-    /// Taylor without the defect check (Jorba and Zou's rule alone, as heyoka runs it).
+    /// Taylor without the defect check (the order rule's step alone).
     TaylorUnchecked(f64),
     /// Taylor with every component measured against ‖y‖∞ (heyoka's scale).
     TaylorMaxNorm(f64),
+    /// Taylor at Jorba and Zou's order (`OrderRule::JorbaZou`), otherwise the default.
+    TaylorJorbaZou(f64),
+    /// Taylor as heyoka runs it: Jorba and Zou's order, the ‖y‖∞ scale, no defect check.
+    TaylorHeyokaRule(f64),
     /// Taylor in the extended mode (B5 and the free bodies only).
     TaylorExtended(f64),
     Dop853(f64),
@@ -615,6 +623,8 @@ impl Method {
             Method::Taylor(t) => format!("Taylor tol {t:.0e}"),
             Method::TaylorUnchecked(t) => format!("Taylor nochk {t:.0e}"),
             Method::TaylorMaxNorm(t) => format!("Taylor maxnorm {t:.0e}"),
+            Method::TaylorJorbaZou(t) => format!("Taylor jz {t:.0e}"),
+            Method::TaylorHeyokaRule(t) => format!("Taylor hyrule {t:.0e}"),
             Method::TaylorExtended(t) => format!("Taylor ext tol {t:.0e}"),
             Method::Dop853(t) => format!("DOP853 tol {t:.0e}"),
             Method::Vern9(t) => format!("Vern9 tol {t:.0e}"),
@@ -632,6 +642,16 @@ fn taylor_config(m: Method) -> Option<TaylorConfig> {
         }),
         Method::TaylorMaxNorm(tol) => Some(TaylorConfig {
             scale: StepScale::MaxNorm,
+            ..TaylorConfig::with_tol(tol, tol)
+        }),
+        Method::TaylorJorbaZou(tol) => Some(TaylorConfig {
+            order_rule: OrderRule::JorbaZou,
+            ..TaylorConfig::with_tol(tol, tol)
+        }),
+        Method::TaylorHeyokaRule(tol) => Some(TaylorConfig {
+            order_rule: OrderRule::JorbaZou,
+            scale: StepScale::MaxNorm,
+            defect_check: false,
             ..TaylorConfig::with_tol(tol, tol)
         }),
         _ => None,
@@ -659,7 +679,11 @@ fn integrate<S: System<N> + TaylorSystem<N>, const N: usize>(
         return done(Taylor::new(sys, 0.0, y0, cfg).unwrap(), t_end);
     }
     match m {
-        Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
+        Method::Taylor(_)
+        | Method::TaylorUnchecked(_)
+        | Method::TaylorMaxNorm(_)
+        | Method::TaylorJorbaZou(_)
+        | Method::TaylorHeyokaRule(_) => {
             unreachable!("a Taylor configuration")
         }
         Method::TaylorExtended(tol) => {
@@ -758,12 +782,14 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             let (period, s, e) = match m {
                 // The heavy tops' jets have no double-double orders (the table skips them).
                 Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
-                Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
-                    heavy_top_period(
-                        &mut Taylor::new(top.sys, 0.0, top.y0, taylor_config(m).unwrap()).unwrap(),
-                        t_end,
-                    )
-                }
+                Method::Taylor(_)
+                | Method::TaylorUnchecked(_)
+                | Method::TaylorMaxNorm(_)
+                | Method::TaylorJorbaZou(_)
+                | Method::TaylorHeyokaRule(_) => heavy_top_period(
+                    &mut Taylor::new(top.sys, 0.0, top.y0, taylor_config(m).unwrap()).unwrap(),
+                    t_end,
+                ),
                 Method::Dop853(tol) => heavy_top_period(
                     &mut Dop853::new(top.sys, 0.0, top.y0, AdaptiveConfig::with_tol(tol, tol))
                         .unwrap(),
@@ -785,13 +811,15 @@ fn run(p: Problem, m: Method, top: &HeavyTop, refs: &References) -> (f64, u64, u
             let chart = TopChart::declared(&SpinningTop);
             let (period, s, e) = match m {
                 Method::TaylorExtended(_) => return (f64::NAN, 0, 0),
-                Method::Taylor(_) | Method::TaylorUnchecked(_) | Method::TaylorMaxNorm(_) => {
-                    heavy_top_period_with(
-                        &mut Taylor::new(SpinningTop, 0.0, y0, taylor_config(m).unwrap()).unwrap(),
-                        t_end,
-                        |y| y[4],
-                    )
-                }
+                Method::Taylor(_)
+                | Method::TaylorUnchecked(_)
+                | Method::TaylorMaxNorm(_)
+                | Method::TaylorJorbaZou(_)
+                | Method::TaylorHeyokaRule(_) => heavy_top_period_with(
+                    &mut Taylor::new(SpinningTop, 0.0, y0, taylor_config(m).unwrap()).unwrap(),
+                    t_end,
+                    |y| y[4],
+                ),
                 Method::Dop853(tol) => heavy_top_period_with(
                     &mut Dop853::new(&chart, 0.0, y0, AdaptiveConfig::with_tol(tol, tol)).unwrap(),
                     t_end,
@@ -864,6 +892,8 @@ fn methods() -> Vec<Method> {
     v.extend([1e-15, 1e-16].map(Method::Taylor));
     v.extend(tols.map(Method::TaylorUnchecked));
     v.extend(tols.map(Method::TaylorMaxNorm));
+    v.extend(tols.map(Method::TaylorJorbaZou));
+    v.extend(tols.map(Method::TaylorHeyokaRule));
     v.extend([1e-15, 1e-16, 1e-17, 1e-18].map(Method::TaylorExtended));
     v.extend(tols.map(Method::Dop853));
     v.extend(tols.map(Method::Vern9));
