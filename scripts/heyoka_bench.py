@@ -11,12 +11,14 @@ over 10 nutation periods with its nutation maxima as events.
 
 With `--precess FILE` (the table `benches/taylor.rs` prints), each heyoka rung is set beside
 the fastest precess Taylor rung of the same problem whose error is no larger (any of the
-table's Taylor methods: checked, unchecked, max-norm scale), and the ratio heyoka time /
-precess time is printed, from the minima of both (on a loaded machine the minimum is the
-closer to the unloaded time). The heavy top is matched three times: against precess's run of
-the same Euler–Poisson equations with the event scanned on the dense output ("HeavyTop") and
-expanded in the jet as heyoka's is ("HeavyTopExpanded"), and of its generated Euler-angle form
-("TopAngles").
+table's Taylor methods: the default order of least work checked, unchecked or at the max-norm
+scale, Jorba and Zou's order, heyoka's whole rule), and the ratio heyoka time / precess time
+is printed, from the minima of both (on a loaded machine the minimum is the closer to the
+unloaded time). The heavy top is matched five times: against precess's run of the same
+Euler–Poisson equations, hand-written, with the event scanned on the dense output
+("HeavyTop") and expanded in the jet as heyoka's is, interpreted ("HeavyTopExpanded"); through
+`taylor_system!` with the event scanned ("HeavyTopGen") and compiled with the system
+("HeavyTopGenCompiled"); and against its generated Euler-angle form ("TopAngles").
 
 Each figure is the median over many repeats of one `propagate_until` from the initial state
 (the integrator is built, and its code compiled by LLVM, once per problem and tolerance,
@@ -213,7 +215,13 @@ def main():
         count = len(maxima)
         line(
             "HeavyTop", tol, err, ta, steps, median_us(call), f"   ({count} maxima)",
-            against=("HeavyTop", "HeavyTopExpanded", "TopAngles"),
+            against=(
+                "HeavyTop",
+                "HeavyTopExpanded",
+                "HeavyTopGen",
+                "HeavyTopGenCompiled",
+                "TopAngles",
+            ),
         )
 
 
