@@ -36,6 +36,7 @@ use precess::exact::FreeBodyExact;
 use precess::ode::OdeError;
 use precess::prelude::*;
 use precess::taylor::Taylor;
+use precess::taylor::batch::TaylorLanes;
 use precess::top::HeavyTopTheory;
 use precess_testkit::systems::{FreeBody, SpinningTop};
 
@@ -83,21 +84,21 @@ fn heavy_top_start(i: usize, n: usize, tol: f64) -> Result<Taylor<SpinningTop, 6
     Taylor::new(SpinningTop, 0.0, y0, taylor_config(tol))
 }
 
-/// One row of (a) stepped `L` runs at a time in batch lanes on `threads` threads.
-fn heavy_top_lanes_row<const L: usize>(
-    n: usize,
-    threads: usize,
-    t_end: f64,
-    cos_end: f64,
-    tol: f64,
+/// One row of (a) stepped `L` runs at a time in batch lanes on `threads` threads, from the
+/// starts `start` (the angle form or the Euler–Poisson one), `cos_theta` reading cos θ from
+/// a run's end state; `label` names the form in the table.
+fn heavy_top_lanes_row<S: TaylorLanes<6, L>, const L: usize>(
+    label: &str,
+    start: impl Fn(usize) -> Result<Taylor<S, 6>, OdeError> + Sync,
+    cos_theta: fn(&[f64; 6]) -> f64,
+    (n, threads): (usize, usize),
+    (t_end, cos_end, tol): (f64, f64, f64),
 ) {
     let (secs, results) = best_of_3(|| {
         pool(threads).install(|| {
-            Ensemble::new(0..n).lanes::<L>().integrate(
-                t_end,
-                |i| heavy_top_start(i, n, tol),
-                |_, ode| ode.y()[1].cos(),
-            )
+            Ensemble::new(0..n)
+                .lanes::<L>()
+                .integrate(t_end, &start, |_, ode| cos_theta(ode.y()))
         })
     });
     let err = results
@@ -106,8 +107,7 @@ fn heavy_top_lanes_row<const L: usize>(
         .fold(0.0, f64::max);
     assert_eq!(results.failures(), 0);
     println!(
-        "{:<9} {tol:>7.0e} {:<10} {err:>9.2e} {:>10.0}",
-        "heavy top",
+        "{label:<9} {tol:>7.0e} {:<10} {err:>9.2e} {:>10.0}",
         format!("{threads}×{L} lanes"),
         n as f64 / secs
     );
@@ -119,37 +119,6 @@ fn heavy_top_ep_start(i: usize, n: usize, tol: f64) -> Result<Taylor<EulerPoisso
     let (s, c) = THETA0_DEG.to_radians().sin_cos();
     let y0 = [0.0, 0.0, SPIN, s * psi0.sin(), s * psi0.cos(), c];
     Taylor::new(EulerPoisson, 0.0, y0, taylor_config(tol))
-}
-
-/// One row of (a) in Euler–Poisson form, `L` runs at a time in lanes on `threads` threads:
-/// the equations heyoka's batch integrator steps in its lanes.
-fn heavy_top_ep_lanes_row<const L: usize>(
-    n: usize,
-    threads: usize,
-    t_end: f64,
-    cos_end: f64,
-    tol: f64,
-) {
-    let (secs, results) = best_of_3(|| {
-        pool(threads).install(|| {
-            Ensemble::new(0..n).lanes::<L>().integrate(
-                t_end,
-                |i| heavy_top_ep_start(i, n, tol),
-                |_, ode| ode.y()[5],
-            )
-        })
-    });
-    let err = results
-        .outputs()
-        .map(|(_, c)| (c - cos_end).abs())
-        .fold(0.0, f64::max);
-    assert_eq!(results.failures(), 0);
-    println!(
-        "{:<9} {tol:>7.0e} {:<10} {err:>9.2e} {:>10.0}",
-        "top (EP)",
-        format!("{threads}×{L} lanes"),
-        n as f64 / secs
-    );
 }
 
 /// One row of (b) through `FreeEquations`, `L` runs at a time in lanes on `threads` threads.
@@ -267,8 +236,10 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
         }
         // The same runs in batch lanes: 4 doubles fill an AVX2 register, 8 an AVX-512 one.
         for threads in [1, cores] {
-            heavy_top_lanes_row::<4>(n, threads, t_end, cos_end, tol);
-            heavy_top_lanes_row::<8>(n, threads, t_end, cos_end, tol);
+            let angles = |i| heavy_top_start(i, n, tol);
+            let at = (t_end, cos_end, tol);
+            heavy_top_lanes_row::<_, 4>("heavy top", angles, |y| y[1].cos(), (n, threads), at);
+            heavy_top_lanes_row::<_, 8>("heavy top", angles, |y| y[1].cos(), (n, threads), at);
         }
         // The same runs in a plain loop, without the ensemble: what the ensemble costs.
         let (secs, _) = best_of_3(|| {
@@ -312,8 +283,10 @@ fn table(n: usize, cores: usize, t_end: f64, cos_end: f64) {
             );
         }
         for threads in [1, cores] {
-            heavy_top_ep_lanes_row::<4>(n, threads, t_end, cos_end, tol);
-            heavy_top_ep_lanes_row::<8>(n, threads, t_end, cos_end, tol);
+            let ep = |i| heavy_top_ep_start(i, n, tol);
+            let at = (t_end, cos_end, tol);
+            heavy_top_lanes_row::<_, 4>("top (EP)", ep, |y| y[5], (n, threads), at);
+            heavy_top_lanes_row::<_, 8>("top (EP)", ep, |y| y[5], (n, threads), at);
         }
         for threads in [1, cores] {
             let (secs, results) = best_of_3(|| {

@@ -39,6 +39,23 @@ pub struct Constraints {
 }
 
 impl Constraints {
+    /// The index the next row gets, once `row` is checked to have one entry per coordinate.
+    fn next_row_of_length(
+        &self,
+        coords: &Coordinates,
+        row: &[ExprId],
+    ) -> Result<usize, LagrangeError> {
+        let r = self.len();
+        if row.len() != coords.len() {
+            return Err(LagrangeError::ConstraintLength {
+                row: r,
+                got: row.len(),
+                expected: coords.len(),
+            });
+        }
+        Ok(r)
+    }
+
     /// No constraints yet.
     pub fn new() -> Constraints {
         Constraints::default()
@@ -72,14 +89,7 @@ impl Constraints {
         row: &[ExprId],
         offset: ExprId,
     ) -> Result<&mut Self, LagrangeError> {
-        let r = self.len();
-        if row.len() != coords.len() {
-            return Err(LagrangeError::ConstraintLength {
-                row: r,
-                got: row.len(),
-                expected: coords.len(),
-            });
-        }
+        let r = self.next_row_of_length(coords, row)?;
         for &e in row.iter().chain([&offset]) {
             reject_rates(arena, r, e)?;
         }
@@ -109,14 +119,7 @@ impl Constraints {
         row: &[ExprId],
         offset: ExprId,
     ) -> Result<bool, LagrangeError> {
-        let r = self.len();
-        if row.len() != coords.len() {
-            return Err(LagrangeError::ConstraintLength {
-                row: r,
-                got: row.len(),
-                expected: coords.len(),
-            });
-        }
+        let r = self.next_row_of_length(coords, row)?;
         let mut exact = Vec::with_capacity(row.len() + 1);
         for &e in row.iter().chain([&offset]) {
             reject_rates(arena, r, e)?;

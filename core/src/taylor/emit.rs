@@ -132,7 +132,12 @@ impl Tape {
         max_order: usize,
         symbol: &mut dyn FnMut(SymbolId) -> TokenStream,
     ) -> TaylorTokens {
-        let sums = Sums {
+        self.emit(max_order, symbol, self.scalar_sums(), false)
+    }
+
+    /// How the scalar code (a system's or an event's) sums its dot products.
+    fn scalar_sums(&self) -> Sums {
+        Sums {
             split: self.split_products(),
             outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
             lanes: false,
@@ -141,8 +146,7 @@ impl Tape {
             } else {
                 0
             },
-        };
-        self.emit(max_order, symbol, sums, false)
+        }
     }
 
     /// The coefficients of an event function g (the tape's one output) along the series of
@@ -181,17 +185,7 @@ impl Tape {
         if self.outputs.len() != 1 {
             return None;
         }
-        let sums = Sums {
-            split: self.split_products(),
-            outlined: self.sum_count() >= OUTLINE_KERNELS_FROM_SUMS,
-            lanes: false,
-            fused: if self.split_products() {
-                FUSED_SCALAR
-            } else {
-                0
-            },
-        };
-        Some(self.emit(max_order, symbol, sums, true))
+        Some(self.emit(max_order, symbol, self.scalar_sums(), true))
     }
 
     /// The recurrences of [`Tape::to_tokens`] on `L` trajectories at once: every value a
@@ -305,6 +299,17 @@ impl Tape {
             .collect();
         let rows = with_row.len();
         let bindings = with_row.iter().map(|&x| series(x));
+        // The workspace's rows sized once and bound by name, in the system's code and an
+        // event's alike.
+        let workspace_rows = quote! {
+            if ws.len() != #rows {
+                ws.clear();
+                ws.resize(#rows, [#zero; __K + 1]);
+            }
+            let [#(#bindings),*] = &mut ws[..] else {
+                return;
+            };
+        };
         let load = (0..self.dimension).map(|i| {
             let id = series(i as u32);
             quote!(#id[0] = y[#i];)
@@ -386,13 +391,7 @@ impl Tape {
                 };
                 let __p: usize = if __top < __K { __top } else { __K };
                 let __p: usize = if __p < rows.len() { __p } else { rows.len() };
-                if ws.len() != #rows {
-                    ws.clear();
-                    ws.resize(#rows, [#zero; __K + 1]);
-                }
-                let [#(#bindings),*] = &mut ws[..] else {
-                    return;
-                };
+                #workspace_rows
                 #scalars
                 #(#load)*
                 #time
@@ -435,13 +434,7 @@ impl Tape {
             };
             let __n: usize = if order < __K { order } else { __K };
             let __n: usize = if __n < __top { __n } else { __top };
-            if ws.len() != #rows {
-                ws.clear();
-                ws.resize(#rows, [#zero; __K + 1]);
-            }
-            let [#(#bindings),*] = &mut ws[..] else {
-                return;
-            };
+            #workspace_rows
             #scalars
             #(#load)*
             #time
