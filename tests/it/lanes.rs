@@ -6,6 +6,7 @@ use precess::exact::FreeBodyExact;
 use precess::ode::{Event, OdeError, Run, StopReason};
 use precess::taylor::batch::{BatchTaylor, Lanes, TaylorLanes};
 use precess::taylor::{OrderRule, Taylor, TaylorConfig, TaylorSystem};
+use precess_testkit::systems::SpinningTop;
 use proptest::prelude::*;
 
 precess::taylor_system! {
@@ -357,4 +358,42 @@ fn a_derived_tops_lane_with_a_nan_field_is_refused_before_its_first_step() {
         let (y, _) = scalar(field_top(l), 0.0, y0[l], 1.0, cfg).unwrap();
         assert_eq!(bits(&ends[l].clone().unwrap().y), bits(&y), "lane {l}");
     }
+}
+
+/// A derived top released at rest in lanes of 8 and 16, the widths whose jets sum by kernel
+/// calls on the default target, against its scalar runs.
+fn a_top_from_rest_in_lanes<const L: usize>() {
+    let cfg = TaylorConfig::with_tol(1e-10, 1e-10);
+    let y0 = |l: usize| [0.0, 20f64.to_radians(), 0.1 * l as f64, 0.0, 0.0, 150.0];
+    let mut batch = BatchTaylor::new(
+        core::array::from_fn::<_, L, _>(|_| SpinningTop),
+        [0.0; L],
+        core::array::from_fn(y0),
+        cfg,
+    );
+    let ends = batch.advance_to([0.5; L]);
+    for l in 0..L {
+        let end = ends[l].clone().unwrap();
+        let (y, n) = scalar(SpinningTop, 0.0, y0(l), 0.5, cfg).unwrap();
+        assert_eq!(bits(&end.y), bits(&y), "{L} lanes, lane {l}");
+        assert_eq!(
+            batch.lane(l).unwrap().unwrap().stats().steps,
+            n,
+            "{L} lanes, lane {l}"
+        );
+    }
+}
+
+/// Released at rest (θ̇ = φ̇ = 0), the top's jet has rows whose largest weighted entry is not
+/// the first: the lanes' weighted norm, compiled for AVX-512 by pulp's dispatch, returned
+/// 6.8e18 for a row whose largest entry was 1.4e20 while `f64::max` did the comparing, the
+/// first step's radius came out 20 times too small, and every lane of 8 and of 16 ended off
+/// its scalar run's bits. That was in optimised builds without overflow checks (the benches,
+/// a user's release build) on a processor with AVX-512; the test profile's overflow checks
+/// kept LLVM from that form, so under `cargo test` this passed before the fix too, and it
+/// guards the contract where `cargo test --release` runs it.
+#[test]
+fn a_derived_top_from_rest_in_lanes_of_8_and_16_ends_on_its_scalar_runs_bits() {
+    a_top_from_rest_in_lanes::<8>();
+    a_top_from_rest_in_lanes::<16>();
 }

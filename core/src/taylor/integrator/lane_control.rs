@@ -18,13 +18,36 @@ use super::{GROWTH, StepRule, Taylor, defect};
 use crate::taylor::TaylorSystem;
 use crate::taylor::batch::Lanes;
 
-/// maxᵢ |cᵢ|·wᵢ in every lane, as `radius::weighted_norm` (NaN skipped by `f64::max`).
+/// `f64::max(a, b)` (IEEE maxNum: a NaN gives the other argument) written as a comparison,
+/// for the loops over the lanes.
+///
+/// In pulp's AVX-512 copy of the batch's loop, rustc 1.95's LLVM compiled `f64::max` in
+/// [`weighted_norm`]'s loop over 8 lanes (the full x86-v4 features: with AVX2, or AVX-512F
+/// alone, it was right) to code that gave 6.8e18 for the norm of a row whose largest
+/// weighted entry was 1.4e20. The radius of a derived top's first step came out 20 times
+/// too small, and its lanes of 8 and 16 left their scalar runs' bits; an underestimated top
+/// row would have given too long a step instead. The same loop written with a comparison
+/// was right in every copy (a standalone reproduction: the baseline, AVX2, AVX-512F alone,
+/// and x86-v4 with the comparison).
+#[inline(always)]
+fn max_num(a: f64, b: f64) -> f64 {
+    if b > a || a.is_nan() { b } else { a }
+}
+
+/// `f64::min(a, b)` as a comparison, for the same reason as [`max_num`].
+#[inline(always)]
+fn min_num(a: f64, b: f64) -> f64 {
+    if b < a || a.is_nan() { b } else { a }
+}
+
+/// maxᵢ |cᵢ|·wᵢ in every lane, as `radius::weighted_norm` (NaN skipped, as `f64::max` skips
+/// it).
 #[inline(always)]
 fn weighted_norm<const N: usize, const L: usize>(c: &[Lanes<L>; N], w: &[[f64; L]; N]) -> [f64; L] {
     let mut m = [0.0f64; L];
     for (ci, wi) in c.iter().zip(w) {
         for l in 0..L {
-            m[l] = m[l].max(ci.0[l].abs() * wi[l]);
+            m[l] = max_num(m[l], ci.0[l].abs() * wi[l]);
         }
     }
     m
@@ -89,9 +112,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         for l in 0..L {
             ok[l] &= n1[l].is_finite() && n1[l] > 0.0 && n2[l].is_finite() && n2[l] > 0.0;
             let (log_n1, log_n2) = (n1[l].ln(), n2[l].ln());
-            let log_rho = (-log_n1 / k1 as f64)
-                .min(-log_n2 / k2 as f64)
-                .min(RATIO.ln() + (log_n2 - log_n1) / (k1 - k2) as f64);
+            let log_rho = min_num(
+                min_num(-log_n1 / k1 as f64, -log_n2 / k2 as f64),
+                RATIO.ln() + (log_n2 - log_n1) / (k1 - k2) as f64,
+            );
             rho[l] = log_rho.exp();
         }
         let k1f = k1 as f64;
@@ -106,7 +130,7 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
             }
             for l in 0..L {
                 if x[l] > 1.0 {
-                    rho[l] = rho[l].min(k1f / kf * (-n[l].ln() / k as f64).exp());
+                    rho[l] = min_num(rho[l], k1f / kf * (-n[l].ln() / k as f64).exp());
                 }
             }
         }
@@ -115,9 +139,10 @@ impl<S: TaylorSystem<N>, const N: usize> Taylor<S, N> {
         let (mut h, mut clamped) = ([0.0f64; L], [false; L]);
         for l in 0..L {
             let (ode, rule) = at[l];
-            let natural = (rule.factor * rho[l])
-                .min(GROWTH * ode.prev_natural)
-                .min(ode.cfg.h_max);
+            let natural = min_num(
+                min_num(rule.factor * rho[l], GROWTH * ode.prev_natural),
+                ode.cfg.h_max,
+            );
             let remaining = (t_limit[l] - t[l]) - t_lo[l];
             clamped[l] = natural >= remaining;
             h[l] = if clamped[l] { remaining } else { natural };
