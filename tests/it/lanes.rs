@@ -372,8 +372,8 @@ fn a_top_from_rest_in_lanes<const L: usize>() {
         cfg,
     );
     let ends = batch.advance_to([0.5; L]);
-    for l in 0..L {
-        let end = ends[l].clone().unwrap();
+    for (l, end) in ends.iter().enumerate() {
+        let end = end.clone().unwrap();
         let (y, n) = scalar(SpinningTop, 0.0, y0(l), 0.5, cfg).unwrap();
         assert_eq!(bits(&end.y), bits(&y), "{L} lanes, lane {l}");
         assert_eq!(
