@@ -214,19 +214,12 @@ impl Arena {
         let order = self.walk(&wanted, true, |_| true);
         let mut copy = Arena {
             nodes: Vec::with_capacity(order.len()),
-            interned: IdMap::default(),
             symbols: self.symbols.clone(),
-            symbol_nodes: Vec::new(),
             by_name: self.by_name.clone(),
             shown: self.shown.clone(),
             time: self.time,
             derivatives: self.derivatives.clone(),
-            definitions: IdMap::default(),
-            abbreviations: IdMap::default(),
-            tag: fresh_tag(),
-            inherited: Vec::new(),
-            zero_one: [ExprId::new(0, 0); 2],
-            memo: Default::default(),
+            ..Arena::unfilled()
         };
         copy.interned.reserve(order.len());
         let mut moved: Vec<u32> = vec![u32::MAX; self.nodes.len()];
@@ -275,9 +268,10 @@ impl Default for Arena {
 }
 
 impl Arena {
-    /// An empty arena holding only the constants 0 and 1.
-    pub fn new() -> Arena {
-        let mut arena = Arena {
+    /// An arena with nothing in it, not even the constants 0 and 1 (`zero_one` unset): what
+    /// [`Arena::new`] and [`Arena::extract`] fill.
+    fn unfilled() -> Arena {
+        Arena {
             nodes: Vec::new(),
             interned: IdMap::default(),
             symbols: Vec::new(),
@@ -292,7 +286,12 @@ impl Arena {
             inherited: Vec::new(),
             zero_one: [ExprId::new(0, 0); 2],
             memo: Default::default(),
-        };
+        }
+    }
+
+    /// An empty arena holding only the constants 0 and 1.
+    pub fn new() -> Arena {
+        let mut arena = Arena::unfilled();
         arena.zero_one = [
             arena.intern(Node::Const(Rational::ZERO)),
             arena.intern(Node::Const(Rational::ONE)),
