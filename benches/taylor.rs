@@ -5,7 +5,7 @@
 //! system, so its Taylor recurrences are Cauchy products written by hand here, as are B5's
 //! and the free body's), and in the generated angle form (`TopAngles`: the pairs on
 //! `TopChart`, Taylor on the recurrences `#[top(taylor = 20)]` generates). The Euler–Poisson
-//! top is also written through `taylor_system!` (`EulerPoissonGen`, the `HeavyTopGen…`
+//! top is also written through `taylor_system!` (the testkit's `EulerPoissonTop`, the `HeavyTopGen…`
 //! problems: the generated jet against the hand-written one in one run), with its event
 //! scanned, expanded through the interpreted tape (`…Expanded`) or compiled by the macro
 //! (`…Compiled`, `event ThetaRate = …;`).
@@ -34,7 +34,7 @@ use precess::taylor::{
     EventSeries, OrderRule, StepScale, Taylor, TaylorConfig, TaylorEvent, TaylorSystem,
 };
 use precess::top::HeavyTopTheory;
-use precess_testkit::systems::SpinningTop;
+use precess_testkit::systems::{EulerPoissonTop, SpinningTop, ThetaRate};
 
 #[path = "common/taylor_events.rs"]
 mod events;
@@ -442,34 +442,12 @@ impl TaylorSystem<6> for EulerPoisson {
     }
 }
 
-precess::taylor_system! {
-    /// [`EulerPoisson`] through `taylor_system!` (the form of the ensemble and lanes benches,
-    /// with r = (I1 − I3)/I1 and s = Mgl/I1 as fields): the same equations, products and
-    /// constants, whose recurrences are generated (fused loops over an order's sums) instead
-    /// of written by hand with a kernel call per product.
-    #[derive(Clone, Copy, Debug)]
-    struct EulerPoissonGen {
-        r: f64,
-        s: f64,
-    }
-    state [w1, w2, w3, g1, g2, g3];
-    taylor = 24;
-    d/dt w1 = r * (w2 * w3) + s * g2;
-    d/dt w2 = -r * (w3 * w1) - s * g1;
-    d/dt w3 = 0.0;
-    d/dt g1 = g2 * w3 - g3 * w2;
-    d/dt g2 = g3 * w1 - g1 * w3;
-    d/dt g3 = g1 * w2 - g2 * w1;
-    // θ̇ up to a positive factor, [`theta_rate`] compiled: its recurrences beside the system's.
-    event ThetaRate = g2 * w1 - g1 * w2;
-}
-
 /// The heavy top released at rest 20° from the vertical spinning at 150 rad/s: its system
 /// (hand-written and generated), initial state, exact nutation period and the span of 10
 /// periods.
 struct HeavyTop {
     sys: EulerPoisson,
-    generated: EulerPoissonGen,
+    generated: EulerPoissonTop,
     /// θ̇'s sign as an expression, for the expanded event.
     event: TaylorEvent<6>,
     y0: [f64; 6],
@@ -492,7 +470,7 @@ impl HeavyTop {
         let y0 = [0.0, 0.0, w3, 0.0, theta0.sin(), theta0.cos()];
         Self {
             sys: EulerPoisson { i1, i3, mgl },
-            generated: EulerPoissonGen {
+            generated: EulerPoissonTop {
                 r: (i1 - i3) / i1,
                 s: mgl / i1,
             },
@@ -584,7 +562,7 @@ enum Problem {
     /// [`Problem::HeavyTopExpanded`] with the event compiled by `taylor_system!`
     /// (`ThetaRate`) instead of interpreted.
     HeavyTopCompiled,
-    /// [`Problem::HeavyTop`] on the generated jet (`EulerPoissonGen`, Taylor only).
+    /// [`Problem::HeavyTop`] on the generated jet (`EulerPoissonTop`, Taylor only).
     HeavyTopGen,
     /// [`Problem::HeavyTopBare`] on the generated jet.
     HeavyTopGenBare,

@@ -231,3 +231,25 @@ pub fn interpreted_top<T: RigidBody + TopDynamics>(top: &T, g: f64, order: usize
     });
     TaylorTape::new(&a, state, rhs, None, &[], order).expect("a top's tape builds")
 }
+
+precess::taylor_system! {
+    /// The symmetric heavy top about its fixed tip in Euler–Poisson form, through
+    /// `taylor_system!`: ω and the upward vertical γ in body axes,
+    /// ω̇1 = r ω2 ω3 + s γ2, ω̇2 = −r ω3 ω1 − s γ1, ω̇3 = 0, γ̇ = γ × ω, with
+    /// r = (I1 − I3)/I1 and s = M g l / I1; cos θ = γ3. `ThetaRate` is θ̇ up to a positive
+    /// factor (its sign is that of γ2 ω1 − γ1 ω2), compiled with the system's recurrences.
+    #[derive(Clone, Copy, Debug)]
+    pub struct EulerPoissonTop {
+        pub r: f64,
+        pub s: f64,
+    }
+    state [w1, w2, w3, g1, g2, g3];
+    taylor = 24;
+    d/dt w1 = r * (w2 * w3) + s * g2;
+    d/dt w2 = -r * (w3 * w1) - s * g1;
+    d/dt w3 = 0.0;
+    d/dt g1 = g2 * w3 - g3 * w2;
+    d/dt g2 = g3 * w1 - g1 * w3;
+    d/dt g3 = g1 * w2 - g2 * w1;
+    event ThetaRate = g2 * w1 - g1 * w2;
+}

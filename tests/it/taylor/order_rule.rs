@@ -11,7 +11,7 @@
 
 use precess::exact::FreeBodyExact;
 use precess::taylor::{OrderRule, Taylor, TaylorConfig, TaylorSystem};
-use precess_testkit::systems::{B5, B5_Y0, b5_exact};
+use precess_testkit::systems::{B5, B5_Y0, EulerPoissonTop, b5_exact};
 
 precess::taylor_system! {
     /// ṁ = m × I⁻¹m for I = (3, 5, 9).
@@ -24,26 +24,14 @@ precess::taylor_system! {
     d/dt m3 = (1.0 / 5.0 - 1.0 / 3.0) * m1 * m2;
 }
 
-/// The symmetric heavy top's moments and M g l.
+/// The symmetric heavy top's moments and M g l: r = (I1 − I3)/I1 = 0.75, s = Mgl/I1 = 25.
 const I1: f64 = 0.02;
 const I3: f64 = 0.005;
 const MGL: f64 = 0.5;
-
-precess::taylor_system! {
-    /// The symmetric heavy top about its tip: I1 ω̇1 = (I1 − I3) ω2 ω3 + Mgl γ2,
-    /// I1 ω̇2 = (I3 − I1) ω3 ω1 − Mgl γ1, ω̇3 = 0, γ̇ = γ × ω; (I1 − I3)/I1 = 0.75 and
-    /// Mgl/I1 = 25.
-    #[derive(Clone, Copy)]
-    struct EulerPoisson;
-    state [w1, w2, w3, g1, g2, g3];
-    taylor = 40;
-    d/dt w1 = 0.75 * w2 * w3 + 25.0 * g2;
-    d/dt w2 = -0.75 * w3 * w1 - 25.0 * g1;
-    d/dt w3 = 0.0 * w3;
-    d/dt g1 = g2 * w3 - g3 * w2;
-    d/dt g2 = g3 * w1 - g1 * w3;
-    d/dt g3 = g1 * w2 - g2 * w1;
-}
+const TOP: EulerPoissonTop = EulerPoissonTop {
+    r: (I1 - I3) / I1,
+    s: MGL / I1,
+};
 
 fn config(tol: f64, rule: OrderRule) -> TaylorConfig {
     TaylorConfig {
@@ -138,8 +126,8 @@ fn the_heavy_top_keeps_its_invariants_in_half_the_steps() {
     let y0 = [0.0, 0.0, 150.0, 0.0, theta.sin(), theta.cos()];
     let before = invariants(&y0);
     for tol in [1e-10, 1e-12, 1e-14] {
-        let (jz, jz_steps) = run(EulerPoisson, y0, 2.0, config(tol, OrderRule::JorbaZou));
-        let (mw, mw_steps) = run(EulerPoisson, y0, 2.0, config(tol, OrderRule::MinimumWork));
+        let (jz, jz_steps) = run(TOP, y0, 2.0, config(tol, OrderRule::JorbaZou));
+        let (mw, mw_steps) = run(TOP, y0, 2.0, config(tol, OrderRule::MinimumWork));
         let drift = |y: &[f64; 6]| {
             let after = invariants(y);
             before
