@@ -60,18 +60,25 @@ pub(super) fn balanced_factor(eps: f64, order: usize) -> f64 {
 /// components, W(p) = p² + 10 p + 360/n (`cap` itself when the Jorba–Zou order is above it).
 pub(super) fn minimum_work(eps: f64, n: usize, cap: usize) -> usize {
     let fixed = 360.0 / n.max(1) as f64;
-    let work_per_time = |p: usize| {
+    // ln(W(p)/κ(p)) = ln W(p) − (ln ε − 0.7)/(p − 1): one logarithm an order, no exponential
+    // (every `Taylor::new` of an ensemble's runs chooses its order).
+    let log_eps = eps.ln() - 0.7;
+    let log_work_per_time = |p: usize| {
         let pf = p as f64;
-        (pf * pf + 10.0 * pf + fixed) / balanced_factor(eps, p)
+        (pf * pf + 10.0 * pf + fixed).ln() - log_eps / (pf - 1.0)
     };
     let low = jorba_zou(eps);
     if low >= cap {
         return cap;
     }
     // W/κ is convex in p over this range: walk up while it falls.
-    let mut best = low;
-    while best < cap && work_per_time(best + 1) < work_per_time(best) {
-        best += 1;
+    let (mut best, mut here) = (low, log_work_per_time(low));
+    while best < cap {
+        let next = log_work_per_time(best + 1);
+        if next >= here {
+            break;
+        }
+        (best, here) = (best + 1, next);
     }
     best
 }
