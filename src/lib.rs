@@ -147,6 +147,7 @@ pub mod __private {
     pub use precess_core::ode::{OdeError, System};
     pub use precess_core::rigid::AngleSequence;
     pub use precess_core::taylor::EventSeries;
+    pub use precess_core::taylor::StateEvent;
     pub use precess_core::taylor::TaylorSystem;
     pub use precess_core::taylor::batch::Lanes;
     pub use precess_core::taylor::batch::TaylorLanes;

@@ -50,13 +50,7 @@ pub fn expand(
     let (workspace, body) = if let Some(i) = state.iter().position(|&s| s == g) {
         // g = yᵢ: the jet's column i itself.
         let body = quote! {
-            let ::core::option::Option::Some((__first, __rest)) = out.split_first_mut() else {
-                return;
-            };
-            *__first = y[#i];
-            for (__o, __row) in __rest.iter_mut().zip(rows) {
-                *__o = __row[#i];
-            }
+            #p::StateEvent::<#n>::column_into(#i, y, rows, out);
         };
         (quote!(()), body)
     } else {

@@ -117,6 +117,21 @@ impl<const N: usize> StateEvent<N> {
     pub fn index(&self) -> usize {
         self.index
     }
+
+    /// g₀ … g_p of g = y_`index` into `out`: the jet's column, y_`index` and then row k's
+    /// entry for k = 1 … p (p as in [`EventSeries::coefficients_into`]); nothing for an
+    /// `index` past the state. What [`StateEvent`] and the component events
+    /// `taylor_system!` emits both write.
+    #[inline]
+    pub fn column_into(index: usize, y: &[f64; N], rows: &[[f64; N]], out: &mut [f64]) {
+        let (Some((first, rest)), Some(&value)) = (out.split_first_mut(), y.get(index)) else {
+            return;
+        };
+        *first = value;
+        for (o, row) in rest.iter_mut().zip(rows) {
+            *o = row[index];
+        }
+    }
 }
 
 impl<const N: usize> EventSeries<N> for StateEvent<N> {
@@ -131,14 +146,7 @@ impl<const N: usize> EventSeries<N> for StateEvent<N> {
         rows: &[[f64; N]],
         out: &mut [f64],
     ) {
-        let i = self.index;
-        let Some((first, rest)) = out.split_first_mut() else {
-            return;
-        };
-        *first = y[i];
-        for (o, row) in rest.iter_mut().zip(rows) {
-            *o = row[i];
-        }
+        Self::column_into(self.index, y, rows, out);
     }
 }
 
